@@ -1,0 +1,81 @@
+/* tippe/design.h: a top described by a design file (JSON), placed at one Z2.
+ *
+ * A design file gives the sphere radius, named parts (solids of revolution
+ * about the z axis, in mm, each of a material from a materials table in
+ * g/cm^3) and the travel of the moving weight. docs/design-format.md is the
+ * complete description of the format and of every check made at load.
+ *
+ * Z2 is the height of the moving group's reference point (the midpoint of the
+ * moving weight) above the sphere's centre, in mm, as in the paper (section 6).
+ * The library side is SI: tippe_design_top() fills a tippe_top in kg, m, kg m^2.
+ *
+ * A loaded design is read-only: tippe_design_top() and the other accessors may
+ * be called from many threads at once on the same design. */
+#ifndef TIPPE_DESIGN_H
+#define TIPPE_DESIGN_H
+
+#include "tippe/error.h"
+#include "tippe/top.h"
+
+typedef struct tippe_design tippe_design; /* opaque */
+
+/* Loads path, applies the overrides ("parts.rod.material=nylon",
+ * "parts.weight.height_mm=5", "radius_mm=30"; parts addressed by name) to the
+ * parsed file, then validates everything. On failure returns TIPPE_EINPUT (the
+ * file or an override is wrong; the message names the file, the JSON path and
+ * what is wrong) or TIPPE_ECOMPUTE, and *out is NULL. */
+int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
+                      tippe_design **out, tippe_error *err);
+
+/* The top with the moving weight's midpoint at z2_mm; TIPPE_EINPUT if z2 is
+ * outside the stated travel (closed interval, 1e-9 mm slack for a sweep's
+ * rounded steps) or not finite. */
+int tippe_design_top(const tippe_design *d, double z2_mm, tippe_top *top, tippe_error *err);
+
+/* Same, without the travel check: pure geometry, for sweeps that look beyond
+ * the travel (where parts would overlap, the numbers are what the formulas give). */
+void tippe_design_top_any(const tippe_design *d, double z2_mm, tippe_top *top);
+
+/* The travel the design states (travel_mm). */
+void tippe_design_travel_mm(const tippe_design *d, double *from_mm, double *to_mm);
+
+/* The physical travel: the largest Z2 interval containing the stated travel in
+ * which no moving part overlaps a fixed part, no moving part leaves the sphere
+ * (unless may_protrude) and no protruding moving part has its centre outside
+ * the sphere. Its ends are where moving parts touch fixed ones (or the sphere). */
+void tippe_design_contact_travel_mm(const tippe_design *d, double *from_mm, double *to_mm);
+
+/* What limits the physical travel at each end, e.g. "part 'weight' touches part
+ * 'shell'"; for messages. */
+const char *tippe_design_contact_limit(const tippe_design *d, int upper);
+
+const char *tippe_design_name(const tippe_design *d);
+const char *tippe_design_path(const tippe_design *d);
+double tippe_design_radius_mm(const tippe_design *d);
+
+/* Mass of the moving group (moving parts less their voids), kg. */
+double tippe_design_moving_mass_kg(const tippe_design *d);
+
+/* One part, for reports. mass_kg is the part's contribution to the total:
+ * negative for a void (the mass it removes from the part it is cut from).
+ * role is "fixed", "moving" or "void". */
+typedef struct {
+    const char *name;
+    const char *shape;    /* "ball", "shell", "cylinder", "tube", "torus" */
+    const char *material; /* material name, "(inline)" for density_g_cm3, or the
+                             parent's for a void */
+    const char *role;
+    const char *cut_from; /* a void's parent part, else NULL */
+    double density_g_cm3;
+    double mass_kg;
+    double z_mm;          /* centre height; for a moving part, its offset from Z2 */
+    int may_protrude;
+} tippe_design_part_info;
+
+int tippe_design_n_parts(const tippe_design *d);
+/* Fills *out for part i (0-based, file order); TIPPE_EINPUT if i is out of range. */
+int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out);
+
+void tippe_design_free(tippe_design *d);
+
+#endif

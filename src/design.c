@@ -1,0 +1,1433 @@
+/* Design files: parse (cJSON), override, validate, and place the moving weight.
+ *
+ * Everything geometric in this file is in mm (as in the design file); the
+ * moments handed to the geometry module, and the top, are SI.
+ *
+ * Overlap and travel are decided on the (r, z) half-plane, where every part is
+ * a region of revolution. At a fixed r each region is a finite union of z
+ * intervals, known in closed form (a disc, an annulus, a rectangle, an
+ * ellipse, cut by a clip disc, minus voids). So at each sampled r the overlap
+ * of two parts, and the Z2 shifts at which a moving part meets a fixed one,
+ * are exact interval arithmetic; only r is sampled (a uniform grid plus every
+ * radius where some part's boundary starts or ends, see sample_radii). To let
+ * parts touch, material is eroded and voids dilated by TOL_MM before comparing:
+ * "overlap" means sharing volume more than TOL_MM deep. docs/design-format.md
+ * states the resolution this gives. */
+#include "tippe/design.h"
+#include "tippe/geometry.h"
+
+#include <cjson/cJSON.h>
+#include <gsl/gsl_errno.h>
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define NAME_LEN 64
+#define MAX_PARTS 50
+#define MAX_FILE_BYTES (4 << 20)
+/* Overlap depth that still counts as touching: far below print resolution
+ * (~0.1 mm), far above double roundoff on mm-sized numbers (~1e-14 mm). */
+#define TOL_MM 1e-6
+/* Uniform r samples across the widest part; see the resolution note in docs. */
+#define N_R_UNIFORM 4000
+/* A sphere radius match (the part forming the sphere's surface), mm. */
+#define SAME_LENGTH_MM 1e-9
+/* Slack on the travel check for a sweep's rounded steps, mm. */
+#define TRAVEL_SLACK_MM 1e-9
+/* Beyond any coordinate in a design, mm: stands for an unbounded interval. */
+#define BIG_MM 1e12
+/* Intervals per r: a part gives at most 2, each void removes at most 2 more. */
+#define MAX_IV (4 + 4 * MAX_PARTS)
+
+typedef enum { SHAPE_BALL, SHAPE_SHELL, SHAPE_CYLINDER, SHAPE_TUBE, SHAPE_TORUS, N_SHAPES } shape_kind;
+static const char *const shape_names[N_SHAPES] = {"ball", "shell", "cylinder", "tube", "torus"};
+
+typedef struct {
+    char name[NAME_LEN];
+    char material[NAME_LEN]; /* "" when density_g_cm3 was given inline */
+    shape_kind shape;
+    double radius_mm;       /* ball, shell (outer), cylinder, tube (outer) */
+    double inner_radius_mm; /* cylinder, tube */
+    double thickness_mm;    /* shell */
+    double height_mm;       /* cylinder, tube; resolved when only a clip is given */
+    double centre_radius_mm, radial_semi_mm, axial_semi_mm; /* torus */
+    double z_mm;            /* moving parts: offset from Z2 */
+    double density_g_cm3;   /* voids: the parent's */
+    int is_void, moving, may_protrude;
+    int has_height, has_radius;
+    int parent;             /* voids: index of the part cut from; else -1 */
+    int clip;               /* 0 none, 1 sphere, 2 cavity */
+    double clip_radius_mm;  /* resolved; 0 = not clipped */
+    double mass_kg;         /* signed contribution */
+} part;
+
+struct tippe_design {
+    char *path, *name;
+    double radius_mm;
+    double travel_mm[2], contact_mm[2];
+    char contact_limit[2][256];
+    int n_parts;
+    part *parts;
+    tippe_moments fixed, moving; /* SI; moving at Z2 = 0 */
+};
+
+/* ---------------------------------------------------------------- messages */
+
+typedef struct {
+    const char *file;
+    int n_set;
+    char set_path[MAX_PARTS + 16][300]; /* JSON paths changed by --set ... */
+    const char *set_text[MAX_PARTS + 16]; /* ... and the override that did it */
+    tippe_error *err;
+} ctx;
+
+/* "FILE: PATH: what", plus the override that set PATH when there is one, so
+ * that a bad --set value is blamed on the --set and not on the file. */
+__attribute__((format(printf, 3, 4)))
+static int fail(const ctx *c, const char *path, const char *fmt, ...)
+{
+    char what[768];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    const char *by = NULL;
+    for (int i = 0; i < c->n_set && path; i++) {
+        size_t n = strlen(c->set_path[i]);
+        if (!strncmp(path, c->set_path[i], n) && (path[n] == '\0' || path[n] == '.'))
+            by = c->set_text[i];
+    }
+    if (by)
+        return tippe_error_set(c->err, TIPPE_EINPUT, "%s: %s: %s (set by --set %s)", c->file,
+                               path, what, by);
+    if (path && path[0])
+        return tippe_error_set(c->err, TIPPE_EINPUT, "%s: %s: %s", c->file, path, what);
+    return tippe_error_set(c->err, TIPPE_EINPUT, "%s: %s", c->file, what);
+}
+
+static void jpath(char *buf, size_t cap, const char *prefix, const char *key)
+{
+    if (prefix[0])
+        snprintf(buf, cap, "%s.%s", prefix, key);
+    else
+        snprintf(buf, cap, "%s", key);
+}
+
+static const char *json_kind(const cJSON *it)
+{
+    if (cJSON_IsString(it)) return "a string";
+    if (cJSON_IsNumber(it)) return "a number";
+    if (cJSON_IsBool(it)) return "true/false";
+    if (cJSON_IsNull(it)) return "null";
+    if (cJSON_IsArray(it)) return "an array";
+    if (cJSON_IsObject(it)) return "an object";
+    return "an invalid value";
+}
+
+/* ------------------------------------------------------------ JSON reading */
+
+static int read_text(const char *path, char **out, tippe_error *err)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot open: %s", path, strerror(errno));
+    char *buf = malloc(MAX_FILE_BYTES + 1);
+    if (!buf) {
+        fclose(f);
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
+    }
+    size_t n = fread(buf, 1, MAX_FILE_BYTES + 1, f);
+    int bad = ferror(f);
+    fclose(f);
+    if (bad) {
+        free(buf);
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: read error", path);
+    }
+    if (n > MAX_FILE_BYTES) {
+        free(buf);
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: larger than %d bytes: not a design file",
+                               path, MAX_FILE_BYTES);
+    }
+    buf[n] = '\0';
+    if (strlen(buf) != n) {
+        free(buf);
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: contains a NUL byte: not a JSON text", path);
+    }
+    *out = buf;
+    return TIPPE_OK;
+}
+
+/* The position comes from cJSON_ParseWithOpts (cJSON_GetErrorPtr is global
+ * state, not thread-safe). */
+static int parse_json(const char *path, const char *text, cJSON **out, tippe_error *err)
+{
+    const char *end = NULL;
+    cJSON *root = cJSON_ParseWithOpts(text, &end, 1);
+    if (root) {
+        *out = root;
+        return TIPPE_OK;
+    }
+    if (!end || end < text)
+        end = text;
+    int line = 1, col = 1;
+    for (const char *p = text; p < end && *p; p++) {
+        if (*p == '\n') {
+            line++;
+            col = 1;
+        } else {
+            col++;
+        }
+    }
+    /* Quote the line up to the error: cJSON may point just past the bad token. */
+    const char *ls = end;
+    while (ls > text && ls[-1] != '\n')
+        ls--;
+    if (end - ls > 40)
+        ls = end - 40;
+    char line_text[48];
+    int k = 0;
+    for (const char *p = ls; p < end && k < (int)sizeof line_text - 1; p++)
+        line_text[k++] = isprint((unsigned char)*p) ? *p : ' ';
+    line_text[k] = '\0';
+    if (!*end)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%s:%d:%d: not valid JSON: the text ends too early (after '%s')",
+                               path, line, col, line_text);
+    return tippe_error_set(err, TIPPE_EINPUT, "%s:%d:%d: not valid JSON (line %d, column %d, "
+                           "after '%s')", path, line, col, line, col, line_text);
+}
+
+/* cJSON keeps every duplicate key and lookups see only the first: a second
+ * "radius_mm" would be silently ignored, so refuse it anywhere in the tree. */
+static int check_duplicates(const ctx *c, const cJSON *node, const char *path)
+{
+    char sub[256];
+    int i = 0;
+    for (const cJSON *ch = node->child; ch; ch = ch->next, i++) {
+        if (cJSON_IsObject(node)) {
+            for (const cJSON *prev = node->child; prev != ch; prev = prev->next)
+                if (!strcmp(prev->string, ch->string)) {
+                    jpath(sub, sizeof sub, path, ch->string);
+                    return fail(c, sub, "duplicate key (a key may appear once per object)");
+                }
+            jpath(sub, sizeof sub, path, ch->string);
+        } else {
+            snprintf(sub, sizeof sub, "%s[%d]", path, i);
+        }
+        if (ch->child) {
+            int rc = check_duplicates(c, ch, sub);
+            if (rc)
+                return rc;
+        }
+    }
+    return TIPPE_OK;
+}
+
+static int in_list(const char *key, const char *const *list)
+{
+    for (; *list; list++)
+        if (!strcmp(key, *list))
+            return 1;
+    return 0;
+}
+
+static void join_list(char *buf, size_t cap, const char *const *a, const char *const *b)
+{
+    buf[0] = '\0';
+    size_t n = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (const char *const *l = pass ? b : a; l && *l; l++) {
+            int w = snprintf(buf + n, cap - n, "%s%s", n ? ", " : "", *l);
+            if (w < 0 || (size_t)w >= cap - n)
+                return;
+            n += (size_t)w;
+        }
+}
+
+static int check_keys(const ctx *c, const cJSON *obj, const char *prefix, const char *what,
+                      const char *const *a, const char *const *b)
+{
+    char p[256], list[512];
+    for (const cJSON *ch = obj->child; ch; ch = ch->next)
+        if (!in_list(ch->string, a) && !(b && in_list(ch->string, b))) {
+            join_list(list, sizeof list, a, b);
+            jpath(p, sizeof p, prefix, ch->string);
+            return fail(c, p, "unknown field (%s has: %s)", what, list);
+        }
+    return TIPPE_OK;
+}
+
+static int field_number(const ctx *c, const cJSON *obj, const char *prefix, const char *key,
+                        int required, double *out, int *present)
+{
+    char p[256];
+    jpath(p, sizeof p, prefix, key);
+    const cJSON *it = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (present)
+        *present = it != NULL;
+    if (!it)
+        return required ? fail(c, p, "missing (a number is required)") : TIPPE_OK;
+    if (!cJSON_IsNumber(it))
+        return fail(c, p, "must be a number, not %s", json_kind(it));
+    if (!isfinite(it->valuedouble))
+        return fail(c, p, "must be a finite number");
+    *out = it->valuedouble;
+    return TIPPE_OK;
+}
+
+/* A length in mm that must be > 0 (or >= 0 with allow_zero). */
+static int field_length(const ctx *c, const cJSON *obj, const char *prefix, const char *key,
+                        int required, int allow_zero, double *out, int *present)
+{
+    int here = 0;
+    int rc = field_number(c, obj, prefix, key, required, out, &here);
+    if (present)
+        *present = here;
+    if (rc || !here)
+        return rc;
+    char p[256];
+    jpath(p, sizeof p, prefix, key);
+    if (allow_zero ? *out < 0 : *out <= 0)
+        return fail(c, p, "must be %s (a length in mm), got %g", allow_zero ? ">= 0" : "positive",
+                    *out);
+    return TIPPE_OK;
+}
+
+static int field_string(const ctx *c, const cJSON *obj, const char *prefix, const char *key,
+                        int required, char *out, size_t cap, int *present)
+{
+    char p[256];
+    jpath(p, sizeof p, prefix, key);
+    const cJSON *it = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (present)
+        *present = it != NULL;
+    if (!it)
+        return required ? fail(c, p, "missing (a string is required)") : TIPPE_OK;
+    if (!cJSON_IsString(it))
+        return fail(c, p, "must be a string, not %s", json_kind(it));
+    if (out) {
+        if (strlen(it->valuestring) >= cap)
+            return fail(c, p, "longer than %zu characters", cap - 1);
+        strcpy(out, it->valuestring);
+    }
+    return TIPPE_OK;
+}
+
+static int field_bool(const ctx *c, const cJSON *obj, const char *prefix, const char *key,
+                      int *out, int *present)
+{
+    char p[256];
+    jpath(p, sizeof p, prefix, key);
+    const cJSON *it = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (present)
+        *present = it != NULL;
+    if (!it)
+        return TIPPE_OK;
+    if (!cJSON_IsBool(it))
+        return fail(c, p, "must be true or false, not %s", json_kind(it));
+    *out = cJSON_IsTrue(it);
+    return TIPPE_OK;
+}
+
+/* ---------------------------------------------------------------- schema */
+
+static const char *const top_keys[] = {"name", "notes", "radius_mm", "travel_mm", "materials",
+                                       "parts", NULL};
+static const char *const top_string_keys[] = {"name", "notes", "materials", NULL};
+static const char *const part_common_keys[] = {
+    "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from",
+    "clip", "moving", "may_protrude", NULL};
+static const char *const part_string_keys[] = {"name", "shape", "notes", "material",
+                                               "cut_from", "clip", NULL};
+static const char *const ball_keys[] = {"radius_mm", NULL};
+static const char *const shell_keys[] = {"radius_mm", "thickness_mm", NULL};
+static const char *const cylinder_keys[] = {"radius_mm", "inner_radius_mm", "height_mm", NULL};
+static const char *const torus_keys[] = {"centre_radius_mm", "radial_semi_mm", "axial_semi_mm",
+                                         NULL};
+static const char *const *const shape_keys[N_SHAPES] = {ball_keys, shell_keys, cylinder_keys,
+                                                        cylinder_keys, torus_keys};
+static const char *const all_part_keys[] = {
+    "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from", "clip",
+    "moving", "may_protrude", "radius_mm", "inner_radius_mm", "thickness_mm", "height_mm",
+    "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
+static const char *const material_keys[] = {"density_g_cm3", "source", "notes", NULL};
+
+/* ------------------------------------------------------------- overrides */
+
+static int apply_override(ctx *c, cJSON *root, const char *text)
+{
+    const char *eq = strchr(text, '=');
+    if (!eq || eq == text)
+        return tippe_error_set(c->err, TIPPE_EINPUT,
+                               "%s: --set %s: expected FIELD=VALUE, e.g. parts.rod.material=nylon",
+                               c->file, text);
+    char field[256];
+    size_t flen = (size_t)(eq - text);
+    if (flen >= sizeof field)
+        return tippe_error_set(c->err, TIPPE_EINPUT, "%s: --set %s: field name too long", c->file,
+                               text);
+    memcpy(field, text, flen);
+    field[flen] = '\0';
+    const char *value = eq + 1;
+
+    cJSON *obj = root;
+    const char *key = field;
+    char path[300];
+    if (!strncmp(field, "parts.", 6) || !strncmp(field, "parts[", 6)) {
+        cJSON *parts = cJSON_GetObjectItemCaseSensitive(root, "parts");
+        if (!cJSON_IsArray(parts))
+            return fail(c, "parts", "must be an array of parts (cannot apply --set %s)", text);
+        char *dot = strrchr(field, '.');
+        if (!dot || dot < field + 6 || dot[1] == '\0')
+            return tippe_error_set(c->err, TIPPE_EINPUT,
+                                   "%s: --set %s: expected parts.NAME.FIELD=VALUE", c->file, text);
+        *dot = '\0';
+        key = dot + 1;
+        int index = -1;
+        if (field[5] == '[') {
+            char *endp = NULL;
+            long i = strtol(field + 6, &endp, 10);
+            if (!endp || endp == field + 6 || strcmp(endp, "]") || i < 0 ||
+                i >= cJSON_GetArraySize(parts))
+                return tippe_error_set(c->err, TIPPE_EINPUT,
+                                       "%s: --set %s: no such part index (the file has %d parts)",
+                                       c->file, text, cJSON_GetArraySize(parts));
+            index = (int)i;
+        } else {
+            const char *want = field + 6;
+            char names[512] = "";
+            size_t n = 0;
+            int i = 0;
+            for (const cJSON *p = parts->child; p; p = p->next, i++) {
+                const cJSON *nm = cJSON_GetObjectItemCaseSensitive(p, "name");
+                if (!cJSON_IsString(nm))
+                    continue;
+                if (!strcmp(nm->valuestring, want) && index < 0)
+                    index = i;
+                int w = snprintf(names + n, sizeof names - n, "%s%s", n ? ", " : "",
+                                 nm->valuestring);
+                if (w > 0 && (size_t)w < sizeof names - n)
+                    n += (size_t)w;
+            }
+            if (index < 0)
+                return tippe_error_set(c->err, TIPPE_EINPUT,
+                                       "%s: --set %s: no part named '%s' (parts: %s)", c->file,
+                                       text, want, names);
+        }
+        obj = cJSON_GetArrayItem(parts, index);
+        if (!cJSON_IsObject(obj)) {
+            snprintf(path, sizeof path, "parts[%d]", index);
+            return fail(c, path, "must be an object (cannot apply --set %s)", text);
+        }
+        if (!in_list(key, all_part_keys)) {
+            char list[512];
+            join_list(list, sizeof list, all_part_keys, NULL);
+            return tippe_error_set(c->err, TIPPE_EINPUT,
+                                   "%s: --set %s: '%s' is not a part field (fields: %s)", c->file,
+                                   text, key, list);
+        }
+        snprintf(path, sizeof path, "parts[%d].%s", index, key);
+    } else {
+        if (!in_list(key, top_keys) || !strcmp(key, "parts")) {
+            char list[256];
+            join_list(list, sizeof list, top_keys, NULL);
+            return tippe_error_set(
+                c->err, TIPPE_EINPUT,
+                "%s: --set %s: '%s' is not a design field (fields: %s, parts.NAME.FIELD)", c->file,
+                text, key, list);
+        }
+        snprintf(path, sizeof path, "%s", key);
+    }
+
+    int is_string = obj == root ? in_list(key, top_string_keys) : in_list(key, part_string_keys);
+    cJSON *item = NULL;
+    if (!strcmp(value, "null")) {
+        cJSON_DeleteItemFromObjectCaseSensitive(obj, key);
+    } else {
+        if (is_string) {
+            item = cJSON_CreateString(value);
+        } else {
+            const char *end = NULL;
+            item = cJSON_ParseWithOpts(value, &end, 1);
+            if (!item)
+                return tippe_error_set(c->err, TIPPE_EINPUT,
+                                       "%s: --set %s: '%s' is not a JSON value (a number, true, "
+                                       "false, [from, to], or null to remove the field)",
+                                       c->file, text, value);
+        }
+        if (!item)
+            return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+        if (cJSON_GetObjectItemCaseSensitive(obj, key))
+            cJSON_ReplaceItemInObjectCaseSensitive(obj, key, item);
+        else
+            cJSON_AddItemToObject(obj, key, item);
+    }
+    /* material and density_g_cm3 exclude each other: setting one replaces the other. */
+    if (obj != root && !strcmp(key, "material"))
+        cJSON_DeleteItemFromObjectCaseSensitive(obj, "density_g_cm3");
+    if (obj != root && !strcmp(key, "density_g_cm3"))
+        cJSON_DeleteItemFromObjectCaseSensitive(obj, "material");
+    if (c->n_set < (int)(sizeof c->set_path / sizeof c->set_path[0])) {
+        snprintf(c->set_path[c->n_set], sizeof c->set_path[0], "%s", path);
+        c->set_text[c->n_set] = text;
+        c->n_set++;
+    }
+    return TIPPE_OK;
+}
+
+/* ----------------------------------------------------------------- parts */
+
+static int parse_part(const ctx *c, const cJSON *obj, int index, part *p)
+{
+    char pre[32], path[64], shape[16];
+    snprintf(pre, sizeof pre, "parts[%d]", index);
+    memset(p, 0, sizeof *p);
+    p->parent = -1;
+    if (!cJSON_IsObject(obj))
+        return fail(c, pre, "must be an object, not %s", json_kind(obj));
+    int rc;
+    if ((rc = field_string(c, obj, pre, "shape", 1, shape, sizeof shape, NULL)))
+        return rc;
+    int s = 0;
+    while (s < N_SHAPES && strcmp(shape, shape_names[s]))
+        s++;
+    if (s == N_SHAPES) {
+        jpath(path, sizeof path, pre, "shape");
+        return fail(c, path, "unknown shape '%s' (shapes: ball, shell, cylinder, tube, torus)",
+                    shape);
+    }
+    p->shape = (shape_kind)s;
+    char what[32];
+    snprintf(what, sizeof what, "a %s", shape_names[s]);
+    if ((rc = check_keys(c, obj, pre, what, part_common_keys, shape_keys[s])))
+        return rc;
+    if ((rc = field_string(c, obj, pre, "name", 1, p->name, sizeof p->name, NULL)))
+        return rc;
+    if (!p->name[0]) {
+        jpath(path, sizeof path, pre, "name");
+        return fail(c, path, "must not be empty");
+    }
+    if ((rc = field_string(c, obj, pre, "notes", 0, NULL, 0, NULL)))
+        return rc;
+    if ((rc = field_number(c, obj, pre, "z_mm", 0, &p->z_mm, NULL)))
+        return rc;
+    int has_void = 0, has_moving = 0, has_protrude = 0;
+    if ((rc = field_bool(c, obj, pre, "void", &p->is_void, &has_void)) ||
+        (rc = field_bool(c, obj, pre, "moving", &p->moving, &has_moving)) ||
+        (rc = field_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)))
+        return rc;
+    int has_mat = 0, has_dens = 0, has_cut = 0, has_clip = 0;
+    char cut[NAME_LEN] = "", clip[16] = "";
+    if ((rc = field_string(c, obj, pre, "material", 0, p->material, sizeof p->material,
+                           &has_mat)) ||
+        (rc = field_number(c, obj, pre, "density_g_cm3", 0, &p->density_g_cm3, &has_dens)) ||
+        (rc = field_string(c, obj, pre, "cut_from", 0, cut, sizeof cut, &has_cut)) ||
+        (rc = field_string(c, obj, pre, "clip", 0, clip, sizeof clip, &has_clip)))
+        return rc;
+    if (p->is_void) {
+        const char *bad = has_mat ? "material" : has_dens ? "density_g_cm3"
+                        : has_moving ? "moving" : has_protrude ? "may_protrude" : NULL;
+        if (bad) {
+            jpath(path, sizeof path, pre, bad);
+            return fail(c, path, "not allowed on a void: a void removes material of the part "
+                                 "named by cut_from and moves with it");
+        }
+        if (!has_cut) {
+            jpath(path, sizeof path, pre, "cut_from");
+            return fail(c, path, "missing: a void must name the part it is cut from");
+        }
+        strcpy(p->material, cut); /* resolved to a part index later */
+    } else {
+        if (has_cut) {
+            jpath(path, sizeof path, pre, "cut_from");
+            return fail(c, path, "only a void (\"void\": true) is cut from a part");
+        }
+        if (has_mat == has_dens) {
+            jpath(path, sizeof path, pre, has_mat ? "density_g_cm3" : "material");
+            return fail(c, path, has_mat ? "give either material or density_g_cm3, not both"
+                                         : "missing: give a material (a name in the materials "
+                                           "table) or density_g_cm3");
+        }
+        if (has_dens && p->density_g_cm3 <= 0) {
+            jpath(path, sizeof path, pre, "density_g_cm3");
+            return fail(c, path, "must be positive, got %g g/cm^3", p->density_g_cm3);
+        }
+        if (has_mat && !p->material[0]) {
+            jpath(path, sizeof path, pre, "material");
+            return fail(c, path, "must not be empty");
+        }
+    }
+    if (has_clip) {
+        jpath(path, sizeof path, pre, "clip");
+        if (!strcmp(clip, "sphere"))
+            p->clip = 1;
+        else if (!strcmp(clip, "cavity"))
+            p->clip = 2;
+        else
+            return fail(c, path, "must be \"sphere\" or \"cavity\", not '%s'", clip);
+        if (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL)
+            return fail(c, path, "only a cylinder, tube or torus can be clipped");
+        if (p->moving)
+            return fail(c, path, "a moving part cannot be clipped (its shape would change as "
+                                 "it moves)");
+    }
+
+    switch (p->shape) {
+    case SHAPE_BALL:
+    case SHAPE_SHELL:
+        if ((rc = field_length(c, obj, pre, "radius_mm", 0, 0, &p->radius_mm, &p->has_radius)))
+            return rc;
+        if (p->shape == SHAPE_SHELL &&
+            (rc = field_length(c, obj, pre, "thickness_mm", 1, 0, &p->thickness_mm, NULL)))
+            return rc;
+        break;
+    case SHAPE_CYLINDER:
+    case SHAPE_TUBE: {
+        int has_inner = 0;
+        if ((rc = field_length(c, obj, pre, "radius_mm", 1, 0, &p->radius_mm, NULL)) ||
+            (rc = field_length(c, obj, pre, "inner_radius_mm", p->shape == SHAPE_TUBE,
+                               p->shape == SHAPE_CYLINDER, &p->inner_radius_mm, &has_inner)) ||
+            (rc = field_length(c, obj, pre, "height_mm", 0, 0, &p->height_mm, &p->has_height)))
+            return rc;
+        if (!p->has_height && !p->clip) {
+            jpath(path, sizeof path, pre, "height_mm");
+            return fail(c, path, "missing (required unless clip is given: a clipped %s without "
+                                 "a height spans the clip ball)", shape_names[s]);
+        }
+        if (p->inner_radius_mm >= p->radius_mm) {
+            jpath(path, sizeof path, pre, "inner_radius_mm");
+            return fail(c, path, "%g mm is not less than radius_mm %g mm", p->inner_radius_mm,
+                        p->radius_mm);
+        }
+        break;
+    }
+    case SHAPE_TORUS:
+        if ((rc = field_length(c, obj, pre, "centre_radius_mm", 1, 0, &p->centre_radius_mm,
+                               NULL)) ||
+            (rc = field_length(c, obj, pre, "radial_semi_mm", 1, 0, &p->radial_semi_mm, NULL)) ||
+            (rc = field_length(c, obj, pre, "axial_semi_mm", 1, 0, &p->axial_semi_mm, NULL)))
+            return rc;
+        if (p->radial_semi_mm > p->centre_radius_mm) {
+            jpath(path, sizeof path, pre, "radial_semi_mm");
+            return fail(c, path, "%g mm is more than centre_radius_mm %g mm (the ring would "
+                                 "cross the axis)", p->radial_semi_mm, p->centre_radius_mm);
+        }
+        break;
+    default:
+        break;
+    }
+    return TIPPE_OK;
+}
+
+/* --------------------------------------------------------- materials table */
+
+static int lookup_material(const ctx *c, const cJSON *table, const char *mat_file,
+                           const char *name, const char *path, double *density)
+{
+    const cJSON *m = cJSON_GetObjectItemCaseSensitive(table, name);
+    if (!m) {
+        char list[512] = "";
+        size_t n = 0;
+        for (const cJSON *ch = table->child; ch; ch = ch->next) {
+            int w = snprintf(list + n, sizeof list - n, "%s%s", n ? ", " : "", ch->string);
+            if (w > 0 && (size_t)w < sizeof list - n)
+                n += (size_t)w;
+        }
+        return fail(c, path, "unknown material '%s' (%s has: %s)", name, mat_file, list);
+    }
+    *density = cJSON_GetObjectItemCaseSensitive(m, "density_g_cm3")->valuedouble;
+    return TIPPE_OK;
+}
+
+static int load_materials(const char *mat_file, cJSON **out, tippe_error *err)
+{
+    char *text = NULL;
+    int rc = read_text(mat_file, &text, err);
+    if (rc)
+        return rc;
+    cJSON *root = NULL;
+    rc = parse_json(mat_file, text, &root, err);
+    free(text);
+    if (rc)
+        return rc;
+    ctx mc = {.file = mat_file, .err = err};
+    if (!cJSON_IsObject(root)) {
+        rc = fail(&mc, NULL, "must be an object mapping material names to "
+                             "{\"density_g_cm3\": ..., \"source\": ...}");
+        goto done;
+    }
+    if ((rc = check_duplicates(&mc, root, "")))
+        goto done;
+    for (const cJSON *m = root->child; m; m = m->next) {
+        if (!cJSON_IsObject(m)) {
+            rc = fail(&mc, m->string, "must be an object, not %s", json_kind(m));
+            goto done;
+        }
+        double dens = 0;
+        if ((rc = check_keys(&mc, m, m->string, "a material", material_keys, NULL)) ||
+            (rc = field_number(&mc, m, m->string, "density_g_cm3", 1, &dens, NULL)) ||
+            (rc = field_string(&mc, m, m->string, "source", 1, NULL, 0, NULL)) ||
+            (rc = field_string(&mc, m, m->string, "notes", 0, NULL, 0, NULL)))
+            goto done;
+        char p[256];
+        if (dens <= 0) {
+            jpath(p, sizeof p, m->string, "density_g_cm3");
+            rc = fail(&mc, p, "must be positive, got %g g/cm^3", dens);
+            goto done;
+        }
+        if (!cJSON_GetObjectItemCaseSensitive(m, "source")->valuestring[0]) {
+            jpath(p, sizeof p, m->string, "source");
+            rc = fail(&mc, p, "must say where the density comes from");
+            goto done;
+        }
+    }
+done:
+    if (rc)
+        cJSON_Delete(root);
+    else
+        *out = root;
+    return rc;
+}
+
+/* ------------------------------------------------------ z intervals at r */
+
+typedef struct {
+    int n;
+    double lo[MAX_IV], hi[MAX_IV]; /* sorted, disjoint, lo < hi */
+} ivset;
+
+static void iv_push(ivset *s, double lo, double hi)
+{
+    if (lo < hi && s->n < MAX_IV) {
+        s->lo[s->n] = lo;
+        s->hi[s->n] = hi;
+        s->n++;
+    }
+}
+
+static void iv_intersect(const ivset *a, const ivset *b, ivset *out)
+{
+    out->n = 0;
+    int i = 0, j = 0;
+    while (i < a->n && j < b->n) {
+        iv_push(out, fmax(a->lo[i], b->lo[j]), fmin(a->hi[i], b->hi[j]));
+        if (a->hi[i] < b->hi[j])
+            i++;
+        else
+            j++;
+    }
+}
+
+static void iv_subtract(const ivset *a, const ivset *b, ivset *out)
+{
+    out->n = 0;
+    for (int i = 0; i < a->n; i++) {
+        double lo = a->lo[i];
+        for (int j = 0; j < b->n && lo < a->hi[i]; j++) {
+            if (b->hi[j] <= lo || b->lo[j] >= a->hi[i])
+                continue;
+            iv_push(out, lo, b->lo[j]);
+            lo = b->hi[j];
+        }
+        iv_push(out, lo, a->hi[i]);
+    }
+}
+
+/* Half-height of a disc of radius a at distance r from its axis, or -1. */
+static double chord(double a, double r)
+{
+    return (a > 0 && r < a) ? sqrt(a * a - r * r) : -1;
+}
+
+/* z intervals of part p's own region (before voids) at radius r, moved by
+ * dz_mm, grown outward by grow_mm (negative: eroded). */
+static void prim_ivs(const part *p, double r, double dz, double g, ivset *s)
+{
+    s->n = 0;
+    double zc = p->z_mm + dz, h, hi;
+    switch (p->shape) {
+    case SHAPE_BALL:
+        if ((h = chord(p->radius_mm + g, r)) > 0)
+            iv_push(s, zc - h, zc + h);
+        break;
+    case SHAPE_SHELL:
+        if ((h = chord(p->radius_mm + g, r)) <= 0)
+            break;
+        if ((hi = chord(p->radius_mm - p->thickness_mm - g, r)) > 0) {
+            iv_push(s, zc - h, zc - hi);
+            iv_push(s, zc + hi, zc + h);
+        } else {
+            iv_push(s, zc - h, zc + h);
+        }
+        break;
+    case SHAPE_CYLINDER:
+    case SHAPE_TUBE:
+        /* r = 0 is the axis, not a boundary: a solid cylinder is not eroded there. */
+        if (r < p->radius_mm + g && (p->inner_radius_mm == 0 || r > p->inner_radius_mm - g))
+            iv_push(s, zc - p->height_mm / 2 - g, zc + p->height_mm / 2 + g);
+        break;
+    case SHAPE_TORUS: {
+        double ra = p->radial_semi_mm + g, az = p->axial_semi_mm + g;
+        double x = (r - p->centre_radius_mm) / ra;
+        if (ra > 0 && az > 0 && fabs(x) < 1) {
+            h = az * sqrt(1 - x * x);
+            iv_push(s, zc - h, zc + h);
+        }
+        break;
+    }
+    default:
+        break;
+    }
+    if (p->clip_radius_mm > 0) {
+        ivset c = {0}, t;
+        if ((h = chord(p->clip_radius_mm + g, r)) > 0)
+            iv_push(&c, -h, h);
+        iv_intersect(s, &c, &t);
+        *s = t;
+    }
+}
+
+/* Material of non-void part i at r, moved by dz: eroded part minus dilated voids. */
+static void material_ivs(const tippe_design *d, int i, double r, double dz, ivset *s)
+{
+    prim_ivs(&d->parts[i], r, dz, -TOL_MM, s);
+    for (int v = 0; v < d->n_parts && s->n; v++) {
+        if (d->parts[v].parent != i)
+            continue;
+        ivset hole, t;
+        prim_ivs(&d->parts[v], r, dz, TOL_MM, &hole);
+        iv_subtract(s, &hole, &t);
+        *s = t;
+    }
+}
+
+/* Outside the sphere (eroded by TOL_MM). */
+static void outside_ivs(double R, double r, ivset *s)
+{
+    s->n = 0;
+    double h = chord(R + TOL_MM, r);
+    if (h > 0) {
+        iv_push(s, -BIG_MM, -h);
+        iv_push(s, h, BIG_MM);
+    } else {
+        iv_push(s, -BIG_MM, BIG_MM);
+    }
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* r samples: a uniform grid across every part, plus points just inside and
+ * just outside each radius where a part's boundary begins or ends, so that
+ * parts meeting at a corner or along a cylinder wall are resolved exactly. */
+static double *sample_radii(const tippe_design *d, int *n_out)
+{
+    double rmax = d->radius_mm;
+    double brk[8 * MAX_PARTS + 2];
+    int nb = 0;
+    brk[nb++] = d->radius_mm;
+    for (int i = 0; i < d->n_parts; i++) {
+        const part *p = &d->parts[i];
+        switch (p->shape) {
+        case SHAPE_BALL:
+            brk[nb++] = p->radius_mm;
+            break;
+        case SHAPE_SHELL:
+            brk[nb++] = p->radius_mm;
+            brk[nb++] = p->radius_mm - p->thickness_mm;
+            break;
+        case SHAPE_CYLINDER:
+        case SHAPE_TUBE:
+            brk[nb++] = p->radius_mm;
+            brk[nb++] = p->inner_radius_mm;
+            break;
+        case SHAPE_TORUS:
+            brk[nb++] = p->centre_radius_mm - p->radial_semi_mm;
+            brk[nb++] = p->centre_radius_mm;
+            brk[nb++] = p->centre_radius_mm + p->radial_semi_mm;
+            break;
+        default:
+            break;
+        }
+        if (p->clip_radius_mm > 0)
+            brk[nb++] = p->clip_radius_mm;
+    }
+    for (int k = 0; k < nb; k++)
+        rmax = fmax(rmax, brk[k]);
+    rmax += 1.0;
+    int n = N_R_UNIFORM + 3 * nb + 1;
+    double *r = malloc((size_t)n * sizeof *r);
+    if (!r)
+        return NULL;
+    int m = 0;
+    r[m++] = 0;
+    for (int k = 0; k < N_R_UNIFORM; k++)
+        r[m++] = (k + 0.5) * rmax / N_R_UNIFORM;
+    for (int k = 0; k < nb; k++) {
+        double off[3] = {-2 * TOL_MM, 0, 2 * TOL_MM};
+        for (int j = 0; j < 3; j++)
+            if (brk[k] + off[j] >= 0)
+                r[m++] = brk[k] + off[j];
+    }
+    qsort(r, (size_t)m, sizeof *r, cmp_double);
+    *n_out = m;
+    return r;
+}
+
+static const char *role_of(const part *p)
+{
+    return p->is_void ? "void" : p->moving ? "moving" : "fixed";
+}
+
+/* Everything about where parts are, once the parts are parsed and resolved. */
+static int check_layout(const ctx *c, tippe_design *d)
+{
+    int nr = 0;
+    double *rs = sample_radii(d, &nr);
+    if (!rs)
+        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+    const double R = d->radius_mm;
+    int rc = TIPPE_OK;
+    char path[64];
+    ivset a, b, t;
+
+    /* The sphere the top rolls on must be material: a fixed ball or shell of
+     * radius R centred on the sphere's centre. */
+    int surface = 0;
+    for (int i = 0; i < d->n_parts; i++) {
+        const part *p = &d->parts[i];
+        if (!p->is_void && !p->moving && (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL) &&
+            fabs(p->radius_mm - R) < SAME_LENGTH_MM && p->z_mm == 0)
+            surface = 1;
+    }
+    if (!surface) {
+        rc = fail(c, "parts", "no part forms the sphere's surface: the top needs a fixed ball "
+                              "or shell of radius radius_mm (%g mm) centred at z_mm = 0", R);
+        goto out;
+    }
+
+    for (int i = 0; i < d->n_parts && !rc; i++) {
+        const part *p = &d->parts[i];
+        snprintf(path, sizeof path, "parts[%d]", i);
+        if (p->is_void) {
+            /* A void must lie inside the part it is cut from, or it would
+             * subtract mass that is not there. */
+            const part *q = &d->parts[p->parent];
+            for (int k = 0; k < nr; k++) {
+                prim_ivs(p, rs[k], 0, -TOL_MM, &a);
+                prim_ivs(q, rs[k], 0, TOL_MM, &b);
+                iv_subtract(&a, &b, &t);
+                if (t.n) {
+                    rc = fail(c, path, "void '%s' reaches outside the part it is cut from ('%s') "
+                                       "at r = %.3f mm, z = %.3f mm: it would remove material "
+                                       "that is not there", p->name, q->name, rs[k], t.lo[0]);
+                    break;
+                }
+            }
+            for (int j = 0; j < i && !rc; j++) {
+                if (d->parts[j].parent != p->parent)
+                    continue;
+                for (int k = 0; k < nr; k++) {
+                    prim_ivs(p, rs[k], 0, -TOL_MM, &a);
+                    prim_ivs(&d->parts[j], rs[k], 0, -TOL_MM, &b);
+                    iv_intersect(&a, &b, &t);
+                    if (t.n) {
+                        rc = fail(c, path, "voids '%s' and '%s' (parts[%d]) overlap at r = "
+                                           "%.3f mm: the shared volume would be removed twice",
+                                  p->name, d->parts[j].name, j, rs[k]);
+                        break;
+                    }
+                }
+            }
+            continue;
+        }
+        if (!p->moving && !p->may_protrude) {
+            double worst = 0, wr = 0, wz = 0;
+            for (int k = 0; k < nr; k++) {
+                material_ivs(d, i, rs[k], 0, &a);
+                for (int j = 0; j < a.n; j++)
+                    for (int e = 0; e < 2; e++) {
+                        double z = e ? a.hi[j] : a.lo[j];
+                        double out = hypot(rs[k], z) - R;
+                        if (out > worst) {
+                            worst = out;
+                            wr = rs[k];
+                            wz = z;
+                        }
+                    }
+            }
+            if (worst > TOL_MM) {
+                rc = fail(c, path, "part '%s' sticks out of the sphere (radius %g mm) by %.3f mm "
+                                   "(at r = %.3f mm, z = %.3f mm); set \"may_protrude\": true if "
+                                   "it is meant to, like a setscrew", p->name, R,
+                          worst + TOL_MM, wr, wz);
+                break;
+            }
+        }
+        /* Fixed against fixed, moving against moving: their relative place
+         * never changes. */
+        for (int j = 0; j < i && !rc; j++) {
+            const part *q = &d->parts[j];
+            if (q->is_void || q->moving != p->moving)
+                continue;
+            for (int k = 0; k < nr; k++) {
+                material_ivs(d, i, rs[k], 0, &a);
+                material_ivs(d, j, rs[k], 0, &b);
+                iv_intersect(&a, &b, &t);
+                if (t.n) {
+                    rc = fail(c, path, "part '%s' overlaps part '%s' (parts[%d]) at r = %.3f mm, "
+                                       "z = %.3f .. %.3f mm%s: parts may touch but not share "
+                                       "volume (cut one with a void, or clip it)", p->name,
+                              q->name, j, rs[k], t.lo[0], t.hi[0],
+                              p->moving ? " relative to Z2" : "");
+                    break;
+                }
+            }
+        }
+    }
+    if (rc)
+        goto out;
+
+    int n_moving = 0;
+    for (int i = 0; i < d->n_parts; i++)
+        n_moving += d->parts[i].moving && !d->parts[i].is_void;
+    if (!n_moving) {
+        rc = fail(c, "parts", "no moving part: mark the weight's part(s) with \"moving\": true");
+        goto out;
+    }
+
+    /* Physical travel. A moving interval [lo, hi] (at Z2 = 0) and a fixed one
+     * [flo, fhi] share volume exactly for shifts in (flo - hi, fhi - lo); the
+     * physical travel is the gap between such forbidden shifts around the
+     * middle of the stated travel. */
+    double mid = 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
+    double lim[2] = {-BIG_MM, BIG_MM};
+    snprintf(d->contact_limit[0], sizeof d->contact_limit[0], "nothing");
+    snprintf(d->contact_limit[1], sizeof d->contact_limit[1], "nothing");
+    for (int i = 0; i < d->n_parts && !rc; i++) {
+        const part *p = &d->parts[i];
+        if (p->is_void || !p->moving)
+            continue;
+        if (p->may_protrude) {
+            /* A protruding part is held only while its centre is inside. */
+            double e[2] = {-R - p->z_mm, R - p->z_mm};
+            for (int s = 0; s < 2; s++)
+                if (s ? e[s] < lim[1] : e[s] > lim[0]) {
+                    lim[s] = e[s];
+                    snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
+                             "the centre of protruding part '%s' reaches the sphere's surface",
+                             p->name);
+                }
+        }
+        for (int j = -1; j < d->n_parts && !rc; j++) {
+            /* j = -1: the outside of the sphere, for parts that must stay in. */
+            if (j < 0 ? p->may_protrude : (d->parts[j].is_void || d->parts[j].moving))
+                continue;
+            for (int k = 0; k < nr && !rc; k++) {
+                material_ivs(d, i, rs[k], 0, &a);
+                if (!a.n)
+                    continue;
+                if (j < 0)
+                    outside_ivs(R, rs[k], &b);
+                else
+                    material_ivs(d, j, rs[k], 0, &b);
+                for (int u = 0; u < a.n && !rc; u++)
+                    for (int w = 0; w < b.n; w++) {
+                        double f0 = b.lo[w] - a.hi[u], f1 = b.hi[w] - a.lo[u];
+                        int s = -1;
+                        if (f0 < mid && mid < f1) {
+                            if (j < 0)
+                                rc = fail(c, "travel_mm", "at Z2 = %g mm (the middle of the "
+                                                          "travel) moving part '%s' sticks out "
+                                                          "of the sphere", mid, p->name);
+                            else
+                                rc = fail(c, "travel_mm", "at Z2 = %g mm (the middle of the "
+                                                          "travel) moving part '%s' overlaps "
+                                                          "part '%s'", mid, p->name,
+                                          d->parts[j].name);
+                            break;
+                        }
+                        if (f1 <= mid && f1 > lim[0])
+                            lim[s = 0] = f1;
+                        else if (f0 >= mid && f0 < lim[1])
+                            lim[s = 1] = f0;
+                        if (s < 0)
+                            continue;
+                        if (j < 0)
+                            snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
+                                     "part '%s' reaches the sphere's surface", p->name);
+                        else
+                            snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
+                                     "part '%s' touches part '%s'", p->name, d->parts[j].name);
+                    }
+            }
+        }
+    }
+    if (rc)
+        goto out;
+    d->contact_mm[0] = lim[0];
+    d->contact_mm[1] = lim[1];
+    if (d->travel_mm[0] < lim[0])
+        rc = fail(c, "travel_mm", "starts at %g mm, below the physical travel %.3f .. %.3f mm "
+                                  "(at Z2 = %.3f mm %s)", d->travel_mm[0], lim[0], lim[1], lim[0],
+                  d->contact_limit[0]);
+    else if (d->travel_mm[1] > lim[1])
+        rc = fail(c, "travel_mm", "ends at %g mm, beyond the physical travel %.3f .. %.3f mm "
+                                  "(at Z2 = %.3f mm %s)", d->travel_mm[1], lim[0], lim[1], lim[1],
+                  d->contact_limit[1]);
+out:
+    free(rs);
+    return rc;
+}
+
+/* ------------------------------------------------------------ mass moments */
+
+/* Unit-density moments of p's own region (SI), at its z_mm. */
+static tippe_moments part_moments(const part *p)
+{
+    const double mm = 1e-3;
+    double zc = p->z_mm * mm, clip = p->clip_radius_mm * mm; /* 0: not clipped */
+    switch (p->shape) {
+    case SHAPE_BALL:
+        return tippe_ball(p->radius_mm * mm, zc);
+    case SHAPE_SHELL:
+        return tippe_shell(p->radius_mm * mm, p->thickness_mm * mm, zc);
+    case SHAPE_CYLINDER:
+    case SHAPE_TUBE:
+        return tippe_tube(p->inner_radius_mm * mm, p->radius_mm * mm, p->height_mm * mm, zc,
+                          clip);
+    case SHAPE_TORUS:
+    default:
+        return tippe_torus(p->centre_radius_mm * mm, p->radial_semi_mm * mm,
+                           p->axial_semi_mm * mm, zc, clip);
+    }
+}
+
+static int finite_moments(tippe_moments m)
+{
+    return isfinite(m.m) && isfinite(m.m_z) && isfinite(m.m_zz) && isfinite(m.m_rr);
+}
+
+/* ------------------------------------------------------------------- load */
+
+static char *dup_string(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *r = malloc(n);
+    if (r)
+        memcpy(r, s, n);
+    return r;
+}
+
+static int build(ctx *c, cJSON *root, const char *path, tippe_design *d)
+{
+    int rc;
+    char name[256];
+    if (!cJSON_IsObject(root))
+        return fail(c, NULL, "must be a JSON object (a design), not %s", json_kind(root));
+    if ((rc = check_keys(c, root, "", "a design", top_keys, NULL)) ||
+        (rc = field_string(c, root, "", "name", 1, name, sizeof name, NULL)) ||
+        (rc = field_string(c, root, "", "notes", 0, NULL, 0, NULL)) ||
+        (rc = field_length(c, root, "", "radius_mm", 1, 0, &d->radius_mm, NULL)))
+        return rc;
+    if (!(d->name = dup_string(name)) || !(d->path = dup_string(path)))
+        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+
+    const cJSON *tr = cJSON_GetObjectItemCaseSensitive(root, "travel_mm");
+    if (!tr)
+        return fail(c, "travel_mm", "missing (required: [from, to] in mm, the range of Z2)");
+    if (!cJSON_IsArray(tr) || cJSON_GetArraySize(tr) != 2)
+        return fail(c, "travel_mm", "must be an array [from, to] of two numbers (mm)");
+    for (int k = 0; k < 2; k++) {
+        const cJSON *v = cJSON_GetArrayItem(tr, k);
+        char p[32];
+        snprintf(p, sizeof p, "travel_mm[%d]", k);
+        if (!cJSON_IsNumber(v) || !isfinite(v->valuedouble))
+            return fail(c, p, "must be a finite number (mm), not %s", json_kind(v));
+        d->travel_mm[k] = v->valuedouble;
+    }
+    if (!(d->travel_mm[0] < d->travel_mm[1]))
+        return fail(c, "travel_mm", "from (%g mm) must be less than to (%g mm)", d->travel_mm[0],
+                    d->travel_mm[1]);
+
+    char mat_rel[512] = "materials.json";
+    int has_mat_file = 0;
+    if ((rc = field_string(c, root, "", "materials", 0, mat_rel, sizeof mat_rel, &has_mat_file)))
+        return rc;
+    if (has_mat_file && !mat_rel[0])
+        return fail(c, "materials", "must be a file name (relative to the design file)");
+
+    const cJSON *parts = cJSON_GetObjectItemCaseSensitive(root, "parts");
+    if (!parts)
+        return fail(c, "parts", "missing (required: an array of parts)");
+    if (!cJSON_IsArray(parts))
+        return fail(c, "parts", "must be an array of parts, not %s", json_kind(parts));
+    int n = cJSON_GetArraySize(parts);
+    if (n < 1 || n > MAX_PARTS)
+        return fail(c, "parts", "must hold 1 to %d parts, not %d", MAX_PARTS, n);
+    if (!(d->parts = calloc((size_t)n, sizeof *d->parts)))
+        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+    d->n_parts = n;
+    int i = 0;
+    for (const cJSON *p = parts->child; p; p = p->next, i++)
+        if ((rc = parse_part(c, p, i, &d->parts[i])))
+            return rc;
+
+    char pth[64];
+    for (i = 0; i < n; i++)
+        for (int j = 0; j < i; j++)
+            if (!strcmp(d->parts[i].name, d->parts[j].name)) {
+                snprintf(pth, sizeof pth, "parts[%d].name", i);
+                return fail(c, pth, "'%s' is already the name of parts[%d]: names must be unique",
+                            d->parts[i].name, j);
+            }
+
+    /* Materials: only read the table when some part names a material. */
+    cJSON *table = NULL;
+    char mat_file[1024];
+    int uses_table = 0;
+    for (i = 0; i < n; i++)
+        uses_table |= !d->parts[i].is_void && d->parts[i].material[0];
+    if (uses_table) {
+        const char *slash = strrchr(path, '/');
+        if (mat_rel[0] == '/' || !slash)
+            snprintf(mat_file, sizeof mat_file, "%s", mat_rel);
+        else
+            snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
+        if ((rc = load_materials(mat_file, &table, c->err))) {
+            if (has_mat_file) {
+                char inner[sizeof c->err->msg];
+                snprintf(inner, sizeof inner, "%s", c->err->msg);
+                return fail(c, "materials", "%s", inner);
+            }
+            return rc;
+        }
+        for (i = 0; i < n && !rc; i++) {
+            part *p = &d->parts[i];
+            if (p->is_void || !p->material[0])
+                continue;
+            snprintf(pth, sizeof pth, "parts[%d].material", i);
+            rc = lookup_material(c, table, mat_file, p->material, pth, &p->density_g_cm3);
+        }
+        cJSON_Delete(table);
+        if (rc)
+            return rc;
+    }
+
+    /* Voids take their parent's density and motion; clips and default sizes
+     * are resolved against the sphere and the shell. */
+    int shell = -1, n_shell = 0;
+    for (i = 0; i < n; i++)
+        if (d->parts[i].shape == SHAPE_SHELL && !d->parts[i].is_void && !d->parts[i].moving) {
+            shell = i;
+            n_shell++;
+        }
+    for (i = 0; i < n; i++) {
+        part *p = &d->parts[i];
+        if ((p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL) && !p->has_radius)
+            p->radius_mm = d->radius_mm; /* default: the sphere itself */
+        if (p->shape == SHAPE_SHELL && p->thickness_mm >= p->radius_mm) {
+            snprintf(pth, sizeof pth, "parts[%d].thickness_mm", i);
+            return fail(c, pth, "%g mm is not less than the shell's radius %g mm", p->thickness_mm,
+                        p->radius_mm);
+        }
+        if (p->is_void) {
+            int j = 0;
+            while (j < n && strcmp(d->parts[j].name, p->material))
+                j++;
+            snprintf(pth, sizeof pth, "parts[%d].cut_from", i);
+            if (j == n)
+                return fail(c, pth, "no part named '%s'", p->material);
+            if (d->parts[j].is_void)
+                return fail(c, pth, "'%s' is itself a void: cut from the solid part", p->material);
+            p->parent = j;
+            p->moving = d->parts[j].moving;
+            p->density_g_cm3 = d->parts[j].density_g_cm3;
+            snprintf(p->material, sizeof p->material, "%s", d->parts[j].material);
+        }
+        if (p->clip && p->moving) {
+            snprintf(pth, sizeof pth, "parts[%d].clip", i);
+            return fail(c, pth, "a void cut from a moving part cannot be clipped (its shape "
+                                "would change as it moves)");
+        }
+        if (p->clip == 1) {
+            p->clip_radius_mm = d->radius_mm;
+        } else if (p->clip == 2) {
+            snprintf(pth, sizeof pth, "parts[%d].clip", i);
+            if (n_shell != 1)
+                return fail(c, pth, "\"cavity\" needs exactly one fixed shell part, the design "
+                                    "has %d", n_shell);
+            if (d->parts[shell].z_mm != 0)
+                return fail(c, pth, "\"cavity\" needs the shell '%s' centred at z_mm = 0",
+                            d->parts[shell].name);
+            p->clip_radius_mm = d->parts[shell].radius_mm - d->parts[shell].thickness_mm;
+        }
+        if ((p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE) && !p->has_height)
+            p->height_mm = 2 * p->clip_radius_mm; /* spans the clip ball */
+    }
+
+    if ((rc = check_layout(c, d)))
+        return rc;
+
+    /* Moments: parts add, voids subtract (with the parent's density). */
+    d->fixed = d->moving = (tippe_moments){0, 0, 0, 0};
+    for (i = 0; i < n; i++) {
+        part *p = &d->parts[i];
+        tippe_moments m = tippe_moments_scale(part_moments(p), p->density_g_cm3 * 1e3);
+        if (!finite_moments(m) || !(m.m > 0))
+            return tippe_error_set(c->err, TIPPE_ECOMPUTE,
+                                   "%s: parts[%d]: the geometry module gave no finite positive "
+                                   "mass for part '%s'", c->file, i, p->name);
+        p->mass_kg = p->is_void ? -m.m : m.m;
+        tippe_moments *into = p->moving ? &d->moving : &d->fixed;
+        *into = p->is_void ? tippe_moments_sub(*into, m) : tippe_moments_add(*into, m);
+    }
+    if (!(d->moving.m > 0) || !(d->fixed.m + d->moving.m > 0))
+        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "%s: total or moving mass is not "
+                                                       "positive", c->file);
+    return TIPPE_OK;
+}
+
+int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
+                      tippe_design **out, tippe_error *err)
+{
+    /* The geometry module may call GSL: report, never abort. */
+    gsl_set_error_handler_off();
+    *out = NULL;
+    if (!path)
+        return tippe_error_set(err, TIPPE_EINPUT, "no design file given");
+    ctx *c = calloc(1, sizeof *c);
+    tippe_design *d = calloc(1, sizeof *d);
+    if (!c || !d) {
+        free(c);
+        free(d);
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    }
+    c->file = path;
+    c->err = err;
+    char *text = NULL;
+    cJSON *root = NULL;
+    int rc = read_text(path, &text, err);
+    if (!rc)
+        rc = parse_json(path, text, &root, err);
+    free(text);
+    if (!rc)
+        rc = check_duplicates(c, root, "");
+    for (int i = 0; !rc && i < n_overrides; i++)
+        rc = apply_override(c, root, overrides[i]);
+    if (!rc)
+        rc = build(c, root, path, d);
+    cJSON_Delete(root);
+    free(c);
+    if (rc) {
+        tippe_design_free(d);
+        return rc;
+    }
+    *out = d;
+    return TIPPE_OK;
+}
+
+void tippe_design_free(tippe_design *d)
+{
+    if (!d)
+        return;
+    free(d->path);
+    free(d->name);
+    free(d->parts);
+    free(d);
+}
+
+/* ------------------------------------------------------------------ top */
+
+void tippe_design_top_any(const tippe_design *d, double z2_mm, tippe_top *top)
+{
+    tippe_moments all = tippe_moments_add(d->fixed, tippe_moments_shift(d->moving, z2_mm * 1e-3));
+    tippe_inertia in = tippe_moments_inertia(all);
+    top->m = in.m;
+    top->R = d->radius_mm * 1e-3;
+    top->A = in.A;
+    top->C = in.C;
+    /* A CoM within 1e-12 R of the centre is roundoff of a symmetric design:
+     * call it centred, so that Z2 = 0 reads eps = 0 and not +-1e-19 m. */
+    if (fabs(in.z_cm) <= 1e-12 * top->R) {
+        top->eps = 0;
+        top->com_side = 0;
+    } else {
+        top->eps = fabs(in.z_cm);
+        top->com_side = in.z_cm > 0 ? 1 : -1;
+    }
+}
+
+int tippe_design_top(const tippe_design *d, double z2_mm, tippe_top *top, tippe_error *err)
+{
+    if (!isfinite(z2_mm))
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: Z2 must be a finite number of mm",
+                               d->path);
+    if (z2_mm < d->travel_mm[0] - TRAVEL_SLACK_MM || z2_mm > d->travel_mm[1] + TRAVEL_SLACK_MM)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%s: travel_mm: Z2 = %g mm is outside the design's travel "
+                               "[%g, %g] mm",
+                               d->path, z2_mm, d->travel_mm[0], d->travel_mm[1]);
+    tippe_design_top_any(d, z2_mm, top);
+    if (!(top->m > 0) || !(top->A > 0) || !(top->C > 0) || !isfinite(top->eps))
+        return tippe_error_set(err, TIPPE_ECOMPUTE,
+                               "%s: at Z2 = %g mm the mass properties are not physical "
+                               "(m = %g kg, A = %g, C = %g kg m^2)",
+                               d->path, z2_mm, top->m, top->A, top->C);
+    if (top->eps >= top->R)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%s: at Z2 = %g mm the centre of mass (%g mm from the centre) "
+                               "lies outside the sphere",
+                               d->path, z2_mm, top->eps * 1e3);
+    return TIPPE_OK;
+}
+
+/* -------------------------------------------------------------- accessors */
+
+void tippe_design_travel_mm(const tippe_design *d, double *from_mm, double *to_mm)
+{
+    *from_mm = d->travel_mm[0];
+    *to_mm = d->travel_mm[1];
+}
+
+void tippe_design_contact_travel_mm(const tippe_design *d, double *from_mm, double *to_mm)
+{
+    *from_mm = d->contact_mm[0];
+    *to_mm = d->contact_mm[1];
+}
+
+const char *tippe_design_contact_limit(const tippe_design *d, int upper)
+{
+    return d->contact_limit[upper ? 1 : 0];
+}
+
+const char *tippe_design_name(const tippe_design *d) { return d->name; }
+const char *tippe_design_path(const tippe_design *d) { return d->path; }
+double tippe_design_radius_mm(const tippe_design *d) { return d->radius_mm; }
+double tippe_design_moving_mass_kg(const tippe_design *d) { return d->moving.m; }
+int tippe_design_n_parts(const tippe_design *d) { return d->n_parts; }
+
+int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
+{
+    if (i < 0 || i >= d->n_parts)
+        return tippe_error_set(NULL, TIPPE_EINPUT, "no part %d", i);
+    const part *p = &d->parts[i];
+    out->name = p->name;
+    out->shape = shape_names[p->shape];
+    out->material = p->material[0] ? p->material : "(inline)";
+    out->role = role_of(p);
+    out->cut_from = p->is_void ? d->parts[p->parent].name : NULL;
+    out->density_g_cm3 = p->density_g_cm3;
+    out->mass_kg = p->mass_kg;
+    out->z_mm = p->z_mm;
+    out->may_protrude = p->may_protrude;
+    return TIPPE_OK;
+}
