@@ -1,0 +1,167 @@
+/* tippe/dynamics.h: one launch of an eccentric sphere on a table (paper section 3).
+ *
+ * The model: a sphere (tippe_top) on a horizontal plane under gravity g, with
+ * the normal force of the contact constraint (eq 3.17/3.19, any mass m) and
+ * viscous sliding friction Rf = -mu Rn V_Q (eq 3.12, mu in s/m).
+ *
+ * The equations are integrated in a lab-frame form that is regular at
+ * theta = 0 and pi: the state is the symmetry axis k (unit vector), the
+ * angular velocity omega and the horizontal velocity of the centre of mass,
+ * plus the dissipated energy. The paper's Euler-angle form (3.15-3.18), which
+ * is singular where sin(theta) = 0, is provided separately as a reference.
+ * docs/dynamics.md derives both and documents every criterion used here.
+ *
+ * Everything is reentrant: no globals, no static mutable state; every
+ * tippe_dynamics_run() call owns its GSL driver, so many launches may run at
+ * once on OpenMP threads. */
+#ifndef TIPPE_DYNAMICS_H
+#define TIPPE_DYNAMICS_H
+
+#include "tippe/error.h"
+#include "tippe/top.h"
+
+typedef enum {
+    TIPPE_VERDICT_NO_TIP,       /* settled spinning near theta = 0 */
+    TIPPE_VERDICT_TIP,          /* settled spinning near theta = pi */
+    TIPPE_VERDICT_HANG,         /* settled at a constant intermediate angle */
+    TIPPE_VERDICT_LOST_CONTACT, /* Rn reached 0: the top leaves the table */
+    TIPPE_VERDICT_UNDECIDED     /* t_end reached before any of the above */
+} tippe_verdict;
+
+/* "no_tip", "tip", "hang", "lost_contact", "undecided". */
+const char *tippe_verdict_name(tippe_verdict v);
+
+typedef struct {
+    tippe_top top;
+    double g;  /* m/s^2 */
+    double mu; /* s/m, viscous sliding friction coefficient (eq 3.12), >= 0 */
+} tippe_dynamics_model;
+
+/* A launch in the paper's variables (eq 3.4): nutation angle theta in [0, pi],
+ * its rate, the precession rate phi_dot (alpha), the spin n = omega.k, and the
+ * velocity of the centre of mass along e1 (horizontal direction of the axis k)
+ * and e2 = e3 x e1. At sin(theta) = 0, phi_dot does not enter the state and
+ * e1 is the lab x axis. The launch has phi = psi = 0 and the centre of mass
+ * above the lab origin. */
+typedef struct {
+    double theta, theta_dot, phi_dot, spin, U, V; /* rad, rad/s, rad/s, rad/s, m/s, m/s */
+} tippe_dynamics_initial;
+
+/* Named precession rates that keep theta stationary at launch (theta_dot = 0,
+ * U = 0): the roots alpha of A cos(theta) alpha^2 - C n alpha - m g eps = 0
+ * (eq 3.15 with theta_ddot = 0 and Rn = m g). With D = C^2 n^2 + 4 A m g eps cos(theta):
+ *   STEADY: (C n + sgn(n) sqrt(D)) / (2 A cos theta)  (sec 7.1 / Figure 12 near theta = 0)
+ *   S1:     (C n + sqrt(D)) / (2 A cos theta)          (Figure 14's s1 near theta = pi)
+ *   S2:     (C n - sqrt(D)) / (2 A cos theta)          (s2)
+ *   S3:      C n / (2 A cos theta)                     (s3: the real part when D < 0)
+ * TIPPE_EINPUT if cos(theta) = 0 or (STEADY, S1, S2) D < 0. */
+typedef enum {
+    TIPPE_PRECESSION_STEADY,
+    TIPPE_PRECESSION_S1,
+    TIPPE_PRECESSION_S2,
+    TIPPE_PRECESSION_S3
+} tippe_precession_rule;
+int tippe_dynamics_precession(const tippe_dynamics_model *model, double theta, double spin,
+                              tippe_precession_rule rule, double *phi_dot, tippe_error *err);
+
+/* Integrator choice: a GSL odeiv2 stepper by name (rk2, rk4, rkf45, rkck, rk8pd,
+ * rk1imp, rk2imp, rk4imp, bsimp, msadams, msbdf) and a relative tolerance. The
+ * absolute tolerance is rtol times a per-component scale (docs/dynamics.md). */
+typedef struct {
+    char stepper[16];
+    double rtol;
+} tippe_dynamics_accuracy;
+
+/* The named presets "fast", "balanced", "precise" (one table in dynamics.c). */
+int tippe_dynamics_accuracy_preset(const char *name, tippe_dynamics_accuracy *out,
+                                   tippe_error *err);
+int tippe_dynamics_n_presets(void);
+const char *tippe_dynamics_preset_name(int i);
+/* 1 if name is one of the allowed steppers. */
+int tippe_dynamics_stepper_known(const char *name);
+
+typedef enum {
+    TIPPE_LEVEL_VERDICT,   /* reduced state (9 components), no samples */
+    TIPPE_LEVEL_TRAJECTORY /* adds orientation and position (15), samples */
+} tippe_dynamics_level;
+
+/* The state at one time, in the paper's variables plus monitors. */
+typedef struct {
+    double t;                                      /* s */
+    double theta, theta_dot, phi_dot, spin, U, V;  /* as tippe_dynamics_initial */
+    double phi, psi, x, y;  /* rad, rad, m, m: trajectory level only (NAN otherwise) */
+    double Rn;              /* N, normal force (eq 3.19) */
+    double slip_speed;      /* m/s, |V_Q| (eq 3.9) */
+    double E;               /* J, energy (sec 4) */
+    double D;               /* J, energy dissipated so far (integral of eq 4.1) */
+    double J;               /* kg m^2/s, Jellett -L.q (eq 3.20) */
+} tippe_dynamics_sample;
+
+/* Called for each sample; a nonzero return stops the run (TIPPE_ECOMPUTE,
+ * with the callback's code in the message). */
+typedef int (*tippe_dynamics_sample_fn)(const tippe_dynamics_sample *s, void *ctx);
+
+typedef struct {
+    tippe_dynamics_level level;
+    double t_end;                      /* s */
+    tippe_dynamics_accuracy accuracy;
+    /* Trajectory level: one sample every sample_dt seconds (the integrator
+     * lands on these times), or every accepted step if sample_dt <= 0. */
+    double sample_dt;
+    tippe_dynamics_sample_fn on_sample;
+    void *sample_ctx;
+    /* Settling (docs/dynamics.md): over settle_windows consecutive windows of
+     * settle_periods slow precession periods each, the largest contact speed
+     * falls from window to window and ends below settle_slip times the velocity
+     * scale R|omega| + sqrt(g R), and theta varies by less than settle_theta_rad
+     * in the last window. Vertical if theta is within settle_vertical_rad of 0
+     * or pi, else hanging. */
+    double settle_slip;
+    double settle_theta_rad;
+    double settle_vertical_rad;
+    double settle_periods;
+    int settle_windows;
+    int run_to_t_end;  /* 1: record the verdict but keep integrating to t_end */
+} tippe_dynamics_options;
+
+/* Defaults: verdict level, t_end 100 s, preset "balanced", settle_slip 1e-4,
+ * settle_theta_rad 2e-3, settle_vertical_rad 1e-2, settle_periods 4,
+ * settle_windows 3, sample_dt 0, no callback. */
+void tippe_dynamics_options_default(tippe_dynamics_options *o);
+
+typedef struct {
+    tippe_verdict verdict;
+    double t_verdict;            /* s, when the verdict was reached */
+    tippe_dynamics_sample final; /* state at t_verdict */
+    tippe_dynamics_sample last;  /* state where integration stopped */
+    double J0, E0;               /* at launch */
+    double jellett_rel_drift;    /* max |J - J0| / max(|J0|, 1e-6 C W R), W = |omega0| + sqrt(g/R) */
+    double energy_rel_error;     /* max |E + D - E0| / E0 */
+    double energy_max_rise;      /* J, max over steps of E(t_i) - min_{j<i} E(t_j) (>= 0) */
+    double min_Rn;               /* N, smallest normal force at an accepted step */
+    long rhs_evals;              /* including those of a finite-difference Jacobian */
+    long steps, rejected_steps;
+    int state_dim;               /* 9 at verdict level, 15 at trajectory level */
+} tippe_dynamics_result;
+
+/* Integrates one launch. TIPPE_EINPUT for an invalid model, launch or option,
+ * TIPPE_ECOMPUTE if the integrator fails or the contact force is undetermined
+ * (the denominator of eq 3.19 reaches 0: friction too strong for the model). */
+int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_initial *ic,
+                       const tippe_dynamics_options *opt, tippe_dynamics_result *res,
+                       tippe_error *err);
+
+/* Energy, Jellett invariant, normal force and contact speed of a launch state
+ * (fields t, phi, psi, x, y, D of *out are 0). */
+int tippe_dynamics_evaluate(const tippe_dynamics_model *model, const tippe_dynamics_initial *s,
+                            tippe_dynamics_sample *out, tippe_error *err);
+
+/* Reference: the paper's Euler-angle equations (3.15-3.19, derived for any m),
+ * valid for 0 < theta < pi. y = (theta, theta_dot, phi_dot, spin, U, V, phi, psi),
+ * dydt its derivative; *Rn the normal force. TIPPE_ECOMPUTE where sin(theta) = 0
+ * or the contact force is undetermined. */
+enum { TIPPE_EULER_DIM = 8 };
+int tippe_dynamics_euler_rhs(const tippe_dynamics_model *model, const double y[TIPPE_EULER_DIM],
+                             double dydt[TIPPE_EULER_DIM], double *Rn);
+
+#endif
