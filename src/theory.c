@@ -79,9 +79,15 @@ static int fold_b(double k, double e, int snap_line, double *b)
     return 1;
 }
 
-static double clamp_acos(double x)
+/* acos that takes a cosine within the boundary tolerance of +-1 as exactly +-1:
+ * acos would turn a rounding error of 1e-16 there into an angle of 1e-8 rad. */
+static double snapped_acos(double x)
 {
-    return acos(x > 1.0 ? 1.0 : (x < -1.0 ? -1.0 : x));
+    if (x >= 1.0 - TIPPE_THEORY_BOUNDARY_TOL)
+        return 0.0;
+    if (x <= -1.0 + TIPPE_THEORY_BOUNDARY_TOL)
+        return M_PI;
+    return acos(x);
 }
 
 int tippe_theory_classify(double A_over_C, double eps_over_R, tippe_theory_class *out)
@@ -103,14 +109,14 @@ int tippe_theory_classify(double A_over_C, double eps_over_R, tippe_theory_class
     out->has_b = fold_b(k, e, 1, &out->b);
     if (out->has_b && fabs(out->b) <= 1.0 + tol) {
         out->has_theta_b = 1;
-        out->theta_b_rad = clamp_acos(out->b);
+        out->theta_b_rad = snapped_acos(out->b);
     }
     if (u != 0.0) {
         out->has_c = 1;
         out->c = e / u; /* eq 5.8/5.9 */
         if (fabs(out->c) <= 1.0 + tol) {
             out->has_theta_c = 1;
-            out->theta_c_rad = clamp_acos(out->c);
+            out->theta_c_rad = snapped_acos(out->c);
         }
     }
 
