@@ -1,0 +1,170 @@
+/* tippe/sweep.h: the zones of a top as its moving weight travels (paper section 6).
+ *
+ * As the weight's midpoint Z2 moves, k = A/C and e = eps/R trace a path through
+ * the phase diagram of Theorem 5.1 (Figure 2). A sweep cuts [from, to] into
+ * zones of constant group (Ia, Ib, IIa, IIb, IIc, III). The zone ends are roots,
+ * found with GSL's Brent solver to TIPPE_SWEEP_XTOL_MM, of the continuous
+ * boundary functions along the path:
+ *   (k - 1) + e, (k - 1) - e, (k - 1) + e^2, b - 1, b + 1 (b of eq 5.11) and
+ *   the signed eccentricity (the balanced point, eps = 0, where the centre of
+ *   mass crosses the sphere's centre and the top starts resting on its other pole).
+ * b is real only below the line k - 1 = -e^2, where it ends at the value 1/e; it
+ * is continued by 1/e above the line so that b -+ 1 stay continuous (neither can
+ * vanish there, as 1/e > 1).
+ * Roots are bracketed by a uniform scan and refined. Where the path touches a
+ * boundary without crossing it (|g| has a near-zero local minimum, found with
+ * GSL's Brent minimiser), the touch is reported as an event and does not cut a
+ * zone; a dip across a boundary and back between two scan points is found the
+ * same way and gives its two roots.
+ *
+ * The group of each zone is tippe_theory_classify() at its midpoint, so a sweep
+ * never disagrees with the classification. The core takes a callback Z2 -> (k, e),
+ * so that it can run on any path, not only a design's. */
+#ifndef TIPPE_SWEEP_H
+#define TIPPE_SWEEP_H
+
+#include "tippe/design.h"
+#include "tippe/error.h"
+#include "tippe/theory.h"
+
+/* Zone ends are located to within this (GSL root interval), mm. */
+#define TIPPE_SWEEP_XTOL_MM 1e-7
+
+/* A path through the phase diagram. eval fills k = A/C and the signed
+ * eccentricity e_signed = +-eps/R (positive when the centre of mass lies on the
+ * +z side of the sphere's centre, the side that then rests on the table); its
+ * magnitude is e. It must be continuous in Z2 and safe to call many times. */
+typedef struct {
+    void (*eval)(double z2_mm, void *params, double *A_over_C, double *e_signed);
+    void *params;
+} tippe_sweep_path;
+
+typedef enum {
+    TIPPE_SWEEP_I_II = 0,  /* (k - 1) + e = 0, "A/C-1=-eps/R" */
+    TIPPE_SWEEP_II_III,    /* (k - 1) - e = 0, "A/C-1=+eps/R" */
+    TIPPE_SWEEP_E2_LINE,   /* (k - 1) + e^2 = 0, "A/C-1=-(eps/R)^2" */
+    TIPPE_SWEEP_B_PLUS,    /* b = 1 */
+    TIPPE_SWEEP_B_MINUS,   /* b = -1 */
+    TIPPE_SWEEP_BALANCED,  /* eps = 0 */
+    TIPPE_SWEEP_N_BOUNDARIES
+} tippe_sweep_boundary;
+
+/* The boundary's name, as tippe_theory_class.boundary spells it. */
+const char *tippe_sweep_boundary_name(tippe_sweep_boundary b);
+
+/* A point where the path meets a boundary. */
+typedef struct {
+    double z2_mm;
+    tippe_sweep_boundary boundary;
+    int touch; /* 1: the path touches the boundary and turns back (no zone change) */
+} tippe_sweep_event;
+
+typedef struct {
+    tippe_group group;
+    double z2_from_mm, z2_to_mm;
+    int com_side;  /* sign of e_signed inside the zone (0 only for a path stuck at e = 0) */
+    /* Bit set of the boundaries (1u << tippe_sweep_boundary) at each end; 0 where
+     * the zone ends with the swept range or with the physical travel. */
+    unsigned from_boundaries, to_boundaries;
+    /* 1 inside the physical travel, 0 beyond it (tippe_sweep_mark_travel splits
+     * zones at its ends); 1 until it is called. */
+    int within_travel;
+} tippe_sweep_zone;
+
+typedef struct {
+    double from_mm, to_mm;       /* the swept range */
+    int n_zones;
+    tippe_sweep_zone *zones;     /* in order of Z2, covering [from, to] */
+    int n_events;
+    tippe_sweep_event *events;   /* every crossing and touch, in order of Z2 */
+    /* Set by tippe_sweep_mark_travel (has_travel = 0 before). */
+    int has_travel;
+    double travel_from_mm, travel_to_mm;
+} tippe_sweep_result;
+
+typedef struct {
+    int n_scan;        /* scan intervals for bracketing (default 2000) */
+    double xtol_mm;    /* root and minimum location tolerance (default TIPPE_SWEEP_XTOL_MM) */
+    /* |g| below this at a local minimum is a touch (default 1e-9: seven orders
+     * above the rounding of k - 1 +- e, far below any printable difference). */
+    double touch_tol;
+} tippe_sweep_options;
+
+void tippe_sweep_options_default(tippe_sweep_options *opt);
+
+/* Sweeps the path over [from_mm, to_mm] (from < to). opt may be NULL for the
+ * defaults. TIPPE_EINPUT for a bad range or options, or where the path leaves
+ * the domain of the classification (k <= 0, e >= 1, not finite; the message
+ * names Z2); TIPPE_ECOMPUTE if a GSL solver fails. *out is zeroed first and must
+ * be freed with tippe_sweep_result_free() whatever the return. */
+int tippe_sweep_run(const tippe_sweep_path *path, double from_mm, double to_mm,
+                    const tippe_sweep_options *opt, tippe_sweep_result *out, tippe_error *err);
+
+/* Splits the zones at the ends of the physical travel [from_mm, to_mm] and marks
+ * the parts beyond it (within_travel = 0). */
+int tippe_sweep_mark_travel(tippe_sweep_result *r, double from_mm, double to_mm,
+                            tippe_error *err);
+
+void tippe_sweep_result_free(tippe_sweep_result *r);
+
+/* The path of a design: Z2 -> its top (tippe_design_top_any), k and signed e. */
+tippe_sweep_path tippe_sweep_design_path(const tippe_design *d);
+
+/* Sweeps a design over [from_mm, to_mm] (from >= to means its stated travel)
+ * and marks its physical travel. */
+int tippe_sweep_design(const tippe_design *d, double from_mm, double to_mm,
+                       const tippe_sweep_options *opt, tippe_sweep_result *out,
+                       tippe_error *err);
+
+/* Main-group summary over the parts of the zones within the physical travel
+ * (the whole range before tippe_sweep_mark_travel). */
+typedef struct {
+    int has_I, has_II, has_III;
+    int three_in_one;             /* I, II and III all reachable */
+    /* The narrowest run of one main group (I, II or III; adjacent subgroups of
+     * the same family count as one run) that is reachable; 0 and NULL if none. */
+    double narrowest_zone_mm;
+    const char *narrowest_family;
+} tippe_sweep_summary;
+
+void tippe_sweep_summarise(const tippe_sweep_result *r, tippe_sweep_summary *out);
+
+/* How the zones move as one dimension of a design changes: the design file is
+ * reloaded at each of `steps` values evenly spaced over [from, to] with the
+ * override "field=value" after the caller's overrides, and swept over
+ * [z2_from_mm, z2_to_mm] (z2_from_mm >= z2_to_mm: each step's stated travel). */
+typedef struct {
+    int n;
+    double *values;                        /* the field's value at each step */
+    tippe_sweep_result *results;           /* physical travel marked */
+    double *travel_from_mm, *travel_to_mm; /* each step's stated travel */
+} tippe_sweep_vary_result;
+
+/* TIPPE_EINPUT if steps < 1 (or steps = 1 with from != to), a bound is not
+ * finite, or a step's design does not load (the message names the step's
+ * override). *out must be freed with tippe_sweep_vary_free() whatever the return. */
+int tippe_sweep_vary(const char *design_path, const char *const *overrides, int n_overrides,
+                     const char *field, double from, double to, int steps, double z2_from_mm,
+                     double z2_to_mm, const tippe_sweep_options *opt,
+                     tippe_sweep_vary_result *out, tippe_error *err);
+void tippe_sweep_vary_free(tippe_sweep_vary_result *v);
+
+/* Plots (src/plot_zones.c), PNG, SVG or PDF by the file's extension, written
+ * atomically (tippe/plot.h). title may be NULL. TIPPE_EINPUT for a bad file
+ * name or directory.
+ *
+ * The zone plot (the paper's Figures 7, 9, 11): A/C - 1 against Z2 with the
+ * curves +eps/R, -eps/R, -(eps/R)^2 and the A/C - 1 where b = +1 and b = -1,
+ * the zones shaded and labelled, the physical travel marked. */
+int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
+                           const tippe_sweep_result *r, const char *title, tippe_error *err);
+/* The phase diagram (the paper's Figure 2) in the (eps/R, A/C) plane, whole and
+ * zoomed on the path, with the path drawn over it and labelled with Z2. */
+int tippe_sweep_plot_phase(const char *file, const tippe_sweep_path *path,
+                           const tippe_sweep_result *r, const char *title, tippe_error *err);
+/* The zones of every step of a vary (one column per value of the field) with
+ * the physical travel. */
+int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
+                          const char *field, const char *title, tippe_error *err);
+
+#endif
