@@ -210,8 +210,17 @@ void tippe_plot_axes(const char *xlabel, const char *ylabel, const char *title)
     plslabelfunc(NULL, NULL);
     if (xlabel)
         plmtex("b", 3.0, 0.5, 0.5, xlabel);
-    if (ylabel)
-        plmtex("l", 4.4, 0.5, 0.5, ylabel);
+    if (ylabel) {
+        /* Clear of the widest tick label (a digit is about 0.6 character heights). */
+        size_t widest = 1;
+        char buf[64];
+        for (double t = ceil(panel_win[2] / axis_steps[1]) * axis_steps[1];
+             t <= panel_win[3] + 1e-9 * axis_steps[1]; t += axis_steps[1]) {
+            tick_label(PL_Y_AXIS, t, buf, (PLINT)sizeof buf, axis_steps);
+            widest = strlen(buf) > widest ? strlen(buf) : widest;
+        }
+        plmtex("l", 1.6 + 0.62 * (double)widest, 0.5, 0.5, ylabel);
+    }
     if (title)
         plmtex("t", 1.0, 0.5, 0.5, title);
 }
@@ -387,7 +396,11 @@ void tippe_plot_page_title(const char *text, double scale)
     plvpor(0.0, 1.0, 0.0, 1.0);
     plwind(0.0, 1.0, 0.0, 1.0);
     plcol0(SLOT_FG);
-    plschr(0.0, char_base * scale);
+    /* Shrink a long title to the page: a character is about 0.0087 of a
+     * 1200-pixel-wide page at scale 1. */
+    double w = open_plot ? open_plot->width : 1200.0;
+    double fit = 0.95 / (0.0087 * (1200.0 / w) * (double)strlen(text));
+    plschr(0.0, char_base * fmin(scale, fit));
     plptex(0.5, 0.955, 1.0, 0.0, 0.5, text);
     plschr(0.0, char_base);
     tippe_plot_panel(vp[0], vp[1], vp[2], vp[3], win[0], win[1], win[2], win[3]);

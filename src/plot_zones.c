@@ -58,7 +58,10 @@ static int k_where_b(double e, int sign, double k_out[2])
     if (disc < 0.0)
         return 0;
     int n = 0;
-    double u[2] = {(p - sqrt(disc)) / 8.0, (p + sqrt(disc)) / 8.0};
+    /* The larger root directly, the smaller from the product of the roots (e^2),
+     * which avoids cancellation when e is small. */
+    double big = (p + sqrt(disc)) / 8.0;
+    double u[2] = {big > 0.0 ? e * e / big : 0.0, big};
     for (int i = 0; i < 2; i++) {
         double k = 1.0 - u[i];
         tippe_theory_class c;
@@ -144,7 +147,7 @@ int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
         free(ok);
         return st;
     }
-    double vx0 = 0.09, vx1 = 0.70, vy0 = 0.11, vy1 = 0.90;
+    double vx0 = 0.09, vx1 = 0.70, vy0 = 0.11, vy1 = 0.88;
     tippe_plot_panel(vx0, vx1, vy0, vy1, r->from_mm, r->to_mm, ymin, ymax);
     double xspan = r->to_mm - r->from_mm, px_per_mm = (vx1 - vx0) * 1100 / xspan;
 
@@ -246,16 +249,12 @@ int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
                         0.5, 1.1, 0x000000u, tippe_group_name(zn->group));
     }
 
-    char ttl[512];
+    tippe_plot_axes("Z#d2#u: height of the moving weight's midpoint above the centre (mm)",
+                    "A/C − 1", "groups of Theorem 5.1 along the travel");
     if (title) {
         char esc[400];
-        snprintf(ttl, sizeof ttl, "%s: zones along the travel",
-                 tippe_plot_escape(title, esc, sizeof esc));
-    } else {
-        snprintf(ttl, sizeof ttl, "Zones along the travel");
+        tippe_plot_page_title(tippe_plot_escape(title, esc, sizeof esc), 1.1);
     }
-    tippe_plot_axes("Z#d2#u: height of the moving weight's midpoint above the centre (mm)",
-                    "A/C − 1", ttl);
 
     tippe_plot_key keys[20];
     int nk = 0;
@@ -352,7 +351,19 @@ static int run_of(const column *col, tippe_group g, int q)
     return -1;
 }
 
-static void draw_regions(double e0, double e1, double k0, double k1, int label, double scale)
+/* Distance, as a fraction of the window, from (e, k) to the nearest of the n
+ * points (pe, pk): region labels keep clear of the path drawn over them. */
+static double clearance(double e, double k, double e0, double e1, double k0, double k1, int n,
+                        const double *pe, const double *pk)
+{
+    double best = INFINITY;
+    for (int i = 0; i < n; i++)
+        best = fmin(best, hypot((pe[i] - e) / (e1 - e0), (pk[i] - k) / (k1 - k0)));
+    return best;
+}
+
+static void draw_regions(double e0, double e1, double k0, double k1, int label, double scale,
+                         int n_path, const double *pe, const double *pk)
 {
     column *cols = malloc(NC * sizeof *cols);
     double *px = malloc(2 * NC * sizeof *px), *py = malloc(2 * NC * sizeof *py);
@@ -381,12 +392,20 @@ static void draw_regions(double e0, double e1, double k0, double k1, int label, 
                     for (int c = i; c < j; c++) {
                         int r = run_of(&cols[c], (tippe_group)g, q);
                         px[n] = ec[c], py[n++] = cols[c].lo[r];
-                        /* Room around the label: the smaller of the run's height
-                         * and its distance to the region's ends across. */
-                        double w = fmin((cols[c].hi[r] - cols[c].lo[r]) / (k1 - k0),
-                                        2.0 * fmin(c - i, j - 1 - c) / NC);
-                        if (w > best_w)
-                            best_w = w, lx = ec[c], ly = 0.5 * (cols[c].lo[r] + cols[c].hi[r]);
+                        /* Room around a label: the least of its distances to the
+                         * run's ends along k, to the region's ends across, and
+                         * to the path. Five candidate heights per column. */
+                        double lo = cols[c].lo[r], hi = cols[c].hi[r];
+                        double across = 2.0 * fmin(c - i, j - 1 - c) / NC;
+                        for (int t = 1; t <= 5; t++) {
+                            double kc = lo + (hi - lo) * t / 6.0;
+                            double w = fmin(2.0 * fmin(kc - lo, hi - kc) / (k1 - k0), across);
+                            if (w > best_w && n_path > 0)
+                                w = fmin(w, 2.0 * clearance(ec[c], kc, e0, e1, k0, k1, n_path,
+                                                            pe, pk));
+                            if (w > best_w)
+                                best_w = w, lx = ec[c], ly = kc;
+                        }
                     }
                     for (int c = j - 1; c >= i; c--) {
                         int r = run_of(&cols[c], (tippe_group)g, q);
@@ -493,7 +512,7 @@ int tippe_sweep_plot_phase(const char *file, const tippe_sweep_path *path,
     }
     /* Left: the whole diagram (Figure 2). */
     tippe_plot_panel(0.065, 0.355, 0.34, 0.86, 0.0, 1.0, 0.0, 2.0);
-    draw_regions(0.0, 1.0, 1e-6, 2.0, 1, 0.9);
+    draw_regions(0.0, 1.0, 1e-6, 2.0, 1, 0.9, 0, NULL, NULL);
     draw_boundaries(0.0, 1.0);
     double bx[5] = {ze0, ze1, ze1, ze0, ze0}, by[5] = {zk0, zk0, zk1, zk1, zk0};
     draw_path(path, r, NP, pe, pk, within, 2.0);
@@ -502,7 +521,13 @@ int tippe_sweep_plot_phase(const char *file, const tippe_sweep_path *path,
 
     /* Right: zoomed on the path, labelled with Z2. */
     tippe_plot_panel(0.43, 0.725, 0.11, 0.86, ze0, ze1, zk0, zk1);
-    draw_regions(ze0, ze1, zk0, zk1, 1, 1.0);
+    /* The path first (into pe, pk), so that region labels can keep clear of it. */
+    for (int i = 0; i < NP; i++) {
+        double zz = r->from_mm + (r->to_mm - r->from_mm) * i / (NP - 1), es;
+        path->eval(zz, path->params, &pk[i], &es);
+        pe[i] = fabs(es);
+    }
+    draw_regions(ze0, ze1, zk0, zk1, 1, 1.0, NP, pe, pk);
     tippe_plot_grid();
     draw_boundaries(ze0, ze1);
     draw_path(path, r, NP, pe, pk, within, 3.0);
@@ -520,11 +545,11 @@ int tippe_sweep_plot_phase(const char *file, const tippe_sweep_path *path,
     }
     /* The direction of increasing Z2, at the end of the path. */
     tippe_plot_arrow(pe[NP - 12], pk[NP - 12], pe[NP - 1], pk[NP - 1], 0x000000u, 2.0);
-    tippe_plot_axes("#ge/R", "A/C", "zoomed on the path");
     char ttl[512], esc[400];
-    snprintf(ttl, sizeof ttl, "%s: path through the phase diagram as Z#d2#u goes from %g to %g mm",
-             title ? tippe_plot_escape(title, esc, sizeof esc) : "Design", r->from_mm, r->to_mm);
-    tippe_plot_page_title(ttl, 1.1);
+    snprintf(ttl, sizeof ttl, "the path as Z#d2#u goes from %g to %g mm", r->from_mm, r->to_mm);
+    tippe_plot_axes("#ge/R", "A/C", ttl);
+    if (title)
+        tippe_plot_page_title(tippe_plot_escape(title, esc, sizeof esc), 1.1);
 
     tippe_plot_key keys[16];
     int nk = 0;
@@ -567,7 +592,7 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
     int st = tippe_plot_open(file, 1100, 660, &p, err);
     if (st != TIPPE_OK)
         return st;
-    tippe_plot_panel(0.09, 0.70, 0.11, 0.90, xa, xb, zmin, zmax);
+    tippe_plot_panel(0.09, 0.70, 0.11, 0.88, xa, xb, zmin, zmax);
     int present[6] = {0}, beyond = 0;
     for (int i = 0; i < v->n; i++) {
         const tippe_sweep_result *r = &v->results[i];
@@ -609,14 +634,12 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
     }
     char xl[300], esc[256], ttl[512];
     snprintf(xl, sizeof xl, "%s", tippe_plot_escape(field ? field : "value", esc, sizeof esc));
+    snprintf(ttl, sizeof ttl, "zones as %s varies (dots: zone ends)", esc);
+    tippe_plot_axes(xl, "Z#d2#u (mm)", ttl);
     if (title) {
         char e2[300];
-        snprintf(ttl, sizeof ttl, "%s: zones as %s varies", tippe_plot_escape(title, e2, sizeof e2),
-                 esc);
-    } else {
-        snprintf(ttl, sizeof ttl, "Zones as %s varies", esc);
+        tippe_plot_page_title(tippe_plot_escape(title, e2, sizeof e2), 1.1);
     }
-    tippe_plot_axes(xl, "Z#d2#u (mm)", ttl);
     tippe_plot_key keys[12];
     int nk = 0;
     for (int g = 0; g < 6; g++)
@@ -626,8 +649,14 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
     if (beyond)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "beyond physical travel", C_TRAVEL,
                                       1.0, 0, 0};
-    keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_LINE, "physical travel ends", 0x000000u, 1, 2.0,
-                                  TIPPE_PLOT_DASHED};
+    int travel_shown = 0;
+    for (int i = 0; i < v->n; i++) {
+        double a = v->results[i].travel_from_mm, b = v->results[i].travel_to_mm;
+        travel_shown |= (a >= zmin && a <= zmax) || (b >= zmin && b <= zmax);
+    }
+    if (travel_shown)
+        keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_LINE, "physical travel ends", 0x000000u, 1,
+                                      2.0, TIPPE_PLOT_DASHED};
     tippe_plot_legend(keys, nk, "outside", 1, 0.8);
     return tippe_plot_close(p, err);
 }

@@ -1,6 +1,7 @@
 /* Zones of a top along the travel of its moving weight (see tippe/sweep.h). */
 #include "tippe/sweep.h"
 
+#include <cjson/cJSON.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_min.h>
@@ -569,4 +570,166 @@ int tippe_sweep_vary(const char *design_path, const char *const *overrides, int 
     }
     free(ov);
     return st;
+}
+
+/* ---- reports ---------------------------------------------------------------- */
+
+/* mm with three decimals and no "-0.000". */
+static double clean(double x) { return fabs(x) < 5e-4 ? 0.0 : x; }
+
+static void boundary_list(unsigned bits, char *buf, size_t n)
+{
+    buf[0] = '\0';
+    for (int b = 0; b < NB; b++) {
+        if (!(bits & (1u << b)))
+            continue;
+        size_t len = strlen(buf);
+        snprintf(buf + len, n - len, "%s%s", len ? ", " : "", boundary_names[b]);
+    }
+}
+
+/* Whether the zones lie on both sides of the balanced point. */
+static int mixed_sides(const tippe_sweep_result *r)
+{
+    for (int i = 1; i < r->n_zones; i++)
+        if (r->zones[i].com_side != r->zones[0].com_side)
+            return 1;
+    return 0;
+}
+
+static const char *side_down(int com_side)
+{
+    return com_side > 0 ? "+z side down" : com_side < 0 ? "-z side down" : "balanced";
+}
+
+void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe_design *d)
+{
+    if (d) {
+        double f, t;
+        tippe_design_travel_mm(d, &f, &t);
+        fprintf(out, "design   %s (%s)\n", tippe_design_name(d), tippe_design_path(d));
+        fprintf(out, "travel   stated %.3f .. %.3f mm", clean(f), clean(t));
+        if (r->has_travel)
+            fprintf(out, ", physical %.3f .. %.3f mm", clean(r->travel_from_mm),
+                    clean(r->travel_to_mm));
+        fprintf(out, "\n");
+    }
+    fprintf(out, "sweep    Z2 = %.3f .. %.3f mm\n\n", clean(r->from_mm), clean(r->to_mm));
+    fprintf(out, "%-5s %10s %10s %11s  %-22s %s\n", "zone", "from (mm)", "to (mm)",
+            "width (mm)", "ends on", "notes");
+    int mixed = mixed_sides(r);
+    for (int i = 0; i < r->n_zones; i++) {
+        const tippe_sweep_zone *z = &r->zones[i];
+        char ends[160], notes[320] = "";
+        boundary_list(z->to_boundaries, ends, sizeof ends);
+        if (!ends[0])
+            snprintf(ends, sizeof ends, "%s",
+                     i + 1 == r->n_zones ? "(end of sweep)" : "(physical travel)");
+        if (!z->within_travel) {
+            int upper = r->has_travel && z->z2_from_mm >= r->travel_to_mm;
+            const char *why = d ? tippe_design_contact_limit(d, upper) : NULL;
+            snprintf(notes, sizeof notes, "beyond physical travel%s%s%s", why ? " (" : "",
+                     why ? why : "", why ? ")" : "");
+        }
+        if (mixed) {
+            size_t len = strlen(notes);
+            snprintf(notes + len, sizeof notes - len, "%s%s", len ? "; " : "",
+                     side_down(z->com_side));
+        }
+        fprintf(out, "%-5s %10.3f %10.3f %11.3f  %-22s %s\n", tippe_group_name(z->group),
+                clean(z->z2_from_mm), clean(z->z2_to_mm), z->z2_to_mm - z->z2_from_mm, ends,
+                notes);
+    }
+    for (int i = 0; i < r->n_events; i++)
+        if (r->events[i].touch)
+            fprintf(out, "touch at Z2 = %.3f mm: the path meets %s and turns back (no zone change)\n",
+                    clean(r->events[i].z2_mm), boundary_names[r->events[i].boundary]);
+    tippe_sweep_summary s;
+    tippe_sweep_summarise(r, &s);
+    const char *where = r->has_travel ? "within the physical travel" : "in the sweep";
+    fprintf(out, "\n3-in-1   %s: groups reachable %s: %s%s%s%s\n", s.three_in_one ? "yes" : "no",
+            where, s.has_I ? "I " : "", s.has_II ? "II " : "", s.has_III ? "III" : "",
+            !s.has_I && !s.has_II && !s.has_III ? "none" : "");
+    if (s.narrowest_family)
+        fprintf(out, "narrowest reachable zone: %.3f mm (group %s)\n", s.narrowest_zone_mm,
+                s.narrowest_family);
+}
+
+/* cJSON helpers that record failure instead of returning it at every call. */
+static cJSON *add_obj(cJSON *parent, cJSON *item, const char *key, int *ok)
+{
+    if (!item) {
+        *ok = 0;
+        return NULL;
+    }
+    if (!(key ? cJSON_AddItemToObject(parent, key, item) : cJSON_AddItemToArray(parent, item))) {
+        cJSON_Delete(item);
+        *ok = 0;
+        return NULL;
+    }
+    return item;
+}
+
+static void add_pair(cJSON *o, const char *key, double a, double b, int *ok)
+{
+    double v[2] = {a, b};
+    add_obj(o, cJSON_CreateDoubleArray(v, 2), key, ok);
+}
+
+cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
+{
+    cJSON *o = cJSON_CreateObject();
+    int ok = o != NULL;
+    if (!ok)
+        return NULL;
+    if (d) {
+        double f, t;
+        tippe_design_travel_mm(d, &f, &t);
+        add_obj(o, cJSON_CreateString(tippe_design_name(d)), "design", &ok);
+        add_obj(o, cJSON_CreateString(tippe_design_path(d)), "file", &ok);
+        add_pair(o, "travel_mm", f, t, &ok);
+    }
+    add_pair(o, "sweep_mm", r->from_mm, r->to_mm, &ok);
+    if (r->has_travel)
+        add_pair(o, "physical_travel_mm", r->travel_from_mm, r->travel_to_mm, &ok);
+    cJSON *zones = add_obj(o, cJSON_CreateArray(), "zones", &ok);
+    for (int i = 0; zones && ok && i < r->n_zones; i++) {
+        const tippe_sweep_zone *z = &r->zones[i];
+        cJSON *zo = add_obj(zones, cJSON_CreateObject(), NULL, &ok);
+        if (!zo)
+            break;
+        add_obj(zo, cJSON_CreateString(tippe_group_name(z->group)), "group", &ok);
+        add_obj(zo, cJSON_CreateString(tippe_group_family(z->group)), "family", &ok);
+        add_obj(zo, cJSON_CreateNumber(z->z2_from_mm), "z2_from_mm", &ok);
+        add_obj(zo, cJSON_CreateNumber(z->z2_to_mm), "z2_to_mm", &ok);
+        add_obj(zo, cJSON_CreateNumber(z->z2_to_mm - z->z2_from_mm), "width_mm", &ok);
+        add_obj(zo, cJSON_CreateBool(z->within_travel), "within_travel", &ok);
+        add_obj(zo, cJSON_CreateNumber(z->com_side), "com_side", &ok);
+        cJSON *ends = add_obj(zo, cJSON_CreateArray(), "ends_on", &ok);
+        for (int b = 0; ends && b < NB; b++)
+            if (z->to_boundaries & (1u << b))
+                add_obj(ends, cJSON_CreateString(boundary_names[b]), NULL, &ok);
+    }
+    cJSON *touches = add_obj(o, cJSON_CreateArray(), "touches", &ok);
+    for (int i = 0; touches && ok && i < r->n_events; i++) {
+        if (!r->events[i].touch)
+            continue;
+        cJSON *t = add_obj(touches, cJSON_CreateObject(), NULL, &ok);
+        if (!t)
+            break;
+        add_obj(t, cJSON_CreateString(boundary_names[r->events[i].boundary]), "boundary", &ok);
+        add_obj(t, cJSON_CreateNumber(r->events[i].z2_mm), "z2_mm", &ok);
+    }
+    tippe_sweep_summary s;
+    tippe_sweep_summarise(r, &s);
+    add_obj(o, cJSON_CreateBool(s.three_in_one), "three_in_one", &ok);
+    add_obj(o, s.narrowest_family ? cJSON_CreateNumber(s.narrowest_zone_mm) : cJSON_CreateNull(),
+            "narrowest_zone_mm", &ok);
+    add_obj(o, s.narrowest_family ? cJSON_CreateString(s.narrowest_family) : cJSON_CreateNull(),
+            "narrowest_zone_family", &ok);
+    if (!ok) {
+        cJSON_Delete(o);
+        return NULL;
+    }
+    return o;
 }

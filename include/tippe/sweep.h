@@ -23,6 +23,8 @@
 #ifndef TIPPE_SWEEP_H
 #define TIPPE_SWEEP_H
 
+#include <stdio.h>
+
 #include "tippe/design.h"
 #include "tippe/error.h"
 #include "tippe/theory.h"
@@ -148,6 +150,20 @@ int tippe_sweep_vary(const char *design_path, const char *const *overrides, int 
                      double z2_to_mm, const tippe_sweep_options *opt,
                      tippe_sweep_vary_result *out, tippe_error *err);
 void tippe_sweep_vary_free(tippe_sweep_vary_result *v);
+
+/* Reports. d may be NULL for a path that is not a design. */
+struct cJSON;
+/* The sweep as a cJSON object: design, file, sweep_mm, travel_mm,
+ * physical_travel_mm, zones [{group, family, z2_from_mm, z2_to_mm, width_mm,
+ * within_travel, com_side, ends_on}], touches [{boundary, z2_mm}],
+ * three_in_one, narrowest_zone_mm (null if nothing is reachable),
+ * narrowest_zone_family. NULL if out of memory. */
+struct cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d);
+/* The zone table a designer reads: group, from, to, width (mm), the boundary
+ * that ends each zone, notes (beyond the physical travel, the side that rests
+ * on the table when the sweep crosses the balanced point), touches, and the
+ * 3-in-1 verdict with the narrowest reachable zone. */
+void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe_design *d);
 
 /* Plots (src/plot_zones.c), PNG, SVG or PDF by the file's extension, written
  * atomically (tippe/plot.h). title may be NULL. TIPPE_EINPUT for a bad file

@@ -1,0 +1,55 @@
+/* tippe/scenario.h: a launch described by a scenario file (JSON), for `tippe simulate`.
+ *
+ * docs/dynamics.md describes the format. In short:
+ *   {"name": "...", "notes": "...",
+ *    "top": {"m": kg, "R": m, "eps": m, "A": kg m^2, "C": kg m^2}
+ *        or {"design": "path/to/design.json", "z2_mm": 10, "set": ["FIELD=VALUE", ...]},
+ *    "g": 9.81, "mu": s/m,
+ *    "initial": {"theta": rad, "theta_dot": rad/s, "phi_dot": rad/s | "steady" | "s1" |
+ *                "s2" | "s3", "spin": rad/s, "U": m/s, "V": m/s},
+ *    "t_end": s, "accuracy": "fast" | "balanced" | "precise" | {"stepper": "...", "rtol": ...}}
+ * A design path is relative to the scenario file's directory (or absolute).
+ * Parsing is strict: keys are case-sensitive, unknown and duplicate keys are
+ * rejected, and every error names the file, the JSON path and what is wrong. */
+#ifndef TIPPE_SCENARIO_H
+#define TIPPE_SCENARIO_H
+
+#include "tippe/dynamics.h"
+#include "tippe/error.h"
+
+enum { TIPPE_PHI_DOT_GIVEN = -1 }; /* phi_dot_rule when phi_dot was a number */
+
+typedef struct {
+    char path[1024];
+    char name[256];
+    char design_path[1024]; /* resolved path, "" for an explicit top */
+    double z2_mm;           /* NAN for an explicit top */
+    tippe_dynamics_model model;
+    tippe_dynamics_initial initial; /* phi_dot resolved from its rule */
+    int phi_dot_rule;               /* TIPPE_PHI_DOT_GIVEN or a tippe_precession_rule */
+    double t_end;                   /* s */
+    tippe_dynamics_accuracy accuracy;
+    char accuracy_name[16];         /* the preset's name, or "custom" */
+} tippe_scenario;
+
+/* Loads path, applies the overrides ("mu=0.1", "initial.spin=3",
+ * "initial.phi_dot=steady", "accuracy=precise", "accuracy.rtol=1e-9",
+ * "top.z2_mm=12"; VALUE is read as JSON, or as a string if it is not JSON),
+ * then validates. TIPPE_EINPUT for a bad file or override (the message names
+ * the file, the JSON path and what is wrong), TIPPE_ECOMPUTE otherwise. */
+int tippe_scenario_load(const char *path, const char *const *overrides, int n_overrides,
+                        tippe_scenario *out, tippe_error *err);
+
+/* "steady", "s1", "s2", "s3", or "given". */
+const char *tippe_scenario_phi_dot_rule_name(int rule);
+
+/* The figure of a simulated scenario (src/plot_sim.c): theta, spin and contact
+ * speed against time in stacked panels, and the path in (phi_dot, theta, n)
+ * space as in the paper's Figures 12 and 14, with the intermediate states of
+ * eq 5.10 and theory's final states. PNG, SVG or PDF by the extension of path,
+ * written atomically. samples are trajectory-level samples in time order.
+ * PLplot has one global state: call from one thread. */
+int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynamics_result *res,
+                   const tippe_dynamics_sample *samples, int n_samples, tippe_error *err);
+
+#endif

@@ -1,0 +1,486 @@
+/* tippe simulate: integrate one launch described by a scenario file. */
+#include "cli.h"
+
+#include "tippe/dynamics.h"
+#include "tippe/plot.h"
+#include "tippe/scenario.h"
+#include "tippe/theory.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#define MAX_OVERRIDES 64
+/* A hang agrees with theory when the angles differ by less than this: the
+ * settling tolerance leaves ~1e-3 rad, a "fast" run's Jellett drift a few 1e-3. */
+#define HANG_AGREE_RAD 1e-2
+
+static void simulate_usage(FILE *out)
+{
+    fprintf(out,
+            "usage: tippe simulate SCENARIO.json [--json] [--csv FILE] [--plot FILE] [options]\n"
+            "\n"
+            "Integrates the launch of a scenario file (the paper's section 3 model with viscous\n"
+            "sliding friction) until the top settles, loses contact or reaches t_end, and\n"
+            "compares the outcome with Theorem 5.1's prediction for the launch's Jellett\n"
+            "invariant. Verdicts: no_tip, tip, hang, lost_contact, undecided.\n"
+            "\n"
+            "  --json              print one JSON object (SI units) instead of the summary\n"
+            "  --csv FILE          write the trajectory (t, theta, theta_dot, phi_dot, n, U, V,\n"
+            "                      Rn, |V_Q|, E, J, ...; units in the header)\n"
+            "  --plot FILE         draw theta, spin and contact speed against time and the\n"
+            "                      (phi_dot, theta, n) path; .png, .svg or .pdf\n"
+            "  --sample-dt S       trajectory sample interval, s (default: 16 per turn of the\n"
+            "                      launch, between t_end/10^5 and t_end/10^4)\n"
+            "  --full              keep integrating to t_end after the verdict (for plots)\n"
+            "\n"
+            "Overrides of scenario fields (applied before the file is checked):\n"
+            "  --mu S_PER_M  --g M_S2  --t-end S\n"
+            "  --theta RAD  --theta-dot RAD_S  --phi-dot RAD_S|steady|s1|s2|s3  --spin RAD_S\n"
+            "  --U M_S  --V M_S  --z2 MM (design tops)\n"
+            "  --accuracy fast|balanced|precise  --stepper NAME  --rtol X\n"
+            "  --set FIELD=VALUE   any field, e.g. --set initial.spin=3 --set top.C=1e-6\n"
+            "  --help              this text\n"
+            "\n"
+            "Exit status: 0 ok (whatever the verdict), 2 bad usage or scenario, 1 computation\n"
+            "failed. The scenario format and the settling criteria are in docs/dynamics.md.\n");
+}
+
+__attribute__((format(printf, 1, 2)))
+static int usage_error(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "tippe simulate: ");
+    vfprintf(stderr, fmt, ap);
+    fprintf(stderr, " (try tippe simulate --help)\n");
+    va_end(ap);
+    return 2;
+}
+
+typedef struct {
+    int n, cap;
+    tippe_dynamics_sample *s;
+} samples;
+
+static int keep_sample(const tippe_dynamics_sample *s, void *ctx)
+{
+    samples *b = ctx;
+    if (b->n == b->cap) {
+        int cap = b->cap ? 2 * b->cap : 1024;
+        tippe_dynamics_sample *p = realloc(b->s, (size_t)cap * sizeof *p);
+        if (!p)
+            return 1;
+        b->s = p;
+        b->cap = cap;
+    }
+    b->s[b->n++] = *s;
+    return 0;
+}
+
+static int write_csv(const char *path, const samples *b, tippe_error *err)
+{
+    char tmp[4200];
+    FILE *f = tippe_cli_open_atomic(path, tmp, sizeof tmp);
+    if (!f)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write the CSV file here", path);
+    /* mkstemp makes the file private; the CSV is an ordinary output file */
+    mode_t mask = umask(0);
+    umask(mask);
+    if (fchmod(fileno(f), 0666 & ~mask) != 0) { /* harmless: the data is still written */
+    }
+    fprintf(f, "t_s,theta_rad,theta_dot_rad_s,phi_dot_rad_s,spin_rad_s,U_m_s,V_m_s,Rn_N,"
+               "slip_speed_m_s,E_J,J_kg_m3_s,dissipated_J,phi_rad,psi_rad,x_m,y_m\n");
+    for (int i = 0; i < b->n; i++) {
+        const tippe_dynamics_sample *s = &b->s[i];
+        fprintf(f, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
+                   "%.10g,%.10g,%.10g,%.10g\n",
+                s->t, s->theta, s->theta_dot, s->phi_dot, s->spin, s->U, s->V, s->Rn,
+                s->slip_speed, s->E, s->J, s->D, s->phi, s->psi, s->x, s->y);
+    }
+    if (tippe_cli_commit_atomic(f, tmp, path))
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: writing the CSV file failed", path);
+    return TIPPE_OK;
+}
+
+/* Theory's stable final states for the launch's J, and whether the simulated
+ * outcome is one of them (-1: not comparable, i.e. lost contact or undecided). */
+typedef struct {
+    int ok;
+    char error[sizeof ((tippe_error *)0)->msg];
+    tippe_theory_class cls;
+    tippe_theory_prediction pred;
+    int agrees;
+} theory_check;
+
+static void check_theory(const tippe_scenario *sc, const tippe_dynamics_result *r,
+                         theory_check *tc)
+{
+    memset(tc, 0, sizeof *tc);
+    const tippe_top *t = &sc->model.top;
+    tippe_theory_classify(t->A / t->C, t->eps / t->R, &tc->cls);
+    tippe_error e;
+    if (tippe_theory_predict(t, sc->model.g, r->J0, &tc->pred, &e)) {
+        snprintf(tc->error, sizeof tc->error, "%s", e.msg);
+        tc->agrees = -1;
+        return;
+    }
+    tc->ok = 1;
+    if (r->verdict == TIPPE_VERDICT_LOST_CONTACT || r->verdict == TIPPE_VERDICT_UNDECIDED) {
+        tc->agrees = -1;
+        return;
+    }
+    for (int i = 0; i < tc->pred.n; i++) {
+        tippe_final_kind k = tc->pred.state[i].kind;
+        if ((k == TIPPE_FINAL_NO_TIP && r->verdict == TIPPE_VERDICT_NO_TIP) ||
+            (k == TIPPE_FINAL_TIP && r->verdict == TIPPE_VERDICT_TIP) ||
+            (k == TIPPE_FINAL_HANG && r->verdict == TIPPE_VERDICT_HANG &&
+             fabs(tc->pred.state[i].theta_rad - r->final.theta) < HANG_AGREE_RAD))
+            tc->agrees = 1;
+    }
+}
+
+static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
+                       const theory_check *tc, double elapsed_s)
+{
+    const tippe_top *t = &sc->model.top;
+    const tippe_dynamics_initial *ic = &sc->initial;
+    printf("scenario  %s (%s)\n", sc->name, sc->path);
+    if (sc->design_path[0])
+        printf("design    %s at Z2 = %g mm\n", sc->design_path, sc->z2_mm);
+    printf("top       m %.6g kg, R %.6g m, eps %.6g m, A %.6g kg m^2, C %.6g kg m^2\n", t->m,
+           t->R, t->eps, t->A, t->C);
+    printf("          A/C %.6g, eps/R %.6g: group %s\n", t->A / t->C, t->eps / t->R,
+           tippe_group_name(tc->cls.group));
+    printf("model     g %.6g m/s^2, mu %.6g s/m (viscous sliding friction, eq 3.12)\n",
+           sc->model.g, sc->model.mu);
+    printf("launch    theta %.6g rad, theta_dot %.6g rad/s, phi_dot %.6g rad/s (%s), spin %.6g "
+           "rad/s, U %.6g m/s, V %.6g m/s\n",
+           ic->theta, ic->theta_dot, ic->phi_dot,
+           tippe_scenario_phi_dot_rule_name(sc->phi_dot_rule), ic->spin, ic->U, ic->V);
+    printf("          Jellett J0 %.6g kg m^3/s, energy E0 %.6g J\n", r->J0, r->E0);
+    const tippe_dynamics_sample *f = &r->final;
+    switch (r->verdict) {
+    case TIPPE_VERDICT_NO_TIP:
+    case TIPPE_VERDICT_TIP:
+    case TIPPE_VERDICT_HANG:
+        printf("verdict   %s: settled at t = %.6g s, theta %.6g rad (%.2f deg), spin %.6g rad/s, "
+               "phi_dot %.6g rad/s, contact speed %.3g m/s\n",
+               tippe_verdict_name(r->verdict), r->t_verdict, f->theta, f->theta * 180 / M_PI,
+               f->spin, f->phi_dot, f->slip_speed);
+        break;
+    case TIPPE_VERDICT_LOST_CONTACT:
+        printf("verdict   lost_contact: the normal force reached 0 at t = %.6g s, theta %.6g rad "
+               "(%.2f deg), spin %.6g rad/s, theta_dot %.6g rad/s\n",
+               r->t_verdict, f->theta, f->theta * 180 / M_PI, f->spin, f->theta_dot);
+        break;
+    case TIPPE_VERDICT_UNDECIDED:
+        printf("verdict   undecided: not settled by t_end = %.6g s; theta %.6g rad (%.2f deg), "
+               "spin %.6g rad/s, phi_dot %.6g rad/s, contact speed %.3g m/s\n",
+               r->t_verdict, f->theta, f->theta * 180 / M_PI, f->spin, f->phi_dot,
+               f->slip_speed);
+        break;
+    }
+    if (!tc->ok) {
+        printf("theory    no prediction: %s\n", tc->error);
+    } else {
+        printf("theory    Theorem 5.1 for J0: ");
+        for (int i = 0; i < tc->pred.n; i++) {
+            const char *k = tippe_final_kind_name(tc->pred.state[i].kind);
+            if (tc->pred.state[i].kind == TIPPE_FINAL_HANG)
+                printf("%s%s at theta %.6g rad (%.2f deg)", i ? " or " : "", k,
+                       tc->pred.state[i].theta_rad, tc->pred.state[i].theta_rad * 180 / M_PI);
+            else
+                printf("%s%s", i ? " or " : "", k);
+        }
+        printf(" -> %s\n", tc->agrees > 0   ? "agrees"
+                           : tc->agrees == 0 ? "DISAGREES"
+                                             : "not comparable (no settled state)");
+    }
+    printf("accuracy  %s rtol %g (%s): Jellett drift %.2g, energy balance error %.2g, "
+           "%ld steps (%ld rejected), %ld RHS evaluations, %.3g s\n",
+           sc->accuracy.stepper, sc->accuracy.rtol, sc->accuracy_name, r->jellett_rel_drift,
+           r->energy_rel_error, r->steps, r->rejected_steps, r->rhs_evals, elapsed_s);
+}
+
+static cJSON *json_sample_fields(cJSON *o, const tippe_dynamics_sample *s)
+{
+    cJSON_AddNumberToObject(o, "theta_rad", s->theta);
+    cJSON_AddNumberToObject(o, "theta_dot_rad_s", s->theta_dot);
+    cJSON_AddNumberToObject(o, "phi_dot_rad_s", s->phi_dot);
+    cJSON_AddNumberToObject(o, "spin_rad_s", s->spin);
+    cJSON_AddNumberToObject(o, "U_m_s", s->U);
+    cJSON_AddNumberToObject(o, "V_m_s", s->V);
+    cJSON_AddNumberToObject(o, "Rn_N", s->Rn);
+    cJSON_AddNumberToObject(o, "slip_speed_m_s", s->slip_speed);
+    cJSON_AddNumberToObject(o, "E_J", s->E);
+    cJSON_AddNumberToObject(o, "dissipated_J", s->D);
+    return o;
+}
+
+static int print_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
+                      const theory_check *tc, double elapsed_s)
+{
+    const tippe_top *t = &sc->model.top;
+    cJSON *o = cJSON_CreateObject();
+    if (!o)
+        return 1;
+    cJSON_AddStringToObject(o, "scenario", sc->path);
+    cJSON_AddStringToObject(o, "name", sc->name);
+    cJSON *top = cJSON_AddObjectToObject(o, "top");
+    if (top) {
+        if (sc->design_path[0]) {
+            cJSON_AddStringToObject(top, "design", sc->design_path);
+            cJSON_AddNumberToObject(top, "z2_mm", sc->z2_mm);
+        }
+        cJSON_AddNumberToObject(top, "m_kg", t->m);
+        cJSON_AddNumberToObject(top, "R_m", t->R);
+        cJSON_AddNumberToObject(top, "eps_m", t->eps);
+        cJSON_AddNumberToObject(top, "A_kg_m2", t->A);
+        cJSON_AddNumberToObject(top, "C_kg_m2", t->C);
+        cJSON_AddNumberToObject(top, "A_over_C", t->A / t->C);
+        cJSON_AddNumberToObject(top, "eps_over_R", t->eps / t->R);
+        cJSON_AddStringToObject(top, "group", tippe_group_name(tc->cls.group));
+    }
+    cJSON_AddNumberToObject(o, "g_m_s2", sc->model.g);
+    cJSON_AddNumberToObject(o, "mu_s_m", sc->model.mu);
+    cJSON *ini = cJSON_AddObjectToObject(o, "initial");
+    if (ini) {
+        cJSON_AddNumberToObject(ini, "theta_rad", sc->initial.theta);
+        cJSON_AddNumberToObject(ini, "theta_dot_rad_s", sc->initial.theta_dot);
+        cJSON_AddNumberToObject(ini, "phi_dot_rad_s", sc->initial.phi_dot);
+        cJSON_AddStringToObject(ini, "phi_dot_rule",
+                                tippe_scenario_phi_dot_rule_name(sc->phi_dot_rule));
+        cJSON_AddNumberToObject(ini, "spin_rad_s", sc->initial.spin);
+        cJSON_AddNumberToObject(ini, "U_m_s", sc->initial.U);
+        cJSON_AddNumberToObject(ini, "V_m_s", sc->initial.V);
+    }
+    cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(r->verdict));
+    cJSON_AddNumberToObject(o, "t_s", r->t_verdict);
+    json_sample_fields(o, &r->final);
+    cJSON_AddNumberToObject(o, "J0_kg_m3_s", r->J0);
+    cJSON_AddNumberToObject(o, "E0_J", r->E0);
+    cJSON_AddNumberToObject(o, "t_end_s", sc->t_end);
+    cJSON_AddNumberToObject(o, "jellett_rel_drift", r->jellett_rel_drift);
+    cJSON_AddNumberToObject(o, "energy_rel_error", r->energy_rel_error);
+    cJSON_AddNumberToObject(o, "min_Rn_N", r->min_Rn);
+    cJSON_AddNumberToObject(o, "rhs_evals", (double)r->rhs_evals);
+    cJSON_AddNumberToObject(o, "steps", (double)r->steps);
+    cJSON_AddNumberToObject(o, "rejected_steps", (double)r->rejected_steps);
+    cJSON_AddNumberToObject(o, "state_dim", r->state_dim);
+    cJSON_AddNumberToObject(o, "elapsed_s", elapsed_s);
+    cJSON *acc = cJSON_AddObjectToObject(o, "accuracy");
+    if (acc) {
+        cJSON_AddStringToObject(acc, "preset", sc->accuracy_name);
+        cJSON_AddStringToObject(acc, "stepper", sc->accuracy.stepper);
+        cJSON_AddNumberToObject(acc, "rtol", sc->accuracy.rtol);
+    }
+    cJSON *th = cJSON_AddObjectToObject(o, "theory");
+    if (th) {
+        cJSON_AddStringToObject(th, "group", tippe_group_name(tc->cls.group));
+        if (!tc->ok) {
+            cJSON_AddStringToObject(th, "error", tc->error);
+        } else {
+            cJSON *arr = cJSON_AddArrayToObject(th, "prediction");
+            for (int i = 0; arr && i < tc->pred.n; i++) {
+                cJSON *p = cJSON_CreateObject();
+                if (!p)
+                    continue;
+                cJSON_AddStringToObject(p, "kind", tippe_final_kind_name(tc->pred.state[i].kind));
+                cJSON_AddNumberToObject(p, "theta_rad", tc->pred.state[i].theta_rad);
+                cJSON_AddNumberToObject(p, "spin_rad_s", tc->pred.state[i].spin_rad_s);
+                cJSON_AddNumberToObject(p, "phi_dot_rad_s", tc->pred.state[i].phi_dot_rad_s);
+                cJSON_AddItemToArray(arr, p);
+            }
+        }
+        if (tc->agrees < 0)
+            cJSON_AddNullToObject(th, "agrees");
+        else
+            cJSON_AddBoolToObject(th, "agrees", tc->agrees);
+        cJSON_AddNumberToObject(th, "hang_tolerance_rad", HANG_AGREE_RAD);
+    }
+    char *text = cJSON_Print(o);
+    cJSON_Delete(o);
+    if (!text)
+        return 1;
+    printf("%s\n", text);
+    free(text);
+    return 0;
+}
+
+/* A flag that takes a value: the next argument, or a usage error. */
+static const char *value_of(int argc, char **argv, int *i)
+{
+    if (*i + 1 >= argc)
+        return NULL;
+    return argv[++*i];
+}
+
+int tippe_cli_simulate(int argc, char **argv)
+{
+    static const struct {
+        const char *flag, *field;
+    } field_flags[] = {
+        {"--mu", "mu"},
+        {"--g", "g"},
+        {"--t-end", "t_end"},
+        {"--theta", "initial.theta"},
+        {"--theta-dot", "initial.theta_dot"},
+        {"--phi-dot", "initial.phi_dot"},
+        {"--spin", "initial.spin"},
+        {"--U", "initial.U"},
+        {"--V", "initial.V"},
+        {"--z2", "top.z2_mm"},
+        {"--accuracy", "accuracy"},
+        {"--stepper", "accuracy.stepper"},
+        {"--rtol", "accuracy.rtol"},
+    };
+    const int n_field_flags = (int)(sizeof field_flags / sizeof field_flags[0]);
+    const char *scenario = NULL, *csv = NULL, *plot = NULL;
+    int json = 0, full = 0;
+    double sample_dt = 0.0;
+    char over_buf[MAX_OVERRIDES][512];
+    const char *overrides[MAX_OVERRIDES];
+    int n_over = 0;
+
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            simulate_usage(stdout);
+            return 0;
+        }
+        if (!strcmp(a, "--json")) {
+            json = 1;
+            continue;
+        }
+        if (!strcmp(a, "--full")) {
+            full = 1;
+            continue;
+        }
+        if (!strcmp(a, "--csv") || !strcmp(a, "--plot") || !strcmp(a, "--sample-dt") ||
+            !strcmp(a, "--set")) {
+            const char *v = value_of(argc, argv, &i);
+            if (!v)
+                return usage_error("%s needs a value", a);
+            if (!strcmp(a, "--csv")) {
+                csv = v;
+            } else if (!strcmp(a, "--plot")) {
+                plot = v;
+            } else if (!strcmp(a, "--sample-dt")) {
+                char *end = NULL;
+                sample_dt = strtod(v, &end);
+                if (!end || *end || !(sample_dt > 0) || !isfinite(sample_dt))
+                    return usage_error("--sample-dt '%s': expected a positive number of seconds",
+                                       v);
+            } else {
+                if (n_over == MAX_OVERRIDES)
+                    return usage_error("more than %d overrides", MAX_OVERRIDES);
+                snprintf(over_buf[n_over], sizeof over_buf[n_over], "%s", v);
+                overrides[n_over] = over_buf[n_over];
+                n_over++;
+            }
+            continue;
+        }
+        int matched = 0;
+        for (int k = 0; k < n_field_flags; k++)
+            if (!strcmp(a, field_flags[k].flag)) {
+                const char *v = value_of(argc, argv, &i);
+                if (!v)
+                    return usage_error("%s needs a value", a);
+                if (n_over == MAX_OVERRIDES)
+                    return usage_error("more than %d overrides", MAX_OVERRIDES);
+                snprintf(over_buf[n_over], sizeof over_buf[n_over], "%s=%s", field_flags[k].field,
+                         v);
+                overrides[n_over] = over_buf[n_over];
+                n_over++;
+                matched = 1;
+                break;
+            }
+        if (matched)
+            continue;
+        if (a[0] == '-' && a[1])
+            return usage_error("unknown option '%s'", a);
+        if (scenario)
+            return usage_error("more than one scenario file ('%s' and '%s')", scenario, a);
+        scenario = a;
+    }
+    if (!scenario)
+        return usage_error("no scenario file given");
+    if (plot && !tippe_plot_device(plot))
+        return usage_error("--plot %s: use a .png, .svg or .pdf file name", plot);
+
+    tippe_scenario sc;
+    tippe_error err;
+    int rc = tippe_scenario_load(scenario, overrides, n_over, &sc, &err);
+    if (rc) {
+        fprintf(stderr, "tippe simulate: %s\n", err.msg);
+        return rc;
+    }
+
+    tippe_dynamics_options opt;
+    tippe_dynamics_options_default(&opt);
+    opt.t_end = sc.t_end;
+    opt.accuracy = sc.accuracy;
+    opt.run_to_t_end = full;
+    samples buf = {0, 0, NULL};
+    if (csv || plot) {
+        opt.level = TIPPE_LEVEL_TRAJECTORY;
+        if (sample_dt <= 0) {
+            /* 16 samples per turn at the launch's rotation rate, so that the
+             * plots resolve the precession, but no more than 10^5 samples */
+            const tippe_dynamics_initial *ic = &sc.initial;
+            double w = sqrt(ic->theta_dot * ic->theta_dot + ic->spin * ic->spin +
+                            pow(ic->phi_dot * sin(ic->theta), 2)) +
+                       sqrt(sc.model.g / sc.model.top.R);
+            sample_dt = fmax(sc.t_end * 1e-5, fmin(sc.t_end * 1e-4, 2 * M_PI / (16 * w)));
+        }
+        opt.sample_dt = sample_dt;
+        opt.on_sample = keep_sample;
+        opt.sample_ctx = &buf;
+    }
+    tippe_dynamics_result res;
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    rc = tippe_dynamics_run(&sc.model, &sc.initial, &opt, &res, &err);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    const double elapsed = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    if (rc) {
+        fprintf(stderr, "tippe simulate: %s: %s\n", scenario, err.msg);
+        free(buf.s);
+        return rc;
+    }
+    theory_check tc;
+    check_theory(&sc, &res, &tc);
+
+    int status = 0;
+    if (csv && (rc = write_csv(csv, &buf, &err))) {
+        fprintf(stderr, "tippe simulate: %s\n", err.msg);
+        status = rc;
+    }
+    if (!status && plot &&
+        (rc = tippe_plot_sim(plot, &sc, &res, buf.s, buf.n, &err))) {
+        fprintf(stderr, "tippe simulate: %s\n", err.msg);
+        status = rc;
+    }
+    if (!status) {
+        if (json) {
+            if (print_json(&sc, &res, &tc, elapsed)) {
+                fprintf(stderr, "tippe simulate: out of memory\n");
+                status = 1;
+            }
+        } else {
+            print_text(&sc, &res, &tc, elapsed);
+            if (csv)
+                printf("csv       %s (%d samples)\n", csv, buf.n);
+            if (plot)
+                printf("plot      %s\n", plot);
+        }
+    }
+    free(buf.s);
+    return status;
+}

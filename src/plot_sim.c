@@ -1,0 +1,249 @@
+/* The figure of one simulated launch: time series on the left, the path in
+ * (phi_dot, theta, n) space on the right, as in the paper's Figures 12 and 14. */
+#include "tippe/plot.h"
+#include "tippe/scenario.h"
+#include "tippe/theory.h"
+
+#include <math.h>
+#include <plplot/plplot.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { PAGE_W = 1800, PAGE_H = 1100 };
+/* A cmap0 slot for the raw 3D calls; plot.h's helpers use slots 0-2 and 16+. */
+enum { SLOT_3D = 10 };
+
+static const unsigned COL_TRAJ = 0x1f5fbf, COL_THEORY = 0x1a9641, COL_CURVE = 0xd7301f,
+                      COL_GREY = 0x808080;
+
+static void colour_3d(unsigned rgb)
+{
+    plscol0a(SLOT_3D, (PLINT)((rgb >> 16) & 0xff), (PLINT)((rgb >> 8) & 0xff),
+             (PLINT)(rgb & 0xff), 1.0);
+    plcol0(SLOT_3D);
+}
+
+static void range(const double *v, int n, double *lo, double *hi)
+{
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    for (int i = 0; i < n; i++)
+        if (isfinite(v[i])) {
+            *lo = fmin(*lo, v[i]);
+            *hi = fmax(*hi, v[i]);
+        }
+    if (!(*lo <= *hi)) {
+        *lo = 0;
+        *hi = 1;
+    }
+    double pad = 0.05 * (*hi - *lo);
+    if (pad == 0)
+        pad = fmax(1e-3, 0.05 * fabs(*hi));
+    *lo -= pad;
+    *hi += pad;
+}
+
+/* Plain numbers on the axes (PLplot would otherwise factor out "x10^n"). */
+static void label_plain(PLINT axis, PLFLT value, char *label, PLINT length, PLPointer data)
+{
+    (void)axis;
+    const double step = data ? *(const double *)data : 0.0;
+    if (fabs(value) < 1e-9 * (step > 0 ? step : 1.0))
+        value = 0.0; /* no "-0" or "1e-17" at zero */
+    snprintf(label, (size_t)length, "%.4g", value);
+}
+
+/* A 1-2-5 step giving at most about n intervals over span. */
+static double tick_step(double span, double n)
+{
+    if (!(span > 0) || !isfinite(span))
+        return 1.0;
+    double raw = span / n, p10 = pow(10.0, floor(log10(raw))), m = raw / p10;
+    return (m <= 1.0 ? 1.0 : m <= 2.0 ? 2.0 : m <= 5.0 ? 5.0 : 10.0) * p10;
+}
+
+/* Frame, grid and labels of a time-series panel, drawn here rather than with
+ * the shared helper so that the stacked panels can share one labelled time
+ * axis and keep their numbers apart. */
+static void series_axes(double xspan, double yspan, int x_numbers, const char *xlabel,
+                        const char *ylabel)
+{
+    const double xs = tick_step(xspan, 6), ys = tick_step(yspan, 5);
+    colour_3d(0xc8c8c8);
+    pllsty(2);
+    plbox("g", xs, 0, "g", ys, 0);
+    pllsty(1);
+    colour_3d(0x000000);
+    plschr(0.0, 0.62);
+    double step = fmin(xs, ys);
+    plslabelfunc(label_plain, &step);
+    plbox(x_numbers ? "bcnost" : "bcst", xs, 0, "bcnostv", ys, 0);
+    plslabelfunc(NULL, NULL);
+    if (xlabel)
+        plmtex("b", 2.8, 0.5, 0.5, xlabel);
+    if (ylabel)
+        plmtex("l", 6.5, 0.5, 0.5, ylabel);
+    plschr(0.0, 1.0);
+}
+
+/* A horizontal dashed line across the current panel (theory's final values). */
+static void hline(double t0, double t1, double y, unsigned rgb)
+{
+    double x[2] = {t0, t1}, yy[2] = {y, y};
+    tippe_plot_line(2, x, yy, rgb, 1.5, TIPPE_PLOT_DASHED);
+}
+
+int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynamics_result *res,
+                   const tippe_dynamics_sample *smp, int n, tippe_error *err)
+{
+    if (n < 2)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: fewer than 2 samples to plot", path);
+    double *t = malloc(8 * (size_t)n * sizeof *t);
+    if (!t)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
+    double *th = t + n, *spin = th + n, *lslip = spin + n, *al = lslip + n;
+    double *cx = al + n, *cy = cx + n, *cz = cy + n; /* eq 5.10 curve, n points at most */
+    for (int i = 0; i < n; i++) {
+        t[i] = smp[i].t;
+        th[i] = smp[i].theta;
+        spin[i] = smp[i].spin;
+        al[i] = smp[i].phi_dot;
+        /* 1e-16 m/s floors an exactly rolling contact on the log axis */
+        lslip[i] = log10(fmax(smp[i].slip_speed, 1e-16));
+    }
+    const tippe_top *top = &sc->model.top;
+    tippe_theory_prediction pred;
+    tippe_error terr;
+    int have_pred = tippe_theory_predict(top, sc->model.g, res->J0, &pred, &terr) == TIPPE_OK;
+
+    tippe_plot *p = NULL;
+    int rc = tippe_plot_open(path, PAGE_W, PAGE_H, &p, err);
+    if (rc) {
+        free(t);
+        return rc;
+    }
+    char esc[300], title[600];
+    tippe_plot_escape(sc->name, esc, sizeof esc);
+    snprintf(title, sizeof title, "%s at t = %.4g s: %s", tippe_verdict_name(res->verdict),
+             res->t_verdict, esc);
+
+    const double t_lo = t[0], t_hi = t[n - 1] > t[0] ? t[n - 1] : t[0] + 1;
+    const double lx0 = 0.085, lx1 = 0.465;
+
+    /* theta against time, on the full [0, pi] so that tip and no tip read at a glance */
+    tippe_plot_panel(lx0, lx1, 0.66, 0.90, t_lo, t_hi, 0.0, M_PI);
+    series_axes(t_hi - t_lo, M_PI, 0, NULL, "nutation #gh (rad)");
+    if (have_pred)
+        for (int i = 0; i < pred.n; i++)
+            hline(t_lo, t_hi, pred.state[i].theta_rad, COL_THEORY);
+    tippe_plot_line(n, t, th, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);
+
+    double lo, hi;
+    range(spin, n, &lo, &hi);
+    /* after a lift-off theory's final spin is beside the point: keep the data's scale */
+    if (have_pred && res->verdict != TIPPE_VERDICT_LOST_CONTACT)
+        for (int i = 0; i < pred.n; i++) {
+            lo = fmin(lo, pred.state[i].spin_rad_s);
+            hi = fmax(hi, pred.state[i].spin_rad_s);
+        }
+    tippe_plot_panel(lx0, lx1, 0.39, 0.63, t_lo, t_hi, lo, hi);
+    series_axes(t_hi - t_lo, hi - lo, 0, NULL, "spin n (rad/s)");
+    if (have_pred)
+        for (int i = 0; i < pred.n; i++)
+            hline(t_lo, t_hi, pred.state[i].spin_rad_s, COL_THEORY);
+    tippe_plot_line(n, t, spin, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);
+
+    range(lslip, n, &lo, &hi);
+    lo = fmax(lo, hi - 14.0); /* below 1e-14 of the largest speed is rounding */
+    tippe_plot_panel(lx0, lx1, 0.12, 0.36, t_lo, t_hi, lo, hi);
+    series_axes(t_hi - t_lo, hi - lo, 1, "time t (s)", "log#d10#u sliding speed |V#dQ#u| (m/s)");
+    tippe_plot_line(n, t, lslip, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);
+
+
+    /* (alpha, theta, n): the projection of the paper's Figures 12 and 14 */
+    double alo, ahi, nlo, nhi;
+    range(al, n, &alo, &ahi);
+    range(spin, n, &nlo, &nhi);
+    /* eq 5.4-5.6 curve of intermediate states with the sign of J0's branch,
+     * kept inside the box of the trajectory */
+    int nc = 0;
+    const int sign = res->J0 >= 0 ? 1 : -1;
+    for (int i = 1; i < n && nc < n; i++) {
+        double q = M_PI * i / n;
+        tippe_theory_state st;
+        if (tippe_theory_intermediate(top, sc->model.g, q, sign, &st, &terr) != TIPPE_OK)
+            continue;
+        if (st.phi_dot_rad_s < alo || st.phi_dot_rad_s > ahi || st.spin_rad_s < nlo ||
+            st.spin_rad_s > nhi)
+            continue;
+        cx[nc] = st.phi_dot_rad_s;
+        cy[nc] = q;
+        cz[nc] = st.spin_rad_s;
+        nc++;
+    }
+    const double vx0 = 0.56, vx1 = 0.98, vy0 = 0.24, vy1 = 0.88;
+    tippe_plot_panel(vx0, vx1, vy0, vy1, 0, 1, 0, 1);
+    tippe_plot_margin_text("t", 0.5, 0.5, 0.5, 0.9, 0x000000,
+                           "path in (#ga, #gh, n), as the paper's Figures 12 and 14");
+    plvpor(vx0, vx1, vy0, vy1);
+    plwind(-1.25, 1.25, -0.8, 1.5);
+    plw3d(1.35, 1.35, 1.3, alo, ahi, 0.0, M_PI, nlo, nhi, 25.0, 50.0);
+    colour_3d(0x000000);
+    plwidth(1.0);
+    plschr(0.0, 0.62);
+    plslabelfunc(label_plain, NULL);
+    plbox3("bnostu", "precession #ga (rad/s)", 0.0, 0, "bnostu", "#gh (rad)", 0.0, 0,
+           "bcdnost", "", 0.0, 0);
+    plslabelfunc(NULL, NULL);
+    plmtex("l", -0.5, 0.55, 0.5, "spin n (rad/s)");
+    /* curve segments: consecutive kept points, broken where theta jumped */
+    colour_3d(COL_CURVE);
+    plwidth(2.5);
+    for (int i = 0; i < nc;) {
+        int j = i + 1;
+        while (j < nc && cy[j] - cy[j - 1] < 2.5 * M_PI / n)
+            j++;
+        if (j - i > 1)
+            plline3(j - i, cx + i, cy + i, cz + i);
+        i = j;
+    }
+    colour_3d(COL_TRAJ);
+    plwidth(1.2);
+    plline3(n, al, th, spin);
+    colour_3d(COL_GREY);
+    /* start (circle) and end (filled dot) */
+    plssym(0.0, 1.6);
+    plpoin3(1, al, th, spin, 4);
+    colour_3d(0x000000);
+    plpoin3(1, al + n - 1, th + n - 1, spin + n - 1, 17);
+    plssym(0.0, 1.0);
+    plwidth(1.0);
+    plschr(0.0, 1.0);
+
+    /* one legend for both sides, in the strip under the 3D panel */
+    tippe_plot_panel(vx0, vx1, 0.07, 0.20, 0, 1, 0, 1);
+    const tippe_plot_key keys[] = {
+        {TIPPE_PLOT_KEY_LINE, "simulation (3D: open circle start, dot end)", COL_TRAJ, 1, 2.0,
+         TIPPE_PLOT_SOLID},
+        {TIPPE_PLOT_KEY_LINE, "Theorem 5.1 final state(s) for the launch's J", COL_THEORY, 1,
+         1.5, TIPPE_PLOT_DASHED},
+        {TIPPE_PLOT_KEY_LINE, "intermediate states (eqs 5.4-5.6, 5.10)", COL_CURVE, 1, 2.5,
+         TIPPE_PLOT_SOLID},
+    };
+    tippe_plot_legend(keys, 3, "tl", 1, 0.7);
+    char note[400];
+    tippe_theory_class cls;
+    tippe_theory_classify(top->A / top->C, top->eps / top->R, &cls);
+    snprintf(note, sizeof note,
+             "A/C = %.4g, #ge/R = %.4g (group %s), #gm = %.3g s/m, J#d0#u = %.4g kg m#u3#d/s",
+             top->A / top->C, top->eps / top->R, tippe_group_name(cls.group), sc->model.mu,
+             res->J0);
+    tippe_plot_panel(0.0, 1.0, 0.0, 1.0, 0, 1, 0, 1);
+    tippe_plot_text(0.76, 0.025, 0.0, 0.5, 0.75, 0x000000, note);
+    /* last: the title helper restores the current panel, so one must exist */
+    tippe_plot_page_title(title, fmin(1.1, 110.0 / (double)strlen(title)));
+
+    free(t);
+    return tippe_plot_close(p, err);
+}
