@@ -1,0 +1,199 @@
+#!/usr/bin/env bash
+# tippe simulate as a user drives it: bad scenarios and bad usage exit 2 with a
+# message naming the file and the field; good ones give a summary, JSON with the
+# documented keys, a CSV and a plot, written atomically.
+# Usage: test_simulate_cli.sh /path/to/tippe   (run from the repository root)
+set -u
+tippe=${1:?usage: test_simulate_cli.sh /path/to/tippe}
+here=$(pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+ok() { passed=$((passed + 1)); }
+bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+# expect_fail NAME STATUS PATTERN... -- ARGS: tippe simulate ARGS must exit with
+# STATUS, print every PATTERN (fixed strings) on stderr and nothing on stdout.
+expect_fail() {
+    local name=$1 want=$2
+    shift 2
+    local pats=()
+    while [ "$1" != "--" ]; do pats+=("$1"); shift; done
+    shift
+    "$tippe" simulate "$@" >"$tmp/out" 2>"$tmp/err"
+    local st=$?
+    if [ "$st" -ne "$want" ]; then
+        bad "$name: exit $st, want $want; stderr: $(cat "$tmp/err")"
+        return
+    fi
+    for p in "${pats[@]}"; do
+        if ! grep -qF -- "$p" "$tmp/err"; then
+            bad "$name: stderr lacks '$p': $(cat "$tmp/err")"
+            return
+        fi
+    done
+    if [ -s "$tmp/out" ]; then
+        bad "$name: printed on stdout although it failed"
+        return
+    fi
+    ok
+}
+
+# A valid scenario (Figure 12's top below n-, settles in ~800 s of model time);
+# each bad case edits one field of it with python's json module.
+base=$tmp/base.json
+cat >"$base" <<'EOF'
+{
+  "name": "cli test",
+  "top": {"m": 1, "R": 1, "eps": 0.3, "A": 0.92, "C": 1},
+  "g": 1,
+  "mu": 0.04,
+  "initial": {"theta": 0.01, "theta_dot": 0, "phi_dot": "steady", "spin": 0.5, "U": 0, "V": 0},
+  "t_end": 5000,
+  "accuracy": "fast"
+}
+EOF
+# mutate OUT PYTHON: writes base.json changed by a python statement on dict d
+mutate() {
+    python3 - "$base" "$1" "$2" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+exec(sys.argv[3])
+json.dump(d, open(sys.argv[2], "w"))
+EOF
+}
+
+# --- good runs --------------------------------------------------------------
+"$tippe" simulate --help >"$tmp/out" 2>&1 && grep -q "usage: tippe simulate" "$tmp/out" &&
+    grep -q -- "--csv FILE" "$tmp/out" && ok || bad "--help"
+
+if "$tippe" simulate "$base" >"$tmp/out" 2>"$tmp/err"; then
+    # the summary names the verdict, theory's verdict and the accuracy reached, with units
+    for p in "verdict   no_tip" "agrees" "Jellett drift" "energy balance error" "rad/s" \
+             "kg m^3/s" "RHS evaluations"; do
+        grep -qF -- "$p" "$tmp/out" || bad "text summary lacks '$p'"
+    done
+    ok
+else
+    bad "valid scenario failed: $(cat "$tmp/err")"
+fi
+
+if "$tippe" simulate "$base" --json >"$tmp/out.json" 2>"$tmp/err"; then
+    python3 - "$tmp/out.json" <<'EOF' && ok || bad "--json keys: $(cat "$tmp/out.json")"
+import json, sys
+d = json.load(open(sys.argv[1]))
+for k in ["verdict", "t_s", "theta_rad", "spin_rad_s", "jellett_rel_drift",
+          "energy_rel_error", "rhs_evals", "steps", "theory"]:
+    assert k in d, k
+assert d["verdict"] == "no_tip", d["verdict"]
+assert d["theory"]["agrees"] is True
+assert d["theory"]["prediction"][0]["kind"] == "no_tip"
+# the fast preset (rtol 1e-5) keeps J to well under 1e-3 over this run
+assert 0 <= d["jellett_rel_drift"] < 1e-3 and 0 <= d["energy_rel_error"] < 1e-3
+assert d["steps"] > 0 and d["rhs_evals"] >= d["steps"]
+EOF
+else
+    bad "--json failed: $(cat "$tmp/err")"
+fi
+
+# command-line overrides reach the run: above n* the same top tips
+if "$tippe" simulate "$base" --json --spin 3 --accuracy balanced >"$tmp/o2.json" 2>"$tmp/err"; then
+    python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["verdict"]=="tip" and d["initial"]["spin_rad_s"]==3 and d["accuracy"]["stepper"]=="rk8pd", d' "$tmp/o2.json" && ok ||
+        bad "overrides --spin/--accuracy not applied: $(cat "$tmp/o2.json")"
+else
+    bad "override run failed: $(cat "$tmp/err")"
+fi
+# a huge spin throws the top off the table: reported, not integrated through
+if "$tippe" simulate "$base" --json --spin 100 --theta 0.3 >"$tmp/o3.json" 2>"$tmp/err"; then
+    python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["verdict"]=="lost_contact" and d["theory"]["agrees"] is None and d["Rn_N"] >= 0, d' "$tmp/o3.json" && ok ||
+        bad "lost contact: $(cat "$tmp/o3.json")"
+else
+    bad "lost-contact run failed: $(cat "$tmp/err")"
+fi
+
+# CSV and plot: complete files, units in the header, nothing temporary left
+if "$tippe" simulate "$base" --csv "$tmp/traj.csv" --plot "$tmp/traj.png" >"$tmp/out" 2>"$tmp/err"; then
+    head -1 "$tmp/traj.csv" | grep -q "^t_s,theta_rad,theta_dot_rad_s,phi_dot_rad_s,spin_rad_s,U_m_s,V_m_s,Rn_N,slip_speed_m_s,E_J,J_kg_m3_s" &&
+        ok || bad "CSV header: $(head -1 "$tmp/traj.csv")"
+    rows=$(($(wc -l <"$tmp/traj.csv") - 1))
+    [ "$rows" -gt 100 ] && ok || bad "CSV has $rows rows"
+    awk -F, 'NR > 1 && NF != 16 { bad = 1 } END { exit bad }' "$tmp/traj.csv" && ok ||
+        bad "CSV rows without 16 fields"
+    [ "$(head -c 4 "$tmp/traj.png" | od -An -c | tr -d ' ')" = "211PNG" ] && ok ||
+        bad "plot is not a PNG"
+    ls "$tmp" | grep -q "\.tmp\." && bad "temporary files left: $(ls "$tmp")" || ok
+else
+    bad "CSV/plot run failed: $(cat "$tmp/err")"
+fi
+"$tippe" simulate "$base" --plot "$tmp/traj.svg" >/dev/null 2>"$tmp/err" &&
+    head -c 200 "$tmp/traj.svg" | grep -q "<svg\|<?xml" && ok || bad "SVG plot: $(cat "$tmp/err")"
+
+# a top from a design file, path relative to the scenario's directory
+mkdir -p "$tmp/sc"
+cp "$here/designs/shell-band.json" "$here/designs/materials.json" "$tmp/"
+cat >"$tmp/sc/design.json" <<'EOF'
+{"name": "design top", "top": {"design": "../shell-band.json", "z2_mm": 10},
+ "mu": 0.1, "initial": {"theta": 0.1, "spin": 60}, "t_end": 2}
+EOF
+if "$tippe" simulate "$tmp/sc/design.json" --json >"$tmp/o4.json" 2>"$tmp/err"; then
+    python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); t=d["top"]; assert t["z2_mm"]==10 and 0 < t["m_kg"] < 1 and t["R_m"]==0.025, t' "$tmp/o4.json" && ok ||
+        bad "design top: $(cat "$tmp/o4.json")"
+else
+    bad "design scenario failed: $(cat "$tmp/err")"
+fi
+
+# --- bad scenarios: exit 2, the file and the field named ---------------------
+printf '{"name": "x", "mu": 0.1,,}' >"$tmp/syntax.json"
+expect_fail "invalid JSON" 2 "syntax.json:1:" "not valid JSON" -- "$tmp/syntax.json"
+mutate "$tmp/case.json" 'd["Mu"] = d.pop("mu")'
+expect_fail "wrong case" 2 "case.json" "Mu" "unknown key" -- "$tmp/case.json"
+sed 's/"mu": 0.04,/"mu": 0.04, "mu": 0.5,/' "$base" >"$tmp/dup.json"
+expect_fail "duplicate key" 2 "dup.json" "mu" "duplicate key" -- "$tmp/dup.json"
+mutate "$tmp/x.json" 'del d["t_end"]'
+expect_fail "missing t_end" 2 "x.json" "t_end" "missing" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["mu"] = -0.1'
+expect_fail "negative mu" 2 "x.json: mu:" ">= 0 s/m" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["initial"]["theta"] = 4'
+expect_fail "theta > pi" 2 "x.json: initial.theta:" "[0, pi]" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["initial"]["spin"] = "fast"'
+expect_fail "string spin" 2 "initial.spin" "expected a number" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["initial"]["phi_dot"] = "sideways"'
+expect_fail "bad phi_dot rule" 2 "initial.phi_dot" "sideways" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["initial"]["theta"] = 3.1; d["initial"]["phi_dot"] = "s1"; d["initial"]["spin"] = 0.1'
+expect_fail "s1 without a real root" 2 "initial.phi_dot" "use s3" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["initial"]["wobble"] = 1'
+expect_fail "unknown initial key" 2 "initial.wobble" "unknown key" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["top"]["eps"] = 1.0'
+expect_fail "eps = R" 2 "top.eps" "eps < R" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["top"]["A"] = 0.4'
+expect_fail "A < C/2" 2 "top.A" "rigid body" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'del d["top"]["C"]'
+expect_fail "missing C" 2 "top.C" "missing" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["top"]["design"] = "shell-band.json"'
+expect_fail "design and explicit top" 2 "x.json: top:" "not both" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["top"] = {"design": "nowhere.json", "z2_mm": 1}'
+expect_fail "missing design file" 2 "top.design" "nowhere.json" -- "$tmp/x.json"
+mutate "$tmp/sc/z2.json" 'd["top"] = {"design": "../shell-band.json", "z2_mm": 40}'
+expect_fail "z2 outside travel" 2 "z2.json" "top.z2_mm" -- "$tmp/sc/z2.json"
+mutate "$tmp/x.json" 'd["accuracy"] = "ultra"'
+expect_fail "unknown preset" 2 "x.json: accuracy:" "ultra" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["accuracy"] = {"stepper": "euler", "rtol": 1e-6}'
+expect_fail "unknown stepper" 2 "accuracy.stepper" "euler" -- "$tmp/x.json"
+mutate "$tmp/x.json" 'd["accuracy"] = {"stepper": "rk4", "rtol": 0.5}'
+expect_fail "rtol out of range" 2 "accuracy.rtol" -- "$tmp/x.json"
+expect_fail "bad override value" 2 "initial.spin" "command line" "initial.spin=abc" -- "$base" --spin abc
+expect_fail "missing file" 2 "nowhere.json" "cannot open" -- "$tmp/nowhere.json"
+
+# --- bad usage -----------------------------------------------------------------
+expect_fail "no scenario" 2 "no scenario file" --
+expect_fail "unknown option" 2 "unknown option '--fast'" -- "$base" --fast
+expect_fail "flag without value" 2 "--mu needs a value" -- "$base" --mu
+expect_fail "two scenarios" 2 "more than one scenario" -- "$base" "$base"
+expect_fail "plot format" 2 ".png, .svg or .pdf" -- "$base" --plot "$tmp/p.txt"
+expect_fail "plot directory" 2 "nodir" -- "$base" --plot "$tmp/nodir/p.png"
+expect_fail "csv directory" 2 "nodir" -- "$base" --csv "$tmp/nodir/t.csv"
+[ -e "$tmp/p.txt" ] || [ -e "$tmp/nodir" ] && bad "a failed run left files" || ok
+
+echo "test_simulate_cli: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
