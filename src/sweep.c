@@ -597,6 +597,16 @@ static int mixed_sides(const tippe_sweep_result *r)
     return 0;
 }
 
+/* Whether the event is one of the zone ends (a crossing that changed group). */
+static int ends_a_zone(const tippe_sweep_result *r, const tippe_sweep_event *ev)
+{
+    for (int i = 0; i + 1 < r->n_zones; i++)
+        if ((r->zones[i].to_boundaries & (1u << ev->boundary)) &&
+            fabs(r->zones[i].z2_to_mm - ev->z2_mm) <= 2.0 * TIPPE_SWEEP_XTOL_MM)
+            return 1;
+    return 0;
+}
+
 static const char *side_down(int com_side)
 {
     return com_side > 0 ? "+z side down" : com_side < 0 ? "-z side down" : "balanced";
@@ -640,10 +650,18 @@ void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe
                 clean(z->z2_from_mm), clean(z->z2_to_mm), z->z2_to_mm - z->z2_from_mm, ends,
                 notes);
     }
-    for (int i = 0; i < r->n_events; i++)
-        if (r->events[i].touch)
+    for (int i = 0; i < r->n_events; i++) {
+        const tippe_sweep_event *ev = &r->events[i];
+        if (ev->touch) {
             fprintf(out, "touch at Z2 = %.3f mm: the path meets %s and turns back (no zone change)\n",
-                    clean(r->events[i].z2_mm), boundary_names[r->events[i].boundary]);
+                    clean(ev->z2_mm), boundary_names[ev->boundary]);
+        } else if (!ends_a_zone(r, ev)) {
+            /* The paper's figures draw the -(eps/R)^2 line as the IIa|IIb (IIc|IIb)
+             * boundary; say where the path crosses it even when b decides otherwise. */
+            fprintf(out, "crosses %s at Z2 = %.3f mm (no change of group there)\n",
+                    boundary_names[ev->boundary], clean(ev->z2_mm));
+        }
+    }
     tippe_sweep_summary s;
     tippe_sweep_summarise(r, &s);
     const char *where = r->has_travel ? "within the physical travel" : "in the sweep";
@@ -711,14 +729,16 @@ cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
                 add_obj(ends, cJSON_CreateString(boundary_names[b]), NULL, &ok);
     }
     cJSON *touches = add_obj(o, cJSON_CreateArray(), "touches", &ok);
-    for (int i = 0; touches && ok && i < r->n_events; i++) {
-        if (!r->events[i].touch)
-            continue;
-        cJSON *t = add_obj(touches, cJSON_CreateObject(), NULL, &ok);
+    cJSON *crossings = add_obj(o, cJSON_CreateArray(), "crossings", &ok);
+    for (int i = 0; touches && crossings && ok && i < r->n_events; i++) {
+        cJSON *t = add_obj(r->events[i].touch ? touches : crossings, cJSON_CreateObject(), NULL,
+                           &ok);
         if (!t)
             break;
         add_obj(t, cJSON_CreateString(boundary_names[r->events[i].boundary]), "boundary", &ok);
         add_obj(t, cJSON_CreateNumber(r->events[i].z2_mm), "z2_mm", &ok);
+        if (!r->events[i].touch)
+            add_obj(t, cJSON_CreateBool(ends_a_zone(r, &r->events[i])), "ends_zone", &ok);
     }
     tippe_sweep_summary s;
     tippe_sweep_summarise(r, &s);

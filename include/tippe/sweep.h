@@ -155,7 +155,8 @@ void tippe_sweep_vary_free(tippe_sweep_vary_result *v);
 struct cJSON;
 /* The sweep as a cJSON object: design, file, sweep_mm, travel_mm,
  * physical_travel_mm, zones [{group, family, z2_from_mm, z2_to_mm, width_mm,
- * within_travel, com_side, ends_on}], touches [{boundary, z2_mm}],
+ * within_travel, com_side, ends_on}], touches [{boundary, z2_mm}], crossings
+ * [{boundary, z2_mm, ends_zone}] (every crossing, also those that change no group),
  * three_in_one, narrowest_zone_mm (null if nothing is reachable),
  * narrowest_zone_family. NULL if out of memory. */
 struct cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d);
