@@ -15,6 +15,8 @@ typedef struct {
 int tippe_cli_eval(int argc, char **argv);
 int tippe_cli_classify(int argc, char **argv);
 int tippe_cli_simulate(int argc, char **argv);
+int tippe_cli_sweep(int argc, char **argv);
+int tippe_cli_compare(int argc, char **argv);
 
 /* Writes a file atomically: callers write to the FILE* returned by
  * tippe_cli_open_atomic() and then either commit (rename into place) or abort

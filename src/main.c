@@ -8,6 +8,8 @@ static const tippe_cli_verb verbs[] = {
     {"eval", tippe_cli_eval, "mass, centre of mass and moments of a design at one Z2"},
     {"classify", tippe_cli_classify, "group of Theorem 5.1 and spin thresholds for A/C, eps/R"},
     {"simulate", tippe_cli_simulate, "integrate one launch of a scenario: tip, no tip or hang"},
+    {"sweep", tippe_cli_sweep, "zones of a design along the travel of its weight, plots"},
+    {"compare", tippe_cli_compare, "zone tables of several designs side by side"},
 };
 static const int n_verbs = (int)(sizeof verbs / sizeof verbs[0]);
 
