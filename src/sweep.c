@@ -245,7 +245,7 @@ static int events_of(ctx *c, int which, int n, const double *z, const double *gv
             st = tippe_error_set(err, TIPPE_ECOMPUTE, "sweep: out of memory");
     }
 #undef G
-    if (st == TIPPE_OK)
+    if (st == TIPPE_OK && cross.n > 1)
         qsort(cross.v, (size_t)cross.n, sizeof *cross.v, cmp_event);
     /* Two crossings of the same boundary with |g| never above touch_tol between
      * them are one touch seen through rounding (e.g. a scan point on the touch). */
@@ -352,7 +352,8 @@ int tippe_sweep_run(const tippe_sweep_path *path, double from_mm, double to_mm,
         st = events_of(&c, w, n, z, gv, &o, &ev, err);
     if (st != TIPPE_OK)
         goto done;
-    qsort(ev.v, (size_t)ev.n, sizeof *ev.v, cmp_event);
+    if (ev.n > 1)
+        qsort(ev.v, (size_t)ev.n, sizeof *ev.v, cmp_event);
 
     /* Cuts: crossings inside the range; crossings of several boundaries closer
      * than the location tolerance are one cut. */
