@@ -211,7 +211,7 @@ static int events_of(ctx *c, int which, int n, const double *z, const double *gv
     for (int j = 0; j < n && st == TIPPE_OK; j++) {
         if (sgn(G(j)) == sgn(G(j + 1)))
             continue;
-        double r;
+        double r = 0.0;
         st = find_root(c, z[j], z[j + 1], o->xtol_mm, &r, err);
         if (st == TIPPE_OK && ev_push(&cross, r, which, 0))
             st = tippe_error_set(err, TIPPE_ECOMPUTE, "sweep: out of memory");
@@ -226,7 +226,7 @@ static int events_of(ctx *c, int which, int n, const double *z, const double *gv
         double guess = z[j];
         if (m == b) /* the minimum lies between j and j + 1 */
             guess = 0.5 * (z[j] + z[j + 1]);
-        double xm, fm;
+        double xm = guess, fm = 0.0;
         st = find_min(c, s, z[j - 1], guess, z[j + 1], o->xtol_mm, &xm, &fm, err);
         if (st != TIPPE_OK)
             break;
@@ -237,7 +237,7 @@ static int events_of(ctx *c, int which, int n, const double *z, const double *gv
                 st = tippe_error_set(err, TIPPE_ECOMPUTE, "sweep: out of memory");
             continue;
         }
-        double r1, r2;
+        double r1 = xm, r2 = xm;
         st = find_root(c, z[j - 1], xm, o->xtol_mm, &r1, err);
         if (st == TIPPE_OK)
             st = find_root(c, xm, z[j + 1], o->xtol_mm, &r2, err);
@@ -261,7 +261,7 @@ static int events_of(ctx *c, int which, int n, const double *z, const double *gv
                 }
                 peak = fabs(gm);
                 if (peak <= o->touch_tol && gm != 0.0) {
-                    double fm;
+                    double fm = 0.0;
                     st = find_min(c, -sgn(gm), r1, xpk, r2, o->xtol_mm, &xpk, &fm, err);
                     peak = fabs(fm);
                 }

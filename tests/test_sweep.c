@@ -412,9 +412,9 @@ int main(void)
     test_linear();
     test_wavy();
     test_flat();
-    test_touch(TOUCH_ABOVE, 7.3);   /* between scan points */
+    test_touch(TOUCH_ABOVE, 7.3042); /* between scan points (0.01 mm apart) */
     test_touch(TOUCH_ABOVE, 10.0);  /* on a scan point (2000 intervals over 20 mm) */
-    test_touch(TOUCH_BELOW, 7.3);
+    test_touch(TOUCH_BELOW, 7.3042);
     test_touch(TOUCH_BELOW, 10.0);
     test_dip();
     test_balance();
