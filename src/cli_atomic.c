@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 FILE *tippe_cli_open_atomic(const char *path, char *tmp_path, size_t tmp_size)
@@ -14,6 +15,15 @@ FILE *tippe_cli_open_atomic(const char *path, char *tmp_path, size_t tmp_size)
     int fd = mkstemp(tmp_path);
     if (fd < 0)
         return NULL;
+    /* mkstemp creates the file 0600; an output file should get the permissions
+     * fopen would give it (0666 less the umask). */
+    mode_t mask = umask(0);
+    umask(mask);
+    if (fchmod(fd, 0666 & ~mask) != 0) {
+        close(fd);
+        unlink(tmp_path);
+        return NULL;
+    }
     FILE *f = fdopen(fd, "w");
     if (!f) {
         close(fd);

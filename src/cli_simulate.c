@@ -12,7 +12,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 
 #define MAX_OVERRIDES 64
@@ -89,11 +88,6 @@ static int write_csv(const char *path, const samples *b, tippe_error *err)
     FILE *f = tippe_cli_open_atomic(path, tmp, sizeof tmp);
     if (!f)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write the CSV file here", path);
-    /* mkstemp makes the file private; the CSV is an ordinary output file */
-    mode_t mask = umask(0);
-    umask(mask);
-    if (fchmod(fileno(f), 0666 & ~mask) != 0) { /* harmless: the data is still written */
-    }
     fprintf(f, "t_s,theta_rad,theta_dot_rad_s,phi_dot_rad_s,spin_rad_s,U_m_s,V_m_s,Rn_N,"
                "slip_speed_m_s,E_J,J_kg_m3_s,dissipated_J,phi_rad,psi_rad,x_m,y_m\n");
     for (int i = 0; i < b->n; i++) {
