@@ -12,7 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define STANDARD_GRAVITY_M_S2 9.80665
 #define RAD_TO_DEG (180.0 / 3.14159265358979323846)
 #define RAD_S_TO_REV_S (1.0 / (2.0 * 3.14159265358979323846))
 
@@ -37,7 +36,7 @@ static void classify_usage(FILE *out)
             "\n"
             "A point within 1e-12 of a boundary of the phase diagram is reported on it, with\n"
             "the side chosen as docs/theory.md says. Exit status: 0 ok, 2 bad usage.\n",
-            STANDARD_GRAVITY_M_S2);
+            TIPPE_DEFAULT_G_M_S2);
 }
 
 __attribute__((format(printf, 1, 2)))
@@ -219,7 +218,7 @@ int tippe_cli_classify(int argc, char **argv)
     if (opt[OPT_G].text && !have_top)
         return usage_error("--g only matters with --m, --R and --C");
     if (!opt[OPT_G].text)
-        opt[OPT_G].value = STANDARD_GRAVITY_M_S2;
+        opt[OPT_G].value = TIPPE_DEFAULT_G_M_S2;
     for (int j = OPT_M; j < N_OPTS; j++)
         if ((opt[j].text || j == OPT_G) && have_top && !(opt[j].value > 0.0))
             return usage_error("--%s: %g must be > 0", opt[j].name, opt[j].value);

@@ -528,7 +528,7 @@ int tippe_scenario_load(const char *path, const char *const *overrides, int n_ov
     }
     if ((rc = read_top(&c, cJSON_GetObjectItemCaseSensitive(root, "top"), out)))
         goto done;
-    if ((rc = number(&c, root, "", "g", 0, 9.81, &out->model.g)))
+    if ((rc = number(&c, root, "", "g", 0, TIPPE_DEFAULT_G_M_S2, &out->model.g)))
         goto done;
     if (!(out->model.g > 0)) {
         rc = fail(&c, "g", "must be > 0 m/s^2, got %g", out->model.g);

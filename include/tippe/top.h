@@ -20,6 +20,9 @@ typedef struct {
     int com_side;
 } tippe_top;
 
+/* Gravity used wherever a user gives none (scenarios, classify, launches), m/s^2. */
+#define TIPPE_DEFAULT_G_M_S2 9.81
+
 static inline double tippe_top_A_over_C(const tippe_top *t) { return t->A / t->C; }
 static inline double tippe_top_eps_over_R(const tippe_top *t) { return t->eps / t->R; }
 
