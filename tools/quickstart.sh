@@ -4,8 +4,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
+echo "tippe: building into build/ ..." >&2
+mkdir -p build
+if ! { cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j"$(nproc)"; } \
+     >build/build.log 2>&1; then
+  tail -n 40 build/build.log >&2
+  echo "tippe: the build failed; the whole log is build/build.log" >&2
+  exit 1
+fi
 design=${1:-designs/m12-setscrew.json}
 mkdir -p out
 ./build/tippe sweep "$design" --plot out/zones.png
