@@ -97,6 +97,7 @@ void tippe_dynamics_options_default(tippe_dynamics_options *o)
     o->settle_periods = 4.0;
     o->settle_windows = 3;
     o->run_to_t_end = 0;
+    o->max_steps = 10000000;
 }
 
 int tippe_dynamics_precession(const tippe_dynamics_model *model, double theta, double spin,
@@ -134,6 +135,8 @@ int tippe_dynamics_precession(const tippe_dynamics_model *model, double theta, d
 
 typedef struct {
     double m, R, eps, A, C, g, mu;
+    /* Constants of the right-hand side, once per run rather than per call. */
+    double one_minus_A_over_C, C_minus_A_over_A, inv_A;
     size_t dim;
     long nevals;
     double min_stage_Rn;  /* smallest Rn met by any right-hand-side call since reset */
@@ -168,9 +171,9 @@ static void cross3(const double a[3], const double b[3], double out[3])
  * the physics. Returns nonzero where the contact force is undetermined. */
 static int contact_eval(const dyn_ctx *c, const double *y, contact *o)
 {
-    const double kn = sqrt(dot3(y + IK, y + IK));
+    const double inv_kn = 1.0 / sqrt(dot3(y + IK, y + IK));
     for (int i = 0; i < 3; i++) {
-        o->k[i] = y[IK + i] / kn;
+        o->k[i] = y[IK + i] * inv_kn;
         o->w[i] = y[IW + i];
     }
     const double *k = o->k, *w = o->w;
@@ -199,9 +202,11 @@ static int contact_eval(const dyn_ctx *c, const double *y, contact *o)
     /* A omega' = tau - (C - A)(n' k + n omega x k) with C n' = tau.k (eq 3.13 in
      * the lab frame): omega' = Rn a1 + a0. */
     double a1[3], a0[3];
+    const double one_minus_AC = c->one_minus_A_over_C, inv_A = c->inv_A;
+    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
     for (int i = 0; i < 3; i++) {
-        a1[i] = (tau[i] - (1.0 - c->A / c->C) * tk * k[i]) / c->A;
-        a0[i] = -((c->C - c->A) / c->A) * o->n * wk[i];
+        a1[i] = (tau[i] - one_minus_AC * tk * k[i]) * inv_A;
+        a0[i] = minus_CmA_A_n * wk[i];
     }
     double a1k[3], a0k[3], wwk[3];
     cross3(a1, k, a1k);
@@ -433,6 +438,9 @@ static int check_inputs(const tippe_dynamics_model *model, const tippe_dynamics_
     if (!(opt->accuracy.rtol >= 1e-14 && opt->accuracy.rtol <= 1e-2))
         return tippe_error_set(err, TIPPE_EINPUT, "rtol = %g must be in [1e-14, 1e-2]",
                                opt->accuracy.rtol);
+    if (opt->max_steps < 0)
+        return tippe_error_set(err, TIPPE_EINPUT, "max_steps = %ld must be >= 0 (0: no budget)",
+                               opt->max_steps);
     if (!(opt->settle_slip > 0) || !(opt->settle_theta_rad > 0) ||
         !(opt->settle_vertical_rad > 0) || !(opt->settle_periods > 0) ||
         opt->settle_windows < 2 || opt->settle_windows > 8)
@@ -451,6 +459,9 @@ static void ctx_init(dyn_ctx *c, const tippe_dynamics_model *model, size_t dim)
     c->C = model->top.C;
     c->g = model->g;
     c->mu = model->mu;
+    c->one_minus_A_over_C = 1.0 - c->A / c->C;
+    c->C_minus_A_over_A = (c->C - c->A) / c->A;
+    c->inv_A = 1.0 / c->A;
     c->dim = dim;
     c->min_stage_Rn = INFINITY;
 }
@@ -660,6 +671,10 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
     long i_sample = 1;
 
     while (!done && t < opt->t_end) {
+        if (opt->max_steps > 0 && res->steps >= opt->max_steps) {
+            res->budget_exhausted = 1;
+            break;
+        }
         double t_target = opt->t_end;
         if (traj && opt->sample_dt > 0.0)
             t_target = fmin(opt->t_end, (double)i_sample * opt->sample_dt);

@@ -122,11 +122,16 @@ typedef struct {
     double settle_periods;
     int settle_windows;
     int run_to_t_end;  /* 1: record the verdict but keep integrating to t_end */
+    /* Step budget: the run stops, undecided, with budget_exhausted set, after
+     * this many accepted steps (0: no budget). Bounds the work of a launch that
+     * never settles (mu = 0, or a t_end of millions of periods). */
+    long max_steps;
 } tippe_dynamics_options;
 
 /* Defaults: verdict level, t_end 100 s, preset "balanced", settle_slip 1e-4,
  * settle_theta_rad 2e-3, settle_vertical_rad 1e-2, settle_periods 4,
- * settle_windows 3, sample_dt 0, no callback. */
+ * settle_windows 3, sample_dt 0, no callback, max_steps 1e7 (about 10 s of
+ * one core at the verdict level with rk8pd; docs/performance.md). */
 void tippe_dynamics_options_default(tippe_dynamics_options *o);
 
 typedef struct {
@@ -142,6 +147,7 @@ typedef struct {
     long rhs_evals;              /* including those of a finite-difference Jacobian */
     long steps, rejected_steps;
     int state_dim;               /* 9 at verdict level, 15 at trajectory level */
+    int budget_exhausted;        /* 1 if the run stopped at max_steps before t_end */
 } tippe_dynamics_result;
 
 /* Integrates one launch. TIPPE_EINPUT for an invalid model, launch or option,
