@@ -28,8 +28,9 @@
  * and OUTDIR/scenarios.csv (each scenario's model, launch, sample times and
  * reference samples, read by tools/bench/reference_scipy.py).
  *
- *   usage: work_precision OUTDIR [quick]
- * "quick" runs three steppers and every other tolerance (a smoke test). */
+ *   usage: work_precision OUTDIR [quick | presets]
+ * "quick" runs three steppers and every other tolerance (a smoke test);
+ * "presets" only writes OUTDIR/presets.csv. */
 #include "tippe/dynamics.h"
 #include "tippe/scenario.h"
 
@@ -151,7 +152,7 @@ static int verdict_right(const tippe_dynamics_result *r, const tippe_dynamics_re
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        fprintf(stderr, "usage: work_precision OUTDIR [quick]\n");
+        fprintf(stderr, "usage: work_precision OUTDIR [quick | presets]\n");
         return 2;
     }
     const int quick = argc > 2 && !strcmp(argv[2], "quick");
@@ -181,6 +182,8 @@ int main(int argc, char **argv)
         fprintf(pf, "%s,%s,%g\n", tippe_dynamics_preset_name(i), a.stepper, a.rtol);
     }
     fclose(pf);
+    if (argc > 2 && !strcmp(argv[2], "presets"))
+        return 0; /* only the preset table (after the presets were re-chosen) */
     fprintf(wp, "tool,scenario,stepper,rtol,status,time_s,rhs_evals,steps,rejected,err,"
                 "err_theta_rad,err_n_rel,jellett_drift,energy_err,verdict,t_verdict_s,"
                 "verdict_ok,verdict_time_s,verdict_rhs_evals\n");
