@@ -17,6 +17,13 @@ int tippe_cli_classify(int argc, char **argv);
 int tippe_cli_simulate(int argc, char **argv);
 int tippe_cli_sweep(int argc, char **argv);
 int tippe_cli_compare(int argc, char **argv);
+int tippe_cli_launch(int argc, char **argv);
+int tippe_cli_map(int argc, char **argv);
+int tippe_cli_check(int argc, char **argv);
+/* Under mpirun with more than one rank (OMPI_COMM_WORLD_SIZE > 1), replaces the
+ * process by tippe-mpi from the same directory with the same arguments; returns
+ * only if it cannot (2, with a message) or if not under mpirun (0). */
+int tippe_cli_mpi_reexec(int argc, char **argv);
 
 /* Writes a file atomically: callers write to the FILE* returned by
  * tippe_cli_open_atomic() and then either commit (rename into place) or abort

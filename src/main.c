@@ -10,6 +10,9 @@ static const tippe_cli_verb verbs[] = {
     {"simulate", tippe_cli_simulate, "integrate one launch of a scenario: tip, no tip or hang"},
     {"sweep", tippe_cli_sweep, "zones of a design along the travel of its weight, plots"},
     {"compare", tippe_cli_compare, "zone tables of several designs side by side"},
+    {"launch", tippe_cli_launch, "many hand launches at one Z2: outcome counts against theory"},
+    {"map", tippe_cli_map, "outcome of hand launches over a grid of Z2 and spin, heat map"},
+    {"check", tippe_cli_check, "one central hand launch at one Z2 beside the calculator's zone"},
 };
 static const int n_verbs = (int)(sizeof verbs / sizeof verbs[0]);
 
@@ -37,6 +40,9 @@ int main(int argc, char **argv)
         printf("tippe %s\n", TIPPE_VERSION);
         return 0;
     }
+    int mpi = tippe_cli_mpi_reexec(argc, argv); /* under mpirun -np N > 1: execs tippe-mpi */
+    if (mpi)
+        return mpi;
     for (int i = 0; i < n_verbs; i++)
         if (!strcmp(argv[1], verbs[i].name))
             return verbs[i].run(argc - 1, argv + 1);

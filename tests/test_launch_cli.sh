@@ -1,0 +1,162 @@
+#!/usr/bin/env bash
+# tippe launch, map and check as a user drives them: JSON keys and sums, the same
+# counts on 1 and 2 OpenMP threads (byte-identical JSON), CSV and plot files, a
+# quiet stderr when it is not a terminal, and bad input (message, exit 2, no
+# output file left behind). Usage: test_launch_cli.sh TIPPE
+set -u
+tippe=${1:?usage: test_launch_cli.sh /path/to/tippe}
+passed=0
+failed=0
+check() { # check DESCRIPTION COMMAND...: passes when COMMAND succeeds
+    local what=$1
+    shift
+    if "$@"; then
+        passed=$((passed + 1))
+    else
+        failed=$((failed + 1))
+        echo "FAIL: $what"
+    fi
+}
+status_is() { # status_is EXPECTED COMMAND...: COMMAND's exit status (output discarded)
+    local want=$1
+    shift
+    "$@" >/dev/null 2>&1
+    test $? -eq "$want"
+}
+
+dir=$(mktemp -d /tmp/tippe-test-launch-cli-XXXXXX)
+trap 'rm -rf "$dir"' EXIT
+m12=designs/m12-setscrew.json
+# Short, cheap launches: these tests check the plumbing, not the physics.
+quick=(--accuracy fast --t-end 40)
+
+# --- launch: JSON, counts, intervals, theory --------------------------------
+OMP_NUM_THREADS=1 "$tippe" launch "$m12" --z2 15 -n 8 --seed 3 "${quick[@]}" --json \
+    >"$dir/l1.json" 2>"$dir/l1.err"
+check "launch --json exits 0" test $? -eq 0
+check "launch is quiet on stderr when it is not a terminal" test ! -s "$dir/l1.err"
+check "launch --json has counts adding to n, ci95, theory and seed" python3 - "$dir/l1.json" <<'EOF'
+import json, sys
+o = json.load(open(sys.argv[1]))
+keys = ["no_tip", "tip", "hang", "lost_contact", "undecided"]
+assert o["n"] == 8 and o["seed"] == 3
+assert sorted(o["counts"]) == sorted(keys)
+assert sum(o["counts"].values()) == 8
+for k in keys:
+    lo, hi = o["ci95"][k]
+    p = o["counts"][k] / 8
+    assert 0 <= lo <= p <= hi <= 1, (k, lo, p, hi)
+t = o["theory"]
+assert t["group"] == "IIb"
+assert t["zone_mm"][0] <= 15 <= t["zone_mm"][1]
+assert sum(t["predicted"].values()) == 8
+assert 0 <= t["agree"] <= t["comparable"] <= 8
+assert "elapsed" not in json.dumps(o), "timings would break byte-identical output"
+EOF
+OMP_NUM_THREADS=2 "$tippe" launch "$m12" --z2 15 -n 8 --seed 3 "${quick[@]}" --json >"$dir/l2.json"
+check "launch: same JSON byte for byte on 1 and 2 threads" cmp -s "$dir/l1.json" "$dir/l2.json"
+"$tippe" launch "$m12" --z2 15 -n 8 --seed 3 "${quick[@]}" --threads 2 --json >"$dir/l3.json"
+check "launch: --threads 2 gives the same JSON" cmp -s "$dir/l1.json" "$dir/l3.json"
+"$tippe" launch "$m12" --z2 15 -n 8 --seed 4 "${quick[@]}" --json >"$dir/l4.json"
+check "launch: another seed gives other launches" python3 -c "
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:])
+assert a['rhs_evals'] != b['rhs_evals']" "$dir/l1.json" "$dir/l4.json"
+
+# --- launch: text and CSV ------------------------------------------------------
+out=$("$tippe" launch "$m12" --z2 10 -n 4 "${quick[@]}" --csv "$dir/l.csv")
+check "launch text exits 0" test $? -eq 0
+check "launch text names the zone" grep -q "^zone       IIb" <<<"$out"
+check "launch text has the Wilson table" grep -q "95% CI (Wilson)" <<<"$out"
+check "launch text gives the agreement with theory" grep -q "^agreement" <<<"$out"
+check "launch CSV has a header with units and one row per launch" python3 - "$dir/l.csv" <<'EOF'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 4
+for key in ("spin_rad_s", "tilt_rad", "phi_dot_rad_s", "verdict", "t_s", "theta_final_rad",
+            "jellett_rel_drift", "theory", "agrees"):
+    assert key in rows[0], key
+assert [int(r["index"]) for r in rows] == [0, 1, 2, 3]
+assert all(r["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided") for r in rows)
+EOF
+
+# --- map -------------------------------------------------------------------------
+"$tippe" map "$m12" --z2 10:15:2 --spin 5:20:2 -n 2 "${quick[@]}" --json \
+    --plot "$dir/map.png" --csv "$dir/map.csv" >"$dir/map.json"
+check "map exits 0" test $? -eq 0
+check "map plot is a PNG" python3 -c "
+import sys; assert open(sys.argv[1], 'rb').read(8) == b'\x89PNG\r\n\x1a\n'" "$dir/map.png"
+check "map JSON has 4 cells whose counts add to the launches per cell" python3 - "$dir/map.json" "$dir/map.csv" <<'EOF'
+import csv, json, sys
+o = json.load(open(sys.argv[1]))
+assert o["z2_mm"] == [10, 15] and o["spin_rev_s"] == [5, 20] and o["per_cell"] == 2
+assert len(o["cells"]) == 4
+for c in o["cells"]:
+    assert sum(c["counts"].values()) == 2
+assert [z["group"] for z in o["zones"]] == ["IIb"]
+rows = list(csv.DictReader(open(sys.argv[2])))
+assert len(rows) == 4 and "dominant_share" in rows[0]
+EOF
+OMP_NUM_THREADS=1 "$tippe" map "$m12" --z2 10:15:2 --spin 5:20:2 -n 2 "${quick[@]}" --json \
+    >"$dir/map1.json"
+check "map: same JSON on 1 thread as on the default threads" cmp -s "$dir/map.json" "$dir/map1.json"
+
+# --- check -----------------------------------------------------------------------
+"$tippe" check "$m12" --z2 10 --spin 100 --accuracy fast --json >"$dir/c.json"
+check "check exits 0" test $? -eq 0
+check "check JSON has the verdict, the zone and theory's prediction" python3 - "$dir/c.json" <<'EOF'
+import json, sys
+o = json.load(open(sys.argv[1]))
+assert o["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided")
+assert o["initial"]["spin_rad_s"] == 100 and o["initial"]["U_m_s"] == 0
+assert o["theory"]["group"] == "IIb" and "prediction" in o["theory"] and "agrees" in o["theory"]
+EOF
+out=$("$tippe" check "$m12" --z2 10 --accuracy fast)
+check "check text gives verdict, calculator zone and theory" \
+    bash -c 'grep -q "^verdict" <<<"$1" && grep -q "^calculator zone IIb" <<<"$1" && grep -q "^theory" <<<"$1"' _ "$out"
+
+# --- help --------------------------------------------------------------------------
+for verb in launch map check; do
+    check "$verb --help exits 0" status_is 0 "$tippe" "$verb" --help
+done
+check "map --help says spins are in rev/s" bash -c '"$1" map --help | grep -q "rev/s"' _ "$tippe"
+check "check --help says the spin is in rad/s" bash -c '"$1" check --help | grep -q "RAD_S"' _ "$tippe"
+
+# --- bad input: exit 2, a message naming the problem, no output file ---------------
+bad() { # bad DESCRIPTION PATTERN ARGS...: exit 2, stderr matches PATTERN, no output files
+    local what=$1 pattern=$2
+    shift 2
+    rm -f "$dir/out.csv" "$dir/out.png"
+    "$tippe" "$@" >"$dir/bad.out" 2>"$dir/bad.err"
+    local rc=$?
+    check "$what: exit 2 (got $rc)" test $rc -eq 2
+    check "$what: message" grep -q -- "$pattern" "$dir/bad.err"
+    check "$what: no output file" test ! -e "$dir/out.csv" -a ! -e "$dir/out.png"
+    check "$what: nothing temporary left" bash -c '! ls "$1" | grep -q "\.tmp\."' _ "$dir"
+}
+bad "Z2 outside the travel" "outside the design's travel" \
+    launch "$m12" --z2 30 -n 2 --csv "$dir/out.csv"
+bad "no --z2" "--z2 is required" launch "$m12" -n 2 --csv "$dir/out.csv"
+bad "zero launches" "-n '0'" launch "$m12" --z2 10 -n 0 --csv "$dir/out.csv"
+bad "unknown option" "unknown option '--spin-rpm'" launch "$m12" --z2 10 --spin-rpm 5
+bad "map-only option on launch" "unknown option '--plot'" \
+    launch "$m12" --z2 10 --plot "$dir/out.png"
+bad "bad spin range" "--spin-rev-s '25:5'" launch "$m12" --z2 10 --spin-rev-s 25:5
+bad "missing design file" "no-such.json" launch "$dir/no-such.json" --z2 10 --csv "$dir/out.csv"
+bad "bad preset" "unknown accuracy preset" launch "$m12" --z2 10 --accuracy sloppy
+bad "bad mu" "mu = -1" launch "$m12" --z2 10 --mu -1 --csv "$dir/out.csv"
+bad "bad design override" "parts.screw" \
+    launch "$m12" --z2 10 --set parts.screw.height_mm=-3 --csv "$dir/out.csv"
+bad "CSV in a missing directory" "cannot write in directory" \
+    launch "$m12" --z2 10 --csv "$dir/none/out.csv"
+bad "map plot format" "unsupported plot format" \
+    map "$m12" --z2 10:15:2 --spin 5:20:2 --plot "$dir/out.gif" --csv "$dir/out.csv"
+bad "map grid" "FROM:TO:STEPS" map "$m12" --z2 10:15 --spin 5:20:2 --csv "$dir/out.csv"
+bad "map Z2 beyond the travel" "outside the design's travel" \
+    map "$m12" --z2 10:25:2 --spin 5:20:2 -n 1 --plot "$dir/out.png" --csv "$dir/out.csv"
+bad "map without --spin" "--spin FROM:TO:STEPS" map "$m12" --z2 10:15:2 --plot "$dir/out.png"
+bad "check spin" "--spin 'fast'" check "$m12" --z2 10 --spin fast
+bad "no design" "no design file" check --z2 10
+
+echo "test_launch_cli: $passed passed, $failed failed"
+test "$failed" -eq 0
