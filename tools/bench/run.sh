@@ -79,8 +79,10 @@ if command -v perf >/dev/null && perf record -o "$OUT/perf.data" -q -- \
     >/dev/null 2>&1; then
     # Self time per symbol; contact_eval is called by rhs (and once per step
     # for the monitors), so rhs + contact_eval is the right-hand side's share.
-    perf report -i "$OUT/perf.data" --no-children --stdio 2>/dev/null | grep '%' | head -12 \
-        >"$OUT/perf.txt"
+    perf report -i "$OUT/perf.data" --no-children --stdio 2>/dev/null | grep '%' \
+        >"$OUT/perf-all.txt" || true
+    head -12 "$OUT/perf-all.txt" >"$OUT/perf.txt"
+    rm -f "$OUT/perf-all.txt" "$OUT/levels-tmp.csv"
     rm -f "$OUT/perf.data" "$OUT/perf.data.old"
     cat "$OUT/perf.txt"
 else

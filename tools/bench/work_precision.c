@@ -159,16 +159,6 @@ int main(int argc, char **argv)
     const char **steppers = quick ? quick_steppers : all_steppers;
     const int n_steppers = quick ? 3 : (int)(sizeof all_steppers / sizeof all_steppers[0]);
     char path[4096];
-    snprintf(path, sizeof path, "%s/wp.csv", argv[1]);
-    FILE *wp = fopen(path, "w");
-    snprintf(path, sizeof path, "%s/reference.csv", argv[1]);
-    FILE *rf = fopen(path, "w");
-    snprintf(path, sizeof path, "%s/scenarios.csv", argv[1]);
-    FILE *sf = fopen(path, "w");
-    if (!wp || !rf || !sf) {
-        fprintf(stderr, "work_precision: cannot write into %s\n", argv[1]);
-        return 2;
-    }
     snprintf(path, sizeof path, "%s/presets.csv", argv[1]);
     FILE *pf = fopen(path, "w");
     if (!pf) {
@@ -184,6 +174,16 @@ int main(int argc, char **argv)
     fclose(pf);
     if (argc > 2 && !strcmp(argv[2], "presets"))
         return 0; /* only the preset table (after the presets were re-chosen) */
+    snprintf(path, sizeof path, "%s/wp.csv", argv[1]);
+    FILE *wp = fopen(path, "w");
+    snprintf(path, sizeof path, "%s/reference.csv", argv[1]);
+    FILE *rf = fopen(path, "w");
+    snprintf(path, sizeof path, "%s/scenarios.csv", argv[1]);
+    FILE *sf = fopen(path, "w");
+    if (!wp || !rf || !sf) {
+        fprintf(stderr, "work_precision: cannot write into %s\n", argv[1]);
+        return 2;
+    }
     fprintf(wp, "tool,scenario,stepper,rtol,status,time_s,rhs_evals,steps,rejected,err,"
                 "err_theta_rad,err_n_rel,jellett_drift,energy_err,verdict,t_verdict_s,"
                 "verdict_ok,verdict_time_s,verdict_rhs_evals\n");
