@@ -3,23 +3,8 @@
 # carries units, and --json is one parseable object whose fields agree with
 # Theorem 5.1's inequalities for the paper's Figure 12 and 14 tops.
 # Usage: bash tests/test_classify_cli.sh /path/to/tippe   (from the repo root)
-set -u
-TIPPE=${1:?usage: test_classify_cli.sh /path/to/tippe}
-pass=0
-fail=0
-check() { # check DESCRIPTION COMMAND...
-    local what=$1
-    shift
-    if "$@"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $what"; fi
-}
-exits() { # exits CODE ARGS...: tippe ARGS exits with CODE
-    local want=$1
-    shift
-    "$TIPPE" "$@" >/dev/null 2>&1
-    [ $? -eq "$want" ]
-}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
+setup "$@"
 
 # usage errors: exit 2, with a message naming the problem on stderr
 check "no arguments" exits 2 classify
@@ -34,28 +19,25 @@ check "nan" exits 2 classify --A-over-C nan --eps-over-R 0.3
 check "--m without --R --C" exits 2 classify --A-over-C 0.9 --eps-over-R 0.3 --m 0.02
 check "negative mass" exits 2 classify --A-over-C 0.9 --eps-over-R 0.3 --m -1 --R 0.02 --C 1e-6
 check "zero g" exits 2 classify --A-over-C 0.9 --eps-over-R 0.3 --m 1 --R 1 --C 1 --g 0
-"$TIPPE" classify --A-over-C 0.9 --eps-over-R 1.5 2>"$tmp/err" >/dev/null
+"$tippe" classify --A-over-C 0.9 --eps-over-R 1.5 2>"$tmp/err" >/dev/null
 check "error names the option" grep -q -- "--eps-over-R" "$tmp/err"
 
 # --help
 check "--help exits 0" exits 0 classify --help
-"$TIPPE" classify --help >"$tmp/help"
+"$tippe" classify --help >"$tmp/help"
 check "--help shows usage" grep -q "^usage: tippe classify" "$tmp/help"
-check "verb listed in tippe --help" bash -c "'$TIPPE' --help | grep -q classify"
+check "verb listed in tippe --help" bash -c "'$tippe' --help | grep -q classify"
 
 # text output with units
-"$TIPPE" classify --A-over-C 0.92 --eps-over-R 0.3 --m 0.02 --R 0.02 --C 3e-6 >"$tmp/text"
+"$tippe" classify --A-over-C 0.92 --eps-over-R 0.3 --m 0.02 --R 0.02 --C 3e-6 >"$tmp/text"
 check "text exits 0" [ $? -eq 0 ]
 check "text names the subgroup" grep -q "subgroup IIb" "$tmp/text"
 check "text spins in rad/s and rev/s" grep -q "n-.*rad/s.*rev/s" "$tmp/text"
-"$TIPPE" classify --A-over-C 0.55 --eps-over-R 0.5 >"$tmp/text2"
+"$tippe" classify --A-over-C 0.55 --eps-over-R 0.5 >"$tmp/text2"
 check "theta_b in deg and rad" grep -q "theta_b.*deg.*rad" "$tmp/text2"
 
 # --json: one object; the fields obey the inequalities they came from
-json_ok() { # json_ok FILE PYTHON-EXPRESSION-ON-o
-    python3 -c "import json,math,sys; o=json.load(open(sys.argv[1])); sys.exit(0 if ($2) else 1)" "$1" 2>/dev/null
-}
-"$TIPPE" classify --A-over-C 0.92 --eps-over-R 0.3 --m 0.02 --R 0.02 --C 3e-6 --json >"$tmp/a.json"
+"$tippe" classify --A-over-C 0.92 --eps-over-R 0.3 --m 0.02 --R 0.02 --C 3e-6 --json >"$tmp/a.json"
 check "json exits 0" [ $? -eq 0 ]
 check "json parses, Figure 12 top is IIb" json_ok "$tmp/a.json" \
     "o['group']=='IIb' and o['main_group']=='II' and o['boundary'] is None"
@@ -67,19 +49,18 @@ check "json: n* from n+" json_ok "$tmp/a.json" \
     "abs(o['n_star_rad_s'] - o['n_plus_rad_s']*(1+o['eps_over_R'])/(1-o['eps_over_R'])) < 1e-14*o['n_star_rad_s']"
 check "json: thresholds positive" json_ok "$tmp/a.json" \
     "o['n_minus_rad_s']>0 and o['n_plus_rad_s']>0 and o['g_m_s2']>9.8"
-"$TIPPE" classify --A-over-C 0.55 --eps-over-R 0.5 --json >"$tmp/b.json"
+"$tippe" classify --A-over-C 0.55 --eps-over-R 0.5 --json >"$tmp/b.json"
 check "json: Figure 14 top is IIa with |b| < 1 and theta_b = acos b" json_ok "$tmp/b.json" \
     "o['group']=='IIa' and abs(o['b'])<1 and abs(math.cos(o['theta_b_rad'])-o['b'])<1e-14"
 check "json: no thresholds without m, R, C" json_ok "$tmp/b.json" "'n_minus_rad_s' not in o"
-"$TIPPE" classify --A-over-C 1.5 --eps-over-R 0.3 --m 1 --R 1 --C 1 --json >"$tmp/c.json"
+"$tippe" classify --A-over-C 1.5 --eps-over-R 0.3 --m 1 --R 1 --C 1 --json >"$tmp/c.json"
 check "json: group III has no n+ (null) and theta_c = acos(c)" json_ok "$tmp/c.json" \
     "o['group']=='III' and o['n_plus_rad_s'] is None and o['n_star_rad_s'] is None and abs(math.cos(o['theta_c_rad'])-o['c'])<1e-14"
-"$TIPPE" classify --A-over-C 0.7 --eps-over-R 0.3 --json >"$tmp/d.json"
+"$tippe" classify --A-over-C 0.7 --eps-over-R 0.3 --json >"$tmp/d.json"
 check "json: boundary named and side documented (I)" json_ok "$tmp/d.json" \
     "o['boundary']=='A/C-1=-eps/R' and o['main_group']=='I' and o['theta_c_rad']==0"
-"$TIPPE" classify --A-over-C 1 --eps-over-R 0 --m 1 --R 1 --C 1 --json >"$tmp/e.json"
+"$tippe" classify --A-over-C 1 --eps-over-R 0 --m 1 --R 1 --C 1 --json >"$tmp/e.json"
 check "json: balanced sphere, finite or null" json_ok "$tmp/e.json" \
     "o['boundary']=='eps/R=0' and all(v is None or isinstance(v,str) or math.isfinite(v) for v in o.values())"
 
-echo "test_classify_cli: $pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

@@ -3,28 +3,14 @@
  * and a few load errors. Run from the repository root. */
 #include "tippe/design.h"
 
+#include "check.h"
+
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-
-static int passed, failed;
-
-#define CHECK(cond, ...)                                                   \
-    do {                                                                   \
-        if (cond) {                                                        \
-            passed++;                                                      \
-        } else {                                                           \
-            failed++;                                                      \
-            printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond);         \
-            printf(__VA_ARGS__);                                           \
-            printf("\n");                                                  \
-        }                                                                  \
-    } while (0)
-
-static int close_rel(double a, double b, double rel) { return fabs(a - b) <= rel * fabs(b); }
 
 /* Densities of materials.json, kg/m^3 (ABS and iron are the paper's, section 6.1). */
 #define RHO_ABS 1080.0
@@ -92,12 +78,12 @@ static props props_top(const tippe_top *t)
 static void compare(const char *what, double z2_mm, const tippe_top *t, props h)
 {
     props d = props_top(t);
-    CHECK(close_rel(d.m, h.m, REL), "%s Z2=%g: m %.15g vs hand %.15g kg", what, z2_mm, d.m, h.m);
+    CHECK_CLOSE(d.m, h.m, REL, "%s Z2=%g: m %.15g vs hand %.15g kg", what, z2_mm, d.m, h.m);
     /* z_cm is ~1e-3 m built from the same mass: compare at REL of R. */
     CHECK(fabs(d.zcm - h.zcm) <= REL * t->R, "%s Z2=%g: z_cm %.15g vs hand %.15g m", what, z2_mm,
           d.zcm, h.zcm);
-    CHECK(close_rel(d.A, h.A, REL), "%s Z2=%g: A %.15g vs hand %.15g", what, z2_mm, d.A, h.A);
-    CHECK(close_rel(d.C, h.C, REL), "%s Z2=%g: C %.15g vs hand %.15g", what, z2_mm, d.C, h.C);
+    CHECK_CLOSE(d.A, h.A, REL, "%s Z2=%g: A %.15g vs hand %.15g", what, z2_mm, d.A, h.A);
+    CHECK_CLOSE(d.C, h.C, REL, "%s Z2=%g: C %.15g vs hand %.15g", what, z2_mm, d.C, h.C);
 }
 
 static tippe_design *load(const char *path, const char *const *sets, int n)
@@ -125,8 +111,8 @@ static void check_setscrew(const char *path, double a_mm, double hs_mm, const do
         mom h = add(napkin_ring(RHO_ABS, R, a), tube(RHO_IRON, 0, a, hs, z2s[i] * 1e-3));
         compare(path, z2s[i], &t, props_of(h));
     }
-    CHECK(close_rel(tippe_design_moving_mass_kg(d), RHO_IRON * M_PI * a * a * hs, REL),
-          "%s: moving mass %g kg", path, tippe_design_moving_mass_kg(d));
+    CHECK_CLOSE(tippe_design_moving_mass_kg(d), RHO_IRON * M_PI * a * a * hs, REL,
+                "%s: moving mass %g kg", path, tippe_design_moving_mass_kg(d));
     tippe_design_free(d);
 }
 
@@ -243,8 +229,8 @@ static void check_invariants(const char *path)
          * 6.1); 1e-12 relative is roundoff on sums of ~10 terms. */
         if (i == 0)
             C0 = t.C;
-        CHECK(close_rel(t.C, C0, 1e-12), "%s: C %.17g at Z2=%g, %.17g at the start", path, t.C,
-              z2, C0);
+        CHECK_CLOSE(t.C, C0, 1e-12, "%s: C %.17g at Z2=%g, %.17g at the start", path,
+                    t.C, z2, C0);
         /* Moving the weight by d moves the CoM by m_w d / m (first moment
          * m z_cm = fixed + m_w Z2). z_cm ~ 1e-3 m from sums of a few terms:
          * roundoff < 1e-17 m, so 1e-13 m is strict yet safe. */
@@ -282,14 +268,15 @@ static void check_overrides(void)
     tippe_design *d = load(m12, brass, 1);
     if (d) {
         /* Same volume, other density: the mass scales exactly by the ratio. */
-        CHECK(close_rel(tippe_design_moving_mass_kg(d), mw * RHO_BRASS / RHO_IRON, 1e-12),
-              "brass screw %g kg vs %g", tippe_design_moving_mass_kg(d), mw * RHO_BRASS / RHO_IRON);
+        CHECK_CLOSE(tippe_design_moving_mass_kg(d), mw * RHO_BRASS / RHO_IRON, 1e-12,
+                    "brass screw %g kg vs %g", tippe_design_moving_mass_kg(d),
+                    mw * RHO_BRASS / RHO_IRON);
         tippe_design_free(d);
     }
     const char *shorter[] = {"parts.screw.height_mm=10"};
     if ((d = load(m12, shorter, 1))) {
-        CHECK(close_rel(tippe_design_moving_mass_kg(d), mw * 10 / 15, 1e-12),
-              "10 mm screw %g kg vs %g", tippe_design_moving_mass_kg(d), mw * 10 / 15);
+        CHECK_CLOSE(tippe_design_moving_mass_kg(d), mw * 10 / 15, 1e-12,
+                    "10 mm screw %g kg vs %g", tippe_design_moving_mass_kg(d), mw * 10 / 15);
         tippe_design_free(d);
     }
     const char *inline_density[] = {"parts.screw.density_g_cm3=7.87"};
@@ -314,7 +301,7 @@ static void check_overrides(void)
     }
     const char *by_index[] = {"parts[2].height_mm=10"};
     if ((d = load(m12, by_index, 1))) {
-        CHECK(close_rel(tippe_design_moving_mass_kg(d), mw * 10 / 15, 1e-12), "parts[2] override");
+        CHECK_CLOSE(tippe_design_moving_mass_kg(d), mw * 10 / 15, 1e-12, "parts[2] override");
         tippe_design_free(d);
     }
     tippe_design_free(base);
@@ -360,6 +347,5 @@ int main(void)
     for (int i = 0; i < 5; i++)
         check_invariants(all[i]);
     check_overrides();
-    printf("test_design: %d passed, %d failed\n", passed, failed);
-    return failed ? 1 : 0;
+    return check_summary("test_design");
 }

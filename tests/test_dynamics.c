@@ -3,25 +3,14 @@
 #include "tippe/dynamics.h"
 #include "tippe/theory.h"
 
+#include "check.h"
+
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int n_pass, n_fail;
-#define CHECK(cond, ...)                                                    \
-    do {                                                                    \
-        if (cond) {                                                         \
-            n_pass++;                                                       \
-        } else {                                                            \
-            n_fail++;                                                       \
-            printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond);          \
-            printf(__VA_ARGS__);                                            \
-            printf("\n");                                                   \
-        }                                                                   \
-    } while (0)
 
 /* Figure 12's top (group IIb): m = g = 1, eps/R = 0.3, A/C = 0.92, R = C = 1. */
 static tippe_dynamics_model fig12(double mu)
@@ -589,6 +578,5 @@ int main(void)
     test_levels();
     test_threads();
     test_bad_input();
-    printf("test_dynamics: %d passed, %d failed\n", n_pass, n_fail);
-    return n_fail != 0;
+    return check_summary("test_dynamics");
 }

@@ -2,44 +2,10 @@
 # tippe eval as a user drives it: every kind of bad design is refused with exit
 # status 2 and a message that names the file and the JSON path; good designs
 # give a table or JSON with the documented keys. Usage: test_eval_cli.sh TIPPE
-set -u
-tippe=${1:?usage: test_eval_cli.sh /path/to/tippe}
+source "$(dirname "$0")/lib.sh"
+setup "$@"
 here=$(pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 cp "$here/designs/materials.json" "$tmp/"
-passed=0
-failed=0
-
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
-
-# expect_fail NAME WANT_STATUS PATTERN... -- ARGS: runs tippe eval ARGS, wants
-# the status and every PATTERN (fixed strings) in stderr.
-expect_fail() {
-    local name=$1 want=$2
-    shift 2
-    local pats=()
-    while [ "$1" != "--" ]; do pats+=("$1"); shift; done
-    shift
-    "$tippe" eval "$@" >"$tmp/out" 2>"$tmp/err"
-    local st=$?
-    if [ "$st" -ne "$want" ]; then
-        bad "$name: exit $st, want $want; stderr: $(cat "$tmp/err")"
-        return
-    fi
-    for p in "${pats[@]}"; do
-        if ! grep -qF -- "$p" "$tmp/err"; then
-            bad "$name: stderr lacks '$p': $(cat "$tmp/err")"
-            return
-        fi
-    done
-    if [ -s "$tmp/out" ]; then
-        bad "$name: printed on stdout although it failed"
-        return
-    fi
-    ok
-}
 
 # A small valid design to mutate: ABS shell, iron rod, iron bead.
 write_base() {
@@ -62,14 +28,7 @@ write_base "$base"
 
 # mutate NAME PYTHON: writes $tmp/NAME.json from the base design edited by a
 # python snippet acting on the dict d.
-mutate() {
-    python3 - "$base" "$tmp/$1.json" "$2" <<'EOF'
-import json, sys
-d = json.load(open(sys.argv[1]))
-exec(sys.argv[3])
-json.dump(d, open(sys.argv[2], "w"), indent=1)
-EOF
-}
+mutate() { json_edit "$base" "$tmp/$1.json" "$2"; }
 
 # --- good input -------------------------------------------------------------
 if "$tippe" eval "$base" --z2 5 >"$tmp/out" 2>"$tmp/err" && grep -q "g mm^2" "$tmp/out" &&
@@ -98,82 +57,81 @@ EOF
 done
 
 # --- usage ------------------------------------------------------------------
-expect_fail "no --z2" 2 "--z2" -- "$base"
-expect_fail "bad --z2" 2 "'abc' is not a number" -- "$base" --z2 abc
-expect_fail "unknown option" 2 "unknown option '--frobnicate'" -- "$base" --z2 1 --frobnicate
-expect_fail "no design" 2 "no design file" -- --z2 1
-expect_fail "missing file" 2 "$tmp/nope.json" "cannot open" -- "$tmp/nope.json" --z2 1
+expect_fail "no --z2" 2 "--z2" -- eval "$base"
+expect_fail "bad --z2" 2 "'abc' is not a number" -- eval "$base" --z2 abc
+expect_fail "unknown option" 2 "unknown option '--frobnicate'" -- eval "$base" --z2 1 --frobnicate
+expect_fail "no design" 2 "no design file" -- eval --z2 1
+expect_fail "missing file" 2 "$tmp/nope.json" "cannot open" -- eval "$tmp/nope.json" --z2 1
 
 # --- not JSON (with line and column) -------------------------------------------
 printf '{\n  "name": "x",\n  "radius_mm": 25,,\n}\n' >"$tmp/notjson.json"
-expect_fail "not JSON" 2 "$tmp/notjson.json:3:" "not valid JSON" -- "$tmp/notjson.json" --z2 1
+expect_fail "not JSON" 2 "$tmp/notjson.json:3:" "not valid JSON" -- eval "$tmp/notjson.json" --z2 1
 
 # --- structure ----------------------------------------------------------------
 mutate missing 'del d["radius_mm"]'
-expect_fail "missing field" 2 "$tmp/missing.json" "radius_mm: missing" -- "$tmp/missing.json" --z2 1
+expect_fail "missing field" 2 "$tmp/missing.json" "radius_mm: missing" -- eval "$tmp/missing.json" --z2 1
 mutate missing_part_field 'del d["parts"][2]["height_mm"]'
-expect_fail "missing part field" 2 "parts[2].height_mm: missing" -- "$tmp/missing_part_field.json" --z2 1
+expect_fail "missing part field" 2 "parts[2].height_mm: missing" -- eval "$tmp/missing_part_field.json" --z2 1
 mutate unknown 'd["parts"][1]["colour"] = "red"'
-expect_fail "unknown field" 2 "$tmp/unknown.json" "parts[1].colour: unknown field" -- "$tmp/unknown.json" --z2 1
+expect_fail "unknown field" 2 "$tmp/unknown.json" "parts[1].colour: unknown field" -- eval "$tmp/unknown.json" --z2 1
 mutate unknown_top 'd["Radius_mm"] = 25'
-expect_fail "unknown top field (case)" 2 "Radius_mm: unknown field" -- "$tmp/unknown_top.json" --z2 1
+expect_fail "unknown top field (case)" 2 "Radius_mm: unknown field" -- eval "$tmp/unknown_top.json" --z2 1
 # A duplicate key cannot be written with json.dump: write it by hand.
 sed 's/"thickness_mm": 2.5,/"thickness_mm": 2.5, "thickness_mm": 1,/' "$base" >"$tmp/dup.json"
-expect_fail "duplicate key" 2 "$tmp/dup.json" "parts[0].thickness_mm: duplicate key" -- "$tmp/dup.json" --z2 1
+expect_fail "duplicate key" 2 "$tmp/dup.json" "parts[0].thickness_mm: duplicate key" -- eval "$tmp/dup.json" --z2 1
 mutate wrongtype 'd["radius_mm"] = "25"'
-expect_fail "wrong type" 2 "radius_mm: must be a number, not a string" -- "$tmp/wrongtype.json" --z2 1
+expect_fail "wrong type" 2 "radius_mm: must be a number, not a string" -- eval "$tmp/wrongtype.json" --z2 1
 mutate wrongtype_bool 'd["parts"][2]["moving"] = 1'
-expect_fail "wrong type (bool)" 2 "parts[2].moving: must be true or false" -- "$tmp/wrongtype_bool.json" --z2 1
+expect_fail "wrong type (bool)" 2 "parts[2].moving: must be true or false" -- eval "$tmp/wrongtype_bool.json" --z2 1
 mutate badshape 'd["parts"][1]["shape"] = "cone"'
-expect_fail "unknown shape" 2 "parts[1].shape: unknown shape 'cone'" -- "$tmp/badshape.json" --z2 1
+expect_fail "unknown shape" 2 "parts[1].shape: unknown shape 'cone'" -- eval "$tmp/badshape.json" --z2 1
 mutate dupname 'd["parts"][1]["name"] = "shell"'
-expect_fail "duplicate part name" 2 "parts[1].name: 'shell' is already" -- "$tmp/dupname.json" --z2 1
+expect_fail "duplicate part name" 2 "parts[1].name: 'shell' is already" -- eval "$tmp/dupname.json" --z2 1
 
 # --- values ---------------------------------------------------------------------
 mutate negative 'd["parts"][2]["radius_mm"] = -10'
-expect_fail "negative length" 2 "parts[2].radius_mm: must be positive" -- "$tmp/negative.json" --z2 1
+expect_fail "negative length" 2 "parts[2].radius_mm: must be positive" -- eval "$tmp/negative.json" --z2 1
 mutate zero 'd["parts"][0]["thickness_mm"] = 0'
-expect_fail "zero length" 2 "parts[0].thickness_mm: must be positive" -- "$tmp/zero.json" --z2 1
+expect_fail "zero length" 2 "parts[0].thickness_mm: must be positive" -- eval "$tmp/zero.json" --z2 1
 mutate zero_radius 'd["radius_mm"] = 0'
-expect_fail "zero sphere radius" 2 "radius_mm: must be positive" -- "$tmp/zero_radius.json" --z2 1
+expect_fail "zero sphere radius" 2 "radius_mm: must be positive" -- eval "$tmp/zero_radius.json" --z2 1
 mutate density 'd["parts"][1].pop("material"); d["parts"][1]["density_g_cm3"] = 0'
-expect_fail "density not positive" 2 "parts[1].density_g_cm3: must be positive" -- "$tmp/density.json" --z2 1
+expect_fail "density not positive" 2 "parts[1].density_g_cm3: must be positive" -- eval "$tmp/density.json" --z2 1
 mutate both 'd["parts"][1]["density_g_cm3"] = 7'
-expect_fail "material and density" 2 "parts[1].density_g_cm3: give either" -- "$tmp/both.json" --z2 1
+expect_fail "material and density" 2 "parts[1].density_g_cm3: give either" -- eval "$tmp/both.json" --z2 1
 mutate material 'd["parts"][1]["material"] = "unobtainium"'
-expect_fail "unknown material" 2 "parts[1].material: unknown material 'unobtainium'" -- "$tmp/material.json" --z2 1
+expect_fail "unknown material" 2 "parts[1].material: unknown material 'unobtainium'" -- eval "$tmp/material.json" --z2 1
 python3 -c '
 import json, sys
 m = json.load(open(sys.argv[1])); m["iron"]["density_g_cm3"] = -7.87
 json.dump(m, open(sys.argv[2], "w"))' "$tmp/materials.json" "$tmp/badmat.json"
 mutate matfile 'd["materials"] = "badmat.json"'
-expect_fail "bad materials table" 2 "$tmp/badmat.json" "iron.density_g_cm3: must be positive" -- "$tmp/matfile.json" --z2 1
+expect_fail "bad materials table" 2 "$tmp/badmat.json" "iron.density_g_cm3: must be positive" -- eval "$tmp/matfile.json" --z2 1
 mutate travel_order 'd["travel_mm"] = [10, 0]'
-expect_fail "travel reversed" 2 "travel_mm: from (10 mm) must be less than" -- "$tmp/travel_order.json" --z2 1
+expect_fail "travel reversed" 2 "travel_mm: from (10 mm) must be less than" -- eval "$tmp/travel_order.json" --z2 1
 
 # --- layout -----------------------------------------------------------------------
 mutate protrude 'd["parts"][1].pop("clip"); d["parts"][1]["height_mm"] = 60'
-expect_fail "part sticks out" 2 "parts[1]: part 'rod' sticks out of the sphere" -- "$tmp/protrude.json" --z2 1
+expect_fail "part sticks out" 2 "parts[1]: part 'rod' sticks out of the sphere" -- eval "$tmp/protrude.json" --z2 1
 mutate overlap 'd["parts"][2]["inner_radius_mm"] = 2'
-expect_fail "parts overlap" 2 "part 'weight' overlaps part 'rod'" -- "$tmp/overlap.json" --z2 1
+expect_fail "parts overlap" 2 "part 'weight' overlaps part 'rod'" -- eval "$tmp/overlap.json" --z2 1
 mutate overlap_fixed 'd["parts"].append({"name": "lump", "shape": "ball", "radius_mm": 4, "z_mm": -20, "material": "ABS"})'
-expect_fail "fixed parts overlap" 2 "parts[3]: part 'lump' overlaps part 'shell'" -- "$tmp/overlap_fixed.json" --z2 1
+expect_fail "fixed parts overlap" 2 "parts[3]: part 'lump' overlaps part 'shell'" -- eval "$tmp/overlap_fixed.json" --z2 1
 mutate nomoving 'd["parts"][2]["moving"] = False'
-expect_fail "no moving part" 2 "parts: no moving part" -- "$tmp/nomoving.json" --z2 1
+expect_fail "no moving part" 2 "parts: no moving part" -- eval "$tmp/nomoving.json" --z2 1
 mutate travel 'd["travel_mm"] = [0, 18]'
-expect_fail "travel beyond physical" 2 "travel_mm: ends at 18 mm, beyond the physical travel" "touches part 'shell'" -- "$tmp/travel.json" --z2 1
+expect_fail "travel beyond physical" 2 "travel_mm: ends at 18 mm, beyond the physical travel" "touches part 'shell'" -- eval "$tmp/travel.json" --z2 1
 mutate void_out 'd["parts"][1]["radius_mm"] = 1; d["parts"].append({"name": "cut", "shape": "cylinder", "radius_mm": 2, "height_mm": 4, "void": True, "cut_from": "rod"})'
-expect_fail "void outside its part" 2 "parts[3]: void 'cut' reaches outside" -- "$tmp/void_out.json" --z2 1
+expect_fail "void outside its part" 2 "parts[3]: void 'cut' reaches outside" -- eval "$tmp/void_out.json" --z2 1
 # Touching is fine: a setscrew in its drilled hole, a bead on its rod (the base).
-expect_fail "Z2 outside the travel" 2 "$base" "travel_mm: Z2 = 12 mm is outside" -- "$base" --z2 12
+expect_fail "Z2 outside the travel" 2 "$base" "travel_mm: Z2 = 12 mm is outside" -- eval "$base" --z2 12
 
 # --- overrides --------------------------------------------------------------------
 "$tippe" eval "$base" --z2 5 --json --set parts.rod.material=nylon >"$tmp/o.json" 2>"$tmp/err" &&
     grep -q '"nylon"' "$tmp/o.json" && ok || bad "--set parts.rod.material=nylon: $(cat "$tmp/err")"
-expect_fail "override unknown part" 2 "--set parts.axle.material=nylon" "no part named 'axle'" -- "$base" --z2 1 --set parts.axle.material=nylon
-expect_fail "override bad value" 2 "parts[2].height_mm: must be positive" "set by --set parts.weight.height_mm=0" -- "$base" --z2 1 --set parts.weight.height_mm=0
-expect_fail "override unknown field" 2 "'radius' is not a design field" -- "$base" --z2 1 --set radius=30
-expect_fail "override not JSON" 2 "'five' is not a JSON value" -- "$base" --z2 1 --set parts.weight.height_mm=five
+expect_fail "override unknown part" 2 "--set parts.axle.material=nylon" "no part named 'axle'" -- eval "$base" --z2 1 --set parts.axle.material=nylon
+expect_fail "override bad value" 2 "parts[2].height_mm: must be positive" "set by --set parts.weight.height_mm=0" -- eval "$base" --z2 1 --set parts.weight.height_mm=0
+expect_fail "override unknown field" 2 "'radius' is not a design field" -- eval "$base" --z2 1 --set radius=30
+expect_fail "override not JSON" 2 "'five' is not a JSON value" -- eval "$base" --z2 1 --set parts.weight.height_mm=five
 
-echo "test_eval_cli: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

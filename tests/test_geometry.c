@@ -2,6 +2,8 @@
  * integration of their regions, exact limits, composition, and thin-part accuracy. */
 #include "tippe/geometry.h"
 
+#include "check.h"
+
 #include <math.h>
 #include <stdio.h>
 
@@ -9,20 +11,6 @@
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_rng.h>
-
-static int n_pass, n_fail;
-
-#define CHECK(cond, ...)                                                                          \
-    do {                                                                                          \
-        if (cond) {                                                                               \
-            n_pass++;                                                                             \
-        } else {                                                                                  \
-            n_fail++;                                                                             \
-            printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond);                                \
-            printf(__VA_ARGS__);                                                                  \
-            printf("\n");                                                                         \
-        }                                                                                         \
-    } while (0)
 
 static double rel(double got, double want, double scale)
 {
@@ -584,6 +572,5 @@ int main(void)
     for (int k = 0; k < 4; k++)
         printf("max relative error vs numerical integration, %s: %.2e\n", kind_name[k],
                max_err_by_kind[k]);
-    printf("test_geometry: %d passed, %d failed\n", n_pass, n_fail);
-    return n_fail != 0;
+    return check_summary("test_geometry");
 }

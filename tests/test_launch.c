@@ -6,24 +6,13 @@
 #include "tippe/launch.h"
 #include "tippe/progress.h"
 
+#include "check.h"
+
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int passed, failed;
-#define CHECK(cond, ...)                                                        \
-    do {                                                                        \
-        if (cond) {                                                             \
-            passed++;                                                           \
-        } else {                                                                \
-            failed++;                                                           \
-            printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond);              \
-            printf(__VA_ARGS__);                                                \
-            printf("\n");                                                       \
-        }                                                                       \
-    } while (0)
 
 static const double Z = TIPPE_LAUNCH_Z95;
 
@@ -359,6 +348,5 @@ int main(void)
     test_threads_and_tally();
     test_forbidden_outcomes();
     test_progress();
-    printf("test_launch: %d passed, %d failed\n", passed, failed);
-    return failed ? 1 : 0;
+    return check_summary("test_launch");
 }

@@ -3,39 +3,18 @@
 # counts on 1 and 2 OpenMP threads (byte-identical JSON), CSV and plot files, a
 # quiet stderr when it is not a terminal, and bad input (message, exit 2, no
 # output file left behind). Usage: test_launch_cli.sh TIPPE
-set -u
-tippe=${1:?usage: test_launch_cli.sh /path/to/tippe}
-passed=0
-failed=0
-check() { # check DESCRIPTION COMMAND...: passes when COMMAND succeeds
-    local what=$1
-    shift
-    if "$@"; then
-        passed=$((passed + 1))
-    else
-        failed=$((failed + 1))
-        echo "FAIL: $what"
-    fi
-}
-status_is() { # status_is EXPECTED COMMAND...: COMMAND's exit status (output discarded)
-    local want=$1
-    shift
-    "$@" >/dev/null 2>&1
-    test $? -eq "$want"
-}
-
-dir=$(mktemp -d /tmp/tippe-test-launch-cli-XXXXXX)
-trap 'rm -rf "$dir"' EXIT
+source "$(dirname "$0")/lib.sh"
+setup "$@"
 m12=designs/m12-setscrew.json
 # Short, cheap launches: these tests check the plumbing, not the physics.
 quick=(--accuracy fast --t-end 40)
 
 # --- launch: JSON, counts, intervals, theory --------------------------------
 OMP_NUM_THREADS=1 "$tippe" launch "$m12" --z2 15 -n 8 --seed 3 "${quick[@]}" --json \
-    >"$dir/l1.json" 2>"$dir/l1.err"
+    >"$tmp/l1.json" 2>"$tmp/l1.err"
 check "launch --json exits 0" test $? -eq 0
-check "launch is quiet on stderr when it is not a terminal" test ! -s "$dir/l1.err"
-check "launch --json has counts adding to n, ci95, theory and seed" python3 - "$dir/l1.json" <<'EOF'
+check "launch is quiet on stderr when it is not a terminal" test ! -s "$tmp/l1.err"
+check "launch --json has counts adding to n, ci95, theory and seed" python3 - "$tmp/l1.json" <<'EOF'
 import json, sys
 o = json.load(open(sys.argv[1]))
 keys = ["no_tip", "tip", "hang", "lost_contact", "undecided"]
@@ -53,23 +32,23 @@ assert sum(t["predicted"].values()) == 8
 assert 0 <= t["agree"] <= t["comparable"] <= 8
 assert "elapsed" not in json.dumps(o), "timings would break byte-identical output"
 EOF
-OMP_NUM_THREADS=2 "$tippe" launch "$m12" --z2 15 -n 8 --seed 3 "${quick[@]}" --json >"$dir/l2.json"
-check "launch: same JSON byte for byte on 1 and 2 threads" cmp -s "$dir/l1.json" "$dir/l2.json"
-"$tippe" launch "$m12" --z2 15 -n 8 --seed 3 "${quick[@]}" --threads 2 --json >"$dir/l3.json"
-check "launch: --threads 2 gives the same JSON" cmp -s "$dir/l1.json" "$dir/l3.json"
-"$tippe" launch "$m12" --z2 15 -n 8 --seed 4 "${quick[@]}" --json >"$dir/l4.json"
+OMP_NUM_THREADS=2 "$tippe" launch "$m12" --z2 15 -n 8 --seed 3 "${quick[@]}" --json >"$tmp/l2.json"
+check "launch: same JSON byte for byte on 1 and 2 threads" cmp -s "$tmp/l1.json" "$tmp/l2.json"
+"$tippe" launch "$m12" --z2 15 -n 8 --seed 3 "${quick[@]}" --threads 2 --json >"$tmp/l3.json"
+check "launch: --threads 2 gives the same JSON" cmp -s "$tmp/l1.json" "$tmp/l3.json"
+"$tippe" launch "$m12" --z2 15 -n 8 --seed 4 "${quick[@]}" --json >"$tmp/l4.json"
 check "launch: another seed gives other launches" python3 -c "
 import json, sys
 a, b = (json.load(open(f)) for f in sys.argv[1:])
-assert a['rhs_evals'] != b['rhs_evals']" "$dir/l1.json" "$dir/l4.json"
+assert a['rhs_evals'] != b['rhs_evals']" "$tmp/l1.json" "$tmp/l4.json"
 
 # --- launch: text and CSV ------------------------------------------------------
-out=$("$tippe" launch "$m12" --z2 10 -n 4 "${quick[@]}" --csv "$dir/l.csv")
+out=$("$tippe" launch "$m12" --z2 10 -n 4 "${quick[@]}" --csv "$tmp/l.csv")
 check "launch text exits 0" test $? -eq 0
 check "launch text names the zone" grep -q "^zone       IIb" <<<"$out"
 check "launch text has the Wilson table" grep -q "95% CI (Wilson)" <<<"$out"
 check "launch text gives the agreement with theory" grep -q "^agreement" <<<"$out"
-check "launch CSV has a header with units and one row per launch" python3 - "$dir/l.csv" <<'EOF'
+check "launch CSV has a header with units and one row per launch" python3 - "$tmp/l.csv" <<'EOF'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 assert len(rows) == 4
@@ -82,11 +61,11 @@ EOF
 
 # --- map -------------------------------------------------------------------------
 "$tippe" map "$m12" --z2 10:15:2 --spin 5:20:2 -n 2 "${quick[@]}" --json \
-    --plot "$dir/map.png" --csv "$dir/map.csv" >"$dir/map.json"
+    --plot "$tmp/map.png" --csv "$tmp/map.csv" >"$tmp/map.json"
 check "map exits 0" test $? -eq 0
 check "map plot is a PNG" python3 -c "
-import sys; assert open(sys.argv[1], 'rb').read(8) == b'\x89PNG\r\n\x1a\n'" "$dir/map.png"
-check "map JSON has 4 cells whose counts add to the launches per cell" python3 - "$dir/map.json" "$dir/map.csv" <<'EOF'
+import sys; assert open(sys.argv[1], 'rb').read(8) == b'\x89PNG\r\n\x1a\n'" "$tmp/map.png"
+check "map JSON has 4 cells whose counts add to the launches per cell" python3 - "$tmp/map.json" "$tmp/map.csv" <<'EOF'
 import csv, json, sys
 o = json.load(open(sys.argv[1]))
 assert o["z2_mm"] == [10, 15] and o["spin_rev_s"] == [5, 20] and o["per_cell"] == 2
@@ -98,13 +77,13 @@ rows = list(csv.DictReader(open(sys.argv[2])))
 assert len(rows) == 4 and "dominant_share" in rows[0]
 EOF
 OMP_NUM_THREADS=1 "$tippe" map "$m12" --z2 10:15:2 --spin 5:20:2 -n 2 "${quick[@]}" --json \
-    >"$dir/map1.json"
-check "map: same JSON on 1 thread as on the default threads" cmp -s "$dir/map.json" "$dir/map1.json"
+    >"$tmp/map1.json"
+check "map: same JSON on 1 thread as on the default threads" cmp -s "$tmp/map.json" "$tmp/map1.json"
 
 # --- check -----------------------------------------------------------------------
-"$tippe" check "$m12" --z2 10 --spin 100 --accuracy fast --json >"$dir/c.json"
+"$tippe" check "$m12" --z2 10 --spin 100 --accuracy fast --json >"$tmp/c.json"
 check "check exits 0" test $? -eq 0
-check "check JSON has the verdict, the zone and theory's prediction" python3 - "$dir/c.json" <<'EOF'
+check "check JSON has the verdict, the zone and theory's prediction" python3 - "$tmp/c.json" <<'EOF'
 import json, sys
 o = json.load(open(sys.argv[1]))
 assert o["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided")
@@ -117,46 +96,45 @@ check "check text gives verdict, calculator zone and theory" \
 
 # --- help --------------------------------------------------------------------------
 for verb in launch map check; do
-    check "$verb --help exits 0" status_is 0 "$tippe" "$verb" --help
+    check "$verb --help exits 0" exits 0 "$verb" --help
 done
 check "map --help says spins are in rev/s" bash -c '"$1" map --help | grep -q "rev/s"' _ "$tippe"
 check "check --help says the spin is in rad/s" bash -c '"$1" check --help | grep -q "RAD_S"' _ "$tippe"
 
 # --- bad input: exit 2, a message naming the problem, no output file ---------------
-bad() { # bad DESCRIPTION PATTERN ARGS...: exit 2, stderr matches PATTERN, no output files
+refused() { # refused DESCRIPTION PATTERN ARGS...: exit 2, stderr matches PATTERN, no output files
     local what=$1 pattern=$2
     shift 2
-    rm -f "$dir/out.csv" "$dir/out.png"
-    "$tippe" "$@" >"$dir/bad.out" 2>"$dir/bad.err"
+    rm -f "$tmp/out.csv" "$tmp/out.png"
+    "$tippe" "$@" >"$tmp/bad.out" 2>"$tmp/bad.err"
     local rc=$?
     check "$what: exit 2 (got $rc)" test $rc -eq 2
-    check "$what: message" grep -q -- "$pattern" "$dir/bad.err"
-    check "$what: no output file" test ! -e "$dir/out.csv" -a ! -e "$dir/out.png"
-    check "$what: nothing temporary left" bash -c '! ls "$1" | grep -q "\.tmp\."' _ "$dir"
+    check "$what: message" grep -q -- "$pattern" "$tmp/bad.err"
+    check "$what: no output file" test ! -e "$tmp/out.csv" -a ! -e "$tmp/out.png"
+    check "$what: nothing temporary left" bash -c '! ls "$1" | grep -q "\.tmp\."' _ "$tmp"
 }
-bad "Z2 outside the travel" "outside the design's travel" \
-    launch "$m12" --z2 30 -n 2 --csv "$dir/out.csv"
-bad "no --z2" "--z2 is required" launch "$m12" -n 2 --csv "$dir/out.csv"
-bad "zero launches" "-n '0'" launch "$m12" --z2 10 -n 0 --csv "$dir/out.csv"
-bad "unknown option" "unknown option '--spin-rpm'" launch "$m12" --z2 10 --spin-rpm 5
-bad "map-only option on launch" "unknown option '--plot'" \
-    launch "$m12" --z2 10 --plot "$dir/out.png"
-bad "bad spin range" "--spin-rev-s '25:5'" launch "$m12" --z2 10 --spin-rev-s 25:5
-bad "missing design file" "no-such.json" launch "$dir/no-such.json" --z2 10 --csv "$dir/out.csv"
-bad "bad preset" "unknown accuracy preset" launch "$m12" --z2 10 --accuracy sloppy
-bad "bad mu" "mu = -1" launch "$m12" --z2 10 --mu -1 --csv "$dir/out.csv"
-bad "bad design override" "parts.screw" \
-    launch "$m12" --z2 10 --set parts.screw.height_mm=-3 --csv "$dir/out.csv"
-bad "CSV in a missing directory" "cannot write in directory" \
-    launch "$m12" --z2 10 --csv "$dir/none/out.csv"
-bad "map plot format" "unsupported plot format" \
-    map "$m12" --z2 10:15:2 --spin 5:20:2 --plot "$dir/out.gif" --csv "$dir/out.csv"
-bad "map grid" "FROM:TO:STEPS" map "$m12" --z2 10:15 --spin 5:20:2 --csv "$dir/out.csv"
-bad "map Z2 beyond the travel" "outside the design's travel" \
-    map "$m12" --z2 10:25:2 --spin 5:20:2 -n 1 --plot "$dir/out.png" --csv "$dir/out.csv"
-bad "map without --spin" "--spin FROM:TO:STEPS" map "$m12" --z2 10:15:2 --plot "$dir/out.png"
-bad "check spin" "--spin 'fast'" check "$m12" --z2 10 --spin fast
-bad "no design" "no design file" check --z2 10
+refused "Z2 outside the travel" "outside the design's travel" \
+    launch "$m12" --z2 30 -n 2 --csv "$tmp/out.csv"
+refused "no --z2" "--z2 is required" launch "$m12" -n 2 --csv "$tmp/out.csv"
+refused "zero launches" "-n '0'" launch "$m12" --z2 10 -n 0 --csv "$tmp/out.csv"
+refused "unknown option" "unknown option '--spin-rpm'" launch "$m12" --z2 10 --spin-rpm 5
+refused "map-only option on launch" "unknown option '--plot'" \
+    launch "$m12" --z2 10 --plot "$tmp/out.png"
+refused "bad spin range" "--spin-rev-s '25:5'" launch "$m12" --z2 10 --spin-rev-s 25:5
+refused "missing design file" "no-such.json" launch "$tmp/no-such.json" --z2 10 --csv "$tmp/out.csv"
+refused "bad preset" "unknown accuracy preset" launch "$m12" --z2 10 --accuracy sloppy
+refused "bad mu" "mu = -1" launch "$m12" --z2 10 --mu -1 --csv "$tmp/out.csv"
+refused "bad design override" "parts.screw" \
+    launch "$m12" --z2 10 --set parts.screw.height_mm=-3 --csv "$tmp/out.csv"
+refused "CSV in a missing directory" "cannot write in directory" \
+    launch "$m12" --z2 10 --csv "$tmp/none/out.csv"
+refused "map plot format" "unsupported plot format" \
+    map "$m12" --z2 10:15:2 --spin 5:20:2 --plot "$tmp/out.gif" --csv "$tmp/out.csv"
+refused "map grid" "FROM:TO:STEPS" map "$m12" --z2 10:15 --spin 5:20:2 --csv "$tmp/out.csv"
+refused "map Z2 beyond the travel" "outside the design's travel" \
+    map "$m12" --z2 10:25:2 --spin 5:20:2 -n 1 --plot "$tmp/out.png" --csv "$tmp/out.csv"
+refused "map without --spin" "--spin FROM:TO:STEPS" map "$m12" --z2 10:15:2 --plot "$tmp/out.png"
+refused "check spin" "--spin 'fast'" check "$m12" --z2 10 --spin fast
+refused "no design" "no design file" check --z2 10
 
-echo "test_launch_cli: $passed passed, $failed failed"
-test "$failed" -eq 0
+finish

@@ -3,42 +3,9 @@
 # message naming the file and the field; good ones give a summary, JSON with the
 # documented keys, a CSV and a plot, written atomically.
 # Usage: test_simulate_cli.sh /path/to/tippe   (run from the repository root)
-set -u
-tippe=${1:?usage: test_simulate_cli.sh /path/to/tippe}
+source "$(dirname "$0")/lib.sh"
+setup "$@"
 here=$(pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
-
-# expect_fail NAME STATUS PATTERN... -- ARGS: tippe simulate ARGS must exit with
-# STATUS, print every PATTERN (fixed strings) on stderr and nothing on stdout.
-expect_fail() {
-    local name=$1 want=$2
-    shift 2
-    local pats=()
-    while [ "$1" != "--" ]; do pats+=("$1"); shift; done
-    shift
-    "$tippe" simulate "$@" >"$tmp/out" 2>"$tmp/err"
-    local st=$?
-    if [ "$st" -ne "$want" ]; then
-        bad "$name: exit $st, want $want; stderr: $(cat "$tmp/err")"
-        return
-    fi
-    for p in "${pats[@]}"; do
-        if ! grep -qF -- "$p" "$tmp/err"; then
-            bad "$name: stderr lacks '$p': $(cat "$tmp/err")"
-            return
-        fi
-    done
-    if [ -s "$tmp/out" ]; then
-        bad "$name: printed on stdout although it failed"
-        return
-    fi
-    ok
-}
 
 # A valid scenario (Figure 12's top below n-, settles in ~800 s of model time);
 # each bad case edits one field of it with python's json module.
@@ -55,14 +22,7 @@ cat >"$base" <<'EOF'
 }
 EOF
 # mutate OUT PYTHON: writes base.json changed by a python statement on dict d
-mutate() {
-    python3 - "$base" "$1" "$2" <<'EOF'
-import json, sys
-d = json.load(open(sys.argv[1]))
-exec(sys.argv[3])
-json.dump(d, open(sys.argv[2], "w"))
-EOF
-}
+mutate() { json_edit "$base" "$1" "$2"; }
 
 # --- good runs --------------------------------------------------------------
 "$tippe" simulate --help >"$tmp/out" 2>&1 && grep -q "usage: tippe simulate" "$tmp/out" &&
@@ -145,55 +105,54 @@ fi
 
 # --- bad scenarios: exit 2, the file and the field named ---------------------
 printf '{"name": "x", "mu": 0.1,,}' >"$tmp/syntax.json"
-expect_fail "invalid JSON" 2 "syntax.json:1:" "not valid JSON" -- "$tmp/syntax.json"
+expect_fail "invalid JSON" 2 "syntax.json:1:" "not valid JSON" -- simulate "$tmp/syntax.json"
 mutate "$tmp/case.json" 'd["Mu"] = d.pop("mu")'
-expect_fail "wrong case" 2 "case.json" "Mu" "unknown key" -- "$tmp/case.json"
+expect_fail "wrong case" 2 "case.json" "Mu" "unknown key" -- simulate "$tmp/case.json"
 sed 's/"mu": 0.04,/"mu": 0.04, "mu": 0.5,/' "$base" >"$tmp/dup.json"
-expect_fail "duplicate key" 2 "dup.json" "mu" "duplicate key" -- "$tmp/dup.json"
+expect_fail "duplicate key" 2 "dup.json" "mu" "duplicate key" -- simulate "$tmp/dup.json"
 mutate "$tmp/x.json" 'del d["t_end"]'
-expect_fail "missing t_end" 2 "x.json" "t_end" "missing" -- "$tmp/x.json"
+expect_fail "missing t_end" 2 "x.json" "t_end" "missing" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["mu"] = -0.1'
-expect_fail "negative mu" 2 "x.json: mu:" ">= 0 s/m" -- "$tmp/x.json"
+expect_fail "negative mu" 2 "x.json: mu:" ">= 0 s/m" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["initial"]["theta"] = 4'
-expect_fail "theta > pi" 2 "x.json: initial.theta:" "[0, pi]" -- "$tmp/x.json"
+expect_fail "theta > pi" 2 "x.json: initial.theta:" "[0, pi]" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["initial"]["spin"] = "fast"'
-expect_fail "string spin" 2 "initial.spin" "expected a number" -- "$tmp/x.json"
+expect_fail "string spin" 2 "initial.spin" "expected a number" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["initial"]["phi_dot"] = "sideways"'
-expect_fail "bad phi_dot rule" 2 "initial.phi_dot" "sideways" -- "$tmp/x.json"
+expect_fail "bad phi_dot rule" 2 "initial.phi_dot" "sideways" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["initial"]["theta"] = 3.1; d["initial"]["phi_dot"] = "s1"; d["initial"]["spin"] = 0.1'
-expect_fail "s1 without a real root" 2 "initial.phi_dot" "use s3" -- "$tmp/x.json"
+expect_fail "s1 without a real root" 2 "initial.phi_dot" "use s3" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["initial"]["wobble"] = 1'
-expect_fail "unknown initial key" 2 "initial.wobble" "unknown key" -- "$tmp/x.json"
+expect_fail "unknown initial key" 2 "initial.wobble" "unknown key" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["top"]["eps"] = 1.0'
-expect_fail "eps = R" 2 "top.eps" "eps < R" -- "$tmp/x.json"
+expect_fail "eps = R" 2 "top.eps" "eps < R" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["top"]["A"] = 0.4'
-expect_fail "A < C/2" 2 "top.A" "rigid body" -- "$tmp/x.json"
+expect_fail "A < C/2" 2 "top.A" "rigid body" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'del d["top"]["C"]'
-expect_fail "missing C" 2 "top.C" "missing" -- "$tmp/x.json"
+expect_fail "missing C" 2 "top.C" "missing" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["top"]["design"] = "shell-band.json"'
-expect_fail "design and explicit top" 2 "x.json: top:" "not both" -- "$tmp/x.json"
+expect_fail "design and explicit top" 2 "x.json: top:" "not both" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["top"] = {"design": "nowhere.json", "z2_mm": 1}'
-expect_fail "missing design file" 2 "top.design" "nowhere.json" -- "$tmp/x.json"
+expect_fail "missing design file" 2 "top.design" "nowhere.json" -- simulate "$tmp/x.json"
 mutate "$tmp/sc/z2.json" 'd["top"] = {"design": "../shell-band.json", "z2_mm": 40}'
-expect_fail "z2 outside travel" 2 "z2.json" "top.z2_mm" -- "$tmp/sc/z2.json"
+expect_fail "z2 outside travel" 2 "z2.json" "top.z2_mm" -- simulate "$tmp/sc/z2.json"
 mutate "$tmp/x.json" 'd["accuracy"] = "ultra"'
-expect_fail "unknown preset" 2 "x.json: accuracy:" "ultra" -- "$tmp/x.json"
+expect_fail "unknown preset" 2 "x.json: accuracy:" "ultra" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["accuracy"] = {"stepper": "euler", "rtol": 1e-6}'
-expect_fail "unknown stepper" 2 "accuracy.stepper" "euler" -- "$tmp/x.json"
+expect_fail "unknown stepper" 2 "accuracy.stepper" "euler" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["accuracy"] = {"stepper": "rk4", "rtol": 0.5}'
-expect_fail "rtol out of range" 2 "accuracy.rtol" -- "$tmp/x.json"
-expect_fail "bad override value" 2 "initial.spin" "command line" "initial.spin=abc" -- "$base" --spin abc
-expect_fail "missing file" 2 "nowhere.json" "cannot open" -- "$tmp/nowhere.json"
+expect_fail "rtol out of range" 2 "accuracy.rtol" -- simulate "$tmp/x.json"
+expect_fail "bad override value" 2 "initial.spin" "command line" "initial.spin=abc" -- simulate "$base" --spin abc
+expect_fail "missing file" 2 "nowhere.json" "cannot open" -- simulate "$tmp/nowhere.json"
 
 # --- bad usage -----------------------------------------------------------------
-expect_fail "no scenario" 2 "no scenario file" --
-expect_fail "unknown option" 2 "unknown option '--fast'" -- "$base" --fast
-expect_fail "flag without value" 2 "--mu needs a value" -- "$base" --mu
-expect_fail "two scenarios" 2 "more than one scenario" -- "$base" "$base"
-expect_fail "plot format" 2 ".png, .svg or .pdf" -- "$base" --plot "$tmp/p.txt"
-expect_fail "plot directory" 2 "nodir" -- "$base" --plot "$tmp/nodir/p.png"
-expect_fail "csv directory" 2 "nodir" -- "$base" --csv "$tmp/nodir/t.csv"
+expect_fail "no scenario" 2 "no scenario file" -- simulate
+expect_fail "unknown option" 2 "unknown option '--fast'" -- simulate "$base" --fast
+expect_fail "flag without value" 2 "--mu needs a value" -- simulate "$base" --mu
+expect_fail "two scenarios" 2 "more than one scenario" -- simulate "$base" "$base"
+expect_fail "plot format" 2 ".png, .svg or .pdf" -- simulate "$base" --plot "$tmp/p.txt"
+expect_fail "plot directory" 2 "nodir" -- simulate "$base" --plot "$tmp/nodir/p.png"
+expect_fail "csv directory" 2 "nodir" -- simulate "$base" --csv "$tmp/nodir/t.csv"
 [ -e "$tmp/p.txt" ] || [ -e "$tmp/nodir" ] && bad "a failed run left files" || ok
 
-echo "test_simulate_cli: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

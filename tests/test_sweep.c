@@ -3,6 +3,8 @@
  * tippe_theory_classify() with each change of group refined by bisection. */
 #include "tippe/sweep.h"
 
+#include "check.h"
+
 #include <dirent.h>
 #include <math.h>
 #include <stdio.h>
@@ -10,19 +12,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-static int passed, failed;
-#define CHECK(cond, ...)                                                        \
-    do {                                                                        \
-        if (cond) {                                                             \
-            passed++;                                                           \
-        } else {                                                                \
-            failed++;                                                           \
-            printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond);              \
-            printf(__VA_ARGS__);                                                \
-            printf("\n");                                                       \
-        }                                                                       \
-    } while (0)
 
 /* The sweep promises 1e-6 mm; its solver stops at TIPPE_SWEEP_XTOL_MM = 1e-7. */
 #define ZTOL_MM 1e-6
@@ -420,6 +409,5 @@ int main(void)
     test_balance();
     test_errors();
     test_plots();
-    printf("test_sweep: %d passed, %d failed\n", passed, failed);
-    return failed != 0;
+    return check_summary("test_sweep");
 }

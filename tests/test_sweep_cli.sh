@@ -1,23 +1,8 @@
 #!/usr/bin/env bash
 # tippe sweep and tippe compare as a user drives them: tables, JSON, plots, and bad
 # input (message, exit 2, no output file left behind). Usage: test_sweep_cli.sh TIPPE
-set -u
-tippe=${1:?usage: test_sweep_cli.sh /path/to/tippe}
-passed=0
-failed=0
-check() { # check DESCRIPTION COMMAND...: passes when COMMAND succeeds
-    local what=$1
-    shift
-    if "$@"; then
-        passed=$((passed + 1))
-    else
-        failed=$((failed + 1))
-        echo "FAIL: $what"
-    fi
-}
-
-dir=$(mktemp -d /tmp/tippe-test-sweep-cli-XXXXXX)
-trap 'rm -rf "$dir"' EXIT
+source "$(dirname "$0")/lib.sh"
+setup "$@"
 m12=designs/m12-setscrew.json
 nylon=designs/shell-rod-nylon.json
 
@@ -29,9 +14,9 @@ check "sweep table gives the 3-in-1 verdict" grep -q "^3-in-1" <<<"$out"
 check "sweep table gives the narrowest zone in mm" grep -q "narrowest reachable zone: .* mm" <<<"$out"
 
 # --- JSON: parsed by Python, zones contiguous over the sweep ------------------
-"$tippe" sweep "$m12" --json >"$dir/m12.json"
+"$tippe" sweep "$m12" --json >"$tmp/m12.json"
 check "sweep --json exits 0" test $? -eq 0
-check "sweep --json is a valid zone object" python3 - "$dir/m12.json" <<'EOF'
+check "sweep --json is a valid zone object" python3 - "$tmp/m12.json" <<'EOF'
 import json, sys
 o = json.load(open(sys.argv[1]))
 z = o["zones"]
@@ -49,8 +34,8 @@ for x in z:
 EOF
 
 # Beyond the physical travel: the rod's bead touches the shell at |Z2| = 15.156 mm.
-"$tippe" sweep "$nylon" --from 0 --to 20 --json >"$dir/nylon.json"
-check "a zone beyond the physical travel is marked" python3 - "$dir/nylon.json" <<'EOF'
+"$tippe" sweep "$nylon" --from 0 --to 20 --json >"$tmp/nylon.json"
+check "a zone beyond the physical travel is marked" python3 - "$tmp/nylon.json" <<'EOF'
 import json, sys
 o = json.load(open(sys.argv[1]))
 hi = o["physical_travel_mm"][1]
@@ -62,71 +47,70 @@ EOF
 png_ok() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] &&
     [ "$(stat -c %s "$1")" -gt 5000 ]; }
 svg_ok() { grep -q "<svg" "$1" && [ "$(stat -c %s "$1")" -gt 5000 ]; }
-"$tippe" sweep "$m12" --plot "$dir/zones.png" --phase-plot "$dir/phase.svg" >/dev/null
+"$tippe" sweep "$m12" --plot "$tmp/zones.png" --phase-plot "$tmp/phase.svg" >/dev/null
 check "sweep with plots exits 0" test $? -eq 0
-check "zone plot is a PNG" png_ok "$dir/zones.png"
-check "phase plot is an SVG" svg_ok "$dir/phase.svg"
-"$tippe" sweep "$m12" --plot "$dir/zones.svg" --phase-plot "$dir/phase.png" >/dev/null
-check "zone plot is an SVG" svg_ok "$dir/zones.svg"
-check "phase plot is a PNG" png_ok "$dir/phase.png"
-out=$("$tippe" sweep "$m12" --vary parts.screw.height_mm=5:15:3 --plot "$dir/vary.png")
+check "zone plot is a PNG" png_ok "$tmp/zones.png"
+check "phase plot is an SVG" svg_ok "$tmp/phase.svg"
+"$tippe" sweep "$m12" --plot "$tmp/zones.svg" --phase-plot "$tmp/phase.png" >/dev/null
+check "zone plot is an SVG" svg_ok "$tmp/zones.svg"
+check "phase plot is a PNG" png_ok "$tmp/phase.png"
+out=$("$tippe" sweep "$m12" --vary parts.screw.height_mm=5:15:3 --plot "$tmp/vary.png")
 check "vary exits 0" test $? -eq 0
 check "vary table has one row per step" test "$(grep -cE '^ +(5|10|15) ' <<<"$out")" -eq 3
-check "vary plot is a PNG" png_ok "$dir/vary.png"
-"$tippe" sweep "$m12" --vary parts.screw.height_mm=5:15:3 --json >"$dir/vary.json"
+check "vary plot is a PNG" png_ok "$tmp/vary.png"
+"$tippe" sweep "$m12" --vary parts.screw.height_mm=5:15:3 --json >"$tmp/vary.json"
 check "vary --json has three steps" python3 -c \
-    'import json,sys; assert len(json.load(open(sys.argv[1]))["steps"]) == 3' "$dir/vary.json"
-rm -f "$dir"/*
+    'import json,sys; assert len(json.load(open(sys.argv[1]))["steps"]) == 3' "$tmp/vary.json"
+rm -f "$tmp"/*
 
 # --- compare -------------------------------------------------------------------
 out=$("$tippe" compare "$m12" "$nylon")
 check "compare exits 0" test $? -eq 0
 check "compare shows both designs" grep -q "M12.*nylon" <<<"$out"
-"$tippe" compare "$m12" "$nylon" --json >"$dir/cmp.json"
+"$tippe" compare "$m12" "$nylon" --json >"$tmp/cmp.json"
 check "compare --json has both designs" python3 -c \
-    'import json,sys; assert len(json.load(open(sys.argv[1]))["designs"]) == 2' "$dir/cmp.json"
-rm -f "$dir"/*
+    'import json,sys; assert len(json.load(open(sys.argv[1]))["designs"]) == 2' "$tmp/cmp.json"
+rm -f "$tmp"/*
 
 # --- bad input: a message, exit 2, and nothing written -------------------------
-printf '{"name": "broken", "radius_mm": 25,' >"$dir/broken.json"
-bad() { # bad DESCRIPTION ARGS...: tippe ARGS must fail with 2, say why, write no file
+printf '{"name": "broken", "radius_mm": 25,' >"$tmp/broken.json"
+refused() { # refused DESCRIPTION ARGS...: tippe ARGS must fail with 2, say why, write no file
     local what=$1
     shift
-    "$tippe" "$@" >"$dir/.stdout" 2>"$dir/.stderr"
+    "$tippe" "$@" >"$tmp/.stdout" 2>"$tmp/.stderr"
     local rc=$?
     check "$what: exit 2 (got $rc)" test $rc -eq 2
-    check "$what: names the problem" test -s "$dir/.stderr"
+    check "$what: names the problem" test -s "$tmp/.stderr"
     local left
-    left=$(ls -A "$dir" | grep -v -e '^\.stdout$' -e '^\.stderr$' -e '^broken\.json$')
+    left=$(ls -A "$tmp" | grep -v -e '^\.stdout$' -e '^\.stderr$' -e '^broken\.json$')
     check "$what: no file left behind ($left)" test -z "$left"
-    rm -f "$dir/.stdout" "$dir/.stderr"
+    rm -f "$tmp/.stdout" "$tmp/.stderr"
 }
-p=$dir/out.png
-bad "sweep without a design" sweep --plot "$p"
-bad "sweep of a missing file" sweep "$dir/missing.json" --plot "$p"
-bad "sweep of a broken file" sweep "$dir/broken.json" --plot "$p" --phase-plot "$dir/ph.png"
-bad "sweep with an unknown option" sweep "$m12" --bogus --plot "$p"
-bad "sweep to a .jpg" sweep "$m12" --plot "$dir/out.jpg"
-bad "phase plot to a .txt" sweep "$m12" --plot "$p" --phase-plot "$dir/ph.txt"
-bad "sweep into a missing directory" sweep "$m12" --plot "$dir/no/such/out.png"
-bad "sweep with --from above --to" sweep "$m12" --from 10 --to 5 --plot "$p"
-bad "sweep with a non-number" sweep "$m12" --from ten --plot "$p"
-bad "sweep with --set of an unknown field" sweep "$m12" --set parts.screw.colour=red --plot "$p"
-bad "sweep with a bad --vary" sweep "$m12" --vary parts.screw.height_mm=5:15 --plot "$p"
-bad "sweep --vary of an unknown part" sweep "$m12" --vary parts.nosuch.height_mm=5:15:3 --plot "$p"
-bad "sweep --vary to an impossible value" sweep "$m12" --vary parts.screw.height_mm=-5:15:3 --plot "$p"
-bad "sweep --vary with a phase plot" sweep "$m12" --vary parts.screw.height_mm=5:15:3 --phase-plot "$p"
-bad "compare without designs" compare
-bad "compare with a missing file" compare "$m12" "$dir/missing.json"
-bad "compare with a broken file" compare "$dir/broken.json" "$m12"
-bad "compare with an unknown option" compare "$m12" --plot "$p"
-bad "compare with a bad --set" compare "$m12" "$nylon" --set radius_mm=-3
+p=$tmp/out.png
+refused "sweep without a design" sweep --plot "$p"
+refused "sweep of a missing file" sweep "$tmp/missing.json" --plot "$p"
+refused "sweep of a broken file" sweep "$tmp/broken.json" --plot "$p" --phase-plot "$tmp/ph.png"
+refused "sweep with an unknown option" sweep "$m12" --bogus --plot "$p"
+refused "sweep to a .jpg" sweep "$m12" --plot "$tmp/out.jpg"
+refused "phase plot to a .txt" sweep "$m12" --plot "$p" --phase-plot "$tmp/ph.txt"
+refused "sweep into a missing directory" sweep "$m12" --plot "$tmp/no/such/out.png"
+refused "sweep with --from above --to" sweep "$m12" --from 10 --to 5 --plot "$p"
+refused "sweep with a non-number" sweep "$m12" --from ten --plot "$p"
+refused "sweep with --set of an unknown field" sweep "$m12" --set parts.screw.colour=red --plot "$p"
+refused "sweep with a bad --vary" sweep "$m12" --vary parts.screw.height_mm=5:15 --plot "$p"
+refused "sweep --vary of an unknown part" sweep "$m12" --vary parts.nosuch.height_mm=5:15:3 --plot "$p"
+refused "sweep --vary to an impossible value" sweep "$m12" --vary parts.screw.height_mm=-5:15:3 --plot "$p"
+refused "sweep --vary with a phase plot" sweep "$m12" --vary parts.screw.height_mm=5:15:3 --phase-plot "$p"
+refused "compare without designs" compare
+refused "compare with a missing file" compare "$m12" "$tmp/missing.json"
+refused "compare with a broken file" compare "$tmp/broken.json" "$m12"
+refused "compare with an unknown option" compare "$m12" --plot "$p"
+refused "compare with a bad --set" compare "$m12" "$nylon" --set radius_mm=-3
 
 for verb in sweep compare; do
-    "$tippe" $verb --help >"$dir/.help"
+    "$tippe" $verb --help >"$tmp/.help"
     check "$verb --help exits 0" test $? -eq 0
-    check "$verb --help shows usage" grep -q "^usage: tippe $verb" "$dir/.help"
+    check "$verb --help shows usage" grep -q "^usage: tippe $verb" "$tmp/.help"
 done
 
-echo "test_sweep_cli: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

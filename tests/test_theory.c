@@ -3,6 +3,8 @@
  * equations are re-derived here independently of src/theory.c where possible. */
 #include "tippe/theory.h"
 
+#include "check.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -10,20 +12,6 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 #include <gsl/gsl_roots.h>
-
-static int n_pass, n_fail;
-
-#define CHECK(cond, ...)                                                       \
-    do {                                                                       \
-        if (cond) {                                                            \
-            n_pass++;                                                          \
-        } else {                                                               \
-            n_fail++;                                                          \
-            printf("FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond);             \
-            printf(__VA_ARGS__);                                               \
-            printf("\n");                                                      \
-        }                                                                      \
-    } while (0)
 
 static double rel_diff(double a, double b)
 {
@@ -696,6 +684,5 @@ int main(void)
     test_intermediate_states();
     test_boundaries();
     test_predict();
-    printf("test_theory: %d passed, %d failed\n", n_pass, n_fail);
-    return n_fail != 0;
+    return check_summary("test_theory");
 }
