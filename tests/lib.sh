@@ -16,12 +16,13 @@ setup() {
     failed=0
     tmp=$(mktemp -d "${TMPDIR:-/tmp}/tippe-$test_name-XXXXXX") || exit 1
     trap 'rm -rf "$tmp"' EXIT
+    exec 3>&1 # the test's own stdout, for FAIL lines even inside redirected checks
 }
 
 ok() { passed=$((passed + 1)); }
-bad() { # bad MESSAGE: a failed check, said on stdout (ctest keeps it in the log)
+bad() { # bad MESSAGE: a failed check, said on the test's stdout (ctest keeps it in the log)
     failed=$((failed + 1))
-    echo "FAIL: $*"
+    echo "FAIL: $*" >&3
 }
 
 # check DESCRIPTION COMMAND...: passes when COMMAND succeeds. Its status is the
