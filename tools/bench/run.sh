@@ -3,7 +3,7 @@
 #
 #   tools/bench/run.sh [OUTDIR] [--quick] [--docs]
 #
-# Builds libtippe (Release) into build-bench/, compiles the tools in tools/bench/,
+# Builds tippe and the tools in tools/bench/ (Release) into build-bench/,
 # and writes into OUTDIR (default out/bench):
 #   machine.txt        lscpu model and cores, compiler, GSL and SciPy versions
 #   wp.csv             every GSL stepper x rtol 1e-3..1e-13 x scenario (work_precision.c)
@@ -39,17 +39,10 @@ done
 PY=/usr/bin/python3 # Debian's, with numpy and scipy
 mkdir -p "$OUT"
 BUILD=build-bench
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$BUILD" -j2 --target tippe tippe-cli >/dev/null
-mkdir -p "$BUILD/bench"
-# The same flags as the project (CMakeLists.txt), warnings as errors.
-CFLAGS="-std=gnu11 -O3 -DNDEBUG -g -Wall -Wextra -Wshadow -Wstrict-prototypes -Wno-unused-parameter
-        -Werror -ffp-contract=off -fopenmp -Iinclude $(pkg-config --cflags gsl libcjson plplot)"
-LIBS="$BUILD/libtippe.a $(pkg-config --libs gsl libcjson plplot) -lm"
-for t in work_precision wp_plot levels; do
-    # shellcheck disable=SC2086
-    cc $CFLAGS "tools/bench/$t.c" $LIBS -o "$BUILD/bench/$t"
-done
+# Warnings as errors, as in CI; the bench programs are CMake targets (tools/CMakeLists.txt).
+cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DTIPPE_WERROR=ON >/dev/null
+cmake --build "$BUILD" -j2 --target tippe-cli wp_work_precision wp_wp_plot wp_levels >/dev/null
+BIN="$BUILD/tools/bench"
 
 {
     lscpu | grep -E '^(Model name|CPU\(s\)|Thread|Core|Socket)'
@@ -61,21 +54,21 @@ done
 cat "$OUT/machine.txt"
 
 echo "== work-precision (tippe)"
-"$BUILD/bench/work_precision" "$OUT" $QUICK
+"$BIN/work_precision" "$OUT" $QUICK
 echo "== SciPy"
 $PY tools/bench/reference_scipy.py "$OUT" $QUICK
 echo "== plots"
 for s in $(tail -n +2 "$OUT/reference.csv" | cut -d, -f1); do
-    "$BUILD/bench/wp_plot" "$OUT/wp-$s.png" "$s" "$OUT/wp.csv" "$OUT/scipy.csv"
+    "$BIN/wp_plot" "$OUT/wp-$s.png" "$s" "$OUT/wp.csv" "$OUT/scipy.csv"
     if [ "$DOCS" = 1 ]; then
         mkdir -p docs/img
         cp "$OUT/wp-$s.png" "docs/img/wp-$s.png"
     fi
 done
 echo "== levels of detail"
-"$BUILD/bench/levels" designs/scenarios/fig12-tip.json 15 | tee "$OUT/levels.txt"
+"$BIN/levels" designs/scenarios/fig12-tip.json 15 | tee "$OUT/levels.txt"
 if command -v perf >/dev/null && perf record -o "$OUT/perf.data" -q -- \
-    "$BUILD/bench/levels" designs/scenarios/fig12-tip.json 200 1 "$OUT/levels-tmp.csv" verdict \
+    "$BIN/levels" designs/scenarios/fig12-tip.json 200 1 "$OUT/levels-tmp.csv" verdict \
     >/dev/null 2>&1; then
     # Self time per symbol; contact_eval is called by rhs (and once per step
     # for the monitors), so rhs + contact_eval is the right-hand side's share.
