@@ -15,21 +15,19 @@
  * states the resolution this gives. */
 #include "tippe/design.h"
 #include "tippe/geometry.h"
+#include "tippe/json.h"
 
 #include <cjson/cJSON.h>
 #include <gsl/gsl_errno.h>
 
-#include <ctype.h>
-#include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define NAME_LEN 64
 #define MAX_PARTS 50
-#define MAX_FILE_BYTES (4 << 20)
+#define MAX_FILE_MIB 4
 /* Overlap depth that still counts as touching: far below print resolution
  * (~0.1 mm), far above double roundoff on mm-sized numbers (~1e-14 mm). */
 #define TOL_MM 1e-6
@@ -76,261 +74,21 @@ struct tippe_design {
     tippe_moments fixed, moving; /* SI; moving at Z2 = 0 */
 };
 
-/* ---------------------------------------------------------------- messages */
-
-typedef struct {
-    const char *file;
-    int n_set;
-    char set_path[MAX_PARTS + 16][300]; /* JSON paths changed by --set ... */
-    const char *set_text[MAX_PARTS + 16]; /* ... and the override that did it */
-    tippe_error *err;
-} ctx;
-
-/* "FILE: PATH: what", plus the override that set PATH when there is one, so
- * that a bad --set value is blamed on the --set and not on the file. */
-__attribute__((format(printf, 3, 4)))
-static int fail(const ctx *c, const char *path, const char *fmt, ...)
-{
-    char what[768];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    const char *by = NULL;
-    for (int i = 0; i < c->n_set && path; i++) {
-        size_t n = strlen(c->set_path[i]);
-        if (!strncmp(path, c->set_path[i], n) && (path[n] == '\0' || path[n] == '.'))
-            by = c->set_text[i];
-    }
-    if (by)
-        return tippe_error_set(c->err, TIPPE_EINPUT, "%s: %s: %s (set by --set %s)", c->file,
-                               path, what, by);
-    if (path && path[0])
-        return tippe_error_set(c->err, TIPPE_EINPUT, "%s: %s: %s", c->file, path, what);
-    return tippe_error_set(c->err, TIPPE_EINPUT, "%s: %s", c->file, what);
-}
-
-static void jpath(char *buf, size_t cap, const char *prefix, const char *key)
-{
-    if (prefix[0])
-        snprintf(buf, cap, "%s.%s", prefix, key);
-    else
-        snprintf(buf, cap, "%s", key);
-}
-
-static const char *json_kind(const cJSON *it)
-{
-    if (cJSON_IsString(it)) return "a string";
-    if (cJSON_IsNumber(it)) return "a number";
-    if (cJSON_IsBool(it)) return "true/false";
-    if (cJSON_IsNull(it)) return "null";
-    if (cJSON_IsArray(it)) return "an array";
-    if (cJSON_IsObject(it)) return "an object";
-    return "an invalid value";
-}
-
-/* ------------------------------------------------------------ JSON reading */
-
-static int read_text(const char *path, char **out, tippe_error *err)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot open: %s", path, strerror(errno));
-    char *buf = malloc(MAX_FILE_BYTES + 1);
-    if (!buf) {
-        fclose(f);
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
-    }
-    size_t n = fread(buf, 1, MAX_FILE_BYTES + 1, f);
-    int bad = ferror(f);
-    fclose(f);
-    if (bad) {
-        free(buf);
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: read error", path);
-    }
-    if (n > MAX_FILE_BYTES) {
-        free(buf);
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: larger than %d bytes: not a design file",
-                               path, MAX_FILE_BYTES);
-    }
-    buf[n] = '\0';
-    if (strlen(buf) != n) {
-        free(buf);
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: contains a NUL byte: not a JSON text", path);
-    }
-    *out = buf;
-    return TIPPE_OK;
-}
-
-/* The position comes from cJSON_ParseWithOpts (cJSON_GetErrorPtr is global
- * state, not thread-safe). */
-static int parse_json(const char *path, const char *text, cJSON **out, tippe_error *err)
-{
-    const char *end = NULL;
-    cJSON *root = cJSON_ParseWithOpts(text, &end, 1);
-    if (root) {
-        *out = root;
-        return TIPPE_OK;
-    }
-    if (!end || end < text)
-        end = text;
-    int line = 1, col = 1;
-    for (const char *p = text; p < end && *p; p++) {
-        if (*p == '\n') {
-            line++;
-            col = 1;
-        } else {
-            col++;
-        }
-    }
-    /* Quote the line up to the error: cJSON may point just past the bad token. */
-    const char *ls = end;
-    while (ls > text && ls[-1] != '\n')
-        ls--;
-    if (end - ls > 40)
-        ls = end - 40;
-    char line_text[48];
-    int k = 0;
-    for (const char *p = ls; p < end && k < (int)sizeof line_text - 1; p++)
-        line_text[k++] = isprint((unsigned char)*p) ? *p : ' ';
-    line_text[k] = '\0';
-    if (!*end)
-        return tippe_error_set(err, TIPPE_EINPUT,
-                               "%s:%d:%d: not valid JSON: the text ends too early (after '%s')",
-                               path, line, col, line_text);
-    return tippe_error_set(err, TIPPE_EINPUT, "%s:%d:%d: not valid JSON (line %d, column %d, "
-                           "after '%s')", path, line, col, line, col, line_text);
-}
-
-/* cJSON keeps every duplicate key and lookups see only the first: a second
- * "radius_mm" would be silently ignored, so refuse it anywhere in the tree. */
-static int check_duplicates(const ctx *c, const cJSON *node, const char *path)
-{
-    char sub[256];
-    int i = 0;
-    for (const cJSON *ch = node->child; ch; ch = ch->next, i++) {
-        if (cJSON_IsObject(node)) {
-            for (const cJSON *prev = node->child; prev != ch; prev = prev->next)
-                if (!strcmp(prev->string, ch->string)) {
-                    jpath(sub, sizeof sub, path, ch->string);
-                    return fail(c, sub, "duplicate key (a key may appear once per object)");
-                }
-            jpath(sub, sizeof sub, path, ch->string);
-        } else {
-            snprintf(sub, sizeof sub, "%s[%d]", path, i);
-        }
-        if (ch->child) {
-            int rc = check_duplicates(c, ch, sub);
-            if (rc)
-                return rc;
-        }
-    }
-    return TIPPE_OK;
-}
-
-static int in_list(const char *key, const char *const *list)
-{
-    for (; *list; list++)
-        if (!strcmp(key, *list))
-            return 1;
-    return 0;
-}
-
-static void join_list(char *buf, size_t cap, const char *const *a, const char *const *b)
-{
-    buf[0] = '\0';
-    size_t n = 0;
-    for (int pass = 0; pass < 2; pass++)
-        for (const char *const *l = pass ? b : a; l && *l; l++) {
-            int w = snprintf(buf + n, cap - n, "%s%s", n ? ", " : "", *l);
-            if (w < 0 || (size_t)w >= cap - n)
-                return;
-            n += (size_t)w;
-        }
-}
-
-static int check_keys(const ctx *c, const cJSON *obj, const char *prefix, const char *what,
-                      const char *const *a, const char *const *b)
-{
-    char p[256], list[512];
-    for (const cJSON *ch = obj->child; ch; ch = ch->next)
-        if (!in_list(ch->string, a) && !(b && in_list(ch->string, b))) {
-            join_list(list, sizeof list, a, b);
-            jpath(p, sizeof p, prefix, ch->string);
-            return fail(c, p, "unknown field (%s has: %s)", what, list);
-        }
-    return TIPPE_OK;
-}
-
-static int field_number(const ctx *c, const cJSON *obj, const char *prefix, const char *key,
-                        int required, double *out, int *present)
-{
-    char p[256];
-    jpath(p, sizeof p, prefix, key);
-    const cJSON *it = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (present)
-        *present = it != NULL;
-    if (!it)
-        return required ? fail(c, p, "missing (a number is required)") : TIPPE_OK;
-    if (!cJSON_IsNumber(it))
-        return fail(c, p, "must be a number, not %s", json_kind(it));
-    if (!isfinite(it->valuedouble))
-        return fail(c, p, "must be a finite number");
-    *out = it->valuedouble;
-    return TIPPE_OK;
-}
-
 /* A length in mm that must be > 0 (or >= 0 with allow_zero). */
-static int field_length(const ctx *c, const cJSON *obj, const char *prefix, const char *key,
-                        int required, int allow_zero, double *out, int *present)
+static int field_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
+                        const char *key, int required, int allow_zero, double *out, int *present)
 {
     int here = 0;
-    int rc = field_number(c, obj, prefix, key, required, out, &here);
+    int rc = tippe_json_number(c, obj, prefix, key, required, out, &here);
     if (present)
         *present = here;
     if (rc || !here)
         return rc;
     char p[256];
-    jpath(p, sizeof p, prefix, key);
+    tippe_json_path(p, sizeof p, prefix, key);
     if (allow_zero ? *out < 0 : *out <= 0)
-        return fail(c, p, "must be %s (a length in mm), got %g", allow_zero ? ">= 0" : "positive",
-                    *out);
-    return TIPPE_OK;
-}
-
-static int field_string(const ctx *c, const cJSON *obj, const char *prefix, const char *key,
-                        int required, char *out, size_t cap, int *present)
-{
-    char p[256];
-    jpath(p, sizeof p, prefix, key);
-    const cJSON *it = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (present)
-        *present = it != NULL;
-    if (!it)
-        return required ? fail(c, p, "missing (a string is required)") : TIPPE_OK;
-    if (!cJSON_IsString(it))
-        return fail(c, p, "must be a string, not %s", json_kind(it));
-    if (out) {
-        if (strlen(it->valuestring) >= cap)
-            return fail(c, p, "longer than %zu characters", cap - 1);
-        strcpy(out, it->valuestring);
-    }
-    return TIPPE_OK;
-}
-
-static int field_bool(const ctx *c, const cJSON *obj, const char *prefix, const char *key,
-                      int *out, int *present)
-{
-    char p[256];
-    jpath(p, sizeof p, prefix, key);
-    const cJSON *it = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (present)
-        *present = it != NULL;
-    if (!it)
-        return TIPPE_OK;
-    if (!cJSON_IsBool(it))
-        return fail(c, p, "must be true or false, not %s", json_kind(it));
-    *out = cJSON_IsTrue(it);
+        return tippe_json_fail(c, p, "must be %s (a length in mm), got %g",
+                               allow_zero ? ">= 0" : "positive", *out);
     return TIPPE_OK;
 }
 
@@ -359,7 +117,7 @@ static const char *const material_keys[] = {"density_g_cm3", "source", "notes", 
 
 /* ------------------------------------------------------------- overrides */
 
-static int apply_override(ctx *c, cJSON *root, const char *text)
+static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
 {
     const char *eq = strchr(text, '=');
     if (!eq || eq == text)
@@ -381,7 +139,8 @@ static int apply_override(ctx *c, cJSON *root, const char *text)
     if (!strncmp(field, "parts.", 6) || !strncmp(field, "parts[", 6)) {
         cJSON *parts = cJSON_GetObjectItemCaseSensitive(root, "parts");
         if (!cJSON_IsArray(parts))
-            return fail(c, "parts", "must be an array of parts (cannot apply --set %s)", text);
+            return tippe_json_fail(c, "parts", "must be an array of parts (cannot apply --set %s)",
+                                   text);
         char *dot = strrchr(field, '.');
         if (!dot || dot < field + 6 || dot[1] == '\0')
             return tippe_error_set(c->err, TIPPE_EINPUT,
@@ -422,20 +181,20 @@ static int apply_override(ctx *c, cJSON *root, const char *text)
         obj = cJSON_GetArrayItem(parts, index);
         if (!cJSON_IsObject(obj)) {
             snprintf(path, sizeof path, "parts[%d]", index);
-            return fail(c, path, "must be an object (cannot apply --set %s)", text);
+            return tippe_json_fail(c, path, "must be an object (cannot apply --set %s)", text);
         }
-        if (!in_list(key, all_part_keys)) {
+        if (!tippe_json_in_list(key, all_part_keys)) {
             char list[512];
-            join_list(list, sizeof list, all_part_keys, NULL);
+            tippe_json_key_list(list, sizeof list, all_part_keys, NULL);
             return tippe_error_set(c->err, TIPPE_EINPUT,
                                    "%s: --set %s: '%s' is not a part field (fields: %s)", c->file,
                                    text, key, list);
         }
         snprintf(path, sizeof path, "parts[%d].%s", index, key);
     } else {
-        if (!in_list(key, top_keys) || !strcmp(key, "parts")) {
+        if (!tippe_json_in_list(key, top_keys) || !strcmp(key, "parts")) {
             char list[256];
-            join_list(list, sizeof list, top_keys, NULL);
+            tippe_json_key_list(list, sizeof list, top_keys, NULL);
             return tippe_error_set(
                 c->err, TIPPE_EINPUT,
                 "%s: --set %s: '%s' is not a design field (fields: %s, parts.NAME.FIELD)", c->file,
@@ -444,7 +203,8 @@ static int apply_override(ctx *c, cJSON *root, const char *text)
         snprintf(path, sizeof path, "%s", key);
     }
 
-    int is_string = obj == root ? in_list(key, top_string_keys) : in_list(key, part_string_keys);
+    int is_string = obj == root ? tippe_json_in_list(key, top_string_keys)
+                                : tippe_json_in_list(key, part_string_keys);
     cJSON *item = NULL;
     if (!strcmp(value, "null")) {
         cJSON_DeleteItemFromObjectCaseSensitive(obj, key);
@@ -462,119 +222,117 @@ static int apply_override(ctx *c, cJSON *root, const char *text)
         }
         if (!item)
             return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
-        if (cJSON_GetObjectItemCaseSensitive(obj, key))
-            cJSON_ReplaceItemInObjectCaseSensitive(obj, key, item);
-        else
-            cJSON_AddItemToObject(obj, key, item);
+        int rc = tippe_json_put(c, obj, key, item);
+        if (rc)
+            return rc;
     }
     /* material and density_g_cm3 exclude each other: setting one replaces the other. */
     if (obj != root && !strcmp(key, "material"))
         cJSON_DeleteItemFromObjectCaseSensitive(obj, "density_g_cm3");
     if (obj != root && !strcmp(key, "density_g_cm3"))
         cJSON_DeleteItemFromObjectCaseSensitive(obj, "material");
-    if (c->n_set < (int)(sizeof c->set_path / sizeof c->set_path[0])) {
-        snprintf(c->set_path[c->n_set], sizeof c->set_path[0], "%s", path);
-        c->set_text[c->n_set] = text;
-        c->n_set++;
-    }
+    tippe_json_note_set(c, path, text);
     return TIPPE_OK;
 }
 
 /* ----------------------------------------------------------------- parts */
 
-static int parse_part(const ctx *c, const cJSON *obj, int index, part *p)
+static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, part *p)
 {
     char pre[32], path[64], shape[16];
     snprintf(pre, sizeof pre, "parts[%d]", index);
     memset(p, 0, sizeof *p);
     p->parent = -1;
     if (!cJSON_IsObject(obj))
-        return fail(c, pre, "must be an object, not %s", json_kind(obj));
+        return tippe_json_wrong_type(c, pre, "an object", obj);
     int rc;
-    if ((rc = field_string(c, obj, pre, "shape", 1, shape, sizeof shape, NULL)))
+    if ((rc = tippe_json_string(c, obj, pre, "shape", 1, shape, sizeof shape, NULL)))
         return rc;
     int s = 0;
     while (s < N_SHAPES && strcmp(shape, shape_names[s]))
         s++;
     if (s == N_SHAPES) {
-        jpath(path, sizeof path, pre, "shape");
-        return fail(c, path, "unknown shape '%s' (shapes: ball, shell, cylinder, tube, torus)",
-                    shape);
+        tippe_json_path(path, sizeof path, pre, "shape");
+        return tippe_json_fail(
+            c, path, "unknown shape '%s' (shapes: ball, shell, cylinder, tube, torus)", shape);
     }
     p->shape = (shape_kind)s;
     char what[32];
     snprintf(what, sizeof what, "a %s", shape_names[s]);
-    if ((rc = check_keys(c, obj, pre, what, part_common_keys, shape_keys[s])))
+    if ((rc = tippe_json_check_keys(c, obj, pre, what, part_common_keys, shape_keys[s])))
         return rc;
-    if ((rc = field_string(c, obj, pre, "name", 1, p->name, sizeof p->name, NULL)))
+    if ((rc = tippe_json_string(c, obj, pre, "name", 1, p->name, sizeof p->name, NULL)))
         return rc;
     if (!p->name[0]) {
-        jpath(path, sizeof path, pre, "name");
-        return fail(c, path, "must not be empty");
+        tippe_json_path(path, sizeof path, pre, "name");
+        return tippe_json_fail(c, path, "must not be empty");
     }
-    if ((rc = field_string(c, obj, pre, "notes", 0, NULL, 0, NULL)))
+    if ((rc = tippe_json_string(c, obj, pre, "notes", 0, NULL, 0, NULL)))
         return rc;
-    if ((rc = field_number(c, obj, pre, "z_mm", 0, &p->z_mm, NULL)))
+    if ((rc = tippe_json_number(c, obj, pre, "z_mm", 0, &p->z_mm, NULL)))
         return rc;
     int has_void = 0, has_moving = 0, has_protrude = 0;
-    if ((rc = field_bool(c, obj, pre, "void", &p->is_void, &has_void)) ||
-        (rc = field_bool(c, obj, pre, "moving", &p->moving, &has_moving)) ||
-        (rc = field_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)))
+    if ((rc = tippe_json_bool(c, obj, pre, "void", &p->is_void, &has_void)) ||
+        (rc = tippe_json_bool(c, obj, pre, "moving", &p->moving, &has_moving)) ||
+        (rc = tippe_json_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)))
         return rc;
     int has_mat = 0, has_dens = 0, has_cut = 0, has_clip = 0;
     char cut[NAME_LEN] = "", clip[16] = "";
-    if ((rc = field_string(c, obj, pre, "material", 0, p->material, sizeof p->material,
-                           &has_mat)) ||
-        (rc = field_number(c, obj, pre, "density_g_cm3", 0, &p->density_g_cm3, &has_dens)) ||
-        (rc = field_string(c, obj, pre, "cut_from", 0, cut, sizeof cut, &has_cut)) ||
-        (rc = field_string(c, obj, pre, "clip", 0, clip, sizeof clip, &has_clip)))
+    if ((rc = tippe_json_string(c, obj, pre, "material", 0, p->material, sizeof p->material,
+                                &has_mat)) ||
+        (rc = tippe_json_number(c, obj, pre, "density_g_cm3", 0, &p->density_g_cm3, &has_dens)) ||
+        (rc = tippe_json_string(c, obj, pre, "cut_from", 0, cut, sizeof cut, &has_cut)) ||
+        (rc = tippe_json_string(c, obj, pre, "clip", 0, clip, sizeof clip, &has_clip)))
         return rc;
     if (p->is_void) {
         const char *bad = has_mat ? "material" : has_dens ? "density_g_cm3"
                         : has_moving ? "moving" : has_protrude ? "may_protrude" : NULL;
         if (bad) {
-            jpath(path, sizeof path, pre, bad);
-            return fail(c, path, "not allowed on a void: a void removes material of the part "
-                                 "named by cut_from and moves with it");
+            tippe_json_path(path, sizeof path, pre, bad);
+            return tippe_json_fail(c, path,
+                                   "not allowed on a void: a void removes material of the part "
+                                   "named by cut_from and moves with it");
         }
         if (!has_cut) {
-            jpath(path, sizeof path, pre, "cut_from");
-            return fail(c, path, "missing: a void must name the part it is cut from");
+            tippe_json_path(path, sizeof path, pre, "cut_from");
+            return tippe_json_fail(c, path, "missing: a void must name the part it is cut from");
         }
         strcpy(p->material, cut); /* resolved to a part index later */
     } else {
         if (has_cut) {
-            jpath(path, sizeof path, pre, "cut_from");
-            return fail(c, path, "only a void (\"void\": true) is cut from a part");
+            tippe_json_path(path, sizeof path, pre, "cut_from");
+            return tippe_json_fail(c, path, "only a void (\"void\": true) is cut from a part");
         }
         if (has_mat == has_dens) {
-            jpath(path, sizeof path, pre, has_mat ? "density_g_cm3" : "material");
-            return fail(c, path, has_mat ? "give either material or density_g_cm3, not both"
-                                         : "missing: give a material (a name in the materials "
-                                           "table) or density_g_cm3");
+            tippe_json_path(path, sizeof path, pre, has_mat ? "density_g_cm3" : "material");
+            return tippe_json_fail(c, path,
+                                   has_mat ? "give either material or density_g_cm3, not both"
+                                           : "missing: give a material (a name in the materials "
+                                             "table) or density_g_cm3");
         }
         if (has_dens && p->density_g_cm3 <= 0) {
-            jpath(path, sizeof path, pre, "density_g_cm3");
-            return fail(c, path, "must be positive, got %g g/cm^3", p->density_g_cm3);
+            tippe_json_path(path, sizeof path, pre, "density_g_cm3");
+            return tippe_json_fail(c, path, "must be positive, got %g g/cm^3", p->density_g_cm3);
         }
         if (has_mat && !p->material[0]) {
-            jpath(path, sizeof path, pre, "material");
-            return fail(c, path, "must not be empty");
+            tippe_json_path(path, sizeof path, pre, "material");
+            return tippe_json_fail(c, path, "must not be empty");
         }
     }
     if (has_clip) {
-        jpath(path, sizeof path, pre, "clip");
+        tippe_json_path(path, sizeof path, pre, "clip");
         if (!strcmp(clip, "sphere"))
             p->clip = 1;
         else if (!strcmp(clip, "cavity"))
             p->clip = 2;
         else
-            return fail(c, path, "must be \"sphere\" or \"cavity\", not '%s'", clip);
+            return tippe_json_fail(c, path, "must be \"sphere\" or \"cavity\", not '%s'", clip);
         if (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL)
-            return fail(c, path, "only a cylinder, tube or torus can be clipped");
+            return tippe_json_fail(c, path, "only a cylinder, tube or torus can be clipped");
         if (p->moving)
-            return fail(c, path, "a moving part cannot be clipped (its shape would change as "
-                                 "it moves)");
+            return tippe_json_fail(c, path,
+                                   "a moving part cannot be clipped (its shape would change as "
+                                   "it moves)");
     }
 
     switch (p->shape) {
@@ -595,14 +353,16 @@ static int parse_part(const ctx *c, const cJSON *obj, int index, part *p)
             (rc = field_length(c, obj, pre, "height_mm", 0, 0, &p->height_mm, &p->has_height)))
             return rc;
         if (!p->has_height && !p->clip) {
-            jpath(path, sizeof path, pre, "height_mm");
-            return fail(c, path, "missing (required unless clip is given: a clipped %s without "
-                                 "a height spans the clip ball)", shape_names[s]);
+            tippe_json_path(path, sizeof path, pre, "height_mm");
+            return tippe_json_fail(c, path,
+                                   "missing (required unless clip is given: a clipped %s without "
+                                   "a height spans the clip ball)",
+                                   shape_names[s]);
         }
         if (p->inner_radius_mm >= p->radius_mm) {
-            jpath(path, sizeof path, pre, "inner_radius_mm");
-            return fail(c, path, "%g mm is not less than radius_mm %g mm", p->inner_radius_mm,
-                        p->radius_mm);
+            tippe_json_path(path, sizeof path, pre, "inner_radius_mm");
+            return tippe_json_fail(c, path, "%g mm is not less than radius_mm %g mm",
+                                   p->inner_radius_mm, p->radius_mm);
         }
         break;
     }
@@ -613,9 +373,11 @@ static int parse_part(const ctx *c, const cJSON *obj, int index, part *p)
             (rc = field_length(c, obj, pre, "axial_semi_mm", 1, 0, &p->axial_semi_mm, NULL)))
             return rc;
         if (p->radial_semi_mm > p->centre_radius_mm) {
-            jpath(path, sizeof path, pre, "radial_semi_mm");
-            return fail(c, path, "%g mm is more than centre_radius_mm %g mm (the ring would "
-                                 "cross the axis)", p->radial_semi_mm, p->centre_radius_mm);
+            tippe_json_path(path, sizeof path, pre, "radial_semi_mm");
+            return tippe_json_fail(c, path,
+                                   "%g mm is more than centre_radius_mm %g mm (the ring would "
+                                   "cross the axis)",
+                                   p->radial_semi_mm, p->centre_radius_mm);
         }
         break;
     default:
@@ -626,7 +388,7 @@ static int parse_part(const ctx *c, const cJSON *obj, int index, part *p)
 
 /* --------------------------------------------------------- materials table */
 
-static int lookup_material(const ctx *c, const cJSON *table, const char *mat_file,
+static int lookup_material(const tippe_json_reader *c, const cJSON *table, const char *mat_file,
                            const char *name, const char *path, double *density)
 {
     const cJSON *m = cJSON_GetObjectItemCaseSensitive(table, name);
@@ -638,7 +400,7 @@ static int lookup_material(const ctx *c, const cJSON *table, const char *mat_fil
             if (w > 0 && (size_t)w < sizeof list - n)
                 n += (size_t)w;
         }
-        return fail(c, path, "unknown material '%s' (%s has: %s)", name, mat_file, list);
+        return tippe_json_fail(c, path, "unknown material '%s' (%s has: %s)", name, mat_file, list);
     }
     *density = cJSON_GetObjectItemCaseSensitive(m, "density_g_cm3")->valuedouble;
     return TIPPE_OK;
@@ -646,47 +408,46 @@ static int lookup_material(const ctx *c, const cJSON *table, const char *mat_fil
 
 static int load_materials(const char *mat_file, cJSON **out, tippe_error *err)
 {
-    char *text = NULL;
-    int rc = read_text(mat_file, &text, err);
-    if (rc)
-        return rc;
+    tippe_json_reader *mc = tippe_json_reader_new(mat_file, err, TIPPE_JSON_WORDS_FIELD, NULL);
+    if (!mc)
+        return TIPPE_ECOMPUTE;
     cJSON *root = NULL;
-    rc = parse_json(mat_file, text, &root, err);
-    free(text);
+    int rc = tippe_json_load(mc, MAX_FILE_MIB, "materials", &root);
     if (rc)
-        return rc;
-    ctx mc = {.file = mat_file, .err = err};
+        goto done;
     if (!cJSON_IsObject(root)) {
-        rc = fail(&mc, NULL, "must be an object mapping material names to "
+        rc = tippe_json_fail(mc, NULL,
+                             "must be an object mapping material names to "
                              "{\"density_g_cm3\": ..., \"source\": ...}");
         goto done;
     }
-    if ((rc = check_duplicates(&mc, root, "")))
+    if ((rc = tippe_json_check_duplicates(mc, root, "")))
         goto done;
     for (const cJSON *m = root->child; m; m = m->next) {
         if (!cJSON_IsObject(m)) {
-            rc = fail(&mc, m->string, "must be an object, not %s", json_kind(m));
+            rc = tippe_json_wrong_type(mc, m->string, "an object", m);
             goto done;
         }
         double dens = 0;
-        if ((rc = check_keys(&mc, m, m->string, "a material", material_keys, NULL)) ||
-            (rc = field_number(&mc, m, m->string, "density_g_cm3", 1, &dens, NULL)) ||
-            (rc = field_string(&mc, m, m->string, "source", 1, NULL, 0, NULL)) ||
-            (rc = field_string(&mc, m, m->string, "notes", 0, NULL, 0, NULL)))
+        if ((rc = tippe_json_check_keys(mc, m, m->string, "a material", material_keys, NULL)) ||
+            (rc = tippe_json_number(mc, m, m->string, "density_g_cm3", 1, &dens, NULL)) ||
+            (rc = tippe_json_string(mc, m, m->string, "source", 1, NULL, 0, NULL)) ||
+            (rc = tippe_json_string(mc, m, m->string, "notes", 0, NULL, 0, NULL)))
             goto done;
         char p[256];
         if (dens <= 0) {
-            jpath(p, sizeof p, m->string, "density_g_cm3");
-            rc = fail(&mc, p, "must be positive, got %g g/cm^3", dens);
+            tippe_json_path(p, sizeof p, m->string, "density_g_cm3");
+            rc = tippe_json_fail(mc, p, "must be positive, got %g g/cm^3", dens);
             goto done;
         }
         if (!cJSON_GetObjectItemCaseSensitive(m, "source")->valuestring[0]) {
-            jpath(p, sizeof p, m->string, "source");
-            rc = fail(&mc, p, "must say where the density comes from");
+            tippe_json_path(p, sizeof p, m->string, "source");
+            rc = tippe_json_fail(mc, p, "must say where the density comes from");
             goto done;
         }
     }
 done:
+    free(mc);
     if (rc)
         cJSON_Delete(root);
     else
@@ -888,7 +649,7 @@ static const char *role_of(const part *p)
 }
 
 /* Everything about where parts are, once the parts are parsed and resolved. */
-static int check_layout(const ctx *c, tippe_design *d)
+static int check_layout(const tippe_json_reader *c, tippe_design *d)
 {
     int nr = 0;
     double *rs = sample_radii(d, &nr);
@@ -909,8 +670,10 @@ static int check_layout(const ctx *c, tippe_design *d)
             surface = 1;
     }
     if (!surface) {
-        rc = fail(c, "parts", "no part forms the sphere's surface: the top needs a fixed ball "
-                              "or shell of radius radius_mm (%g mm) centred at z_mm = 0", R);
+        rc = tippe_json_fail(c, "parts",
+                             "no part forms the sphere's surface: the top needs a fixed ball "
+                             "or shell of radius radius_mm (%g mm) centred at z_mm = 0",
+                             R);
         goto out;
     }
 
@@ -926,9 +689,11 @@ static int check_layout(const ctx *c, tippe_design *d)
                 prim_ivs(q, rs[k], 0, TOL_MM, &b);
                 iv_subtract(&a, &b, &t);
                 if (t.n) {
-                    rc = fail(c, path, "void '%s' reaches outside the part it is cut from ('%s') "
-                                       "at r = %.3f mm, z = %.3f mm: it would remove material "
-                                       "that is not there", p->name, q->name, rs[k], t.lo[0]);
+                    rc = tippe_json_fail(c, path,
+                                         "void '%s' reaches outside the part it is cut from ('%s') "
+                                         "at r = %.3f mm, z = %.3f mm: it would remove material "
+                                         "that is not there",
+                                         p->name, q->name, rs[k], t.lo[0]);
                     break;
                 }
             }
@@ -940,9 +705,10 @@ static int check_layout(const ctx *c, tippe_design *d)
                     prim_ivs(&d->parts[j], rs[k], 0, -TOL_MM, &b);
                     iv_intersect(&a, &b, &t);
                     if (t.n) {
-                        rc = fail(c, path, "voids '%s' and '%s' (parts[%d]) overlap at r = "
-                                           "%.3f mm: the shared volume would be removed twice",
-                                  p->name, d->parts[j].name, j, rs[k]);
+                        rc = tippe_json_fail(c, path,
+                                             "voids '%s' and '%s' (parts[%d]) overlap at r = "
+                                             "%.3f mm: the shared volume would be removed twice",
+                                             p->name, d->parts[j].name, j, rs[k]);
                         break;
                     }
                 }
@@ -965,10 +731,11 @@ static int check_layout(const ctx *c, tippe_design *d)
                     }
             }
             if (worst > TOL_MM) {
-                rc = fail(c, path, "part '%s' sticks out of the sphere (radius %g mm) by %.3f mm "
-                                   "(at r = %.3f mm, z = %.3f mm); set \"may_protrude\": true if "
-                                   "it is meant to, like a setscrew", p->name, R,
-                          worst + TOL_MM, wr, wz);
+                rc = tippe_json_fail(c, path,
+                                     "part '%s' sticks out of the sphere (radius %g mm) by %.3f mm "
+                                     "(at r = %.3f mm, z = %.3f mm); set \"may_protrude\": true if "
+                                     "it is meant to, like a setscrew",
+                                     p->name, R, worst + TOL_MM, wr, wz);
                 break;
             }
         }
@@ -983,11 +750,12 @@ static int check_layout(const ctx *c, tippe_design *d)
                 material_ivs(d, j, rs[k], 0, &b);
                 iv_intersect(&a, &b, &t);
                 if (t.n) {
-                    rc = fail(c, path, "part '%s' overlaps part '%s' (parts[%d]) at r = %.3f mm, "
-                                       "z = %.3f .. %.3f mm%s: parts may touch but not share "
-                                       "volume (cut one with a void, or clip it)", p->name,
-                              q->name, j, rs[k], t.lo[0], t.hi[0],
-                              p->moving ? " relative to Z2" : "");
+                    rc = tippe_json_fail(c, path,
+                                         "part '%s' overlaps part '%s' (parts[%d]) at r = %.3f mm, "
+                                         "z = %.3f .. %.3f mm%s: parts may touch but not share "
+                                         "volume (cut one with a void, or clip it)",
+                                         p->name, q->name, j, rs[k], t.lo[0], t.hi[0],
+                                         p->moving ? " relative to Z2" : "");
                     break;
                 }
             }
@@ -1000,7 +768,8 @@ static int check_layout(const ctx *c, tippe_design *d)
     for (int i = 0; i < d->n_parts; i++)
         n_moving += d->parts[i].moving && !d->parts[i].is_void;
     if (!n_moving) {
-        rc = fail(c, "parts", "no moving part: mark the weight's part(s) with \"moving\": true");
+        rc = tippe_json_fail(c, "parts",
+                             "no moving part: mark the weight's part(s) with \"moving\": true");
         goto out;
     }
 
@@ -1045,14 +814,17 @@ static int check_layout(const ctx *c, tippe_design *d)
                         int s = -1;
                         if (f0 < mid && mid < f1) {
                             if (j < 0)
-                                rc = fail(c, "travel_mm", "at Z2 = %g mm (the middle of the "
-                                                          "travel) moving part '%s' sticks out "
-                                                          "of the sphere", mid, p->name);
+                                rc = tippe_json_fail(c, "travel_mm",
+                                                     "at Z2 = %g mm (the middle of the "
+                                                     "travel) moving part '%s' sticks out "
+                                                     "of the sphere",
+                                                     mid, p->name);
                             else
-                                rc = fail(c, "travel_mm", "at Z2 = %g mm (the middle of the "
-                                                          "travel) moving part '%s' overlaps "
-                                                          "part '%s'", mid, p->name,
-                                          d->parts[j].name);
+                                rc = tippe_json_fail(c, "travel_mm",
+                                                     "at Z2 = %g mm (the middle of the "
+                                                     "travel) moving part '%s' overlaps "
+                                                     "part '%s'",
+                                                     mid, p->name, d->parts[j].name);
                             break;
                         }
                         if (f1 <= mid && f1 > lim[0])
@@ -1076,13 +848,15 @@ static int check_layout(const ctx *c, tippe_design *d)
     d->contact_mm[0] = lim[0];
     d->contact_mm[1] = lim[1];
     if (d->travel_mm[0] < lim[0])
-        rc = fail(c, "travel_mm", "starts at %g mm, below the physical travel %.3f .. %.3f mm "
-                                  "(at Z2 = %.3f mm %s)", d->travel_mm[0], lim[0], lim[1], lim[0],
-                  d->contact_limit[0]);
+        rc = tippe_json_fail(c, "travel_mm",
+                             "starts at %g mm, below the physical travel %.3f .. %.3f mm "
+                             "(at Z2 = %.3f mm %s)",
+                             d->travel_mm[0], lim[0], lim[1], lim[0], d->contact_limit[0]);
     else if (d->travel_mm[1] > lim[1])
-        rc = fail(c, "travel_mm", "ends at %g mm, beyond the physical travel %.3f .. %.3f mm "
-                                  "(at Z2 = %.3f mm %s)", d->travel_mm[1], lim[0], lim[1], lim[1],
-                  d->contact_limit[1]);
+        rc = tippe_json_fail(c, "travel_mm",
+                             "ends at %g mm, beyond the physical travel %.3f .. %.3f mm "
+                             "(at Z2 = %.3f mm %s)",
+                             d->travel_mm[1], lim[0], lim[1], lim[1], d->contact_limit[1]);
 out:
     free(rs);
     return rc;
@@ -1127,15 +901,15 @@ static char *dup_string(const char *s)
     return r;
 }
 
-static int build(ctx *c, cJSON *root, const char *path, tippe_design *d)
+static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d)
 {
     int rc;
     char name[256];
     if (!cJSON_IsObject(root))
-        return fail(c, NULL, "must be a JSON object (a design), not %s", json_kind(root));
-    if ((rc = check_keys(c, root, "", "a design", top_keys, NULL)) ||
-        (rc = field_string(c, root, "", "name", 1, name, sizeof name, NULL)) ||
-        (rc = field_string(c, root, "", "notes", 0, NULL, 0, NULL)) ||
+        return tippe_json_wrong_type(c, NULL, "a JSON object (a design)", root);
+    if ((rc = tippe_json_check_keys(c, root, "", "a design", top_keys, NULL)) ||
+        (rc = tippe_json_string(c, root, "", "name", 1, name, sizeof name, NULL)) ||
+        (rc = tippe_json_string(c, root, "", "notes", 0, NULL, 0, NULL)) ||
         (rc = field_length(c, root, "", "radius_mm", 1, 0, &d->radius_mm, NULL)))
         return rc;
     if (!(d->name = dup_string(name)) || !(d->path = dup_string(path)))
@@ -1143,36 +917,38 @@ static int build(ctx *c, cJSON *root, const char *path, tippe_design *d)
 
     const cJSON *tr = cJSON_GetObjectItemCaseSensitive(root, "travel_mm");
     if (!tr)
-        return fail(c, "travel_mm", "missing (required: [from, to] in mm, the range of Z2)");
+        return tippe_json_fail(c, "travel_mm",
+                               "missing (required: [from, to] in mm, the range of Z2)");
     if (!cJSON_IsArray(tr) || cJSON_GetArraySize(tr) != 2)
-        return fail(c, "travel_mm", "must be an array [from, to] of two numbers (mm)");
+        return tippe_json_fail(c, "travel_mm", "must be an array [from, to] of two numbers (mm)");
     for (int k = 0; k < 2; k++) {
         const cJSON *v = cJSON_GetArrayItem(tr, k);
         char p[32];
         snprintf(p, sizeof p, "travel_mm[%d]", k);
         if (!cJSON_IsNumber(v) || !isfinite(v->valuedouble))
-            return fail(c, p, "must be a finite number (mm), not %s", json_kind(v));
+            return tippe_json_wrong_type(c, p, "a finite number (mm)", v);
         d->travel_mm[k] = v->valuedouble;
     }
     if (!(d->travel_mm[0] < d->travel_mm[1]))
-        return fail(c, "travel_mm", "from (%g mm) must be less than to (%g mm)", d->travel_mm[0],
-                    d->travel_mm[1]);
+        return tippe_json_fail(c, "travel_mm", "from (%g mm) must be less than to (%g mm)",
+                               d->travel_mm[0], d->travel_mm[1]);
 
     char mat_rel[512] = "materials.json";
     int has_mat_file = 0;
-    if ((rc = field_string(c, root, "", "materials", 0, mat_rel, sizeof mat_rel, &has_mat_file)))
+    if ((rc = tippe_json_string(c, root, "", "materials", 0, mat_rel, sizeof mat_rel,
+                                &has_mat_file)))
         return rc;
     if (has_mat_file && !mat_rel[0])
-        return fail(c, "materials", "must be a file name (relative to the design file)");
+        return tippe_json_fail(c, "materials", "must be a file name (relative to the design file)");
 
     const cJSON *parts = cJSON_GetObjectItemCaseSensitive(root, "parts");
     if (!parts)
-        return fail(c, "parts", "missing (required: an array of parts)");
+        return tippe_json_fail(c, "parts", "missing (required: an array of parts)");
     if (!cJSON_IsArray(parts))
-        return fail(c, "parts", "must be an array of parts, not %s", json_kind(parts));
+        return tippe_json_wrong_type(c, "parts", "an array of parts", parts);
     int n = cJSON_GetArraySize(parts);
     if (n < 1 || n > MAX_PARTS)
-        return fail(c, "parts", "must hold 1 to %d parts, not %d", MAX_PARTS, n);
+        return tippe_json_fail(c, "parts", "must hold 1 to %d parts, not %d", MAX_PARTS, n);
     if (!(d->parts = calloc((size_t)n, sizeof *d->parts)))
         return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
     d->n_parts = n;
@@ -1186,8 +962,9 @@ static int build(ctx *c, cJSON *root, const char *path, tippe_design *d)
         for (int j = 0; j < i; j++)
             if (!strcmp(d->parts[i].name, d->parts[j].name)) {
                 snprintf(pth, sizeof pth, "parts[%d].name", i);
-                return fail(c, pth, "'%s' is already the name of parts[%d]: names must be unique",
-                            d->parts[i].name, j);
+                return tippe_json_fail(
+                    c, pth, "'%s' is already the name of parts[%d]: names must be unique",
+                    d->parts[i].name, j);
             }
 
     /* Materials: only read the table when some part names a material. */
@@ -1206,7 +983,7 @@ static int build(ctx *c, cJSON *root, const char *path, tippe_design *d)
             if (has_mat_file) {
                 char inner[sizeof c->err->msg];
                 snprintf(inner, sizeof inner, "%s", c->err->msg);
-                return fail(c, "materials", "%s", inner);
+                return tippe_json_fail(c, "materials", "%s", inner);
             }
             return rc;
         }
@@ -1236,8 +1013,8 @@ static int build(ctx *c, cJSON *root, const char *path, tippe_design *d)
             p->radius_mm = d->radius_mm; /* default: the sphere itself */
         if (p->shape == SHAPE_SHELL && p->thickness_mm >= p->radius_mm) {
             snprintf(pth, sizeof pth, "parts[%d].thickness_mm", i);
-            return fail(c, pth, "%g mm is not less than the shell's radius %g mm", p->thickness_mm,
-                        p->radius_mm);
+            return tippe_json_fail(c, pth, "%g mm is not less than the shell's radius %g mm",
+                                   p->thickness_mm, p->radius_mm);
         }
         if (p->is_void) {
             int j = 0;
@@ -1245,9 +1022,10 @@ static int build(ctx *c, cJSON *root, const char *path, tippe_design *d)
                 j++;
             snprintf(pth, sizeof pth, "parts[%d].cut_from", i);
             if (j == n)
-                return fail(c, pth, "no part named '%s'", p->material);
+                return tippe_json_fail(c, pth, "no part named '%s'", p->material);
             if (d->parts[j].is_void)
-                return fail(c, pth, "'%s' is itself a void: cut from the solid part", p->material);
+                return tippe_json_fail(c, pth, "'%s' is itself a void: cut from the solid part",
+                                       p->material);
             p->parent = j;
             p->moving = d->parts[j].moving;
             p->density_g_cm3 = d->parts[j].density_g_cm3;
@@ -1255,19 +1033,23 @@ static int build(ctx *c, cJSON *root, const char *path, tippe_design *d)
         }
         if (p->clip && p->moving) {
             snprintf(pth, sizeof pth, "parts[%d].clip", i);
-            return fail(c, pth, "a void cut from a moving part cannot be clipped (its shape "
-                                "would change as it moves)");
+            return tippe_json_fail(c, pth,
+                                   "a void cut from a moving part cannot be clipped (its shape "
+                                   "would change as it moves)");
         }
         if (p->clip == 1) {
             p->clip_radius_mm = d->radius_mm;
         } else if (p->clip == 2) {
             snprintf(pth, sizeof pth, "parts[%d].clip", i);
             if (n_shell != 1)
-                return fail(c, pth, "\"cavity\" needs exactly one fixed shell part, the design "
-                                    "has %d", n_shell);
+                return tippe_json_fail(c, pth,
+                                       "\"cavity\" needs exactly one fixed shell part, the design "
+                                       "has %d",
+                                       n_shell);
             if (d->parts[shell].z_mm != 0)
-                return fail(c, pth, "\"cavity\" needs the shell '%s' centred at z_mm = 0",
-                            d->parts[shell].name);
+                return tippe_json_fail(c, pth,
+                                       "\"cavity\" needs the shell '%s' centred at z_mm = 0",
+                                       d->parts[shell].name);
             p->clip_radius_mm = d->parts[shell].radius_mm - d->parts[shell].thickness_mm;
         }
         if ((p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE) && !p->has_height)
@@ -1304,23 +1086,18 @@ int tippe_design_load(const char *path, const char *const *overrides, int n_over
     *out = NULL;
     if (!path)
         return tippe_error_set(err, TIPPE_EINPUT, "no design file given");
-    ctx *c = calloc(1, sizeof *c);
+    tippe_json_reader *c =
+        tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, "set by --set ");
     tippe_design *d = calloc(1, sizeof *d);
     if (!c || !d) {
         free(c);
         free(d);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
     }
-    c->file = path;
-    c->err = err;
-    char *text = NULL;
     cJSON *root = NULL;
-    int rc = read_text(path, &text, err);
+    int rc = tippe_json_load(c, MAX_FILE_MIB, "design", &root);
     if (!rc)
-        rc = parse_json(path, text, &root, err);
-    free(text);
-    if (!rc)
-        rc = check_duplicates(c, root, "");
+        rc = tippe_json_check_duplicates(c, root, "");
     for (int i = 0; !rc && i < n_overrides; i++)
         rc = apply_override(c, root, overrides[i]);
     if (!rc)

@@ -3,168 +3,19 @@
 #include "tippe/scenario.h"
 
 #include "tippe/design.h"
+#include "tippe/json.h"
 
 #include <cjson/cJSON.h>
-#include <ctype.h>
-#include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_SCENARIO_BYTES (1 << 20)
+#define MAX_SCENARIO_MIB 1
 #define MAX_OVERRIDES 64
 #define MAX_DESIGN_SETS 64
-
-typedef struct {
-    const char *file;
-    tippe_error *err;
-    int n_over;
-    char over_path[MAX_OVERRIDES][128]; /* the JSON path each override set */
-    const char *over_text[MAX_OVERRIDES];
-} ctx;
-
-/* An error at a JSON path; if a command-line override set that path (or a
- * parent of it), the message says so, since the file is then not to blame. */
-__attribute__((format(printf, 3, 4)))
-static int fail(const ctx *c, const char *path, const char *fmt, ...)
-{
-    char what[700];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    const char *by = NULL;
-    for (int i = 0; i < c->n_over && path; i++) {
-        size_t n = strlen(c->over_path[i]);
-        if (!strncmp(path, c->over_path[i], n) && (path[n] == '\0' || path[n] == '.'))
-            by = c->over_text[i];
-    }
-    if (by)
-        return tippe_error_set(c->err, TIPPE_EINPUT, "%s: %s: %s (set on the command line: %s)",
-                               c->file, path, what, by);
-    if (path && path[0])
-        return tippe_error_set(c->err, TIPPE_EINPUT, "%s: %s: %s", c->file, path, what);
-    return tippe_error_set(c->err, TIPPE_EINPUT, "%s: %s", c->file, what);
-}
-
-static const char *kind(const cJSON *it)
-{
-    if (!it) return "missing";
-    if (cJSON_IsString(it)) return "a string";
-    if (cJSON_IsNumber(it)) return "a number";
-    if (cJSON_IsBool(it)) return "true/false";
-    if (cJSON_IsNull(it)) return "null";
-    if (cJSON_IsArray(it)) return "an array";
-    if (cJSON_IsObject(it)) return "an object";
-    return "an invalid value";
-}
-
-static void join(char *buf, size_t cap, const char *prefix, const char *key)
-{
-    if (prefix && prefix[0])
-        snprintf(buf, cap, "%s.%s", prefix, key);
-    else
-        snprintf(buf, cap, "%s", key);
-}
-
-static int read_text(const char *path, char **out, tippe_error *err)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot open: %s", path, strerror(errno));
-    char *buf = malloc(MAX_SCENARIO_BYTES + 1);
-    if (!buf) {
-        fclose(f);
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
-    }
-    size_t n = fread(buf, 1, MAX_SCENARIO_BYTES + 1, f);
-    int bad = ferror(f);
-    fclose(f);
-    if (bad || n > MAX_SCENARIO_BYTES || memchr(buf, '\0', n)) {
-        free(buf);
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: %s", path,
-                               bad ? "read error"
-                               : n > MAX_SCENARIO_BYTES ? "larger than 1 MiB: not a scenario file"
-                                                        : "contains a NUL byte: not JSON");
-    }
-    buf[n] = '\0';
-    *out = buf;
-    return TIPPE_OK;
-}
-
-/* The error position comes from cJSON_ParseWithOpts: cJSON_GetErrorPtr is
- * global state and not thread-safe. */
-static int parse(const char *path, const char *text, cJSON **out, tippe_error *err)
-{
-    const char *end = NULL;
-    *out = cJSON_ParseWithOpts(text, &end, 1);
-    if (*out)
-        return TIPPE_OK;
-    if (!end || end < text)
-        end = text;
-    int line = 1, col = 1;
-    for (const char *p = text; p < end && *p; p++) {
-        if (*p == '\n') {
-            line++;
-            col = 1;
-        } else {
-            col++;
-        }
-    }
-    return tippe_error_set(err, TIPPE_EINPUT, "%s:%d:%d: not valid JSON%s", path, line, col,
-                           *end ? "" : " (the text ends too early)");
-}
-
-/* cJSON keeps duplicate keys but lookups see only the first: refuse them. */
-static int check_duplicates(const ctx *c, const cJSON *node, const char *path)
-{
-    char sub[256];
-    int i = 0;
-    for (const cJSON *ch = node->child; ch; ch = ch->next, i++) {
-        if (cJSON_IsObject(node)) {
-            join(sub, sizeof sub, path, ch->string);
-            for (const cJSON *prev = node->child; prev != ch; prev = prev->next)
-                if (!strcmp(prev->string, ch->string))
-                    return fail(c, sub, "duplicate key (a key may appear once per object)");
-        } else {
-            snprintf(sub, sizeof sub, "%s[%d]", path, i);
-        }
-        if (ch->child) {
-            int rc = check_duplicates(c, ch, sub);
-            if (rc)
-                return rc;
-        }
-    }
-    return TIPPE_OK;
-}
-
-static int in_list(const char *key, const char *const *list)
-{
-    for (; *list; list++)
-        if (!strcmp(key, *list))
-            return 1;
-    return 0;
-}
-
-static int check_keys(const ctx *c, const cJSON *obj, const char *path,
-                      const char *const *allowed)
-{
-    for (const cJSON *ch = obj->child; ch; ch = ch->next)
-        if (!in_list(ch->string, allowed)) {
-            char list[256] = "", sub[256];
-            size_t n = 0;
-            for (const char *const *a = allowed; *a; a++) {
-                int w = snprintf(list + n, sizeof list - n, "%s%s", n ? ", " : "", *a);
-                if (w > 0 && (size_t)w < sizeof list - n)
-                    n += (size_t)w;
-            }
-            join(sub, sizeof sub, path, ch->string);
-            return fail(c, sub, "unknown key (allowed here: %s; keys are case-sensitive)", list);
-        }
-    return TIPPE_OK;
-}
+/* The longest FIELD an override may name. */
+#define MAX_FIELD_LEN 127
 
 static const char *const top_level_keys[] = {"name", "notes", "top", "g", "mu",
                                               "initial", "t_end", "accuracy", NULL};
@@ -176,31 +27,9 @@ static const char *const initial_keys[] = {"theta", "theta_dot", "phi_dot", "spi
                                            NULL};
 static const char *const accuracy_keys[] = {"stepper", "rtol", NULL};
 
-/* Reads a finite number at obj.key; a missing key gives def, or an error if
- * required. */
-static int number(const ctx *c, const cJSON *obj, const char *path, const char *key,
-                  int required, double def, double *out)
-{
-    char sub[256];
-    join(sub, sizeof sub, path, key);
-    const cJSON *it = cJSON_GetObjectItemCaseSensitive(obj, key);
-    if (!it) {
-        if (required)
-            return fail(c, sub, "missing (a number is required)");
-        *out = def;
-        return TIPPE_OK;
-    }
-    if (!cJSON_IsNumber(it))
-        return fail(c, sub, "expected a number, got %s", kind(it));
-    if (!isfinite(it->valuedouble))
-        return fail(c, sub, "must be a finite number");
-    *out = it->valuedouble;
-    return TIPPE_OK;
-}
-
 /* ---- overrides ---- */
 
-static int apply_override(ctx *c, cJSON *root, const char *text, int index)
+static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
 {
     const char *eq = strchr(text, '=');
     if (!eq || eq == text)
@@ -208,15 +37,14 @@ static int apply_override(ctx *c, cJSON *root, const char *text, int index)
                                "%s: override '%s': expected FIELD=VALUE, e.g. initial.spin=3",
                                c->file, text);
     size_t flen = (size_t)(eq - text);
-    if (flen >= sizeof c->over_path[0])
+    if (flen > MAX_FIELD_LEN)
         return tippe_error_set(c->err, TIPPE_EINPUT, "%s: override '%s': field name too long",
                                c->file, text);
-    char field[128];
+    char field[MAX_FIELD_LEN + 1];
     memcpy(field, text, flen);
     field[flen] = '\0';
-    snprintf(c->over_path[index], sizeof c->over_path[index], "%s", field);
-    c->over_text[index] = text;
-    c->n_over = index + 1;
+    /* Noted before it is applied: a failure applying it is its fault too. */
+    tippe_json_note_set(c, field, text);
 
     /* Walk to the parent object, creating objects that are missing. A preset
      * name under "accuracy" is expanded so that accuracy.rtol can refine it. */
@@ -228,8 +56,9 @@ static int apply_override(ctx *c, cJSON *root, const char *text, int index)
         if (next && cJSON_IsString(next) && obj == root && !strcmp(key, "accuracy")) {
             tippe_dynamics_accuracy a;
             if (tippe_dynamics_accuracy_preset(next->valuestring, &a, NULL))
-                return fail(c, "accuracy", "unknown preset '%s' (fast, balanced, precise)",
-                            next->valuestring);
+                return tippe_json_fail(c, "accuracy",
+                                       "unknown preset '%s' (fast, balanced, precise)",
+                                       next->valuestring);
             cJSON *o = cJSON_CreateObject();
             if (!o || !cJSON_AddStringToObject(o, "stepper", a.stepper) ||
                 !cJSON_AddNumberToObject(o, "rtol", a.rtol)) {
@@ -247,8 +76,8 @@ static int apply_override(ctx *c, cJSON *root, const char *text, int index)
         if (!cJSON_IsObject(next)) {
             *dot = '.';
             return tippe_error_set(c->err, TIPPE_EINPUT,
-                                   "%s: override '%s': '%.*s' is %s, not an object", c->file,
-                                   text, (int)(dot - field), field, kind(next));
+                                   "%s: override '%s': '%.*s' is %s, not an object", c->file, text,
+                                   (int)(dot - field), field, tippe_json_kind(next));
         }
         obj = next;
         key = dot + 1;
@@ -263,11 +92,7 @@ static int apply_override(ctx *c, cJSON *root, const char *text, int index)
         item = cJSON_CreateString(value); /* not JSON: a word such as steady or precise */
     if (!item)
         return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
-    if (cJSON_GetObjectItemCaseSensitive(obj, key))
-        cJSON_ReplaceItemInObjectCaseSensitive(obj, key, item);
-    else
-        cJSON_AddItemToObject(obj, key, item);
-    return TIPPE_OK;
+    return tippe_json_put(c, obj, key, item);
 }
 
 /* ---- the parts of a scenario ---- */
@@ -283,14 +108,15 @@ static void dirname_of(const char *path, char *dir, size_t cap)
         snprintf(dir, cap, "%.*s", (int)(slash - path), path);
 }
 
-static int read_top(ctx *c, const cJSON *top, tippe_scenario *s)
+static int read_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s)
 {
     if (!top)
-        return fail(c, "top", "missing: give {\"m\", \"R\", \"eps\", \"A\", \"C\"} in SI units "
-                              "or {\"design\": FILE, \"z2_mm\": MM}");
+        return tippe_json_fail(c, "top",
+                               "missing: give {\"m\", \"R\", \"eps\", \"A\", \"C\"} in SI units "
+                               "or {\"design\": FILE, \"z2_mm\": MM}");
     if (!cJSON_IsObject(top))
-        return fail(c, "top", "expected an object, got %s", kind(top));
-    int rc = check_keys(c, top, "top", top_all_keys);
+        return tippe_json_wrong_type(c, "top", "an object", top);
+    int rc = tippe_json_check_keys(c, top, "top", NULL, top_all_keys, NULL);
     if (rc)
         return rc;
     const cJSON *design = cJSON_GetObjectItemCaseSensitive(top, "design");
@@ -298,43 +124,46 @@ static int read_top(ctx *c, const cJSON *top, tippe_scenario *s)
     for (const char *const *k = top_explicit_keys; *k; k++)
         any_explicit |= cJSON_GetObjectItemCaseSensitive(top, *k) != NULL;
     if (design && any_explicit)
-        return fail(c, "top", "give either a design (design, z2_mm) or the explicit top "
-                              "(m, R, eps, A, C), not both");
+        return tippe_json_fail(c, "top",
+                               "give either a design (design, z2_mm) or the explicit top "
+                               "(m, R, eps, A, C), not both");
     tippe_top *t = &s->model.top;
     if (!design) {
-        if ((rc = check_keys(c, top, "top", top_explicit_keys)))
+        if ((rc = tippe_json_check_keys(c, top, "top", NULL, top_explicit_keys, NULL)))
             return rc;
-        if ((rc = number(c, top, "top", "m", 1, 0, &t->m)) ||
-            (rc = number(c, top, "top", "R", 1, 0, &t->R)) ||
-            (rc = number(c, top, "top", "eps", 1, 0, &t->eps)) ||
-            (rc = number(c, top, "top", "A", 1, 0, &t->A)) ||
-            (rc = number(c, top, "top", "C", 1, 0, &t->C)))
+        if ((rc = tippe_json_number(c, top, "top", "m", 1, &t->m, NULL)) ||
+            (rc = tippe_json_number(c, top, "top", "R", 1, &t->R, NULL)) ||
+            (rc = tippe_json_number(c, top, "top", "eps", 1, &t->eps, NULL)) ||
+            (rc = tippe_json_number(c, top, "top", "A", 1, &t->A, NULL)) ||
+            (rc = tippe_json_number(c, top, "top", "C", 1, &t->C, NULL)))
             return rc;
         if (!(t->m > 0))
-            return fail(c, "top.m", "mass must be > 0 kg, got %g", t->m);
+            return tippe_json_fail(c, "top.m", "mass must be > 0 kg, got %g", t->m);
         if (!(t->R > 0))
-            return fail(c, "top.R", "radius must be > 0 m, got %g", t->R);
+            return tippe_json_fail(c, "top.R", "radius must be > 0 m, got %g", t->R);
         if (!(t->eps >= 0 && t->eps < t->R))
-            return fail(c, "top.eps", "must satisfy 0 <= eps < R = %g m, got %g", t->R, t->eps);
+            return tippe_json_fail(c, "top.eps", "must satisfy 0 <= eps < R = %g m, got %g", t->R,
+                                   t->eps);
         if (!(t->A > 0))
-            return fail(c, "top.A", "must be > 0 kg m^2, got %g", t->A);
+            return tippe_json_fail(c, "top.A", "must be > 0 kg m^2, got %g", t->A);
         if (!(t->C > 0))
-            return fail(c, "top.C", "must be > 0 kg m^2, got %g", t->C);
+            return tippe_json_fail(c, "top.C", "must be > 0 kg m^2, got %g", t->C);
         /* A rigid body of revolution has A >= C/2 about its centre of mass
          * (A = int (r^2/2 + z^2) dm, C = int r^2 dm). */
         if (t->A < 0.5 * t->C * (1 - 1e-12))
-            return fail(c, "top.A", "A = %g kg m^2 < C/2 = %g: no rigid body has these moments",
-                        t->A, 0.5 * t->C);
+            return tippe_json_fail(c, "top.A",
+                                   "A = %g kg m^2 < C/2 = %g: no rigid body has these moments",
+                                   t->A, 0.5 * t->C);
         t->com_side = t->eps > 0 ? -1 : 0;
         s->design_path[0] = '\0';
         s->z2_mm = NAN;
         return TIPPE_OK;
     }
-    if ((rc = check_keys(c, top, "top", top_design_keys)))
+    if ((rc = tippe_json_check_keys(c, top, "top", NULL, top_design_keys, NULL)))
         return rc;
     if (!cJSON_IsString(design) || !design->valuestring[0])
-        return fail(c, "top.design", "expected a file name, got %s", kind(design));
-    if ((rc = number(c, top, "top", "z2_mm", 1, 0, &s->z2_mm)))
+        return tippe_json_wrong_type(c, "top.design", "a file name", design);
+    if ((rc = tippe_json_number(c, top, "top", "z2_mm", 1, &s->z2_mm, NULL)))
         return rc;
     if (design->valuestring[0] == '/') {
         snprintf(s->design_path, sizeof s->design_path, "%s", design->valuestring);
@@ -343,23 +172,22 @@ static int read_top(ctx *c, const cJSON *top, tippe_scenario *s)
         dirname_of(c->file, dir, sizeof dir);
         if (snprintf(s->design_path, sizeof s->design_path, "%s/%s", dir, design->valuestring) >=
             (int)sizeof s->design_path)
-            return fail(c, "top.design", "path too long");
+            return tippe_json_fail(c, "top.design", "path too long");
     }
     const char *sets[MAX_DESIGN_SETS];
     int n_sets = 0;
     const cJSON *set = cJSON_GetObjectItemCaseSensitive(top, "set");
     if (set) {
         if (!cJSON_IsArray(set))
-            return fail(c, "top.set", "expected an array of \"FIELD=VALUE\" strings, got %s",
-                        kind(set));
+            return tippe_json_wrong_type(c, "top.set", "an array of \"FIELD=VALUE\" strings", set);
         int i = 0;
         for (const cJSON *it = set->child; it; it = it->next, i++) {
             char sub[64];
             snprintf(sub, sizeof sub, "top.set[%d]", i);
             if (!cJSON_IsString(it))
-                return fail(c, sub, "expected a \"FIELD=VALUE\" string, got %s", kind(it));
+                return tippe_json_wrong_type(c, sub, "a \"FIELD=VALUE\" string", it);
             if (n_sets == MAX_DESIGN_SETS)
-                return fail(c, "top.set", "more than %d overrides", MAX_DESIGN_SETS);
+                return tippe_json_fail(c, "top.set", "more than %d overrides", MAX_DESIGN_SETS);
             sets[n_sets++] = it->valuestring;
         }
     }
@@ -367,17 +195,17 @@ static int read_top(ctx *c, const cJSON *top, tippe_scenario *s)
     tippe_error derr;
     rc = tippe_design_load(s->design_path, sets, n_sets, &d, &derr);
     if (rc)
-        return rc == TIPPE_EINPUT ? fail(c, "top.design", "%s", derr.msg)
+        return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.design", "%s", derr.msg)
                                   : tippe_error_set(c->err, rc, "%s", derr.msg);
     rc = tippe_design_top(d, s->z2_mm, t, &derr);
     tippe_design_free(d);
     if (rc)
-        return rc == TIPPE_EINPUT ? fail(c, "top.z2_mm", "%s", derr.msg)
+        return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.z2_mm", "%s", derr.msg)
                                   : tippe_error_set(c->err, rc, "%s", derr.msg);
     return TIPPE_OK;
 }
 
-static int read_accuracy(ctx *c, const cJSON *acc, tippe_scenario *s)
+static int read_accuracy(tippe_json_reader *c, const cJSON *acc, tippe_scenario *s)
 {
     if (!acc) {
         tippe_dynamics_accuracy_preset("balanced", &s->accuracy, NULL);
@@ -386,62 +214,68 @@ static int read_accuracy(ctx *c, const cJSON *acc, tippe_scenario *s)
     }
     if (cJSON_IsString(acc)) {
         if (tippe_dynamics_accuracy_preset(acc->valuestring, &s->accuracy, NULL))
-            return fail(c, "accuracy", "unknown preset '%s' (fast, balanced, precise, or "
-                                       "{\"stepper\": NAME, \"rtol\": NUMBER})",
-                        acc->valuestring);
+            return tippe_json_fail(c, "accuracy",
+                                   "unknown preset '%s' (fast, balanced, precise, or "
+                                   "{\"stepper\": NAME, \"rtol\": NUMBER})",
+                                   acc->valuestring);
         snprintf(s->accuracy_name, sizeof s->accuracy_name, "%s", acc->valuestring);
         return TIPPE_OK;
     }
     if (!cJSON_IsObject(acc))
-        return fail(c, "accuracy", "expected a preset name or an object, got %s", kind(acc));
-    int rc = check_keys(c, acc, "accuracy", accuracy_keys);
+        return tippe_json_wrong_type(c, "accuracy", "a preset name or an object", acc);
+    int rc = tippe_json_check_keys(c, acc, "accuracy", NULL, accuracy_keys, NULL);
     if (rc)
         return rc;
     const cJSON *st = cJSON_GetObjectItemCaseSensitive(acc, "stepper");
     if (!cJSON_IsString(st))
-        return fail(c, "accuracy.stepper", "expected a stepper name, got %s", kind(st));
+        return tippe_json_wrong_type(c, "accuracy.stepper", "a stepper name", st);
     if (!tippe_dynamics_stepper_known(st->valuestring))
-        return fail(c, "accuracy.stepper",
-                    "unknown stepper '%s' (rk2, rk4, rkf45, rkck, rk8pd, rk1imp, rk2imp, "
-                    "rk4imp, bsimp, msadams, msbdf)",
-                    st->valuestring);
+        return tippe_json_fail(
+            c, "accuracy.stepper",
+            "unknown stepper '%s' (rk2, rk4, rkf45, rkck, rk8pd, rk1imp, rk2imp, "
+            "rk4imp, bsimp, msadams, msbdf)",
+            st->valuestring);
     snprintf(s->accuracy.stepper, sizeof s->accuracy.stepper, "%s", st->valuestring);
-    if ((rc = number(c, acc, "accuracy", "rtol", 1, 0, &s->accuracy.rtol)))
+    if ((rc = tippe_json_number(c, acc, "accuracy", "rtol", 1, &s->accuracy.rtol, NULL)))
         return rc;
     if (!(s->accuracy.rtol >= 1e-14 && s->accuracy.rtol <= 1e-2))
-        return fail(c, "accuracy.rtol", "must be in [1e-14, 1e-2], got %g", s->accuracy.rtol);
+        return tippe_json_fail(c, "accuracy.rtol", "must be in [1e-14, 1e-2], got %g",
+                               s->accuracy.rtol);
     snprintf(s->accuracy_name, sizeof s->accuracy_name, "custom");
     return TIPPE_OK;
 }
 
-static int read_initial(ctx *c, const cJSON *ini, tippe_scenario *s)
+static int read_initial(tippe_json_reader *c, const cJSON *ini, tippe_scenario *s)
 {
     if (!ini)
-        return fail(c, "initial", "missing: give at least {\"theta\": RAD, \"spin\": RAD_S}");
+        return tippe_json_fail(c, "initial",
+                               "missing: give at least {\"theta\": RAD, \"spin\": RAD_S}");
     if (!cJSON_IsObject(ini))
-        return fail(c, "initial", "expected an object, got %s", kind(ini));
-    int rc = check_keys(c, ini, "initial", initial_keys);
+        return tippe_json_wrong_type(c, "initial", "an object", ini);
+    int rc = tippe_json_check_keys(c, ini, "initial", NULL, initial_keys, NULL);
     if (rc)
         return rc;
     tippe_dynamics_initial *ic = &s->initial;
-    if ((rc = number(c, ini, "initial", "theta", 1, 0, &ic->theta)) ||
-        (rc = number(c, ini, "initial", "theta_dot", 0, 0, &ic->theta_dot)) ||
-        (rc = number(c, ini, "initial", "spin", 1, 0, &ic->spin)) ||
-        (rc = number(c, ini, "initial", "U", 0, 0, &ic->U)) ||
-        (rc = number(c, ini, "initial", "V", 0, 0, &ic->V)))
+    if ((rc = tippe_json_number(c, ini, "initial", "theta", 1, &ic->theta, NULL)) ||
+        (rc = tippe_json_number(c, ini, "initial", "theta_dot", 0, &ic->theta_dot, NULL)) ||
+        (rc = tippe_json_number(c, ini, "initial", "spin", 1, &ic->spin, NULL)) ||
+        (rc = tippe_json_number(c, ini, "initial", "U", 0, &ic->U, NULL)) ||
+        (rc = tippe_json_number(c, ini, "initial", "V", 0, &ic->V, NULL)))
         return rc;
     if (!(ic->theta >= 0 && ic->theta <= M_PI))
-        return fail(c, "initial.theta", "must be in [0, pi] rad, got %g", ic->theta);
+        return tippe_json_fail(c, "initial.theta", "must be in [0, pi] rad, got %g", ic->theta);
     const cJSON *pd = cJSON_GetObjectItemCaseSensitive(ini, "phi_dot");
     if (!pd || cJSON_IsNumber(pd)) {
-        if ((rc = number(c, ini, "initial", "phi_dot", 0, 0, &ic->phi_dot)))
+        if ((rc = tippe_json_number(c, ini, "initial", "phi_dot", 0, &ic->phi_dot, NULL)))
             return rc;
         s->phi_dot_rule = TIPPE_PHI_DOT_GIVEN;
         return TIPPE_OK;
     }
     if (!cJSON_IsString(pd))
-        return fail(c, "initial.phi_dot", "expected a number (rad/s) or steady, s1, s2, s3; "
-                                          "got %s", kind(pd));
+        return tippe_json_fail(c, "initial.phi_dot",
+                               "expected a number (rad/s) or steady, s1, s2, s3; "
+                               "got %s",
+                               tippe_json_kind(pd));
     static const struct {
         const char *name;
         tippe_precession_rule rule;
@@ -452,13 +286,15 @@ static int read_initial(ctx *c, const cJSON *ini, tippe_scenario *s)
         if (!strcmp(pd->valuestring, rules[i].name))
             found = i;
     if (found < 0)
-        return fail(c, "initial.phi_dot", "unknown rule '%s' (a number in rad/s, or steady, "
-                                          "s1, s2, s3)", pd->valuestring);
+        return tippe_json_fail(c, "initial.phi_dot",
+                               "unknown rule '%s' (a number in rad/s, or steady, "
+                               "s1, s2, s3)",
+                               pd->valuestring);
     s->phi_dot_rule = (int)rules[found].rule;
     tippe_error e;
     if (tippe_dynamics_precession(&s->model, ic->theta, ic->spin, rules[found].rule,
                                   &ic->phi_dot, &e))
-        return fail(c, "initial.phi_dot", "%s", e.msg);
+        return tippe_json_fail(c, "initial.phi_dot", "%s", e.msg);
     return TIPPE_OK;
 }
 
@@ -482,31 +318,29 @@ int tippe_scenario_load(const char *path, const char *const *overrides, int n_ov
     if (n_overrides > MAX_OVERRIDES)
         return tippe_error_set(err, TIPPE_EINPUT, "more than %d overrides", MAX_OVERRIDES);
     snprintf(out->path, sizeof out->path, "%s", path);
-    ctx c = {.file = path, .err = err};
-    char *text = NULL;
-    int rc = read_text(path, &text, err);
-    if (rc)
-        return rc;
+    tippe_json_reader *c =
+        tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_KEY, "set on the command line: ");
+    if (!c)
+        return TIPPE_ECOMPUTE;
     cJSON *root = NULL;
-    rc = parse(path, text, &root, err);
-    free(text);
+    int rc = tippe_json_load(c, MAX_SCENARIO_MIB, "scenario", &root);
     if (rc)
-        return rc;
+        goto done;
     if (!cJSON_IsObject(root)) {
-        rc = fail(&c, "", "expected a JSON object at the top, got %s", kind(root));
+        rc = tippe_json_wrong_type(c, "", "a JSON object at the top", root);
         goto done;
     }
-    if ((rc = check_duplicates(&c, root, "")))
+    if ((rc = tippe_json_check_duplicates(c, root, "")))
         goto done;
     for (int i = 0; i < n_overrides; i++)
-        if ((rc = apply_override(&c, root, overrides[i], i)))
+        if ((rc = apply_override(c, root, overrides[i])))
             goto done;
-    if ((rc = check_keys(&c, root, "", top_level_keys)))
+    if ((rc = tippe_json_check_keys(c, root, "", NULL, top_level_keys, NULL)))
         goto done;
 
     const cJSON *name = cJSON_GetObjectItemCaseSensitive(root, "name");
     if (name && !cJSON_IsString(name)) {
-        rc = fail(&c, "name", "expected a string, got %s", kind(name));
+        rc = tippe_json_wrong_type(c, "name", "a string", name);
         goto done;
     }
     snprintf(out->name, sizeof out->name, "%s", name ? name->valuestring : path);
@@ -523,33 +357,36 @@ int tippe_scenario_load(const char *path, const char *const *overrides, int n_ov
     }
     const cJSON *notes = cJSON_GetObjectItemCaseSensitive(root, "notes");
     if (notes && !cJSON_IsString(notes)) {
-        rc = fail(&c, "notes", "expected a string, got %s", kind(notes));
+        rc = tippe_json_wrong_type(c, "notes", "a string", notes);
         goto done;
     }
-    if ((rc = read_top(&c, cJSON_GetObjectItemCaseSensitive(root, "top"), out)))
+    if ((rc = read_top(c, cJSON_GetObjectItemCaseSensitive(root, "top"), out)))
         goto done;
-    if ((rc = number(&c, root, "", "g", 0, TIPPE_DEFAULT_G_M_S2, &out->model.g)))
+    out->model.g = TIPPE_DEFAULT_G_M_S2;
+    if ((rc = tippe_json_number(c, root, "", "g", 0, &out->model.g, NULL)))
         goto done;
     if (!(out->model.g > 0)) {
-        rc = fail(&c, "g", "must be > 0 m/s^2, got %g", out->model.g);
+        rc = tippe_json_fail(c, "g", "must be > 0 m/s^2, got %g", out->model.g);
         goto done;
     }
-    if ((rc = number(&c, root, "", "mu", 1, 0, &out->model.mu)))
+    if ((rc = tippe_json_number(c, root, "", "mu", 1, &out->model.mu, NULL)))
         goto done;
     if (!(out->model.mu >= 0)) {
-        rc = fail(&c, "mu", "friction coefficient must be >= 0 s/m, got %g", out->model.mu);
+        rc = tippe_json_fail(c, "mu", "friction coefficient must be >= 0 s/m, got %g",
+                             out->model.mu);
         goto done;
     }
-    if ((rc = number(&c, root, "", "t_end", 1, 0, &out->t_end)))
+    if ((rc = tippe_json_number(c, root, "", "t_end", 1, &out->t_end, NULL)))
         goto done;
     if (!(out->t_end > 0)) {
-        rc = fail(&c, "t_end", "must be > 0 s, got %g", out->t_end);
+        rc = tippe_json_fail(c, "t_end", "must be > 0 s, got %g", out->t_end);
         goto done;
     }
-    if ((rc = read_accuracy(&c, cJSON_GetObjectItemCaseSensitive(root, "accuracy"), out)))
+    if ((rc = read_accuracy(c, cJSON_GetObjectItemCaseSensitive(root, "accuracy"), out)))
         goto done;
-    rc = read_initial(&c, cJSON_GetObjectItemCaseSensitive(root, "initial"), out);
+    rc = read_initial(c, cJSON_GetObjectItemCaseSensitive(root, "initial"), out);
 done:
     cJSON_Delete(root);
+    free(c);
     return rc;
 }
