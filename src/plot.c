@@ -1,7 +1,7 @@
 /* Shared plotting helpers over PLplot's cairo drivers (see tippe/plot.h). */
 #include "tippe/plot.h"
+#include "tippe/report.h"
 
-#include <errno.h>
 #include <math.h>
 #include <plplot/plplot.h>
 #include <stdio.h>
@@ -9,11 +9,9 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 struct tippe_plot {
-    char path[4096];
-    char tmp_path[4096 + 32];
+    tippe_report_file file; /* file.f is NULL: PLplot owns the stream (plsfile) */
     int width, height;
 };
 
@@ -72,39 +70,20 @@ int tippe_plot_open(const char *path, int width, int height, tippe_plot **out, t
                                path ? path : "(null)");
     if (open_plot)
         return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: another plot (%s) is still open", path,
-                               open_plot->path);
+                               open_plot->file.path);
     if (width < 100 || height < 100 || width > 20000 || height > 20000)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: plot size %d x %d is out of range", path,
                                width, height);
     tippe_plot *p = calloc(1, sizeof *p);
     if (!p)
         return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
-    if (snprintf(p->path, sizeof p->path, "%s", path) >= (int)sizeof p->path) {
+    int rc = tippe_report_open(&p->file, path, "the plot", err);
+    if (rc) {
         free(p);
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: path too long", path);
+        return rc;
     }
-    /* Same directory as the target, so that the final rename is atomic. */
-    snprintf(p->tmp_path, sizeof p->tmp_path, "%s.tmp.XXXXXX", path);
-    int fd = mkstemp(p->tmp_path);
-    if (fd < 0) {
-        int e = errno;
-        free(p);
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write the plot here: %s", path,
-                               strerror(e));
-    }
-    /* mkstemp makes the file private; a plot is an ordinary output file. */
-    mode_t mask = umask(0);
-    umask(mask);
-    if (fchmod(fd, 0666 & ~mask) != 0) { /* harmless if it fails: the plot is still written */
-    }
-    FILE *f = fdopen(fd, "wb");
-    if (!f) {
-        int e = errno;
-        close(fd);
-        unlink(p->tmp_path);
-        free(p);
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: %s", path, strerror(e));
-    }
+    FILE *f = p->file.f;
+    p->file.f = NULL;
     p->width = width;
     p->height = height;
     abort_msg[0] = '\0';
@@ -133,15 +112,14 @@ int tippe_plot_close(tippe_plot *p, tippe_error *err)
     struct stat st;
     int status = TIPPE_OK;
     if (abort_msg[0])
-        status = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: plotting failed: %s", p->path,
+        status = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: plotting failed: %s", p->file.path,
                                  abort_msg);
-    else if (stat(p->tmp_path, &st) != 0 || st.st_size == 0)
-        status = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: the plot came out empty", p->path);
-    else if (rename(p->tmp_path, p->path) != 0)
-        status = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: cannot rename the plot into place: %s",
-                                 p->path, strerror(errno));
+    else if (stat(p->file.tmp_path, &st) != 0 || st.st_size == 0)
+        status = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: the plot came out empty", p->file.path);
     if (status != TIPPE_OK)
-        unlink(p->tmp_path);
+        tippe_report_abort(&p->file);
+    else
+        status = tippe_report_commit(&p->file, err);
     free(p);
     return status;
 }
@@ -152,7 +130,7 @@ void tippe_plot_abort(tippe_plot *p)
         return;
     plend();
     open_plot = NULL;
-    unlink(p->tmp_path);
+    tippe_report_abort(&p->file);
     free(p);
 }
 
