@@ -6,10 +6,7 @@
 
 #include <cjson/cJSON.h>
 
-#include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #define RAD_TO_DEG (180.0 / 3.14159265358979323846)
@@ -39,20 +36,10 @@ static void classify_usage(FILE *out)
             TIPPE_DEFAULT_G_M_S2);
 }
 
-__attribute__((format(printf, 1, 2)))
-static int usage_error(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "tippe classify: ");
-    vfprintf(stderr, fmt, ap);
-    fprintf(stderr, " (try tippe classify --help)\n");
-    va_end(ap);
-    return 2;
-}
+static const char *const VERB = "classify";
 
 typedef struct {
-    const char *name; /* option, without "--" */
+    const char *name; /* "--A-over-C" */
     const char *text;
     double value;
 } num_opt;
@@ -128,12 +115,12 @@ static int add_num(cJSON *o, const char *key, int has, double v)
     return has ? cJSON_AddNumberToObject(o, key, v) != NULL : cJSON_AddNullToObject(o, key) != NULL;
 }
 
-static int print_json(const tippe_theory_class *c, const tippe_theory_thresholds *th,
+static cJSON *to_json(const tippe_theory_class *c, const tippe_theory_thresholds *th,
                       const double *v, int have_top)
 {
     cJSON *o = cJSON_CreateObject();
     if (!o)
-        return 1;
+        return NULL;
     int ok = cJSON_AddStringToObject(o, "group", tippe_group_name(c->group)) &&
              cJSON_AddStringToObject(o, "main_group", tippe_group_family(c->group)) &&
              (c->boundary ? cJSON_AddStringToObject(o, "boundary", c->boundary) != NULL
@@ -153,23 +140,21 @@ static int print_json(const tippe_theory_class *c, const tippe_theory_thresholds
              add_num(o, "n_star_rad_s", th->has_n_star, th->n_star_rad_s) &&
              add_num(o, "n_b_0_rad_s", th->has_n_b, th->n_b_0_rad_s) &&
              add_num(o, "n_b_pi_rad_s", th->has_n_b, th->n_b_pi_rad_s);
-    char *s = ok ? cJSON_Print(o) : NULL;
-    cJSON_Delete(o);
-    if (!s)
-        return 1;
-    printf("%s\n", s);
-    free(s);
-    return 0;
+    if (!ok) {
+        cJSON_Delete(o);
+        return NULL;
+    }
+    return o;
 }
 
 int tippe_cli_classify(int argc, char **argv)
 {
-    num_opt opt[N_OPTS] = {{"A-over-C", NULL, 0}, {"eps-over-R", NULL, 0}, {"m", NULL, 0},
-                           {"R", NULL, 0},        {"C", NULL, 0},          {"g", NULL, 0}};
+    num_opt opt[N_OPTS] = {{"--A-over-C", NULL, 0}, {"--eps-over-R", NULL, 0}, {"--m", NULL, 0},
+                           {"--R", NULL, 0},        {"--C", NULL, 0},          {"--g", NULL, 0}};
     int json = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+        if (tippe_cli_is_help(a)) {
             classify_usage(stdout);
             return 0;
         }
@@ -178,70 +163,56 @@ int tippe_cli_classify(int argc, char **argv)
             continue;
         }
         int found = 0;
-        for (int j = 0; j < N_OPTS && !found; j++) {
-            size_t len = strlen(opt[j].name);
-            if (strncmp(a, "--", 2) || strncmp(a + 2, opt[j].name, len))
-                continue;
-            const char *rest = a + 2 + len;
-            if (*rest == '=') {
-                opt[j].text = rest + 1;
-                found = 1;
-            } else if (*rest == '\0') {
-                if (i + 1 >= argc)
-                    return usage_error("%s needs a value", a);
-                opt[j].text = argv[++i];
-                found = 1;
-            }
-        }
+        for (int j = 0; j < N_OPTS && !found; j++)
+            if ((found = tippe_cli_option(VERB, argc, argv, &i, opt[j].name, 1, &opt[j].text)) &&
+                !opt[j].text)
+                return 2;
         if (!found)
-            return usage_error("unknown argument '%s'", a);
+            return tippe_cli_usage_error(VERB, "unknown argument '%s'", a);
     }
-    for (int j = 0; j < N_OPTS; j++) {
-        if (!opt[j].text)
-            continue;
-        char *end = NULL;
-        opt[j].value = strtod(opt[j].text, &end);
-        if (end == opt[j].text || *end != '\0' || !isfinite(opt[j].value))
-            return usage_error("--%s: '%s' is not a number", opt[j].name, opt[j].text);
-    }
+    for (int j = 0; j < N_OPTS; j++)
+        if (opt[j].text && tippe_cli_number(VERB, opt[j].name, opt[j].text, NULL, &opt[j].value))
+            return 2;
     if (!opt[OPT_K].text || !opt[OPT_E].text)
-        return usage_error("--A-over-C and --eps-over-R are both required");
+        return tippe_cli_usage_error(VERB, "--A-over-C and --eps-over-R are both required");
     if (!(opt[OPT_K].value > 0.0))
-        return usage_error("--A-over-C: %g must be > 0", opt[OPT_K].value);
+        return tippe_cli_usage_error(VERB, "--A-over-C: %g must be > 0", opt[OPT_K].value);
     if (!(opt[OPT_E].value >= 0.0 && opt[OPT_E].value < 1.0))
-        return usage_error("--eps-over-R: %g must satisfy 0 <= eps/R < 1 (centre of mass "
-                           "inside the sphere)", opt[OPT_E].value);
+        return tippe_cli_usage_error(VERB,
+                                     "--eps-over-R: %g must satisfy 0 <= eps/R < 1 (centre of mass "
+                                     "inside the sphere)",
+                                     opt[OPT_E].value);
     int n_top = !!opt[OPT_M].text + !!opt[OPT_R].text + !!opt[OPT_C].text;
     if (n_top != 0 && n_top != 3)
-        return usage_error("--m, --R and --C go together (the thresholds need all three)");
+        return tippe_cli_usage_error(
+            VERB, "--m, --R and --C go together (the thresholds need all three)");
     int have_top = n_top == 3;
     if (opt[OPT_G].text && !have_top)
-        return usage_error("--g only matters with --m, --R and --C");
+        return tippe_cli_usage_error(VERB, "--g only matters with --m, --R and --C");
     if (!opt[OPT_G].text)
         opt[OPT_G].value = TIPPE_DEFAULT_G_M_S2;
     for (int j = OPT_M; j < N_OPTS; j++)
         if ((opt[j].text || j == OPT_G) && have_top && !(opt[j].value > 0.0))
-            return usage_error("--%s: %g must be > 0", opt[j].name, opt[j].value);
+            return tippe_cli_usage_error(VERB, "%s: %g must be > 0", opt[j].name, opt[j].value);
 
     double v[N_OPTS];
     for (int j = 0; j < N_OPTS; j++)
         v[j] = opt[j].value;
     tippe_theory_class cls;
     if (tippe_theory_classify(v[OPT_K], v[OPT_E], &cls) != TIPPE_OK)
-        return usage_error("A/C = %g, eps/R = %g cannot be classified", v[OPT_K], v[OPT_E]);
+        return tippe_cli_usage_error(VERB, "A/C = %g, eps/R = %g cannot be classified", v[OPT_K],
+                                     v[OPT_E]);
     tippe_theory_thresholds th = {0};
     if (have_top) {
         tippe_top top = {v[OPT_M], v[OPT_R], v[OPT_E] * v[OPT_R], v[OPT_K] * v[OPT_C], v[OPT_C],
                          v[OPT_E] > 0.0 ? -1 : 0};
         tippe_error err = {0};
         int rc = tippe_theory_compute_thresholds(&top, v[OPT_G], &th, &err);
-        if (rc) {
-            fprintf(stderr, "tippe classify: %s\n", err.msg);
-            return rc;
-        }
+        if (rc)
+            return tippe_cli_fail(VERB, &err, rc);
     }
     if (json)
-        return print_json(&cls, &th, v, have_top);
+        return tippe_cli_print_json(VERB, to_json(&cls, &th, v, have_top));
     print_text(&cls, &th, v, have_top);
     return 0;
 }

@@ -7,14 +7,13 @@
 #include <cjson/cJSON.h>
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
-#define MAX_SETS 64
 #define MAX_DESIGNS 16
 #define COL 38 /* characters per design column */
+
+static const char *const VERB = "compare";
 
 static void compare_usage(FILE *out)
 {
@@ -31,17 +30,6 @@ static void compare_usage(FILE *out)
             "  --help             this text\n"
             "\n"
             "Exit status: 0 ok, 2 bad usage or design, 1 computation failed.\n");
-}
-
-__attribute__((format(printf, 1, 2))) static int usage_error(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "tippe compare: ");
-    vfprintf(stderr, fmt, ap);
-    fprintf(stderr, " (try tippe compare --help)\n");
-    va_end(ap);
-    return 2;
 }
 
 /* Prints s in a column of COL characters (cut with "~" if longer). */
@@ -113,31 +101,29 @@ static void print_side_by_side(int n, tippe_design **d, tippe_sweep_result *r)
 
 int tippe_cli_compare(int argc, char **argv)
 {
-    const char *paths[MAX_DESIGNS], *sets[MAX_SETS];
-    int n = 0, n_sets = 0, json = 0;
+    const char *paths[MAX_DESIGNS], *v;
+    tippe_cli_sets sets = {.n = 0};
+    int n = 0, json = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+        if (tippe_cli_is_help(a)) {
             compare_usage(stdout);
             return 0;
         } else if (!strcmp(a, "--json")) {
             json = 1;
-        } else if (!strcmp(a, "--set")) {
-            if (i + 1 >= argc)
-                return usage_error("--set needs a value");
-            if (n_sets == MAX_SETS)
-                return usage_error("too many --set options (at most %d)", MAX_SETS);
-            sets[n_sets++] = argv[++i];
-        } else if (a[0] == '-' && a[1] != '\0') {
-            return usage_error("unknown option '%s'", a);
+        } else if (tippe_cli_option(VERB, argc, argv, &i, "--set", 0, &v)) {
+            if (!v || tippe_cli_add_set(VERB, &sets, v))
+                return 2;
+        } else if (tippe_cli_is_option(a, 0)) {
+            return tippe_cli_usage_error(VERB, "unknown option '%s'", a);
         } else {
             if (n == MAX_DESIGNS)
-                return usage_error("too many designs (at most %d)", MAX_DESIGNS);
+                return tippe_cli_usage_error(VERB, "too many designs (at most %d)", MAX_DESIGNS);
             paths[n++] = a;
         }
     }
     if (n < 1)
-        return usage_error("no design file given");
+        return tippe_cli_usage_error(VERB, "no design file given");
 
     tippe_design *d[MAX_DESIGNS] = {0};
     tippe_sweep_result r[MAX_DESIGNS];
@@ -145,13 +131,12 @@ int tippe_cli_compare(int argc, char **argv)
     tippe_error err = {0};
     int rc = TIPPE_OK, loaded = 0;
     for (int i = 0; i < n && rc == TIPPE_OK; i++, loaded++) {
-        rc = tippe_design_load(paths[i], sets, n_sets, &d[i], &err);
+        rc = tippe_design_load(paths[i], sets.item, sets.n, &d[i], &err);
         if (rc == TIPPE_OK)
             rc = tippe_sweep_design(d[i], 0.0, 0.0, NULL, &r[i], &err);
     }
     if (rc != TIPPE_OK) {
-        fprintf(stderr, "tippe compare: %s\n", err.msg);
-        rc = rc == TIPPE_EINPUT ? 2 : 1;
+        rc = tippe_cli_fail(VERB, &err, rc);
     } else if (json) {
         cJSON *o = cJSON_CreateObject();
         cJSON *arr = o ? cJSON_AddArrayToObject(o, "designs") : NULL;
@@ -162,15 +147,11 @@ int tippe_cli_compare(int argc, char **argv)
                 arr = NULL;
             }
         }
-        char *text = arr ? cJSON_Print(o) : NULL;
-        cJSON_Delete(o);
-        if (text) {
-            printf("%s\n", text);
-            free(text);
-        } else {
-            fprintf(stderr, "tippe compare: out of memory while writing JSON\n");
-            rc = 1;
+        if (!arr) {
+            cJSON_Delete(o);
+            o = NULL;
         }
+        rc = tippe_cli_print_json(VERB, o);
     } else {
         print_side_by_side(n, d, r);
     }

@@ -5,13 +5,10 @@
 
 #include <cjson/cJSON.h>
 
-#include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
-#define MAX_SETS 64
+static const char *const VERB = "eval";
 
 static void eval_usage(FILE *out)
 {
@@ -32,18 +29,6 @@ static void eval_usage(FILE *out)
             "of mass, C about the symmetry axis; eps is the distance from the sphere's centre to\n"
             "the centre of mass. Exit status: 0 ok, 2 bad usage or design, 1 computation failed.\n"
             "The design format is described in docs/design-format.md.\n");
-}
-
-__attribute__((format(printf, 1, 2)))
-static int usage_error(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "tippe eval: ");
-    vfprintf(stderr, fmt, ap);
-    fprintf(stderr, " (try tippe eval --help)\n");
-    va_end(ap);
-    return 2;
 }
 
 static const char *side_text(int com_side)
@@ -89,14 +74,14 @@ static void print_table(const tippe_design *d, double z2_mm, const tippe_top *t)
     }
 }
 
-static int print_json(const tippe_design *d, double z2_mm, const tippe_top *t)
+static cJSON *to_json(const tippe_design *d, double z2_mm, const tippe_top *t)
 {
     double from, to, cfrom, cto;
     tippe_design_travel_mm(d, &from, &to);
     tippe_design_contact_travel_mm(d, &cfrom, &cto);
     cJSON *o = cJSON_CreateObject();
     if (!o)
-        return 1;
+        return NULL;
     int ok = cJSON_AddStringToObject(o, "design", tippe_design_name(d)) &&
              cJSON_AddStringToObject(o, "file", tippe_design_path(d)) &&
              cJSON_AddNumberToObject(o, "z2_mm", z2_mm) &&
@@ -122,7 +107,7 @@ static int print_json(const tippe_design *d, double z2_mm, const tippe_top *t)
     }
     if (!ok || !a1 || !a2) {
         cJSON_Delete(o);
-        return 1;
+        return NULL;
     }
     cJSON *parts = cJSON_AddArrayToObject(o, "parts");
     int n = tippe_design_n_parts(d);
@@ -143,77 +128,62 @@ static int print_json(const tippe_design *d, double z2_mm, const tippe_top *t)
         if (!ok)
             break;
     }
-    char *s = (ok && parts) ? cJSON_Print(o) : NULL;
-    cJSON_Delete(o);
-    if (!s)
-        return 1;
-    printf("%s\n", s);
-    free(s);
-    return 0;
+    if (!ok || !parts) {
+        cJSON_Delete(o);
+        return NULL;
+    }
+    return o;
 }
 
 int tippe_cli_eval(int argc, char **argv)
 {
-    const char *path = NULL, *z2_text = NULL;
-    const char *sets[MAX_SETS];
-    int n_sets = 0, json = 0;
+    const char *path = NULL, *z2_text = NULL, *v;
+    tippe_cli_sets sets = {.n = 0};
+    int json = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+        if (tippe_cli_is_help(a)) {
             eval_usage(stdout);
             return 0;
         } else if (!strcmp(a, "--json")) {
             json = 1;
-        } else if (!strcmp(a, "--z2") || !strcmp(a, "--set")) {
-            if (i + 1 >= argc)
-                return usage_error("%s needs a value", a);
-            if (!strcmp(a, "--z2")) {
-                z2_text = argv[++i];
-            } else {
-                if (n_sets == MAX_SETS)
-                    return usage_error("too many --set options (at most %d)", MAX_SETS);
-                sets[n_sets++] = argv[++i];
-            }
-        } else if (!strncmp(a, "--z2=", 5)) {
-            z2_text = a + 5;
-        } else if (!strncmp(a, "--set=", 6)) {
-            if (n_sets == MAX_SETS)
-                return usage_error("too many --set options (at most %d)", MAX_SETS);
-            sets[n_sets++] = a + 6;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            return usage_error("unknown option '%s'", a);
+        } else if (tippe_cli_option(VERB, argc, argv, &i, "--z2", 1, &v)) {
+            if (!v)
+                return 2;
+            z2_text = v;
+        } else if (tippe_cli_option(VERB, argc, argv, &i, "--set", 1, &v)) {
+            if (!v || tippe_cli_add_set(VERB, &sets, v))
+                return 2;
+        } else if (tippe_cli_is_option(a, 0)) {
+            return tippe_cli_usage_error(VERB, "unknown option '%s'", a);
         } else if (!path) {
             path = a;
         } else {
-            return usage_error("one design file only (got also '%s')", a);
+            return tippe_cli_usage_error(VERB, "one design file only (got also '%s')", a);
         }
     }
     if (!path)
-        return usage_error("no design file given");
+        return tippe_cli_usage_error(VERB, "no design file given");
     if (!z2_text)
-        return usage_error("--z2 MM is required (position of the moving weight)");
-    char *end = NULL;
-    double z2_mm = strtod(z2_text, &end);
-    if (end == z2_text || *end != '\0' || !isfinite(z2_mm))
-        return usage_error("--z2: '%s' is not a number of mm", z2_text);
+        return tippe_cli_usage_error(VERB, "--z2 MM is required (position of the moving weight)");
+    double z2_mm;
+    if (tippe_cli_number(VERB, "--z2", z2_text, "mm", &z2_mm))
+        return 2;
 
     tippe_error err = {0};
     tippe_design *d = NULL;
-    int rc = tippe_design_load(path, sets, n_sets, &d, &err);
+    int rc = tippe_design_load(path, sets.item, sets.n, &d, &err);
     tippe_top top;
     if (!rc)
         rc = tippe_design_top(d, z2_mm, &top, &err);
     if (rc) {
-        fprintf(stderr, "tippe eval: %s\n", err.msg);
         tippe_design_free(d);
-        return rc == TIPPE_EINPUT ? 2 : 1;
+        return tippe_cli_fail(VERB, &err, rc);
     }
     if (json)
-        rc = print_json(d, z2_mm, &top);
+        rc = tippe_cli_print_json(VERB, to_json(d, z2_mm, &top));
     else
         print_table(d, z2_mm, &top);
-    if (rc)
-        fprintf(stderr, "tippe eval: out of memory while writing JSON\n");
     tippe_design_free(d);
-    return rc ? 1 : 0;
+    return rc;
 }

@@ -13,6 +13,7 @@
 #include "tippe/launch.h"
 #include "tippe/plot.h"
 #include "tippe/progress.h"
+#include "tippe/report.h"
 #include "tippe/sweep.h"
 #include "tippe/theory.h"
 
@@ -33,7 +34,6 @@
 #include <mpi.h>
 #endif
 
-#define MAX_SETS 64
 /* Largest --seed: seeds go into JSON as numbers, exact up to 2^53. */
 #define SEED_MAX 9007199254740991.0
 
@@ -289,92 +289,14 @@ typedef struct {
     uint64_t seed;
     int json, threads;
     tippe_launch_options o;
-    const char *sets[MAX_SETS];
-    int n_sets;
+    tippe_cli_sets sets;
 } args;
 
-__attribute__((format(printf, 2, 3))) static int usage_error(const args *a, const char *fmt, ...)
+/* The ranges of hand launches rise: FROM <= TO, and FROM < TO over several steps. */
+static int parse_rising(const char *text, double *from, double *to, int *steps, int max_steps)
 {
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "tippe %s: ", a->verb);
-    vfprintf(stderr, fmt, ap);
-    fprintf(stderr, " (try tippe %s --help)\n", a->verb);
-    va_end(ap);
-    return 2;
-}
-
-static int parse_double(const char *text, double *out)
-{
-    char *end = NULL;
-    errno = 0;
-    *out = strtod(text, &end);
-    return end != text && *end == '\0' && errno == 0 && isfinite(*out);
-}
-
-static int parse_long(const char *text, long lo, long hi, long *out)
-{
-    char *end = NULL;
-    errno = 0;
-    long v = strtol(text, &end, 10);
-    if (end == text || *end != '\0' || errno != 0 || v < lo || v > hi)
-        return 0;
-    *out = v;
-    return 1;
-}
-
-/* "FROM:TO" or, with steps != NULL, "FROM:TO:STEPS" (STEPS 1 .. max_steps; one
- * step needs FROM = TO). */
-static int parse_range(const char *text, double *from, double *to, int *steps, int max_steps)
-{
-    char buf[256];
-    if (strlen(text) >= sizeof buf)
-        return 0;
-    snprintf(buf, sizeof buf, "%s", text);
-    char *c1 = strchr(buf, ':');
-    if (!c1)
-        return 0;
-    *c1 = '\0';
-    char *c2 = strchr(c1 + 1, ':');
-    if ((c2 != NULL) != (steps != NULL))
-        return 0;
-    if (c2)
-        *c2 = '\0';
-    if (!parse_double(buf, from) || !parse_double(c1 + 1, to))
-        return 0;
-    if (steps) {
-        long s;
-        if (!parse_long(c2 + 1, 1, max_steps, &s))
-            return 0;
-        *steps = (int)s;
-        if (s == 1 ? *from != *to : !(*from < *to))
-            return 0;
-    } else if (!(*from <= *to)) {
-        return 0;
-    }
-    return 1;
-}
-
-/* An output file must have a writable directory: checked before anything is
- * computed, so that bad usage leaves nothing and wastes no time. */
-static int check_output(const args *a, const char *opt, const char *path, int plot)
-{
-    if (plot && !tippe_plot_device(path))
-        return usage_error(a, "%s %s: unsupported plot format (use a .png, .svg or .pdf file name)",
-                           opt, path);
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *slash = strrchr(dir, '/');
-    if (!slash)
-        snprintf(dir, sizeof dir, ".");
-    else if (slash == dir)
-        dir[1] = '\0';
-    else
-        *slash = '\0';
-    if (access(dir, W_OK) != 0)
-        return usage_error(a, "%s %s: cannot write in directory '%s': %s", opt, path, dir,
-                           strerror(errno));
-    return 0;
+    return tippe_cli_parse_range(text, from, to, steps, max_steps) &&
+           (steps && *steps > 1 ? *from < *to : *from <= *to);
 }
 
 /* Parses the options every verb shares; verb-specific meaning of --z2 and
@@ -385,15 +307,16 @@ static int parse_args(args *a, int argc, char **argv)
     a->seed = 1;
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i];
-        if (!strcmp(s, "--help") || !strcmp(s, "-h"))
+        if (tippe_cli_is_help(s))
             return -1;
         if (!strcmp(s, "--json")) {
             a->json = 1;
             continue;
         }
-        if (s[0] != '-' || !s[1] || (s[1] >= '0' && s[1] <= '9')) {
+        if (!tippe_cli_is_option(s, 1)) {
             if (a->design)
-                return usage_error(a, "one design file only (got '%s' and '%s')", a->design, s);
+                return tippe_cli_usage_error(a->verb, "one design file only (got '%s' and '%s')",
+                                             a->design, s);
             a->design = s;
             continue;
         }
@@ -420,57 +343,61 @@ static int parse_args(args *a, int argc, char **argv)
             if (!strcmp(s, known[j].name))
                 k = j;
         if (k < 0 || !(known[k].verbs & a->mask))
-            return usage_error(a, "unknown option '%s'", s);
-        if (i + 1 >= argc)
-            return usage_error(a, "%s needs a value", s);
-        const char *v = argv[++i];
+            return tippe_cli_usage_error(a->verb, "unknown option '%s'", s);
+        const char *v = tippe_cli_value(a->verb, argc, argv, &i);
+        if (!v)
+            return 2;
         double x;
         long l;
         tippe_launch_options *o = &a->o;
         if (!strcmp(s, "-n")) {
-            if (!parse_long(v, 1, 10000000, &a->n))
-                return usage_error(a, "-n '%s': expected a whole number of launches, 1 .. 10^7", v);
+            if (!tippe_cli_parse_long(v, 1, 10000000, &a->n))
+                return tippe_cli_usage_error(
+                    a->verb, "-n '%s': expected a whole number of launches, 1 .. 10^7", v);
             a->has_n = 1;
         } else if (!strcmp(s, "--seed")) {
-            if (!parse_double(v, &x) || x < 0 || x > SEED_MAX || x != floor(x))
-                return usage_error(a, "--seed '%s': expected a whole number 0 .. 2^53 - 1", v);
+            if (!tippe_cli_parse_double(v, &x) || x < 0 || x > SEED_MAX || x != floor(x))
+                return tippe_cli_usage_error(
+                    a->verb, "--seed '%s': expected a whole number 0 .. 2^53 - 1", v);
             a->seed = (uint64_t)x;
         } else if (!strcmp(s, "--z2")) {
             a->z2_text = v;
         } else if (!strcmp(s, "--spin")) {
             a->spin_text = v;
         } else if (!strcmp(s, "--spin-rev-s")) {
-            if (!parse_range(v, &o->spin_from_rev_s, &o->spin_to_rev_s, NULL, 0) ||
+            if (!parse_rising(v, &o->spin_from_rev_s, &o->spin_to_rev_s, NULL, 0) ||
                 o->spin_from_rev_s < 0)
-                return usage_error(a, "--spin-rev-s '%s': expected FROM:TO in rev/s, 0 <= FROM <= TO",
-                                   v);
+                return tippe_cli_usage_error(
+                    a->verb, "--spin-rev-s '%s': expected FROM:TO in rev/s, 0 <= FROM <= TO", v);
         } else if (!strcmp(s, "--threads")) {
-            if (!parse_long(v, 1, 4096, &l))
-                return usage_error(a, "--threads '%s': expected 1 .. 4096", v);
+            if (!tippe_cli_parse_long(v, 1, 4096, &l))
+                return tippe_cli_usage_error(a->verb, "--threads '%s': expected 1 .. 4096", v);
             a->threads = (int)l;
         } else if (!strcmp(s, "--csv")) {
             a->csv = v;
         } else if (!strcmp(s, "--plot")) {
             a->plot = v;
         } else if (!strcmp(s, "--set")) {
-            if (a->n_sets == MAX_SETS)
-                return usage_error(a, "too many --set options (at most %d)", MAX_SETS);
-            a->sets[a->n_sets++] = v;
+            if (tippe_cli_add_set(a->verb, &a->sets, v))
+                return 2;
         } else if (!strcmp(s, "--accuracy")) {
             tippe_error e;
             if (tippe_dynamics_accuracy_preset(v, &o->accuracy, &e))
-                return usage_error(a, "--accuracy: %s", e.msg);
+                return tippe_cli_usage_error(a->verb, "--accuracy: %s", e.msg);
             snprintf(o->accuracy_name, sizeof o->accuracy_name, "%s", v);
         } else if (!strcmp(s, "--stepper")) {
             if (!tippe_dynamics_stepper_known(v) || strlen(v) >= sizeof o->accuracy.stepper)
-                return usage_error(a, "--stepper '%s': unknown (rk2, rk4, rkf45, rkck, rk8pd, "
-                                      "rk1imp, rk2imp, rk4imp, bsimp, msadams, msbdf)", v);
+                return tippe_cli_usage_error(
+                    a->verb,
+                    "--stepper '%s': unknown (rk2, rk4, rkf45, rkck, rk8pd, "
+                    "rk1imp, rk2imp, rk4imp, bsimp, msadams, msbdf)",
+                    v);
             snprintf(o->accuracy.stepper, sizeof o->accuracy.stepper, "%s", v);
             snprintf(o->accuracy_name, sizeof o->accuracy_name, "custom");
         } else {
             /* the rest are plain numbers */
-            if (!parse_double(v, &x))
-                return usage_error(a, "%s '%s': not a number", s, v);
+            if (!tippe_cli_parse_double(v, &x))
+                return tippe_cli_usage_error(a->verb, "%s '%s': not a number", s, v);
             if (!strcmp(s, "--tilt-rad"))
                 o->tilt_sd_rad = x;
             else if (!strcmp(s, "--tilt-max-rad"))
@@ -492,28 +419,15 @@ static int parse_args(args *a, int argc, char **argv)
         }
     }
     if (!a->design)
-        return usage_error(a, "no design file given");
+        return tippe_cli_usage_error(a->verb, "no design file given");
     if (!a->z2_text)
-        return usage_error(a, "--z2 is required");
+        return tippe_cli_usage_error(a->verb, "--z2 is required");
     tippe_error e;
     if (tippe_launch_options_check(&a->o, &e))
-        return usage_error(a, "%s", e.msg);
+        return tippe_cli_usage_error(a->verb, "%s", e.msg);
     if (a->threads > 0)
         omp_set_num_threads(a->threads);
     return 0;
-}
-
-static int fail(const args *a, const tippe_error *err, int rc)
-{
-    fprintf(stderr, "tippe %s: %s\n", a->verb, err->msg);
-    return rc == TIPPE_EINPUT ? 2 : 1;
-}
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 /* The zone of the design's sweep that contains z2 (over the stated travel). */
@@ -615,12 +529,7 @@ static cJSON *json_options(const tippe_launch_options *o, int fixed_spin)
     cJSON_AddNumberToObject(d, "mu_s_m", o->mu);
     cJSON_AddNumberToObject(d, "g_m_s2", o->g);
     cJSON_AddNumberToObject(d, "t_end_s", o->t_end);
-    cJSON *acc = cJSON_AddObjectToObject(d, "accuracy");
-    if (acc) {
-        cJSON_AddStringToObject(acc, "preset", o->accuracy_name);
-        cJSON_AddStringToObject(acc, "stepper", o->accuracy.stepper);
-        cJSON_AddNumberToObject(acc, "rtol", o->accuracy.rtol);
-    }
+    tippe_cli_json_accuracy(d, o->accuracy_name, &o->accuracy);
     return d;
 }
 
@@ -632,27 +541,15 @@ static cJSON *json_counts(const tippe_launch_tally *t)
     return c;
 }
 
-static int print_json(cJSON *o)
-{
-    char *s = o ? cJSON_Print(o) : NULL;
-    cJSON_Delete(o);
-    if (!s) {
-        fprintf(stderr, "tippe: out of memory while writing JSON\n");
-        return 1;
-    }
-    printf("%s\n", s);
-    free(s);
-    return 0;
-}
-
 /* Rounds the last bits away: "%.10g" etc. keep CSV deterministic and short. */
 static int write_launch_csv(const char *path, const tippe_launch_record *r, long n,
                             tippe_error *err)
 {
-    char tmp[4200];
-    FILE *f = tippe_cli_open_atomic(path, tmp, sizeof tmp);
-    if (!f)
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write the CSV file here", path);
+    tippe_report_file rf;
+    int rc = tippe_report_open(&rf, path, "the CSV file", err);
+    if (rc)
+        return rc;
+    FILE *f = rf.f;
     fprintf(f, "index,draw,spin_rad_s,spin_rev_s,tilt_rad,theta_dot_rad_s,phi_dot_rad_s,U_m_s,"
                "V_m_s,verdict,t_s,theta_final_rad,spin_final_rad_s,J0_kg_m3_s,jellett_rel_drift,"
                "rhs_evals,theory,theory_hang_theta_rad,agrees\n");
@@ -668,9 +565,7 @@ static int write_launch_csv(const char *path, const tippe_launch_record *r, long
             fprintf(f, "%.10g", x->hang_theta_rad);
         fprintf(f, ",%s\n", x->agrees > 0 ? "yes" : x->agrees == 0 ? "no" : "");
     }
-    if (tippe_cli_commit_atomic(f, tmp, path))
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: writing the CSV file failed", path);
-    return TIPPE_OK;
+    return tippe_report_commit(&rf, err);
 }
 
 /* ---- tippe launch ---------------------------------------------------------- */
@@ -850,18 +745,18 @@ int tippe_cli_launch(int argc, char **argv)
         return 0;
     }
     double z2 = 0.0;
-    if (!rc && !parse_double(a.z2_text, &z2))
-        rc = usage_error(&a, "--z2 '%s': expected a number of mm", a.z2_text);
+    if (!rc && !tippe_cli_parse_double(a.z2_text, &z2))
+        rc = tippe_cli_usage_error(a.verb, "--z2 '%s': expected a number of mm", a.z2_text);
     if (!rc && a.csv && mpi_rank() == 0)
-        rc = check_output(&a, "--csv", a.csv, 0);
+        rc = tippe_cli_check_output(a.verb, "--csv", a.csv, 0);
 
     tippe_error err;
     tippe_design *d = NULL;
     tippe_top top;
-    if (!rc && (rc = tippe_design_load(a.design, a.sets, a.n_sets, &d, &err)) != 0)
-        rc = fail(&a, &err, rc);
+    if (!rc && (rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err)) != 0)
+        rc = tippe_cli_fail(a.verb, &err, rc);
     if (!rc && (rc = tippe_design_top(d, z2, &top, &err)) != 0)
-        rc = fail(&a, &err, rc);
+        rc = tippe_cli_fail(a.verb, &err, rc);
     tippe_launch_record *rec = NULL;
     if (!rc && !(rec = calloc((size_t)a.n, sizeof *rec))) {
         fprintf(stderr, "tippe launch: out of memory for %ld launches\n", a.n);
@@ -876,9 +771,9 @@ int tippe_cli_launch(int argc, char **argv)
     tippe_launch_plan plan = {1, a.n, &top, NULL};
     tippe_progress prog;
     tippe_progress_start(&prog, stderr, "tippe launch", a.n, TIPPE_PROGRESS_AUTO);
-    const double t0 = now_s();
+    const double t0 = tippe_cli_now_s();
     rc = run_plan(&plan, &a.o, a.seed, rec, &prog, &err);
-    const double elapsed = now_s() - t0;
+    const double elapsed = tippe_cli_now_s() - t0;
     tippe_progress_finish(&prog);
     if (mpi_rank() != 0) {
         free(rec);
@@ -886,7 +781,7 @@ int tippe_cli_launch(int argc, char **argv)
         return 0;
     }
     if (rc) {
-        rc = fail(&a, &err, rc);
+        rc = tippe_cli_fail(a.verb, &err, rc);
         free(rec);
         tippe_design_free(d);
         return rc;
@@ -895,7 +790,7 @@ int tippe_cli_launch(int argc, char **argv)
     if ((rc = tippe_launch_tally_records(rec, a.n, &t, &err)) == 0 && a.csv)
         rc = write_launch_csv(a.csv, rec, a.n, &err);
     if (rc) {
-        rc = fail(&a, &err, rc);
+        rc = tippe_cli_fail(a.verb, &err, rc);
         free(rec);
         tippe_design_free(d);
         return rc;
@@ -916,7 +811,7 @@ int tippe_cli_launch(int argc, char **argv)
             cJSON_AddNumberToObject(o, "max_jellett_rel_drift", t.max_jellett_rel_drift);
             cJSON_AddNumberToObject(o, "rhs_evals", t.rhs_evals);
         }
-        rc = print_json(o);
+        rc = tippe_cli_print_json(a.verb, o);
     } else {
         print_top(d, z2, &top, a.o.g, &z);
         printf("launches   %ld by hand, seed %" PRIu64 "\n", a.n, a.seed);
@@ -974,10 +869,11 @@ static const char verdict_letter[TIPPE_LAUNCH_N_VERDICTS] = {'N', 'T', 'H', 'L',
 static int write_map_csv(const char *path, const tippe_launch_map *m, const tippe_top *tops,
                          tippe_error *err)
 {
-    char tmp[4200];
-    FILE *f = tippe_cli_open_atomic(path, tmp, sizeof tmp);
-    if (!f)
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write the CSV file here", path);
+    tippe_report_file rf;
+    int rc = tippe_report_open(&rf, path, "the CSV file", err);
+    if (rc)
+        return rc;
+    FILE *f = rf.f;
     fprintf(f, "z2_mm,spin_rev_s,group,n,no_tip,tip,hang,lost_contact,undecided,agree,"
                "comparable,dominant,dominant_share\n");
     for (int i = 0; i < m->n_z2; i++)
@@ -991,9 +887,7 @@ static int write_map_csv(const char *path, const tippe_launch_map *m, const tipp
                     c->counts[1], c->counts[2], c->counts[3], c->counts[4], c->agree,
                     c->comparable, verdict_names[v], (double)c->counts[v] / (double)c->n);
         }
-    if (tippe_cli_commit_atomic(f, tmp, path))
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: writing the CSV file failed", path);
-    return TIPPE_OK;
+    return tippe_report_commit(&rf, err);
 }
 
 static void print_map_table(const tippe_launch_map *m)
@@ -1029,23 +923,29 @@ int tippe_cli_map(int argc, char **argv)
     }
     double zf = 0, zt = 0, sf = 0, st = 0;
     int zn = 0, sn = 0;
-    if (!rc && !parse_range(a.z2_text, &zf, &zt, &zn, 1000))
-        rc = usage_error(&a, "--z2 '%s': expected FROM:TO:STEPS in mm with FROM < TO and 1 .. "
-                             "1000 STEPS (one step: FROM = TO)", a.z2_text);
+    if (!rc && !parse_rising(a.z2_text, &zf, &zt, &zn, 1000))
+        rc = tippe_cli_usage_error(
+            a.verb,
+            "--z2 '%s': expected FROM:TO:STEPS in mm with FROM < TO and 1 .. "
+            "1000 STEPS (one step: FROM = TO)",
+            a.z2_text);
     if (!rc && !a.spin_text)
-        rc = usage_error(&a, "--spin FROM:TO:STEPS (rev/s) is required");
-    if (!rc && (!parse_range(a.spin_text, &sf, &st, &sn, 1000) || sf < 0))
-        rc = usage_error(&a, "--spin '%s': expected FROM:TO:STEPS in rev/s with 0 <= FROM < TO "
-                             "and 1 .. 1000 STEPS (one step: FROM = TO)", a.spin_text);
+        rc = tippe_cli_usage_error(a.verb, "--spin FROM:TO:STEPS (rev/s) is required");
+    if (!rc && (!parse_rising(a.spin_text, &sf, &st, &sn, 1000) || sf < 0))
+        rc = tippe_cli_usage_error(
+            a.verb,
+            "--spin '%s': expected FROM:TO:STEPS in rev/s with 0 <= FROM < TO "
+            "and 1 .. 1000 STEPS (one step: FROM = TO)",
+            a.spin_text);
     if (!rc && (double)zn * sn * a.n > 1e8)
-        rc = usage_error(&a, "%d x %d cells x %ld launches is more than 10^8 launches", zn, sn,
-                         a.n);
+        rc = tippe_cli_usage_error(
+            a.verb, "%d x %d cells x %ld launches is more than 10^8 launches", zn, sn, a.n);
     if (!rc && a.csv && mpi_rank() == 0)
-        rc = check_output(&a, "--csv", a.csv, 0);
+        rc = tippe_cli_check_output(a.verb, "--csv", a.csv, 0);
     if (!rc && a.plot && mpi_rank() == 0)
-        rc = check_output(&a, "--plot", a.plot, 1);
+        rc = tippe_cli_check_output(a.verb, "--plot", a.plot, 1);
     if (!rc && a.plot && a.csv && !strcmp(a.plot, a.csv))
-        rc = usage_error(&a, "--plot and --csv name the same file '%s'", a.plot);
+        rc = tippe_cli_usage_error(a.verb, "--plot and --csv name the same file '%s'", a.plot);
 
     tippe_error err;
     tippe_design *d = NULL;
@@ -1054,8 +954,8 @@ int tippe_cli_map(int argc, char **argv)
     tippe_launch_record *rec = NULL;
     tippe_launch_tally *cells = NULL;
     const long n_cells = (long)zn * sn, total = n_cells * a.n;
-    if (!rc && (rc = tippe_design_load(a.design, a.sets, a.n_sets, &d, &err)) != 0)
-        rc = fail(&a, &err, rc);
+    if (!rc && (rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err)) != 0)
+        rc = tippe_cli_fail(a.verb, &err, rc);
     if (!rc) {
         z2 = malloc((size_t)zn * sizeof *z2);
         spin = malloc((size_t)sn * sizeof *spin);
@@ -1072,7 +972,7 @@ int tippe_cli_map(int argc, char **argv)
     for (int i = 0; !rc && i < zn; i++) {
         z2[i] = zn == 1 ? zf : zf + (zt - zf) * i / (zn - 1);
         if ((rc = tippe_design_top(d, z2[i], &tops[i], &err)) != 0)
-            rc = fail(&a, &err, rc);
+            rc = tippe_cli_fail(a.verb, &err, rc);
     }
     for (int j = 0; !rc && j < sn; j++)
         spin[j] = sn == 1 ? sf : sf + (st - sf) * j / (sn - 1);
@@ -1087,32 +987,32 @@ int tippe_cli_map(int argc, char **argv)
         tippe_launch_plan plan = {(int)n_cells, a.n, cell_tops, spin_rad};
         tippe_progress prog;
         tippe_progress_start(&prog, stderr, "tippe map", total, TIPPE_PROGRESS_AUTO);
-        const double t0 = now_s();
+        const double t0 = tippe_cli_now_s();
         rc = run_plan(&plan, &a.o, a.seed, rec, &prog, &err);
-        const double elapsed = now_s() - t0;
+        const double elapsed = tippe_cli_now_s() - t0;
         tippe_progress_finish(&prog);
         if (mpi_rank() != 0) {
             rc = 0;
             goto done;
         }
         if (rc) {
-            rc = fail(&a, &err, rc);
+            rc = tippe_cli_fail(a.verb, &err, rc);
             goto done;
         }
         for (long c = 0; !rc && c < n_cells; c++)
             if ((rc = tippe_launch_tally_records(rec + c * a.n, a.n, &cells[c], &err)) != 0)
-                rc = fail(&a, &err, rc);
+                rc = tippe_cli_fail(a.verb, &err, rc);
         if (rc)
             goto done;
         tippe_launch_map m = {zn, sn, z2, spin, cells, a.n};
         if (a.csv && (rc = write_map_csv(a.csv, &m, tops, &err)) != 0) {
-            rc = fail(&a, &err, rc);
+            rc = tippe_cli_fail(a.verb, &err, rc);
             goto done;
         }
         if (a.plot && (rc = tippe_launch_plot_map(a.plot, &m, d, a.o.g, NULL, &err)) != 0) {
             if (a.csv)
                 unlink(a.csv); /* all outputs or none */
-            rc = fail(&a, &err, rc);
+            rc = tippe_cli_fail(a.verb, &err, rc);
             goto done;
         }
         if (a.json) {
@@ -1160,7 +1060,7 @@ int tippe_cli_map(int argc, char **argv)
                         cJSON_AddItemToArray(arr, co);
                     }
             }
-            rc = print_json(o);
+            rc = tippe_cli_print_json(a.verb, o);
         } else {
             printf("design     %s (%s)\n", tippe_design_name(d), tippe_design_path(d));
             printf("map        Z2 %g .. %g mm (%d) x spin %g .. %g rev/s (%d), %ld launches per "
@@ -1237,22 +1137,23 @@ int tippe_cli_check(int argc, char **argv)
     if (rc)
         return rc;
     double z2, spin = M_PI * (a.o.spin_from_rev_s + a.o.spin_to_rev_s);
-    if (!parse_double(a.z2_text, &z2))
-        return usage_error(&a, "--z2 '%s': expected a number of mm", a.z2_text);
-    if (a.spin_text && !parse_double(a.spin_text, &spin))
-        return usage_error(&a, "--spin '%s': expected a number of rad/s", a.spin_text);
+    if (!tippe_cli_parse_double(a.z2_text, &z2))
+        return tippe_cli_usage_error(a.verb, "--z2 '%s': expected a number of mm", a.z2_text);
+    if (a.spin_text && !tippe_cli_parse_double(a.spin_text, &spin))
+        return tippe_cli_usage_error(a.verb, "--spin '%s': expected a number of rad/s",
+                                     a.spin_text);
     tippe_error err;
     tippe_design *d = NULL;
     tippe_top top;
-    if ((rc = tippe_design_load(a.design, a.sets, a.n_sets, &d, &err)) != 0)
-        return fail(&a, &err, rc);
+    if ((rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err)) != 0)
+        return tippe_cli_fail(a.verb, &err, rc);
     tippe_dynamics_initial ic;
     tippe_launch_record rec;
     if ((rc = tippe_design_top(d, z2, &top, &err)) != 0 ||
         (rc = tippe_launch_central(&top, &a.o, spin, &ic, &err)) != 0 ||
         (rc = tippe_launch_run_initial(&top, &a.o, &ic, &rec, &err)) != 0) {
         tippe_design_free(d);
-        return fail(&a, &err, rc);
+        return tippe_cli_fail(a.verb, &err, rc);
     }
     zone_at z;
     find_zone(d, z2, &z);
@@ -1298,7 +1199,7 @@ int tippe_cli_check(int argc, char **argv)
                 cJSON_AddItemToObject(o, "theory", th);
             }
         }
-        rc = print_json(o);
+        rc = tippe_cli_print_json(a.verb, o);
     } else {
         print_top(d, z2, &top, a.o.g, &z);
         printf("launch     spin %.4g rad/s (%.3g rev/s), tilt %.4g rad (%.2f deg), steady "

@@ -3,18 +3,18 @@
 
 #include "tippe/dynamics.h"
 #include "tippe/plot.h"
+#include "tippe/report.h"
 #include "tippe/scenario.h"
 #include "tippe/theory.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
-#define MAX_OVERRIDES 64
+static const char *const VERB = "simulate";
+
 /* A hang agrees with theory when the angles differ by less than this: the
  * settling tolerance leaves ~1e-3 rad, a "fast" run's Jellett drift a few 1e-3. */
 #define HANG_AGREE_RAD 1e-2
@@ -50,18 +50,6 @@ static void simulate_usage(FILE *out)
             "failed. The scenario format and the settling criteria are in docs/dynamics.md.\n");
 }
 
-__attribute__((format(printf, 1, 2)))
-static int usage_error(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "tippe simulate: ");
-    vfprintf(stderr, fmt, ap);
-    fprintf(stderr, " (try tippe simulate --help)\n");
-    va_end(ap);
-    return 2;
-}
-
 typedef struct {
     int n, cap;
     tippe_dynamics_sample *s;
@@ -84,22 +72,20 @@ static int keep_sample(const tippe_dynamics_sample *s, void *ctx)
 
 static int write_csv(const char *path, const samples *b, tippe_error *err)
 {
-    char tmp[4200];
-    FILE *f = tippe_cli_open_atomic(path, tmp, sizeof tmp);
-    if (!f)
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write the CSV file here", path);
-    fprintf(f, "t_s,theta_rad,theta_dot_rad_s,phi_dot_rad_s,spin_rad_s,U_m_s,V_m_s,Rn_N,"
-               "slip_speed_m_s,E_J,J_kg_m3_s,dissipated_J,phi_rad,psi_rad,x_m,y_m\n");
+    tippe_report_file rf;
+    int rc = tippe_report_open(&rf, path, "the CSV file", err);
+    if (rc)
+        return rc;
+    fprintf(rf.f, "t_s,theta_rad,theta_dot_rad_s,phi_dot_rad_s,spin_rad_s,U_m_s,V_m_s,Rn_N,"
+                  "slip_speed_m_s,E_J,J_kg_m3_s,dissipated_J,phi_rad,psi_rad,x_m,y_m\n");
     for (int i = 0; i < b->n; i++) {
         const tippe_dynamics_sample *s = &b->s[i];
-        fprintf(f, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-                   "%.10g,%.10g,%.10g,%.10g\n",
+        fprintf(rf.f, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
+                      "%.10g,%.10g,%.10g,%.10g\n",
                 s->t, s->theta, s->theta_dot, s->phi_dot, s->spin, s->U, s->V, s->Rn,
                 s->slip_speed, s->E, s->J, s->D, s->phi, s->psi, s->x, s->y);
     }
-    if (tippe_cli_commit_atomic(f, tmp, path))
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: writing the CSV file failed", path);
-    return TIPPE_OK;
+    return tippe_report_commit(&rf, err);
 }
 
 /* Theory's stable final states for the launch's J, and whether the simulated
@@ -217,13 +203,13 @@ static cJSON *json_sample_fields(cJSON *o, const tippe_dynamics_sample *s)
     return o;
 }
 
-static int print_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
+static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
                       const theory_check *tc, double elapsed_s)
 {
     const tippe_top *t = &sc->model.top;
     cJSON *o = cJSON_CreateObject();
     if (!o)
-        return 1;
+        return NULL;
     cJSON_AddStringToObject(o, "scenario", sc->path);
     cJSON_AddStringToObject(o, "name", sc->name);
     cJSON *top = cJSON_AddObjectToObject(o, "top");
@@ -268,12 +254,7 @@ static int print_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
     cJSON_AddNumberToObject(o, "rejected_steps", (double)r->rejected_steps);
     cJSON_AddNumberToObject(o, "state_dim", r->state_dim);
     cJSON_AddNumberToObject(o, "elapsed_s", elapsed_s);
-    cJSON *acc = cJSON_AddObjectToObject(o, "accuracy");
-    if (acc) {
-        cJSON_AddStringToObject(acc, "preset", sc->accuracy_name);
-        cJSON_AddStringToObject(acc, "stepper", sc->accuracy.stepper);
-        cJSON_AddNumberToObject(acc, "rtol", sc->accuracy.rtol);
-    }
+    tippe_cli_json_accuracy(o, sc->accuracy_name, &sc->accuracy);
     cJSON *th = cJSON_AddObjectToObject(o, "theory");
     if (th) {
         cJSON_AddStringToObject(th, "group", tippe_group_name(tc->cls.group));
@@ -298,21 +279,7 @@ static int print_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
             cJSON_AddBoolToObject(th, "agrees", tc->agrees);
         cJSON_AddNumberToObject(th, "hang_tolerance_rad", HANG_AGREE_RAD);
     }
-    char *text = cJSON_Print(o);
-    cJSON_Delete(o);
-    if (!text)
-        return 1;
-    printf("%s\n", text);
-    free(text);
-    return 0;
-}
-
-/* A flag that takes a value: the next argument, or a usage error. */
-static const char *value_of(int argc, char **argv, int *i)
-{
-    if (*i + 1 >= argc)
-        return NULL;
-    return argv[++*i];
+    return o;
 }
 
 int tippe_cli_simulate(int argc, char **argv)
@@ -338,13 +305,11 @@ int tippe_cli_simulate(int argc, char **argv)
     const char *scenario = NULL, *csv = NULL, *plot = NULL;
     int json = 0, full = 0;
     double sample_dt = 0.0;
-    char over_buf[MAX_OVERRIDES][512];
-    const char *overrides[MAX_OVERRIDES];
-    int n_over = 0;
+    tippe_cli_sets over = {.n = 0};
 
     for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+        const char *a = argv[i], *field = NULL, *v;
+        if (tippe_cli_is_help(a)) {
             simulate_usage(stdout);
             return 0;
         }
@@ -356,65 +321,44 @@ int tippe_cli_simulate(int argc, char **argv)
             full = 1;
             continue;
         }
-        if (!strcmp(a, "--csv") || !strcmp(a, "--plot") || !strcmp(a, "--sample-dt") ||
-            !strcmp(a, "--set")) {
-            const char *v = value_of(argc, argv, &i);
-            if (!v)
-                return usage_error("%s needs a value", a);
-            if (!strcmp(a, "--csv")) {
-                csv = v;
-            } else if (!strcmp(a, "--plot")) {
-                plot = v;
-            } else if (!strcmp(a, "--sample-dt")) {
-                char *end = NULL;
-                sample_dt = strtod(v, &end);
-                if (!end || *end || !(sample_dt > 0) || !isfinite(sample_dt))
-                    return usage_error("--sample-dt '%s': expected a positive number of seconds",
-                                       v);
-            } else {
-                if (n_over == MAX_OVERRIDES)
-                    return usage_error("more than %d overrides", MAX_OVERRIDES);
-                snprintf(over_buf[n_over], sizeof over_buf[n_over], "%s", v);
-                overrides[n_over] = over_buf[n_over];
-                n_over++;
-            }
+        for (int k = 0; k < n_field_flags && !field; k++)
+            if (!strcmp(a, field_flags[k].flag))
+                field = field_flags[k].field;
+        const int takes_value = field || !strcmp(a, "--csv") || !strcmp(a, "--plot") ||
+                                !strcmp(a, "--sample-dt") || !strcmp(a, "--set");
+        if (!takes_value) {
+            if (tippe_cli_is_option(a, 0))
+                return tippe_cli_usage_error(VERB, "unknown option '%s'", a);
+            if (scenario)
+                return tippe_cli_usage_error(
+                    VERB, "more than one scenario file ('%s' and '%s')", scenario, a);
+            scenario = a;
             continue;
         }
-        int matched = 0;
-        for (int k = 0; k < n_field_flags; k++)
-            if (!strcmp(a, field_flags[k].flag)) {
-                const char *v = value_of(argc, argv, &i);
-                if (!v)
-                    return usage_error("%s needs a value", a);
-                if (n_over == MAX_OVERRIDES)
-                    return usage_error("more than %d overrides", MAX_OVERRIDES);
-                snprintf(over_buf[n_over], sizeof over_buf[n_over], "%s=%s", field_flags[k].field,
-                         v);
-                overrides[n_over] = over_buf[n_over];
-                n_over++;
-                matched = 1;
-                break;
-            }
-        if (matched)
-            continue;
-        if (a[0] == '-' && a[1])
-            return usage_error("unknown option '%s'", a);
-        if (scenario)
-            return usage_error("more than one scenario file ('%s' and '%s')", scenario, a);
-        scenario = a;
+        if (!(v = tippe_cli_value(VERB, argc, argv, &i)))
+            return 2;
+        if (!strcmp(a, "--csv")) {
+            csv = v;
+        } else if (!strcmp(a, "--plot")) {
+            plot = v;
+        } else if (!strcmp(a, "--sample-dt")) {
+            if (!tippe_cli_parse_double(v, &sample_dt) || !(sample_dt > 0))
+                return tippe_cli_usage_error(
+                    VERB, "--sample-dt '%s': expected a positive number of seconds", v);
+        } else if (tippe_cli_sets_add(&over, field, v)) {
+            return tippe_cli_usage_error(VERB, "more than %d overrides", TIPPE_CLI_MAX_SETS);
+        }
     }
     if (!scenario)
-        return usage_error("no scenario file given");
+        return tippe_cli_usage_error(VERB, "no scenario file given");
     if (plot && !tippe_plot_device(plot))
-        return usage_error("--plot %s: use a .png, .svg or .pdf file name", plot);
+        return tippe_cli_usage_error(VERB, "--plot %s: use a .png, .svg or .pdf file name", plot);
 
     tippe_scenario sc;
     tippe_error err;
-    int rc = tippe_scenario_load(scenario, overrides, n_over, &sc, &err);
-    if (rc) {
-        fprintf(stderr, "tippe simulate: %s\n", err.msg);
-        return rc;
-    }
+    int rc = tippe_scenario_load(scenario, over.item, over.n, &sc, &err);
+    if (rc)
+        return tippe_cli_fail(VERB, &err, rc);
 
     tippe_dynamics_options opt;
     tippe_dynamics_options_default(&opt);
@@ -438,11 +382,9 @@ int tippe_cli_simulate(int argc, char **argv)
         opt.sample_ctx = &buf;
     }
     tippe_dynamics_result res;
-    struct timespec t0, t1;
-    clock_gettime(CLOCK_MONOTONIC, &t0);
+    const double t0 = tippe_cli_now_s();
     rc = tippe_dynamics_run(&sc.model, &sc.initial, &opt, &res, &err);
-    clock_gettime(CLOCK_MONOTONIC, &t1);
-    const double elapsed = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    const double elapsed = tippe_cli_now_s() - t0;
     if (rc) {
         fprintf(stderr, "tippe simulate: %s: %s\n", scenario, err.msg);
         free(buf.s);
@@ -452,21 +394,13 @@ int tippe_cli_simulate(int argc, char **argv)
     check_theory(&sc, &res, &tc);
 
     int status = 0;
-    if (csv && (rc = write_csv(csv, &buf, &err))) {
-        fprintf(stderr, "tippe simulate: %s\n", err.msg);
-        status = rc;
-    }
-    if (!status && plot &&
-        (rc = tippe_plot_sim(plot, &sc, &res, buf.s, buf.n, &err))) {
-        fprintf(stderr, "tippe simulate: %s\n", err.msg);
-        status = rc;
-    }
+    if (csv && (rc = write_csv(csv, &buf, &err)) != 0)
+        status = tippe_cli_fail(VERB, &err, rc);
+    if (!status && plot && (rc = tippe_plot_sim(plot, &sc, &res, buf.s, buf.n, &err)) != 0)
+        status = tippe_cli_fail(VERB, &err, rc);
     if (!status) {
         if (json) {
-            if (print_json(&sc, &res, &tc, elapsed)) {
-                fprintf(stderr, "tippe simulate: out of memory\n");
-                status = 1;
-            }
+            status = tippe_cli_print_json(VERB, to_json(&sc, &res, &tc, elapsed));
         } else {
             print_text(&sc, &res, &tc, elapsed);
             if (csv)

@@ -7,15 +7,12 @@
 
 #include <cjson/cJSON.h>
 
-#include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-#define MAX_SETS 64
+static const char *const VERB = "sweep";
 
 static void sweep_usage(FILE *out)
 {
@@ -49,48 +46,7 @@ static void sweep_usage(FILE *out)
             "reachable zone. Exit status: 0 ok, 2 bad usage or design, 1 computation failed.\n");
 }
 
-__attribute__((format(printf, 1, 2))) static int usage_error(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "tippe sweep: ");
-    vfprintf(stderr, fmt, ap);
-    fprintf(stderr, " (try tippe sweep --help)\n");
-    va_end(ap);
-    return 2;
-}
-
-static int parse_mm(const char *text, double *out)
-{
-    char *end = NULL;
-    errno = 0;
-    *out = strtod(text, &end);
-    return end != text && *end == '\0' && errno == 0 && isfinite(*out);
-}
-
-/* The plot file must have a known extension and a writable directory: checked
- * before anything is computed or written, so that bad usage leaves no file. */
-static int check_plot_path(const char *opt, const char *path)
-{
-    if (!tippe_plot_device(path))
-        return usage_error("%s %s: unsupported plot format (use a .png, .svg or .pdf file name)",
-                           opt, path);
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *slash = strrchr(dir, '/');
-    if (!slash)
-        snprintf(dir, sizeof dir, ".");
-    else if (slash == dir)
-        dir[1] = '\0';
-    else
-        *slash = '\0';
-    if (access(dir, W_OK) != 0)
-        return usage_error("%s %s: cannot write in directory '%s': %s", opt, path, dir,
-                           strerror(errno));
-    return 0;
-}
-
-/* "FIELD=FROM:TO:STEPS" */
+/* "FIELD=FROM:TO:STEPS"; FROM may exceed TO (the values then fall). */
 static int parse_vary(const char *spec, char *field, size_t n, double *from, double *to,
                       int *steps)
 {
@@ -99,36 +55,7 @@ static int parse_vary(const char *spec, char *field, size_t n, double *from, dou
         return 0;
     memcpy(field, spec, (size_t)(eq - spec));
     field[eq - spec] = '\0';
-    char *end = NULL;
-    errno = 0;
-    *from = strtod(eq + 1, &end);
-    if (end == eq + 1 || *end != ':')
-        return 0;
-    const char *p = end + 1;
-    *to = strtod(p, &end);
-    if (end == p || *end != ':')
-        return 0;
-    p = end + 1;
-    long s = strtol(p, &end, 10);
-    if (end == p || *end != '\0' || errno != 0 || !isfinite(*from) || !isfinite(*to))
-        return 0;
-    if (s < 1 || s > 10000 || (s == 1 && *from != *to))
-        return 0;
-    *steps = (int)s;
-    return 1;
-}
-
-static int print_json(cJSON *o)
-{
-    char *s = o ? cJSON_Print(o) : NULL;
-    cJSON_Delete(o);
-    if (!s) {
-        fprintf(stderr, "tippe sweep: out of memory while writing JSON\n");
-        return 1;
-    }
-    printf("%s\n", s);
-    free(s);
-    return 0;
+    return tippe_cli_parse_range(eq + 1, from, to, steps, 10000);
 }
 
 static void print_vary_table(const tippe_design *d, const tippe_sweep_vary_result *v,
@@ -188,22 +115,16 @@ static cJSON *vary_json(const tippe_design *d, const tippe_sweep_vary_result *v,
     return o;
 }
 
-static int fail(const tippe_error *err, int rc)
-{
-    fprintf(stderr, "tippe sweep: %s\n", err->msg);
-    return rc == TIPPE_EINPUT ? 2 : 1;
-}
-
 int tippe_cli_sweep(int argc, char **argv)
 {
     const char *path = NULL, *plot = NULL, *phase = NULL, *vary = NULL;
-    const char *from_text = NULL, *to_text = NULL;
-    const char *sets[MAX_SETS];
-    int n_sets = 0, json = 0;
+    const char *from_text = NULL, *to_text = NULL, *set = NULL;
+    tippe_cli_sets sets = {.n = 0};
+    int json = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char **val = NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+        if (tippe_cli_is_help(a)) {
             sweep_usage(stdout);
             return 0;
         } else if (!strcmp(a, "--json")) {
@@ -220,53 +141,53 @@ int tippe_cli_sweep(int argc, char **argv)
         } else if (!strcmp(a, "--vary")) {
             val = &vary;
         } else if (!strcmp(a, "--set")) {
-            if (n_sets == MAX_SETS)
-                return usage_error("too many --set options (at most %d)", MAX_SETS);
-            val = &sets[n_sets++];
-        } else if (a[0] == '-' && a[1] != '\0' && !(a[1] >= '0' && a[1] <= '9')) {
-            return usage_error("unknown option '%s'", a);
+            val = &set;
+        } else if (tippe_cli_is_option(a, 1)) {
+            return tippe_cli_usage_error(VERB, "unknown option '%s'", a);
         } else if (!path) {
             path = a;
             continue;
         } else {
-            return usage_error("one design file only (got also '%s'; tippe compare takes several)",
-                               a);
+            return tippe_cli_usage_error(
+                VERB, "one design file only (got also '%s'; tippe compare takes several)", a);
         }
-        if (i + 1 >= argc)
-            return usage_error("%s needs a value", a);
-        *val = argv[++i];
+        if (!(*val = tippe_cli_value(VERB, argc, argv, &i)))
+            return 2;
+        if (val == &set && tippe_cli_add_set(VERB, &sets, set))
+            return 2;
     }
     if (!path)
-        return usage_error("no design file given");
+        return tippe_cli_usage_error(VERB, "no design file given");
     double from = 0.0, to = 0.0; /* from >= to: the design's stated travel */
     int has_from = from_text != NULL, has_to = to_text != NULL;
-    if (has_from && !parse_mm(from_text, &from))
-        return usage_error("--from: '%s' is not a number of mm", from_text);
-    if (has_to && !parse_mm(to_text, &to))
-        return usage_error("--to: '%s' is not a number of mm", to_text);
-    if (has_from && has_to && !(from < to))
-        return usage_error("--from %g must be below --to %g", from, to);
-    if (plot && check_plot_path("--plot", plot))
+    if ((has_from && tippe_cli_number(VERB, "--from", from_text, "mm", &from)) ||
+        (has_to && tippe_cli_number(VERB, "--to", to_text, "mm", &to)))
         return 2;
-    if (phase && check_plot_path("--phase-plot", phase))
+    if (has_from && has_to && !(from < to))
+        return tippe_cli_usage_error(VERB, "--from %g must be below --to %g", from, to);
+    if ((plot && tippe_cli_check_output(VERB, "--plot", plot, 1)) ||
+        (phase && tippe_cli_check_output(VERB, "--phase-plot", phase, 1)))
         return 2;
     if (plot && phase && !strcmp(plot, phase))
-        return usage_error("--plot and --phase-plot name the same file '%s'", plot);
+        return tippe_cli_usage_error(VERB, "--plot and --phase-plot name the same file '%s'", plot);
     char field[256];
     double vfrom = 0, vto = 0;
     int vsteps = 0;
     if (vary && !parse_vary(vary, field, sizeof field, &vfrom, &vto, &vsteps))
-        return usage_error("--vary '%s': expected FIELD=FROM:TO:STEPS with numbers FROM, TO "
-                           "and 1 to 10000 STEPS (e.g. parts.weight.height_mm=5:15:11)",
-                           vary);
+        return tippe_cli_usage_error(
+            VERB,
+            "--vary '%s': expected FIELD=FROM:TO:STEPS with numbers FROM, TO "
+            "and 1 to 10000 STEPS (e.g. parts.weight.height_mm=5:15:11)",
+            vary);
     if (vary && phase)
-        return usage_error("--phase-plot draws one sweep; it cannot be combined with --vary");
+        return tippe_cli_usage_error(
+            VERB, "--phase-plot draws one sweep; it cannot be combined with --vary");
 
     tippe_error err = {0};
     tippe_design *d = NULL;
-    int rc = tippe_design_load(path, sets, n_sets, &d, &err);
+    int rc = tippe_design_load(path, sets.item, sets.n, &d, &err);
     if (rc)
-        return fail(&err, rc);
+        return tippe_cli_fail(VERB, &err, rc);
     /* One end given: the other is the stated travel's. */
     double tf, tt;
     tippe_design_travel_mm(d, &tf, &tt);
@@ -277,24 +198,27 @@ int tippe_cli_sweep(int argc, char **argv)
             to = tt;
         if (!(from < to)) {
             tippe_design_free(d);
-            return usage_error("the sweep Z2 = %g .. %g mm is empty (the stated travel is "
-                               "%g .. %g mm)", from, to, tf, tt);
+            return tippe_cli_usage_error(
+                VERB,
+                "the sweep Z2 = %g .. %g mm is empty (the stated travel is "
+                "%g .. %g mm)",
+                from, to, tf, tt);
         }
     }
 
     if (vary) {
         tippe_sweep_vary_result v;
-        rc = tippe_sweep_vary(path, sets, n_sets, field, vfrom, vto, vsteps, from, to, NULL, &v,
-                              &err);
+        rc = tippe_sweep_vary(path, sets.item, sets.n, field, vfrom, vto, vsteps, from, to, NULL,
+                              &v, &err);
         if (!rc && plot)
             rc = tippe_sweep_plot_vary(plot, &v, field, tippe_design_name(d), &err);
         if (!rc) {
             if (json)
-                rc = print_json(vary_json(d, &v, field));
+                rc = tippe_cli_print_json(VERB, vary_json(d, &v, field));
             else
                 print_vary_table(d, &v, field);
         } else {
-            rc = fail(&err, rc);
+            rc = tippe_cli_fail(VERB, &err, rc);
         }
         tippe_sweep_vary_free(&v);
         tippe_design_free(d);
@@ -312,9 +236,9 @@ int tippe_cli_sweep(int argc, char **argv)
             unlink(plot); /* all outputs or none */
     }
     if (rc) {
-        rc = fail(&err, rc);
+        rc = tippe_cli_fail(VERB, &err, rc);
     } else if (json) {
-        rc = print_json(tippe_sweep_json(&r, d));
+        rc = tippe_cli_print_json(VERB, tippe_sweep_json(&r, d));
     } else {
         tippe_sweep_print_table(stdout, &r, d);
     }

@@ -1,0 +1,201 @@
+/* Argument plumbing shared by the verbs of the tippe command (see cli.h), so
+ * that every verb words its usage errors, reads numbers and --set options and
+ * checks its output files the same way. */
+#include "cli.h"
+
+#include "tippe/plot.h"
+
+#include <cjson/cJSON.h>
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+int tippe_cli_usage_error(const char *verb, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "tippe %s: ", verb);
+    vfprintf(stderr, fmt, ap);
+    fprintf(stderr, " (try tippe %s --help)\n", verb);
+    va_end(ap);
+    return 2;
+}
+
+int tippe_cli_fail(const char *verb, const tippe_error *err, int rc)
+{
+    fprintf(stderr, "tippe %s: %s\n", verb, err->msg);
+    return rc == TIPPE_EINPUT ? 2 : 1;
+}
+
+int tippe_cli_is_help(const char *arg)
+{
+    return !strcmp(arg, "--help") || !strcmp(arg, "-h");
+}
+
+int tippe_cli_is_option(const char *arg, int numbers_are_values)
+{
+    if (arg[0] != '-' || arg[1] == '\0')
+        return 0; /* "-" alone is taken as a file name */
+    return !(numbers_are_values && arg[1] >= '0' && arg[1] <= '9');
+}
+
+const char *tippe_cli_value(const char *verb, int argc, char **argv, int *i)
+{
+    if (*i + 1 >= argc) {
+        tippe_cli_usage_error(verb, "%s needs a value", argv[*i]);
+        return NULL;
+    }
+    return argv[++*i];
+}
+
+int tippe_cli_option(const char *verb, int argc, char **argv, int *i, const char *name, int eq,
+                     const char **value)
+{
+    const char *a = argv[*i];
+    size_t len = strlen(name);
+    if (strncmp(a, name, len))
+        return 0;
+    if (a[len] == '\0') {
+        *value = tippe_cli_value(verb, argc, argv, i);
+        return 1;
+    }
+    if (eq && a[len] == '=') {
+        *value = a + len + 1;
+        return 1;
+    }
+    return 0;
+}
+
+int tippe_cli_parse_double(const char *text, double *out)
+{
+    /* No errno test: an underflow to 0 or a subnormal is still the number the
+     * user meant, and an overflow is caught as infinite. */
+    char *end = NULL;
+    *out = strtod(text, &end);
+    return end != text && *end == '\0' && isfinite(*out);
+}
+
+int tippe_cli_parse_long(const char *text, long lo, long hi, long *out)
+{
+    char *end = NULL;
+    errno = 0;
+    long v = strtol(text, &end, 10);
+    if (end == text || *end != '\0' || errno != 0 || v < lo || v > hi)
+        return 0;
+    *out = v;
+    return 1;
+}
+
+int tippe_cli_parse_range(const char *text, double *from, double *to, int *steps, int max_steps)
+{
+    char buf[256];
+    if (strlen(text) >= sizeof buf)
+        return 0;
+    snprintf(buf, sizeof buf, "%s", text);
+    char *c1 = strchr(buf, ':');
+    if (!c1)
+        return 0;
+    *c1 = '\0';
+    char *c2 = strchr(c1 + 1, ':');
+    if ((c2 != NULL) != (steps != NULL))
+        return 0;
+    if (c2)
+        *c2 = '\0';
+    if (!tippe_cli_parse_double(buf, from) || !tippe_cli_parse_double(c1 + 1, to))
+        return 0;
+    if (steps) {
+        long s;
+        if (!tippe_cli_parse_long(c2 + 1, 1, max_steps, &s) || (s == 1 && *from != *to))
+            return 0;
+        *steps = (int)s;
+    }
+    return 1;
+}
+
+int tippe_cli_number(const char *verb, const char *option, const char *text, const char *unit,
+                     double *out)
+{
+    if (tippe_cli_parse_double(text, out))
+        return 0;
+    return tippe_cli_usage_error(verb, "%s: '%s' is not a number%s%s", option, text,
+                                 unit ? " of " : "", unit ? unit : "");
+}
+
+int tippe_cli_sets_add(tippe_cli_sets *s, const char *field, const char *value)
+{
+    if (s->n == TIPPE_CLI_MAX_SETS)
+        return -1;
+    if (field) {
+        snprintf(s->text[s->n], sizeof s->text[s->n], "%s=%s", field, value);
+        s->item[s->n] = s->text[s->n];
+    } else {
+        s->item[s->n] = value;
+    }
+    s->n++;
+    return 0;
+}
+
+int tippe_cli_add_set(const char *verb, tippe_cli_sets *s, const char *value)
+{
+    if (tippe_cli_sets_add(s, NULL, value))
+        return tippe_cli_usage_error(verb, "too many --set options (at most %d)",
+                                     TIPPE_CLI_MAX_SETS);
+    return 0;
+}
+
+int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot)
+{
+    if (plot && !tippe_plot_device(path))
+        return tippe_cli_usage_error(
+            verb, "%s %s: unsupported plot format (use a .png, .svg or .pdf file name)", option,
+            path);
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else if (slash == dir)
+        dir[1] = '\0';
+    else
+        *slash = '\0';
+    if (access(dir, W_OK) != 0)
+        return tippe_cli_usage_error(verb, "%s %s: cannot write in directory '%s': %s", option,
+                                     path, dir, strerror(errno));
+    return 0;
+}
+
+int tippe_cli_print_json(const char *verb, cJSON *o)
+{
+    char *s = o ? cJSON_Print(o) : NULL;
+    cJSON_Delete(o);
+    if (!s) {
+        fprintf(stderr, "tippe %s: out of memory while writing JSON\n", verb);
+        return 1;
+    }
+    printf("%s\n", s);
+    free(s);
+    return 0;
+}
+
+void tippe_cli_json_accuracy(cJSON *o, const char *preset, const tippe_dynamics_accuracy *acc)
+{
+    cJSON *a = cJSON_AddObjectToObject(o, "accuracy");
+    if (a) {
+        cJSON_AddStringToObject(a, "preset", preset);
+        cJSON_AddStringToObject(a, "stepper", acc->stepper);
+        cJSON_AddNumberToObject(a, "rtol", acc->rtol);
+    }
+}
+
+double tippe_cli_now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}

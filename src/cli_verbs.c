@@ -1,0 +1,35 @@
+/* The verbs of the tippe command, one table for both front ends: src/main.c
+ * (tippe) and src/mpi/main_mpi.c (tippe-mpi). A new verb is one line here and
+ * its prototype in cli.h.
+ *
+ * tippe-mpi runs every verb, but distributes only those with mpi_all_ranks set
+ * (launch and map, which share their launches among the ranks in
+ * src/cli_launch.c); every other verb runs on rank 0 alone, so that it prints
+ * and writes its files once. */
+#include "cli.h"
+
+#include <string.h>
+
+const tippe_cli_verb tippe_cli_verbs[] = {
+    {"eval", tippe_cli_eval, "mass, centre of mass and moments of a design at one Z2", 0},
+    {"classify", tippe_cli_classify, "group of Theorem 5.1 and spin thresholds for A/C, eps/R",
+     0},
+    {"simulate", tippe_cli_simulate, "integrate one launch of a scenario: tip, no tip or hang",
+     0},
+    {"sweep", tippe_cli_sweep, "zones of a design along the travel of its weight, plots", 0},
+    {"compare", tippe_cli_compare, "zone tables of several designs side by side", 0},
+    {"launch", tippe_cli_launch, "many hand launches at one Z2: outcome counts against theory",
+     1},
+    {"map", tippe_cli_map, "outcome of hand launches over a grid of Z2 and spin, heat map", 1},
+    {"check", tippe_cli_check, "one central hand launch at one Z2 beside the calculator's zone",
+     0},
+};
+const int tippe_cli_n_verbs = (int)(sizeof tippe_cli_verbs / sizeof tippe_cli_verbs[0]);
+
+const tippe_cli_verb *tippe_cli_find_verb(const char *name)
+{
+    for (int i = 0; i < tippe_cli_n_verbs; i++)
+        if (!strcmp(name, tippe_cli_verbs[i].name))
+            return &tippe_cli_verbs[i];
+    return NULL;
+}
