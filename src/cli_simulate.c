@@ -160,12 +160,16 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                r->t_verdict, f->theta, f->theta * 180 / M_PI, f->spin, f->theta_dot);
         break;
     case TIPPE_VERDICT_UNDECIDED:
-        printf("verdict   undecided: not settled by t_end = %.6g s; theta %.6g rad (%.2f deg), "
+        printf("verdict   undecided: not settled by %s = %.6g s; theta %.6g rad (%.2f deg), "
                "spin %.6g rad/s, phi_dot %.6g rad/s, contact speed %.3g m/s\n",
-               r->t_verdict, f->theta, f->theta * 180 / M_PI, f->spin, f->phi_dot,
-               f->slip_speed);
+               r->budget_exhausted ? "t" : "t_end", r->t_verdict, f->theta, f->theta * 180 / M_PI,
+               f->spin, f->phi_dot, f->slip_speed);
         break;
     }
+    if (r->budget_exhausted)
+        printf("budget    exhausted: the integration stopped at its step budget (%ld accepted "
+               "steps) at t = %.6g s, before t_end = %.6g s\n",
+               r->steps, r->last.t, sc->t_end);
     if (!tc->ok) {
         printf("theory    no prediction: %s\n", tc->error);
     } else {
@@ -252,6 +256,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
     cJSON_AddNumberToObject(o, "rhs_evals", (double)r->rhs_evals);
     cJSON_AddNumberToObject(o, "steps", (double)r->steps);
     cJSON_AddNumberToObject(o, "rejected_steps", (double)r->rejected_steps);
+    cJSON_AddBoolToObject(o, "budget_exhausted", r->budget_exhausted);
     cJSON_AddNumberToObject(o, "state_dim", r->state_dim);
     cJSON_AddNumberToObject(o, "elapsed_s", elapsed_s);
     tippe_cli_json_accuracy(o, sc->accuracy_name, &sc->accuracy);
