@@ -234,8 +234,11 @@ static int rhs(double t, const double y[], double f[], void *params)
     c->nevals++;
     contact o;
     if (contact_eval(c, y, &o)) {
+        /* Not GSL_EBADFUNC: a trial stage of a too-long step can leave the
+         * region where eq 3.19 is defined, and GSL then retries with a shorter
+         * step. Only if the step shrinks to nothing is the model at fault. */
         c->bad_contact = 1;
-        return GSL_EBADFUNC;
+        return GSL_EDOM;
     }
     if (o.Rn < c->min_stage_Rn)
         c->min_stage_Rn = o.Rn;
@@ -686,6 +689,7 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
         const double t_prev = t;
         memcpy(y_prev, y, c.dim * sizeof *y);
         c.min_stage_Rn = INFINITY;
+        c.bad_contact = 0;
         int s = gsl_odeiv2_evolve_apply(drv->e, drv->c, drv->s, &sys, &t, t_target, &h, y);
         if (s != GSL_SUCCESS) {
             if (c.bad_contact)
