@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static const char *const VERB = "simulate";
 
@@ -356,8 +357,10 @@ int tippe_cli_simulate(int argc, char **argv)
     }
     if (!scenario)
         return tippe_cli_usage_error(VERB, "no scenario file given");
-    if (plot && !tippe_plot_device(plot))
-        return tippe_cli_usage_error(VERB, "--plot %s: use a .png, .svg or .pdf file name", plot);
+    /* Before the integration, so that a bad output path costs nothing. */
+    if ((csv && tippe_cli_check_output(VERB, "--csv", csv, 0)) ||
+        (plot && tippe_cli_check_output(VERB, "--plot", plot, 1)))
+        return 2;
 
     tippe_scenario sc;
     tippe_error err;
@@ -401,8 +404,11 @@ int tippe_cli_simulate(int argc, char **argv)
     int status = 0;
     if (csv && (rc = write_csv(csv, &buf, &err)) != 0)
         status = tippe_cli_fail(VERB, &err, rc);
-    if (!status && plot && (rc = tippe_plot_sim(plot, &sc, &res, buf.s, buf.n, &err)) != 0)
+    if (!status && plot && (rc = tippe_plot_sim(plot, &sc, &res, buf.s, buf.n, &err)) != 0) {
         status = tippe_cli_fail(VERB, &err, rc);
+        if (csv)
+            unlink(csv); /* all the outputs asked for, or none */
+    }
     if (!status) {
         if (json) {
             status = tippe_cli_print_json(VERB, to_json(&sc, &res, &tc, elapsed));
