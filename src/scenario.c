@@ -81,6 +81,7 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
         }
         obj = next;
         key = dot + 1;
+        *dot = '.'; /* field stays whole for messages; key ends at the next '\0' */
     }
     if (!key[0])
         return tippe_error_set(c->err, TIPPE_EINPUT, "%s: override '%s': empty field name",

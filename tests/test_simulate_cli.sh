@@ -122,6 +122,8 @@ mutate "$tmp/x.json" 'd["initial"]["phi_dot"] = "sideways"'
 expect_fail "bad phi_dot rule" 2 "initial.phi_dot" "sideways" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["initial"]["theta"] = 3.1; d["initial"]["phi_dot"] = "s1"; d["initial"]["spin"] = 0.1'
 expect_fail "s1 without a real root" 2 "initial.phi_dot" "use s3" -- simulate "$tmp/x.json"
+expect_fail "override through a number names the whole path" 2 "'initial.theta' is a number" \
+    -- simulate "$base" --set initial.theta.x=1
 mutate "$tmp/x.json" 'd["initial"]["wobble"] = 1'
 expect_fail "unknown initial key" 2 "initial.wobble" "unknown key" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["top"]["eps"] = 1.0'
