@@ -14,6 +14,7 @@
  * "overlap" means sharing volume more than TOL_MM deep. docs/design-format.md
  * states the resolution this gives. */
 #include "tippe/design.h"
+#include "tippe/error.h"
 #include "tippe/geometry.h"
 #include "tippe/json.h"
 
@@ -1082,7 +1083,7 @@ int tippe_design_load(const char *path, const char *const *overrides, int n_over
                       tippe_design **out, tippe_error *err)
 {
     /* The geometry module may call GSL: report, never abort. */
-    gsl_set_error_handler_off();
+    tippe_gsl_errors_as_codes();
     *out = NULL;
     if (!path)
         return tippe_error_set(err, TIPPE_EINPUT, "no design file given");

@@ -2,6 +2,7 @@
  * the energy and Jellett monitors, the lost-contact event and the settling
  * verdict. docs/dynamics.md derives the equations and documents each criterion. */
 #include "tippe/dynamics.h"
+#include "tippe/error.h"
 
 #include <float.h>
 #include <gsl/gsl_errno.h>
@@ -592,7 +593,7 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
                        tippe_error *err)
 {
 #pragma omp critical(tippe_gsl_error_handler)
-    gsl_set_error_handler_off();
+    tippe_gsl_errors_as_codes();
 
     memset(res, 0, sizeof *res);
     res->verdict = TIPPE_VERDICT_UNDECIDED;

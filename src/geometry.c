@@ -16,6 +16,7 @@
  * the inertia tensor about the centre of mass is diag(A, A, C) for an axially
  * symmetric body (section 3, "I_x = I_y := A and I_z := C"). */
 #include "tippe/geometry.h"
+#include "tippe/error.h"
 
 #include <float.h>
 #include <math.h>
@@ -432,7 +433,7 @@ tippe_moments tippe_torus(double centre_radius, double radial_semi, double axial
     int inside = !clip || hypot(Rc + p, fabs(z_centre) + q) <= ball_radius;
     if (p <= Rc && inside)
         return torus_closed(Rc, p, q, z_centre);
-    gsl_set_error_handler_off(); /* GSL reports through return codes, never aborts */
+    tippe_gsl_errors_as_codes();
     torus_geom g = {Rc, p, q, z_centre, inside ? 0.0 : ball_radius};
     return torus_piecewise(&g);
 }

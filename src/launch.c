@@ -1,6 +1,7 @@
 /* Hand launches: distributions, per-launch generators, OpenMP runs, tallies
  * and Wilson intervals (tippe/launch.h, docs/launch.md). */
 #include "tippe/launch.h"
+#include "tippe/error.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_randist.h>
@@ -188,7 +189,7 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
                              tippe_error *err)
 {
 #pragma omp critical(tippe_gsl_error_handler)
-    gsl_set_error_handler_off();
+    tippe_gsl_errors_as_codes();
     rec->ic = *ic;
     rec->verdict = TIPPE_VERDICT_UNDECIDED;
     rec->theory_ok = 0;
@@ -249,7 +250,7 @@ int tippe_launch_run(const tippe_launch_plan *plan, const tippe_launch_options *
                      tippe_error *err)
 {
 #pragma omp critical(tippe_gsl_error_handler)
-    gsl_set_error_handler_off();
+    tippe_gsl_errors_as_codes();
     if (!plan || plan->n_groups < 1 || plan->per_group < 1 || !plan->tops)
         return tippe_error_set(err, TIPPE_EINPUT, "empty launch plan");
     if (!(from >= 0 && from <= to && to <= tippe_launch_plan_total(plan)))

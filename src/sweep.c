@@ -1,5 +1,6 @@
 /* Zones of a top along the travel of its moving weight (see tippe/sweep.h). */
 #include "tippe/sweep.h"
+#include "tippe/error.h"
 
 #include <cjson/cJSON.h>
 #include <gsl/gsl_errno.h>
@@ -317,7 +318,7 @@ int tippe_sweep_run(const tippe_sweep_path *path, double from_mm, double to_mm,
                     const tippe_sweep_options *opt, tippe_sweep_result *out, tippe_error *err)
 {
     memset(out, 0, sizeof *out);
-    gsl_set_error_handler_off();
+    tippe_gsl_errors_as_codes();
     tippe_sweep_options o;
     tippe_sweep_options_default(&o);
     if (opt)

@@ -12,6 +12,7 @@
  * branch is stable where J^2 increases with theta, i.e. where Q(x) < 0; the tests
  * check that this rule reproduces Theorem 5.1 in every subgroup. */
 #include "tippe/theory.h"
+#include "tippe/error.h"
 
 #include <float.h>
 #include <math.h>
@@ -411,7 +412,7 @@ static void add_state(tippe_theory_prediction *out, tippe_final_kind kind, doubl
 int tippe_theory_predict(const tippe_top *top, double g, double J, tippe_theory_prediction *out,
                          tippe_error *err)
 {
-    gsl_set_error_handler_off();
+    tippe_gsl_errors_as_codes();
     int rc = check_top(top, g, err);
     if (rc)
         return rc;

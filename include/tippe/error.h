@@ -23,4 +23,9 @@ typedef struct {
 int tippe_error_set(tippe_error *err, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
+/* Turns GSL's abort-on-error handler off, once per process and thread-safely:
+ * every library entry point that calls GSL calls this first, and then checks
+ * GSL's return codes itself (GSL's default handler would abort the process). */
+void tippe_gsl_errors_as_codes(void);
+
 #endif
