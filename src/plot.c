@@ -402,3 +402,13 @@ char *tippe_plot_escape(const char *s, char *buf, size_t size)
     buf[j] = '\0';
     return buf;
 }
+
+unsigned tippe_plot_pale(unsigned rgb, double a)
+{
+    unsigned out = 0;
+    for (int s = 0; s <= 16; s += 8) {
+        double c = (rgb >> s) & 0xff;
+        out |= (unsigned)lround(255.0 * (1.0 - a) + c * a) << s;
+    }
+    return out;
+}

@@ -25,17 +25,6 @@ static const char *const verdict_key[TIPPE_LAUNCH_N_VERDICTS] = {
     "lost_contact (lifts off)", "undecided by t_end",
 };
 
-/* rgb blended over white with weight a: opaque, so that cells show no seams. */
-static unsigned pale(unsigned rgb, double a)
-{
-    unsigned out = 0;
-    for (int s = 0; s <= 16; s += 8) {
-        double c = (rgb >> s) & 0xff;
-        out |= (unsigned)lround(255.0 * (1.0 - a) + c * a) << s;
-    }
-    return out;
-}
-
 static double luminance(unsigned rgb)
 {
     return (0.299 * ((rgb >> 16) & 0xff) + 0.587 * ((rgb >> 8) & 0xff) + 0.114 * (rgb & 0xff)) /
@@ -141,7 +130,7 @@ int tippe_launch_plot_map(const char *file, const tippe_launch_map *map, const t
                 continue;
             int v = tippe_launch_dominant(c);
             double share = (double)c->counts[v] / (double)c->n;
-            unsigned rgb = pale(verdict_rgb[v], share);
+            unsigned rgb = tippe_plot_pale(verdict_rgb[v], share);
             present[v] = 1;
             double x0 = xmin + i * cell_w, y0 = ymin + j * cell_h;
             tippe_plot_rect(x0, x0 + cell_w, y0, y0 + cell_h, rgb, 1.0);
@@ -200,7 +189,7 @@ int tippe_launch_plot_map(const char *file, const tippe_launch_map *map, const t
             keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_BOX, verdict_key[v], verdict_rgb[v], 1.0,
                                           0, 0};
     keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_BOX, "paler: smaller share (50%)",
-                                  pale(verdict_rgb[1], 0.5), 1.0, 0, 0};
+                                  tippe_plot_pale(verdict_rgb[1], 0.5), 1.0, 0, 0};
     if (have_zones && zones.n_zones > 1)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_LINE, "zone boundary", 0x000000u, 1, 2.2,
                                       TIPPE_PLOT_SOLID};

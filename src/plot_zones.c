@@ -30,17 +30,6 @@ static unsigned group_rgb(tippe_group g)
     return 0x999999u;
 }
 
-/* rgb blended over white: opaque, so that touching fills show no seams. */
-static unsigned pale(unsigned rgb, double a)
-{
-    unsigned out = 0;
-    for (int s = 0; s <= 16; s += 8) {
-        double c = (rgb >> s) & 0xff;
-        out |= (unsigned)lround(255.0 * (1.0 - a) + c * a) << s;
-    }
-    return out;
-}
-
 #define SHADE 0.42
 
 static const char *const group_text[] = {
@@ -155,7 +144,7 @@ int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
     for (int i = 0; i < r->n_zones; i++) {
         const tippe_sweep_zone *zn = &r->zones[i];
         present[zn->group] = 1;
-        tippe_plot_rect(zn->z2_from_mm, zn->z2_to_mm, ymin, ymax, pale(group_rgb(zn->group), SHADE),
+        tippe_plot_rect(zn->z2_from_mm, zn->z2_to_mm, ymin, ymax, tippe_plot_pale(group_rgb(zn->group), SHADE),
                         1.0);
     }
     int beyond = 0;
@@ -268,7 +257,7 @@ int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
     for (int g = 0; g < 6; g++)
         if (present[g])
             keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_BOX, group_text[g],
-                                          pale(group_rgb((tippe_group)g), SHADE), 1.0, 0, 0};
+                                          tippe_plot_pale(group_rgb((tippe_group)g), SHADE), 1.0, 0, 0};
     if (beyond) {
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "beyond physical travel", C_TRAVEL,
                                       1.0, 0, 0};
@@ -411,7 +400,7 @@ static void draw_regions(double e0, double e1, double k0, double k1, int label, 
                         int r = run_of(&cols[c], (tippe_group)g, q);
                         px[n] = ec[c], py[n++] = cols[c].hi[r];
                     }
-                    tippe_plot_polygon(n, px, py, pale(group_rgb((tippe_group)g), SHADE), 1.0);
+                    tippe_plot_polygon(n, px, py, tippe_plot_pale(group_rgb((tippe_group)g), SHADE), 1.0);
                 }
                 i = j;
             }
@@ -566,7 +555,7 @@ int tippe_sweep_plot_phase(const char *file, const tippe_sweep_path *path,
                                   TIPPE_PLOT_DASHED};
     for (int g = 0; g < 6; g++)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_BOX, group_text[g],
-                                      pale(group_rgb((tippe_group)g), SHADE), 1.0, 0, 0};
+                                      tippe_plot_pale(group_rgb((tippe_group)g), SHADE), 1.0, 0, 0};
     tippe_plot_legend(keys, nk, "outside", 1, 0.72);
     free(pe);
     free(within);
@@ -601,7 +590,7 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
             const tippe_sweep_zone *zn = &r->zones[j];
             present[zn->group] = 1;
             tippe_plot_rect(c0, c1, zn->z2_from_mm, zn->z2_to_mm,
-                            pale(group_rgb(zn->group), 0.75), 1.0);
+                            tippe_plot_pale(group_rgb(zn->group), 0.75), 1.0);
             if (!zn->within_travel) {
                 tippe_plot_hatch(c0, c1, zn->z2_from_mm, zn->z2_to_mm, C_TRAVEL);
                 beyond = 1;
@@ -645,7 +634,7 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
     for (int g = 0; g < 6; g++)
         if (present[g])
             keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_BOX, group_text[g],
-                                          pale(group_rgb((tippe_group)g), 0.75), 1.0, 0, 0};
+                                          tippe_plot_pale(group_rgb((tippe_group)g), 0.75), 1.0, 0, 0};
     if (beyond)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "beyond physical travel", C_TRAVEL,
                                       1.0, 0, 0};

@@ -56,6 +56,9 @@ enum { TIPPE_PLOT_SOLID = 1, TIPPE_PLOT_DASHED = 3, TIPPE_PLOT_DOTTED = 2 };
 void tippe_plot_line(int n, const double *x, const double *y, unsigned rgb, double width,
                      int style);
 void tippe_plot_polygon(int n, const double *x, const double *y, unsigned rgb, double alpha);
+/* rgb (0xRRGGBB) blended over white with weight a in [0, 1]: an opaque pale
+ * shade, so that touching fills show no seams where a translucent one would. */
+unsigned tippe_plot_pale(unsigned rgb, double a);
 void tippe_plot_rect(double x0, double x1, double y0, double y1, unsigned rgb, double alpha);
 /* Hatches the rectangle with diagonal lines (for "not reachable" regions). */
 void tippe_plot_hatch(double x0, double x1, double y0, double y1, unsigned rgb);
