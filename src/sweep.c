@@ -671,7 +671,7 @@ void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe
             where, s.has_I ? "I " : "", s.has_II ? "II " : "", s.has_III ? "III" : "",
             !s.has_I && !s.has_II && !s.has_III ? "none" : "");
     if (s.narrowest_family)
-        fprintf(out, "narrowest reachable zone: %.3f mm (group %s)\n", s.narrowest_zone_mm,
+        fprintf(out, "narrowest reachable zone: %.3f mm (group %s; its subgroups counted together)\n", s.narrowest_zone_mm,
                 s.narrowest_family);
 }
 
