@@ -696,6 +696,20 @@ static void add_pair(cJSON *o, const char *key, double a, double b, int *ok)
     add_obj(o, cJSON_CreateDoubleArray(v, 2), key, ok);
 }
 
+/* The paper's zone names: group I is one zone whatever its subgroup. */
+static const char *zone_label(tippe_group g)
+{
+    return (g == TIPPE_GROUP_IA || g == TIPPE_GROUP_IB) ? "I" : tippe_group_name(g);
+}
+
+static void add_ends_on(cJSON *zo, unsigned boundaries, int *ok)
+{
+    cJSON *ends = add_obj(zo, cJSON_CreateArray(), "ends_on", ok);
+    for (int b = 0; ends && b < NB; b++)
+        if (boundaries & (1u << b))
+            add_obj(ends, cJSON_CreateString(boundary_names[b]), NULL, ok);
+}
+
 cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
 {
     cJSON *o = cJSON_CreateObject();
@@ -712,10 +726,51 @@ cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
     add_pair(o, "sweep_mm", r->from_mm, r->to_mm, &ok);
     if (r->has_travel)
         add_pair(o, "physical_travel_mm", r->travel_from_mm, r->travel_to_mm, &ok);
+    /* "zones": one entry per run of one zone label (I, IIa, IIb, IIc, III: the
+     * paper's zones, Ia and Ib joined as I) and one side of the balanced point,
+     * however the run was split (Ia|Ib, the ends of the physical travel).
+     * "intervals": the runs as found, with subgroup and travel splits. */
     cJSON *zones = add_obj(o, cJSON_CreateArray(), "zones", &ok);
-    for (int i = 0; zones && ok && i < r->n_zones; i++) {
-        const tippe_sweep_zone *z = &r->zones[i];
+    for (int i = 0; zones && ok && i < r->n_zones;) {
+        const char *label = zone_label(r->zones[i].group);
+        int j = i + 1;
+        while (j < r->n_zones && !strcmp(zone_label(r->zones[j].group), label) &&
+               r->zones[j].com_side == r->zones[i].com_side)
+            j++;
         cJSON *zo = add_obj(zones, cJSON_CreateObject(), NULL, &ok);
+        if (!zo)
+            break;
+        const tippe_sweep_zone *first = &r->zones[i], *last = &r->zones[j - 1];
+        add_obj(zo, cJSON_CreateString(label), "group", &ok);
+        cJSON *subs = add_obj(zo, cJSON_CreateArray(), "subgroups", &ok);
+        double reach_from = INFINITY, reach_to = -INFINITY;
+        int all_within = 1;
+        for (int k = i; subs && k < j; k++) {
+            if (k == i || r->zones[k].group != r->zones[k - 1].group)
+                add_obj(subs, cJSON_CreateString(tippe_group_name(r->zones[k].group)), NULL, &ok);
+            if (r->zones[k].within_travel) {
+                reach_from = fmin(reach_from, r->zones[k].z2_from_mm);
+                reach_to = fmax(reach_to, r->zones[k].z2_to_mm);
+            } else {
+                all_within = 0;
+            }
+        }
+        add_obj(zo, cJSON_CreateNumber(first->z2_from_mm), "z2_from_mm", &ok);
+        add_obj(zo, cJSON_CreateNumber(last->z2_to_mm), "z2_to_mm", &ok);
+        add_obj(zo, cJSON_CreateNumber(last->z2_to_mm - first->z2_from_mm), "width_mm", &ok);
+        add_obj(zo, cJSON_CreateBool(all_within), "within_travel", &ok);
+        if (reach_from <= reach_to)
+            add_pair(zo, "reachable_mm", reach_from, reach_to, &ok);
+        else
+            add_obj(zo, cJSON_CreateNull(), "reachable_mm", &ok);
+        add_obj(zo, cJSON_CreateNumber(first->com_side), "com_side", &ok);
+        add_ends_on(zo, last->to_boundaries, &ok);
+        i = j;
+    }
+    cJSON *intervals = add_obj(o, cJSON_CreateArray(), "intervals", &ok);
+    for (int i = 0; intervals && ok && i < r->n_zones; i++) {
+        const tippe_sweep_zone *z = &r->zones[i];
+        cJSON *zo = add_obj(intervals, cJSON_CreateObject(), NULL, &ok);
         if (!zo)
             break;
         add_obj(zo, cJSON_CreateString(tippe_group_name(z->group)), "group", &ok);
@@ -725,10 +780,7 @@ cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
         add_obj(zo, cJSON_CreateNumber(z->z2_to_mm - z->z2_from_mm), "width_mm", &ok);
         add_obj(zo, cJSON_CreateBool(z->within_travel), "within_travel", &ok);
         add_obj(zo, cJSON_CreateNumber(z->com_side), "com_side", &ok);
-        cJSON *ends = add_obj(zo, cJSON_CreateArray(), "ends_on", &ok);
-        for (int b = 0; ends && b < NB; b++)
-            if (z->to_boundaries & (1u << b))
-                add_obj(ends, cJSON_CreateString(boundary_names[b]), NULL, &ok);
+        add_ends_on(zo, z->to_boundaries, &ok);
     }
     cJSON *touches = add_obj(o, cJSON_CreateArray(), "touches", &ok);
     cJSON *crossings = add_obj(o, cJSON_CreateArray(), "crossings", &ok);

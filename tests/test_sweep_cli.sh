@@ -26,8 +26,11 @@ assert o["sweep_mm"] == o["travel_mm"], "default sweep is the stated travel"
 assert z[0]["z2_from_mm"] == o["sweep_mm"][0] and z[-1]["z2_to_mm"] == o["sweep_mm"][1]
 for a, b in zip(z, z[1:]):
     assert a["z2_to_mm"] == b["z2_from_mm"], "zones must meet"
+for a, b in zip(z, z[1:]):  # a zone is a whole run of one group on one side of eps = 0
+    assert a["group"] != b["group"] or a["com_side"] != b["com_side"], (a, b)
 for x in z:
-    assert x["group"] in ("Ia", "Ib", "IIa", "IIb", "IIc", "III")
+    assert x["group"] in ("I", "IIa", "IIb", "IIc", "III")  # the zone names
+    assert all(s in ("Ia", "Ib") if x["group"] == "I" else s == x["group"] for s in x["subgroups"])
     assert isinstance(x["within_travel"], bool)
     # width is to - from; 1e-12 mm is far below the 1e-6 mm the zone ends carry
     assert abs(x["width_mm"] - (x["z2_to_mm"] - x["z2_from_mm"])) < 1e-12
@@ -39,8 +42,12 @@ check "a zone beyond the physical travel is marked" python3 - "$tmp/nylon.json" 
 import json, sys
 o = json.load(open(sys.argv[1]))
 hi = o["physical_travel_mm"][1]
-beyond = [x for x in o["zones"] if not x["within_travel"]]
+beyond = [x for x in o["intervals"] if not x["within_travel"]]
 assert beyond and all(x["z2_from_mm"] >= hi - 1e-9 for x in beyond), beyond
+# zones: the part of each within the physical travel; none reaches past it
+for x in o["zones"]:
+    assert x["reachable_mm"] is None or x["reachable_mm"][1] <= hi + 1e-9, x
+assert [x["group"] for x in o["zones"]][-1] == "III" and o["zones"][-1]["reachable_mm"] is None
 EOF
 
 # --- plots ---------------------------------------------------------------------

@@ -154,8 +154,12 @@ void tippe_sweep_vary_free(tippe_sweep_vary_result *v);
 /* Reports. d may be NULL for a path that is not a design. */
 struct cJSON;
 /* The sweep as a cJSON object: design, file, sweep_mm, travel_mm,
- * physical_travel_mm, zones [{group, family, z2_from_mm, z2_to_mm, width_mm,
- * within_travel, com_side, ends_on}], touches [{boundary, z2_mm}], crossings
+ * physical_travel_mm, zones [{group ("I", "IIa", "IIb", "IIc", "III": Ia and Ib
+ * joined), subgroups, z2_from_mm, z2_to_mm, width_mm, within_travel (all of it),
+ * reachable_mm (the part within the physical travel, or null), com_side,
+ * ends_on}], intervals (the zones as found: subgroup in group, family, split at
+ * the physical travel; z2_from_mm, z2_to_mm, width_mm, within_travel, com_side,
+ * ends_on), touches [{boundary, z2_mm}], crossings
  * [{boundary, z2_mm, ends_zone}] (every crossing, also those that change no group),
  * three_in_one, narrowest_zone_mm (null if nothing is reachable),
  * narrowest_zone_family. NULL if out of memory. */
