@@ -121,8 +121,10 @@ static cJSON *to_json(const tippe_theory_class *c, const tippe_theory_thresholds
     cJSON *o = cJSON_CreateObject();
     if (!o)
         return NULL;
-    int ok = cJSON_AddStringToObject(o, "group", tippe_group_name(c->group)) &&
-             cJSON_AddStringToObject(o, "main_group", tippe_group_family(c->group)) &&
+    /* Theorem 5.1's words: groups I, II, III; subgroups Ia .. IIc (III has none
+     * of its own and is its own category). */
+    int ok = cJSON_AddStringToObject(o, "group", tippe_group_family(c->group)) &&
+             cJSON_AddStringToObject(o, "subgroup", tippe_group_name(c->group)) &&
              (c->boundary ? cJSON_AddStringToObject(o, "boundary", c->boundary) != NULL
                           : cJSON_AddNullToObject(o, "boundary") != NULL) &&
              add_num(o, "A_over_C", 1, c->A_over_C) && add_num(o, "eps_over_R", 1, c->eps_over_R) &&

@@ -40,7 +40,7 @@ check "theta_b in deg and rad" grep -q "theta_b.*deg.*rad" "$tmp/text2"
 "$tippe" classify --A-over-C 0.92 --eps-over-R 0.3 --m 0.02 --R 0.02 --C 3e-6 --json >"$tmp/a.json"
 check "json exits 0" [ $? -eq 0 ]
 check "json parses, Figure 12 top is IIb" json_ok "$tmp/a.json" \
-    "o['group']=='IIb' and o['main_group']=='II' and o['boundary'] is None"
+    "o['subgroup']=='IIb' and o['group']=='II' and o['boundary'] is None"
 # IIb by the line: A/C - 1 > -(eps/R)^2, so b is not real and null
 check "json: b null above the -e^2 line" json_ok "$tmp/a.json" \
     "o['A_over_C']-1 > -o['eps_over_R']**2 and o['b'] is None and o['theta_b_rad'] is None"
@@ -51,14 +51,14 @@ check "json: thresholds positive" json_ok "$tmp/a.json" \
     "o['n_minus_rad_s']>0 and o['n_plus_rad_s']>0 and o['g_m_s2']>9.8"
 "$tippe" classify --A-over-C 0.55 --eps-over-R 0.5 --json >"$tmp/b.json"
 check "json: Figure 14 top is IIa with |b| < 1 and theta_b = acos b" json_ok "$tmp/b.json" \
-    "o['group']=='IIa' and abs(o['b'])<1 and abs(math.cos(o['theta_b_rad'])-o['b'])<1e-14"
+    "o['subgroup']=='IIa' and abs(o['b'])<1 and abs(math.cos(o['theta_b_rad'])-o['b'])<1e-14"
 check "json: no thresholds without m, R, C" json_ok "$tmp/b.json" "'n_minus_rad_s' not in o"
 "$tippe" classify --A-over-C 1.5 --eps-over-R 0.3 --m 1 --R 1 --C 1 --json >"$tmp/c.json"
 check "json: group III has no n+ (null) and theta_c = acos(c)" json_ok "$tmp/c.json" \
-    "o['group']=='III' and o['n_plus_rad_s'] is None and o['n_star_rad_s'] is None and abs(math.cos(o['theta_c_rad'])-o['c'])<1e-14"
+    "o['group']=='III' and o['subgroup']=='III' and o['n_plus_rad_s'] is None and o['n_star_rad_s'] is None and abs(math.cos(o['theta_c_rad'])-o['c'])<1e-14"
 "$tippe" classify --A-over-C 0.7 --eps-over-R 0.3 --json >"$tmp/d.json"
 check "json: boundary named and side documented (I)" json_ok "$tmp/d.json" \
-    "o['boundary']=='A/C-1=-eps/R' and o['main_group']=='I' and o['theta_c_rad']==0"
+    "o['boundary']=='A/C-1=-eps/R' and o['group']=='I' and o['theta_c_rad']==0"
 "$tippe" classify --A-over-C 1 --eps-over-R 0 --m 1 --R 1 --C 1 --json >"$tmp/e.json"
 check "json: balanced sphere, finite or null" json_ok "$tmp/e.json" \
     "o['boundary']=='eps/R=0' and all(v is None or isinstance(v,str) or math.isfinite(v) for v in o.values())"
