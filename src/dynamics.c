@@ -592,7 +592,6 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
                        const tippe_dynamics_options *opt, tippe_dynamics_result *res,
                        tippe_error *err)
 {
-#pragma omp critical(tippe_gsl_error_handler)
     tippe_gsl_errors_as_codes();
 
     memset(res, 0, sizeof *res);

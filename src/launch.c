@@ -188,7 +188,6 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
                              const tippe_dynamics_initial *ic, tippe_launch_record *rec,
                              tippe_error *err)
 {
-#pragma omp critical(tippe_gsl_error_handler)
     tippe_gsl_errors_as_codes();
     rec->ic = *ic;
     rec->verdict = TIPPE_VERDICT_UNDECIDED;
@@ -249,7 +248,6 @@ int tippe_launch_run(const tippe_launch_plan *plan, const tippe_launch_options *
                      long from, long to, tippe_launch_record *out, tippe_progress *prog,
                      tippe_error *err)
 {
-#pragma omp critical(tippe_gsl_error_handler)
     tippe_gsl_errors_as_codes();
     if (!plan || plan->n_groups < 1 || plan->per_group < 1 || !plan->tops)
         return tippe_error_set(err, TIPPE_EINPUT, "empty launch plan");
