@@ -9,6 +9,7 @@
  * Jellett drift reached.
  *   usage: bench_dynamics [REPEATS]   (default 5) */
 #include "tippe/dynamics.h"
+#include "bench_util.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -34,13 +35,6 @@ static int take(const tippe_dynamics_sample *s, void *ctx)
     k->n++;
     k->sum_theta += s->theta;
     return 0;
-}
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 int main(int argc, char **argv)
@@ -84,12 +78,12 @@ int main(int argc, char **argv)
                 double best = INFINITY;
                 for (int rep = 0; rep < repeats; rep++) {
                     k.n = 0;
-                    double t0 = now_s();
+                    double t0 = bench_now_s();
                     if (tippe_dynamics_run(&L->model, &L->ic, &o, &r, &err)) {
                         fprintf(stderr, "%s: %s\n", L->name, err.msg);
                         return 1;
                     }
-                    best = fmin(best, now_s() - t0);
+                    best = fmin(best, bench_now_s() - t0);
                 }
                 printf("%-20s %-9s %-10s %8s %9.4g %9ld %10ld %9ld %10.3f %10.3f %8.1e\n",
                        L->name, tippe_dynamics_preset_name(p),

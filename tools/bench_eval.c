@@ -3,31 +3,13 @@
  * (parse, validate, overlap and travel checks, moments). Median of several
  * repeats. Run from the repository root: build/tools/bench_eval */
 #include "tippe/design.h"
+#include "bench_util.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
 
 #define REPEATS 7
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp);
-    return v[n / 2];
-}
 
 int main(int argc, char **argv)
 {
@@ -49,7 +31,7 @@ int main(int argc, char **argv)
         double from, to, rate[REPEATS], loads[REPEATS];
         tippe_design_travel_mm(d, &from, &to);
         for (int r = 0; r < REPEATS; r++) {
-            double t0 = now_s(), acc = 0;
+            double t0 = bench_now_s(), acc = 0;
             for (int i = 0; i < n_top; i++) {
                 tippe_top top;
                 if (tippe_design_top(d, from + (to - from) * (i % 1000) / 999.0, &top, &err)) {
@@ -58,12 +40,12 @@ int main(int argc, char **argv)
                 }
                 acc += top.A / top.C;
             }
-            rate[r] = n_top / (now_s() - t0);
+            rate[r] = n_top / (bench_now_s() - t0);
             sink += acc;
         }
         tippe_design_free(d);
         for (int r = 0; r < REPEATS; r++) {
-            double t0 = now_s();
+            double t0 = bench_now_s();
             for (int i = 0; i < n_load; i++) {
                 if (tippe_design_load(designs[k], NULL, 0, &d, &err)) {
                     fprintf(stderr, "bench_eval: %s\n", err.msg);
@@ -72,10 +54,11 @@ int main(int argc, char **argv)
                 sink += tippe_design_radius_mm(d);
                 tippe_design_free(d);
             }
-            loads[r] = n_load / (now_s() - t0);
+            loads[r] = n_load / (bench_now_s() - t0);
         }
-        double m = median(rate, REPEATS);
-        printf("%-30s %16.3e %14.1f %12.1f\n", designs[k], m, 1e9 / m, median(loads, REPEATS));
+        double m = bench_median(rate, REPEATS);
+        printf("%-30s %16.3e %14.1f %12.1f\n", designs[k], m, 1e9 / m,
+               bench_median(loads, REPEATS));
     }
     printf("(median of %d repeats; %d evaluations and %d loads per repeat)\n", REPEATS, n_top,
            n_load);

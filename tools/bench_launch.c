@@ -9,6 +9,7 @@
  * Run from the repository root. Prints the machine's load average too: on a
  * shared machine the efficiency is only as good as the cores that were free. */
 #include "tippe/design.h"
+#include "bench_util.h"
 #include "tippe/launch.h"
 
 #include <omp.h>
@@ -16,13 +17,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static double load_average(void)
 {
@@ -68,12 +62,12 @@ int main(int argc, char **argv)
     for (int th = 1; th <= max_threads; th++) {
         omp_set_num_threads(th);
         tippe_launch_record *out = th == 1 ? ref : rec;
-        double t0 = now_s();
+        double t0 = bench_now_s();
         if (tippe_launch_run(&plan, &o, 1, 0, n, out, NULL, &e)) {
             fprintf(stderr, "bench_launch: %s\n", e.msg);
             return 1;
         }
-        double dt = now_s() - t0;
+        double dt = bench_now_s() - t0;
         if (th == 1)
             t1 = dt;
         int same = 1;

@@ -15,6 +15,7 @@
  *   (defaults 7, 20000, /tmp/tippe-levels.csv; the CSV is removed at the end;
  *   a fifth argument "verdict" runs the verdict level only, for perf) */
 #include "tippe/dynamics.h"
+#include "../bench_util.h"
 #include "tippe/scenario.h"
 
 #include <math.h>
@@ -46,19 +47,6 @@ static int take(const tippe_dynamics_sample *s, void *ctx)
                 s->slip_speed, s->E, s->J, s->D, s->phi, s->psi, s->x, s->y) < 0)
         return 1;
     return 0;
-}
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
 }
 
 int main(int argc, char **argv)
@@ -123,11 +111,11 @@ int main(int argc, char **argv)
                                "x_m,y_m\n");
             }
             o.sample_ctx = &k;
-            const double t0 = now_s();
+            const double t0 = bench_now_s();
             int s = tippe_dynamics_run(&sc.model, &sc.initial, &o, &r, &err);
             if (k.csv && fclose(k.csv))
                 s = s ? s : 1;
-            times[rep] = now_s() - t0;
+            times[rep] = bench_now_s() - t0;
             if (s) {
                 fprintf(stderr, "levels: %s: %s\n", names[mode], err.msg);
                 rc = 1;
@@ -138,8 +126,7 @@ int main(int argc, char **argv)
             break;
         if (mode == 0)
             t_stop = r.t_verdict;
-        qsort(times, (size_t)repeats, sizeof *times, cmp_double);
-        const double med = times[repeats / 2];
+        const double med = bench_median(times, (size_t)repeats);
         printf("%-10s %8s %10.4g %9ld %10ld %10.3f %12.1f %9ld\n", names[mode],
                tippe_verdict_name(r.verdict), r.t_verdict, r.steps, r.rhs_evals, 1e3 * med,
                1e9 * med / (double)r.rhs_evals, k.n);

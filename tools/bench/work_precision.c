@@ -32,6 +32,7 @@
  * "quick" runs three steppers and every other tolerance (a smoke test);
  * "presets" only writes OUTDIR/presets.csv. */
 #include "tippe/dynamics.h"
+#include "../bench_util.h"
 #include "tippe/scenario.h"
 
 #include <math.h>
@@ -75,19 +76,6 @@ static const char *quick_steppers[] = {"rk8pd", "rkf45", "msbdf"};
 static const long MAX_STEPS = 4000000;
 static const double CAP_FACTOR = 5.0, CAP_MIN_S = 0.05;
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 typedef struct {
     double theta[N_SAMPLES], spin[N_SAMPLES];
 } samples;
@@ -103,9 +91,9 @@ static int run1(const tippe_scenario *sc, const char *stepper, double rtol, doub
     o.t_end = t_end;
     o.run_to_t_end = run_to_t_end;
     o.max_steps = MAX_STEPS;
-    const double t0 = now_s();
+    const double t0 = bench_now_s();
     int s = tippe_dynamics_run(&sc->model, &sc->initial, &o, r, err);
-    *wall = now_s() - t0;
+    *wall = bench_now_s() - t0;
     return s;
 }
 
@@ -308,17 +296,17 @@ int main(int argc, char **argv)
                     skip = 1;
                     continue;
                 }
-                qsort(times, (size_t)reps, sizeof *times, cmp_double);
+                const double med = bench_median(times, (size_t)reps);
                 const char *status = r.budget_exhausted || rv.budget_exhausted ? "budget" : "ok";
                 fprintf(wp,
                         "tippe,%s,%s,%g,%s,%.4e,%ld,%ld,%ld,%.3e,%.3e,%.3e,%.3e,%.3e,%s,%.8g,%d,"
                         "%.4e,%ld\n",
-                        B->label, steppers[k], rtol, status, times[reps / 2], r.rhs_evals, r.steps,
+                        B->label, steppers[k], rtol, status, med, r.rhs_evals, r.steps,
                         r.rejected_steps, fmax(e_th, e_n), e_th, e_n, r.jellett_rel_drift,
                         r.energy_rel_error, tippe_verdict_name(rv.verdict), rv.t_verdict,
                         verdict_right(&rv, &ref), vtime, rv.rhs_evals);
                 fflush(wp);
-                if (times[reps / 2] > cap_s || vtime > cap_s ||
+                if (med > cap_s || vtime > cap_s ||
                     strcmp(status, "ok"))
                     skip = 1;
             }
