@@ -3,7 +3,9 @@
 # Sourced by tools/quickstart.sh and .ci/run; safe to run twice.
 set -euo pipefail
 TIPPE_DEBS=(build-essential cmake pkg-config libgsl-dev libcjson-dev libplplot-dev
-            plplot-driver-cairo libopenmpi-dev openmpi-bin python3 python3-numpy python3-scipy)
+            plplot-driver-cairo libopenmpi-dev openmpi-bin python3 python3-numpy python3-scipy
+            libnlopt-dev lib3mf-dev admesh python3-stl libcairo2-dev
+            libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg)
 missing=()
 for p in "${TIPPE_DEBS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,10 +1,10 @@
-/* The verbs of the tippe command, one table for both front ends: src/main.c
- * (tippe) and src/mpi/main_mpi.c (tippe-mpi). A new verb is one line here and
+/* The verbs of the tippe command, one table for both front ends: src/cli/main.c
+ * (tippe) and src/cli/main_mpi.c (tippe-mpi). A new verb is one line here and
  * its prototype in cli.h.
  *
  * tippe-mpi runs every verb, but distributes only those with mpi_all_ranks set
  * (launch and map, which share their launches among the ranks in
- * src/cli_launch.c); every other verb runs on rank 0 alone, so that it prints
+ * src/cli/launch.c); every other verb runs on rank 0 alone, so that it prints
  * and writes its files once. */
 #include "cli.h"
 

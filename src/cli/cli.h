@@ -1,4 +1,4 @@
-/* Private to the tippe command: one function per verb, each in src/cli_<verb>.c.
+/* Private to the tippe command: one function per verb, each in src/cli/<verb>.c.
  * A verb parses its own arguments, calls the library, prints, and returns the
  * exit status: 0 success, 2 bad usage or bad input, 1 failed computation.
  * Output files go through tippe/report.h, so that none is ever half-written. */
@@ -21,7 +21,7 @@ typedef struct {
     int mpi_all_ranks;
 } tippe_cli_verb;
 
-/* The one verb table (src/cli_verbs.c), for tippe and tippe-mpi alike. */
+/* The one verb table (src/cli/verbs.c), for tippe and tippe-mpi alike. */
 extern const tippe_cli_verb tippe_cli_verbs[];
 extern const int tippe_cli_n_verbs;
 /* The verb called name, or NULL. */
@@ -40,7 +40,7 @@ int tippe_cli_check(int argc, char **argv);
  * only if it cannot (2, with a message) or if not under mpirun (0). */
 int tippe_cli_mpi_reexec(int argc, char **argv);
 
-/* ---- argument plumbing every verb shares (src/cli_common.c) ---- */
+/* ---- argument plumbing every verb shares (src/cli/common.c) ---- */
 
 /* Prints "tippe VERB: MESSAGE (try tippe VERB --help)" on stderr; returns 2. */
 int tippe_cli_usage_error(const char *verb, const char *fmt, ...)

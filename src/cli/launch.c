@@ -2,7 +2,7 @@
  * (tippe/launch.h), on OpenMP threads and, in tippe-mpi, across MPI ranks.
  *
  * This file is compiled twice: into `tippe`, and with TIPPE_WITH_MPI into
- * `tippe-mpi` (src/mpi/main_mpi.c), where launch and map share their launches
+ * `tippe-mpi` (src/cli/main_mpi.c), where launch and map share their launches
  * among the ranks: rank 0 hands out chunks of launch indices to the other ranks
  * as they return results, computes chunks itself in between, and alone writes
  * output. Every launch depends only on (seed, draw, top, options), so the

@@ -1,13 +1,13 @@
 /* tippe-mpi: the tippe command for mpirun. Its verbs are tippe's
- * (src/cli_verbs.c). Those marked mpi_all_ranks there, launch and map, share
- * their launches among all ranks (src/cli_launch.c: rank 0 hands out chunks as
+ * (src/cli/verbs.c). Those marked mpi_all_ranks there, launch and map, share
+ * their launches among all ranks (src/cli/launch.c: rank 0 hands out chunks as
  * ranks finish and gathers the results, which equal the single-process
  * results); every other verb runs on rank 0 alone, so that it prints and writes
  * once. Ranks other than 0 print nothing: their stdout and stderr go to
  * /dev/null. All ranks exit with rank 0's status. The plain `tippe`, started by
  * mpirun with more than one rank, replaces itself by this program
  * (docs/launch.md). */
-#include "../cli.h"
+#include "cli.h"
 
 #include <mpi.h>
 #include <stdio.h>

@@ -1,5 +1,5 @@
-/* The tippe command: dispatches to one verb; the verbs live in src/cli_*.c and
- * their table in src/cli_verbs.c. */
+/* The tippe command: dispatches to one verb; the verbs live in src/cli/<verb>.c and
+ * their table in src/cli/verbs.c. */
 #include "cli.h"
 
 #include <stdio.h>
