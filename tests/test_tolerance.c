@@ -248,7 +248,7 @@ static void check_monte_carlo(const tippe_design *d, const tippe_sweep_bands_res
      * (rms_res / band)^2 / 2 < 0.1 % to the ratio (for symmetric draws the
      * quadratic term does not correlate with the linear one). The first-order
      * law is checked sample by sample as well: what it leaves unexplained
-     * must be small against the band (measured: 2 % to 3.4 % of it). */
+     * must be small against the band (measured: 1.7 % to 3.3 % of it). */
     double tol = 4.0 / sqrt(2.0 * (N_MC - 1));
     for (int k = 0; k < b->n && k < 16; k++) {
         double mean = sum[k] / N_MC, sd = sqrt((sum2[k] - N_MC * mean * mean) / (N_MC - 1));
