@@ -14,6 +14,7 @@
  * "overlap" means sharing volume more than TOL_MM deep. docs/design-format.md
  * states the resolution this gives. */
 #include "tippe/design.h"
+#include "tippe/tolerance.h"
 #include "tippe/error.h"
 #include "tippe/geometry.h"
 #include "tippe/json.h"
@@ -85,6 +86,10 @@ struct tippe_design {
     int n_parts;
     part *parts;
     tippe_moments fixed, moving; /* SI; moving at Z2 = 0 */
+    char **overrides;            /* as loaded, for tippe_design_derive */
+    int n_overrides;
+    tippe_tolerance *tolerances; /* the tolerances block and the defaults */
+    int n_tolerances;
 };
 
 /* A length in mm that must be > 0 (or >= 0 with allow_zero). */
@@ -108,7 +113,7 @@ static int field_length(const tippe_json_reader *c, const cJSON *obj, const char
 /* ---------------------------------------------------------------- schema */
 
 static const char *const top_keys[] = {"name", "notes", "radius_mm", "travel_mm", "materials",
-                                       "parts", NULL};
+                                       "parts", "tolerances", NULL};
 static const char *const top_string_keys[] = {"name", "notes", "materials", NULL};
 static const char *const part_common_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from",
@@ -1389,43 +1394,54 @@ static int sum_moments(const tippe_json_reader *c, tippe_design *d)
     return TIPPE_OK;
 }
 
-/* A parsed (and overridden) design file, checked step by step. */
-static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d)
+/* A parsed (and overridden) design file, checked step by step; check = 0
+ * skips the layout checks (overlaps, travel), for tippe_design_derive. */
+static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d,
+                 int check)
 {
     char mat_rel[512];
     int has_mat_file = 0, rc;
     if ((rc = parse_header(c, root, path, d, mat_rel, sizeof mat_rel, &has_mat_file)) ||
         (rc = parse_parts(c, root, d)) ||
         (rc = resolve_materials(c, path, mat_rel, has_mat_file, d)) ||
-        (rc = resolve_parts(c, d)) || (rc = check_layout(c, d)) || (rc = sum_moments(c, d)))
+        (rc = resolve_parts(c, d)) || (check && (rc = check_layout(c, d))) ||
+        (rc = sum_moments(c, d)))
         return rc;
-    return TIPPE_OK;
+    return tippe_tolerances_read(c, cJSON_GetObjectItemCaseSensitive(root, "tolerances"), d,
+                                 &d->tolerances, &d->n_tolerances);
 }
 
-int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
-                      tippe_design **out, tippe_error *err)
+static int load(const char *path, const char *const *overrides, int n_overrides, int check,
+                tippe_design **out, tippe_error *err)
 {
     /* The geometry module may call GSL: report, never abort. */
     tippe_gsl_errors_as_codes();
     *out = NULL;
     if (!path)
         return tippe_error_set(err, TIPPE_EINPUT, "no design file given");
+    if (n_overrides < 0)
+        n_overrides = 0;
     tippe_json_reader *c =
         tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, "set by --set ");
     tippe_design *d = calloc(1, sizeof *d);
-    if (!c || !d) {
+    if (d)
+        d->overrides = calloc((size_t)n_overrides + 1, sizeof *d->overrides);
+    if (!c || !d || !d->overrides) {
         free(c);
-        free(d);
+        tippe_design_free(d);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
     }
     cJSON *root = NULL;
     int rc = tippe_json_load(c, MAX_FILE_MIB, "design", &root);
     if (!rc)
         rc = tippe_json_check_duplicates(c, root, "");
-    for (int i = 0; !rc && i < n_overrides; i++)
+    for (int i = 0; !rc && i < n_overrides; i++) {
         rc = apply_override(c, root, overrides[i]);
+        if (!rc && !(d->overrides[d->n_overrides++] = dup_string(overrides[i])))
+            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    }
     if (!rc)
-        rc = build(c, root, path, d);
+        rc = build(c, root, path, d, check);
     cJSON_Delete(root);
     free(c);
     if (rc) {
@@ -1436,10 +1452,38 @@ int tippe_design_load(const char *path, const char *const *overrides, int n_over
     return TIPPE_OK;
 }
 
+int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
+                      tippe_design **out, tippe_error *err)
+{
+    return load(path, overrides, n_overrides, 1, out, err);
+}
+
+int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_extra,
+                        tippe_design **out, tippe_error *err)
+{
+    *out = NULL;
+    if (n_extra < 0)
+        n_extra = 0;
+    const char **all = malloc(((size_t)d->n_overrides + (size_t)n_extra + 1) * sizeof *all);
+    if (!all)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    for (int i = 0; i < d->n_overrides; i++)
+        all[i] = d->overrides[i];
+    for (int i = 0; i < n_extra; i++)
+        all[d->n_overrides + i] = extra[i];
+    int rc = load(d->path, all, d->n_overrides + n_extra, 0, out, err);
+    free(all);
+    return rc;
+}
+
 void tippe_design_free(tippe_design *d)
 {
     if (!d)
         return;
+    for (int i = 0; d->overrides && i < d->n_overrides; i++)
+        free(d->overrides[i]);
+    free(d->overrides);
+    free(d->tolerances);
     free(d->path);
     free(d->name);
     free(d->parts);
@@ -1537,4 +1581,135 @@ int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
 int tippe_design_part_printable(const tippe_design *d, int i)
 {
     return i >= 0 && i < d->n_parts && d->parts[i].printable;
+}
+
+/* ------------------------------------------------------ numeric fields */
+
+/* The length fields a part of this shape has, and where each lives. */
+static double *length_field(part *p, const char *key)
+{
+    int cyl = p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE;
+    if (!strcmp(key, "radius_mm") && p->shape != SHAPE_TORUS)
+        return &p->radius_mm;
+    if (!strcmp(key, "thickness_mm") && p->shape == SHAPE_SHELL)
+        return &p->thickness_mm;
+    if (!strcmp(key, "inner_radius_mm") && cyl)
+        return &p->inner_radius_mm;
+    if (!strcmp(key, "height_mm") && cyl)
+        return &p->height_mm;
+    if (p->shape == SHAPE_TORUS) {
+        if (!strcmp(key, "centre_radius_mm"))
+            return &p->centre_radius_mm;
+        if (!strcmp(key, "radial_semi_mm"))
+            return &p->radial_semi_mm;
+        if (!strcmp(key, "axial_semi_mm"))
+            return &p->axial_semi_mm;
+    }
+    return NULL;
+}
+
+/* Index of the part a "parts.NAME" / "parts[I]" prefix (len characters of
+ * field) names, or -1. */
+static int part_named(const tippe_design *d, const char *field, size_t len)
+{
+    if (len > 7 && field[5] == '[') {
+        char *end = NULL;
+        long i = strtol(field + 6, &end, 10);
+        return end == field + len - 1 && *end == ']' && i >= 0 && i < d->n_parts ? (int)i : -1;
+    }
+    for (int i = 0; i < d->n_parts; i++)
+        if (strlen(d->parts[i].name) == len - 6 && !strncmp(d->parts[i].name, field + 6, len - 6))
+            return i;
+    return -1;
+}
+
+int tippe_design_field(const tippe_design *d, const char *field, double *value, int *part_index,
+                       char *why, size_t why_cap)
+{
+    *part_index = -1;
+    if (!strcmp(field, "radius_mm")) {
+        *value = d->radius_mm;
+        return TIPPE_OK;
+    }
+    const char *dot = strrchr(field, '.');
+    if (strncmp(field, "parts", 5) || (field[5] != '.' && field[5] != '[') || !dot ||
+        dot < field + 6) {
+        snprintf(why, why_cap, "not a number field of the design (radius_mm, "
+                               "parts.NAME.FIELD or parts[I].FIELD)");
+        return TIPPE_EINPUT;
+    }
+    int i = part_named(d, field, (size_t)(dot - field));
+    if (i < 0) {
+        snprintf(why, why_cap, "no part %.*s", (int)(dot - field - 5), field + 5);
+        return TIPPE_EINPUT;
+    }
+    part *p = &d->parts[i];
+    const char *key = dot + 1;
+    *part_index = i;
+    if (!strcmp(key, "z_mm")) {
+        *value = p->z_mm;
+        return TIPPE_OK;
+    }
+    if (!strcmp(key, "density_g_cm3")) {
+        if (p->is_void) {
+            snprintf(why, why_cap, "a void has its part's density: give the tolerance to "
+                                   "'%s'", d->parts[p->parent].name);
+            return TIPPE_EINPUT;
+        }
+        *value = p->density_g_cm3;
+        return TIPPE_OK;
+    }
+    const double *v = length_field(p, key);
+    if (!v) {
+        snprintf(why, why_cap, "not a number field of a %s (radius_mm, ... as the shape has; "
+                               "z_mm; density_g_cm3)", shape_names[p->shape]);
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "height_mm") && !p->has_height) {
+        snprintf(why, why_cap, "the height is not in the file: the part spans its clip ball, "
+                               "so the clip decides it");
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "radius_mm") && tippe_design_forms_sphere(d, i)) {
+        snprintf(why, why_cap, "the part forms the sphere the top rolls on: its radius is "
+                               "radius_mm (give the tolerance there)");
+        return TIPPE_EINPUT;
+    }
+    *value = *v;
+    return TIPPE_OK;
+}
+
+int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, int cap)
+{
+    static const char *const all[] = {"radius_mm", "thickness_mm", "inner_radius_mm",
+                                      "height_mm", "centre_radius_mm", "radial_semi_mm",
+                                      "axial_semi_mm"};
+    if (i < 0 || i >= d->n_parts)
+        return 0;
+    part *p = &d->parts[i];
+    int n = 0;
+    for (size_t k = 0; k < sizeof all / sizeof all[0] && n < cap; k++) {
+        const double *v = length_field(p, all[k]);
+        if (!v || *v <= 0 || (!strcmp(all[k], "height_mm") && !p->has_height) ||
+            (!strcmp(all[k], "radius_mm") && tippe_design_forms_sphere(d, i)))
+            continue;
+        keys[n++] = all[k];
+    }
+    return n;
+}
+
+int tippe_design_forms_sphere(const tippe_design *d, int i)
+{
+    if (i < 0 || i >= d->n_parts)
+        return 0;
+    const part *p = &d->parts[i];
+    return !p->is_void && !p->moving && (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL) &&
+           fabs(p->radius_mm - d->radius_mm) < SAME_LENGTH_MM && p->z_mm == 0;
+}
+
+int tippe_design_n_tolerances(const tippe_design *d) { return d->n_tolerances; }
+
+const tippe_tolerance *tippe_design_tolerance(const tippe_design *d, int i)
+{
+    return i >= 0 && i < d->n_tolerances ? &d->tolerances[i] : NULL;
 }
