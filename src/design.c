@@ -169,6 +169,11 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
                                    "%s: --set %s: expected parts.NAME.FIELD=VALUE", c->file, text);
         *dot = '\0';
         key = dot + 1;
+        /* parts.NAME.print.KEY: a field of the part's print block */
+        size_t flen2 = strlen(field);
+        int in_print = flen2 > 12 && !strcmp(field + flen2 - 6, ".print");
+        if (in_print)
+            field[flen2 - 6] = '\0';
         int index = -1;
         if (field[5] == '[') {
             char *endp = NULL;
@@ -205,14 +210,36 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
             snprintf(path, sizeof path, "parts[%d]", index);
             return tippe_json_fail(c, path, "must be an object (cannot apply --set %s)", text);
         }
-        if (!tippe_json_in_list(key, all_part_keys)) {
+        if (in_print) {
+            if (!tippe_json_in_list(key, print_keys)) {
+                char list[256];
+                tippe_json_key_list(list, sizeof list, print_keys, NULL);
+                return tippe_error_set(c->err, TIPPE_EINPUT,
+                                       "%s: --set %s: '%s' is not a print setting (settings: %s)",
+                                       c->file, text, key, list);
+            }
+            /* true, false or no block: an object of defaults, then this field */
+            cJSON *pr = cJSON_GetObjectItemCaseSensitive(obj, "print");
+            if (!cJSON_IsObject(pr)) {
+                cJSON *fresh = cJSON_CreateObject();
+                if (!fresh)
+                    return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+                int rc = tippe_json_put(c, obj, "print", fresh);
+                if (rc)
+                    return rc;
+                pr = fresh;
+            }
+            obj = pr;
+            snprintf(path, sizeof path, "parts[%d].print.%s", index, key);
+        } else if (!tippe_json_in_list(key, all_part_keys)) {
             char list[512];
             tippe_json_key_list(list, sizeof list, all_part_keys, NULL);
             return tippe_error_set(c->err, TIPPE_EINPUT,
                                    "%s: --set %s: '%s' is not a part field (fields: %s)", c->file,
                                    text, key, list);
+        } else {
+            snprintf(path, sizeof path, "parts[%d].%s", index, key);
         }
-        snprintf(path, sizeof path, "parts[%d].%s", index, key);
     } else {
         if (!tippe_json_in_list(key, top_keys) || !strcmp(key, "parts")) {
             char list[256];
@@ -1578,6 +1605,36 @@ int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
     return TIPPE_OK;
 }
 
+int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out)
+{
+    memset(out, 0, sizeof *out);
+    if (i < 0 || i >= d->n_parts)
+        return tippe_error_set(NULL, TIPPE_EINPUT, "no part %d", i);
+    const part *p = &d->parts[i];
+    if (!p->printed)
+        return TIPPE_OK;
+    out->printed = 1;
+    out->settings = p->print;
+    out->wall_mm = tippe_print_wall_mm(&p->print);
+    out->skin_mm = tippe_print_skin_mm(&p->print);
+    out->infill = p->infill;
+    out->calibrated = p->calibrated;
+    out->measured_mass_kg = p->calibrated ? p->measured_mass_g * 1e-3 : 0;
+    out->solid_mass_kg = p->solid_mass_kg;
+    out->skin_mass_kg = p->skin_mass_kg;
+    out->printed_mass_kg = p->skin_mass_kg + p->infill * (p->solid_mass_kg - p->skin_mass_kg);
+    out->rel_error = p->print_rel_error;
+    return TIPPE_OK;
+}
+
+int tippe_design_has_printed_parts(const tippe_design *d)
+{
+    for (int i = 0; i < d->n_parts; i++)
+        if (d->parts[i].printed)
+            return 1;
+    return 0;
+}
+
 int tippe_design_part_printable(const tippe_design *d, int i)
 {
     return i >= 0 && i < d->n_parts && d->parts[i].printable;
@@ -1623,6 +1680,38 @@ static int part_named(const tippe_design *d, const char *field, size_t len)
     return -1;
 }
 
+/* parts.NAME.print.KEY: the print settings that are numbers (infill: the one
+ * used, calibrated or not). */
+static int print_field(const tippe_design *d, int i, const char *key, double *value,
+                       int *part_index, char *why, size_t why_cap)
+{
+    const part *p = &d->parts[i];
+    *part_index = i;
+    if (!p->printed) {
+        snprintf(why, why_cap, "part '%s' has no print block", p->name);
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "infill"))
+        *value = p->infill;
+    else if (!strcmp(key, "line_width_mm"))
+        *value = p->print.line_width_mm;
+    else if (!strcmp(key, "layer_height_mm"))
+        *value = p->print.layer_height_mm;
+    else if (!strcmp(key, "perimeters"))
+        *value = p->print.perimeters;
+    else if (!strcmp(key, "top_bottom_layers"))
+        *value = p->print.top_bottom_layers;
+    else if (!strcmp(key, "measured_mass_g") && p->calibrated)
+        *value = p->measured_mass_g;
+    else {
+        snprintf(why, why_cap, "not a number setting of the print block (infill, "
+                               "line_width_mm, layer_height_mm, perimeters, "
+                               "top_bottom_layers, measured_mass_g when given)");
+        return TIPPE_EINPUT;
+    }
+    return TIPPE_OK;
+}
+
 int tippe_design_field(const tippe_design *d, const char *field, double *value, int *part_index,
                        char *why, size_t why_cap)
 {
@@ -1639,6 +1728,10 @@ int tippe_design_field(const tippe_design *d, const char *field, double *value, 
         return TIPPE_EINPUT;
     }
     int i = part_named(d, field, (size_t)(dot - field));
+    size_t plen = (size_t)(dot - field);
+    if (i < 0 && plen > 12 && !strncmp(dot - 6, ".print", 6) &&
+        (i = part_named(d, field, plen - 6)) >= 0)
+        return print_field(d, i, dot + 1, value, part_index, why, why_cap);
     if (i < 0) {
         snprintf(why, why_cap, "no part %.*s", (int)(dot - field - 5), field + 5);
         return TIPPE_EINPUT;
