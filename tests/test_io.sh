@@ -30,7 +30,7 @@ check "/dev/null is still a character device" test -c /dev/null
 
 # A FIFO with a reader gets the whole CSV and stays a FIFO.
 mkfifo "$d/pipe.csv"
-cat "$d/pipe.csv" >"$d/from-pipe.csv" &
+timeout 20 cat "$d/pipe.csv" >"$d/from-pipe.csv" &
 reader=$!
 timeout 20 "$tippe" simulate "$sc" --csv "$d/pipe.csv" >/dev/null
 check "--csv to a FIFO exits 0" test $? -eq 0
@@ -141,6 +141,12 @@ big=(map "$m3" --z2 3:5:100 --spin 5:20:100 -n 100)
 mkdir -p "$d/adir" "$d/adir.png"
 echo "a file" >"$d/afile"
 before=$(ls -R "$d" | md5sum)
+# Each refusal runs under a 30 s timeout, so that a build that starts the work
+# fails here instead of computing for hours.
+real_tippe=$tippe
+tippe=$tmp/tippe-30s
+printf '#!/bin/sh\nexec timeout 30 "%s" "$@"\n' "$real_tippe" >"$tippe"
+chmod +x "$tippe"
 t0=$(date +%s%N)
 expect_fail "an existing directory" 2 "adir" "it is a directory" -- "${big[@]}" --csv "$d/adir"
 expect_fail "a path through a regular file" 2 "afile/x.csv" "Not a directory" -- "${big[@]}" --csv "$d/afile/x.csv"
@@ -157,6 +163,7 @@ expect_fail "simulate: a directory" 2 "it is a directory" -- simulate "$sc" --cs
 expect_fail "sweep: a plot through a file" 2 "Not a directory" -- sweep "$m3" --plot "$d/afile/z.png"
 expect_fail "launch: a CSV under /proc" 2 "no new file" -- launch "$m3" --z2 4 -n 100000 --csv /proc/x.csv
 elapsed_ms=$((($(date +%s%N) - t0) / 1000000))
+tippe=$real_tippe
 rm -f "$d/same-link.png"
 # 11 refusals, each well under a second even on a loaded machine; the work refused
 # would take hours.
