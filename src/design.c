@@ -74,7 +74,14 @@ struct tippe_design {
     int n_parts;
     part *parts;
     tippe_moments fixed, moving; /* SI; moving at Z2 = 0 */
+    /* Set only while a tippe_design_source builds it: the source's parsed
+     * materials table (not owned) and whether the travel is the physical one. */
+    const struct tippe_design_source *source;
+    int travel_physical;
 };
+
+static int source_materials(const tippe_design *d, const char *mat_file, cJSON **out);
+static double widest_free_gap_mid(const tippe_design *d, const double *rs, int nr);
 
 /* A length in mm that must be > 0 (or >= 0 with allow_zero). */
 static int field_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
@@ -783,7 +790,8 @@ static int check_layout(const tippe_json_reader *c, tippe_design *d)
      * [flo, fhi] share volume exactly for shifts in (flo - hi, fhi - lo); the
      * physical travel is the gap between such forbidden shifts around the
      * middle of the stated travel. */
-    double mid = 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
+    double mid = d->travel_physical ? widest_free_gap_mid(d, rs, nr)
+                                    : 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
     double lim[2] = {-BIG_MM, BIG_MM};
     snprintf(d->contact_limit[0], sizeof d->contact_limit[0], "nothing");
     snprintf(d->contact_limit[1], sizeof d->contact_limit[1], "nothing");
@@ -853,6 +861,15 @@ static int check_layout(const tippe_json_reader *c, tippe_design *d)
         goto out;
     d->contact_mm[0] = lim[0];
     d->contact_mm[1] = lim[1];
+    if (d->travel_physical) {
+        if (!(lim[0] > -BIG_MM && lim[1] < BIG_MM && lim[0] < lim[1])) {
+            rc = tippe_json_fail(c, "travel_mm", "the moving weight has no bounded physical "
+                                                 "travel (nothing stops it)");
+            goto out;
+        }
+        d->travel_mm[0] = lim[0];
+        d->travel_mm[1] = lim[1];
+    }
     if (d->travel_mm[0] < lim[0])
         rc = tippe_json_fail(c, "travel_mm",
                              "starts at %g mm, below the physical travel %.3f .. %.3f mm "
@@ -985,7 +1002,8 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
             snprintf(mat_file, sizeof mat_file, "%s", mat_rel);
         else
             snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
-        if ((rc = load_materials(mat_file, &table, c->err))) {
+        if (!source_materials(d, mat_file, &table) &&
+            (rc = load_materials(mat_file, &table, c->err))) {
             if (has_mat_file) {
                 char inner[sizeof c->err->msg];
                 snprintf(inner, sizeof inner, "%s", c->err->msg);
@@ -1221,4 +1239,241 @@ int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
 int tippe_design_part_printable(const tippe_design *d, int i)
 {
     return i >= 0 && i < d->n_parts && d->parts[i].printable;
+}
+
+/* ------------------------------------------ physical travel without a guess */
+
+typedef struct {
+    double lo, hi;
+} shift_iv;
+
+static int cmp_shift(const void *a, const void *b)
+{
+    const shift_iv *x = a, *y = b;
+    return (x->lo > y->lo) - (x->lo < y->lo);
+}
+
+static int push_shift(shift_iv **v, int *n, int *cap, double lo, double hi)
+{
+    if (*n == *cap) {
+        int nc = *cap ? 2 * *cap : 256;
+        shift_iv *t = realloc(*v, (size_t)nc * sizeof *t);
+        if (!t)
+            return -1;
+        *v = t;
+        *cap = nc;
+    }
+    (*v)[(*n)++] = (shift_iv){lo, hi};
+    return 0;
+}
+
+/* The middle of the widest stretch of Z2 where no moving part overlaps a fixed
+ * one or leaves the sphere: the Z2 shifts that make a moving z interval share
+ * volume with a fixed one are open intervals (the same arithmetic as the
+ * physical travel in check_layout), and the stretch is a gap between their
+ * union. Used when the travel is to be the physical one (an optimiser's
+ * candidate, whose stated travel means nothing); NAN when there is no gap. */
+static double widest_free_gap_mid(const tippe_design *d, const double *rs, int nr)
+{
+    shift_iv *v = NULL;
+    int n = 0, cap = 0, oom = 0;
+    const double R = d->radius_mm;
+    ivset a, b;
+    for (int i = 0; i < d->n_parts && !oom; i++) {
+        const part *p = &d->parts[i];
+        if (p->is_void || !p->moving)
+            continue;
+        if (p->may_protrude) /* held only while its centre is inside */
+            oom |= push_shift(&v, &n, &cap, -BIG_MM, -R - p->z_mm) ||
+                   push_shift(&v, &n, &cap, R - p->z_mm, BIG_MM);
+        for (int j = -1; j < d->n_parts && !oom; j++) {
+            if (j < 0 ? p->may_protrude : (d->parts[j].is_void || d->parts[j].moving))
+                continue;
+            for (int k = 0; k < nr && !oom; k++) {
+                material_ivs(d, i, rs[k], 0, &a);
+                if (!a.n)
+                    continue;
+                if (j < 0)
+                    outside_ivs(R, rs[k], &b);
+                else
+                    material_ivs(d, j, rs[k], 0, &b);
+                for (int u = 0; u < a.n && !oom; u++)
+                    for (int w = 0; w < b.n && !oom; w++)
+                        oom |= push_shift(&v, &n, &cap, b.lo[w] - a.hi[u], b.hi[w] - a.lo[u]);
+            }
+        }
+    }
+    double best = 0.0, mid = NAN;
+    if (!oom) {
+        qsort(v, (size_t)n, sizeof *v, cmp_shift);
+        double reach = -BIG_MM; /* the union of intervals so far ends here */
+        for (int k = 0; k <= n; k++) {
+            double next = k < n ? v[k].lo : BIG_MM;
+            if (next > reach && next - reach > best) {
+                best = next - reach;
+                mid = 0.5 * (next + reach);
+            }
+            if (k < n)
+                reach = fmax(reach, v[k].hi);
+        }
+    }
+    free(v);
+    return mid;
+}
+
+/* ------------------------------------------------------- design sources */
+
+struct tippe_design_source {
+    char *path;
+    cJSON *root;      /* the design file as parsed (duplicate keys refused) */
+    char mat_file[1024];
+    cJSON *materials; /* the materials table it names, read and checked once; or NULL */
+};
+
+/* The source's materials table (a copy the caller deletes) if it is the one
+ * build() is about to read; 0 if not. */
+static int source_materials(const tippe_design *d, const char *mat_file, cJSON **out)
+{
+    if (!d->source || !d->source->materials || strcmp(mat_file, d->source->mat_file))
+        return 0;
+    *out = cJSON_Duplicate(d->source->materials, 1);
+    return *out != NULL;
+}
+
+int tippe_design_source_open(const char *path, tippe_design_source **out, tippe_error *err)
+{
+    tippe_gsl_errors_as_codes();
+    *out = NULL;
+    /* A first full load checks the file and resolves its materials table. */
+    tippe_design *d = NULL;
+    int rc = tippe_design_load(path, NULL, 0, &d, err);
+    if (rc)
+        return rc;
+    tippe_design_free(d);
+    tippe_design_source *s = calloc(1, sizeof *s);
+    tippe_json_reader *c = tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, NULL);
+    if (!s || !c || !(s->path = dup_string(path))) {
+        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+        goto fail;
+    }
+    if ((rc = tippe_json_load(c, MAX_FILE_MIB, "design", &s->root)))
+        goto fail;
+    char mat_rel[512] = "materials.json";
+    const cJSON *m = cJSON_GetObjectItemCaseSensitive(s->root, "materials");
+    if (cJSON_IsString(m))
+        snprintf(mat_rel, sizeof mat_rel, "%s", m->valuestring);
+    const char *slash = strrchr(path, '/');
+    if (mat_rel[0] == '/' || !slash)
+        snprintf(s->mat_file, sizeof s->mat_file, "%s", mat_rel);
+    else
+        snprintf(s->mat_file, sizeof s->mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
+    tippe_error ignored = {0};
+    /* A design with inline densities only has no table: then none is cached. */
+    if (load_materials(s->mat_file, &s->materials, &ignored))
+        s->materials = NULL;
+    free(c);
+    *out = s;
+    return TIPPE_OK;
+fail:
+    free(c);
+    tippe_design_source_free(s);
+    return rc;
+}
+
+int tippe_design_source_apply(const tippe_design_source *s, const char *const *overrides,
+                              int n_overrides, cJSON **out, tippe_error *err)
+{
+    *out = NULL;
+    tippe_json_reader *c = tippe_json_reader_new(s->path, err, TIPPE_JSON_WORDS_FIELD, "set by ");
+    cJSON *root = cJSON_Duplicate(s->root, 1);
+    int rc = (!c || !root) ? tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory") : TIPPE_OK;
+    for (int i = 0; !rc && i < n_overrides; i++)
+        rc = apply_override(c, root, overrides[i]);
+    free(c);
+    if (rc) {
+        cJSON_Delete(root);
+        return rc;
+    }
+    *out = root;
+    return TIPPE_OK;
+}
+
+int tippe_design_source_build(const tippe_design_source *s, const char *const *overrides,
+                              int n_overrides, unsigned flags, tippe_design **out,
+                              tippe_error *err)
+{
+    *out = NULL;
+    tippe_json_reader *c = tippe_json_reader_new(s->path, err, TIPPE_JSON_WORDS_FIELD, "set by ");
+    cJSON *root = cJSON_Duplicate(s->root, 1);
+    tippe_design *d = calloc(1, sizeof *d);
+    int rc = (!c || !root || !d) ? tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory")
+                                 : TIPPE_OK;
+    for (int i = 0; !rc && i < n_overrides; i++)
+        rc = apply_override(c, root, overrides[i]);
+    if (!rc) {
+        d->source = s;
+        d->travel_physical = (flags & TIPPE_DESIGN_TRAVEL_PHYSICAL) != 0;
+        rc = build(c, root, s->path, d);
+        d->source = NULL;
+    }
+    cJSON_Delete(root);
+    free(c);
+    if (rc) {
+        tippe_design_free(d);
+        return rc;
+    }
+    *out = d;
+    return TIPPE_OK;
+}
+
+const char *tippe_design_source_path(const tippe_design_source *s) { return s->path; }
+
+void tippe_design_source_free(tippe_design_source *s)
+{
+    if (!s)
+        return;
+    free(s->path);
+    cJSON_Delete(s->root);
+    cJSON_Delete(s->materials);
+    free(s);
+}
+
+/* ------------------------------------------------------------ printability */
+
+/* Thinnest wall around a hole (a cylinder or tube void cut from a fixed ball):
+ * the side wall at the hole's layer nearest the ball's centre (the widest ring
+ * of material around it), and a floor or roof where the hole ends inside the
+ * ball (measured along the hole's wall, r = its radius, where it is thinnest).
+ * Where a hole opens through the surface its rim thins to nothing in every
+ * drilled ball; that is not counted. INFINITY if there is no such hole. */
+double tippe_design_min_hole_wall_mm(const tippe_design *d, const char **hole)
+{
+    double wall = INFINITY;
+    if (hole)
+        *hole = NULL;
+    for (int i = 0; i < d->n_parts; i++) {
+        const part *p = &d->parts[i];
+        if (!p->is_void || p->moving || (p->shape != SHAPE_CYLINDER && p->shape != SHAPE_TUBE))
+            continue;
+        const part *q = &d->parts[p->parent];
+        if (q->shape != SHAPE_BALL)
+            continue;
+        double a = p->radius_mm, rb = q->radius_mm, zb = q->z_mm;
+        double lo = p->z_mm - p->height_mm / 2, hi = p->z_mm + p->height_mm / 2;
+        double open_at = p->clip_radius_mm > a ? sqrt(p->clip_radius_mm * p->clip_radius_mm - a * a)
+                                               : INFINITY; /* the clip opens the hole there */
+        double surf = rb > a ? sqrt(rb * rb - a * a) : 0.0; /* ball surface at r = a */
+        double zs = fmin(fmax(zb, lo), hi);
+        double w = rb * rb > (zs - zb) * (zs - zb) ? sqrt(rb * rb - (zs - zb) * (zs - zb)) - a : -a;
+        if (lo > -open_at + TOL_MM)
+            w = fmin(w, lo - (zb - surf));
+        if (hi < open_at - TOL_MM)
+            w = fmin(w, (zb + surf) - hi);
+        if (w < wall) {
+            wall = w;
+            if (hole)
+                *hole = p->name;
+        }
+    }
+    return wall;
 }
