@@ -34,6 +34,9 @@
 #define TOL_MM 1e-6
 /* Uniform r samples across the widest part; see the resolution note in docs. */
 #define N_R_UNIFORM 4000
+/* The same for an optimiser's candidates (TIPPE_DESIGN_COARSE_LAYOUT): 20 times
+ * fewer uniform samples; every part's edges are still sampled exactly. */
+#define N_R_COARSE 200
 /* A sphere radius match (the part forming the sphere's surface), mm. */
 #define SAME_LENGTH_MM 1e-9
 /* Slack on the travel check for a sweep's rounded steps, mm. */
@@ -77,7 +80,7 @@ struct tippe_design {
     /* Set only while a tippe_design_source builds it: the source's parsed
      * materials table (not owned) and whether the travel is the physical one. */
     const struct tippe_design_source *source;
-    int travel_physical;
+    int travel_physical, coarse_layout;
 };
 
 static int source_materials(const tippe_design *d, const char *mat_file, cJSON **out);
@@ -637,14 +640,15 @@ static double *sample_radii(const tippe_design *d, int *n_out)
     for (int k = 0; k < nb; k++)
         rmax = fmax(rmax, brk[k]);
     rmax += 1.0;
-    int n = N_R_UNIFORM + 3 * nb + 1;
+    int n_uniform = d->coarse_layout ? N_R_COARSE : N_R_UNIFORM;
+    int n = n_uniform + 3 * nb + 1;
     double *r = malloc((size_t)n * sizeof *r);
     if (!r)
         return NULL;
     int m = 0;
     r[m++] = 0;
-    for (int k = 0; k < N_R_UNIFORM; k++)
-        r[m++] = (k + 0.5) * rmax / N_R_UNIFORM;
+    for (int k = 0; k < n_uniform; k++)
+        r[m++] = (k + 0.5) * rmax / n_uniform;
     for (int k = 0; k < nb; k++) {
         double off[3] = {-2 * TOL_MM, 0, 2 * TOL_MM};
         for (int j = 0; j < 3; j++)
@@ -1413,6 +1417,7 @@ int tippe_design_source_build(const tippe_design_source *s, const char *const *o
     if (!rc) {
         d->source = s;
         d->travel_physical = (flags & TIPPE_DESIGN_TRAVEL_PHYSICAL) != 0;
+        d->coarse_layout = (flags & TIPPE_DESIGN_COARSE_LAYOUT) != 0;
         rc = build(c, root, s->path, d);
         d->source = NULL;
     }

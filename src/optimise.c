@@ -360,9 +360,9 @@ static int parse_tie(tippe_json_reader *c, const cJSON *tie, const cJSON *design
                 (rc = tippe_json_number(c, v, p, "plus_mm", 0, &t->plus_mm, NULL)) ||
                 (rc = tippe_json_number(c, v, p, "times", 0, &t->times, NULL)))
                 return rc;
-            if (fabs(t->plus_mm) > 1e3 || !(t->times > 0) || t->times > 1e3)
-                return tippe_json_fail(c, p, "plus_mm must be within +-1000 mm and times in "
-                                             "(0, 1000]");
+            if (!(fabs(t->plus_mm) <= 1e3) || !(fabs(t->times) <= 1e3) || t->times == 0)
+                return tippe_json_fail(c, p, "plus_mm must be within +-1000 mm and times "
+                                             "within +-1000, not 0");
         } else {
             return tippe_json_wrong_type(c, p, "a field path or {\"follows\", \"plus_mm\", "
                                                "\"times\"}", v);
@@ -746,7 +746,10 @@ void tippe_opt_evaluate(const tippe_opt_spec *s, int choice, const double *x, in
         ov[i] = buf[i];
     tippe_design *d = NULL;
     tippe_error e = {0};
-    if (tippe_design_source_build(s->src, ov, n, TIPPE_DESIGN_TRAVEL_PHYSICAL, &d, &e)) {
+    /* Search candidates (n_scan > 0) are screened on the coarse layout grid; a
+     * reported best (n_scan = 0) is built and swept at full resolution. */
+    unsigned flags = TIPPE_DESIGN_TRAVEL_PHYSICAL | (n_scan > 0 ? TIPPE_DESIGN_COARSE_LAYOUT : 0);
+    if (tippe_design_source_build(s->src, ov, n, flags, &d, &e)) {
         out->status = TIPPE_OPT_DOES_NOT_FIT;
         out->score = -2.0;
         return;
