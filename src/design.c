@@ -14,9 +14,11 @@
  * "overlap" means sharing volume more than TOL_MM deep. docs/design-format.md
  * states the resolution this gives. */
 #include "tippe/design.h"
+#include "tippe/tolerance.h"
 #include "tippe/error.h"
 #include "tippe/geometry.h"
 #include "tippe/json.h"
+#include "tippe/print.h"
 
 #include <cjson/cJSON.h>
 #include <gsl/gsl_errno.h>
@@ -46,6 +48,8 @@
 /* Intervals per r: a part gives at most 2, each void removes at most 2 more. */
 #define MAX_IV (4 + 4 * MAX_PARTS)
 
+enum { CLIP_NONE, CLIP_SPHERE, CLIP_CAVITY, CLIP_SHELL };
+
 typedef enum { SHAPE_BALL, SHAPE_SHELL, SHAPE_CYLINDER, SHAPE_TUBE, SHAPE_TORUS, N_SHAPES } shape_kind;
 static const char *const shape_names[N_SHAPES] = {"ball", "shell", "cylinder", "tube", "torus"};
 
@@ -64,8 +68,16 @@ typedef struct {
     int printable;          /* the material's "printable" flag (voids: the parent's) */
     int has_height, has_radius;
     int parent;             /* voids: index of the part cut from; else -1 */
-    int clip;               /* 0 none, 1 sphere, 2 cavity */
+    int clip;               /* CLIP_NONE, CLIP_SPHERE, CLIP_CAVITY, CLIP_SHELL */
     double clip_radius_mm;  /* resolved; 0 = not clipped */
+    double clip_inner_mm;   /* CLIP_SHELL: the shell's cavity radius (the part is cut to
+                               the wall between it and clip_radius_mm); else 0 */
+    int printed;            /* has a "print" block */
+    tippe_print_settings print;
+    int calibrated;         /* the infill comes from measured_mass_g */
+    double measured_mass_g;
+    double infill;          /* used: print.infill, or the calibrated one */
+    double solid_mass_kg, skin_mass_kg, print_rel_error;
     double mass_kg;         /* signed contribution */
 } part;
 
@@ -77,6 +89,10 @@ struct tippe_design {
     int n_parts;
     part *parts;
     tippe_moments fixed, moving; /* SI; moving at Z2 = 0 */
+    char **overrides;            /* as loaded, for tippe_design_derive */
+    int n_overrides;
+    tippe_tolerance *tolerances; /* the tolerances block and the defaults */
+    int n_tolerances;
     /* Set only while a tippe_design_source builds it: the source's parsed
      * materials table (not owned) and whether the travel is the physical one. */
     const struct tippe_design_source *source;
@@ -107,11 +123,11 @@ static int field_length(const tippe_json_reader *c, const cJSON *obj, const char
 /* ---------------------------------------------------------------- schema */
 
 static const char *const top_keys[] = {"name", "notes", "radius_mm", "travel_mm", "materials",
-                                       "parts", NULL};
+                                       "parts", "tolerances", NULL};
 static const char *const top_string_keys[] = {"name", "notes", "materials", NULL};
 static const char *const part_common_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from",
-    "clip", "moving", "may_protrude", NULL};
+    "clip", "moving", "may_protrude", "print", NULL};
 static const char *const part_string_keys[] = {"name", "shape", "notes", "material",
                                                "cut_from", "clip", NULL};
 static const char *const ball_keys[] = {"radius_mm", NULL};
@@ -123,8 +139,11 @@ static const char *const *const shape_keys[N_SHAPES] = {ball_keys, shell_keys, c
                                                         cylinder_keys, torus_keys};
 static const char *const all_part_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from", "clip",
-    "moving", "may_protrude", "radius_mm", "inner_radius_mm", "thickness_mm", "height_mm",
-    "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
+    "moving", "may_protrude", "print", "radius_mm", "inner_radius_mm", "thickness_mm",
+    "height_mm", "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
+static const char *const print_keys[] = {"perimeters", "line_width_mm", "top_bottom_layers",
+                                         "layer_height_mm", "infill", "measured_mass_g",
+                                         "notes", NULL};
 static const char *const material_keys[] = {"density_g_cm3", "source", "printable", "notes",
                                              NULL};
 
@@ -160,6 +179,11 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
                                    "%s: --set %s: expected parts.NAME.FIELD=VALUE", c->file, text);
         *dot = '\0';
         key = dot + 1;
+        /* parts.NAME.print.KEY: a field of the part's print block */
+        size_t flen2 = strlen(field);
+        int in_print = flen2 > 12 && !strcmp(field + flen2 - 6, ".print");
+        if (in_print)
+            field[flen2 - 6] = '\0';
         int index = -1;
         if (field[5] == '[') {
             char *endp = NULL;
@@ -196,14 +220,36 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
             snprintf(path, sizeof path, "parts[%d]", index);
             return tippe_json_fail(c, path, "must be an object (cannot apply --set %s)", text);
         }
-        if (!tippe_json_in_list(key, all_part_keys)) {
+        if (in_print) {
+            if (!tippe_json_in_list(key, print_keys)) {
+                char list[256];
+                tippe_json_key_list(list, sizeof list, print_keys, NULL);
+                return tippe_error_set(c->err, TIPPE_EINPUT,
+                                       "%s: --set %s: '%s' is not a print setting (settings: %s)",
+                                       c->file, text, key, list);
+            }
+            /* true, false or no block: an object of defaults, then this field */
+            cJSON *pr = cJSON_GetObjectItemCaseSensitive(obj, "print");
+            if (!cJSON_IsObject(pr)) {
+                cJSON *fresh = cJSON_CreateObject();
+                if (!fresh)
+                    return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+                int rc = tippe_json_put(c, obj, "print", fresh);
+                if (rc)
+                    return rc;
+                pr = fresh;
+            }
+            obj = pr;
+            snprintf(path, sizeof path, "parts[%d].print.%s", index, key);
+        } else if (!tippe_json_in_list(key, all_part_keys)) {
             char list[512];
             tippe_json_key_list(list, sizeof list, all_part_keys, NULL);
             return tippe_error_set(c->err, TIPPE_EINPUT,
                                    "%s: --set %s: '%s' is not a part field (fields: %s)", c->file,
                                    text, key, list);
+        } else {
+            snprintf(path, sizeof path, "parts[%d].%s", index, key);
         }
-        snprintf(path, sizeof path, "parts[%d].%s", index, key);
     } else {
         if (!tippe_json_in_list(key, top_keys) || !strcmp(key, "parts")) {
             char list[256];
@@ -250,6 +296,65 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
 
 /* ----------------------------------------------------------------- parts */
 
+/* A print setting: a number in [lo, hi] (an integer if integer). */
+static int print_number(const tippe_json_reader *c, const cJSON *obj, const char *pre,
+                        const char *key, double lo, double hi, int integer, const char *unit,
+                        double *out)
+{
+    int here = 0;
+    int rc = tippe_json_number(c, obj, pre, key, 0, out, &here);
+    if (rc || !here)
+        return rc;
+    char path[96];
+    tippe_json_path(path, sizeof path, pre, key);
+    if (integer && *out != floor(*out))
+        return tippe_json_fail(c, path, "must be a whole number of %s, got %g", unit, *out);
+    if (!(*out >= lo && *out <= hi))
+        return tippe_json_fail(c, path, "must be %g .. %g %s, got %g", lo, hi, unit, *out);
+    return TIPPE_OK;
+}
+
+/* "print": true (slicer defaults), false (solid), or an object of settings
+ * (defaults for the ones left out). docs/design-format.md gives the ranges. */
+static int parse_print(const tippe_json_reader *c, const cJSON *obj, const char *pre, part *p)
+{
+    const cJSON *item = cJSON_GetObjectItemCaseSensitive(obj, "print");
+    if (!item || cJSON_IsFalse(item))
+        return TIPPE_OK;
+    char path[64];
+    tippe_json_path(path, sizeof path, pre, "print");
+    if (p->is_void)
+        return tippe_json_fail(c, path,
+                               "a void is not printed: give the part it is cut from the "
+                               "print block (its holes get walls too)");
+    p->printed = 1;
+    p->print = tippe_print_defaults();
+    if (cJSON_IsTrue(item))
+        return TIPPE_OK;
+    if (!cJSON_IsObject(item))
+        return tippe_json_wrong_type(c, path, "true, false or an object of print settings",
+                                     item);
+    int rc;
+    double per = p->print.perimeters, layers = p->print.top_bottom_layers;
+    if ((rc = tippe_json_check_keys(c, item, path, "a print block", print_keys, NULL)) ||
+        (rc = tippe_json_string(c, item, path, "notes", 0, NULL, 0, NULL)) ||
+        (rc = print_number(c, item, path, "perimeters", 0, 50, 1, "perimeters", &per)) ||
+        (rc = print_number(c, item, path, "line_width_mm", 0.05, 3, 0, "mm",
+                           &p->print.line_width_mm)) ||
+        (rc = print_number(c, item, path, "top_bottom_layers", 0, 200, 1, "layers", &layers)) ||
+        (rc = print_number(c, item, path, "layer_height_mm", 0.01, 2, 0, "mm",
+                           &p->print.layer_height_mm)) ||
+        (rc = print_number(c, item, path, "infill", 0, 1, 0,
+                           "(a fraction of the solid density: 15 % is 0.15)", &p->print.infill)) ||
+        (rc = print_number(c, item, path, "measured_mass_g", 1e-6, 1e6, 0, "g",
+                           &p->measured_mass_g)))
+        return rc;
+    p->print.perimeters = (int)per;
+    p->print.top_bottom_layers = (int)layers;
+    p->calibrated = cJSON_GetObjectItemCaseSensitive(item, "measured_mass_g") != NULL;
+    return TIPPE_OK;
+}
+
 static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, part *p)
 {
     char pre[32], path[64], shape[16];
@@ -287,7 +392,8 @@ static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, p
     int has_void = 0, has_moving = 0, has_protrude = 0;
     if ((rc = tippe_json_bool(c, obj, pre, "void", &p->is_void, &has_void)) ||
         (rc = tippe_json_bool(c, obj, pre, "moving", &p->moving, &has_moving)) ||
-        (rc = tippe_json_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)))
+        (rc = tippe_json_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)) ||
+        (rc = parse_print(c, obj, pre, p)))
         return rc;
     int has_mat = 0, has_dens = 0, has_cut = 0, has_clip = 0;
     char cut[NAME_LEN] = "", clip[16] = "";
@@ -335,11 +441,14 @@ static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, p
     if (has_clip) {
         tippe_json_path(path, sizeof path, pre, "clip");
         if (!strcmp(clip, "sphere"))
-            p->clip = 1;
+            p->clip = CLIP_SPHERE;
         else if (!strcmp(clip, "cavity"))
-            p->clip = 2;
+            p->clip = CLIP_CAVITY;
+        else if (!strcmp(clip, "shell"))
+            p->clip = CLIP_SHELL;
         else
-            return tippe_json_fail(c, path, "must be \"sphere\" or \"cavity\", not '%s'", clip);
+            return tippe_json_fail(c, path,
+                                   "must be \"sphere\", \"cavity\" or \"shell\", not '%s'", clip);
         if (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL)
             return tippe_json_fail(c, path, "only a cylinder, tube or torus can be clipped");
         if (p->moving)
@@ -561,9 +670,16 @@ static void prim_ivs(const part *p, double r, double dz, double g, ivset *s)
         break;
     }
     if (p->clip_radius_mm > 0) {
+        /* the clip ball, or with clip_inner_mm the shell's wall */
         ivset c = {0}, t;
-        if ((h = chord(p->clip_radius_mm + g, r)) > 0)
-            iv_push(&c, -h, h);
+        if ((h = chord(p->clip_radius_mm + g, r)) > 0) {
+            if (p->clip_inner_mm > 0 && (hi = chord(p->clip_inner_mm - g, r)) > 0) {
+                iv_push(&c, -h, -hi);
+                iv_push(&c, hi, h);
+            } else {
+                iv_push(&c, -h, h);
+            }
+        }
         iv_intersect(s, &c, &t);
         *s = t;
     }
@@ -608,7 +724,7 @@ static int cmp_double(const void *a, const void *b)
 static double *sample_radii(const tippe_design *d, int *n_out)
 {
     double rmax = d->radius_mm;
-    double brk[8 * MAX_PARTS + 2];
+    double brk[9 * MAX_PARTS + 2];
     int nb = 0;
     brk[nb++] = d->radius_mm;
     for (int i = 0; i < d->n_parts; i++) {
@@ -636,6 +752,8 @@ static double *sample_radii(const tippe_design *d, int *n_out)
         }
         if (p->clip_radius_mm > 0)
             brk[nb++] = p->clip_radius_mm;
+        if (p->clip_inner_mm > 0)
+            brk[nb++] = p->clip_inner_mm;
     }
     for (int k = 0; k < nb; k++)
         rmax = fmax(rmax, brk[k]);
@@ -665,237 +783,297 @@ static const char *role_of(const part *p)
     return p->is_void ? "void" : p->moving ? "moving" : "fixed";
 }
 
-/* Everything about where parts are, once the parts are parsed and resolved. */
-static int check_layout(const tippe_json_reader *c, tippe_design *d)
-{
-    int nr = 0;
-    double *rs = sample_radii(d, &nr);
-    if (!rs)
-        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
-    const double R = d->radius_mm;
-    int rc = TIPPE_OK;
-    char path[64];
-    ivset a, b, t;
+/* The layout checks below share the sampled radii. */
+typedef struct {
+    const tippe_json_reader *c;
+    tippe_design *d;
+    const double *rs;
+    int nr;
+} layout;
 
-    /* The sphere the top rolls on must be material: a fixed ball or shell of
-     * radius R centred on the sphere's centre. */
-    int surface = 0;
+/* The sphere the top rolls on must be material: a fixed ball or shell of
+ * radius R centred on the sphere's centre. */
+static int check_surface(const layout *L)
+{
+    const tippe_design *d = L->d;
     for (int i = 0; i < d->n_parts; i++) {
         const part *p = &d->parts[i];
         if (!p->is_void && !p->moving && (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL) &&
-            fabs(p->radius_mm - R) < SAME_LENGTH_MM && p->z_mm == 0)
-            surface = 1;
+            fabs(p->radius_mm - d->radius_mm) < SAME_LENGTH_MM && p->z_mm == 0)
+            return TIPPE_OK;
     }
-    if (!surface) {
-        rc = tippe_json_fail(c, "parts",
-                             "no part forms the sphere's surface: the top needs a fixed ball "
-                             "or shell of radius radius_mm (%g mm) centred at z_mm = 0",
-                             R);
-        goto out;
-    }
+    return tippe_json_fail(L->c, "parts",
+                           "no part forms the sphere's surface: the top needs a fixed ball "
+                           "or shell of radius radius_mm (%g mm) centred at z_mm = 0",
+                           d->radius_mm);
+}
 
+/* Void i must lie inside the part it is cut from, or it would subtract mass
+ * that is not there; and it must not share volume with an earlier void of the
+ * same part, or the shared volume would be removed twice. */
+static int check_void(const layout *L, int i)
+{
+    const tippe_design *d = L->d;
+    const part *p = &d->parts[i], *q = &d->parts[p->parent];
+    char path[64];
+    snprintf(path, sizeof path, "parts[%d]", i);
+    ivset a, b, t;
+    for (int k = 0; k < L->nr; k++) {
+        prim_ivs(p, L->rs[k], 0, -TOL_MM, &a);
+        prim_ivs(q, L->rs[k], 0, TOL_MM, &b);
+        iv_subtract(&a, &b, &t);
+        if (t.n)
+            return tippe_json_fail(L->c, path,
+                                   "void '%s' reaches outside the part it is cut from ('%s') "
+                                   "at r = %.3f mm, z = %.3f mm: it would remove material "
+                                   "that is not there",
+                                   p->name, q->name, L->rs[k], t.lo[0]);
+    }
+    for (int j = 0; j < i; j++) {
+        if (d->parts[j].parent != p->parent)
+            continue;
+        for (int k = 0; k < L->nr; k++) {
+            prim_ivs(p, L->rs[k], 0, -TOL_MM, &a);
+            prim_ivs(&d->parts[j], L->rs[k], 0, -TOL_MM, &b);
+            iv_intersect(&a, &b, &t);
+            if (t.n)
+                return tippe_json_fail(L->c, path,
+                                       "voids '%s' and '%s' (parts[%d]) overlap at r = "
+                                       "%.3f mm: the shared volume would be removed twice",
+                                       p->name, d->parts[j].name, j, L->rs[k]);
+        }
+    }
+    return TIPPE_OK;
+}
+
+/* A fixed part that may not protrude must stay inside the sphere. */
+static int check_inside_sphere(const layout *L, int i)
+{
+    const tippe_design *d = L->d;
+    const part *p = &d->parts[i];
+    const double R = d->radius_mm;
+    double worst = 0, wr = 0, wz = 0;
+    ivset a;
+    for (int k = 0; k < L->nr; k++) {
+        material_ivs(d, i, L->rs[k], 0, &a);
+        for (int j = 0; j < a.n; j++)
+            for (int e = 0; e < 2; e++) {
+                double z = e ? a.hi[j] : a.lo[j];
+                double out = hypot(L->rs[k], z) - R;
+                if (out > worst) {
+                    worst = out;
+                    wr = L->rs[k];
+                    wz = z;
+                }
+            }
+    }
+    if (worst <= TOL_MM)
+        return TIPPE_OK;
+    char path[64];
+    snprintf(path, sizeof path, "parts[%d]", i);
+    return tippe_json_fail(L->c, path,
+                           "part '%s' sticks out of the sphere (radius %g mm) by %.3f mm "
+                           "(at r = %.3f mm, z = %.3f mm); set \"may_protrude\": true if "
+                           "it is meant to, like a setscrew",
+                           p->name, R, worst + TOL_MM, wr, wz);
+}
+
+/* Fixed against fixed, moving against moving: their relative place never
+ * changes, so they must not share volume. */
+static int check_no_overlap(const layout *L, int i)
+{
+    const tippe_design *d = L->d;
+    const part *p = &d->parts[i];
+    char path[64];
+    snprintf(path, sizeof path, "parts[%d]", i);
+    ivset a, b, t;
+    for (int j = 0; j < i; j++) {
+        const part *q = &d->parts[j];
+        if (q->is_void || q->moving != p->moving)
+            continue;
+        for (int k = 0; k < L->nr; k++) {
+            material_ivs(d, i, L->rs[k], 0, &a);
+            material_ivs(d, j, L->rs[k], 0, &b);
+            iv_intersect(&a, &b, &t);
+            if (t.n)
+                return tippe_json_fail(L->c, path,
+                                       "part '%s' overlaps part '%s' (parts[%d]) at r = %.3f mm, "
+                                       "z = %.3f .. %.3f mm%s: parts may touch but not share "
+                                       "volume (cut one with a void, or clip it)",
+                                       p->name, q->name, j, L->rs[k], t.lo[0], t.hi[0],
+                                       p->moving ? " relative to Z2" : "");
+        }
+    }
+    return TIPPE_OK;
+}
+
+static int check_parts_placed(const layout *L)
+{
+    const tippe_design *d = L->d;
+    int rc = TIPPE_OK, n_moving = 0;
     for (int i = 0; i < d->n_parts && !rc; i++) {
         const part *p = &d->parts[i];
-        snprintf(path, sizeof path, "parts[%d]", i);
         if (p->is_void) {
-            /* A void must lie inside the part it is cut from, or it would
-             * subtract mass that is not there. */
-            const part *q = &d->parts[p->parent];
-            for (int k = 0; k < nr; k++) {
-                prim_ivs(p, rs[k], 0, -TOL_MM, &a);
-                prim_ivs(q, rs[k], 0, TOL_MM, &b);
-                iv_subtract(&a, &b, &t);
-                if (t.n) {
-                    rc = tippe_json_fail(c, path,
-                                         "void '%s' reaches outside the part it is cut from ('%s') "
-                                         "at r = %.3f mm, z = %.3f mm: it would remove material "
-                                         "that is not there",
-                                         p->name, q->name, rs[k], t.lo[0]);
-                    break;
-                }
-            }
-            for (int j = 0; j < i && !rc; j++) {
-                if (d->parts[j].parent != p->parent)
-                    continue;
-                for (int k = 0; k < nr; k++) {
-                    prim_ivs(p, rs[k], 0, -TOL_MM, &a);
-                    prim_ivs(&d->parts[j], rs[k], 0, -TOL_MM, &b);
-                    iv_intersect(&a, &b, &t);
-                    if (t.n) {
-                        rc = tippe_json_fail(c, path,
-                                             "voids '%s' and '%s' (parts[%d]) overlap at r = "
-                                             "%.3f mm: the shared volume would be removed twice",
-                                             p->name, d->parts[j].name, j, rs[k]);
-                        break;
-                    }
-                }
-            }
+            rc = check_void(L, i);
             continue;
         }
-        if (!p->moving && !p->may_protrude) {
-            double worst = 0, wr = 0, wz = 0;
-            for (int k = 0; k < nr; k++) {
-                material_ivs(d, i, rs[k], 0, &a);
-                for (int j = 0; j < a.n; j++)
-                    for (int e = 0; e < 2; e++) {
-                        double z = e ? a.hi[j] : a.lo[j];
-                        double out = hypot(rs[k], z) - R;
-                        if (out > worst) {
-                            worst = out;
-                            wr = rs[k];
-                            wz = z;
-                        }
-                    }
-            }
-            if (worst > TOL_MM) {
-                rc = tippe_json_fail(c, path,
-                                     "part '%s' sticks out of the sphere (radius %g mm) by %.3f mm "
-                                     "(at r = %.3f mm, z = %.3f mm); set \"may_protrude\": true if "
-                                     "it is meant to, like a setscrew",
-                                     p->name, R, worst + TOL_MM, wr, wz);
-                break;
-            }
-        }
-        /* Fixed against fixed, moving against moving: their relative place
-         * never changes. */
-        for (int j = 0; j < i && !rc; j++) {
-            const part *q = &d->parts[j];
-            if (q->is_void || q->moving != p->moving)
-                continue;
-            for (int k = 0; k < nr; k++) {
-                material_ivs(d, i, rs[k], 0, &a);
-                material_ivs(d, j, rs[k], 0, &b);
-                iv_intersect(&a, &b, &t);
-                if (t.n) {
-                    rc = tippe_json_fail(c, path,
-                                         "part '%s' overlaps part '%s' (parts[%d]) at r = %.3f mm, "
-                                         "z = %.3f .. %.3f mm%s: parts may touch but not share "
-                                         "volume (cut one with a void, or clip it)",
-                                         p->name, q->name, j, rs[k], t.lo[0], t.hi[0],
-                                         p->moving ? " relative to Z2" : "");
-                    break;
-                }
-            }
-        }
+        n_moving += p->moving;
+        if (!p->moving && !p->may_protrude)
+            rc = check_inside_sphere(L, i);
+        if (!rc)
+            rc = check_no_overlap(L, i);
     }
-    if (rc)
-        goto out;
-
-    int n_moving = 0;
-    for (int i = 0; i < d->n_parts; i++)
-        n_moving += d->parts[i].moving && !d->parts[i].is_void;
-    if (!n_moving) {
-        rc = tippe_json_fail(c, "parts",
+    if (!rc && !n_moving)
+        rc = tippe_json_fail(L->c, "parts",
                              "no moving part: mark the weight's part(s) with \"moving\": true");
-        goto out;
-    }
+    return rc;
+}
 
-    /* Physical travel. A moving interval [lo, hi] (at Z2 = 0) and a fixed one
-     * [flo, fhi] share volume exactly for shifts in (flo - hi, fhi - lo); the
-     * physical travel is the gap between such forbidden shifts around the
-     * middle of the stated travel. */
-    double mid = d->travel_physical ? widest_free_gap_mid(d, rs, nr)
+/* Narrows the physical travel lim[] by what stops moving part p: its centre
+ * reaching the surface, if it may protrude. */
+static void limit_by_protrusion(tippe_design *d, const part *p, double lim[2])
+{
+    const double R = d->radius_mm;
+    double e[2] = {-R - p->z_mm, R - p->z_mm};
+    for (int s = 0; s < 2; s++)
+        if (s ? e[s] < lim[1] : e[s] > lim[0]) {
+            lim[s] = e[s];
+            snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
+                     "the centre of protruding part '%s' reaches the sphere's surface", p->name);
+        }
+}
+
+/* Narrows lim[] by moving part i meeting fixed part j (j = -1: the outside of
+ * the sphere). A moving interval [lo, hi] (at Z2 = 0) and a fixed one
+ * [flo, fhi] share volume exactly for shifts in (flo - hi, fhi - lo); the
+ * physical travel is the gap between such forbidden shifts around mid. Fails
+ * if mid itself is forbidden. */
+static int limit_by_contact(const layout *L, int i, int j, double mid, double lim[2])
+{
+    tippe_design *d = L->d;
+    const part *p = &d->parts[i];
+    ivset a, b;
+    for (int k = 0; k < L->nr; k++) {
+        material_ivs(d, i, L->rs[k], 0, &a);
+        if (!a.n)
+            continue;
+        if (j < 0)
+            outside_ivs(d->radius_mm, L->rs[k], &b);
+        else
+            material_ivs(d, j, L->rs[k], 0, &b);
+        for (int u = 0; u < a.n; u++)
+            for (int w = 0; w < b.n; w++) {
+                double f0 = b.lo[w] - a.hi[u], f1 = b.hi[w] - a.lo[u];
+                int s = -1;
+                if (f0 < mid && mid < f1) {
+                    if (j < 0)
+                        return tippe_json_fail(L->c, "travel_mm",
+                                               "at Z2 = %g mm (the middle of the travel) moving "
+                                               "part '%s' sticks out of the sphere",
+                                               mid, p->name);
+                    return tippe_json_fail(L->c, "travel_mm",
+                                           "at Z2 = %g mm (the middle of the travel) moving "
+                                           "part '%s' overlaps part '%s'",
+                                           mid, p->name, d->parts[j].name);
+                }
+                if (f1 <= mid && f1 > lim[0])
+                    lim[s = 0] = f1;
+                else if (f0 >= mid && f0 < lim[1])
+                    lim[s = 1] = f0;
+                if (s < 0)
+                    continue;
+                if (j < 0)
+                    snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
+                             "part '%s' reaches the sphere's surface", p->name);
+                else
+                    snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
+                             "part '%s' touches part '%s'", p->name, d->parts[j].name);
+            }
+    }
+    return TIPPE_OK;
+}
+
+/* The physical travel (d->contact_mm, d->contact_limit) around the middle of
+ * the stated travel, or for a travel_physical design (an optimiser's
+ * candidate) the widest free stretch, which then becomes its travel. */
+static int find_physical_travel(const layout *L)
+{
+    tippe_design *d = L->d;
+    double mid = d->travel_physical ? widest_free_gap_mid(d, L->rs, L->nr)
                                     : 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
     double lim[2] = {-BIG_MM, BIG_MM};
     snprintf(d->contact_limit[0], sizeof d->contact_limit[0], "nothing");
     snprintf(d->contact_limit[1], sizeof d->contact_limit[1], "nothing");
+    int rc = TIPPE_OK;
     for (int i = 0; i < d->n_parts && !rc; i++) {
         const part *p = &d->parts[i];
         if (p->is_void || !p->moving)
             continue;
-        if (p->may_protrude) {
-            /* A protruding part is held only while its centre is inside. */
-            double e[2] = {-R - p->z_mm, R - p->z_mm};
-            for (int s = 0; s < 2; s++)
-                if (s ? e[s] < lim[1] : e[s] > lim[0]) {
-                    lim[s] = e[s];
-                    snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
-                             "the centre of protruding part '%s' reaches the sphere's surface",
-                             p->name);
-                }
-        }
+        if (p->may_protrude)
+            limit_by_protrusion(d, p, lim); /* held only while its centre is inside */
         for (int j = -1; j < d->n_parts && !rc; j++) {
-            /* j = -1: the outside of the sphere, for parts that must stay in. */
             if (j < 0 ? p->may_protrude : (d->parts[j].is_void || d->parts[j].moving))
                 continue;
-            for (int k = 0; k < nr && !rc; k++) {
-                material_ivs(d, i, rs[k], 0, &a);
-                if (!a.n)
-                    continue;
-                if (j < 0)
-                    outside_ivs(R, rs[k], &b);
-                else
-                    material_ivs(d, j, rs[k], 0, &b);
-                for (int u = 0; u < a.n && !rc; u++)
-                    for (int w = 0; w < b.n; w++) {
-                        double f0 = b.lo[w] - a.hi[u], f1 = b.hi[w] - a.lo[u];
-                        int s = -1;
-                        if (f0 < mid && mid < f1) {
-                            if (j < 0)
-                                rc = tippe_json_fail(c, "travel_mm",
-                                                     "at Z2 = %g mm (the middle of the "
-                                                     "travel) moving part '%s' sticks out "
-                                                     "of the sphere",
-                                                     mid, p->name);
-                            else
-                                rc = tippe_json_fail(c, "travel_mm",
-                                                     "at Z2 = %g mm (the middle of the "
-                                                     "travel) moving part '%s' overlaps "
-                                                     "part '%s'",
-                                                     mid, p->name, d->parts[j].name);
-                            break;
-                        }
-                        if (f1 <= mid && f1 > lim[0])
-                            lim[s = 0] = f1;
-                        else if (f0 >= mid && f0 < lim[1])
-                            lim[s = 1] = f0;
-                        if (s < 0)
-                            continue;
-                        if (j < 0)
-                            snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
-                                     "part '%s' reaches the sphere's surface", p->name);
-                        else
-                            snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
-                                     "part '%s' touches part '%s'", p->name, d->parts[j].name);
-                    }
-            }
+            rc = limit_by_contact(L, i, j, mid, lim);
         }
     }
-    if (rc)
-        goto out;
     d->contact_mm[0] = lim[0];
     d->contact_mm[1] = lim[1];
-    if (d->travel_physical) {
-        if (!(lim[0] > -BIG_MM && lim[1] < BIG_MM && lim[0] < lim[1])) {
-            rc = tippe_json_fail(c, "travel_mm", "the moving weight has no bounded physical "
-                                                 "travel (nothing stops it)");
-            goto out;
-        }
+    if (!rc && d->travel_physical) {
+        if (!(lim[0] > -BIG_MM && lim[1] < BIG_MM && lim[0] < lim[1]))
+            return tippe_json_fail(L->c, "travel_mm", "the moving weight has no bounded "
+                                                      "physical travel (nothing stops it)");
         d->travel_mm[0] = lim[0];
         d->travel_mm[1] = lim[1];
     }
+    return rc;
+}
+
+/* The stated travel must lie inside the physical one. */
+static int check_travel(const layout *L)
+{
+    const tippe_design *d = L->d;
+    const double *lim = d->contact_mm;
     if (d->travel_mm[0] < lim[0])
-        rc = tippe_json_fail(c, "travel_mm",
-                             "starts at %g mm, below the physical travel %.3f .. %.3f mm "
-                             "(at Z2 = %.3f mm %s)",
-                             d->travel_mm[0], lim[0], lim[1], lim[0], d->contact_limit[0]);
-    else if (d->travel_mm[1] > lim[1])
-        rc = tippe_json_fail(c, "travel_mm",
-                             "ends at %g mm, beyond the physical travel %.3f .. %.3f mm "
-                             "(at Z2 = %.3f mm %s)",
-                             d->travel_mm[1], lim[0], lim[1], lim[1], d->contact_limit[1]);
-out:
+        return tippe_json_fail(L->c, "travel_mm",
+                               "starts at %g mm, below the physical travel %.3f .. %.3f mm "
+                               "(at Z2 = %.3f mm %s)",
+                               d->travel_mm[0], lim[0], lim[1], lim[0], d->contact_limit[0]);
+    if (d->travel_mm[1] > lim[1])
+        return tippe_json_fail(L->c, "travel_mm",
+                               "ends at %g mm, beyond the physical travel %.3f .. %.3f mm "
+                               "(at Z2 = %.3f mm %s)",
+                               d->travel_mm[1], lim[0], lim[1], lim[1], d->contact_limit[1]);
+    return TIPPE_OK;
+}
+
+/* Everything about where parts are, once the parts are parsed and resolved. */
+static int check_layout(const tippe_json_reader *c, tippe_design *d)
+{
+    layout L = {c, d, NULL, 0};
+    double *rs = sample_radii(d, &L.nr);
+    if (!rs)
+        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+    L.rs = rs;
+    int rc = check_surface(&L);
+    if (!rc)
+        rc = check_parts_placed(&L);
+    if (!rc)
+        rc = find_physical_travel(&L);
+    if (!rc)
+        rc = check_travel(&L);
     free(rs);
     return rc;
 }
 
 /* ------------------------------------------------------------ mass moments */
 
-/* Unit-density moments of p's own region (SI), at its z_mm. */
-static tippe_moments part_moments(const part *p)
+/* Unit-density moments of p's own shape cut to the ball of radius clip_m
+ * (0: not cut), SI, at its z_mm. */
+static tippe_moments shape_moments(const part *p, double clip_m)
 {
     const double mm = 1e-3;
-    double zc = p->z_mm * mm, clip = p->clip_radius_mm * mm; /* 0: not clipped */
+    double zc = p->z_mm * mm;
     switch (p->shape) {
     case SHAPE_BALL:
         return tippe_ball(p->radius_mm * mm, zc);
@@ -904,12 +1082,23 @@ static tippe_moments part_moments(const part *p)
     case SHAPE_CYLINDER:
     case SHAPE_TUBE:
         return tippe_tube(p->inner_radius_mm * mm, p->radius_mm * mm, p->height_mm * mm, zc,
-                          clip);
+                          clip_m);
     case SHAPE_TORUS:
     default:
         return tippe_torus(p->centre_radius_mm * mm, p->radial_semi_mm * mm,
-                           p->axial_semi_mm * mm, zc, clip);
+                           p->axial_semi_mm * mm, zc, clip_m);
     }
+}
+
+/* Unit-density moments of p's own region (SI), at its z_mm. Cut to a shell's
+ * wall, it is the part cut to the outer ball less the part cut to the cavity
+ * (the second lies inside the first). */
+static tippe_moments part_moments(const part *p)
+{
+    tippe_moments m = shape_moments(p, p->clip_radius_mm * 1e-3);
+    if (p->clip_inner_mm > 0)
+        m = tippe_moments_sub(m, shape_moments(p, p->clip_inner_mm * 1e-3));
+    return m;
 }
 
 static int finite_moments(tippe_moments m)
@@ -928,20 +1117,9 @@ static char *dup_string(const char *s)
     return r;
 }
 
-static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d)
+/* travel_mm: [from, to], from < to. */
+static int parse_travel(const tippe_json_reader *c, const cJSON *root, tippe_design *d)
 {
-    int rc;
-    char name[256];
-    if (!cJSON_IsObject(root))
-        return tippe_json_wrong_type(c, NULL, "a JSON object (a design)", root);
-    if ((rc = tippe_json_check_keys(c, root, "", "a design", top_keys, NULL)) ||
-        (rc = tippe_json_string(c, root, "", "name", 1, name, sizeof name, NULL)) ||
-        (rc = tippe_json_string(c, root, "", "notes", 0, NULL, 0, NULL)) ||
-        (rc = field_length(c, root, "", "radius_mm", 1, 0, &d->radius_mm, NULL)))
-        return rc;
-    if (!(d->name = dup_string(name)) || !(d->path = dup_string(path)))
-        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
-
     const cJSON *tr = cJSON_GetObjectItemCaseSensitive(root, "travel_mm");
     if (!tr)
         return tippe_json_fail(c, "travel_mm",
@@ -959,15 +1137,39 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
     if (!(d->travel_mm[0] < d->travel_mm[1]))
         return tippe_json_fail(c, "travel_mm", "from (%g mm) must be less than to (%g mm)",
                                d->travel_mm[0], d->travel_mm[1]);
+    return TIPPE_OK;
+}
 
-    char mat_rel[512] = "materials.json";
-    int has_mat_file = 0;
-    if ((rc = tippe_json_string(c, root, "", "materials", 0, mat_rel, sizeof mat_rel,
-                                &has_mat_file)))
+/* The top-level fields other than parts; mat_rel gets the materials file as
+ * written (default materials.json), *has_mat_file whether it was given. */
+static int parse_header(const tippe_json_reader *c, const cJSON *root, const char *path,
+                        tippe_design *d, char *mat_rel, size_t mat_cap, int *has_mat_file)
+{
+    int rc;
+    char name[256];
+    if (!cJSON_IsObject(root))
+        return tippe_json_wrong_type(c, NULL, "a JSON object (a design)", root);
+    if ((rc = tippe_json_check_keys(c, root, "", "a design", top_keys, NULL)) ||
+        (rc = tippe_json_string(c, root, "", "name", 1, name, sizeof name, NULL)) ||
+        (rc = tippe_json_string(c, root, "", "notes", 0, NULL, 0, NULL)) ||
+        (rc = field_length(c, root, "", "radius_mm", 1, 0, &d->radius_mm, NULL)))
         return rc;
-    if (has_mat_file && !mat_rel[0])
+    if (!(d->name = dup_string(name)) || !(d->path = dup_string(path)))
+        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+    if ((rc = parse_travel(c, root, d)))
+        return rc;
+    snprintf(mat_rel, mat_cap, "materials.json");
+    if ((rc = tippe_json_string(c, root, "", "materials", 0, mat_rel, mat_cap, has_mat_file)))
+        return rc;
+    if (*has_mat_file && !mat_rel[0])
         return tippe_json_fail(c, "materials", "must be a file name (relative to the design file)");
+    return TIPPE_OK;
+}
 
+/* parts: 1 to MAX_PARTS parts with unique names. */
+static int parse_parts(const tippe_json_reader *c, const cJSON *root, tippe_design *d)
+{
+    int rc;
     const cJSON *parts = cJSON_GetObjectItemCaseSensitive(root, "parts");
     if (!parts)
         return tippe_json_fail(c, "parts", "missing (required: an array of parts)");
@@ -983,7 +1185,6 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
     for (const cJSON *p = parts->child; p; p = p->next, i++)
         if ((rc = parse_part(c, p, i, &d->parts[i])))
             return rc;
-
     char pth[64];
     for (i = 0; i < n; i++)
         for (int j = 0; j < i; j++)
@@ -993,50 +1194,113 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
                     c, pth, "'%s' is already the name of parts[%d]: names must be unique",
                     d->parts[i].name, j);
             }
+    return TIPPE_OK;
+}
 
-    /* Materials: only read the table when some part names a material. */
-    cJSON *table = NULL;
-    char mat_file[1024];
+/* Densities of the parts that name a material. The table is read only when
+ * some part names one; its path is relative to the design file. */
+static int resolve_materials(const tippe_json_reader *c, const char *path, const char *mat_rel,
+                             int has_mat_file, tippe_design *d)
+{
     int uses_table = 0;
-    for (i = 0; i < n; i++)
+    for (int i = 0; i < d->n_parts; i++)
         uses_table |= !d->parts[i].is_void && d->parts[i].material[0];
-    if (uses_table) {
-        const char *slash = strrchr(path, '/');
-        if (mat_rel[0] == '/' || !slash)
-            snprintf(mat_file, sizeof mat_file, "%s", mat_rel);
-        else
-            snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
-        if (!source_materials(d, mat_file, &table) &&
-            (rc = load_materials(mat_file, &table, c->err))) {
-            if (has_mat_file) {
-                char inner[sizeof c->err->msg];
-                snprintf(inner, sizeof inner, "%s", c->err->msg);
-                return tippe_json_fail(c, "materials", "%s", inner);
-            }
-            return rc;
+    if (!uses_table)
+        return TIPPE_OK;
+    char mat_file[1024];
+    const char *slash = strrchr(path, '/');
+    if (mat_rel[0] == '/' || !slash)
+        snprintf(mat_file, sizeof mat_file, "%s", mat_rel);
+    else
+        snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
+    cJSON *table = NULL;
+    int rc = source_materials(d, mat_file, &table) ? TIPPE_OK
+                                                   : load_materials(mat_file, &table, c->err);
+    if (rc) {
+        if (has_mat_file) {
+            char inner[sizeof c->err->msg];
+            snprintf(inner, sizeof inner, "%s", c->err->msg);
+            return tippe_json_fail(c, "materials", "%s", inner);
         }
-        for (i = 0; i < n && !rc; i++) {
-            part *p = &d->parts[i];
-            if (p->is_void || !p->material[0])
-                continue;
-            snprintf(pth, sizeof pth, "parts[%d].material", i);
-            rc = lookup_material(c, table, mat_file, p->material, pth, &p->density_g_cm3,
-                                 &p->printable);
-        }
-        cJSON_Delete(table);
-        if (rc)
-            return rc;
+        return rc;
     }
+    char pth[64];
+    for (int i = 0; i < d->n_parts && !rc; i++) {
+        part *p = &d->parts[i];
+        if (p->is_void || !p->material[0])
+            continue;
+        snprintf(pth, sizeof pth, "parts[%d].material", i);
+        rc = lookup_material(c, table, mat_file, p->material, pth, &p->density_g_cm3,
+                             &p->printable);
+    }
+    cJSON_Delete(table);
+    return rc;
+}
 
-    /* Voids take their parent's density and motion; clips and default sizes
-     * are resolved against the sphere and the shell. */
-    int shell = -1, n_shell = 0;
-    for (i = 0; i < n; i++)
+/* Void p takes its parent's density and motion. */
+static int resolve_void(const tippe_json_reader *c, tippe_design *d, int i)
+{
+    part *p = &d->parts[i];
+    char pth[64];
+    int j = 0;
+    while (j < d->n_parts && strcmp(d->parts[j].name, p->material))
+        j++;
+    snprintf(pth, sizeof pth, "parts[%d].cut_from", i);
+    if (j == d->n_parts)
+        return tippe_json_fail(c, pth, "no part named '%s'", p->material);
+    if (d->parts[j].is_void)
+        return tippe_json_fail(c, pth, "'%s' is itself a void: cut from the solid part",
+                               p->material);
+    p->parent = j;
+    p->moving = d->parts[j].moving;
+    p->density_g_cm3 = d->parts[j].density_g_cm3;
+    p->printable = d->parts[j].printable;
+    snprintf(p->material, sizeof p->material, "%s", d->parts[j].material);
+    return TIPPE_OK;
+}
+
+/* The clip radius of part i: the sphere, or the cavity of the one fixed
+ * shell (shell: its index, n_shell: how many fixed shells there are). */
+static int resolve_clip(const tippe_json_reader *c, tippe_design *d, int i, int shell,
+                        int n_shell)
+{
+    part *p = &d->parts[i];
+    char pth[64];
+    snprintf(pth, sizeof pth, "parts[%d].clip", i);
+    if (p->clip && p->moving)
+        return tippe_json_fail(c, pth,
+                               "a void cut from a moving part cannot be clipped (its shape "
+                               "would change as it moves)");
+    if (p->clip == CLIP_SPHERE) {
+        p->clip_radius_mm = d->radius_mm;
+    } else if (p->clip == CLIP_CAVITY || p->clip == CLIP_SHELL) {
+        const char *word = p->clip == CLIP_CAVITY ? "cavity" : "shell";
+        if (n_shell != 1)
+            return tippe_json_fail(c, pth,
+                                   "\"%s\" needs exactly one fixed shell part, the design "
+                                   "has %d",
+                                   word, n_shell);
+        if (d->parts[shell].z_mm != 0)
+            return tippe_json_fail(c, pth, "\"%s\" needs the shell '%s' centred at z_mm = 0",
+                                   word, d->parts[shell].name);
+        double cavity = d->parts[shell].radius_mm - d->parts[shell].thickness_mm;
+        p->clip_radius_mm = p->clip == CLIP_CAVITY ? cavity : d->parts[shell].radius_mm;
+        p->clip_inner_mm = p->clip == CLIP_SHELL ? cavity : 0;
+    }
+    return TIPPE_OK;
+}
+
+/* Voids, clips and default sizes, resolved against the sphere and the shell. */
+static int resolve_parts(const tippe_json_reader *c, tippe_design *d)
+{
+    int rc, shell = -1, n_shell = 0;
+    char pth[64];
+    for (int i = 0; i < d->n_parts; i++)
         if (d->parts[i].shape == SHAPE_SHELL && !d->parts[i].is_void && !d->parts[i].moving) {
             shell = i;
             n_shell++;
         }
-    for (i = 0; i < n; i++) {
+    for (int i = 0; i < d->n_parts; i++) {
         part *p = &d->parts[i];
         if ((p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL) && !p->has_radius)
             p->radius_mm = d->radius_mm; /* default: the sphere itself */
@@ -1045,55 +1309,125 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
             return tippe_json_fail(c, pth, "%g mm is not less than the shell's radius %g mm",
                                    p->thickness_mm, p->radius_mm);
         }
-        if (p->is_void) {
-            int j = 0;
-            while (j < n && strcmp(d->parts[j].name, p->material))
-                j++;
-            snprintf(pth, sizeof pth, "parts[%d].cut_from", i);
-            if (j == n)
-                return tippe_json_fail(c, pth, "no part named '%s'", p->material);
-            if (d->parts[j].is_void)
-                return tippe_json_fail(c, pth, "'%s' is itself a void: cut from the solid part",
-                                       p->material);
-            p->parent = j;
-            p->moving = d->parts[j].moving;
-            p->density_g_cm3 = d->parts[j].density_g_cm3;
-            p->printable = d->parts[j].printable;
-            snprintf(p->material, sizeof p->material, "%s", d->parts[j].material);
-        }
-        if (p->clip && p->moving) {
-            snprintf(pth, sizeof pth, "parts[%d].clip", i);
-            return tippe_json_fail(c, pth,
-                                   "a void cut from a moving part cannot be clipped (its shape "
-                                   "would change as it moves)");
-        }
-        if (p->clip == 1) {
-            p->clip_radius_mm = d->radius_mm;
-        } else if (p->clip == 2) {
-            snprintf(pth, sizeof pth, "parts[%d].clip", i);
-            if (n_shell != 1)
-                return tippe_json_fail(c, pth,
-                                       "\"cavity\" needs exactly one fixed shell part, the design "
-                                       "has %d",
-                                       n_shell);
-            if (d->parts[shell].z_mm != 0)
-                return tippe_json_fail(c, pth,
-                                       "\"cavity\" needs the shell '%s' centred at z_mm = 0",
-                                       d->parts[shell].name);
-            p->clip_radius_mm = d->parts[shell].radius_mm - d->parts[shell].thickness_mm;
-        }
+        if (p->is_void && (rc = resolve_void(c, d, i)))
+            return rc;
+        if ((rc = resolve_clip(c, d, i, shell, n_shell)))
+            return rc;
         if ((p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE) && !p->has_height)
             p->height_mm = 2 * p->clip_radius_mm; /* spans the clip ball */
+        if (p->printed && p->material[0] && !p->printable) {
+            snprintf(pth, sizeof pth, "parts[%d].print", i);
+            return tippe_json_fail(c, pth,
+                                   "material '%s' is not printable (the materials table says "
+                                   "so): only a printed part has a print block",
+                                   p->material);
+        }
     }
+    return TIPPE_OK;
+}
 
-    if ((rc = check_layout(c, d)))
-        return rc;
+/* The print model's description of p's own region (SI). */
+static tippe_solid print_solid(const part *p)
+{
+    const double mm = 1e-3;
+    tippe_solid s = {0};
+    s.z_centre = p->z_mm * mm;
+    s.radius = p->radius_mm * mm;
+    s.clip_outer = p->clip_radius_mm * mm;
+    s.clip_inner = p->clip_inner_mm * mm;
+    switch (p->shape) {
+    case SHAPE_BALL:
+        s.kind = TIPPE_SOLID_BALL;
+        break;
+    case SHAPE_SHELL:
+        s.kind = TIPPE_SOLID_SHELL;
+        s.inner_radius = (p->radius_mm - p->thickness_mm) * mm;
+        break;
+    case SHAPE_CYLINDER:
+    case SHAPE_TUBE:
+        s.kind = TIPPE_SOLID_TUBE;
+        s.inner_radius = p->inner_radius_mm * mm;
+        s.height = p->height_mm * mm;
+        break;
+    case SHAPE_TORUS:
+    default:
+        s.kind = TIPPE_SOLID_TORUS;
+        s.centre_radius = p->centre_radius_mm * mm;
+        s.radial_semi = p->radial_semi_mm * mm;
+        s.axial_semi = p->axial_semi_mm * mm;
+        break;
+    }
+    return s;
+}
 
-    /* Moments: parts add, voids subtract (with the parent's density). */
+/* Unit-density moments of printed part i as printed: the part minus its voids
+ * (closed forms) less (1 - infill) x its sparse core (print model). Sets the
+ * part's infill (calibrated from a weighed mass when one is given), its solid
+ * and skin masses and the relative error bound. */
+static int printed_moments(const tippe_json_reader *c, tippe_design *d, int i,
+                           tippe_moments *out)
+{
+    part *p = &d->parts[i];
+    tippe_solid shape = print_solid(p), holes[MAX_PARTS];
+    tippe_moments solid = part_moments(p);
+    int n_holes = 0;
+    for (int k = 0; k < d->n_parts; k++)
+        if (d->parts[k].parent == i) {
+            holes[n_holes++] = print_solid(&d->parts[k]);
+            solid = tippe_moments_sub(solid, part_moments(&d->parts[k]));
+        }
+    tippe_print_core core;
+    tippe_error perr;
+    char pth[64];
+    snprintf(pth, sizeof pth, "parts[%d].print", i);
+    int rc = tippe_print_core_moments(&shape, holes, n_holes, tippe_print_wall_mm(&p->print) * 1e-3,
+                                      tippe_print_skin_mm(&p->print) * 1e-3, &core, &perr);
+    if (rc)
+        return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", perr.msg)
+                                  : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,
+                                                    perr.msg);
+    double rho = p->density_g_cm3 * 1e3;
+    p->infill = p->print.infill;
+    if (p->calibrated) {
+        double m0, m1;
+        int side = tippe_print_infill_for_mass(p->measured_mass_g * 1e-3, solid.m, core.core.m,
+                                               rho, &p->infill, &m0, &m1);
+        snprintf(pth, sizeof pth, "parts[%d].print.measured_mass_g", i);
+        if (side < 0)
+            return tippe_json_fail(c, pth,
+                                   "%g g is less than the walls and top/bottom skins alone "
+                                   "weigh (%.3f g at 0 %% infill with these settings and %g "
+                                   "g/cm^3)",
+                                   p->measured_mass_g, m0 * 1e3, p->density_g_cm3);
+        if (side > 0)
+            return tippe_json_fail(c, pth,
+                                   "%g g is more than part '%s' weighs printed solid (%.3f g at "
+                                   "%g g/cm^3)",
+                                   p->measured_mass_g, p->name, m1 * 1e3, p->density_g_cm3);
+    }
+    p->solid_mass_kg = rho * solid.m;
+    p->skin_mass_kg = rho * (solid.m - core.core.m);
+    /* the error bound of each moment, relative to the printed part's */
+    double lack = 1.0 - p->infill, printed_m = solid.m - lack * core.core.m;
+    double printed_rr = solid.m_rr - lack * core.core.m_rr;
+    p->print_rel_error = lack * fmax(core.abserr[0] / printed_m, core.abserr[3] / printed_rr);
+    /* the part's own region, its voids added back: they subtract as usual */
+    *out = tippe_moments_sub(part_moments(p), tippe_moments_scale(core.core, lack));
+    return TIPPE_OK;
+}
+
+/* Moments: parts add, voids subtract (with the parent's density); the fixed
+ * parts and the moving group at Z2 = 0. */
+static int sum_moments(const tippe_json_reader *c, tippe_design *d)
+{
     d->fixed = d->moving = (tippe_moments){0, 0, 0, 0};
-    for (i = 0; i < n; i++) {
+    for (int i = 0; i < d->n_parts; i++) {
         part *p = &d->parts[i];
-        tippe_moments m = tippe_moments_scale(part_moments(p), p->density_g_cm3 * 1e3);
+        tippe_moments unit = part_moments(p);
+        int rc;
+        if (p->printed && (rc = printed_moments(c, d, i, &unit)))
+            return rc;
+        tippe_moments m = tippe_moments_scale(unit, p->density_g_cm3 * 1e3);
         if (!finite_moments(m) || !(m.m > 0))
             return tippe_error_set(c->err, TIPPE_ECOMPUTE,
                                    "%s: parts[%d]: the geometry module gave no finite positive "
@@ -1108,30 +1442,54 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
     return TIPPE_OK;
 }
 
-int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
-                      tippe_design **out, tippe_error *err)
+/* A parsed (and overridden) design file, checked step by step; check = 0
+ * skips the layout checks (overlaps, travel), for tippe_design_derive. */
+static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d,
+                 int check)
+{
+    char mat_rel[512];
+    int has_mat_file = 0, rc;
+    if ((rc = parse_header(c, root, path, d, mat_rel, sizeof mat_rel, &has_mat_file)) ||
+        (rc = parse_parts(c, root, d)) ||
+        (rc = resolve_materials(c, path, mat_rel, has_mat_file, d)) ||
+        (rc = resolve_parts(c, d)) || (check && (rc = check_layout(c, d))) ||
+        (rc = sum_moments(c, d)))
+        return rc;
+    return tippe_tolerances_read(c, cJSON_GetObjectItemCaseSensitive(root, "tolerances"), d,
+                                 &d->tolerances, &d->n_tolerances);
+}
+
+static int load(const char *path, const char *const *overrides, int n_overrides, int check,
+                tippe_design **out, tippe_error *err)
 {
     /* The geometry module may call GSL: report, never abort. */
     tippe_gsl_errors_as_codes();
     *out = NULL;
     if (!path)
         return tippe_error_set(err, TIPPE_EINPUT, "no design file given");
+    if (n_overrides < 0)
+        n_overrides = 0;
     tippe_json_reader *c =
         tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, "set by --set ");
     tippe_design *d = calloc(1, sizeof *d);
-    if (!c || !d) {
+    if (d)
+        d->overrides = calloc((size_t)n_overrides + 1, sizeof *d->overrides);
+    if (!c || !d || !d->overrides) {
         free(c);
-        free(d);
+        tippe_design_free(d);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
     }
     cJSON *root = NULL;
     int rc = tippe_json_load(c, MAX_FILE_MIB, "design", &root);
     if (!rc)
         rc = tippe_json_check_duplicates(c, root, "");
-    for (int i = 0; !rc && i < n_overrides; i++)
+    for (int i = 0; !rc && i < n_overrides; i++) {
         rc = apply_override(c, root, overrides[i]);
+        if (!rc && !(d->overrides[d->n_overrides++] = dup_string(overrides[i])))
+            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    }
     if (!rc)
-        rc = build(c, root, path, d);
+        rc = build(c, root, path, d, check);
     cJSON_Delete(root);
     free(c);
     if (rc) {
@@ -1142,10 +1500,38 @@ int tippe_design_load(const char *path, const char *const *overrides, int n_over
     return TIPPE_OK;
 }
 
+int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
+                      tippe_design **out, tippe_error *err)
+{
+    return load(path, overrides, n_overrides, 1, out, err);
+}
+
+int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_extra,
+                        tippe_design **out, tippe_error *err)
+{
+    *out = NULL;
+    if (n_extra < 0)
+        n_extra = 0;
+    const char **all = malloc(((size_t)d->n_overrides + (size_t)n_extra + 1) * sizeof *all);
+    if (!all)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    for (int i = 0; i < d->n_overrides; i++)
+        all[i] = d->overrides[i];
+    for (int i = 0; i < n_extra; i++)
+        all[d->n_overrides + i] = extra[i];
+    int rc = load(d->path, all, d->n_overrides + n_extra, 0, out, err);
+    free(all);
+    return rc;
+}
+
 void tippe_design_free(tippe_design *d)
 {
     if (!d)
         return;
+    for (int i = 0; d->overrides && i < d->n_overrides; i++)
+        free(d->overrides[i]);
+    free(d->overrides);
+    free(d->tolerances);
     free(d->path);
     free(d->name);
     free(d->parts);
@@ -1240,9 +1626,206 @@ int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
     return TIPPE_OK;
 }
 
+int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out)
+{
+    memset(out, 0, sizeof *out);
+    if (i < 0 || i >= d->n_parts)
+        return tippe_error_set(NULL, TIPPE_EINPUT, "no part %d", i);
+    const part *p = &d->parts[i];
+    if (!p->printed)
+        return TIPPE_OK;
+    out->printed = 1;
+    out->settings = p->print;
+    out->wall_mm = tippe_print_wall_mm(&p->print);
+    out->skin_mm = tippe_print_skin_mm(&p->print);
+    out->infill = p->infill;
+    out->calibrated = p->calibrated;
+    out->measured_mass_kg = p->calibrated ? p->measured_mass_g * 1e-3 : 0;
+    out->solid_mass_kg = p->solid_mass_kg;
+    out->skin_mass_kg = p->skin_mass_kg;
+    out->printed_mass_kg = p->skin_mass_kg + p->infill * (p->solid_mass_kg - p->skin_mass_kg);
+    out->rel_error = p->print_rel_error;
+    return TIPPE_OK;
+}
+
+int tippe_design_has_printed_parts(const tippe_design *d)
+{
+    for (int i = 0; i < d->n_parts; i++)
+        if (d->parts[i].printed)
+            return 1;
+    return 0;
+}
+
 int tippe_design_part_printable(const tippe_design *d, int i)
 {
     return i >= 0 && i < d->n_parts && d->parts[i].printable;
+}
+
+/* ------------------------------------------------------ numeric fields */
+
+/* The length fields a part of this shape has, and where each lives. */
+static double *length_field(part *p, const char *key)
+{
+    int cyl = p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE;
+    if (!strcmp(key, "radius_mm") && p->shape != SHAPE_TORUS)
+        return &p->radius_mm;
+    if (!strcmp(key, "thickness_mm") && p->shape == SHAPE_SHELL)
+        return &p->thickness_mm;
+    if (!strcmp(key, "inner_radius_mm") && cyl)
+        return &p->inner_radius_mm;
+    if (!strcmp(key, "height_mm") && cyl)
+        return &p->height_mm;
+    if (p->shape == SHAPE_TORUS) {
+        if (!strcmp(key, "centre_radius_mm"))
+            return &p->centre_radius_mm;
+        if (!strcmp(key, "radial_semi_mm"))
+            return &p->radial_semi_mm;
+        if (!strcmp(key, "axial_semi_mm"))
+            return &p->axial_semi_mm;
+    }
+    return NULL;
+}
+
+/* Index of the part a "parts.NAME" / "parts[I]" prefix (len characters of
+ * field) names, or -1. */
+static int part_named(const tippe_design *d, const char *field, size_t len)
+{
+    if (len > 7 && field[5] == '[') {
+        char *end = NULL;
+        long i = strtol(field + 6, &end, 10);
+        return end == field + len - 1 && *end == ']' && i >= 0 && i < d->n_parts ? (int)i : -1;
+    }
+    for (int i = 0; i < d->n_parts; i++)
+        if (strlen(d->parts[i].name) == len - 6 && !strncmp(d->parts[i].name, field + 6, len - 6))
+            return i;
+    return -1;
+}
+
+/* parts.NAME.print.KEY: the print settings that are numbers (infill: the one
+ * used, calibrated or not). */
+static int print_field(const tippe_design *d, int i, const char *key, double *value,
+                       int *part_index, char *why, size_t why_cap)
+{
+    const part *p = &d->parts[i];
+    *part_index = i;
+    if (!p->printed) {
+        snprintf(why, why_cap, "part '%s' has no print block", p->name);
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "infill"))
+        *value = p->infill;
+    else if (!strcmp(key, "line_width_mm"))
+        *value = p->print.line_width_mm;
+    else if (!strcmp(key, "layer_height_mm"))
+        *value = p->print.layer_height_mm;
+    else if (!strcmp(key, "perimeters"))
+        *value = p->print.perimeters;
+    else if (!strcmp(key, "top_bottom_layers"))
+        *value = p->print.top_bottom_layers;
+    else if (!strcmp(key, "measured_mass_g") && p->calibrated)
+        *value = p->measured_mass_g;
+    else {
+        snprintf(why, why_cap, "not a number setting of the print block (infill, "
+                               "line_width_mm, layer_height_mm, perimeters, "
+                               "top_bottom_layers, measured_mass_g when given)");
+        return TIPPE_EINPUT;
+    }
+    return TIPPE_OK;
+}
+
+int tippe_design_field(const tippe_design *d, const char *field, double *value, int *part_index,
+                       char *why, size_t why_cap)
+{
+    *part_index = -1;
+    if (!strcmp(field, "radius_mm")) {
+        *value = d->radius_mm;
+        return TIPPE_OK;
+    }
+    const char *dot = strrchr(field, '.');
+    if (strncmp(field, "parts", 5) || (field[5] != '.' && field[5] != '[') || !dot ||
+        dot < field + 6) {
+        snprintf(why, why_cap, "not a number field of the design (radius_mm, "
+                               "parts.NAME.FIELD or parts[I].FIELD)");
+        return TIPPE_EINPUT;
+    }
+    int i = part_named(d, field, (size_t)(dot - field));
+    size_t plen = (size_t)(dot - field);
+    if (i < 0 && plen > 12 && !strncmp(dot - 6, ".print", 6) &&
+        (i = part_named(d, field, plen - 6)) >= 0)
+        return print_field(d, i, dot + 1, value, part_index, why, why_cap);
+    if (i < 0) {
+        snprintf(why, why_cap, "no part %.*s", (int)(dot - field - 5), field + 5);
+        return TIPPE_EINPUT;
+    }
+    part *p = &d->parts[i];
+    const char *key = dot + 1;
+    *part_index = i;
+    if (!strcmp(key, "z_mm")) {
+        *value = p->z_mm;
+        return TIPPE_OK;
+    }
+    if (!strcmp(key, "density_g_cm3")) {
+        if (p->is_void) {
+            snprintf(why, why_cap, "a void has its part's density: give the tolerance to "
+                                   "'%s'", d->parts[p->parent].name);
+            return TIPPE_EINPUT;
+        }
+        *value = p->density_g_cm3;
+        return TIPPE_OK;
+    }
+    const double *v = length_field(p, key);
+    if (!v) {
+        snprintf(why, why_cap, "not a number field of a %s (radius_mm, ... as the shape has; "
+                               "z_mm; density_g_cm3)", shape_names[p->shape]);
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "height_mm") && !p->has_height) {
+        snprintf(why, why_cap, "the height is not in the file: the part spans its clip ball, "
+                               "so the clip decides it");
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "radius_mm") && tippe_design_forms_sphere(d, i)) {
+        snprintf(why, why_cap, "the part forms the sphere the top rolls on: its radius is "
+                               "radius_mm (give the tolerance there)");
+        return TIPPE_EINPUT;
+    }
+    *value = *v;
+    return TIPPE_OK;
+}
+
+int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, int cap)
+{
+    static const char *const all[] = {"radius_mm", "thickness_mm", "inner_radius_mm",
+                                      "height_mm", "centre_radius_mm", "radial_semi_mm",
+                                      "axial_semi_mm"};
+    if (i < 0 || i >= d->n_parts)
+        return 0;
+    part *p = &d->parts[i];
+    int n = 0;
+    for (size_t k = 0; k < sizeof all / sizeof all[0] && n < cap; k++) {
+        const double *v = length_field(p, all[k]);
+        if (!v || *v <= 0 || (!strcmp(all[k], "height_mm") && !p->has_height) ||
+            (!strcmp(all[k], "radius_mm") && tippe_design_forms_sphere(d, i)))
+            continue;
+        keys[n++] = all[k];
+    }
+    return n;
+}
+
+int tippe_design_forms_sphere(const tippe_design *d, int i)
+{
+    if (i < 0 || i >= d->n_parts)
+        return 0;
+    const part *p = &d->parts[i];
+    return !p->is_void && !p->moving && (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL) &&
+           fabs(p->radius_mm - d->radius_mm) < SAME_LENGTH_MM && p->z_mm == 0;
+}
+
+int tippe_design_n_tolerances(const tippe_design *d) { return d->n_tolerances; }
+
+const tippe_tolerance *tippe_design_tolerance(const tippe_design *d, int i)
+{
+    return i >= 0 && i < d->n_tolerances ? &d->tolerances[i] : NULL;
 }
 
 /* ------------------------------------------ physical travel without a guess */
@@ -1402,6 +1985,24 @@ int tippe_design_source_apply(const tippe_design_source *s, const char *const *o
     return TIPPE_OK;
 }
 
+/* A built variant remembers its overrides (and its travel, when that was the
+ * physical one) so that tippe_design_derive() rebuilds the same design. */
+static int remember_overrides(tippe_design *d, const char *const *overrides, int n,
+                              tippe_error *err)
+{
+    if (!(d->overrides = calloc((size_t)n + 1, sizeof *d->overrides)))
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    char travel[128];
+    snprintf(travel, sizeof travel, "travel_mm=[%.17g,%.17g]", d->travel_mm[0], d->travel_mm[1]);
+    for (int i = 0; i <= n; i++) {
+        if (i == n && !d->travel_physical)
+            break;
+        if (!(d->overrides[d->n_overrides++] = dup_string(i < n ? overrides[i] : travel)))
+            return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    }
+    return TIPPE_OK;
+}
+
 int tippe_design_source_build(const tippe_design_source *s, const char *const *overrides,
                               int n_overrides, unsigned flags, tippe_design **out,
                               tippe_error *err)
@@ -1418,9 +2019,11 @@ int tippe_design_source_build(const tippe_design_source *s, const char *const *o
         d->source = s;
         d->travel_physical = (flags & TIPPE_DESIGN_TRAVEL_PHYSICAL) != 0;
         d->coarse_layout = (flags & TIPPE_DESIGN_COARSE_LAYOUT) != 0;
-        rc = build(c, root, s->path, d);
+        rc = build(c, root, s->path, d, 1);
         d->source = NULL;
     }
+    if (!rc)
+        rc = remember_overrides(d, overrides, n_overrides, err);
     cJSON_Delete(root);
     free(c);
     if (rc) {
