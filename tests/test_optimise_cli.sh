@@ -33,6 +33,9 @@ for g in ("I", "II", "III"):
     assert abs(a - b) <= 1e-6, (g, a, b)
 assert abs(best["narrowest_zone_mm"] - sw["narrowest_zone_mm"]) <= 1e-6
 assert sw["three_in_one"]
+# The robust widths are sweep's bands on the same design: the same numbers.
+assert abs(best["robust_narrowest_zone_mm"] - sw["robust_narrowest_zone_mm"]) <= 1e-6
+assert best["robust_narrowest_zone_mm"] <= best["narrowest_zone_mm"]
 assert sw["physical_travel_mm"] == sw["travel_mm"], "BEST.json's travel is its physical travel"
 EOF
 check "BEST.json's notes say how it was found and the objective" \

@@ -134,15 +134,18 @@ static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, doub
         snprintf(head, sizeof head, "%s", tail && tail > p ? tail + 1 : p);
         printf(" %10.10s", head);
     }
-    printf(" %8s %8s %8s %9s %8s %8s  %s\n", "I (mm)", "II (mm)", "III (mm)", "narrowest",
-           "eps_max", "n* rev/s", "status");
+    printf(" %8s %8s %8s %9s%s %8s %8s  %s\n", "I (mm)", "II (mm)", "III (mm)", "narrowest",
+           r->robust ? "    robust" : "", "eps_max", "n* rev/s", "status");
     for (int c = 0; c < r->n_choices; c++) {
         const tippe_opt_eval *e = &r->choices[c].best;
         char label[256];
         printf("%-24.24s", tippe_opt_spec_choice_label(s, c, label, sizeof label));
         print_params(stdout, s, e, 0);
-        printf(" %8.3f %8.3f %8.3f %9.3f %8.3f %8.2f  %s%s\n", e->zone_mm[0], e->zone_mm[1],
-               e->zone_mm[2], e->objective_mm, e->eps_max_mm, e->spin_flip_rev_s,
+        printf(" %8.3f %8.3f %8.3f %9.3f", e->zone_mm[0], e->zone_mm[1], e->zone_mm[2],
+               e->objective_mm);
+        if (r->robust)
+            printf(" %9.3f", e->robust_mm);
+        printf(" %8.3f %8.2f  %s%s\n", e->eps_max_mm, e->spin_flip_rev_s,
                tippe_opt_status_name(e->status), c == r->best_choice ? "  <- best" : "");
     }
     const tippe_opt_eval *b = &r->choices[r->best_choice].best;
@@ -152,9 +155,11 @@ static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, doub
            b->travel_mm[1]);
     printf("accuracy zone ends root-found to 1e-7 mm (full sweep of the best point); the search\n"
            "         itself is a global search, not a proof of the global optimum\n");
-    if (r->robust_nominal)
-        printf("note     robust_narrowest_zone: tolerance bands are not modelled yet, the widths "
-               "are nominal\n");
+    if (r->robust && b->has_robust)
+        printf("robust   narrowest zone %.6f mm (I %.6f, II %.6f, III %.6f mm): each width less\n"
+               "         the tolerance bands of its ends (tippe sweep's bands); the search\n"
+               "         maximised nominal widths and ranked the choices by this\n",
+               b->robust_mm, b->robust_zone_mm[0], b->robust_zone_mm[1], b->robust_zone_mm[2]);
 }
 
 static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, double seconds,
@@ -164,7 +169,8 @@ static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, do
     if (!o || !cJSON_AddStringToObject(o, "spec", tippe_opt_spec_path(s)) ||
         !cJSON_AddNumberToObject(o, "evaluations", (double)r->total_evals) ||
         !cJSON_AddNumberToObject(o, "seconds", seconds) ||
-        !cJSON_AddBoolToObject(o, "robust_is_nominal", r->robust_nominal) ||
+        !cJSON_AddStringToObject(o, "objective", r->robust ? "robust_narrowest_zone"
+                                                            : "narrowest_zone") ||
         !(choices = cJSON_AddArrayToObject(o, "choices"))) {
         cJSON_Delete(o);
         return NULL;
@@ -196,6 +202,8 @@ static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, do
              (isfinite(e->wall_mm) ? cJSON_AddNumberToObject(ch, "wall_mm", e->wall_mm)
                                    : cJSON_AddNullToObject(ch, "wall_mm")) &&
              cJSON_AddNumberToObject(ch, "weight_g", e->weight_g) &&
+             (e->has_robust ? cJSON_AddNumberToObject(ch, "robust_narrowest_zone_mm", e->robust_mm)
+                            : cJSON_AddNullToObject(ch, "robust_narrowest_zone_mm")) &&
              cJSON_AddStringToObject(ch, "status", tippe_opt_status_name(e->status)) &&
              cJSON_AddNumberToObject(ch, "evaluations", (double)r->choices[c].n_evals) &&
              cJSON_AddBoolToObject(ch, "best", c == r->best_choice);
