@@ -259,10 +259,6 @@ static int catalogue_options(tippe_json_reader *c, const char *cpath, const cJSO
         snprintf(o->set[1], sizeof o->set[1], "%s.height_mm=%.17g", part_path, h);
         o->n_set = 2;
     }
-    if (!rc && n == 0) {
-        tippe_json_path(p, sizeof p, cpath, "items");
-        rc = tippe_json_fail(c, p, "names no item of catalogue '%s'", name);
-    }
     for (const cJSON *w = want ? want->child : NULL; !rc && w; w = w->next) {
         int found = 0;
         for (int k = 0; k < n; k++)
@@ -272,6 +268,10 @@ static int catalogue_options(tippe_json_reader *c, const char *cpath, const cJSO
             rc = tippe_json_fail(c, p, "'%s' is not an item of catalogue '%s'",
                                  cJSON_IsString(w) ? w->valuestring : "?", name);
         }
+    }
+    if (!rc && n == 0) {
+        tippe_json_path(p, sizeof p, cpath, "items");
+        rc = tippe_json_fail(c, p, "names no item of catalogue '%s'", name);
     }
     ch->n = n;
     cJSON_Delete(cat);
@@ -984,7 +984,7 @@ void tippe_opt_result_free(tippe_opt_result *r)
 
 /* Whether a ranks above b: feasible before infeasible, then by robust width
  * where both have one, else by score. */
-static int rank_above(const tippe_opt_eval *a, const tippe_opt_eval *b)
+int tippe_opt_rank_above(const tippe_opt_eval *a, const tippe_opt_eval *b)
 {
     int fa = a->status == TIPPE_OPT_OK, fb = b->status == TIPPE_OPT_OK;
     if (fa != fb)
@@ -1039,7 +1039,7 @@ int tippe_opt_run(const tippe_opt_spec *s, const tippe_opt_options *o, tippe_opt
         out->total_evals += out->choices[c].n_evals;
         if (jobs[c].failed && failed < 0)
             failed = c;
-        if (rank_above(&out->choices[c].best, &out->choices[out->best_choice].best))
+        if (tippe_opt_rank_above(&out->choices[c].best, &out->choices[out->best_choice].best))
             out->best_choice = c;
     }
     free(jobs);

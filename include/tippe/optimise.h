@@ -105,6 +105,10 @@ typedef struct {
                                 the choices are ranked by robust widths at their best */
 } tippe_opt_result;
 
+/* Whether candidate a ranks above b: feasible before infeasible, then by the
+ * robust width where both have one, else by score. */
+int tippe_opt_rank_above(const tippe_opt_eval *a, const tippe_opt_eval *b);
+
 /* Total evaluations the search will make at most (for a progress bar). */
 long tippe_opt_planned_evals(const tippe_opt_spec *s);
 
