@@ -14,88 +14,64 @@
 
 static const char *const VERB = "optimise";
 
-static void optimise_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: tippe optimise SPEC.json [-o BEST.json] [--json] [--plot FILE]\n"
-            "                      [--csv FILE] [--seed S] [--threads N]\n"
-            "\n"
-            "Searches the designs a spec allows (a base design with fields that vary over\n"
-            "ranges, discrete choices such as materials or catalogue screws, fields tied to\n"
-            "others, constraints) for the one whose narrowest zone is widest: for each of the\n"
-            "groups I, II and III its widest contiguous run of Z2 within the physical travel,\n"
-            "the narrowest of the three (0 unless all three are reachable). NLopt's global\n"
-            "algorithm (default DIRECT-L) runs for each choice, then a local polish (COBYLA);\n"
-            "the best of each choice is re-measured with the full sweep (zone ends to 1e-6 mm).\n"
-            "docs/optimise.md describes the spec.\n"
-            "\n"
-            "  -o BEST.json     write the best design as a design file (travel_mm its physical\n"
-            "                   travel, notes saying how it was found and its zone widths)\n"
-            "  --json           print one JSON object instead of the table\n"
-            "  --plot FILE      zone widths of the best design of each choice and the search's\n"
-            "                   convergence; PNG, SVG or PDF by the file's extension\n"
-            "  --csv FILE       every evaluated candidate (choice, parameters, zones in mm,\n"
-            "                   constraint values, status, score)\n"
-            "  --seed S         seed of the stochastic algorithms (CRS2, MLSL, ISRES);\n"
-            "                   default 1; DIRECT-L, COBYLA and BOBYQA do not draw numbers\n"
-            "  --threads N      OpenMP threads for the choices (default: all cores); the\n"
-            "                   answer does not depend on it\n"
-            "  --help           this text\n"
-            "\n"
-            "Exit status: 0 ok, 2 bad usage or spec (nothing written), 1 search failed.\n");
-}
-
 typedef struct {
     const char *spec, *best, *plot, *csv;
     int json;
     long seed, threads;
 } optimise_args;
 
-static int parse_args(int argc, char **argv, optimise_args *a, int *done)
+static int parse_args(int argc, char **argv, optimise_args *a)
 {
-    *done = 0;
-    const char *seed = NULL, *threads = NULL;
-    for (int i = 1; i < argc; i++) {
-        const char *s = argv[i];
-        const char **val = NULL;
-        if (tippe_cli_is_help(s)) {
-            optimise_usage(stdout);
-            *done = 1;
-            return 0;
-        } else if (!strcmp(s, "--json")) {
-            a->json = 1;
-            continue;
-        } else if (!strcmp(s, "-o") || !strcmp(s, "--output")) {
-            val = &a->best;
-        } else if (!strcmp(s, "--plot")) {
-            val = &a->plot;
-        } else if (!strcmp(s, "--csv")) {
-            val = &a->csv;
-        } else if (!strcmp(s, "--seed")) {
-            val = &seed;
-        } else if (!strcmp(s, "--threads")) {
-            val = &threads;
-        } else if (tippe_cli_is_option(s, 0)) {
-            return tippe_cli_usage_error(VERB, "unknown option '%s'", s);
-        } else if (!a->spec) {
-            a->spec = s;
-            continue;
-        } else {
-            return tippe_cli_usage_error(VERB, "one spec file only (got also '%s')", s);
-        }
-        if (!(*val = tippe_cli_value(VERB, argc, argv, &i)))
-            return 2;
-    }
-    if (!a->spec)
-        return tippe_cli_usage_error(VERB, "no spec file given");
     a->seed = 1;
     a->threads = 0;
-    if (seed && !tippe_cli_parse_long(seed, 0, 2147483647L, &a->seed))
-        return tippe_cli_usage_error(VERB, "--seed '%s': expected a whole number 0 .. 2147483647",
-                                     seed);
-    if (threads && !tippe_cli_parse_long(threads, 1, 1024, &a->threads))
-        return tippe_cli_usage_error(VERB, "--threads '%s': expected a whole number 1 .. 1024",
-                                     threads);
+    tippe_cli_opt opts[] = {
+        {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &a->best,
+         .arg = "BEST.json",
+         .help = "write the best design as a design file (travel_mm its physical\n"
+                 "travel, notes saying how it was found and its zone widths)"},
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
+         .help = "print one JSON object instead of the table"},
+        {.name = "plot", .kind = TIPPE_CLI_STRING, .value = &a->plot, .arg = "FILE",
+         .help = "zones of the best design of each choice (the best ten) and the\n"
+                 "search's convergence; PNG, SVG or PDF by the file's extension"},
+        {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
+         .help = "every evaluated candidate (choice, parameters, zones in mm,\n"
+                 "constraint values, status, score)"},
+        {.name = "seed", .kind = TIPPE_CLI_LONG, .value = &a->seed, .arg = "S", .min = 0,
+         .max = 2147483647.0, .def = "1",
+         .help = "seed of the stochastic algorithms (CRS2, MLSL, ISRES); DIRECT-L,\n"
+                 "COBYLA and BOBYQA draw no random numbers"},
+        {.name = "threads", .kind = TIPPE_CLI_LONG, .value = &a->threads, .arg = "N", .min = 1,
+         .max = 1024, .def = "all cores",
+         .help = "OpenMP threads for the choices; the answer does not depend on it"},
+        {NULL},
+    };
+    tippe_cli_spec spec = {
+        .verb = VERB,
+        .synopsis = "SPEC.json [-o BEST.json] [--json] [--plot FILE] [--csv FILE] [--seed S]\n"
+                    "                      [--threads N]",
+        .about = "Searches the designs a spec allows (a base design with fields that vary over\n"
+                 "ranges, discrete choices such as materials or catalogue screws, fields tied\n"
+                 "to others, constraints) for the one whose narrowest zone is widest: for each\n"
+                 "of the groups I, II and III its widest contiguous run of Z2 within the\n"
+                 "physical travel, the narrowest of the three (0 unless all three are\n"
+                 "reachable). NLopt's global algorithm (default DIRECT-L) runs for each choice\n"
+                 "(choices in parallel), then a local polish (COBYLA); the best of each choice\n"
+                 "is re-measured with the full sweep (zone ends to 1e-6 mm). With the objective\n"
+                 "robust_narrowest_zone the choices are ranked by the widths left after the\n"
+                 "tolerance bands of the zone ends.",
+        .after = "A progress bar is shown on stderr when it is a terminal. The spec format and\n"
+                 "the shipped specs: docs/optimise.md. Exit status: 0 ok, 2 bad usage or spec\n"
+                 "(nothing written), 1 search failed.",
+        .opts = opts,
+        .min_args = 1,
+        .max_args = 1,
+        .args_name = "spec file",
+    };
+    int n_args = 0;
+    int rc = tippe_cli_parse(&spec, argc, argv, &a->spec, &n_args);
+    if (rc)
+        return rc;
     const char *outs[3] = {a->best, a->plot, a->csv};
     const char *names[3] = {"-o", "--plot", "--csv"};
     for (int k = 0; k < 3; k++) {
@@ -285,9 +261,9 @@ static int write_best(const char *path, const tippe_opt_spec *s, const tippe_opt
 int tippe_cli_optimise(int argc, char **argv)
 {
     optimise_args a = {0};
-    int done = 0, rc = parse_args(argc, argv, &a, &done);
-    if (rc || done)
-        return rc;
+    int rc = parse_args(argc, argv, &a);
+    if (rc)
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
     tippe_error err = {0};
     tippe_opt_spec *s = NULL;
     if ((rc = tippe_opt_spec_load(a.spec, &s, &err)))
