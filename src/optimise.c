@@ -1110,7 +1110,10 @@ cJSON *tippe_opt_design_json(const tippe_opt_spec *s, const tippe_opt_eval *e,
     if (tippe_design_source_apply(s->src, ov, n, &root, err))
         return NULL;
     /* travel_mm: the physical travel, so that every verb sweeps what was scored. */
-    double tr[2] = {e->travel_mm[0], e->travel_mm[1]};
+    /* Rounded inward by 1e-9 mm: the file's numbers, read back, may move the
+     * contact a few ulps (4e-15 mm seen), and a stated travel must lie within
+     * the physical one. 1e-9 mm is far below the 1e-6 mm zone ends carry. */
+    double tr[2] = {e->travel_mm[0] + 1e-9, e->travel_mm[1] - 1e-9};
     cJSON *travel = cJSON_CreateDoubleArray(tr, 2);
     /* materials: the base design's table, seen from where the file is written. */
     char mat_rel[512] = "materials.json", mat_abs[PATH_MAX], base_dir[PATH_MAX],
