@@ -39,6 +39,18 @@ assert best["robust_narrowest_zone_mm"] <= best["narrowest_zone_mm"]
 # BEST.json's travel is its physical travel, rounded inward by 1e-9 mm.
 assert all(abs(a - b) <= 2e-9 for a, b in zip(sw["physical_travel_mm"], sw["travel_mm"]))
 EOF
+# Independent geometry (tools/check_drilled_ball.py: its own mass integrals, closed-form
+# travel, Theorem 5.1 by bisection). 1e-5 mm: tippe lets parts touch within 1e-6 mm, which
+# moves the travel's end at the screw's corner by ~2e-6 mm; interior zone ends agree to 1e-9.
+python3 tools/check_drilled_ball.py "$tmp/best.json" >"$tmp/indep.txt"
+check "independent geometry gives the same zones to 1e-5 mm" python3 - "$tmp/indep.txt" "$tmp/sweep.json" <<'EOF'
+import json, sys
+line = [l for l in open(sys.argv[1]) if l.startswith("zones")][0].split()
+indep = {"I": float(line[2]), "II": float(line[4]), "III": float(line[6])}
+sw = json.load(open(sys.argv[2]))["zone_widths_mm"]
+for g in indep:
+    assert abs(indep[g] - sw[g]) <= 1e-5, (g, indep[g], sw[g])
+EOF
 check "BEST.json's notes say how it was found and the objective" \
     grep -q '"notes":.*Found by tippe optimise.*Narrowest zone' "$tmp/best.json"
 
