@@ -40,7 +40,7 @@
 enum { V_LAUNCH = 1, V_MAP = 2, V_CHECK = 4 };
 
 static const char *const verdict_names[TIPPE_LAUNCH_N_VERDICTS] = {
-    "no_tip", "tip", "hang", "lost_contact", "undecided"};
+    "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded"};
 
 /* ---- MPI ------------------------------------------------------------------ */
 
@@ -864,7 +864,7 @@ static void map_usage(FILE *out)
         "Exit status: 0 ok, 2 bad usage or design, 1 a launch could not be computed.\n");
 }
 
-static const char verdict_letter[TIPPE_LAUNCH_N_VERDICTS] = {'N', 'T', 'H', 'L', 'U'};
+static const char verdict_letter[TIPPE_LAUNCH_N_VERDICTS] = {'N', 'T', 'H', 'L', 'U', 'B'};
 
 static int write_map_csv(const char *path, const tippe_launch_map *m, const tippe_top *tops,
                          tippe_error *err)
