@@ -29,6 +29,7 @@ void tippe_launch_options_default(tippe_launch_options *o)
     o->mu = 0.1;
     o->g = TIPPE_DEFAULT_G_M_S2;
     o->t_end = 600.0;
+    o->until_flip = 1;
     snprintf(o->accuracy_name, sizeof o->accuracy_name, "balanced");
     tippe_dynamics_accuracy_preset("balanced", &o->accuracy, NULL);
 }

@@ -37,7 +37,8 @@ static void simulate_usage(FILE *out)
             "                      (phi_dot, theta, n) path; .png, .svg or .pdf\n"
             "  --sample-dt S       trajectory sample interval, s (default: 16 per turn of the\n"
             "                      launch, between t_end/10^5 and t_end/10^4)\n"
-            "  --full              keep integrating to t_end after the verdict (for plots)\n"
+            "  --full              keep integrating to t_end after the verdict (always with\n"
+            "                      --csv or --plot)\n"
             "\n"
             "Overrides of scenario fields (applied before the file is checked):\n"
             "  --mu S_PER_M  --g M_S2  --t-end S\n"
@@ -379,7 +380,10 @@ int tippe_cli_simulate(int argc, char **argv)
     tippe_dynamics_options_default(&opt);
     opt.t_end = sc.t_end;
     opt.accuracy = sc.accuracy;
-    opt.run_to_t_end = full;
+    /* A verdict is often proved long before the motion ends (even at t = 0): a
+     * trajectory asked for runs to t_end; a flip is followed to report its time. */
+    opt.run_to_t_end = full || csv || plot;
+    opt.until_flip = 1;
     samples buf = {0, 0, NULL};
     if (csv || plot) {
         opt.level = TIPPE_LEVEL_TRAJECTORY;
