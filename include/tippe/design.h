@@ -15,7 +15,10 @@
 #define TIPPE_DESIGN_H
 
 #include "tippe/error.h"
+#include "tippe/print.h"
 #include "tippe/top.h"
+
+#include <stddef.h>
 
 typedef struct tippe_design tippe_design; /* opaque */
 
@@ -79,11 +82,58 @@ int tippe_design_n_parts(const tippe_design *d);
 /* Fills *out for part i (0-based, file order); TIPPE_EINPUT if i is out of range. */
 int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out);
 
+/* How part i is printed (docs/design-format.md, "Printed parts"). A part
+ * without a print block is solid: printed = 0 and the rest is zero. */
+typedef struct {
+    int printed;
+    tippe_print_settings settings; /* as given (settings.infill: the slicer's) */
+    double wall_mm, skin_mm;       /* perimeters x line width, layers x layer height */
+    double infill;                 /* used: settings.infill, or calibrated */
+    int calibrated;                /* infill solved from measured_mass_kg */
+    double measured_mass_kg;
+    double solid_mass_kg;          /* the printed part (part less its voids) if solid */
+    double skin_mass_kg;           /* its walls and top/bottom skins alone (0 % infill) */
+    double printed_mass_kg;        /* as printed, at `infill` */
+    double rel_error;              /* bound on the print model's relative error in the
+                                      part's mass and moments (QAGS estimates) */
+} tippe_design_print_info;
+
+/* Fills *out for part i; TIPPE_EINPUT if i is out of range. */
+int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out);
+
+/* Whether any part is printed (has a print block). */
+int tippe_design_has_printed_parts(const tippe_design *d);
+
 /* Whether part i (0-based, file order) is made of a printable filament: its
  * material's "printable" flag in the materials table (a void: its parent's).
  * 0 for bought hardware, for a material without the flag, for a density given
  * inline and for i out of range. */
 int tippe_design_part_printable(const tippe_design *d, int i);
+
+/* d's file loaded again with d's overrides and then extra ones, every field
+ * checked but not the layout (overlaps, travel, the sphere's surface): for
+ * sensitivities, where a tolerance may move a part a fraction of a mm into
+ * its neighbour. The result has no physical travel (use its geometry only). */
+int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_extra,
+                        tippe_design **out, tippe_error *err);
+
+/* The value of a number field as --set addresses it ("radius_mm",
+ * "parts.screw.height_mm", "parts[2].z_mm"; a part's density_g_cm3 whether
+ * given inline or by material) in the loaded design. *part_index is the part,
+ * or -1 for radius_mm. TIPPE_EINPUT with why filled (no such part, not a
+ * number field of that shape, a height the clip decides, the radius of the
+ * part forming the sphere, a void's density). */
+int tippe_design_field(const tippe_design *d, const char *field, double *value, int *part_index,
+                       char *why, size_t why_cap);
+
+/* The length fields part i has in the file (not the sphere's radius for the
+ * part forming the sphere, nor a height a clip decides, nor a zero inner
+ * radius), at most cap of them, into keys; returns how many. */
+int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, int cap);
+
+/* Whether part i is the fixed ball or shell whose outer surface is the sphere
+ * the top rolls on (radius radius_mm, centred). */
+int tippe_design_forms_sphere(const tippe_design *d, int i);
 
 void tippe_design_free(tippe_design *d);
 

@@ -4,6 +4,7 @@
 #include "tippe/design.h"
 #include "tippe/plot.h"
 #include "tippe/sweep.h"
+#include "tippe/sweep_bands.h"
 
 #include <cjson/cJSON.h>
 
@@ -214,10 +215,13 @@ static int sweep_run(const sweep_args *a, const tippe_design *d, const char *tit
 {
     tippe_error err = {0};
     tippe_sweep_result r;
+    tippe_sweep_bands_result b = {0};
     int rc = tippe_sweep_design(d, a->from, a->to, NULL, &r, &err);
+    if (!rc)
+        rc = tippe_sweep_bands(d, &r, &b, &err);
     tippe_sweep_path p = tippe_sweep_design_path(d);
     if (!rc && a->plot)
-        rc = tippe_sweep_plot_zones(a->plot, &p, &r, title, &err);
+        rc = tippe_sweep_plot_zones_banded(a->plot, &p, &r, &b, title, &err);
     if (!rc && a->phase) {
         rc = tippe_sweep_plot_phase(a->phase, &p, &r, title, &err);
         if (rc && a->plot)
@@ -227,6 +231,10 @@ static int sweep_run(const sweep_args *a, const tippe_design *d, const char *tit
         rc = tippe_cli_fail(VERB, &err, rc);
     } else if (a->json) {
         cJSON *o = tippe_sweep_json(&r, d);
+        if (o && tippe_sweep_json_add_bands(o, d, &r, &b)) {
+            cJSON_Delete(o);
+            o = NULL;
+        }
         if (o)
             tippe_cli_json_sets(o, &a->sets);
         rc = tippe_cli_print_json(VERB, o);
@@ -235,7 +243,9 @@ static int sweep_run(const sweep_args *a, const tippe_design *d, const char *tit
         if (a->sets.n) /* first, so that the design line below reads as the variant */
             printf("changes  %s\n", tippe_cli_sets_text(&a->sets, sets, sizeof sets));
         tippe_sweep_print_table(stdout, &r, d);
+        tippe_sweep_print_bands(stdout, d, &r, &b);
     }
+    tippe_sweep_bands_free(&b);
     tippe_sweep_result_free(&r);
     return rc;
 }
