@@ -453,11 +453,10 @@ static int simulate_report(const simulate_args *a, const tippe_scenario *sc,
     int rc = 0;
     if (a->csv && (rc = write_csv(a->csv, buf, &err)) != 0)
         return tippe_cli_fail(VERB, &err, rc);
-    if (a->plot && (rc = tippe_plot_sim(a->plot, sc, res, buf->s, buf->n, &err)) != 0) {
-        if (a->csv)
-            unlink(a->csv); /* all the outputs asked for, or none */
+    /* The outputs form one set (tippe_cli_run): a failed plot keeps the CSV's
+     * old file too. */
+    if (a->plot && (rc = tippe_plot_sim(a->plot, sc, res, buf->s, buf->n, &err)) != 0)
         return tippe_cli_fail(VERB, &err, rc);
-    }
     if (a->json) {
         cJSON *o = to_json(sc, res, &tc, elapsed);
         if (o && a->is_design)

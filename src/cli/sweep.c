@@ -136,8 +136,13 @@ static int sweep_parse(sweep_args *a, int argc, char **argv)
         .after = "The table lists each zone: its group, where it starts and ends (mm), its\n"
                  "width (mm), the boundary that ends it and notes; then whether the top is\n"
                  "\"3-in-1\" (groups I, II and III all reachable within the physical travel)\n"
-                 "and its narrowest reachable zone. Exit status: 0 ok, 2 bad usage or\n"
-                 "design, 1 computation failed. tippe compare takes several designs.",
+                 "and its narrowest reachable zone. Then the design's tolerances (its\n"
+                 "\"tolerances\" block and the defaults: printed dimensions +/-0.2 mm,\n"
+                 "filament density +/-3 %, hardware mass +/-2 %), each zone boundary's band\n"
+                 "(+/- mm, first order, independent tolerances in quadrature; docs/sweep.md)\n"
+                 "and each zone's robust width (its width less the bands at both ends).\n"
+                 "Exit status: 0 ok, 2 bad usage or design, 1 computation failed. tippe\n"
+                 "compare takes several designs.",
         .opts = opts,
         .min_args = 1,
         .max_args = 1,
@@ -222,11 +227,8 @@ static int sweep_run(const sweep_args *a, const tippe_design *d, const char *tit
     tippe_sweep_path p = tippe_sweep_design_path(d);
     if (!rc && a->plot)
         rc = tippe_sweep_plot_zones_banded(a->plot, &p, &r, &b, title, &err);
-    if (!rc && a->phase) {
+    if (!rc && a->phase) /* one set with the plot (tippe_cli_run): both or neither */
         rc = tippe_sweep_plot_phase(a->phase, &p, &r, title, &err);
-        if (rc && a->plot)
-            unlink(a->plot); /* all outputs or none */
-    }
     if (rc) {
         rc = tippe_cli_fail(VERB, &err, rc);
     } else if (a->json) {
