@@ -64,6 +64,23 @@ static cJSON *theory_json(const hands_args *a, const check_result *r)
     return th;
 }
 
+/* How the verdict was reached (docs/dynamics.md, "Proved verdicts"). */
+static void add_decision_json(cJSON *o, const tippe_launch_record *rec)
+{
+    cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(rec->how));
+    if (rec->how == TIPPE_DECIDED_TRAPPED) {
+        cJSON_AddNumberToObject(o, "margin_J", rec->margin_J);
+        if (isfinite(rec->barrier_gap_J))
+            cJSON_AddNumberToObject(o, "barrier_gap_J", rec->barrier_gap_J);
+        else
+            cJSON_AddNullToObject(o, "barrier_gap_J");
+    }
+    if (isfinite(rec->t_flip_s))
+        cJSON_AddNumberToObject(o, "t_flip_s", rec->t_flip_s);
+    else
+        cJSON_AddNullToObject(o, "t_flip_s");
+}
+
 static int check_json(const hands_args *a, const check_result *r)
 {
     const tippe_dynamics_initial *ic = &r->ic;
@@ -85,6 +102,7 @@ static int check_json(const hands_args *a, const check_result *r)
         }
         cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(rec->verdict));
         cJSON_AddNumberToObject(o, "t_s", rec->t_s);
+        add_decision_json(o, rec);
         cJSON_AddNumberToObject(o, "theta_final_rad", rec->theta_final_rad);
         cJSON_AddNumberToObject(o, "spin_final_rad_s", rec->spin_final_rad_s);
         cJSON_AddNumberToObject(o, "J0_kg_m3_s", rec->J0);
@@ -107,9 +125,17 @@ static void check_text(const hands_args *a, const check_result *r)
            "precession %.4g rad/s, no sliding\n",
            ic->spin, ic->spin / (2 * M_PI), ic->theta, ic->theta * 180 / M_PI, ic->phi_dot);
     hands_print_model(&a->o);
-    printf("\nverdict    %s at t = %.4g s: theta %.4f rad (%.1f deg), spin %.4g rad/s\n",
-           tippe_verdict_name(rec->verdict), rec->t_s, rec->theta_final_rad,
+    printf("\nverdict    %s: ends at theta %.4f rad (%.1f deg), spin %.4g rad/s\n",
+           tippe_verdict_name(rec->verdict), rec->theta_final_rad,
            rec->theta_final_rad * 180 / M_PI, rec->spin_final_rad_s);
+    printf("           decided by %s at t = %.4g s", tippe_decision_name(rec->how), rec->t_s);
+    if (rec->how == TIPPE_DECIDED_TRAPPED)
+        printf(" (energy %.3g J below the well's barrier, margin %.3g J)", rec->barrier_gap_J,
+               rec->margin_J);
+    printf("\n");
+    if (isfinite(rec->t_flip_s))
+        printf("flip       theta passed 90 deg at t = %.4g s of model time (mu = %g s/m)\n",
+               rec->t_flip_s, a->o.mu);
     tippe_theory_class cls;
     tippe_theory_classify(r->top.A / r->top.C, r->top.eps / r->top.R, &cls);
     const tippe_group g = r->zone.ok ? r->zone.group : cls.group;

@@ -12,7 +12,7 @@
 #include <string.h>
 
 const char *const hands_verdict_names[TIPPE_LAUNCH_N_VERDICTS] = {
-    "no_tip", "tip", "hang", "lost_contact", "undecided"};
+    "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded"};
 
 /* Largest --seed: seeds go into JSON as numbers, exact up to 2^53. */
 #define SEED_MAX 9007199254740991.0
@@ -245,6 +245,15 @@ cJSON *hands_json_tally(const tippe_launch_tally *t)
         return NULL;
     cJSON_AddNumberToObject(o, "n", (double)t->n);
     cJSON_AddItemToObject(o, "counts", json_counts(t));
+    cJSON_AddNumberToObject(o, "flips", (double)t->flips);
+    if (t->flips)
+        cJSON_AddNumberToObject(o, "median_t_flip_s", t->median_t_flip_s);
+    else
+        cJSON_AddNullToObject(o, "median_t_flip_s");
+    if (isfinite(t->min_gap_over_margin))
+        cJSON_AddNumberToObject(o, "min_gap_over_margin", t->min_gap_over_margin);
+    else
+        cJSON_AddNullToObject(o, "min_gap_over_margin");
     cJSON *fr = cJSON_AddObjectToObject(o, "fractions");
     cJSON *ci = cJSON_AddObjectToObject(o, "ci95");
     cJSON *mt = cJSON_AddObjectToObject(o, "median_theta_final_rad");

@@ -51,7 +51,8 @@ static int write_launch_csv(const char *path, const tippe_launch_record *r, long
 
 static void print_counts_table(const tippe_launch_tally *t)
 {
-    printf("\noutcome         count  share   95%% CI (Wilson)   median theta_final   median t\n");
+    printf("\noutcome         count  share   95%% CI (Wilson)   median theta_final   median t "
+           "decided\n");
     for (int v = 0; v < TIPPE_LAUNCH_N_VERDICTS; v++) {
         double lo, hi;
         tippe_launch_wilson(t->counts[v], t->n, TIPPE_LAUNCH_Z95, &lo, &hi);
@@ -86,6 +87,14 @@ static void print_theory_summary(const tippe_launch_tally *t)
                TIPPE_LAUNCH_HANG_AGREE_RAD);
     else
         printf("agreement  no settled launch to compare\n");
+    /* how the verdicts were reached (docs/dynamics.md, "Proved verdicts") */
+    if (isfinite(t->min_gap_over_margin))
+        printf("proof      no_tip/tip/hang proved by energy trapping and a contact bound; "
+               "smallest barrier gap %.3g times its margin\n",
+               t->min_gap_over_margin);
+    if (t->flips)
+        printf("flip       %ld tips followed to theta = 90 deg: median model time %.3g s\n",
+               t->flips, t->median_t_flip_s);
 }
 
 /* The verb's own options beside hands.c's shared ones. */

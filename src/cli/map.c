@@ -23,7 +23,7 @@
     "tippe launch; every cell uses the same N draws, so that differences between cells\n"   \
     "are not noise of the draws."
 
-static const char verdict_letter[TIPPE_LAUNCH_N_VERDICTS] = {'N', 'T', 'H', 'L', 'U'};
+static const char verdict_letter[TIPPE_LAUNCH_N_VERDICTS] = {'N', 'T', 'H', 'L', 'U', 'B'};
 
 static int write_map_csv(const char *path, const tippe_launch_map *m, const tippe_top *tops,
                          tippe_error *err)
