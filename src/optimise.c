@@ -158,6 +158,19 @@ static double design_number(const cJSON *root, const char *path)
     return cJSON_IsNumber(v) ? v->valuedouble : NAN;
 }
 
+/* The JSON path of entry v of section ("vary.parts.hole.z_mm") into p; refuses
+ * one entry too many (n of max) and a key that is not a field path. */
+static int entry_path(tippe_json_reader *c, const char *section, const cJSON *v, int n, int max,
+                      const char *what, char *p, size_t cap)
+{
+    tippe_json_path(p, cap, section, v->string);
+    if (n == max)
+        return tippe_json_fail(c, p, "at most %d %s", max, what);
+    if (strlen(v->string) >= TIPPE_OPT_PATH_LEN || strchr(v->string, '='))
+        return tippe_json_fail(c, p, "not a field path");
+    return TIPPE_OK;
+}
+
 static int parse_vary(tippe_json_reader *c, const cJSON *vary, tippe_opt_spec *s)
 {
     if (!vary)
@@ -166,11 +179,10 @@ static int parse_vary(tippe_json_reader *c, const cJSON *vary, tippe_opt_spec *s
         return tippe_json_wrong_type(c, "vary", "an object {FIELD: [from, to]}", vary);
     for (const cJSON *v = vary->child; v; v = v->next) {
         char p[256];
-        tippe_json_path(p, sizeof p, "vary", v->string);
-        if (s->n_vary == TIPPE_OPT_MAX_VARY)
-            return tippe_json_fail(c, p, "at most %d continuous parameters", TIPPE_OPT_MAX_VARY);
-        if (strlen(v->string) >= TIPPE_OPT_PATH_LEN || strchr(v->string, '='))
-            return tippe_json_fail(c, p, "not a field path");
+        int rc = entry_path(c, "vary", v, s->n_vary, TIPPE_OPT_MAX_VARY,
+                            "continuous parameters", p, sizeof p);
+        if (rc)
+            return rc;
         if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != 2 ||
             !cJSON_IsNumber(cJSON_GetArrayItem(v, 0)) || !cJSON_IsNumber(cJSON_GetArrayItem(v, 1)))
             return tippe_json_wrong_type(c, p, "[from, to] (two numbers)", v);
@@ -288,11 +300,10 @@ static int parse_choose(tippe_json_reader *c, const cJSON *choose, const char *c
         return tippe_json_wrong_type(c, "choose", "an object {FIELD: [options]}", choose);
     for (const cJSON *v = choose->child; v; v = v->next) {
         char p[256];
-        tippe_json_path(p, sizeof p, "choose", v->string);
-        if (s->n_choose == MAX_CHOOSE)
-            return tippe_json_fail(c, p, "at most %d discrete choices", MAX_CHOOSE);
-        if (strlen(v->string) >= TIPPE_OPT_PATH_LEN || strchr(v->string, '='))
-            return tippe_json_fail(c, p, "not a field path");
+        int rc = entry_path(c, "choose", v, s->n_choose, MAX_CHOOSE, "discrete choices", p,
+                            sizeof p);
+        if (rc)
+            return rc;
         choose_t *ch = &s->choose[s->n_choose++];
         snprintf(ch->path, sizeof ch->path, "%s", v->string);
         if (cJSON_IsObject(v)) {
@@ -300,7 +311,7 @@ static int parse_choose(tippe_json_reader *c, const cJSON *choose, const char *c
                 return tippe_json_fail(c, p, "a catalogue choice is keyed by a part "
                                              "(parts.NAME), whose radius_mm and height_mm "
                                              "each item sets");
-            int rc = catalogue_options(c, p, v, v->string, catalogue_file, ch);
+            rc = catalogue_options(c, p, v, v->string, catalogue_file, ch);
             if (rc)
                 return rc;
             continue;
@@ -342,17 +353,14 @@ static int parse_tie(tippe_json_reader *c, const cJSON *tie, const cJSON *design
         return tippe_json_wrong_type(c, "tie", "an object {FIELD: OTHER_FIELD}", tie);
     for (const cJSON *v = tie->child; v; v = v->next) {
         char p[256];
-        tippe_json_path(p, sizeof p, "tie", v->string);
-        if (s->n_tie == MAX_TIE)
-            return tippe_json_fail(c, p, "at most %d ties", MAX_TIE);
-        if (strlen(v->string) >= TIPPE_OPT_PATH_LEN || strchr(v->string, '='))
-            return tippe_json_fail(c, p, "not a field path");
+        int rc = entry_path(c, "tie", v, s->n_tie, MAX_TIE, "ties", p, sizeof p);
+        if (rc)
+            return rc;
         tie_t *t = &s->tie[s->n_tie++];
         snprintf(t->path, sizeof t->path, "%s", v->string);
         t->times = 1.0;
         t->plus_mm = 0.0;
         char follows[TIPPE_OPT_PATH_LEN] = "";
-        int rc;
         if (cJSON_IsString(v)) {
             snprintf(follows, sizeof follows, "%s", v->valuestring);
         } else if (cJSON_IsObject(v)) {
