@@ -243,7 +243,7 @@ int tippe_cli_sweep(int argc, char **argv)
         rc = tippe_cli_fail(VERB, &err, rc);
     } else if (json) {
         cJSON *o = tippe_sweep_json(&r, d);
-        if (o && tippe_sweep_json_add_bands(o, d, &r, &b)) {
+        if (o && (tippe_sweep_json_add_bands(o, d, &r, &b) || tippe_cli_printed_parts_json(o, d))) {
             cJSON_Delete(o);
             o = NULL;
         }
@@ -251,6 +251,8 @@ int tippe_cli_sweep(int argc, char **argv)
     } else {
         tippe_sweep_print_table(stdout, &r, d);
         tippe_sweep_print_bands(stdout, d, &r, &b);
+        printf("\n");
+        tippe_cli_print_printed_parts(stdout, d);
     }
     tippe_sweep_bands_free(&b);
     tippe_sweep_result_free(&r);
