@@ -238,11 +238,8 @@ int tippe_cli_sweep(int argc, char **argv)
     tippe_sweep_path p = tippe_sweep_design_path(d);
     if (!rc && plot)
         rc = tippe_sweep_plot_zones_banded(plot, &p, &r, &b, tippe_design_name(d), &err);
-    if (!rc && phase) {
+    if (!rc && phase) /* one set with the plot (tippe_cli_run): both or neither */
         rc = tippe_sweep_plot_phase(phase, &p, &r, tippe_design_name(d), &err);
-        if (rc && plot)
-            unlink(plot); /* all outputs or none */
-    }
     if (rc) {
         rc = tippe_cli_fail(VERB, &err, rc);
     } else if (json) {
