@@ -16,6 +16,9 @@
 /* Samples per turn at the launch's rotation rate, for the contact path (as
  * `tippe simulate` samples its plots). */
 #define SAMPLES_PER_TURN 16
+/* Points of the contact path at most (the last ones): ~125 turns, more than
+ * enough to see its shape, few enough to stroke in a millisecond. */
+#define TRACE_POINTS 2000
 /* Points of the theta inset at most (it is a few hundred pixels wide). */
 #define INSET_POINTS 2000
 
@@ -332,9 +335,11 @@ static int paint(painter *p, int idx, int last_frame, unsigned char *pixels, int
         verdict_line(f, l4, sizeof l4);
         n_lines = 5;
     }
-    /* The contact path of the last TRACE_FILM_S seconds of film. */
+    /* The contact path of the last TRACE_FILM_S seconds of film (at most
+     * TRACE_POINTS points). */
     int first = idx;
-    while (first > 0 && f->samples[first - 1].t >= s->t - TRACE_FILM_S * f->speed)
+    while (first > 0 && idx - first < TRACE_POINTS &&
+           f->samples[first - 1].t >= s->t - TRACE_FILM_S * f->speed)
         first--;
     tippe_scene_overlay ov = {
         .trace_xy = p->trace_xy + 2 * first,

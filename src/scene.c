@@ -187,7 +187,8 @@ static void draw_table(cairo_t *cr, const view *v)
     cairo_set_source(cr, bg);
     cairo_paint(cr);
     cairo_pattern_destroy(bg);
-    /* Grid lines on the table, a round number of metres apart near R. */
+    /* Rings on the table round the launch point, a round number of metres
+     * apart near R: circles seen at a slant read as a level floor. */
     const double R = sc->R;
     double step = pow(10, floor(log10(R)));
     if (R / step >= 5)
@@ -195,25 +196,19 @@ static void draw_table(cairo_t *cr, const view *v)
     else if (R / step >= 2)
         step *= 2;
     const double s = sc->px_per_m, se = sin(sc->elevation_rad);
-    const double x0 = sc->view_x_m - 0.5 * sc->width_px / s,
-                 x1 = sc->view_x_m + 0.5 * sc->width_px / s;
-    const double y0 = (sc->view_y_m - 0.5 * sc->height_px / s) / se,
-                 y1 = (sc->view_y_m + 0.5 * sc->height_px / s) / se;
+    const double origin[3] = {0, 0, 0};
+    double ox, oy;
+    to_screen(v, origin, &ox, &oy);
+    const double reach = hypot(sc->width_px, sc->height_px / se) / s + fabs(ox) / s;
     set_rgb(cr, GRID, 1.0);
     cairo_set_line_width(cr, 1.0);
-    for (double x = floor(x0 / step) * step; x <= x1; x += step) {
-        double a[3] = {x, y0, 0}, b[3] = {x, y1, 0}, ax, ay, bx, by;
-        to_screen(v, a, &ax, &ay);
-        to_screen(v, b, &bx, &by);
-        cairo_move_to(cr, ax, ay);
-        cairo_line_to(cr, bx, by);
-    }
-    for (double y = floor(y0 / step) * step; y <= y1; y += step) {
-        double a[3] = {x0, y, 0}, b[3] = {x1, y, 0}, ax, ay, bx, by;
-        to_screen(v, a, &ax, &ay);
-        to_screen(v, b, &bx, &by);
-        cairo_move_to(cr, ax, ay);
-        cairo_line_to(cr, bx, by);
+    for (int k = 1; k * step < reach && k < 400; k++) {
+        cairo_save(cr);
+        cairo_translate(cr, ox, oy);
+        cairo_scale(cr, 1.0, se);
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, 0, 0, k * step * s, 0, 2 * M_PI);
+        cairo_restore(cr);
     }
     cairo_stroke(cr);
 }
@@ -333,7 +328,7 @@ static void draw_markings(cairo_t *cr, const view *v, int front)
     cairo_set_line_width(cr, fmax(2.0, 0.07 * v->r_px));
     set_rgb(cr, STRIPE, 0.95 * fade);
     shell_curve(cr, v, (const double (*)[3])meridian, N + 1, front);
-    pole_dot(cr, v, -1, RED_DOT_RAD, front, RED, front ? 1.0 : 0.6);
+    pole_dot(cr, v, -1, RED_DOT_RAD, front, RED, front ? 1.0 : 0.75);
     pole_dot(cr, v, +1, BLUE_DOT_RAD, front, STRIPE, fade);
 }
 
