@@ -17,6 +17,8 @@
 #include "tippe/error.h"
 #include "tippe/top.h"
 
+#include <stddef.h>
+
 typedef struct tippe_design tippe_design; /* opaque */
 
 /* Loads path, applies the overrides ("parts.rod.material=nylon",
@@ -70,11 +72,45 @@ typedef struct {
     double mass_kg;
     double z_mm;          /* centre height; for a moving part, its offset from Z2 */
     int may_protrude;
+    int printable;        /* 1: the material is printable filament; 0: bought
+                             hardware, or a density given inline (see
+                             tippe_design_part_printable) */
 } tippe_design_part_info;
 
 int tippe_design_n_parts(const tippe_design *d);
 /* Fills *out for part i (0-based, file order); TIPPE_EINPUT if i is out of range. */
 int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out);
+
+/* Whether part i (0-based, file order) is made of a printable filament: its
+ * material's "printable" flag in the materials table (a void: its parent's).
+ * 0 for bought hardware, for a material without the flag, for a density given
+ * inline and for i out of range. */
+int tippe_design_part_printable(const tippe_design *d, int i);
+
+/* d's file loaded again with d's overrides and then extra ones, every field
+ * checked but not the layout (overlaps, travel, the sphere's surface): for
+ * sensitivities, where a tolerance may move a part a fraction of a mm into
+ * its neighbour. The result has no physical travel (use its geometry only). */
+int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_extra,
+                        tippe_design **out, tippe_error *err);
+
+/* The value of a number field as --set addresses it ("radius_mm",
+ * "parts.screw.height_mm", "parts[2].z_mm"; a part's density_g_cm3 whether
+ * given inline or by material) in the loaded design. *part_index is the part,
+ * or -1 for radius_mm. TIPPE_EINPUT with why filled (no such part, not a
+ * number field of that shape, a height the clip decides, the radius of the
+ * part forming the sphere, a void's density). */
+int tippe_design_field(const tippe_design *d, const char *field, double *value, int *part_index,
+                       char *why, size_t why_cap);
+
+/* The length fields part i has in the file (not the sphere's radius for the
+ * part forming the sphere, nor a height a clip decides, nor a zero inner
+ * radius), at most cap of them, into keys; returns how many. */
+int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, int cap);
+
+/* Whether part i is the fixed ball or shell whose outer surface is the sphere
+ * the top rolls on (radius radius_mm, centred). */
+int tippe_design_forms_sphere(const tippe_design *d, int i);
 
 void tippe_design_free(tippe_design *d);
 
