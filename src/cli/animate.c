@@ -20,157 +20,127 @@
 
 static const char *const VERB = "animate";
 
-static void animate_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: tippe animate SCENARIO.json -o FILM.mp4|FILM.webm|FILM.gif [options]\n"
-            "       tippe animate DESIGN.json --z2 MM [--spin RAD_S] -o FILM [options]\n"
-            "       tippe animate (SCENARIO.json | DESIGN.json --z2 MM) --frame T -o PICTURE.png\n"
-            "\n"
-            "Films a launch: the ball as a transparent shell seen from above the table, with a\n"
-            "red dot at the pole on the weight's side (down at theta = 0), a blue stripe along a\n"
-            "meridian (it turns with the spin), the moving weight and the centre of mass inside,\n"
-            "the contact point's path on the table, the time, tilt, spin, Jellett drift and the\n"
-            "verdict when it is reached, and theta against time. Frames are states of the\n"
-            "integration at exact frame times (docs/animate.md).\n"
-            "\n"
-            "  -o FILE            the film (.mp4 H.264, .webm VP9, .gif) or, with --frame, a .png\n"
-            "  --speed X          model seconds per second of film (default: the whole launch,\n"
-            "                     to a tenth past its verdict, in --length seconds)\n"
-            "  --length S         film length when --speed is not given, s (default 10)\n"
-            "  --fps N            frames per second of film, 1 .. 120 (default 30)\n"
-            "  --size WxH         picture size in pixels, even, 64x64 .. 3840x2160 (default\n"
-            "                     640x480)\n"
-            "  --frame T          write one picture at model time T (s) instead of a film\n"
-            "  --json             print a JSON summary instead of the text\n"
-            "\n"
-            "A scenario's fields can be overridden as in tippe simulate:\n"
-            "  --mu S_PER_M  --g M_S2  --t-end S  --theta RAD  --theta-dot RAD_S\n"
-            "  --phi-dot RAD_S|steady|s1|s2|s3  --spin RAD_S  --U M_S  --V M_S  --z2 MM\n"
-            "  --accuracy fast|balanced|precise  --stepper NAME  --rtol X  --set FIELD=VALUE\n"
-            "A design gets tippe check's central hand launch (median tilt, steady precession,\n"
-            "no sliding) at --spin (default 94.25 rad/s), with --mu (default 0.1 s/m), --g,\n"
-            "--t-end (default 600 s), --accuracy and --set FIELD=VALUE for the design.\n"
-            "  --help             this text\n"
-            "\n"
-            "A progress bar is shown on stderr when it is a terminal. Exit status: 0 ok, 2 bad\n"
-            "usage or input, 1 the launch or the film could not be made.\n");
-}
-
+/* What the command line asked for. */
 typedef struct {
-    const char *input, *out, *z2_text, *spin_text;
-    double speed, length_s, frame_t;
-    int fps, width, height, json, still;
+    const char *input, *out, *size_text, *accuracy, *stepper;
+    double speed, length_s, frame_t, z2_mm, spin, mu, g, t_end, rtol;
+    long fps;
+    int width, height, json, still;
+    /* scenario-only overrides (--theta ...) and --set, in the order given */
     tippe_cli_sets over;
+    int n_scenario_only;
+    /* which of the options a scenario and a design share were given */
+    int has_z2, has_spin, has_mu, has_g, has_t_end, has_rtol;
 } args;
 
 static int parse_size(const char *text, int *w, int *h)
 {
-    char x;
+    char x, tail;
     long a, b;
-    char tail;
     if (sscanf(text, "%ld%c%ld%c", &a, &x, &b, &tail) != 3 || (x != 'x' && x != 'X'))
         return 0;
-    if (a < 1 || a > 100000 || b < 1 || b > 100000)
+    if (a < 64 || a > 3840 || b < 64 || b > 2160 || a % 2 || b % 2)
         return 0;
     *w = (int)a;
     *h = (int)b;
     return 1;
 }
 
-/* Scenario fields that have their own option (as in tippe simulate). */
-static const struct {
-    const char *flag, *field;
-} field_flags[] = {
-    {"--mu", "mu"},
-    {"--g", "g"},
-    {"--t-end", "t_end"},
-    {"--theta", "initial.theta"},
-    {"--theta-dot", "initial.theta_dot"},
-    {"--phi-dot", "initial.phi_dot"},
-    {"--spin", "initial.spin"},
-    {"--U", "initial.U"},
-    {"--V", "initial.V"},
-    {"--z2", "top.z2_mm"},
-    {"--accuracy", "accuracy"},
-    {"--stepper", "accuracy.stepper"},
-    {"--rtol", "accuracy.rtol"},
-};
-
-/* Returns -1 after --help, else an exit status. */
+/* Returns 0, or an exit status (0 after --help is TIPPE_CLI_HELP). */
 static int parse_args(args *a, int argc, char **argv)
 {
-    const int n_flags = (int)(sizeof field_flags / sizeof field_flags[0]);
-    for (int i = 1; i < argc; i++) {
-        const char *s = argv[i], *field = NULL, *v;
-        if (tippe_cli_is_help(s))
-            return -1;
-        if (!strcmp(s, "--json")) {
-            a->json = 1;
-            continue;
-        }
-        for (int k = 0; k < n_flags && !field; k++)
-            if (!strcmp(s, field_flags[k].flag))
-                field = field_flags[k].field;
-        const int takes_value = field || !strcmp(s, "-o") || !strcmp(s, "--speed") ||
-                                !strcmp(s, "--length") || !strcmp(s, "--fps") ||
-                                !strcmp(s, "--size") || !strcmp(s, "--frame") ||
-                                !strcmp(s, "--set");
-        if (!takes_value) {
-            if (tippe_cli_is_option(s, 0))
-                return tippe_cli_usage_error(VERB, "unknown option '%s'", s);
-            if (a->input)
-                return tippe_cli_usage_error(VERB, "one input file only (got '%s' and '%s')",
-                                             a->input, s);
-            a->input = s;
-            continue;
-        }
-        if (!(v = tippe_cli_value(VERB, argc, argv, &i)))
-            return 2;
-        long n;
-        if (!strcmp(s, "-o")) {
-            a->out = v;
-        } else if (!strcmp(s, "--speed")) {
-            if (!tippe_cli_parse_double(v, &a->speed) || !(a->speed > 0))
-                return tippe_cli_usage_error(
-                    VERB, "--speed '%s': expected a positive number of model seconds per "
-                          "second of film", v);
-        } else if (!strcmp(s, "--length")) {
-            if (!tippe_cli_parse_double(v, &a->length_s) || !(a->length_s >= 0.5) ||
-                a->length_s > 1200)
-                return tippe_cli_usage_error(VERB, "--length '%s': expected 0.5 .. 1200 s", v);
-        } else if (!strcmp(s, "--fps")) {
-            if (!tippe_cli_parse_long(v, 1, 120, &n))
-                return tippe_cli_usage_error(VERB, "--fps '%s': expected a whole number 1 .. 120",
-                                             v);
-            a->fps = (int)n;
-        } else if (!strcmp(s, "--size")) {
-            if (!parse_size(v, &a->width, &a->height) || a->width < 64 || a->width > 3840 ||
-                a->height < 64 || a->height > 2160 || a->width % 2 || a->height % 2)
-                return tippe_cli_usage_error(VERB,
-                                             "--size '%s': expected WxH, even, 64x64 .. "
-                                             "3840x2160 pixels", v);
-        } else if (!strcmp(s, "--frame")) {
-            if (!tippe_cli_parse_double(v, &a->frame_t) || !(a->frame_t >= 0))
-                return tippe_cli_usage_error(VERB, "--frame '%s': expected a time >= 0 s", v);
-            a->still = 1;
-        } else if (!strcmp(s, "--set")) {
-            if (tippe_cli_add_set(VERB, &a->over, v))
-                return 2;
-        } else {
-            if (!strcmp(s, "--z2"))
-                a->z2_text = v;
-            if (!strcmp(s, "--spin"))
-                a->spin_text = v;
-            if (tippe_cli_sets_add(&a->over, field, v))
-                return tippe_cli_usage_error(VERB, "more than %d overrides", TIPPE_CLI_MAX_SETS);
-        }
-    }
-    if (!a->input)
-        return tippe_cli_usage_error(VERB, "no scenario or design file given");
-    if (!a->out)
-        return tippe_cli_usage_error(VERB, "no output file given (-o FILM.mp4, .webm, .gif, "
-                                           "or -o PICTURE.png with --frame T)");
+    tippe_cli_opt opts[] = {
+        {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &a->out,
+         .arg = "FILE", .required = 1,
+         .help = "the film: .mp4 (H.264), .webm (VP9) or .gif; with --frame, a .png"},
+        {.name = "speed", .kind = TIPPE_CLI_DOUBLE, .value = &a->speed, .arg = "X",
+         .min = 1e-9, .max = 1e9,
+         .help = "model seconds per second of film (default: the whole launch, to a\n"
+                 "tenth past its verdict, in --length seconds)"},
+        {.name = "length", .kind = TIPPE_CLI_DOUBLE, .value = &a->length_s, .arg = "S", .unit = "s",
+         .min = 0.5, .max = 1200, .def = "10", .help = "film length when --speed is not given"},
+        {.name = "fps", .kind = TIPPE_CLI_LONG, .value = &a->fps, .arg = "N", .min = 1,
+         .max = 120, .def = "30", .help = "frames per second of film"},
+        {.name = "size", .kind = TIPPE_CLI_STRING, .value = &a->size_text, .arg = "WxH",
+         .def = "640x480", .help = "picture size in pixels, even, 64x64 .. 3840x2160"},
+        {.name = "frame", .kind = TIPPE_CLI_DOUBLE, .value = &a->frame_t, .arg = "T", .unit = "s",
+         .min = 0, .max = 1e9, .help = "write one picture at model time T instead of a film"},
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
+         .help = "print a JSON summary instead of the text"},
+        {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &a->z2_mm, .arg = "MM", .unit = "mm",
+         .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
+         .help = "position of a design's moving weight (needed for a design; a\n"
+                 "scenario's design top moves its weight there)"},
+        {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = &a->spin, .unit = "rad/s",
+         .min = -1e6, .max = 1e6,
+         .help = "launch spin (a design's default: tippe check's, 94.25 rad/s)"},
+        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &a->mu, .unit = "s/m", .min = 0,
+         .max = 1e6, .help = "viscous sliding friction, eq 3.12 (a design's default: 0.1)"},
+        {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &a->g, .unit = "m/s^2", .min = 1e-6,
+         .max = 1e6, .help = "gravity (default 9.81)"},
+        {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &a->t_end, .unit = "s", .min = 1e-9,
+         .max = 1e9, .help = "bound on the launch's time (a design's default: 600)"},
+        {.name = "accuracy", .kind = TIPPE_CLI_STRING, .value = &a->accuracy,
+         .arg = "fast|balanced|precise", .help = "integrator preset (default balanced)"},
+        {.name = "stepper", .kind = TIPPE_CLI_STRING, .value = &a->stepper, .arg = "NAME",
+         .help = "GSL stepper (docs/dynamics.md)"},
+        {.name = "rtol", .kind = TIPPE_CLI_DOUBLE, .value = &a->rtol, .min = 1e-14, .max = 1e-2,
+         .help = "relative tolerance of the integrator"},
+        {.name = "theta", .kind = TIPPE_CLI_DOUBLE, .value = &a->over, .unit = "rad", .min = 0,
+         .max = M_PI, .field = "initial.theta", .help = "scenario launch tilt"},
+        {.name = "theta-dot", .kind = TIPPE_CLI_DOUBLE, .value = &a->over, .unit = "rad/s",
+         .min = -1e6, .max = 1e6, .field = "initial.theta_dot",
+         .help = "scenario launch tilt rate"},
+        {.name = "phi-dot", .kind = TIPPE_CLI_STRING, .value = &a->over,
+         .arg = "RAD_S|steady|s1|s2|s3", .field = "initial.phi_dot",
+         .help = "scenario launch precession rate or rule"},
+        {.name = "U", .kind = TIPPE_CLI_DOUBLE, .value = &a->over, .unit = "m/s", .min = -1e3,
+         .max = 1e3, .field = "initial.U", .help = "scenario launch sliding along the tilt"},
+        {.name = "V", .kind = TIPPE_CLI_DOUBLE, .value = &a->over, .unit = "m/s", .min = -1e3,
+         .max = 1e3, .field = "initial.V", .help = "scenario launch sliding across it"},
+        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->over, .arg = "FIELD=VALUE",
+         .help = "change a field of the scenario (or of the design) before it is\n"
+                 "checked (repeatable)"},
+        {NULL},
+    };
+    tippe_cli_spec spec = {
+        .verb = VERB,
+        .synopsis = "(SCENARIO.json | DESIGN.json --z2 MM [--spin RAD_S]) -o FILM.mp4|.webm|.gif\n"
+                    "       [--speed X] [--fps N] [--size WxH] [--frame T -o PICTURE.png]",
+        .about =
+            "Films a launch: the ball as a transparent shell seen from above the table, with\n"
+            "a red dot at the pole on the weight's side (down at theta = 0), a blue stripe\n"
+            "along a meridian (it turns with the spin), the moving weight and the centre of\n"
+            "mass (quartered disc) inside, the contact point's path on the table, the time,\n"
+            "tilt, spin, Jellett drift and the verdict once reached, and theta against time.\n"
+            "Frames are states of the integration at exact frame times. A design gets tippe\n"
+            "check's central hand launch (median tilt, steady precession, no sliding).",
+        .after = "A progress bar is shown on stderr when it is a terminal. Exit status: 0 ok,\n"
+                 "2 bad usage or input, 1 the launch or the film could not be made.\n"
+                 "docs/animate.md describes the picture and the time scale.",
+        .opts = opts,
+        .min_args = 1,
+        .max_args = 1,
+        .args_name = "scenario or design file",
+    };
+    int n_args = 0;
+    int rc = tippe_cli_parse(&spec, argc, argv, &a->input, &n_args);
+    if (rc)
+        return rc;
+    if (a->size_text && !parse_size(a->size_text, &a->width, &a->height))
+        return tippe_cli_usage_error(VERB, "--size '%s': expected WxH, even, 64x64 .. 3840x2160 "
+                                     "pixels", a->size_text);
+    a->still = tippe_cli_find_opt(&spec, "frame")->seen;
+    for (const char *const *n = (const char *const[]){"theta", "theta-dot", "phi-dot", "U", "V",
+                                                      NULL};
+         *n; n++)
+        a->n_scenario_only += tippe_cli_find_opt(&spec, *n)->seen;
+    a->has_z2 = tippe_cli_find_opt(&spec, "z2")->seen;
+    a->has_spin = tippe_cli_find_opt(&spec, "spin")->seen;
+    a->has_mu = tippe_cli_find_opt(&spec, "mu")->seen;
+    a->has_g = tippe_cli_find_opt(&spec, "g")->seen;
+    a->has_t_end = tippe_cli_find_opt(&spec, "t-end")->seen;
+    a->has_rtol = tippe_cli_find_opt(&spec, "rtol")->seen;
     return 0;
 }
 
@@ -189,9 +159,36 @@ static int is_design(const char *path)
     return design;
 }
 
-/* The launch of a scenario file, with its design's weight when it has one. */
-static int launch_of_scenario(const args *a, tippe_animate_launch *l, tippe_error *err)
+/* A shared option's value as a scenario override "field=value" (number if
+ * text is NULL): 0, or 2 after a usage error. */
+static int add_override(args *a, int given, const char *field, double x, const char *text)
 {
+    if (!given)
+        return 0;
+    char num[64];
+    if (!text) {
+        snprintf(num, sizeof num, "%.17g", x);
+        text = num;
+    }
+    if (tippe_cli_sets_add(&a->over, field, text))
+        return tippe_cli_usage_error(VERB, "too many overrides (at most %d)",
+                                     TIPPE_CLI_MAX_SETS);
+    return 0;
+}
+
+/* The launch of a scenario file, with its design's weight when it has one;
+ * -2 after a usage error. */
+static int launch_of_scenario(args *a, tippe_animate_launch *l, tippe_error *err)
+{
+    if (add_override(a, a->has_z2, "top.z2_mm", a->z2_mm, NULL) ||
+        add_override(a, a->has_spin, "initial.spin", a->spin, NULL) ||
+        add_override(a, a->has_mu, "mu", a->mu, NULL) ||
+        add_override(a, a->has_g, "g", a->g, NULL) ||
+        add_override(a, a->has_t_end, "t_end", a->t_end, NULL) ||
+        add_override(a, a->accuracy != NULL, "accuracy", 0, a->accuracy) ||
+        add_override(a, a->stepper != NULL, "accuracy.stepper", 0, a->stepper) ||
+        add_override(a, a->has_rtol, "accuracy.rtol", a->rtol, NULL))
+        return -2;
     tippe_scenario sc;
     int rc = tippe_scenario_load(a->input, a->over.item, a->over.n, &sc, err);
     if (rc)
@@ -203,7 +200,8 @@ static int launch_of_scenario(const args *a, tippe_animate_launch *l, tippe_erro
     l->t_end = sc.t_end;
     l->accuracy = sc.accuracy;
     if (sc.design_path[0]) {
-        /* Only for the picture of the weight: the top itself is the scenario's. */
+        /* Only for the picture of the weight: the top itself is the scenario's
+         * (a scenario's own design "set" list is not applied to the picture). */
         tippe_design *d = NULL;
         if (tippe_design_load(sc.design_path, NULL, 0, &d, err) == TIPPE_OK)
             tippe_animate_design_weight(d, sc.z2_mm, &sc.model.top, &l->weight_offset_m,
@@ -216,84 +214,60 @@ static int launch_of_scenario(const args *a, tippe_animate_launch *l, tippe_erro
 /* A design's central hand launch (tippe check's). */
 static int launch_of_design(const args *a, tippe_animate_launch *l, tippe_error *err)
 {
-    static const char *const allowed[] = {"mu", "g", "t_end", "initial.spin", "top.z2_mm",
-                                          "accuracy", "accuracy.stepper", "accuracy.rtol"};
-    tippe_launch_options o;
-    tippe_launch_options_default(&o);
-    double z2 = NAN, spin = M_PI * (o.spin_from_rev_s + o.spin_to_rev_s);
-    const char *design_sets[TIPPE_CLI_MAX_SETS];
-    int n_design = 0;
-    /* Split the overrides: the launch's options, and --set for the design. */
-    for (int i = 0; i < a->over.n; i++) {
-        const char *s = a->over.item[i], *eq = strchr(s, '=');
-        size_t klen = eq ? (size_t)(eq - s) : strlen(s);
-        int known = -1;
-        for (int k = 0; k < (int)(sizeof allowed / sizeof allowed[0]); k++)
-            if (strlen(allowed[k]) == klen && !strncmp(s, allowed[k], klen))
-                known = k;
-        if (known < 0 || !eq) {
-            design_sets[n_design++] = s;
-            continue;
-        }
-        const char *v = eq + 1;
-        double x = NAN;
-        const int is_number = tippe_cli_parse_double(v, &x);
-        if (known >= 5) {
-            if (known == 5 && tippe_dynamics_accuracy_preset(v, &o.accuracy, err) == TIPPE_OK) {
-                snprintf(o.accuracy_name, sizeof o.accuracy_name, "%s", v);
-            } else if (known == 5) {
-                return TIPPE_EINPUT;
-            } else if (known == 6) {
-                if (!tippe_dynamics_stepper_known(v))
-                    return tippe_error_set(err, TIPPE_EINPUT, "--stepper '%s': unknown stepper",
-                                           v);
-                snprintf(o.accuracy.stepper, sizeof o.accuracy.stepper, "%s", v);
-                snprintf(o.accuracy_name, sizeof o.accuracy_name, "custom");
-            } else if (!is_number || !(x >= 1e-14 && x <= 1e-2)) {
-                return tippe_error_set(err, TIPPE_EINPUT, "--rtol '%s': expected 1e-14 .. 1e-2",
-                                       v);
-            } else {
-                o.accuracy.rtol = x;
-                snprintf(o.accuracy_name, sizeof o.accuracy_name, "custom");
-            }
-            continue;
-        }
-        if (!is_number)
-            return tippe_error_set(err, TIPPE_EINPUT, "%.*s '%s': expected a number", (int)klen, s,
-                                   v);
-        if (known == 0)
-            o.mu = x;
-        else if (known == 1)
-            o.g = x;
-        else if (known == 2)
-            o.t_end = x;
-        else if (known == 3)
-            spin = x;
-        else
-            z2 = x;
-    }
-    if (isnan(z2))
+    if (!a->has_z2)
         return tippe_error_set(err, TIPPE_EINPUT,
                                "%s is a design: give the weight's position with --z2 MM",
                                a->input);
-    int rc = tippe_launch_options_check(&o, err);
-    if (rc)
+    if (a->n_scenario_only)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "--theta, --theta-dot, --phi-dot, --U and --V change a scenario; "
+                               "%s is a design, launched as tippe check launches it",
+                               a->input);
+    tippe_launch_options o;
+    tippe_launch_options_default(&o);
+    double spin = M_PI * (o.spin_from_rev_s + o.spin_to_rev_s);
+    if (a->has_spin)
+        spin = a->spin;
+    if (a->has_mu)
+        o.mu = a->mu;
+    if (a->has_g)
+        o.g = a->g;
+    if (a->has_t_end)
+        o.t_end = a->t_end;
+    int rc = TIPPE_OK;
+    if (a->accuracy) {
+        if ((rc = tippe_dynamics_accuracy_preset(a->accuracy, &o.accuracy, err)) != 0)
+            return rc;
+        snprintf(o.accuracy_name, sizeof o.accuracy_name, "%s", a->accuracy);
+    }
+    if (a->stepper) {
+        if (!tippe_dynamics_stepper_known(a->stepper))
+            return tippe_error_set(err, TIPPE_EINPUT, "--stepper '%s': unknown stepper",
+                                   a->stepper);
+        snprintf(o.accuracy.stepper, sizeof o.accuracy.stepper, "%s", a->stepper);
+        snprintf(o.accuracy_name, sizeof o.accuracy_name, "custom");
+    }
+    if (a->has_rtol) {
+        o.accuracy.rtol = a->rtol;
+        snprintf(o.accuracy_name, sizeof o.accuracy_name, "custom");
+    }
+    if ((rc = tippe_launch_options_check(&o, err)) != 0)
         return rc;
     tippe_design *d = NULL;
-    if ((rc = tippe_design_load(a->input, design_sets, n_design, &d, err)) != 0)
+    if ((rc = tippe_design_load(a->input, a->over.item, a->over.n, &d, err)) != 0)
         return rc;
     memset(l, 0, sizeof *l);
     tippe_top top;
-    if ((rc = tippe_design_top(d, z2, &top, err)) == 0 &&
+    if ((rc = tippe_design_top(d, a->z2_mm, &top, err)) == 0 &&
         (rc = tippe_launch_central(&top, &o, spin, &l->initial, err)) == 0) {
         snprintf(l->title, sizeof l->title, "%s, Z2 = %g mm, hand launch at %.3g rev/s",
-                 tippe_design_name(d), z2, spin / (2 * M_PI));
+                 tippe_design_name(d), a->z2_mm, spin / (2 * M_PI));
         l->model.top = top;
         l->model.g = o.g;
         l->model.mu = o.mu;
         l->t_end = o.t_end;
         l->accuracy = o.accuracy;
-        tippe_animate_design_weight(d, z2, &top, &l->weight_offset_m, &l->weight_radius_m);
+        tippe_animate_design_weight(d, a->z2_mm, &top, &l->weight_offset_m, &l->weight_radius_m);
     }
     tippe_design_free(d);
     return rc;
@@ -361,12 +335,8 @@ int tippe_cli_animate(int argc, char **argv)
 {
     args a = {.length_s = 10, .fps = 30, .width = 640, .height = 480};
     int rc = parse_args(&a, argc, argv);
-    if (rc < 0) {
-        animate_usage(stdout);
-        return 0;
-    }
     if (rc)
-        return rc;
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
     tippe_film_format format = TIPPE_FILM_MP4;
     const char *dot = strrchr(a.out, '.');
     const int png = dot && !strchr(dot, '/') && !strcasecmp(dot, ".png");
@@ -386,13 +356,15 @@ int tippe_cli_animate(int argc, char **argv)
     tippe_animate_launch launch;
     rc = is_design(a.input) ? launch_of_design(&a, &launch, &err)
                             : launch_of_scenario(&a, &launch, &err);
+    if (rc == -2)
+        return 2; /* a usage error, already said */
     if (rc)
         return tippe_cli_fail(VERB, &err, rc);
     tippe_animate_options opt;
     tippe_animate_options_default(&opt);
     opt.speed = a.speed;
     opt.film_s = a.length_s;
-    opt.fps = a.fps;
+    opt.fps = (int)a.fps;
     opt.width_px = a.width;
     opt.height_px = a.height;
 
