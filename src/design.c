@@ -18,6 +18,7 @@
 #include "tippe/error.h"
 #include "tippe/geometry.h"
 #include "tippe/json.h"
+#include "tippe/print.h"
 
 #include <cjson/cJSON.h>
 #include <gsl/gsl_errno.h>
@@ -44,6 +45,8 @@
 /* Intervals per r: a part gives at most 2, each void removes at most 2 more. */
 #define MAX_IV (4 + 4 * MAX_PARTS)
 
+enum { CLIP_NONE, CLIP_SPHERE, CLIP_CAVITY, CLIP_SHELL };
+
 typedef enum { SHAPE_BALL, SHAPE_SHELL, SHAPE_CYLINDER, SHAPE_TUBE, SHAPE_TORUS, N_SHAPES } shape_kind;
 static const char *const shape_names[N_SHAPES] = {"ball", "shell", "cylinder", "tube", "torus"};
 
@@ -62,8 +65,16 @@ typedef struct {
     int printable;          /* the material's "printable" flag (voids: the parent's) */
     int has_height, has_radius;
     int parent;             /* voids: index of the part cut from; else -1 */
-    int clip;               /* 0 none, 1 sphere, 2 cavity */
+    int clip;               /* CLIP_NONE, CLIP_SPHERE, CLIP_CAVITY, CLIP_SHELL */
     double clip_radius_mm;  /* resolved; 0 = not clipped */
+    double clip_inner_mm;   /* CLIP_SHELL: the shell's cavity radius (the part is cut to
+                               the wall between it and clip_radius_mm); else 0 */
+    int printed;            /* has a "print" block */
+    tippe_print_settings print;
+    int calibrated;         /* the infill comes from measured_mass_g */
+    double measured_mass_g;
+    double infill;          /* used: print.infill, or the calibrated one */
+    double solid_mass_kg, skin_mass_kg, print_rel_error;
     double mass_kg;         /* signed contribution */
 } part;
 
@@ -106,7 +117,7 @@ static const char *const top_keys[] = {"name", "notes", "radius_mm", "travel_mm"
 static const char *const top_string_keys[] = {"name", "notes", "materials", NULL};
 static const char *const part_common_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from",
-    "clip", "moving", "may_protrude", NULL};
+    "clip", "moving", "may_protrude", "print", NULL};
 static const char *const part_string_keys[] = {"name", "shape", "notes", "material",
                                                "cut_from", "clip", NULL};
 static const char *const ball_keys[] = {"radius_mm", NULL};
@@ -118,8 +129,11 @@ static const char *const *const shape_keys[N_SHAPES] = {ball_keys, shell_keys, c
                                                         cylinder_keys, torus_keys};
 static const char *const all_part_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from", "clip",
-    "moving", "may_protrude", "radius_mm", "inner_radius_mm", "thickness_mm", "height_mm",
-    "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
+    "moving", "may_protrude", "print", "radius_mm", "inner_radius_mm", "thickness_mm",
+    "height_mm", "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
+static const char *const print_keys[] = {"perimeters", "line_width_mm", "top_bottom_layers",
+                                         "layer_height_mm", "infill", "measured_mass_g",
+                                         "notes", NULL};
 static const char *const material_keys[] = {"density_g_cm3", "source", "printable", "notes",
                                              NULL};
 
@@ -155,6 +169,11 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
                                    "%s: --set %s: expected parts.NAME.FIELD=VALUE", c->file, text);
         *dot = '\0';
         key = dot + 1;
+        /* parts.NAME.print.KEY: a field of the part's print block */
+        size_t flen2 = strlen(field);
+        int in_print = flen2 > 12 && !strcmp(field + flen2 - 6, ".print");
+        if (in_print)
+            field[flen2 - 6] = '\0';
         int index = -1;
         if (field[5] == '[') {
             char *endp = NULL;
@@ -191,14 +210,36 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
             snprintf(path, sizeof path, "parts[%d]", index);
             return tippe_json_fail(c, path, "must be an object (cannot apply --set %s)", text);
         }
-        if (!tippe_json_in_list(key, all_part_keys)) {
+        if (in_print) {
+            if (!tippe_json_in_list(key, print_keys)) {
+                char list[256];
+                tippe_json_key_list(list, sizeof list, print_keys, NULL);
+                return tippe_error_set(c->err, TIPPE_EINPUT,
+                                       "%s: --set %s: '%s' is not a print setting (settings: %s)",
+                                       c->file, text, key, list);
+            }
+            /* true, false or no block: an object of defaults, then this field */
+            cJSON *pr = cJSON_GetObjectItemCaseSensitive(obj, "print");
+            if (!cJSON_IsObject(pr)) {
+                cJSON *fresh = cJSON_CreateObject();
+                if (!fresh)
+                    return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+                int rc = tippe_json_put(c, obj, "print", fresh);
+                if (rc)
+                    return rc;
+                pr = fresh;
+            }
+            obj = pr;
+            snprintf(path, sizeof path, "parts[%d].print.%s", index, key);
+        } else if (!tippe_json_in_list(key, all_part_keys)) {
             char list[512];
             tippe_json_key_list(list, sizeof list, all_part_keys, NULL);
             return tippe_error_set(c->err, TIPPE_EINPUT,
                                    "%s: --set %s: '%s' is not a part field (fields: %s)", c->file,
                                    text, key, list);
+        } else {
+            snprintf(path, sizeof path, "parts[%d].%s", index, key);
         }
-        snprintf(path, sizeof path, "parts[%d].%s", index, key);
     } else {
         if (!tippe_json_in_list(key, top_keys) || !strcmp(key, "parts")) {
             char list[256];
@@ -245,6 +286,65 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
 
 /* ----------------------------------------------------------------- parts */
 
+/* A print setting: a number in [lo, hi] (an integer if integer). */
+static int print_number(const tippe_json_reader *c, const cJSON *obj, const char *pre,
+                        const char *key, double lo, double hi, int integer, const char *unit,
+                        double *out)
+{
+    int here = 0;
+    int rc = tippe_json_number(c, obj, pre, key, 0, out, &here);
+    if (rc || !here)
+        return rc;
+    char path[96];
+    tippe_json_path(path, sizeof path, pre, key);
+    if (integer && *out != floor(*out))
+        return tippe_json_fail(c, path, "must be a whole number of %s, got %g", unit, *out);
+    if (!(*out >= lo && *out <= hi))
+        return tippe_json_fail(c, path, "must be %g .. %g %s, got %g", lo, hi, unit, *out);
+    return TIPPE_OK;
+}
+
+/* "print": true (slicer defaults), false (solid), or an object of settings
+ * (defaults for the ones left out). docs/design-format.md gives the ranges. */
+static int parse_print(const tippe_json_reader *c, const cJSON *obj, const char *pre, part *p)
+{
+    const cJSON *item = cJSON_GetObjectItemCaseSensitive(obj, "print");
+    if (!item || cJSON_IsFalse(item))
+        return TIPPE_OK;
+    char path[64];
+    tippe_json_path(path, sizeof path, pre, "print");
+    if (p->is_void)
+        return tippe_json_fail(c, path,
+                               "a void is not printed: give the part it is cut from the "
+                               "print block (its holes get walls too)");
+    p->printed = 1;
+    p->print = tippe_print_defaults();
+    if (cJSON_IsTrue(item))
+        return TIPPE_OK;
+    if (!cJSON_IsObject(item))
+        return tippe_json_wrong_type(c, path, "true, false or an object of print settings",
+                                     item);
+    int rc;
+    double per = p->print.perimeters, layers = p->print.top_bottom_layers;
+    if ((rc = tippe_json_check_keys(c, item, path, "a print block", print_keys, NULL)) ||
+        (rc = tippe_json_string(c, item, path, "notes", 0, NULL, 0, NULL)) ||
+        (rc = print_number(c, item, path, "perimeters", 0, 50, 1, "perimeters", &per)) ||
+        (rc = print_number(c, item, path, "line_width_mm", 0.05, 3, 0, "mm",
+                           &p->print.line_width_mm)) ||
+        (rc = print_number(c, item, path, "top_bottom_layers", 0, 200, 1, "layers", &layers)) ||
+        (rc = print_number(c, item, path, "layer_height_mm", 0.01, 2, 0, "mm",
+                           &p->print.layer_height_mm)) ||
+        (rc = print_number(c, item, path, "infill", 0, 1, 0,
+                           "(a fraction of the solid density: 15 % is 0.15)", &p->print.infill)) ||
+        (rc = print_number(c, item, path, "measured_mass_g", 1e-6, 1e6, 0, "g",
+                           &p->measured_mass_g)))
+        return rc;
+    p->print.perimeters = (int)per;
+    p->print.top_bottom_layers = (int)layers;
+    p->calibrated = cJSON_GetObjectItemCaseSensitive(item, "measured_mass_g") != NULL;
+    return TIPPE_OK;
+}
+
 static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, part *p)
 {
     char pre[32], path[64], shape[16];
@@ -282,7 +382,8 @@ static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, p
     int has_void = 0, has_moving = 0, has_protrude = 0;
     if ((rc = tippe_json_bool(c, obj, pre, "void", &p->is_void, &has_void)) ||
         (rc = tippe_json_bool(c, obj, pre, "moving", &p->moving, &has_moving)) ||
-        (rc = tippe_json_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)))
+        (rc = tippe_json_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)) ||
+        (rc = parse_print(c, obj, pre, p)))
         return rc;
     int has_mat = 0, has_dens = 0, has_cut = 0, has_clip = 0;
     char cut[NAME_LEN] = "", clip[16] = "";
@@ -330,11 +431,14 @@ static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, p
     if (has_clip) {
         tippe_json_path(path, sizeof path, pre, "clip");
         if (!strcmp(clip, "sphere"))
-            p->clip = 1;
+            p->clip = CLIP_SPHERE;
         else if (!strcmp(clip, "cavity"))
-            p->clip = 2;
+            p->clip = CLIP_CAVITY;
+        else if (!strcmp(clip, "shell"))
+            p->clip = CLIP_SHELL;
         else
-            return tippe_json_fail(c, path, "must be \"sphere\" or \"cavity\", not '%s'", clip);
+            return tippe_json_fail(c, path,
+                                   "must be \"sphere\", \"cavity\" or \"shell\", not '%s'", clip);
         if (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL)
             return tippe_json_fail(c, path, "only a cylinder, tube or torus can be clipped");
         if (p->moving)
@@ -556,9 +660,16 @@ static void prim_ivs(const part *p, double r, double dz, double g, ivset *s)
         break;
     }
     if (p->clip_radius_mm > 0) {
+        /* the clip ball, or with clip_inner_mm the shell's wall */
         ivset c = {0}, t;
-        if ((h = chord(p->clip_radius_mm + g, r)) > 0)
-            iv_push(&c, -h, h);
+        if ((h = chord(p->clip_radius_mm + g, r)) > 0) {
+            if (p->clip_inner_mm > 0 && (hi = chord(p->clip_inner_mm - g, r)) > 0) {
+                iv_push(&c, -h, -hi);
+                iv_push(&c, hi, h);
+            } else {
+                iv_push(&c, -h, h);
+            }
+        }
         iv_intersect(s, &c, &t);
         *s = t;
     }
@@ -603,7 +714,7 @@ static int cmp_double(const void *a, const void *b)
 static double *sample_radii(const tippe_design *d, int *n_out)
 {
     double rmax = d->radius_mm;
-    double brk[8 * MAX_PARTS + 2];
+    double brk[9 * MAX_PARTS + 2];
     int nb = 0;
     brk[nb++] = d->radius_mm;
     for (int i = 0; i < d->n_parts; i++) {
@@ -631,6 +742,8 @@ static double *sample_radii(const tippe_design *d, int *n_out)
         }
         if (p->clip_radius_mm > 0)
             brk[nb++] = p->clip_radius_mm;
+        if (p->clip_inner_mm > 0)
+            brk[nb++] = p->clip_inner_mm;
     }
     for (int k = 0; k < nb; k++)
         rmax = fmax(rmax, brk[k]);
@@ -935,11 +1048,12 @@ static int check_layout(const tippe_json_reader *c, tippe_design *d)
 
 /* ------------------------------------------------------------ mass moments */
 
-/* Unit-density moments of p's own region (SI), at its z_mm. */
-static tippe_moments part_moments(const part *p)
+/* Unit-density moments of p's own shape cut to the ball of radius clip_m
+ * (0: not cut), SI, at its z_mm. */
+static tippe_moments shape_moments(const part *p, double clip_m)
 {
     const double mm = 1e-3;
-    double zc = p->z_mm * mm, clip = p->clip_radius_mm * mm; /* 0: not clipped */
+    double zc = p->z_mm * mm;
     switch (p->shape) {
     case SHAPE_BALL:
         return tippe_ball(p->radius_mm * mm, zc);
@@ -948,12 +1062,23 @@ static tippe_moments part_moments(const part *p)
     case SHAPE_CYLINDER:
     case SHAPE_TUBE:
         return tippe_tube(p->inner_radius_mm * mm, p->radius_mm * mm, p->height_mm * mm, zc,
-                          clip);
+                          clip_m);
     case SHAPE_TORUS:
     default:
         return tippe_torus(p->centre_radius_mm * mm, p->radial_semi_mm * mm,
-                           p->axial_semi_mm * mm, zc, clip);
+                           p->axial_semi_mm * mm, zc, clip_m);
     }
+}
+
+/* Unit-density moments of p's own region (SI), at its z_mm. Cut to a shell's
+ * wall, it is the part cut to the outer ball less the part cut to the cavity
+ * (the second lies inside the first). */
+static tippe_moments part_moments(const part *p)
+{
+    tippe_moments m = shape_moments(p, p->clip_radius_mm * 1e-3);
+    if (p->clip_inner_mm > 0)
+        m = tippe_moments_sub(m, shape_moments(p, p->clip_inner_mm * 1e-3));
+    return m;
 }
 
 static int finite_moments(tippe_moments m)
@@ -1125,18 +1250,21 @@ static int resolve_clip(const tippe_json_reader *c, tippe_design *d, int i, int 
         return tippe_json_fail(c, pth,
                                "a void cut from a moving part cannot be clipped (its shape "
                                "would change as it moves)");
-    if (p->clip == 1) {
+    if (p->clip == CLIP_SPHERE) {
         p->clip_radius_mm = d->radius_mm;
-    } else if (p->clip == 2) {
+    } else if (p->clip == CLIP_CAVITY || p->clip == CLIP_SHELL) {
+        const char *word = p->clip == CLIP_CAVITY ? "cavity" : "shell";
         if (n_shell != 1)
             return tippe_json_fail(c, pth,
-                                   "\"cavity\" needs exactly one fixed shell part, the design "
+                                   "\"%s\" needs exactly one fixed shell part, the design "
                                    "has %d",
-                                   n_shell);
+                                   word, n_shell);
         if (d->parts[shell].z_mm != 0)
-            return tippe_json_fail(c, pth, "\"cavity\" needs the shell '%s' centred at z_mm = 0",
-                                   d->parts[shell].name);
-        p->clip_radius_mm = d->parts[shell].radius_mm - d->parts[shell].thickness_mm;
+            return tippe_json_fail(c, pth, "\"%s\" needs the shell '%s' centred at z_mm = 0",
+                                   word, d->parts[shell].name);
+        double cavity = d->parts[shell].radius_mm - d->parts[shell].thickness_mm;
+        p->clip_radius_mm = p->clip == CLIP_CAVITY ? cavity : d->parts[shell].radius_mm;
+        p->clip_inner_mm = p->clip == CLIP_SHELL ? cavity : 0;
     }
     return TIPPE_OK;
 }
@@ -1166,7 +1294,104 @@ static int resolve_parts(const tippe_json_reader *c, tippe_design *d)
             return rc;
         if ((p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE) && !p->has_height)
             p->height_mm = 2 * p->clip_radius_mm; /* spans the clip ball */
+        if (p->printed && p->material[0] && !p->printable) {
+            snprintf(pth, sizeof pth, "parts[%d].print", i);
+            return tippe_json_fail(c, pth,
+                                   "material '%s' is not printable (the materials table says "
+                                   "so): only a printed part has a print block",
+                                   p->material);
+        }
     }
+    return TIPPE_OK;
+}
+
+/* The print model's description of p's own region (SI). */
+static tippe_solid print_solid(const part *p)
+{
+    const double mm = 1e-3;
+    tippe_solid s = {0};
+    s.z_centre = p->z_mm * mm;
+    s.radius = p->radius_mm * mm;
+    s.clip_outer = p->clip_radius_mm * mm;
+    s.clip_inner = p->clip_inner_mm * mm;
+    switch (p->shape) {
+    case SHAPE_BALL:
+        s.kind = TIPPE_SOLID_BALL;
+        break;
+    case SHAPE_SHELL:
+        s.kind = TIPPE_SOLID_SHELL;
+        s.inner_radius = (p->radius_mm - p->thickness_mm) * mm;
+        break;
+    case SHAPE_CYLINDER:
+    case SHAPE_TUBE:
+        s.kind = TIPPE_SOLID_TUBE;
+        s.inner_radius = p->inner_radius_mm * mm;
+        s.height = p->height_mm * mm;
+        break;
+    case SHAPE_TORUS:
+    default:
+        s.kind = TIPPE_SOLID_TORUS;
+        s.centre_radius = p->centre_radius_mm * mm;
+        s.radial_semi = p->radial_semi_mm * mm;
+        s.axial_semi = p->axial_semi_mm * mm;
+        break;
+    }
+    return s;
+}
+
+/* Unit-density moments of printed part i as printed: the part minus its voids
+ * (closed forms) less (1 - infill) x its sparse core (print model). Sets the
+ * part's infill (calibrated from a weighed mass when one is given), its solid
+ * and skin masses and the relative error bound. */
+static int printed_moments(const tippe_json_reader *c, tippe_design *d, int i,
+                           tippe_moments *out)
+{
+    part *p = &d->parts[i];
+    tippe_solid shape = print_solid(p), holes[MAX_PARTS];
+    tippe_moments solid = part_moments(p);
+    int n_holes = 0;
+    for (int k = 0; k < d->n_parts; k++)
+        if (d->parts[k].parent == i) {
+            holes[n_holes++] = print_solid(&d->parts[k]);
+            solid = tippe_moments_sub(solid, part_moments(&d->parts[k]));
+        }
+    tippe_print_core core;
+    tippe_error perr;
+    char pth[64];
+    snprintf(pth, sizeof pth, "parts[%d].print", i);
+    int rc = tippe_print_core_moments(&shape, holes, n_holes, tippe_print_wall_mm(&p->print) * 1e-3,
+                                      tippe_print_skin_mm(&p->print) * 1e-3, &core, &perr);
+    if (rc)
+        return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", perr.msg)
+                                  : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,
+                                                    perr.msg);
+    double rho = p->density_g_cm3 * 1e3;
+    p->infill = p->print.infill;
+    if (p->calibrated) {
+        double m0, m1;
+        int side = tippe_print_infill_for_mass(p->measured_mass_g * 1e-3, solid.m, core.core.m,
+                                               rho, &p->infill, &m0, &m1);
+        snprintf(pth, sizeof pth, "parts[%d].print.measured_mass_g", i);
+        if (side < 0)
+            return tippe_json_fail(c, pth,
+                                   "%g g is less than the walls and top/bottom skins alone "
+                                   "weigh (%.3f g at 0 %% infill with these settings and %g "
+                                   "g/cm^3)",
+                                   p->measured_mass_g, m0 * 1e3, p->density_g_cm3);
+        if (side > 0)
+            return tippe_json_fail(c, pth,
+                                   "%g g is more than part '%s' weighs printed solid (%.3f g at "
+                                   "%g g/cm^3)",
+                                   p->measured_mass_g, p->name, m1 * 1e3, p->density_g_cm3);
+    }
+    p->solid_mass_kg = rho * solid.m;
+    p->skin_mass_kg = rho * (solid.m - core.core.m);
+    /* the error bound of each moment, relative to the printed part's */
+    double lack = 1.0 - p->infill, printed_m = solid.m - lack * core.core.m;
+    double printed_rr = solid.m_rr - lack * core.core.m_rr;
+    p->print_rel_error = lack * fmax(core.abserr[0] / printed_m, core.abserr[3] / printed_rr);
+    /* the part's own region, its voids added back: they subtract as usual */
+    *out = tippe_moments_sub(part_moments(p), tippe_moments_scale(core.core, lack));
     return TIPPE_OK;
 }
 
@@ -1177,7 +1402,11 @@ static int sum_moments(const tippe_json_reader *c, tippe_design *d)
     d->fixed = d->moving = (tippe_moments){0, 0, 0, 0};
     for (int i = 0; i < d->n_parts; i++) {
         part *p = &d->parts[i];
-        tippe_moments m = tippe_moments_scale(part_moments(p), p->density_g_cm3 * 1e3);
+        tippe_moments unit = part_moments(p);
+        int rc;
+        if (p->printed && (rc = printed_moments(c, d, i, &unit)))
+            return rc;
+        tippe_moments m = tippe_moments_scale(unit, p->density_g_cm3 * 1e3);
         if (!finite_moments(m) || !(m.m > 0))
             return tippe_error_set(c->err, TIPPE_ECOMPUTE,
                                    "%s: parts[%d]: the geometry module gave no finite positive "
@@ -1376,6 +1605,36 @@ int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
     return TIPPE_OK;
 }
 
+int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out)
+{
+    memset(out, 0, sizeof *out);
+    if (i < 0 || i >= d->n_parts)
+        return tippe_error_set(NULL, TIPPE_EINPUT, "no part %d", i);
+    const part *p = &d->parts[i];
+    if (!p->printed)
+        return TIPPE_OK;
+    out->printed = 1;
+    out->settings = p->print;
+    out->wall_mm = tippe_print_wall_mm(&p->print);
+    out->skin_mm = tippe_print_skin_mm(&p->print);
+    out->infill = p->infill;
+    out->calibrated = p->calibrated;
+    out->measured_mass_kg = p->calibrated ? p->measured_mass_g * 1e-3 : 0;
+    out->solid_mass_kg = p->solid_mass_kg;
+    out->skin_mass_kg = p->skin_mass_kg;
+    out->printed_mass_kg = p->skin_mass_kg + p->infill * (p->solid_mass_kg - p->skin_mass_kg);
+    out->rel_error = p->print_rel_error;
+    return TIPPE_OK;
+}
+
+int tippe_design_has_printed_parts(const tippe_design *d)
+{
+    for (int i = 0; i < d->n_parts; i++)
+        if (d->parts[i].printed)
+            return 1;
+    return 0;
+}
+
 int tippe_design_part_printable(const tippe_design *d, int i)
 {
     return i >= 0 && i < d->n_parts && d->parts[i].printable;
@@ -1421,6 +1680,38 @@ static int part_named(const tippe_design *d, const char *field, size_t len)
     return -1;
 }
 
+/* parts.NAME.print.KEY: the print settings that are numbers (infill: the one
+ * used, calibrated or not). */
+static int print_field(const tippe_design *d, int i, const char *key, double *value,
+                       int *part_index, char *why, size_t why_cap)
+{
+    const part *p = &d->parts[i];
+    *part_index = i;
+    if (!p->printed) {
+        snprintf(why, why_cap, "part '%s' has no print block", p->name);
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "infill"))
+        *value = p->infill;
+    else if (!strcmp(key, "line_width_mm"))
+        *value = p->print.line_width_mm;
+    else if (!strcmp(key, "layer_height_mm"))
+        *value = p->print.layer_height_mm;
+    else if (!strcmp(key, "perimeters"))
+        *value = p->print.perimeters;
+    else if (!strcmp(key, "top_bottom_layers"))
+        *value = p->print.top_bottom_layers;
+    else if (!strcmp(key, "measured_mass_g") && p->calibrated)
+        *value = p->measured_mass_g;
+    else {
+        snprintf(why, why_cap, "not a number setting of the print block (infill, "
+                               "line_width_mm, layer_height_mm, perimeters, "
+                               "top_bottom_layers, measured_mass_g when given)");
+        return TIPPE_EINPUT;
+    }
+    return TIPPE_OK;
+}
+
 int tippe_design_field(const tippe_design *d, const char *field, double *value, int *part_index,
                        char *why, size_t why_cap)
 {
@@ -1437,6 +1728,10 @@ int tippe_design_field(const tippe_design *d, const char *field, double *value, 
         return TIPPE_EINPUT;
     }
     int i = part_named(d, field, (size_t)(dot - field));
+    size_t plen = (size_t)(dot - field);
+    if (i < 0 && plen > 12 && !strncmp(dot - 6, ".print", 6) &&
+        (i = part_named(d, field, plen - 6)) >= 0)
+        return print_field(d, i, dot + 1, value, part_index, why, why_cap);
     if (i < 0) {
         snprintf(why, why_cap, "no part %.*s", (int)(dot - field - 5), field + 5);
         return TIPPE_EINPUT;

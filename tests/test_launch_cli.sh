@@ -126,7 +126,7 @@ refused "bad preset" "unknown accuracy preset" launch "$m12" --z2 10 --accuracy 
 refused "bad mu" "mu = -1" launch "$m12" --z2 10 --mu -1 --csv "$tmp/out.csv"
 refused "bad design override" "parts.screw" \
     launch "$m12" --z2 10 --set parts.screw.height_mm=-3 --csv "$tmp/out.csv"
-refused "CSV in a missing directory" "cannot write in directory" \
+refused "CSV in a missing directory" "its directory does not exist" \
     launch "$m12" --z2 10 --csv "$tmp/none/out.csv"
 refused "map plot format" "unsupported plot format" \
     map "$m12" --z2 10:15:2 --spin 5:20:2 --plot "$tmp/out.gif" --csv "$tmp/out.csv"

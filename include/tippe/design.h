@@ -15,6 +15,7 @@
 #define TIPPE_DESIGN_H
 
 #include "tippe/error.h"
+#include "tippe/print.h"
 #include "tippe/top.h"
 
 #include <stddef.h>
@@ -80,6 +81,28 @@ typedef struct {
 int tippe_design_n_parts(const tippe_design *d);
 /* Fills *out for part i (0-based, file order); TIPPE_EINPUT if i is out of range. */
 int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out);
+
+/* How part i is printed (docs/design-format.md, "Printed parts"). A part
+ * without a print block is solid: printed = 0 and the rest is zero. */
+typedef struct {
+    int printed;
+    tippe_print_settings settings; /* as given (settings.infill: the slicer's) */
+    double wall_mm, skin_mm;       /* perimeters x line width, layers x layer height */
+    double infill;                 /* used: settings.infill, or calibrated */
+    int calibrated;                /* infill solved from measured_mass_kg */
+    double measured_mass_kg;
+    double solid_mass_kg;          /* the printed part (part less its voids) if solid */
+    double skin_mass_kg;           /* its walls and top/bottom skins alone (0 % infill) */
+    double printed_mass_kg;        /* as printed, at `infill` */
+    double rel_error;              /* bound on the print model's relative error in the
+                                      part's mass and moments (QAGS estimates) */
+} tippe_design_print_info;
+
+/* Fills *out for part i; TIPPE_EINPUT if i is out of range. */
+int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out);
+
+/* Whether any part is printed (has a print block). */
+int tippe_design_has_printed_parts(const tippe_design *d);
 
 /* Whether part i (0-based, file order) is made of a printable filament: its
  * material's "printable" flag in the materials table (a void: its parent's).

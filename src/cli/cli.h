@@ -172,10 +172,33 @@ int tippe_cli_sets_add(tippe_cli_sets *s, const char *field, const char *value);
  * options (at most 64)". */
 int tippe_cli_add_set(const char *verb, tippe_cli_sets *s, const char *value);
 
-/* An output file (plot: its extension names a plot format) whose directory
- * can be written: 0, or 2 after a usage error naming option, path and reason.
- * Checked before any work, so that bad usage leaves nothing and costs nothing. */
+/* An output file (plot: its extension names a plot format) that can be
+ * written, found by really creating (and removing) a temporary next to it
+ * (tippe/report.h): 0, or 2 after a usage error naming option, path and
+ * reason (a directory, a path through a file, /proc, no permission, or the
+ * same file as an earlier output of this run). "-" is standard output. Every
+ * verb calls it for every output before any work, so that bad usage leaves
+ * nothing and costs nothing. */
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot);
+
+/* Runs verb v (argv[0] is its name) the way both front ends do: signals stop
+ * it cleanly (tippe_cli_signals_install), its output files form one set that
+ * is committed only if it succeeds, and a failed write to standard output is a
+ * failure (exit 1 with a message). Returns the exit status. */
+int tippe_cli_run(const tippe_cli_verb *v, int argc, char **argv);
+
+/* ---- signals (src/cli/signals.c) ----
+ * SIGINT, SIGTERM, SIGHUP (and, quietly, SIGPIPE) remove every temporary output
+ * file and end the process at once as killed by that signal (exit status
+ * 128 + signal: 130, 143), after the one line "tippe VERB: stopped by SIGINT;
+ * ..."; files already in place are never touched. SIGXFSZ (ulimit -f) is
+ * caught so that the write fails with EFBIG and is reported. Nothing to poll:
+ * a verb (or a library loop) needs no cancel flag; it only has to write its
+ * files through tippe/report.h. */
+void tippe_cli_signals_install(const char *verb);
+/* After the outputs were renamed into place: if a stop signal came during the
+ * renames, says so and ends the process by it; otherwise returns 0. */
+int tippe_cli_signal_pending(const char *verb);
 
 /* Prints o (NULL: out of memory while building it) as JSON on stdout and
  * deletes it: 0, or 1 after "tippe VERB: out of memory while writing JSON". */

@@ -1009,9 +1009,8 @@ int tippe_cli_map(int argc, char **argv)
             rc = tippe_cli_fail(a.verb, &err, rc);
             goto done;
         }
+        /* One set with the CSV (tippe_cli_run): both or neither. */
         if (a.plot && (rc = tippe_launch_plot_map(a.plot, &m, d, a.o.g, NULL, &err)) != 0) {
-            if (a.csv)
-                unlink(a.csv); /* all outputs or none */
             rc = tippe_cli_fail(a.verb, &err, rc);
             goto done;
         }

@@ -404,11 +404,10 @@ int tippe_cli_simulate(int argc, char **argv)
     int status = 0;
     if (csv && (rc = write_csv(csv, &buf, &err)) != 0)
         status = tippe_cli_fail(VERB, &err, rc);
-    if (!status && plot && (rc = tippe_plot_sim(plot, &sc, &res, buf.s, buf.n, &err)) != 0) {
+    /* The outputs form one set (tippe_cli_run): a failed plot keeps the CSV's
+     * old file too. */
+    if (!status && plot && (rc = tippe_plot_sim(plot, &sc, &res, buf.s, buf.n, &err)) != 0)
         status = tippe_cli_fail(VERB, &err, rc);
-        if (csv)
-            unlink(csv); /* all the outputs asked for, or none */
-    }
     if (!status) {
         if (json) {
             status = tippe_cli_print_json(VERB, to_json(&sc, &res, &tc, elapsed));

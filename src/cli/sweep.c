@@ -44,7 +44,11 @@ static void sweep_usage(FILE *out)
             "The table lists each zone: its group, where it starts and ends (mm), its width\n"
             "(mm), the boundary that ends it and notes; then whether the top is \"3-in-1\"\n"
             "(groups I, II and III all reachable within the physical travel) and its narrowest\n"
-            "reachable zone. Exit status: 0 ok, 2 bad usage or design, 1 computation failed.\n");
+            "reachable zone. Then the design's tolerances (its \"tolerances\" block and the\n"
+            "defaults: printed dimensions +/-0.2 mm, filament density +/-3 %%, hardware mass\n"
+            "+/-2 %%), each zone boundary's band (+/- mm, first order, independent tolerances\n"
+            "in quadrature; docs/sweep.md) and each zone's robust width (its width less the\n"
+            "bands at both ends). Exit status: 0 ok, 2 bad usage or design, 1 computation failed.\n");
 }
 
 /* "FIELD=FROM:TO:STEPS"; FROM may exceed TO (the values then fall). */
@@ -234,11 +238,8 @@ int tippe_cli_sweep(int argc, char **argv)
     tippe_sweep_path p = tippe_sweep_design_path(d);
     if (!rc && plot)
         rc = tippe_sweep_plot_zones_banded(plot, &p, &r, &b, tippe_design_name(d), &err);
-    if (!rc && phase) {
+    if (!rc && phase) /* one set with the plot (tippe_cli_run): both or neither */
         rc = tippe_sweep_plot_phase(phase, &p, &r, tippe_design_name(d), &err);
-        if (rc && plot)
-            unlink(plot); /* all outputs or none */
-    }
     if (rc) {
         rc = tippe_cli_fail(VERB, &err, rc);
     } else if (json) {
