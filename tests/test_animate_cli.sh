@@ -43,6 +43,12 @@ check "default: 300 frames over 1.1 x the verdict time" json_ok "$tmp/d.json" \
 check "speed" "$tippe" animate "$flip" --t-end 3 --speed 1.5 -o "$tmp/s.mp4" "${small[@]}" --json >"$tmp/s.json"
 check "speed: 21 frames" json_ok "$tmp/s.json" "o['frames'] == 21 and abs(o['speed'] - 1.5) < 1e-12"
 
+# To a pipe (no seeking back): a fragmented MP4, still 10 frames; the summary goes to stderr.
+"$tippe" animate "$flip" -o - --format mp4 "${small[@]}" --length 1 2>"$tmp/pipe.err" | cat >"$tmp/pipe.mp4"
+read -r c w h n _ <<<"$(probe "$tmp/pipe.mp4")"
+check "pipe: $c ${w}x$h, $n frames (want h264 160x120, 10 frames)" test "$c $w $h $n" = "h264 160 120 10"
+check "pipe: summary on stderr" grep -q "^film" "$tmp/pipe.err"
+
 # One picture.
 check "still" "$tippe" animate "$flip" --frame 5 -o "$tmp/still.png" "${small[@]}" >/dev/null
 read -r c w h _ <<<"$(probe "$tmp/still.png")"

@@ -11,6 +11,7 @@
 #include "tippe/scenario.h"
 
 #include <cjson/cJSON.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,7 +23,7 @@ static const char *const VERB = "animate";
 
 /* What the command line asked for. */
 typedef struct {
-    const char *input, *out, *size_text, *accuracy, *stepper;
+    const char *input, *out, *size_text, *accuracy, *stepper, *format;
     double speed, length_s, frame_t, z2_mm, spin, mu, g, t_end, rtol;
     long fps;
     int width, height, json, still;
@@ -53,6 +54,9 @@ static int parse_args(args *a, int argc, char **argv)
         {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &a->out,
          .arg = "FILE", .required = 1,
          .help = "the film: .mp4 (H.264), .webm (VP9) or .gif; with --frame, a .png"},
+        {.name = "format", .kind = TIPPE_CLI_STRING, .value = &a->format, .arg = "mp4|webm|gif",
+         .help = "the film's format, when -o does not end in .mp4, .webm or .gif\n"
+                 "(-o - writes to standard output)"},
         {.name = "speed", .kind = TIPPE_CLI_DOUBLE, .value = &a->speed, .arg = "X",
          .min = 1e-9, .max = 1e9,
          .help = "model seconds per second of film (default: the whole launch, to a\n"
@@ -273,16 +277,55 @@ static int launch_of_design(const args *a, tippe_animate_launch *l, tippe_error 
     return rc;
 }
 
-static long file_size(const char *path)
+/* Writes the film or the picture through the report module (a temporary
+ * renamed into place, or straight to a device); *bytes is its size (-1 if not
+ * a regular file). FFmpeg seeks back to finish an MP4 or a WebM, so the
+ * encoder gets a stream of its own on the path the report module chose. */
+static int write_output(const args *a, const tippe_film *film, tippe_film_format format,
+                        long *bytes, tippe_error *err)
 {
+    tippe_report_file rf;
+    const char *what = a->still ? "the picture" : "the film";
+    int rc = tippe_report_open_name(&rf, a->out, what, err);
+    if (rc)
+        return rc;
+    FILE *f = fopen(rf.write_path, "wb");
+    if (!f) {
+        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: cannot write %s: %s", a->out, what,
+                             strerror(errno));
+        tippe_report_abort(&rf);
+        return rc;
+    }
+    if (a->still) {
+        rc = tippe_film_write_png(film, f, err);
+    } else {
+        tippe_progress prog;
+        tippe_progress_start(&prog, stderr, "tippe animate", tippe_film_work(film, format),
+                             TIPPE_PROGRESS_AUTO);
+        rc = tippe_film_write(film, format, f, &prog, err);
+        tippe_progress_finish(&prog);
+    }
+    const int write_failed = fflush(f) != 0 || ferror(f);
+    const int e = errno;
     struct stat sb;
-    return stat(path, &sb) == 0 ? (long)sb.st_size : -1;
+    *bytes = rf.mode == TIPPE_REPORT_REPLACE && fstat(fileno(f), &sb) == 0 ? (long)sb.st_size
+                                                                            : -1;
+    if ((fclose(f) != 0 || write_failed) && !rc)
+        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: writing %s failed: %s", a->out, what,
+                             strerror(e));
+    if (rc) {
+        tippe_report_abort(&rf);
+        return rc;
+    }
+    return tippe_report_commit(&rf, err);
 }
 
-static void print_summary(const args *a, const tippe_film *f, int film_format, double elapsed_s)
+static void print_summary(const args *a, const tippe_film *f, int film_format, long bytes,
+                          double elapsed_s)
 {
     const tippe_dynamics_result *r = &f->result;
-    const long bytes = file_size(a->out);
+    /* A film written to standard output leaves it to the film. */
+    FILE *out = strcmp(a->out, "-") ? stdout : stderr;
     if (a->json) {
         cJSON *o = cJSON_CreateObject();
         if (o) {
@@ -306,28 +349,35 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, d
             if (r->verdict != TIPPE_VERDICT_UNDECIDED)
                 cJSON_AddNumberToObject(o, "t_verdict_s", r->t_verdict);
             cJSON_AddNumberToObject(o, "jellett_rel_drift", r->jellett_rel_drift);
-            cJSON_AddNumberToObject(o, "bytes", (double)bytes);
+            if (bytes >= 0)
+                cJSON_AddNumberToObject(o, "bytes", (double)bytes);
+            else
+                cJSON_AddNullToObject(o, "bytes");
             cJSON_AddNumberToObject(o, "elapsed_s", elapsed_s);
         }
-        tippe_cli_print_json(VERB, o);
+        char *text = o ? cJSON_Print(o) : NULL;
+        cJSON_Delete(o);
+        if (text)
+            fprintf(out, "%s\n", text);
+        free(text);
         return;
     }
     if (a->still) {
-        printf("picture   %s: %dx%d PNG at t = %.6g s (%ld bytes)\n", a->out, f->opt.width_px,
+        fprintf(out, "picture   %s: %dx%d PNG at t = %.6g s (%ld bytes)\n", a->out, f->opt.width_px,
                f->opt.height_px, f->samples[f->n_samples - 1].t, bytes);
     } else {
-        printf("film      %s: %s, %dx%d, %d fps, %d frames = %.4g s of film (%ld bytes)\n",
+        fprintf(out, "film      %s: %s, %dx%d, %d fps, %d frames = %.4g s of film (%ld bytes)\n",
                a->out, tippe_film_format_name(film_format), f->opt.width_px, f->opt.height_px,
                f->opt.fps, f->n_frames, (double)f->n_frames / f->opt.fps, bytes);
-        printf("time      t = 0 .. %.6g s of the launch; 1 s of film = %.4g s\n",
+        fprintf(out, "time      t = 0 .. %.6g s of the launch; 1 s of film = %.4g s\n",
                (f->n_frames - 1) * f->frame_dt, f->speed);
     }
     if (r->verdict != TIPPE_VERDICT_UNDECIDED)
-        printf("verdict   %s at t = %.6g s (theta %.4g rad)\n", tippe_verdict_name(r->verdict),
+        fprintf(out, "verdict   %s at t = %.6g s (theta %.4g rad)\n", tippe_verdict_name(r->verdict),
                r->t_verdict, r->final.theta);
     else
-        printf("verdict   none reached in the part shown (to t = %.6g s)\n", r->last.t);
-    printf("accuracy  %d samples at exact times, Jellett drift %.2g, made in %.3g s\n",
+        fprintf(out, "verdict   none reached in the part shown (to t = %.6g s)\n", r->last.t);
+    fprintf(out, "accuracy  %d samples at exact times, Jellett drift %.2g, made in %.3g s\n",
            f->n_samples, r->jellett_rel_drift, elapsed_s);
 }
 
@@ -345,9 +395,16 @@ int tippe_cli_animate(int argc, char **argv)
                                      a.out);
     if (!a.still && png)
         return tippe_cli_usage_error(VERB, "-o %s: a .png is one picture; give --frame T", a.out);
-    if (!a.still && !tippe_film_format_of(a.out, &format))
-        return tippe_cli_usage_error(VERB, "-o %s: unknown film format (use .mp4, .webm or .gif)",
-                                     a.out);
+    if (a.format) {
+        char name[16];
+        snprintf(name, sizeof name, ".%s", a.format);
+        if (a.still || !tippe_film_format_of(name, &format))
+            return tippe_cli_usage_error(VERB, "--format %s: expected mp4, webm or gif (for a "
+                                         "film)", a.format);
+    } else if (!a.still && !tippe_film_format_of(a.out, &format)) {
+        return tippe_cli_usage_error(VERB, "-o %s: unknown film format (use .mp4, .webm or "
+                                     ".gif, or give --format)", a.out);
+    }
     /* Before any work, so that bad usage costs nothing and leaves nothing. */
     if (tippe_cli_check_output(VERB, "-o", a.out, 0))
         return 2;
@@ -372,29 +429,14 @@ int tippe_cli_animate(int argc, char **argv)
     tippe_film film;
     rc = a.still ? tippe_film_make_still(&launch, &opt, a.frame_t, &film, &err)
                  : tippe_film_make(&launch, &opt, &film, &err);
-    tippe_report_file rf;
+    long bytes = -1;
     if (!rc)
-        rc = tippe_report_open(&rf, a.out, a.still ? "the picture" : "the film", &err);
-    if (!rc) {
-        if (a.still) {
-            rc = tippe_film_write_png(&film, rf.f, &err);
-        } else {
-            tippe_progress prog;
-            tippe_progress_start(&prog, stderr, "tippe animate", tippe_film_work(&film, format),
-                                 TIPPE_PROGRESS_AUTO);
-            rc = tippe_film_write(&film, format, rf.f, &prog, &err);
-            tippe_progress_finish(&prog);
-        }
-        if (rc)
-            tippe_report_abort(&rf);
-        else
-            rc = tippe_report_commit(&rf, &err);
-    }
+        rc = write_output(&a, &film, format, &bytes, &err);
     if (rc) {
         tippe_film_free(&film);
         return tippe_cli_fail(VERB, &err, rc);
     }
-    print_summary(&a, &film, format, tippe_cli_now_s() - t0);
+    print_summary(&a, &film, format, bytes, tippe_cli_now_s() - t0);
     tippe_film_free(&film);
     return 0;
 }
