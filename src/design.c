@@ -36,6 +36,9 @@
 #define TOL_MM 1e-6
 /* Uniform r samples across the widest part; see the resolution note in docs. */
 #define N_R_UNIFORM 4000
+/* The same for an optimiser's candidates (TIPPE_DESIGN_COARSE_LAYOUT): 20 times
+ * fewer uniform samples; every part's edges are still sampled exactly. */
+#define N_R_COARSE 200
 /* A sphere radius match (the part forming the sphere's surface), mm. */
 #define SAME_LENGTH_MM 1e-9
 /* Slack on the travel check for a sweep's rounded steps, mm. */
@@ -90,7 +93,14 @@ struct tippe_design {
     int n_overrides;
     tippe_tolerance *tolerances; /* the tolerances block and the defaults */
     int n_tolerances;
+    /* Set only while a tippe_design_source builds it: the source's parsed
+     * materials table (not owned) and whether the travel is the physical one. */
+    const struct tippe_design_source *source;
+    int travel_physical, coarse_layout;
 };
+
+static int source_materials(const tippe_design *d, const char *mat_file, cJSON **out);
+static double widest_free_gap_mid(const tippe_design *d, const double *rs, int nr);
 
 /* A length in mm that must be > 0 (or >= 0 with allow_zero). */
 static int field_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
@@ -748,14 +758,15 @@ static double *sample_radii(const tippe_design *d, int *n_out)
     for (int k = 0; k < nb; k++)
         rmax = fmax(rmax, brk[k]);
     rmax += 1.0;
-    int n = N_R_UNIFORM + 3 * nb + 1;
+    int n_uniform = d->coarse_layout ? N_R_COARSE : N_R_UNIFORM;
+    int n = n_uniform + 3 * nb + 1;
     double *r = malloc((size_t)n * sizeof *r);
     if (!r)
         return NULL;
     int m = 0;
     r[m++] = 0;
-    for (int k = 0; k < N_R_UNIFORM; k++)
-        r[m++] = (k + 0.5) * rmax / N_R_UNIFORM;
+    for (int k = 0; k < n_uniform; k++)
+        r[m++] = (k + 0.5) * rmax / n_uniform;
     for (int k = 0; k < nb; k++) {
         double off[3] = {-2 * TOL_MM, 0, 2 * TOL_MM};
         for (int j = 0; j < 3; j++)
@@ -983,11 +994,13 @@ static int limit_by_contact(const layout *L, int i, int j, double mid, double li
 }
 
 /* The physical travel (d->contact_mm, d->contact_limit) around the middle of
- * the stated travel. */
+ * the stated travel, or for a travel_physical design (an optimiser's
+ * candidate) the widest free stretch, which then becomes its travel. */
 static int find_physical_travel(const layout *L)
 {
     tippe_design *d = L->d;
-    double mid = 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
+    double mid = d->travel_physical ? widest_free_gap_mid(d, L->rs, L->nr)
+                                    : 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
     double lim[2] = {-BIG_MM, BIG_MM};
     snprintf(d->contact_limit[0], sizeof d->contact_limit[0], "nothing");
     snprintf(d->contact_limit[1], sizeof d->contact_limit[1], "nothing");
@@ -1006,6 +1019,13 @@ static int find_physical_travel(const layout *L)
     }
     d->contact_mm[0] = lim[0];
     d->contact_mm[1] = lim[1];
+    if (!rc && d->travel_physical) {
+        if (!(lim[0] > -BIG_MM && lim[1] < BIG_MM && lim[0] < lim[1]))
+            return tippe_json_fail(L->c, "travel_mm", "the moving weight has no bounded "
+                                                      "physical travel (nothing stops it)");
+        d->travel_mm[0] = lim[0];
+        d->travel_mm[1] = lim[1];
+    }
     return rc;
 }
 
@@ -1194,7 +1214,8 @@ static int resolve_materials(const tippe_json_reader *c, const char *path, const
     else
         snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
     cJSON *table = NULL;
-    int rc = load_materials(mat_file, &table, c->err);
+    int rc = source_materials(d, mat_file, &table) ? TIPPE_OK
+                                                   : load_materials(mat_file, &table, c->err);
     if (rc) {
         if (has_mat_file) {
             char inner[sizeof c->err->msg];
@@ -1805,4 +1826,262 @@ int tippe_design_n_tolerances(const tippe_design *d) { return d->n_tolerances; }
 const tippe_tolerance *tippe_design_tolerance(const tippe_design *d, int i)
 {
     return i >= 0 && i < d->n_tolerances ? &d->tolerances[i] : NULL;
+}
+
+/* ------------------------------------------ physical travel without a guess */
+
+typedef struct {
+    double lo, hi;
+} shift_iv;
+
+static int cmp_shift(const void *a, const void *b)
+{
+    const shift_iv *x = a, *y = b;
+    return (x->lo > y->lo) - (x->lo < y->lo);
+}
+
+static int push_shift(shift_iv **v, int *n, int *cap, double lo, double hi)
+{
+    if (*n == *cap) {
+        int nc = *cap ? 2 * *cap : 256;
+        shift_iv *t = realloc(*v, (size_t)nc * sizeof *t);
+        if (!t)
+            return -1;
+        *v = t;
+        *cap = nc;
+    }
+    (*v)[(*n)++] = (shift_iv){lo, hi};
+    return 0;
+}
+
+/* The middle of the widest stretch of Z2 where no moving part overlaps a fixed
+ * one or leaves the sphere: the Z2 shifts that make a moving z interval share
+ * volume with a fixed one are open intervals (the same arithmetic as the
+ * physical travel in check_layout), and the stretch is a gap between their
+ * union. Used when the travel is to be the physical one (an optimiser's
+ * candidate, whose stated travel means nothing); NAN when there is no gap. */
+static double widest_free_gap_mid(const tippe_design *d, const double *rs, int nr)
+{
+    shift_iv *v = NULL;
+    int n = 0, cap = 0, oom = 0;
+    const double R = d->radius_mm;
+    ivset a, b;
+    for (int i = 0; i < d->n_parts && !oom; i++) {
+        const part *p = &d->parts[i];
+        if (p->is_void || !p->moving)
+            continue;
+        if (p->may_protrude) /* held only while its centre is inside */
+            oom |= push_shift(&v, &n, &cap, -BIG_MM, -R - p->z_mm) ||
+                   push_shift(&v, &n, &cap, R - p->z_mm, BIG_MM);
+        for (int j = -1; j < d->n_parts && !oom; j++) {
+            if (j < 0 ? p->may_protrude : (d->parts[j].is_void || d->parts[j].moving))
+                continue;
+            for (int k = 0; k < nr && !oom; k++) {
+                material_ivs(d, i, rs[k], 0, &a);
+                if (!a.n)
+                    continue;
+                if (j < 0)
+                    outside_ivs(R, rs[k], &b);
+                else
+                    material_ivs(d, j, rs[k], 0, &b);
+                for (int u = 0; u < a.n && !oom; u++)
+                    for (int w = 0; w < b.n && !oom; w++)
+                        oom |= push_shift(&v, &n, &cap, b.lo[w] - a.hi[u], b.hi[w] - a.lo[u]);
+            }
+        }
+    }
+    double best = 0.0, mid = NAN;
+    if (!oom) {
+        qsort(v, (size_t)n, sizeof *v, cmp_shift);
+        double reach = -BIG_MM; /* the union of intervals so far ends here */
+        for (int k = 0; k <= n; k++) {
+            double next = k < n ? v[k].lo : BIG_MM;
+            if (next > reach && next - reach > best) {
+                best = next - reach;
+                mid = 0.5 * (next + reach);
+            }
+            if (k < n)
+                reach = fmax(reach, v[k].hi);
+        }
+    }
+    free(v);
+    return mid;
+}
+
+/* ------------------------------------------------------- design sources */
+
+struct tippe_design_source {
+    char *path;
+    cJSON *root;      /* the design file as parsed (duplicate keys refused) */
+    char mat_file[1024];
+    cJSON *materials; /* the materials table it names, read and checked once; or NULL */
+};
+
+/* The source's materials table (a copy the caller deletes) if it is the one
+ * build() is about to read; 0 if not. */
+static int source_materials(const tippe_design *d, const char *mat_file, cJSON **out)
+{
+    if (!d->source || !d->source->materials || strcmp(mat_file, d->source->mat_file))
+        return 0;
+    *out = cJSON_Duplicate(d->source->materials, 1);
+    return *out != NULL;
+}
+
+int tippe_design_source_open(const char *path, tippe_design_source **out, tippe_error *err)
+{
+    tippe_gsl_errors_as_codes();
+    *out = NULL;
+    /* A first full load checks the file and resolves its materials table. */
+    tippe_design *d = NULL;
+    int rc = tippe_design_load(path, NULL, 0, &d, err);
+    if (rc)
+        return rc;
+    tippe_design_free(d);
+    tippe_design_source *s = calloc(1, sizeof *s);
+    tippe_json_reader *c = tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, NULL);
+    if (!s || !c || !(s->path = dup_string(path))) {
+        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+        goto fail;
+    }
+    if ((rc = tippe_json_load(c, MAX_FILE_MIB, "design", &s->root)))
+        goto fail;
+    char mat_rel[512] = "materials.json";
+    const cJSON *m = cJSON_GetObjectItemCaseSensitive(s->root, "materials");
+    if (cJSON_IsString(m))
+        snprintf(mat_rel, sizeof mat_rel, "%s", m->valuestring);
+    const char *slash = strrchr(path, '/');
+    if (mat_rel[0] == '/' || !slash)
+        snprintf(s->mat_file, sizeof s->mat_file, "%s", mat_rel);
+    else
+        snprintf(s->mat_file, sizeof s->mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
+    tippe_error ignored = {0};
+    /* A design with inline densities only has no table: then none is cached. */
+    if (load_materials(s->mat_file, &s->materials, &ignored))
+        s->materials = NULL;
+    free(c);
+    *out = s;
+    return TIPPE_OK;
+fail:
+    free(c);
+    tippe_design_source_free(s);
+    return rc;
+}
+
+int tippe_design_source_apply(const tippe_design_source *s, const char *const *overrides,
+                              int n_overrides, cJSON **out, tippe_error *err)
+{
+    *out = NULL;
+    tippe_json_reader *c = tippe_json_reader_new(s->path, err, TIPPE_JSON_WORDS_FIELD, "set by ");
+    cJSON *root = cJSON_Duplicate(s->root, 1);
+    int rc = (!c || !root) ? tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory") : TIPPE_OK;
+    for (int i = 0; !rc && i < n_overrides; i++)
+        rc = apply_override(c, root, overrides[i]);
+    free(c);
+    if (rc) {
+        cJSON_Delete(root);
+        return rc;
+    }
+    *out = root;
+    return TIPPE_OK;
+}
+
+/* A built variant remembers its overrides (and its travel, when that was the
+ * physical one) so that tippe_design_derive() rebuilds the same design. */
+static int remember_overrides(tippe_design *d, const char *const *overrides, int n,
+                              tippe_error *err)
+{
+    if (!(d->overrides = calloc((size_t)n + 1, sizeof *d->overrides)))
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    char travel[128];
+    snprintf(travel, sizeof travel, "travel_mm=[%.17g,%.17g]", d->travel_mm[0], d->travel_mm[1]);
+    for (int i = 0; i <= n; i++) {
+        if (i == n && !d->travel_physical)
+            break;
+        if (!(d->overrides[d->n_overrides++] = dup_string(i < n ? overrides[i] : travel)))
+            return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    }
+    return TIPPE_OK;
+}
+
+int tippe_design_source_build(const tippe_design_source *s, const char *const *overrides,
+                              int n_overrides, unsigned flags, tippe_design **out,
+                              tippe_error *err)
+{
+    *out = NULL;
+    tippe_json_reader *c = tippe_json_reader_new(s->path, err, TIPPE_JSON_WORDS_FIELD, "set by ");
+    cJSON *root = cJSON_Duplicate(s->root, 1);
+    tippe_design *d = calloc(1, sizeof *d);
+    int rc = (!c || !root || !d) ? tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory")
+                                 : TIPPE_OK;
+    for (int i = 0; !rc && i < n_overrides; i++)
+        rc = apply_override(c, root, overrides[i]);
+    if (!rc) {
+        d->source = s;
+        d->travel_physical = (flags & TIPPE_DESIGN_TRAVEL_PHYSICAL) != 0;
+        d->coarse_layout = (flags & TIPPE_DESIGN_COARSE_LAYOUT) != 0;
+        rc = build(c, root, s->path, d, 1);
+        d->source = NULL;
+    }
+    if (!rc)
+        rc = remember_overrides(d, overrides, n_overrides, err);
+    cJSON_Delete(root);
+    free(c);
+    if (rc) {
+        tippe_design_free(d);
+        return rc;
+    }
+    *out = d;
+    return TIPPE_OK;
+}
+
+const char *tippe_design_source_path(const tippe_design_source *s) { return s->path; }
+
+void tippe_design_source_free(tippe_design_source *s)
+{
+    if (!s)
+        return;
+    free(s->path);
+    cJSON_Delete(s->root);
+    cJSON_Delete(s->materials);
+    free(s);
+}
+
+/* ------------------------------------------------------------ printability */
+
+/* Thinnest wall around a hole (a cylinder or tube void cut from a fixed ball):
+ * the side wall at the hole's layer nearest the ball's centre (the widest ring
+ * of material around it), and a floor or roof where the hole ends inside the
+ * ball (measured along the hole's wall, r = its radius, where it is thinnest).
+ * Where a hole opens through the surface its rim thins to nothing in every
+ * drilled ball; that is not counted. INFINITY if there is no such hole. */
+double tippe_design_min_hole_wall_mm(const tippe_design *d, const char **hole)
+{
+    double wall = INFINITY;
+    if (hole)
+        *hole = NULL;
+    for (int i = 0; i < d->n_parts; i++) {
+        const part *p = &d->parts[i];
+        if (!p->is_void || p->moving || (p->shape != SHAPE_CYLINDER && p->shape != SHAPE_TUBE))
+            continue;
+        const part *q = &d->parts[p->parent];
+        if (q->shape != SHAPE_BALL)
+            continue;
+        double a = p->radius_mm, rb = q->radius_mm, zb = q->z_mm;
+        double lo = p->z_mm - p->height_mm / 2, hi = p->z_mm + p->height_mm / 2;
+        double open_at = p->clip_radius_mm > a ? sqrt(p->clip_radius_mm * p->clip_radius_mm - a * a)
+                                               : INFINITY; /* the clip opens the hole there */
+        double surf = rb > a ? sqrt(rb * rb - a * a) : 0.0; /* ball surface at r = a */
+        double zs = fmin(fmax(zb, lo), hi);
+        double w = rb * rb > (zs - zb) * (zs - zb) ? sqrt(rb * rb - (zs - zb) * (zs - zb)) - a : -a;
+        if (lo > -open_at + TOL_MM)
+            w = fmin(w, lo - (zb - surf));
+        if (hi < open_at - TOL_MM)
+            w = fmin(w, (zb + surf) - hi);
+        if (w < wall) {
+            wall = w;
+            if (hole)
+                *hole = p->name;
+        }
+    }
+    return wall;
 }

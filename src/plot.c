@@ -210,6 +210,21 @@ static void panel_steps(double steps[2])
     steps[1] = nice_step(panel_win[3] - panel_win[2], ny);
 }
 
+void tippe_plot_axes_x(const char *xlabel, const char *title)
+{
+    panel_steps(axis_steps);
+    plslabelfunc(tick_label, axis_steps);
+    plcol0(SLOT_FG);
+    plwidth(1.0);
+    pllsty(1);
+    plbox("bcnsto", axis_steps[0], 0, "bc", 0, 0);
+    plslabelfunc(NULL, NULL);
+    if (xlabel)
+        plmtex("b", 3.0, 0.5, 0.5, xlabel);
+    if (title)
+        plmtex("t", 1.0, 0.5, 0.5, title);
+}
+
 void tippe_plot_axes(const char *xlabel, const char *ylabel, const char *title)
 {
     panel_steps(axis_steps);

@@ -50,6 +50,9 @@ void tippe_plot_panel(double vx0, double vx1, double vy0, double vy1, double xmi
  * title; any label may be NULL. */
 void tippe_plot_axes(const char *xlabel, const char *ylabel, const char *title);
 
+/* The same with numbers on the x axis only (rows of bars, whose y means nothing). */
+void tippe_plot_axes_x(const char *xlabel, const char *title);
+
 /* Dashed vertical and horizontal grid lines at the major ticks. */
 void tippe_plot_grid(void);
 

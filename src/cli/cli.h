@@ -31,6 +31,7 @@ int tippe_cli_eval(int argc, char **argv);
 int tippe_cli_classify(int argc, char **argv);
 int tippe_cli_simulate(int argc, char **argv);
 int tippe_cli_sweep(int argc, char **argv);
+int tippe_cli_optimise(int argc, char **argv);
 int tippe_cli_compare(int argc, char **argv);
 int tippe_cli_launch(int argc, char **argv);
 int tippe_cli_map(int argc, char **argv);
