@@ -135,6 +135,33 @@ static void check_parsing(void)
               "--set tolerances: %d", tippe_design_n_tolerances(d));
         tippe_design_free(d);
     }
+    /* A printed body: its infill gets +/-25 % of itself; weighed, the scale's
+     * 0.1 g instead; whole numbers of lines have no tolerance. */
+    const char *printed[] = {"parts.body.print={\"infill\": 0.4}"};
+    d = NULL;
+    CHECK(tippe_design_load(M12, printed, 1, &d, &err) == TIPPE_OK, "%s", err.msg);
+    if (d) {
+        const tippe_tolerance *t = find_tol(d, "parts.body.print.infill");
+        CHECK(t && fabs(t->plus_minus - 0.1) < 1e-15 && !strcmp(t->rule, "slicer infill"),
+              "infill default");
+        tippe_design_free(d);
+    }
+    const char *weighed[] = {"parts.body.print={\"measured_mass_g\": 40}"};
+    d = NULL;
+    CHECK(tippe_design_load(M12, weighed, 1, &d, &err) == TIPPE_OK, "%s", err.msg);
+    if (d) {
+        const tippe_tolerance *t = find_tol(d, "parts.body.print.measured_mass_g");
+        CHECK(t && t->plus_minus == 0.1 && t->value == 40 && !find_tol(d, "parts.body.print.infill"),
+              "weighed: the scale's reading, not the slicer's infill");
+        tippe_design_free(d);
+    }
+    const char *layers[] = {"parts.body.print={\"infill\": 0.4}",
+                            "tolerances={\"parts.body.print.perimeters\": 1}"};
+    d = NULL;
+    CHECK(tippe_design_load(M12, layers, 2, &d, &err) == TIPPE_EINPUT &&
+              strstr(err.msg, "whole number"),
+          "perimeters: '%s'", err.msg);
+    tippe_design_free(d);
     remove(tmp_design);
 }
 
@@ -171,11 +198,13 @@ static void check_derivatives(const tippe_design *d, const tippe_sweep_bands_res
     char sets[2][8][TIPPE_TOLERANCE_FIELD_LEN + 40];
     for (int i = 0; i < tippe_design_n_tolerances(d); i++) {
         const tippe_tolerance *t = tippe_design_tolerance(d, i);
-        /* h = t/4: the central difference's truncation error h^2 z'''/6 is
-         * ~1e-5 of the slope here (the boundaries bend on a scale of mm per
-         * 0.05 mm of a field), and the 1e-10 mm root location adds
-         * 1e-10 / h ~ 1e-8; measured largest difference 1.7e-5. */
-        double h = 0.25 * t->plus_minus;
+        /* h = t/16. The central difference's truncation error h^2 z'''/6
+         * shrinks 16-fold from h = t/4 (measured: largest difference 1.7e-5
+         * -> 1.1e-6 for the solid design, 1.5e-3 -> 9.1e-5 for the printed
+         * one, whose boundaries bend more with the infill): second order, as
+         * it must be if the implicit derivative is right. The 1e-10 mm root
+         * location adds 1e-10 / h < 1e-7. */
+        double h = 0.0625 * t->plus_minus;
         int n = tippe_tolerance_overrides(d, t, h, sets[0], 8);
         int m = tippe_tolerance_overrides(d, t, -h, sets[1], 8);
         const char *up[8], *down[8];
@@ -317,6 +346,22 @@ int main(void)
     check_robust(&r, &b);
     tippe_sweep_bands_free(&b);
     tippe_sweep_result_free(&r);
+    tippe_design_free(d);
+
+    /* The printed body at 40 % infill: the infill's sensitivity goes through
+     * the print model's quadrature (relative error ~1e-9), still far inside
+     * the 1e-3 of check_derivatives. */
+    const char *printed[] = {"parts.body.print={\"infill\": 0.4}"};
+    d = NULL;
+    CHECK(tippe_design_load(M12, printed, 1, &d, &err) == TIPPE_OK, "%s", err.msg);
+    if (d && tippe_sweep_design(d, 0, 0, NULL, &r, &err) == TIPPE_OK) {
+        CHECK(tippe_sweep_bands(d, &r, &b, &err) == TIPPE_OK, "%s", err.msg);
+        CHECK(b.n == 4 && tippe_design_n_tolerances(d) == 5, "printed: %d bands, %d tolerances",
+              b.n, tippe_design_n_tolerances(d));
+        check_derivatives(d, &b);
+        tippe_sweep_bands_free(&b);
+        tippe_sweep_result_free(&r);
+    }
     tippe_design_free(d);
     return check_summary("test_tolerance");
 }
