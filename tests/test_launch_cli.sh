@@ -17,7 +17,7 @@ check "launch is quiet on stderr when it is not a terminal" test ! -s "$tmp/l1.e
 check "launch --json has counts adding to n, ci95, theory and seed" python3 - "$tmp/l1.json" <<'EOF'
 import json, sys
 o = json.load(open(sys.argv[1]))
-keys = ["no_tip", "tip", "hang", "lost_contact", "undecided"]
+keys = ["no_tip", "tip", "hang", "lost_contact", "undecided", "bounded"]
 assert o["n"] == 8 and o["seed"] == 3
 assert sorted(o["counts"]) == sorted(keys)
 assert sum(o["counts"].values()) == 8

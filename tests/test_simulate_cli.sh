@@ -51,7 +51,11 @@ assert d["theory"]["agrees"] is True
 assert d["theory"]["prediction"][0]["kind"] == "no_tip"
 # the fast preset (rtol 1e-5) keeps J to well under 1e-3 over this run
 assert 0 <= d["jellett_rel_drift"] < 1e-3 and 0 <= d["energy_rel_error"] < 1e-3
-assert d["steps"] > 0 and d["rhs_evals"] >= d["steps"]
+assert d["steps"] >= 0 and d["rhs_evals"] >= d["steps"]
+# the verdict says how it was proved: trapped, with a barrier gap above its margin
+assert d["decided_by"] == "trapped", d["decided_by"]
+assert d["margin_J"] > 0 and (d["barrier_gap_J"] is None or d["barrier_gap_J"] > d["margin_J"])
+assert d["Rn_bound_N"] > 0 and d["theta_range_rad"][0] <= d["theta_final_rad"] <= d["theta_range_rad"][1]
 EOF
 else
     bad "--json failed: $(cat "$tmp/err")"

@@ -210,6 +210,15 @@ int tippe_cli_print_json(const char *verb, struct cJSON *o);
 void tippe_cli_json_accuracy(struct cJSON *o, const char *preset,
                              const tippe_dynamics_accuracy *acc);
 
+/* How a dynamics verdict was reached (src/cli/verdict_out.c), the same words in
+ * simulate, check and launch: the final state, the decision (trapped,
+ * lost_contact, t_end), its time, barrier gap, margin and contact bound. */
+void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *prefix);
+/* The same as JSON fields of o: decided_by, decision_t_s, theta_final_rad,
+ * spin_final_rad_s, phi_dot_final_rad_s, theta_range_rad, barrier_gap_J,
+ * margin_J, Rn_bound_N, t_flip_s (null where not applicable). */
+void tippe_cli_json_verdict_proof(struct cJSON *o, const tippe_dynamics_result *r);
+
 /* Seconds on the monotonic clock, for the run times the verbs report. */
 double tippe_cli_now_s(void);
 

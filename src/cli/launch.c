@@ -40,7 +40,7 @@
 enum { V_LAUNCH = 1, V_MAP = 2, V_CHECK = 4 };
 
 static const char *const verdict_names[TIPPE_LAUNCH_N_VERDICTS] = {
-    "no_tip", "tip", "hang", "lost_contact", "undecided"};
+    "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded"};
 
 /* ---- MPI ------------------------------------------------------------------ */
 
@@ -613,7 +613,8 @@ static void launch_usage(FILE *out)
 
 static void print_counts_table(const tippe_launch_tally *t)
 {
-    printf("\noutcome         count  share   95%% CI (Wilson)   median theta_final   median t\n");
+    printf("\noutcome         count  share   95%% CI (Wilson)   median theta_final   median t "
+           "decided\n");
     for (int v = 0; v < TIPPE_LAUNCH_N_VERDICTS; v++) {
         double lo, hi;
         tippe_launch_wilson(t->counts[v], t->n, TIPPE_LAUNCH_Z95, &lo, &hi);
@@ -648,6 +649,14 @@ static void print_theory_summary(const tippe_launch_tally *t)
                TIPPE_LAUNCH_HANG_AGREE_RAD);
     else
         printf("agreement  no settled launch to compare\n");
+    /* how the verdicts were reached (docs/dynamics.md, "Proved verdicts") */
+    if (isfinite(t->min_gap_over_margin))
+        printf("proof      no_tip/tip/hang proved by energy trapping and a contact bound; "
+               "smallest barrier gap %.3g times its margin\n",
+               t->min_gap_over_margin);
+    if (t->flips)
+        printf("flip       %ld tips followed to theta = 90 deg: median model time %.3g s\n",
+               t->flips, t->median_t_flip_s);
 }
 
 static cJSON *tally_json(const tippe_launch_tally *t)
@@ -657,6 +666,15 @@ static cJSON *tally_json(const tippe_launch_tally *t)
         return NULL;
     cJSON_AddNumberToObject(o, "n", (double)t->n);
     cJSON_AddItemToObject(o, "counts", json_counts(t));
+    cJSON_AddNumberToObject(o, "flips", (double)t->flips);
+    if (t->flips)
+        cJSON_AddNumberToObject(o, "median_t_flip_s", t->median_t_flip_s);
+    else
+        cJSON_AddNullToObject(o, "median_t_flip_s");
+    if (isfinite(t->min_gap_over_margin))
+        cJSON_AddNumberToObject(o, "min_gap_over_margin", t->min_gap_over_margin);
+    else
+        cJSON_AddNullToObject(o, "min_gap_over_margin");
     cJSON *fr = cJSON_AddObjectToObject(o, "fractions");
     cJSON *ci = cJSON_AddObjectToObject(o, "ci95");
     cJSON *mt = cJSON_AddObjectToObject(o, "median_theta_final_rad");
@@ -864,7 +882,7 @@ static void map_usage(FILE *out)
         "Exit status: 0 ok, 2 bad usage or design, 1 a launch could not be computed.\n");
 }
 
-static const char verdict_letter[TIPPE_LAUNCH_N_VERDICTS] = {'N', 'T', 'H', 'L', 'U'};
+static const char verdict_letter[TIPPE_LAUNCH_N_VERDICTS] = {'N', 'T', 'H', 'L', 'U', 'B'};
 
 static int write_map_csv(const char *path, const tippe_launch_map *m, const tippe_top *tops,
                          tippe_error *err)
@@ -1176,6 +1194,18 @@ int tippe_cli_check(int argc, char **argv)
             }
             cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(rec.verdict));
             cJSON_AddNumberToObject(o, "t_s", rec.t_s);
+            cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(rec.how));
+            if (rec.how == TIPPE_DECIDED_TRAPPED) {
+                cJSON_AddNumberToObject(o, "margin_J", rec.margin_J);
+                if (isfinite(rec.barrier_gap_J))
+                    cJSON_AddNumberToObject(o, "barrier_gap_J", rec.barrier_gap_J);
+                else
+                    cJSON_AddNullToObject(o, "barrier_gap_J");
+            }
+            if (isfinite(rec.t_flip_s))
+                cJSON_AddNumberToObject(o, "t_flip_s", rec.t_flip_s);
+            else
+                cJSON_AddNullToObject(o, "t_flip_s");
             cJSON_AddNumberToObject(o, "theta_final_rad", rec.theta_final_rad);
             cJSON_AddNumberToObject(o, "spin_final_rad_s", rec.spin_final_rad_s);
             cJSON_AddNumberToObject(o, "J0_kg_m3_s", rec.J0);
@@ -1205,9 +1235,17 @@ int tippe_cli_check(int argc, char **argv)
                "precession %.4g rad/s, no sliding\n",
                ic.spin, ic.spin / (2 * M_PI), ic.theta, ic.theta * 180 / M_PI, ic.phi_dot);
         print_model(&a.o);
-        printf("\nverdict    %s at t = %.4g s: theta %.4f rad (%.1f deg), spin %.4g rad/s\n",
-               tippe_verdict_name(rec.verdict), rec.t_s, rec.theta_final_rad,
+        printf("\nverdict    %s: ends at theta %.4f rad (%.1f deg), spin %.4g rad/s\n",
+               tippe_verdict_name(rec.verdict), rec.theta_final_rad,
                rec.theta_final_rad * 180 / M_PI, rec.spin_final_rad_s);
+        printf("           decided by %s at t = %.4g s", tippe_decision_name(rec.how), rec.t_s);
+        if (rec.how == TIPPE_DECIDED_TRAPPED)
+            printf(" (energy %.3g J below the well's barrier, margin %.3g J)", rec.barrier_gap_J,
+                   rec.margin_J);
+        printf("\n");
+        if (isfinite(rec.t_flip_s))
+            printf("flip       theta passed 90 deg at t = %.4g s of model time (mu = %g s/m)\n",
+                   rec.t_flip_s, a.o.mu);
         printf("calculator zone %s at Z2 = %g mm (%s)\n",
                tippe_group_name(z.ok ? z.group : cls.group), z2,
                group_meaning(z.ok ? z.group : cls.group));

@@ -37,7 +37,8 @@ static void simulate_usage(FILE *out)
             "                      (phi_dot, theta, n) path; .png, .svg or .pdf\n"
             "  --sample-dt S       trajectory sample interval, s (default: 16 per turn of the\n"
             "                      launch, between t_end/10^5 and t_end/10^4)\n"
-            "  --full              keep integrating to t_end after the verdict (for plots)\n"
+            "  --full              keep integrating to t_end after the verdict (always with\n"
+            "                      --csv or --plot)\n"
             "\n"
             "Overrides of scenario fields (applied before the file is checked):\n"
             "  --mu S_PER_M  --g M_S2  --t-end S\n"
@@ -121,7 +122,7 @@ static void check_theory(const tippe_scenario *sc, const tippe_dynamics_result *
         if ((k == TIPPE_FINAL_NO_TIP && r->verdict == TIPPE_VERDICT_NO_TIP) ||
             (k == TIPPE_FINAL_TIP && r->verdict == TIPPE_VERDICT_TIP) ||
             (k == TIPPE_FINAL_HANG && r->verdict == TIPPE_VERDICT_HANG &&
-             fabs(tc->pred.state[i].theta_rad - r->final.theta) < HANG_AGREE_RAD))
+             fabs(tc->pred.state[i].theta_rad - r->theta_final_rad) < HANG_AGREE_RAD))
             tc->agrees = 1;
     }
 }
@@ -150,10 +151,10 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
     case TIPPE_VERDICT_NO_TIP:
     case TIPPE_VERDICT_TIP:
     case TIPPE_VERDICT_HANG:
-        printf("verdict   %s: settled at t = %.6g s, theta %.6g rad (%.2f deg), spin %.6g rad/s, "
-               "phi_dot %.6g rad/s, contact speed %.3g m/s\n",
-               tippe_verdict_name(r->verdict), r->t_verdict, f->theta, f->theta * 180 / M_PI,
-               f->spin, f->phi_dot, f->slip_speed);
+    case TIPPE_VERDICT_BOUNDED:
+        tippe_cli_print_verdict_proof(r, "verdict   ");
+        printf("          at the decision: theta %.6g rad, spin %.6g rad/s, contact speed %.3g m/s\n",
+               f->theta, f->spin, f->slip_speed);
         break;
     case TIPPE_VERDICT_LOST_CONTACT:
         printf("verdict   lost_contact: the normal force reached 0 at t = %.6g s, theta %.6g rad "
@@ -161,12 +162,18 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                r->t_verdict, f->theta, f->theta * 180 / M_PI, f->spin, f->theta_dot);
         break;
     case TIPPE_VERDICT_UNDECIDED:
-        printf("verdict   undecided: not settled by %s = %.6g s; theta %.6g rad (%.2f deg), "
+        if (r->how == TIPPE_DECIDED_FLAT_WELL) {
+            tippe_cli_print_verdict_proof(r, "verdict   ");
+            break;
+        }
+        printf("verdict   undecided: not proved by %s = %.6g s; theta %.6g rad (%.2f deg), "
                "spin %.6g rad/s, phi_dot %.6g rad/s, contact speed %.3g m/s\n",
                r->budget_exhausted ? "t" : "t_end", r->t_verdict, f->theta, f->theta * 180 / M_PI,
                f->spin, f->phi_dot, f->slip_speed);
         break;
     }
+    if (!isnan(r->t_flip))
+        printf("flip      theta passed 90 deg at t = %.6g s (model time)\n", r->t_flip);
     if (r->budget_exhausted)
         printf("budget    exhausted: the integration stopped at its step budget (%ld accepted "
                "steps) at t = %.6g s, before t_end = %.6g s\n",
@@ -248,6 +255,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
     cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(r->verdict));
     cJSON_AddNumberToObject(o, "t_s", r->t_verdict);
     json_sample_fields(o, &r->final);
+    tippe_cli_json_verdict_proof(o, r);
     cJSON_AddNumberToObject(o, "J0_kg_m3_s", r->J0);
     cJSON_AddNumberToObject(o, "E0_J", r->E0);
     cJSON_AddNumberToObject(o, "t_end_s", sc->t_end);
@@ -372,7 +380,10 @@ int tippe_cli_simulate(int argc, char **argv)
     tippe_dynamics_options_default(&opt);
     opt.t_end = sc.t_end;
     opt.accuracy = sc.accuracy;
-    opt.run_to_t_end = full;
+    /* A verdict is often proved long before the motion ends (even at t = 0): a
+     * trajectory asked for runs to t_end; a flip is followed to report its time. */
+    opt.run_to_t_end = full || csv || plot;
+    opt.until_flip = 1;
     samples buf = {0, 0, NULL};
     if (csv || plot) {
         opt.level = TIPPE_LEVEL_TRAJECTORY;
