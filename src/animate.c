@@ -52,36 +52,6 @@ static int check_options(const tippe_animate_options *o, tippe_error *err)
     return TIPPE_OK;
 }
 
-/* ---- plan: the verdict level says how long the launch takes --------------- */
-
-static int plan(const tippe_animate_launch *l, tippe_film *f, tippe_error *err)
-{
-    tippe_dynamics_options o;
-    tippe_dynamics_options_default(&o);
-    o.t_end = l->t_end;
-    o.accuracy = l->accuracy;
-    tippe_dynamics_result r;
-    int rc = tippe_dynamics_run(&l->model, &l->initial, &o, &r, err);
-    if (rc)
-        return rc;
-    f->planned_verdict = r.verdict;
-    f->planned_t_verdict = r.t_verdict;
-    switch (r.verdict) {
-    case TIPPE_VERDICT_NO_TIP:
-    case TIPPE_VERDICT_TIP:
-    case TIPPE_VERDICT_HANG:
-        f->t_show = fmin(l->t_end, (1 + HOLD_SHARE) * r.t_verdict);
-        break;
-    case TIPPE_VERDICT_LOST_CONTACT:
-        f->t_show = r.t_verdict; /* the model ends there */
-        break;
-    default:
-        f->t_show = r.last.t;
-        break;
-    }
-    return TIPPE_OK;
-}
-
 /* The launch's rotation rate plus the pendulum rate, rad/s: the fastest
  * motion the contact path must resolve. */
 static double rotation_rate(const tippe_animate_launch *l)
@@ -90,6 +60,97 @@ static double rotation_rate(const tippe_animate_launch *l)
     return sqrt(ic->theta_dot * ic->theta_dot + ic->spin * ic->spin +
                 pow(ic->phi_dot * sin(ic->theta), 2)) +
            sqrt(l->model.g / l->model.top.R);
+}
+
+/* ---- plan: how long the launch takes to look settled ------------------------ */
+
+/* A tilt within this of its final value looks still in a picture a few hundred
+ * pixels high (a twentieth of a radian, 3 degrees). */
+#define SETTLED_RAD 0.05
+/* A film shows at least this many turns at the launch's rotation rate, so that
+ * a launch that starts where it ends (a no_tip) is still seen spinning. */
+#define MIN_TURNS 20
+/* Samples of the planning run: enough to see when theta stops moving visibly. */
+#define PLAN_SAMPLES 4096
+
+typedef struct {
+    double *t, *theta;
+    int n, cap;
+} track;
+
+static int keep_theta(const tippe_dynamics_sample *s, void *ctx)
+{
+    track *k = ctx;
+    if (k->n == k->cap) {
+        int cap = k->cap ? 2 * k->cap : 1024;
+        double *t = realloc(k->t, (size_t)cap * sizeof *t);
+        if (t)
+            k->t = t;
+        double *th = t ? realloc(k->theta, (size_t)cap * sizeof *th) : NULL;
+        if (!th)
+            return 1;
+        k->theta = th;
+        k->cap = cap;
+    }
+    k->t[k->n] = s->t;
+    k->theta[k->n++] = s->theta;
+    return 0;
+}
+
+/* The first sampled time after which theta stays within SETTLED_RAD of
+ * target, or NAN if it has not by the last sample. */
+static double settled_time(const track *k, double target)
+{
+    int j = k->n;
+    while (j > 0 && fabs(k->theta[j - 1] - target) < SETTLED_RAD)
+        j--;
+    return j < k->n ? k->t[j] : NAN;
+}
+
+/* The launch to t_end at the trajectory level, sampled coarsely: its verdict
+ * (proved, often before the top has finished moving, docs/dynamics.md) and the
+ * time it comes to look still at the proved end state. The film shows a tenth
+ * more than the later of the two. */
+static int plan(const tippe_animate_launch *l, tippe_film *f, tippe_error *err)
+{
+    tippe_dynamics_options o;
+    tippe_dynamics_options_default(&o);
+    o.level = TIPPE_LEVEL_TRAJECTORY;
+    o.t_end = l->t_end;
+    o.accuracy = l->accuracy;
+    o.sample_dt = l->t_end / PLAN_SAMPLES;
+    o.run_to_t_end = 1;
+    track k = {NULL, NULL, 0, 0};
+    o.on_sample = keep_theta;
+    o.sample_ctx = &k;
+    tippe_dynamics_result r;
+    int rc = tippe_dynamics_run(&l->model, &l->initial, &o, &r, err);
+    f->planned_verdict = r.verdict;
+    f->planned_t_verdict = r.t_verdict;
+    f->t_settled = NAN;
+    if (!rc) {
+        switch (r.verdict) {
+        case TIPPE_VERDICT_NO_TIP:
+        case TIPPE_VERDICT_TIP:
+        case TIPPE_VERDICT_HANG:
+            f->t_settled = settled_time(&k, r.theta_final_rad);
+            f->t_show = isnan(f->t_settled)
+                            ? r.last.t
+                            : fmin(r.last.t, (1 + HOLD_SHARE) * fmax(f->t_settled, r.t_verdict));
+            break;
+        case TIPPE_VERDICT_LOST_CONTACT:
+            f->t_show = r.t_verdict; /* the model ends there */
+            break;
+        default:
+            f->t_show = r.last.t;
+            break;
+        }
+        if (r.verdict != TIPPE_VERDICT_LOST_CONTACT)
+            f->t_show = fmin(r.last.t, fmax(f->t_show, MIN_TURNS * 2 * M_PI / rotation_rate(l)));
+    }
+    free(k.t);
+    free(k.theta);
+    return rc;
 }
 
 /* ---- compute: samples at exact times ----------------------------------------- */
@@ -286,28 +347,37 @@ static void painter_free(painter *p)
     free(p->plot_theta);
 }
 
-static void verdict_line(const tippe_film *f, char *buf, size_t size)
+/* The verdict and how it was proved, in one or two lines of the picture. */
+static int verdict_lines(const tippe_film *f, char *l1, char *l2, size_t size)
 {
     const tippe_dynamics_result *r = &f->result;
     const double deg = 180 / M_PI;
     switch (r->verdict) {
     case TIPPE_VERDICT_NO_TIP:
-        snprintf(buf, size, "verdict: no tip, settled at t = %.4g s", r->t_verdict);
-        break;
     case TIPPE_VERDICT_TIP:
-        snprintf(buf, size, "verdict: tip, settled upside down at t = %.4g s", r->t_verdict);
-        break;
     case TIPPE_VERDICT_HANG:
-        snprintf(buf, size, "verdict: hang at \xce\xb8 = %.1f\xc2\xb0, settled at t = %.4g s",
-                 r->final.theta * deg, r->t_verdict);
-        break;
+        if (r->verdict == TIPPE_VERDICT_HANG)
+            snprintf(l1, size, "verdict: hang at \xce\xb8 = %.1f\xc2\xb0, t = %.4g s",
+                     r->theta_final_rad * deg, r->t_verdict);
+        else
+            snprintf(l1, size, "verdict: %s at t = %.4g s",
+                     r->verdict == TIPPE_VERDICT_TIP ? "tip" : "no tip", r->t_verdict);
+        if (isfinite(r->barrier_gap_J))
+            snprintf(l2, size, "energy below barrier by %.2g J (margin %.2g J)",
+                     r->barrier_gap_J, r->margin_J);
+        else
+            snprintf(l2, size, "trapped: the well has no barrier (margin %.2g J)", r->margin_J);
+        return 2;
     case TIPPE_VERDICT_LOST_CONTACT:
-        snprintf(buf, size, "verdict: leaves the table at t = %.4g s (model ends)",
-                 r->t_verdict);
-        break;
+        snprintf(l1, size, "verdict: leaves the table at t = %.4g s (model ends)", r->t_verdict);
+        return 1;
+    case TIPPE_VERDICT_BOUNDED:
+        snprintf(l1, size, "verdict: bounded (mu = 0), \xce\xb8 stays in %.1f\xc2\xb0 .. %.1f\xc2\xb0",
+                 r->theta_lo_rad * deg, r->theta_hi_rad * deg);
+        return 1;
     default:
-        snprintf(buf, size, "verdict: not settled by t = %.4g s", r->last.t);
-        break;
+        snprintf(l1, size, "verdict: not proved by t = %.4g s", r->last.t);
+        return 1;
     }
 }
 
@@ -317,24 +387,21 @@ static int paint(painter *p, int idx, int last_frame, unsigned char *pixels, int
     const tippe_film *f = p->f;
     const tippe_dynamics_sample *s = &f->samples[idx];
     const double deg = 180 / M_PI;
-    char l0[96], l1[96], l2[96], l3[96], l4[160];
+    char l0[96], l1[128], l2[96], l3[160], l4[160];
     snprintf(l0, sizeof l0, "t = %.4g s   (1 s of film = %.3g s)", s->t, f->speed);
-    snprintf(l1, sizeof l1, "tilt \xce\xb8 = %.1f\xc2\xb0", s->theta * deg);
-    snprintf(l2, sizeof l2, "spin n = %.4g rad/s (%.3g rev/s)", s->spin, s->spin / (2 * M_PI));
+    snprintf(l1, sizeof l1, "\xce\xb8 = %.1f\xc2\xb0   spin n = %.4g rad/s (%.3g rev/s)",
+             s->theta * deg, s->spin, s->spin / (2 * M_PI));
     const double J0 = f->samples[0].J;
     if (J0 != 0)
-        snprintf(l3, sizeof l3, "Jellett drift %.1e",
-                 fabs(s->J - J0) / fabs(J0));
+        snprintf(l2, sizeof l2, "Jellett drift %.1e", fabs(s->J - J0) / fabs(J0));
     else
-        snprintf(l3, sizeof l3, "Jellett J - J0 = %.2e kg m\xc2\xb3/s", s->J - J0);
+        snprintf(l2, sizeof l2, "Jellett J - J0 = %.2e kg m\xc2\xb3/s", s->J - J0);
     const char *lines[5] = {l0, l1, l2, l3, l4};
-    int n_lines = 4;
+    int n_lines = 3;
     const tippe_dynamics_result *r = &f->result;
     const int decided = r->verdict != TIPPE_VERDICT_UNDECIDED;
-    if ((decided && s->t >= r->t_verdict) || last_frame) {
-        verdict_line(f, l4, sizeof l4);
-        n_lines = 5;
-    }
+    if ((decided && s->t >= r->t_verdict) || last_frame)
+        n_lines += verdict_lines(f, l3, l4, sizeof l3);
     /* The contact path of the last TRACE_FILM_S seconds of film (at most
      * TRACE_POINTS points). */
     int first = idx;

@@ -433,7 +433,7 @@ static int make_palette(encoder *e, AVFrame **palette)
         rc = add_source(e, g, &src, "frames", e->o->width_px, e->o->height_px);
     /* stats_mode full: the palette serves every pixel of every frame. */
     if (!rc)
-        rc = add_filter(e, g, &gen, "palettegen", "palettegen", "stats_mode=full:max_colors=128");
+        rc = add_filter(e, g, &gen, "palettegen", "palettegen", "stats_mode=full:max_colors=64");
     if (!rc)
         rc = add_filter(e, g, &sink, "buffersink", "palette", NULL);
     if (!rc && !(rc = link(e, src, gen, 0)) && !(rc = link(e, gen, sink, 0))) {

@@ -8,11 +8,11 @@
 
 /* Camera elevation: low enough that a tilt of the axis reads as a tilt, high
  * enough to see the contact path on the table. */
-#define DEFAULT_ELEVATION_RAD (22.0 * M_PI / 180.0)
+#define DEFAULT_ELEVATION_RAD (28.0 * M_PI / 180.0)
 /* Largest ball radius as a share of the picture height. */
-#define BALL_MAX_SHARE 0.28
+#define BALL_MAX_SHARE 0.25
 /* Angular radii of the pole dots on the shell, rad. */
-#define RED_DOT_RAD 0.22
+#define RED_DOT_RAD 0.26
 #define BLUE_DOT_RAD 0.10
 
 typedef struct {
@@ -141,11 +141,11 @@ int tippe_scene_init(tippe_scene *sc, double R_m, double eps_m, int width_px, in
     /* Leave room for the head-up text above and the inset below. */
     const double s_ball = BALL_MAX_SHARE * height_px / R_m;
     const double s_w = 0.86 * width_px / (hi[0] - lo[0]);
-    const double s_h = 0.62 * height_px / (hi[1] - lo[1]);
+    const double s_h = 0.56 * height_px / (hi[1] - lo[1]);
     sc->px_per_m = fmin(s_ball, fmin(s_w, s_h));
     sc->view_x_m = 0.5 * (lo[0] + hi[0]);
     /* A little below the middle: the text sits at the top. */
-    sc->view_y_m = 0.5 * (lo[1] + hi[1]) + 0.06 * height_px / sc->px_per_m;
+    sc->view_y_m = 0.5 * (lo[1] + hi[1]) + 0.10 * height_px / sc->px_per_m;
     return TIPPE_OK;
 }
 
@@ -315,8 +315,9 @@ static void draw_markings(cairo_t *cr, const view *v, int front)
     enum { N = 64 };
     double meridian[N + 1][3], equator[N + 1][3];
     for (int i = 0; i <= N; i++) {
-        const double a = M_PI * i / N, c = 2 * M_PI * i / N;
-        /* From the red pole (-e3) to the blue one along the body's x side. */
+        const double a = RED_DOT_RAD + (M_PI - RED_DOT_RAD - BLUE_DOT_RAD) * i / N,
+                     c = 2 * M_PI * i / N;
+        /* From the red dot (round -e3) to the blue one along the body's x side. */
         meridian[i][0] = sin(a), meridian[i][1] = 0, meridian[i][2] = -cos(a);
         equator[i][0] = cos(c), equator[i][1] = sin(c), equator[i][2] = 0;
     }
@@ -393,28 +394,36 @@ static void draw_inside(cairo_t *cr, const view *v)
     com_symbol(cr, x, y, fmax(4.0, 0.07 * v->r_px));
 }
 
-/* The glass: light from the upper left, darker towards the outline. */
+/* The glass: one flat tint (so that a moving ball changes few pixels, and a
+ * film stays small), a darker rim, and a small highlight from the upper left. */
 static void draw_shell(cairo_t *cr, const view *v)
 {
     double x, y;
     to_screen(v, v->c, &x, &y);
     const double r = v->r_px;
-    cairo_pattern_t *pat = cairo_pattern_create_radial(x - 0.35 * r, y - 0.4 * r, 0.05 * r, x, y, r);
-    cairo_pattern_add_color_stop_rgba(pat, 0, 0.97, 0.99, 1.0, 0.55);
-    cairo_pattern_add_color_stop_rgba(pat, 0.7, 0.72, 0.82, 0.95, 0.30);
-    cairo_pattern_add_color_stop_rgba(pat, 1, 0.45, 0.58, 0.80, 0.45);
-    cairo_set_source(cr, pat);
     cairo_arc(cr, x, y, r, 0, 2 * M_PI);
+    cairo_set_source_rgba(cr, 0.70, 0.80, 0.95, 0.40);
     cairo_fill_preserve(cr);
-    cairo_pattern_destroy(pat);
     cairo_set_source_rgba(cr, 0.20, 0.32, 0.52, 0.9);
     cairo_set_line_width(cr, fmax(1.0, 0.012 * r));
     cairo_stroke(cr);
+    cairo_arc(cr, x, y, 0.94 * r, 0, 2 * M_PI);
+    cairo_set_source_rgba(cr, 0.45, 0.58, 0.80, 0.35);
+    cairo_set_line_width(cr, 0.10 * r);
+    cairo_stroke(cr);
+    const double hx = x - 0.45 * r, hy = y - 0.5 * r, hr = 0.22 * r;
+    cairo_pattern_t *pat = cairo_pattern_create_radial(hx, hy, 0, hx, hy, hr);
+    cairo_pattern_add_color_stop_rgba(pat, 0, 1, 1, 1, 0.8);
+    cairo_pattern_add_color_stop_rgba(pat, 1, 1, 1, 1, 0);
+    cairo_set_source(cr, pat);
+    cairo_arc(cr, hx, hy, hr, 0, 2 * M_PI);
+    cairo_fill(cr);
+    cairo_pattern_destroy(pat);
 }
 
 static double font_px(const tippe_scene *sc)
 {
-    return fmax(10.0, sc->height_px / 30.0);
+    return fmax(9.0, sc->height_px / 30.0);
 }
 
 static void draw_text_box(cairo_t *cr, const tippe_scene *sc, const tippe_scene_overlay *ov)
@@ -488,7 +497,7 @@ static void draw_inset(cairo_t *cr, const tippe_scene *sc, const tippe_scene_ove
     cairo_set_font_size(cr, f);
     set_rgb(cr, INK, 1);
     cairo_move_to(cr, x0 + 0.4 * f, y0 + 1.1 * f);
-    cairo_show_text(cr, "\xce\xb8: 0\xc2\xb0 red pole down, 180\xc2\xb0 up");
+    cairo_show_text(cr, "\xce\xb8 (0\xc2\xb0: red pole down)");
     static const char *const ticks[] = {"0\xc2\xb0", "90\xc2\xb0", "180\xc2\xb0"};
     cairo_set_line_width(cr, 1.0);
     for (int i = 0; i < 3; i++) {

@@ -75,7 +75,7 @@ static void test_pole_dot(void)
         tippe_scene_project(&sc, c, &cx, &cy);
         const double r = sc.px_per_m * R;
         const int n = red_centroid(px, cx, cy, r, &x, &y);
-        /* The dot (0.22 rad) covers ~1% of the disc, foreshortened at most 3x. */
+        /* The dot (0.26 rad) covers ~1.7% of the disc, foreshortened at most 3x. */
         CHECK(n > 0.003 * M_PI * r * r, "%s: only %d red pixels", cases[k].where, n);
         const double dx = (x - cx) / r, dy = (y - cy) / r; /* screen y points down */
         if (k == 0)

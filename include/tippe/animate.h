@@ -1,11 +1,13 @@
 /* tippe/animate.h: a film of one launch (what `tippe animate` writes).
  *
  * A film is made in three steps, each reading only what the one before made:
- *   1. plan:    the launch at the verdict level (cheap) says how long it takes
- *               to settle (or lose contact); the film shows [0, t_show], with
- *               t_show a tenth longer than the verdict time so that the final
- *               state is seen, and maps model time to film time (speed: model
- *               seconds per film second);
+ *   1. plan:    the launch to its t_end, sampled coarsely (4096 samples), says
+ *               when its verdict is proved and when theta comes for good
+ *               within 0.05 rad (3 degrees: still, to the eye) of the proved
+ *               end state; the film shows [0, t_show], t_show a tenth past the
+ *               later of the two (the lift-off for lost_contact, t_end when
+ *               nothing is proved), and maps model time to film time (speed:
+ *               model seconds per film second);
  *   2. compute: the launch again at the trajectory level, sampled at exact
  *               times (the integrator lands on them, tippe/dynamics.h): every
  *               frame's time, and between frames often enough to draw the
@@ -54,8 +56,10 @@ typedef struct {
     tippe_animate_launch launch;
     tippe_animate_options opt;
     /* plan */
-    tippe_verdict planned_verdict;  /* of the verdict-level run */
+    tippe_verdict planned_verdict;  /* of the planning run */
     double planned_t_verdict;       /* s */
+    double t_settled;               /* s, theta within 0.05 rad of its end for good (NAN: not
+                                       by t_end, or no proved end state) */
     double t_show;                  /* s, model time of the last frame */
     double speed;                   /* model s per film s (as used) */
     double frame_dt;                /* s of model time between frames */

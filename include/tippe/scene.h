@@ -1,7 +1,7 @@
 /* tippe/scene.h: one picture of the top on its table, drawn with cairo.
  *
  * The ball is a transparent shell seen from a camera above the table (an
- * orthographic view, elevation 22 degrees by default, looking along the lab's
+ * orthographic view, elevation 28 degrees by default, looking along the lab's
  * +y axis, so that the lab x axis runs left to right). On the shell: a red dot
  * at the pole on the centre of mass's side (the pole that touches the table at
  * theta = 0), a small blue dot at the other pole, a blue stripe along one
@@ -36,7 +36,7 @@ typedef struct {
 
 /* A scene for a top of radius R_m, eccentricity eps_m (no weight), with the
  * default camera, framed so that the ball and the contact path of every sample
- * (n >= 1, trajectory level) stay in the picture: the ball is at most 0.28 of
+ * (n >= 1, trajectory level) stay in the picture: the ball is at most 0.25 of
  * the height in radius. TIPPE_EINPUT for sizes outside 16 .. 8192 pixels or a
  * radius that is not positive. */
 int tippe_scene_init(tippe_scene *sc, double R_m, double eps_m, int width_px, int height_px,

@@ -346,8 +346,17 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
             }
             cJSON_AddNumberToObject(o, "samples", f->n_samples);
             cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(r->verdict));
+            cJSON_AddStringToObject(o, "how", tippe_decision_name(r->how));
             if (r->verdict != TIPPE_VERDICT_UNDECIDED)
                 cJSON_AddNumberToObject(o, "t_verdict_s", r->t_verdict);
+            if (isfinite(r->theta_final_rad))
+                cJSON_AddNumberToObject(o, "theta_final_rad", r->theta_final_rad);
+            if (isfinite(r->barrier_gap_J))
+                cJSON_AddNumberToObject(o, "barrier_gap_J", r->barrier_gap_J);
+            if (isfinite(r->margin_J))
+                cJSON_AddNumberToObject(o, "margin_J", r->margin_J);
+            if (isfinite(f->t_settled))
+                cJSON_AddNumberToObject(o, "t_settled_s", f->t_settled);
             cJSON_AddNumberToObject(o, "jellett_rel_drift", r->jellett_rel_drift);
             if (bytes >= 0)
                 cJSON_AddNumberToObject(o, "bytes", (double)bytes);
@@ -373,8 +382,12 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
                (f->n_frames - 1) * f->frame_dt, f->speed);
     }
     if (r->verdict != TIPPE_VERDICT_UNDECIDED)
-        fprintf(out, "verdict   %s at t = %.6g s (theta %.4g rad)\n", tippe_verdict_name(r->verdict),
-               r->t_verdict, r->final.theta);
+        fprintf(out, "verdict   %s, decided (%s) at t = %.6g s; end state theta %.4g rad\n",
+                tippe_verdict_name(r->verdict), tippe_decision_name(r->how), r->t_verdict,
+                r->theta_final_rad);
+    if (isfinite(f->t_settled))
+        fprintf(out, "settled   theta within 0.05 rad of its end state from t = %.6g s\n",
+                f->t_settled);
     else
         fprintf(out, "verdict   none reached in the part shown (to t = %.6g s)\n", r->last.t);
     fprintf(out, "accuracy  %d samples at exact times, Jellett drift %.2g, made in %.3g s\n",
