@@ -93,6 +93,7 @@ typedef struct {
     tippe_cli_opt *opts;  /* ends with {NULL}; --help is added */
     int min_args, max_args;  /* positional arguments (files) */
     const char *args_name;   /* what they are, for messages: "design file" */
+    int quiet_help;          /* 1: --help prints nothing (tippe-mpi's other ranks) */
 } tippe_cli_spec;
 
 enum { TIPPE_CLI_HELP = -1 };
@@ -173,6 +174,15 @@ int tippe_cli_sets_add(tippe_cli_sets *s, const char *field, const char *value);
  * options (at most 64)". */
 int tippe_cli_add_set(const char *verb, tippe_cli_sets *s, const char *value);
 
+/* The changes as one line for titles and reports, "radius_mm=30,
+ * parts.rod.material=nylon" (cut with "..." to fit size), or "" without any.
+ * Returns buf. */
+const char *tippe_cli_sets_text(const tippe_cli_sets *s, char *buf, size_t size);
+/* Adds the changes to o as "set": ["FIELD=VALUE", ...] (an empty array without
+ * any), so that a report never claims to show the file's design when it shows
+ * a variant. */
+void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
+
 /* An output file (plot: its extension names a plot format) that can be
  * written, found by really creating (and removing) a temporary next to it
  * (tippe/report.h): 0, or 2 after a usage error naming option, path and
@@ -204,6 +214,15 @@ int tippe_cli_signal_pending(const char *verb);
 /* Prints o (NULL: out of memory while building it) as JSON on stdout and
  * deletes it: 0, or 1 after "tippe VERB: out of memory while writing JSON". */
 int tippe_cli_print_json(const char *verb, struct cJSON *o);
+
+/* ---- printed parts (src/cli/printed.c), for eval and sweep ---- */
+struct tippe_design;
+/* One entry per printed part: its settings, infill (calibrated or not) and
+ * masses; or a line saying every part is solid. */
+void tippe_cli_print_printed_parts(FILE *out, const struct tippe_design *d);
+/* Adds "printed_parts": [...] to o (an empty array when all parts are solid);
+ * -1 when out of memory. */
+int tippe_cli_printed_parts_json(struct cJSON *o, const struct tippe_design *d);
 
 /* Adds {"preset": preset, "stepper": ..., "rtol": ...} to o as "accuracy", the
  * same object in every verb that integrates. */
