@@ -5,7 +5,6 @@
 #include "tippe/animate.h"
 #include "tippe/design.h"
 #include "tippe/json.h"
-#include "tippe/launch.h"
 #include "tippe/progress.h"
 #include "tippe/report.h"
 #include "tippe/scenario.h"
@@ -23,15 +22,12 @@ static const char *const VERB = "animate";
 
 /* What the command line asked for. */
 typedef struct {
-    const char *input, *out, *size_text, *accuracy, *stepper, *format;
-    double speed, length_s, frame_t, z2_mm, spin, mu, g, t_end, rtol;
+    const char *input, *out, *size_text, *format;
+    double speed, length_s, frame_t, z2_mm;
     long fps;
-    int width, height, json, still;
-    /* scenario-only overrides (--theta ...) and --set, in the order given */
-    tippe_cli_sets over;
-    int n_scenario_only;
-    /* which of the options a scenario and a design share were given */
-    int has_z2, has_spin, has_mu, has_g, has_t_end, has_rtol;
+    int width, height, json, still, has_z2, is_design;
+    tippe_cli_sets over; /* scenario fields: the option shorthands */
+    tippe_cli_sets sets; /* --set: of the scenario, or of the design */
 } args;
 
 static int parse_size(const char *text, int *w, int *h)
@@ -47,9 +43,23 @@ static int parse_size(const char *text, int *w, int *h)
     return 1;
 }
 
-/* Returns 0, or an exit status (0 after --help is TIPPE_CLI_HELP). */
+/* The file's kind: a design has "parts" at its top (a scenario never has). */
+static int is_design_file(const char *path)
+{
+    tippe_error e;
+    tippe_json_reader *r = tippe_json_reader_new(path, &e, TIPPE_JSON_WORDS_KEY, "");
+    cJSON *root = NULL;
+    int design = r && tippe_json_load(r, 16, "file", &root) == TIPPE_OK &&
+                 cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts");
+    cJSON_Delete(root);
+    free(r);
+    return design;
+}
+
+/* Returns 0, or an exit status (TIPPE_CLI_HELP after --help). */
 static int parse_args(args *a, int argc, char **argv)
 {
+    tippe_cli_sets *ov = &a->over;
     tippe_cli_opt opts[] = {
         {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &a->out,
          .arg = "FILE", .required = 1,
@@ -59,10 +69,11 @@ static int parse_args(args *a, int argc, char **argv)
                  "(-o - writes to standard output)"},
         {.name = "speed", .kind = TIPPE_CLI_DOUBLE, .value = &a->speed, .arg = "X",
          .min = 1e-9, .max = 1e9,
-         .help = "model seconds per second of film (default: the whole launch, to a\n"
-                 "tenth past its verdict, in --length seconds)"},
-        {.name = "length", .kind = TIPPE_CLI_DOUBLE, .value = &a->length_s, .arg = "S", .unit = "s",
-         .min = 0.5, .max = 1200, .def = "10", .help = "film length when --speed is not given"},
+         .help = "model seconds per second of film (default: the whole launch in\n"
+                 "--length seconds, docs/animate.md)"},
+        {.name = "length", .kind = TIPPE_CLI_DOUBLE, .value = &a->length_s, .arg = "S",
+         .unit = "s", .min = 0.5, .max = 1200, .def = "10",
+         .help = "film length when --speed is not given"},
         {.name = "fps", .kind = TIPPE_CLI_LONG, .value = &a->fps, .arg = "N", .min = 1,
          .max = 120, .def = "30", .help = "frames per second of film"},
         {.name = "size", .kind = TIPPE_CLI_STRING, .value = &a->size_text, .arg = "WxH",
@@ -73,52 +84,51 @@ static int parse_args(args *a, int argc, char **argv)
          .help = "print a JSON summary instead of the text"},
         {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &a->z2_mm, .arg = "MM", .unit = "mm",
          .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
-         .help = "position of a design's moving weight (needed for a design; a\n"
-                 "scenario's design top moves its weight there)"},
-        {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = &a->spin, .unit = "rad/s",
-         .min = -1e6, .max = 1e6,
-         .help = "launch spin (a design's default: tippe check's, 94.25 rad/s)"},
-        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &a->mu, .unit = "s/m", .min = 0,
-         .max = 1e6, .help = "viscous sliding friction, eq 3.12 (a design's default: 0.1)"},
-        {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &a->g, .unit = "m/s^2", .min = 1e-6,
-         .max = 1e6, .help = "gravity (default 9.81)"},
-        {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &a->t_end, .unit = "s", .min = 1e-9,
-         .max = 1e9, .help = "bound on the launch's time (a design's default: 600)"},
-        {.name = "accuracy", .kind = TIPPE_CLI_STRING, .value = &a->accuracy,
-         .arg = "fast|balanced|precise", .help = "integrator preset (default balanced)"},
-        {.name = "stepper", .kind = TIPPE_CLI_STRING, .value = &a->stepper, .arg = "NAME",
-         .help = "GSL stepper (docs/dynamics.md)"},
-        {.name = "rtol", .kind = TIPPE_CLI_DOUBLE, .value = &a->rtol, .min = 1e-14, .max = 1e-2,
-         .help = "relative tolerance of the integrator"},
-        {.name = "theta", .kind = TIPPE_CLI_DOUBLE, .value = &a->over, .unit = "rad", .min = 0,
-         .max = M_PI, .field = "initial.theta", .help = "scenario launch tilt"},
-        {.name = "theta-dot", .kind = TIPPE_CLI_DOUBLE, .value = &a->over, .unit = "rad/s",
-         .min = -1e6, .max = 1e6, .field = "initial.theta_dot",
-         .help = "scenario launch tilt rate"},
-        {.name = "phi-dot", .kind = TIPPE_CLI_STRING, .value = &a->over,
-         .arg = "RAD_S|steady|s1|s2|s3", .field = "initial.phi_dot",
-         .help = "scenario launch precession rate or rule"},
-        {.name = "U", .kind = TIPPE_CLI_DOUBLE, .value = &a->over, .unit = "m/s", .min = -1e3,
-         .max = 1e3, .field = "initial.U", .help = "scenario launch sliding along the tilt"},
-        {.name = "V", .kind = TIPPE_CLI_DOUBLE, .value = &a->over, .unit = "m/s", .min = -1e3,
-         .max = 1e3, .field = "initial.V", .help = "scenario launch sliding across it"},
-        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->over, .arg = "FIELD=VALUE",
-         .help = "change a field of the scenario (or of the design) before it is\n"
-                 "checked (repeatable)"},
+         .help = "the moving weight's position: required with a design; with a scenario\n"
+                 "whose top is a design, its top.z2_mm"},
+        {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.spin",
+         .arg = "RATE", .unit = "rad/s", .min = -1e6, .max = 1e6,
+         .help = "spin about the symmetry axis (initial.spin; design: 15rev/s)"},
+        {.name = "theta", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.theta",
+         .unit = "rad", .min = 0, .max = M_PI, .help = "tilt (initial.theta; design: 0.0674)"},
+        {.name = "theta-dot", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.theta_dot",
+         .arg = "RATE", .unit = "rad/s", .min = -1e6, .max = 1e6,
+         .help = "tilt rate (initial.theta_dot; design: 0)"},
+        {.name = "phi-dot", .kind = TIPPE_CLI_STRING, .value = ov, .field = "initial.phi_dot",
+         .arg = "RAD_S|RULE", .help = "precession (initial.phi_dot): rad/s, or steady, s1, s2,\n"
+                                      "s3 (design: steady)"},
+        {.name = "U", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.U", .unit = "m/s",
+         .min = -100, .max = 100, .help = "sliding velocity of the centre (initial.U; design: 0)"},
+        {.name = "V", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.V", .unit = "m/s",
+         .min = -100, .max = 100, .help = "its other component (initial.V; design: 0)"},
+        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "mu", .unit = "s/m",
+         .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12 (design: 0.1)"},
+        {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "g", .unit = "m/s^2",
+         .min = 0.01, .max = 1000, .help = "gravity (design: 9.81)"},
+        {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "t_end", .unit = "s",
+         .min = 1e-3, .max = 1e6, .help = "longest simulated time (design: 600)"},
+        {.name = "accuracy", .kind = TIPPE_CLI_STRING, .value = ov, .field = "accuracy",
+         .arg = "PRESET", .help = "fast, balanced or precise (design: balanced)"},
+        {.name = "stepper", .kind = TIPPE_CLI_STRING, .value = ov, .field = "accuracy.stepper",
+         .arg = "NAME", .help = "a GSL stepper instead of the preset's (docs/dynamics.md)"},
+        {.name = "rtol", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "accuracy.rtol",
+         .min = 1e-14, .max = 1e-2, .help = "relative tolerance instead of the preset's"},
+        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
+         .help = "any field of the scenario or, with a design, of the design; repeatable"},
         {NULL},
     };
     tippe_cli_spec spec = {
         .verb = VERB,
-        .synopsis = "(SCENARIO.json | DESIGN.json --z2 MM [--spin RAD_S]) -o FILM.mp4|.webm|.gif\n"
+        .synopsis = "(SCENARIO.json | DESIGN.json --z2 MM [--spin RATE]) -o FILM.mp4|.webm|.gif\n"
                     "       [--speed X] [--fps N] [--size WxH] [--frame T -o PICTURE.png]",
         .about =
             "Films a launch: the ball as a transparent shell seen from above the table, with\n"
             "a red dot at the pole on the weight's side (down at theta = 0), a blue stripe\n"
             "along a meridian (it turns with the spin), the moving weight and the centre of\n"
             "mass (quartered disc) inside, the contact point's path on the table, the time,\n"
-            "tilt, spin, Jellett drift and the verdict once reached, and theta against time.\n"
-            "Frames are states of the integration at exact frame times. A design gets tippe\n"
-            "check's central hand launch (median tilt, steady precession, no sliding).",
+            "tilt, spin, Jellett drift and the verdict once proved, and theta against time.\n"
+            "Frames are states of the integration at exact frame times. A design without\n"
+            "launch options gets tippe launch's central hand launch, as tippe simulate.",
         .after = "A progress bar is shown on stderr when it is a terminal. Exit status: 0 ok,\n"
                  "2 bad usage or input, 1 the launch or the film could not be made.\n"
                  "docs/animate.md describes the picture and the time scale.",
@@ -135,66 +145,31 @@ static int parse_args(args *a, int argc, char **argv)
         return tippe_cli_usage_error(VERB, "--size '%s': expected WxH, even, 64x64 .. 3840x2160 "
                                      "pixels", a->size_text);
     a->still = tippe_cli_find_opt(&spec, "frame")->seen;
-    for (const char *const *n = (const char *const[]){"theta", "theta-dot", "phi-dot", "U", "V",
-                                                      NULL};
-         *n; n++)
-        a->n_scenario_only += tippe_cli_find_opt(&spec, *n)->seen;
     a->has_z2 = tippe_cli_find_opt(&spec, "z2")->seen;
-    a->has_spin = tippe_cli_find_opt(&spec, "spin")->seen;
-    a->has_mu = tippe_cli_find_opt(&spec, "mu")->seen;
-    a->has_g = tippe_cli_find_opt(&spec, "g")->seen;
-    a->has_t_end = tippe_cli_find_opt(&spec, "t-end")->seen;
-    a->has_rtol = tippe_cli_find_opt(&spec, "rtol")->seen;
-    return 0;
-}
-
-/* 1 if the file is a design (it has "parts"), 0 if it is taken as a scenario;
- * a file that cannot be read is left to the scenario reader's messages. */
-static int is_design(const char *path)
-{
-    tippe_error e;
-    tippe_json_reader *r = tippe_json_reader_new(path, &e, TIPPE_JSON_WORDS_KEY, NULL);
-    cJSON *root = NULL;
-    int design = 0;
-    if (r && tippe_json_load(r, 16, "scenario", &root) == TIPPE_OK)
-        design = cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts") != NULL;
-    cJSON_Delete(root);
-    free(r);
-    return design;
-}
-
-/* A shared option's value as a scenario override "field=value" (number if
- * text is NULL): 0, or 2 after a usage error. */
-static int add_override(args *a, int given, const char *field, double x, const char *text)
-{
-    if (!given)
-        return 0;
-    char num[64];
-    if (!text) {
-        snprintf(num, sizeof num, "%.17g", x);
-        text = num;
+    a->is_design = is_design_file(a->input);
+    if (a->is_design && !a->has_z2)
+        return tippe_cli_usage_error(VERB, "--z2 MM is required with a design file");
+    if (!a->is_design && a->has_z2) {
+        char num[64];
+        snprintf(num, sizeof num, "%.17g", a->z2_mm);
+        tippe_cli_sets_add(&a->over, "top.z2_mm", num);
     }
-    if (tippe_cli_sets_add(&a->over, field, text))
-        return tippe_cli_usage_error(VERB, "too many overrides (at most %d)",
-                                     TIPPE_CLI_MAX_SETS);
+    if (!a->is_design) /* --set names scenario fields, after the shorthands */
+        for (int i = 0; i < a->sets.n; i++)
+            if (tippe_cli_sets_add(&a->over, NULL, a->sets.item[i]))
+                return tippe_cli_usage_error(VERB, "more than %d overrides", TIPPE_CLI_MAX_SETS);
     return 0;
 }
 
-/* The launch of a scenario file, with its design's weight when it has one;
- * -2 after a usage error. */
-static int launch_of_scenario(args *a, tippe_animate_launch *l, tippe_error *err)
+/* The launch of a scenario file or of a design's hand launch, with the
+ * design's weight for the picture when the top comes from a design. */
+static int load_launch(const args *a, tippe_animate_launch *l, tippe_error *err)
 {
-    if (add_override(a, a->has_z2, "top.z2_mm", a->z2_mm, NULL) ||
-        add_override(a, a->has_spin, "initial.spin", a->spin, NULL) ||
-        add_override(a, a->has_mu, "mu", a->mu, NULL) ||
-        add_override(a, a->has_g, "g", a->g, NULL) ||
-        add_override(a, a->has_t_end, "t_end", a->t_end, NULL) ||
-        add_override(a, a->accuracy != NULL, "accuracy", 0, a->accuracy) ||
-        add_override(a, a->stepper != NULL, "accuracy.stepper", 0, a->stepper) ||
-        add_override(a, a->has_rtol, "accuracy.rtol", a->rtol, NULL))
-        return -2;
     tippe_scenario sc;
-    int rc = tippe_scenario_load(a->input, a->over.item, a->over.n, &sc, err);
+    int rc = a->is_design ? tippe_scenario_for_design(a->input, a->z2_mm, a->sets.item,
+                                                      a->sets.n, a->over.item, a->over.n, &sc,
+                                                      err)
+                          : tippe_scenario_load(a->input, a->over.item, a->over.n, &sc, err);
     if (rc)
         return rc;
     memset(l, 0, sizeof *l);
@@ -205,76 +180,15 @@ static int launch_of_scenario(args *a, tippe_animate_launch *l, tippe_error *err
     l->accuracy = sc.accuracy;
     if (sc.design_path[0]) {
         /* Only for the picture of the weight: the top itself is the scenario's
-         * (a scenario's own design "set" list is not applied to the picture). */
+         * (a scenario file's own design "set" list is not applied to it). */
         tippe_design *d = NULL;
-        if (tippe_design_load(sc.design_path, NULL, 0, &d, err) == TIPPE_OK)
+        const int n = a->is_design ? a->sets.n : 0;
+        if (tippe_design_load(sc.design_path, a->sets.item, n, &d, err) == TIPPE_OK)
             tippe_animate_design_weight(d, sc.z2_mm, &sc.model.top, &l->weight_offset_m,
                                         &l->weight_radius_m);
         tippe_design_free(d);
     }
     return TIPPE_OK;
-}
-
-/* A design's central hand launch (tippe check's). */
-static int launch_of_design(const args *a, tippe_animate_launch *l, tippe_error *err)
-{
-    if (!a->has_z2)
-        return tippe_error_set(err, TIPPE_EINPUT,
-                               "%s is a design: give the weight's position with --z2 MM",
-                               a->input);
-    if (a->n_scenario_only)
-        return tippe_error_set(err, TIPPE_EINPUT,
-                               "--theta, --theta-dot, --phi-dot, --U and --V change a scenario; "
-                               "%s is a design, launched as tippe check launches it",
-                               a->input);
-    tippe_launch_options o;
-    tippe_launch_options_default(&o);
-    double spin = M_PI * (o.spin_from_rev_s + o.spin_to_rev_s);
-    if (a->has_spin)
-        spin = a->spin;
-    if (a->has_mu)
-        o.mu = a->mu;
-    if (a->has_g)
-        o.g = a->g;
-    if (a->has_t_end)
-        o.t_end = a->t_end;
-    int rc = TIPPE_OK;
-    if (a->accuracy) {
-        if ((rc = tippe_dynamics_accuracy_preset(a->accuracy, &o.accuracy, err)) != 0)
-            return rc;
-        snprintf(o.accuracy_name, sizeof o.accuracy_name, "%s", a->accuracy);
-    }
-    if (a->stepper) {
-        if (!tippe_dynamics_stepper_known(a->stepper))
-            return tippe_error_set(err, TIPPE_EINPUT, "--stepper '%s': unknown stepper",
-                                   a->stepper);
-        snprintf(o.accuracy.stepper, sizeof o.accuracy.stepper, "%s", a->stepper);
-        snprintf(o.accuracy_name, sizeof o.accuracy_name, "custom");
-    }
-    if (a->has_rtol) {
-        o.accuracy.rtol = a->rtol;
-        snprintf(o.accuracy_name, sizeof o.accuracy_name, "custom");
-    }
-    if ((rc = tippe_launch_options_check(&o, err)) != 0)
-        return rc;
-    tippe_design *d = NULL;
-    if ((rc = tippe_design_load(a->input, a->over.item, a->over.n, &d, err)) != 0)
-        return rc;
-    memset(l, 0, sizeof *l);
-    tippe_top top;
-    if ((rc = tippe_design_top(d, a->z2_mm, &top, err)) == 0 &&
-        (rc = tippe_launch_central(&top, &o, spin, &l->initial, err)) == 0) {
-        snprintf(l->title, sizeof l->title, "%s, Z2 = %g mm, hand launch at %.3g rev/s",
-                 tippe_design_name(d), a->z2_mm, spin / (2 * M_PI));
-        l->model.top = top;
-        l->model.g = o.g;
-        l->model.mu = o.mu;
-        l->t_end = o.t_end;
-        l->accuracy = o.accuracy;
-        tippe_animate_design_weight(d, a->z2_mm, &top, &l->weight_offset_m, &l->weight_radius_m);
-    }
-    tippe_design_free(d);
-    return rc;
 }
 
 /* Writes the film or the picture through the report module (a temporary
@@ -424,10 +338,7 @@ int tippe_cli_animate(int argc, char **argv)
 
     tippe_error err;
     tippe_animate_launch launch;
-    rc = is_design(a.input) ? launch_of_design(&a, &launch, &err)
-                            : launch_of_scenario(&a, &launch, &err);
-    if (rc == -2)
-        return 2; /* a usage error, already said */
+    rc = load_launch(&a, &launch, &err);
     if (rc)
         return tippe_cli_fail(VERB, &err, rc);
     tippe_animate_options opt;
