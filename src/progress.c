@@ -1,4 +1,5 @@
-/* A progress bar on a terminal, shared by OpenMP threads (tippe/progress.h). */
+/* Progress as a bar on a terminal or plain lines elsewhere, shared by OpenMP
+ * threads (tippe/progress.h). */
 #include "tippe/progress.h"
 
 #include <math.h>
@@ -8,6 +9,10 @@
 
 /* Redraw no more often than this: a terminal write per launch would be noise. */
 #define REDRAW_S 0.2
+/* Plain lines: one per tenth of the work or per LINE_EVERY_S, at most one per
+ * LINE_MIN_S, so that a log shows the work moving without filling up. */
+#define LINE_EVERY_S 30.0
+#define LINE_MIN_S 2.0
 
 static double now_s(void)
 {
@@ -46,12 +51,49 @@ void tippe_progress_start(tippe_progress *p, FILE *out, const char *label, long 
 {
     memset(p, 0, sizeof *p);
     p->out = out;
+    const int terminal = out && isatty(fileno(out));
     if (enabled == TIPPE_PROGRESS_AUTO)
-        enabled = out && isatty(fileno(out));
+        enabled = terminal;
     p->enabled = out && enabled && total > 0;
+    p->plain = !terminal;
     snprintf(p->label, sizeof p->label, "%s", label ? label : "");
     p->total = total;
     p->t_start = p->t_last_draw = now_s();
+}
+
+/* "3 min 05 s left", "done in 42 s" or "estimating time left" into buf. */
+static void time_text(const tippe_progress *p, double t, char *buf, size_t size)
+{
+    char d[24];
+    const double eta = tippe_progress_eta_s(t - p->t_start, p->done, p->total);
+    if (p->done >= p->total)
+        snprintf(buf, size, "done in %s",
+                 tippe_progress_format_duration(t - p->t_start, d, sizeof d));
+    else if (eta < 0)
+        snprintf(buf, size, "estimating time left");
+    else
+        snprintf(buf, size, "%s left", tippe_progress_format_duration(eta, d, sizeof d));
+}
+
+/* One plain line: "LABEL: DONE/TOTAL (PCT%), TIME". */
+static void draw_line(tippe_progress *p, double t)
+{
+    char left[48];
+    time_text(p, t, left, sizeof left);
+    fprintf(p->out, "%s: %ld/%ld (%.1f%%), %s\n", p->label, p->done, p->total,
+            100.0 * (double)p->done / (double)p->total, left);
+    fflush(p->out);
+    p->t_last_draw = t;
+    p->done_at_last_line = p->done;
+}
+
+/* Whether a plain line is due at t: another tenth done or LINE_EVERY_S passed. */
+static int line_due(const tippe_progress *p, double t)
+{
+    const double since = t - p->t_last_draw;
+    if (since < LINE_MIN_S)
+        return 0;
+    return since >= LINE_EVERY_S || 10 * (p->done - p->done_at_last_line) >= p->total;
 }
 
 static void draw(tippe_progress *p, double t)
@@ -63,17 +105,8 @@ static void draw(tippe_progress *p, double t)
     for (int i = 0; i < WIDTH; i++)
         bar[i] = i < full ? '#' : '.';
     bar[WIDTH] = '\0';
-    char left[48], spent[24];
-    const double eta = tippe_progress_eta_s(t - p->t_start, p->done, p->total);
-    tippe_progress_format_duration(t - p->t_start, spent, sizeof spent);
-    if (p->done >= p->total)
-        snprintf(left, sizeof left, "done in %s", spent);
-    else if (eta < 0)
-        snprintf(left, sizeof left, "estimating time left");
-    else {
-        char d[24];
-        snprintf(left, sizeof left, "%s left", tippe_progress_format_duration(eta, d, sizeof d));
-    }
+    char left[48];
+    time_text(p, t, left, sizeof left);
     /* \r and a clear-to-end-of-line so that a shorter line leaves no residue. */
     fprintf(p->out, "\r%s [%s] %3.0f%% %ld/%ld, %s\033[K", p->label, bar, 100.0 * frac, p->done,
             p->total, left);
@@ -91,8 +124,12 @@ void tippe_progress_add(tippe_progress *p, long n)
         p->done += n;
         if (p->enabled) {
             const double t = now_s();
-            if (t - p->t_last_draw >= REDRAW_S || !p->drawn)
+            if (p->plain) {
+                if (line_due(p, t))
+                    draw_line(p, t);
+            } else if (t - p->t_last_draw >= REDRAW_S || !p->drawn) {
                 draw(p, t);
+            }
         }
     }
 }
@@ -103,9 +140,13 @@ void tippe_progress_finish(tippe_progress *p)
         return;
 #pragma omp critical(tippe_progress)
     {
-        draw(p, now_s());
-        fputc('\n', p->out);
-        fflush(p->out);
+        if (p->plain) {
+            draw_line(p, now_s());
+        } else {
+            draw(p, now_s());
+            fputc('\n', p->out);
+            fflush(p->out);
+        }
         p->enabled = 0;
     }
 }

@@ -221,4 +221,32 @@ echo "test_io: the two 340k-key files took $((($(date +%s%N) - t0) / 1000000)) m
 "$tippe" eval "$d/order-dup.json" --z2 0 >/dev/null 2>"$d/err"
 check "the first repeat in document order is named" grep -q "order-dup.json: extra.k30: duplicate key" "$d/err"
 
+# --- progress when stderr is not a terminal -------------------------------------
+# Without --progress a log stays quiet; with it, plain lines "LABEL: DONE/TOTAL
+# (PCT%), TIME" (no bar, no escape codes), ending with the "done in" line.
+"$tippe" launch "$m3" --z2 4 -n 20 2>"$d/quiet.txt" >/dev/null
+check "launch without --progress: nothing on a non-terminal stderr" test ! -s "$d/quiet.txt"
+t0=$(date +%s%N)
+"$tippe" launch "$m3" --z2 4 -n 600 --progress 2>"$d/progress.txt" >/dev/null
+check "launch --progress exits 0" test $? -eq 0
+ms=$((($(date +%s%N) - t0) / 1000000))
+# all_lines FILE REGEX: FILE has lines and every one matches REGEX.
+all_lines() { [ -s "$1" ] && ! grep -qvE "$2" "$1"; }
+check "every progress line is a plain 'done/total, time' line" all_lines "$d/progress.txt" \
+    '^tippe launch: [0-9]+/600 \([0-9.]+%\), ([0-9].* left|done in .*|estimating time left)$'
+check "progress lines carry no terminal escape or carriage return" \
+    test "$(tr -d '\n' <"$d/progress.txt" | tr -d '[:print:]' | wc -c)" -eq 0
+check "the last progress line is the whole work, done" \
+    grep -qE '^tippe launch: 600/600 \(100.0%\), done in ' <(tail -1 "$d/progress.txt")
+# A line is due every tenth of the work but at most every 2 s: a run of 5 s or
+# more must have shown the work moving before it ended.
+if [ "$ms" -ge 5000 ]; then
+    check "a ${ms} ms run showed lines with the time left before the end" \
+        grep -qE '^tippe launch: [0-9]+/600 .* left$' "$d/progress.txt"
+else
+    echo "test_io: launch took ${ms} ms (< 5 s): periodic progress lines not required"
+fi
+expect_fail "--progress on a verb without long work" 2 "unknown option '--progress'" -- \
+    eval "$m3" --z2 4 --progress
+
 finish

@@ -119,6 +119,7 @@ static int parse_args(args *a, int argc, char **argv)
     };
     tippe_cli_spec spec = {
         .verb = VERB,
+        .progress = 1,
         .synopsis = "(SCENARIO.json | DESIGN.json --z2 MM [--spin RATE]) -o FILM.mp4|.webm|.gif\n"
                     "       [--speed X] [--fps N] [--size WxH] [--frame T -o PICTURE.png]",
         .about =
@@ -215,7 +216,7 @@ static int write_output(const args *a, const tippe_film *film, tippe_film_format
     } else {
         tippe_progress prog;
         tippe_progress_start(&prog, stderr, "tippe animate", tippe_film_work(film, format),
-                             TIPPE_PROGRESS_AUTO);
+                             tippe_cli_progress_mode());
         rc = tippe_film_write(film, format, f, &prog, err);
         tippe_progress_finish(&prog);
     }

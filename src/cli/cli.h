@@ -94,6 +94,7 @@ typedef struct {
     int min_args, max_args;  /* positional arguments (files) */
     const char *args_name;   /* what they are, for messages: "design file" */
     int quiet_help;          /* 1: --help prints nothing (tippe-mpi's other ranks) */
+    int progress;            /* 1: long work: --progress is added (tippe_cli_progress_mode) */
 } tippe_cli_spec;
 
 enum { TIPPE_CLI_HELP = -1 };
@@ -107,6 +108,11 @@ enum { TIPPE_CLI_HELP = -1 };
  * 0), or 2 after a usage error on stderr. */
 int tippe_cli_parse(tippe_cli_spec *spec, int argc, char **argv, const char **args,
                     int *n_args);
+
+/* How a verb shows progress on stderr (tippe/progress.h): TIPPE_PROGRESS_ON
+ * after --progress (plain lines when stderr is not a terminal), else
+ * TIPPE_PROGRESS_AUTO (a bar on a terminal only). */
+int tippe_cli_progress_mode(void);
 
 /* Prints the --help generated from spec. */
 void tippe_cli_help(const tippe_cli_spec *spec, FILE *out);

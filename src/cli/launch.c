@@ -116,6 +116,7 @@ static int launch_parse(hands_args *a, int argc, char **argv)
     };
     hands_verb v = {
         .spec = {.verb = "launch",
+                 .progress = 1,
                  .synopsis = "DESIGN.json --z2 MM [-n N] [--seed S] [--spin FROM:TO] [options]",
                  .about = LAUNCH_ABOUT,
                  .after = "A progress bar with the time left is shown on stderr when it is a\n"
@@ -181,7 +182,7 @@ static int launch_run(const hands_args *a, const tippe_design *d, const tippe_to
     tippe_error err;
     tippe_launch_plan plan = {1, a->n, top, NULL};
     tippe_progress prog;
-    tippe_progress_start(&prog, stderr, "tippe launch", a->n, TIPPE_PROGRESS_AUTO);
+    tippe_progress_start(&prog, stderr, "tippe launch", a->n, tippe_cli_progress_mode());
     const double t0 = tippe_cli_now_s();
     int rc = hands_run_plan(&plan, &a->o, (uint64_t)a->seed, rec, &prog, &err);
     const double elapsed = tippe_cli_now_s() - t0;

@@ -100,6 +100,7 @@ static int map_parse(hands_args *a, int argc, char **argv)
     };
     hands_verb v = {
         .spec = {.verb = "map",
+                 .progress = 1,
                  .synopsis = "DESIGN.json --z2 FROM:TO:STEPS --spin FROM:TO:STEPS [-n PER_CELL]\n"
                              "                 [--plot FILE] [--csv FILE] [--json] [options]",
                  .about = MAP_ABOUT,
@@ -334,7 +335,7 @@ int tippe_cli_map(int argc, char **argv)
     if ((rc = hands_mpi_agree(rc)) == 0) {
         tippe_launch_plan plan = {(int)g.n_cells, a.n, g.cell_tops, g.cell_spin_rad_s};
         tippe_progress prog;
-        tippe_progress_start(&prog, stderr, "tippe map", g.total, TIPPE_PROGRESS_AUTO);
+        tippe_progress_start(&prog, stderr, "tippe map", g.total, tippe_cli_progress_mode());
         const double t0 = tippe_cli_now_s();
         rc = hands_run_plan(&plan, &a.o, (uint64_t)a.seed, g.rec, &prog, &err);
         const double elapsed = tippe_cli_now_s() - t0;

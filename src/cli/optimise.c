@@ -48,6 +48,7 @@ static int parse_args(int argc, char **argv, optimise_args *a)
     };
     tippe_cli_spec spec = {
         .verb = VERB,
+        .progress = 1,
         .synopsis = "SPEC.json [-o BEST.json] [--json] [--plot FILE] [--csv FILE] [--seed S]\n"
                     "                      [--threads N]",
         .about = "Searches the designs a spec allows (a base design with fields that vary over\n"
@@ -269,8 +270,8 @@ int tippe_cli_optimise(int argc, char **argv)
     if ((rc = tippe_opt_spec_load(a.spec, &s, &err)))
         return tippe_cli_fail(VERB, &err, rc);
     tippe_progress bar;
-    tippe_progress_start(&bar, stderr, "optimise", tippe_opt_planned_evals(s),
-                         TIPPE_PROGRESS_AUTO);
+    tippe_progress_start(&bar, stderr, "tippe optimise", tippe_opt_planned_evals(s),
+                         tippe_cli_progress_mode());
     tippe_opt_options o;
     tippe_opt_options_default(&o);
     o.seed = (unsigned long)a.seed;

@@ -4,13 +4,22 @@
  * of range and speaks one unit language. */
 #include "cli.h"
 
+#include "tippe/progress.h"
+
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-enum { MAX_OPTS = 64, FIRST_LONG = 256 };
+enum { MAX_OPTS = 64, FIRST_LONG = 256, PROGRESS_OPT = FIRST_LONG - 1 };
+
+static int progress_forced; /* --progress was given */
+
+int tippe_cli_progress_mode(void)
+{
+    return progress_forced ? TIPPE_PROGRESS_ON : TIPPE_PROGRESS_AUTO;
+}
 
 /* Unit suffixes a number may carry, by family (the first row of a family is
  * its base unit); a number is converted to its option's unit. */
@@ -212,7 +221,7 @@ static int build_getopt(const tippe_cli_spec *spec, struct option *lo, char *sho
     shorts[s++] = ':'; /* a missing value is reported as ':' */
     shorts[s++] = 'h';
     for (const tippe_cli_opt *o = spec->opts; o->name; o++, n++) {
-        if (n >= MAX_OPTS - 2)
+        if (n >= MAX_OPTS - 3) /* room for --help, --progress and the end */
             return -1;
         lo[n] = (struct option){o->name, takes_value(o) ? required_argument : no_argument, NULL,
                                 FIRST_LONG + n};
@@ -223,6 +232,8 @@ static int build_getopt(const tippe_cli_spec *spec, struct option *lo, char *sho
         }
     }
     lo[n++] = (struct option){"help", no_argument, NULL, 'h'};
+    if (spec->progress)
+        lo[n++] = (struct option){"progress", no_argument, NULL, PROGRESS_OPT};
     lo[n] = (struct option){NULL, 0, NULL, 0};
     shorts[s] = '\0';
     return 0;
@@ -299,6 +310,10 @@ int tippe_cli_parse(tippe_cli_spec *spec, int argc, char **argv, const char **ar
             if (!spec->quiet_help)
                 tippe_cli_help(spec, stdout);
             return TIPPE_CLI_HELP;
+        }
+        if (c == PROGRESS_OPT) {
+            progress_forced = 1;
+            continue;
         }
         tippe_cli_opt *o = (c == '?' || c == ':') ? NULL : option_for(spec, c);
         if (!o)
@@ -405,6 +420,9 @@ void tippe_cli_help(const tippe_cli_spec *spec, FILE *out)
     fprintf(out, "options:\n");
     for (const tippe_cli_opt *o = spec->opts; o->name; o++)
         print_option(out, o);
+    if (spec->progress)
+        fprintf(out, "      --progress          show progress on stderr even when it is not a\n"
+                     "                          terminal: plain lines with done/total and time left\n");
     fprintf(out, "  -h, --help              this text\n");
     print_units(spec, out);
     if (spec->after)
