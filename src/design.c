@@ -1503,6 +1503,8 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
         (rc = resolve_parts(c, d)) || (check && (rc = check_layout(c, d))) ||
         (rc = sum_moments(c, d)))
         return rc;
+    if (!check) /* a derived design (a field moved by a tolerance) needs no tolerances */
+        return TIPPE_OK;
     return tippe_tolerances_read(c, cJSON_GetObjectItemCaseSensitive(root, "tolerances"), d,
                                  &d->tolerances, &d->n_tolerances);
 }
