@@ -58,6 +58,7 @@ typedef struct {
     double z_mm;            /* moving parts: offset from Z2 */
     double density_g_cm3;   /* voids: the parent's */
     int is_void, moving, may_protrude;
+    int printable;          /* the material's "printable" flag (voids: the parent's) */
     int has_height, has_radius;
     int parent;             /* voids: index of the part cut from; else -1 */
     int clip;               /* 0 none, 1 sphere, 2 cavity */
@@ -114,7 +115,8 @@ static const char *const all_part_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from", "clip",
     "moving", "may_protrude", "radius_mm", "inner_radius_mm", "thickness_mm", "height_mm",
     "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
-static const char *const material_keys[] = {"density_g_cm3", "source", "notes", NULL};
+static const char *const material_keys[] = {"density_g_cm3", "source", "printable", "notes",
+                                             NULL};
 
 /* ------------------------------------------------------------- overrides */
 
@@ -390,7 +392,7 @@ static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, p
 /* --------------------------------------------------------- materials table */
 
 static int lookup_material(const tippe_json_reader *c, const cJSON *table, const char *mat_file,
-                           const char *name, const char *path, double *density)
+                           const char *name, const char *path, double *density, int *printable)
 {
     const cJSON *m = cJSON_GetObjectItemCaseSensitive(table, name);
     if (!m) {
@@ -404,6 +406,7 @@ static int lookup_material(const tippe_json_reader *c, const cJSON *table, const
         return tippe_json_fail(c, path, "unknown material '%s' (%s has: %s)", name, mat_file, list);
     }
     *density = cJSON_GetObjectItemCaseSensitive(m, "density_g_cm3")->valuedouble;
+    *printable = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(m, "printable"));
     return TIPPE_OK;
 }
 
@@ -430,9 +433,11 @@ static int load_materials(const char *mat_file, cJSON **out, tippe_error *err)
             goto done;
         }
         double dens = 0;
+        int printable = 0;
         if ((rc = tippe_json_check_keys(mc, m, m->string, "a material", material_keys, NULL)) ||
             (rc = tippe_json_number(mc, m, m->string, "density_g_cm3", 1, &dens, NULL)) ||
             (rc = tippe_json_string(mc, m, m->string, "source", 1, NULL, 0, NULL)) ||
+            (rc = tippe_json_bool(mc, m, m->string, "printable", &printable, NULL)) ||
             (rc = tippe_json_string(mc, m, m->string, "notes", 0, NULL, 0, NULL)))
             goto done;
         char p[256];
@@ -993,7 +998,8 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
             if (p->is_void || !p->material[0])
                 continue;
             snprintf(pth, sizeof pth, "parts[%d].material", i);
-            rc = lookup_material(c, table, mat_file, p->material, pth, &p->density_g_cm3);
+            rc = lookup_material(c, table, mat_file, p->material, pth, &p->density_g_cm3,
+                                 &p->printable);
         }
         cJSON_Delete(table);
         if (rc)
@@ -1030,6 +1036,7 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
             p->parent = j;
             p->moving = d->parts[j].moving;
             p->density_g_cm3 = d->parts[j].density_g_cm3;
+            p->printable = d->parts[j].printable;
             snprintf(p->material, sizeof p->material, "%s", d->parts[j].material);
         }
         if (p->clip && p->moving) {
@@ -1207,7 +1214,13 @@ int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
     out->mass_kg = p->mass_kg;
     out->z_mm = p->z_mm;
     out->may_protrude = p->may_protrude;
+    out->printable = p->printable;
     return TIPPE_OK;
+}
+
+int tippe_design_part_printable(const tippe_design *d, int i)
+{
+    return i >= 0 && i < d->n_parts && d->parts[i].printable;
 }
 
 int tippe_design_part_solid(const tippe_design *d, int i, tippe_design_solid *out)

@@ -200,27 +200,12 @@ static GEOSGeometry *solid_region(geos_ctx *g, const tippe_design_solid *s, doub
 
 /* --------------------------------------------------------- printability */
 
-/* Bought hardware until the materials table says (tippe_design_part_info gains
- * a printable flag): metals, and any inline density above 3 g/cm^3 (denser than
- * every filament, metal-filled ones included). */
-static int material_printable(const tippe_design_part_info *p)
-{
-    static const char *const hardware[] = {"iron", "steel", "brass", "lead", "tungsten",
-                                           "aluminium", "aluminum", "copper", NULL};
-    if (!strcmp(p->material, "(inline)"))
-        return p->density_g_cm3 <= 3.0;
-    for (int k = 0; hardware[k]; k++)
-        if (!strcmp(p->material, hardware[k]))
-            return 0;
-    return 1;
-}
-
 int tippe_profile_part_printed(const tippe_design *d, int i)
 {
     tippe_design_part_info p;
     if (tippe_design_part(d, i, &p))
         return 0;
-    return !strcmp(p.role, "fixed") && material_printable(&p);
+    return !strcmp(p.role, "fixed") && p.printable;
 }
 
 /* Hardware: a non-void part that is not printable (a fixed rod, the weight). */
@@ -229,7 +214,7 @@ static int part_is_hardware(const tippe_design *d, int i)
     tippe_design_part_info p;
     if (tippe_design_part(d, i, &p) || !strcmp(p.role, "void"))
         return 0;
-    return !material_printable(&p);
+    return !p.printable;
 }
 
 /* ------------------------------------------------------- profile rings */

@@ -477,33 +477,55 @@ int tippe_sweep_design(const tippe_design *d, double from_mm, double to_mm,
     return tippe_sweep_mark_travel(out, pf, pt, err);
 }
 
+static const char *const family_names[3] = {"I", "II", "III"};
+
+static int family_index(const char *f)
+{
+    for (int k = 0; k < 3; k++)
+        if (!strcmp(f, family_names[k]))
+            return k;
+    return -1;
+}
+
 void tippe_sweep_summarise(const tippe_sweep_result *r, tippe_sweep_summary *out)
 {
     memset(out, 0, sizeof *out);
+    int has[3] = {0, 0, 0};
     double run = 0.0;
-    const char *fam = NULL;
+    int fam = -1;
+    /* A run is a maximal sequence of adjacent zones within the travel whose
+     * groups are of one family (Theorem 5.1's I, II, III); the com_side split at
+     * the balanced point does not end it. */
     for (int i = 0; i <= r->n_zones; i++) {
         const tippe_sweep_zone *z = i < r->n_zones ? &r->zones[i] : NULL;
-        const char *f = z && z->within_travel ? tippe_group_family(z->group) : NULL;
-        if (fam && (!f || strcmp(f, fam))) { /* a run of one family ends */
-            if (!out->narrowest_family || run < out->narrowest_zone_mm) {
-                out->narrowest_zone_mm = run;
-                out->narrowest_family = fam;
-            }
-            fam = NULL;
+        int f = z && z->within_travel ? family_index(tippe_group_family(z->group)) : -1;
+        if (fam >= 0 && f != fam) { /* a run of one family ends */
+            out->widest_mm[fam] = GSL_MAX(out->widest_mm[fam], run);
+            fam = -1;
         }
-        if (!f)
+        if (f < 0)
             continue;
-        if (!fam) {
+        if (fam < 0) {
             fam = f;
             run = 0.0;
         }
         run += z->z2_to_mm - z->z2_from_mm;
-        out->has_I |= !strcmp(f, "I");
-        out->has_II |= !strcmp(f, "II");
-        out->has_III |= !strcmp(f, "III");
+        has[f] = 1;
     }
-    out->three_in_one = out->has_I && out->has_II && out->has_III;
+    out->has_I = has[0];
+    out->has_II = has[1];
+    out->has_III = has[2];
+    out->three_in_one = has[0] && has[1] && has[2];
+    for (int k = 0; k < 3; k++)
+        if (has[k] && (!out->narrowest_family || out->widest_mm[k] < out->narrowest_zone_mm)) {
+            out->narrowest_zone_mm = out->widest_mm[k];
+            out->narrowest_family = family_names[k];
+        }
+}
+
+double tippe_sweep_summary_three_zone_mm(const tippe_sweep_summary *s)
+{
+    return s->three_in_one ? s->narrowest_zone_mm : 0.0;
 }
 
 void tippe_sweep_vary_free(tippe_sweep_vary_result *v)
@@ -670,9 +692,13 @@ void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe
     fprintf(out, "\n3-in-1   %s: groups reachable %s: %s%s%s%s\n", s.three_in_one ? "yes" : "no",
             where, s.has_I ? "I " : "", s.has_II ? "II " : "", s.has_III ? "III" : "",
             !s.has_I && !s.has_II && !s.has_III ? "none" : "");
-    if (s.narrowest_family)
-        fprintf(out, "narrowest reachable zone: %.3f mm (group %s; its subgroups counted together)\n", s.narrowest_zone_mm,
+    if (s.narrowest_family) {
+        fprintf(out, "zones    widest run of each group %s (subgroups together):", where);
+        for (int k = 0; k < 3; k++)
+            fprintf(out, " %s %.3f mm%s", family_names[k], s.widest_mm[k], k < 2 ? "," : "\n");
+        fprintf(out, "narrowest reachable zone: %.3f mm (group %s)\n", s.narrowest_zone_mm,
                 s.narrowest_family);
+    }
 }
 
 /* cJSON helpers that record failure instead of returning it at every call. */
@@ -801,6 +827,9 @@ cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
             "narrowest_zone_mm", &ok);
     add_obj(o, s.narrowest_family ? cJSON_CreateString(s.narrowest_family) : cJSON_CreateNull(),
             "narrowest_zone_family", &ok);
+    cJSON *widths = add_obj(o, cJSON_CreateObject(), "zone_widths_mm", &ok);
+    for (int k = 0; widths && k < 3; k++)
+        add_obj(widths, cJSON_CreateNumber(s.widest_mm[k]), family_names[k], &ok);
     if (!ok) {
         cJSON_Delete(o);
         return NULL;

@@ -10,9 +10,11 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
-/* Densities of materials.json, kg/m^3 (ABS and iron are the paper's, section 6.1). */
+/* Densities of materials.json, kg/m^3 (ABSplus and iron are the paper's, section 6.1). */
 #define RHO_ABS 1080.0
 #define RHO_IRON 7870.0
 #define RHO_NYLON 1140.0
@@ -331,6 +333,83 @@ static void check_overrides(void)
     }
 }
 
+/* The materials table: every entry has a source and a printable flag; the
+ * shipped designs' parts are printable exactly when they are ABSplus; a flag
+ * that is not true/false is refused naming the table and the material. */
+static void check_materials(void)
+{
+    const char *m12 = "designs/m12-setscrew.json";
+    tippe_design *d = load(m12, NULL, 0);
+    if (d) {
+        tippe_design_part_info info;
+        for (int i = 0; i < tippe_design_n_parts(d); i++) {
+            CHECK(tippe_design_part(d, i, &info) == TIPPE_OK, "part %d", i);
+            int want = !strcmp(info.material, "ABSplus"); /* body and its hole */
+            CHECK(info.printable == want && tippe_design_part_printable(d, i) == want,
+                  "part %s (%s): printable %d, want %d", info.name, info.material,
+                  info.printable, want);
+        }
+        CHECK(!tippe_design_part_printable(d, 99), "out of range is not printable");
+        tippe_design_free(d);
+    }
+    /* A bought weight swapped for each hardware metal, and the body for each
+     * filament: all load, and the flag follows the table. */
+    const char *filaments[] = {"ABS", "PLA", "PETG", "ASA", "TPU", "nylon-filament"};
+    const char *hardware[] = {"steel", "stainless", "brass", "iron", "tungsten-putty", "lead",
+                              "nylon", "aluminium"};
+    char set[2][80];
+    for (size_t i = 0; i < 8; i++) {
+        snprintf(set[0], sizeof set[0], "parts.screw.material=%s", hardware[i]);
+        snprintf(set[1], sizeof set[1], "parts.body.material=%s", filaments[i % 6]);
+        const char *sets[] = {set[0], set[1]};
+        if ((d = load(m12, sets, 2))) {
+            CHECK(tippe_design_part_printable(d, 0) && tippe_design_part_printable(d, 1) &&
+                      !tippe_design_part_printable(d, 2),
+                  "%s body, %s screw", filaments[i % 6], hardware[i]);
+            tippe_design_free(d);
+        }
+    }
+    /* The generic ABS filament is lighter than the paper's ABSplus (1.04 vs
+     * 1.08 g/cm^3): the body's mass scales exactly with the density. */
+    const char *abs[] = {"parts.body.material=ABS"};
+    tippe_design *a = load(m12, abs, 1), *b = load(m12, NULL, 0);
+    if (a && b) {
+        tippe_design_part_info ia, ib;
+        tippe_design_part(a, 0, &ia);
+        tippe_design_part(b, 0, &ib);
+        CHECK_CLOSE(ia.mass_kg / ib.mass_kg, 1.04 / 1.08, 1e-14, "ABS vs ABSplus body");
+    }
+    tippe_design_free(a);
+    tippe_design_free(b);
+
+    /* A broken flag in a private table. */
+    const char *dir = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";
+    char tab[512], des[512];
+    snprintf(tab, sizeof tab, "%s/tippe-test-materials-%d.json", dir, (int)getpid());
+    snprintf(des, sizeof des, "%s/tippe-test-design-%d.json", dir, (int)getpid());
+    FILE *f = fopen(tab, "w");
+    FILE *g = fopen(des, "w");
+    if (f && g) {
+        fprintf(f, "{\"goo\": {\"density_g_cm3\": 2, \"source\": \"x\", \"printable\": \"yes\"}}");
+        fprintf(g, "{\"name\": \"t\", \"radius_mm\": 10, \"travel_mm\": [0, 1], "
+                   "\"materials\": \"%s\", \"parts\": [{\"name\": \"b\", \"shape\": "
+                   "\"ball\", \"material\": \"goo\"}]}",
+                strrchr(tab, '/') + 1);
+    }
+    if (f)
+        fclose(f);
+    if (g)
+        fclose(g);
+    tippe_error err = {0};
+    tippe_design *x = NULL;
+    int rc = tippe_design_load(des, NULL, 0, &x, &err);
+    CHECK(rc == TIPPE_EINPUT && strstr(err.msg, "goo.printable") && strstr(err.msg, "true or false"),
+          "bad printable flag: rc %d '%s'", rc, err.msg);
+    tippe_design_free(x);
+    remove(tab);
+    remove(des);
+}
+
 int main(void)
 {
     const double m12_z2[] = {0, 2.5, 8, 12.5, 17.5, 20};
@@ -347,5 +426,6 @@ int main(void)
     for (int i = 0; i < 5; i++)
         check_invariants(all[i]);
     check_overrides();
+    check_materials();
     return check_summary("test_design");
 }

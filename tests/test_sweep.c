@@ -23,7 +23,7 @@ typedef struct {
     double a, z0, w, e;
 } path_params;
 
-enum { LINEAR, WAVY, FLAT, TOUCH_ABOVE, TOUCH_BELOW, DIP, BALANCE, OUTSIDE };
+enum { LINEAR, WAVY, FLAT, TOUCH_ABOVE, TOUCH_BELOW, DIP, BALANCE, OUTSIDE, VEE };
 
 static void eval(double z, void *vp, double *k, double *es)
 {
@@ -52,6 +52,12 @@ static void eval(double z, void *vp, double *k, double *es)
     case DIP: /* g = c - 2c exp(-((z-z0)/w)^2): dips into group I over |z - z0| < w sqrt(ln 2) */
         *es = p->e;
         *k = 1.0 - p->e + p->a - 2.0 * p->a * exp(-pow((z - p->z0) / p->w, 2));
+        break;
+    case VEE: /* k - 1 falls (slope 0.02) to -0.1 at z = 10, then rises (0.01); e = 0.05
+               * except over [9, 13], where the centre of mass crosses the centre at 11:
+               * III [0, 2.5], II [2.5, 7.5], I [7.5, 15], II [15, 25], III [25, 30] */
+        *k = 1.0 - 0.1 + (z < 10.0 ? 0.02 * (10.0 - z) : 0.01 * (z - 10.0));
+        *es = z < 9.0 ? 0.05 : z > 13.0 ? -0.05 : 0.05 - 0.025 * (z - 9.0);
         break;
     case BALANCE: /* centre of mass crosses the sphere's centre at z = z0 */
         *k = 0.9;
@@ -187,6 +193,38 @@ static void test_linear(void)
     CHECK(s.three_in_one, "linear path over [0,20] should be 3-in-1");
     CHECK(fabs(s.narrowest_zone_mm - 5.0) <= 2 * ZTOL_MM, "narrowest %g mm, expected 5",
           s.narrowest_zone_mm);
+    tippe_sweep_result_free(&r);
+}
+
+/* The zone of a group is its widest run (group II appears twice, 5 and 10 mm
+ * wide); zone I is not split where the centre of mass crosses the centre. */
+static void test_group_zones(void)
+{
+    path_params pp = {.kind = VEE};
+    tippe_sweep_path p = {eval, &pp};
+    tippe_sweep_result r;
+    tippe_error err = {0};
+    tippe_sweep_summary s;
+    int st = tippe_sweep_run(&p, 0.0, 30.0, NULL, &r, &err);
+    CHECK(st == TIPPE_OK, "vee sweep: %s", err.msg);
+    tippe_sweep_summarise(&r, &s);
+    const double want[3] = {7.5, 10.0, 5.0}; /* the crossings are exact in closed form */
+    for (int k = 0; k < 3; k++)
+        CHECK(fabs(s.widest_mm[k] - want[k]) <= 2 * ZTOL_MM, "group %d zone %.9f mm, expected %g",
+              k + 1, s.widest_mm[k], want[k]);
+    CHECK(s.three_in_one && !strcmp(s.narrowest_family, "III") &&
+              fabs(s.narrowest_zone_mm - 5.0) <= 2 * ZTOL_MM &&
+              fabs(tippe_sweep_summary_three_zone_mm(&s) - 5.0) <= 2 * ZTOL_MM,
+          "narrowest %g mm (%s), expected 5 mm of III (the 2.5 mm runs are not the zones)",
+          s.narrowest_zone_mm, s.narrowest_family ? s.narrowest_family : "none");
+    /* Travel [3, 20]: III is not reachable, so the top is not 3-in-1 (objective 0);
+     * II's widest reachable run is [15, 20]. */
+    tippe_sweep_mark_travel(&r, 3.0, 20.0, &err);
+    tippe_sweep_summarise(&r, &s);
+    CHECK(!s.has_III && tippe_sweep_summary_three_zone_mm(&s) == 0.0 &&
+              fabs(s.widest_mm[1] - 5.0) <= 2 * ZTOL_MM && fabs(s.widest_mm[0] - 7.5) <= 2 * ZTOL_MM,
+          "travel [3,20]: III %d, II %g mm (expected 5), I %g mm (expected 7.5)", s.has_III,
+          s.widest_mm[1], s.widest_mm[0]);
     tippe_sweep_result_free(&r);
 }
 
@@ -399,6 +437,7 @@ static void test_plots(void)
 int main(void)
 {
     test_linear();
+    test_group_zones();
     test_wavy();
     test_flat();
     test_touch(TOUCH_ABOVE, 7.3042); /* between scan points (0.01 mm apart) */

@@ -70,11 +70,20 @@ typedef struct {
     double mass_kg;
     double z_mm;          /* centre height; for a moving part, its offset from Z2 */
     int may_protrude;
+    int printable;        /* 1: the material is printable filament; 0: bought
+                             hardware, or a density given inline (see
+                             tippe_design_part_printable) */
 } tippe_design_part_info;
 
 int tippe_design_n_parts(const tippe_design *d);
 /* Fills *out for part i (0-based, file order); TIPPE_EINPUT if i is out of range. */
 int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out);
+
+/* Whether part i (0-based, file order) is made of a printable filament: its
+ * material's "printable" flag in the materials table (a void: its parent's).
+ * 0 for bought hardware, for a material without the flag, for a density given
+ * inline and for i out of range. */
+int tippe_design_part_printable(const tippe_design *d, int i);
 
 /* The solid of part i, for exporters that rebuild its shape (mm). Fields that
  * the shape does not use are 0. clip_radius_mm is the ball the part is

@@ -123,11 +123,21 @@ int tippe_sweep_design(const tippe_design *d, double from_mm, double to_mm,
 typedef struct {
     int has_I, has_II, has_III;
     int three_in_one;             /* I, II and III all reachable */
-    /* The narrowest run of one main group (I, II or III; adjacent subgroups of
-     * the same family count as one run) that is reachable; 0 and NULL if none. */
+    /* The zone of each group (index 0, 1, 2 for I, II, III) is its widest
+     * contiguous run of Z2 within the physical travel: adjacent subgroups of the
+     * group count as one run (Ia|Ib, IIa|IIb|IIc), and so do the two sides of
+     * the balanced point (the top turned over is the same top: zone I is not
+     * split there); runs at Z2 < 0 count like any other. 0 if not reachable. */
+    double widest_mm[3];
+    /* The narrowest of those zones among the reachable groups; 0 and NULL if
+     * none is reachable. */
     double narrowest_zone_mm;
     const char *narrowest_family;
 } tippe_sweep_summary;
+
+/* The optimiser's objective: the narrowest of the three zones (0 unless the
+ * top is 3-in-1), mm. */
+double tippe_sweep_summary_three_zone_mm(const tippe_sweep_summary *s);
 
 void tippe_sweep_summarise(const tippe_sweep_result *r, tippe_sweep_summary *out);
 
@@ -162,7 +172,8 @@ struct cJSON;
  * ends_on), touches [{boundary, z2_mm}], crossings
  * [{boundary, z2_mm, ends_zone}] (every crossing, also those that change no group),
  * three_in_one, narrowest_zone_mm (null if nothing is reachable),
- * narrowest_zone_family. NULL if out of memory. */
+ * narrowest_zone_family, zone_widths_mm {I, II, III} (each group's widest
+ * reachable run, tippe_sweep_summary.widest_mm). NULL if out of memory. */
 struct cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d);
 /* The zone table a designer reads: group, from, to, width (mm), the boundary
  * that ends each zone, notes (beyond the physical travel, the side that rests
