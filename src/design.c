@@ -14,6 +14,7 @@
  * "overlap" means sharing volume more than TOL_MM deep. docs/design-format.md
  * states the resolution this gives. */
 #include "tippe/design.h"
+#include "tippe/tolerance.h"
 #include "tippe/error.h"
 #include "tippe/geometry.h"
 #include "tippe/json.h"
@@ -74,6 +75,10 @@ struct tippe_design {
     int n_parts;
     part *parts;
     tippe_moments fixed, moving; /* SI; moving at Z2 = 0 */
+    char **overrides;            /* as loaded, for tippe_design_derive */
+    int n_overrides;
+    tippe_tolerance *tolerances; /* the tolerances block and the defaults */
+    int n_tolerances;
 };
 
 /* A length in mm that must be > 0 (or >= 0 with allow_zero). */
@@ -97,7 +102,7 @@ static int field_length(const tippe_json_reader *c, const cJSON *obj, const char
 /* ---------------------------------------------------------------- schema */
 
 static const char *const top_keys[] = {"name", "notes", "radius_mm", "travel_mm", "materials",
-                                       "parts", NULL};
+                                       "parts", "tolerances", NULL};
 static const char *const top_string_keys[] = {"name", "notes", "materials", NULL};
 static const char *const part_common_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from",
@@ -654,216 +659,276 @@ static const char *role_of(const part *p)
     return p->is_void ? "void" : p->moving ? "moving" : "fixed";
 }
 
-/* Everything about where parts are, once the parts are parsed and resolved. */
-static int check_layout(const tippe_json_reader *c, tippe_design *d)
-{
-    int nr = 0;
-    double *rs = sample_radii(d, &nr);
-    if (!rs)
-        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
-    const double R = d->radius_mm;
-    int rc = TIPPE_OK;
-    char path[64];
-    ivset a, b, t;
+/* The layout checks below share the sampled radii. */
+typedef struct {
+    const tippe_json_reader *c;
+    tippe_design *d;
+    const double *rs;
+    int nr;
+} layout;
 
-    /* The sphere the top rolls on must be material: a fixed ball or shell of
-     * radius R centred on the sphere's centre. */
-    int surface = 0;
+/* The sphere the top rolls on must be material: a fixed ball or shell of
+ * radius R centred on the sphere's centre. */
+static int check_surface(const layout *L)
+{
+    const tippe_design *d = L->d;
     for (int i = 0; i < d->n_parts; i++) {
         const part *p = &d->parts[i];
         if (!p->is_void && !p->moving && (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL) &&
-            fabs(p->radius_mm - R) < SAME_LENGTH_MM && p->z_mm == 0)
-            surface = 1;
+            fabs(p->radius_mm - d->radius_mm) < SAME_LENGTH_MM && p->z_mm == 0)
+            return TIPPE_OK;
     }
-    if (!surface) {
-        rc = tippe_json_fail(c, "parts",
-                             "no part forms the sphere's surface: the top needs a fixed ball "
-                             "or shell of radius radius_mm (%g mm) centred at z_mm = 0",
-                             R);
-        goto out;
-    }
+    return tippe_json_fail(L->c, "parts",
+                           "no part forms the sphere's surface: the top needs a fixed ball "
+                           "or shell of radius radius_mm (%g mm) centred at z_mm = 0",
+                           d->radius_mm);
+}
 
+/* Void i must lie inside the part it is cut from, or it would subtract mass
+ * that is not there; and it must not share volume with an earlier void of the
+ * same part, or the shared volume would be removed twice. */
+static int check_void(const layout *L, int i)
+{
+    const tippe_design *d = L->d;
+    const part *p = &d->parts[i], *q = &d->parts[p->parent];
+    char path[64];
+    snprintf(path, sizeof path, "parts[%d]", i);
+    ivset a, b, t;
+    for (int k = 0; k < L->nr; k++) {
+        prim_ivs(p, L->rs[k], 0, -TOL_MM, &a);
+        prim_ivs(q, L->rs[k], 0, TOL_MM, &b);
+        iv_subtract(&a, &b, &t);
+        if (t.n)
+            return tippe_json_fail(L->c, path,
+                                   "void '%s' reaches outside the part it is cut from ('%s') "
+                                   "at r = %.3f mm, z = %.3f mm: it would remove material "
+                                   "that is not there",
+                                   p->name, q->name, L->rs[k], t.lo[0]);
+    }
+    for (int j = 0; j < i; j++) {
+        if (d->parts[j].parent != p->parent)
+            continue;
+        for (int k = 0; k < L->nr; k++) {
+            prim_ivs(p, L->rs[k], 0, -TOL_MM, &a);
+            prim_ivs(&d->parts[j], L->rs[k], 0, -TOL_MM, &b);
+            iv_intersect(&a, &b, &t);
+            if (t.n)
+                return tippe_json_fail(L->c, path,
+                                       "voids '%s' and '%s' (parts[%d]) overlap at r = "
+                                       "%.3f mm: the shared volume would be removed twice",
+                                       p->name, d->parts[j].name, j, L->rs[k]);
+        }
+    }
+    return TIPPE_OK;
+}
+
+/* A fixed part that may not protrude must stay inside the sphere. */
+static int check_inside_sphere(const layout *L, int i)
+{
+    const tippe_design *d = L->d;
+    const part *p = &d->parts[i];
+    const double R = d->radius_mm;
+    double worst = 0, wr = 0, wz = 0;
+    ivset a;
+    for (int k = 0; k < L->nr; k++) {
+        material_ivs(d, i, L->rs[k], 0, &a);
+        for (int j = 0; j < a.n; j++)
+            for (int e = 0; e < 2; e++) {
+                double z = e ? a.hi[j] : a.lo[j];
+                double out = hypot(L->rs[k], z) - R;
+                if (out > worst) {
+                    worst = out;
+                    wr = L->rs[k];
+                    wz = z;
+                }
+            }
+    }
+    if (worst <= TOL_MM)
+        return TIPPE_OK;
+    char path[64];
+    snprintf(path, sizeof path, "parts[%d]", i);
+    return tippe_json_fail(L->c, path,
+                           "part '%s' sticks out of the sphere (radius %g mm) by %.3f mm "
+                           "(at r = %.3f mm, z = %.3f mm); set \"may_protrude\": true if "
+                           "it is meant to, like a setscrew",
+                           p->name, R, worst + TOL_MM, wr, wz);
+}
+
+/* Fixed against fixed, moving against moving: their relative place never
+ * changes, so they must not share volume. */
+static int check_no_overlap(const layout *L, int i)
+{
+    const tippe_design *d = L->d;
+    const part *p = &d->parts[i];
+    char path[64];
+    snprintf(path, sizeof path, "parts[%d]", i);
+    ivset a, b, t;
+    for (int j = 0; j < i; j++) {
+        const part *q = &d->parts[j];
+        if (q->is_void || q->moving != p->moving)
+            continue;
+        for (int k = 0; k < L->nr; k++) {
+            material_ivs(d, i, L->rs[k], 0, &a);
+            material_ivs(d, j, L->rs[k], 0, &b);
+            iv_intersect(&a, &b, &t);
+            if (t.n)
+                return tippe_json_fail(L->c, path,
+                                       "part '%s' overlaps part '%s' (parts[%d]) at r = %.3f mm, "
+                                       "z = %.3f .. %.3f mm%s: parts may touch but not share "
+                                       "volume (cut one with a void, or clip it)",
+                                       p->name, q->name, j, L->rs[k], t.lo[0], t.hi[0],
+                                       p->moving ? " relative to Z2" : "");
+        }
+    }
+    return TIPPE_OK;
+}
+
+static int check_parts_placed(const layout *L)
+{
+    const tippe_design *d = L->d;
+    int rc = TIPPE_OK, n_moving = 0;
     for (int i = 0; i < d->n_parts && !rc; i++) {
         const part *p = &d->parts[i];
-        snprintf(path, sizeof path, "parts[%d]", i);
         if (p->is_void) {
-            /* A void must lie inside the part it is cut from, or it would
-             * subtract mass that is not there. */
-            const part *q = &d->parts[p->parent];
-            for (int k = 0; k < nr; k++) {
-                prim_ivs(p, rs[k], 0, -TOL_MM, &a);
-                prim_ivs(q, rs[k], 0, TOL_MM, &b);
-                iv_subtract(&a, &b, &t);
-                if (t.n) {
-                    rc = tippe_json_fail(c, path,
-                                         "void '%s' reaches outside the part it is cut from ('%s') "
-                                         "at r = %.3f mm, z = %.3f mm: it would remove material "
-                                         "that is not there",
-                                         p->name, q->name, rs[k], t.lo[0]);
-                    break;
-                }
-            }
-            for (int j = 0; j < i && !rc; j++) {
-                if (d->parts[j].parent != p->parent)
-                    continue;
-                for (int k = 0; k < nr; k++) {
-                    prim_ivs(p, rs[k], 0, -TOL_MM, &a);
-                    prim_ivs(&d->parts[j], rs[k], 0, -TOL_MM, &b);
-                    iv_intersect(&a, &b, &t);
-                    if (t.n) {
-                        rc = tippe_json_fail(c, path,
-                                             "voids '%s' and '%s' (parts[%d]) overlap at r = "
-                                             "%.3f mm: the shared volume would be removed twice",
-                                             p->name, d->parts[j].name, j, rs[k]);
-                        break;
-                    }
-                }
-            }
+            rc = check_void(L, i);
             continue;
         }
-        if (!p->moving && !p->may_protrude) {
-            double worst = 0, wr = 0, wz = 0;
-            for (int k = 0; k < nr; k++) {
-                material_ivs(d, i, rs[k], 0, &a);
-                for (int j = 0; j < a.n; j++)
-                    for (int e = 0; e < 2; e++) {
-                        double z = e ? a.hi[j] : a.lo[j];
-                        double out = hypot(rs[k], z) - R;
-                        if (out > worst) {
-                            worst = out;
-                            wr = rs[k];
-                            wz = z;
-                        }
-                    }
-            }
-            if (worst > TOL_MM) {
-                rc = tippe_json_fail(c, path,
-                                     "part '%s' sticks out of the sphere (radius %g mm) by %.3f mm "
-                                     "(at r = %.3f mm, z = %.3f mm); set \"may_protrude\": true if "
-                                     "it is meant to, like a setscrew",
-                                     p->name, R, worst + TOL_MM, wr, wz);
-                break;
-            }
-        }
-        /* Fixed against fixed, moving against moving: their relative place
-         * never changes. */
-        for (int j = 0; j < i && !rc; j++) {
-            const part *q = &d->parts[j];
-            if (q->is_void || q->moving != p->moving)
-                continue;
-            for (int k = 0; k < nr; k++) {
-                material_ivs(d, i, rs[k], 0, &a);
-                material_ivs(d, j, rs[k], 0, &b);
-                iv_intersect(&a, &b, &t);
-                if (t.n) {
-                    rc = tippe_json_fail(c, path,
-                                         "part '%s' overlaps part '%s' (parts[%d]) at r = %.3f mm, "
-                                         "z = %.3f .. %.3f mm%s: parts may touch but not share "
-                                         "volume (cut one with a void, or clip it)",
-                                         p->name, q->name, j, rs[k], t.lo[0], t.hi[0],
-                                         p->moving ? " relative to Z2" : "");
-                    break;
-                }
-            }
-        }
+        n_moving += p->moving;
+        if (!p->moving && !p->may_protrude)
+            rc = check_inside_sphere(L, i);
+        if (!rc)
+            rc = check_no_overlap(L, i);
     }
-    if (rc)
-        goto out;
-
-    int n_moving = 0;
-    for (int i = 0; i < d->n_parts; i++)
-        n_moving += d->parts[i].moving && !d->parts[i].is_void;
-    if (!n_moving) {
-        rc = tippe_json_fail(c, "parts",
+    if (!rc && !n_moving)
+        rc = tippe_json_fail(L->c, "parts",
                              "no moving part: mark the weight's part(s) with \"moving\": true");
-        goto out;
-    }
+    return rc;
+}
 
-    /* Physical travel. A moving interval [lo, hi] (at Z2 = 0) and a fixed one
-     * [flo, fhi] share volume exactly for shifts in (flo - hi, fhi - lo); the
-     * physical travel is the gap between such forbidden shifts around the
-     * middle of the stated travel. */
+/* Narrows the physical travel lim[] by what stops moving part p: its centre
+ * reaching the surface, if it may protrude. */
+static void limit_by_protrusion(tippe_design *d, const part *p, double lim[2])
+{
+    const double R = d->radius_mm;
+    double e[2] = {-R - p->z_mm, R - p->z_mm};
+    for (int s = 0; s < 2; s++)
+        if (s ? e[s] < lim[1] : e[s] > lim[0]) {
+            lim[s] = e[s];
+            snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
+                     "the centre of protruding part '%s' reaches the sphere's surface", p->name);
+        }
+}
+
+/* Narrows lim[] by moving part i meeting fixed part j (j = -1: the outside of
+ * the sphere). A moving interval [lo, hi] (at Z2 = 0) and a fixed one
+ * [flo, fhi] share volume exactly for shifts in (flo - hi, fhi - lo); the
+ * physical travel is the gap between such forbidden shifts around mid. Fails
+ * if mid itself is forbidden. */
+static int limit_by_contact(const layout *L, int i, int j, double mid, double lim[2])
+{
+    tippe_design *d = L->d;
+    const part *p = &d->parts[i];
+    ivset a, b;
+    for (int k = 0; k < L->nr; k++) {
+        material_ivs(d, i, L->rs[k], 0, &a);
+        if (!a.n)
+            continue;
+        if (j < 0)
+            outside_ivs(d->radius_mm, L->rs[k], &b);
+        else
+            material_ivs(d, j, L->rs[k], 0, &b);
+        for (int u = 0; u < a.n; u++)
+            for (int w = 0; w < b.n; w++) {
+                double f0 = b.lo[w] - a.hi[u], f1 = b.hi[w] - a.lo[u];
+                int s = -1;
+                if (f0 < mid && mid < f1) {
+                    if (j < 0)
+                        return tippe_json_fail(L->c, "travel_mm",
+                                               "at Z2 = %g mm (the middle of the travel) moving "
+                                               "part '%s' sticks out of the sphere",
+                                               mid, p->name);
+                    return tippe_json_fail(L->c, "travel_mm",
+                                           "at Z2 = %g mm (the middle of the travel) moving "
+                                           "part '%s' overlaps part '%s'",
+                                           mid, p->name, d->parts[j].name);
+                }
+                if (f1 <= mid && f1 > lim[0])
+                    lim[s = 0] = f1;
+                else if (f0 >= mid && f0 < lim[1])
+                    lim[s = 1] = f0;
+                if (s < 0)
+                    continue;
+                if (j < 0)
+                    snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
+                             "part '%s' reaches the sphere's surface", p->name);
+                else
+                    snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
+                             "part '%s' touches part '%s'", p->name, d->parts[j].name);
+            }
+    }
+    return TIPPE_OK;
+}
+
+/* The physical travel (d->contact_mm, d->contact_limit) around the middle of
+ * the stated travel. */
+static int find_physical_travel(const layout *L)
+{
+    tippe_design *d = L->d;
     double mid = 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
     double lim[2] = {-BIG_MM, BIG_MM};
     snprintf(d->contact_limit[0], sizeof d->contact_limit[0], "nothing");
     snprintf(d->contact_limit[1], sizeof d->contact_limit[1], "nothing");
+    int rc = TIPPE_OK;
     for (int i = 0; i < d->n_parts && !rc; i++) {
         const part *p = &d->parts[i];
         if (p->is_void || !p->moving)
             continue;
-        if (p->may_protrude) {
-            /* A protruding part is held only while its centre is inside. */
-            double e[2] = {-R - p->z_mm, R - p->z_mm};
-            for (int s = 0; s < 2; s++)
-                if (s ? e[s] < lim[1] : e[s] > lim[0]) {
-                    lim[s] = e[s];
-                    snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
-                             "the centre of protruding part '%s' reaches the sphere's surface",
-                             p->name);
-                }
-        }
+        if (p->may_protrude)
+            limit_by_protrusion(d, p, lim); /* held only while its centre is inside */
         for (int j = -1; j < d->n_parts && !rc; j++) {
-            /* j = -1: the outside of the sphere, for parts that must stay in. */
             if (j < 0 ? p->may_protrude : (d->parts[j].is_void || d->parts[j].moving))
                 continue;
-            for (int k = 0; k < nr && !rc; k++) {
-                material_ivs(d, i, rs[k], 0, &a);
-                if (!a.n)
-                    continue;
-                if (j < 0)
-                    outside_ivs(R, rs[k], &b);
-                else
-                    material_ivs(d, j, rs[k], 0, &b);
-                for (int u = 0; u < a.n && !rc; u++)
-                    for (int w = 0; w < b.n; w++) {
-                        double f0 = b.lo[w] - a.hi[u], f1 = b.hi[w] - a.lo[u];
-                        int s = -1;
-                        if (f0 < mid && mid < f1) {
-                            if (j < 0)
-                                rc = tippe_json_fail(c, "travel_mm",
-                                                     "at Z2 = %g mm (the middle of the "
-                                                     "travel) moving part '%s' sticks out "
-                                                     "of the sphere",
-                                                     mid, p->name);
-                            else
-                                rc = tippe_json_fail(c, "travel_mm",
-                                                     "at Z2 = %g mm (the middle of the "
-                                                     "travel) moving part '%s' overlaps "
-                                                     "part '%s'",
-                                                     mid, p->name, d->parts[j].name);
-                            break;
-                        }
-                        if (f1 <= mid && f1 > lim[0])
-                            lim[s = 0] = f1;
-                        else if (f0 >= mid && f0 < lim[1])
-                            lim[s = 1] = f0;
-                        if (s < 0)
-                            continue;
-                        if (j < 0)
-                            snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
-                                     "part '%s' reaches the sphere's surface", p->name);
-                        else
-                            snprintf(d->contact_limit[s], sizeof d->contact_limit[s],
-                                     "part '%s' touches part '%s'", p->name, d->parts[j].name);
-                    }
-            }
+            rc = limit_by_contact(L, i, j, mid, lim);
         }
     }
-    if (rc)
-        goto out;
     d->contact_mm[0] = lim[0];
     d->contact_mm[1] = lim[1];
+    return rc;
+}
+
+/* The stated travel must lie inside the physical one. */
+static int check_travel(const layout *L)
+{
+    const tippe_design *d = L->d;
+    const double *lim = d->contact_mm;
     if (d->travel_mm[0] < lim[0])
-        rc = tippe_json_fail(c, "travel_mm",
-                             "starts at %g mm, below the physical travel %.3f .. %.3f mm "
-                             "(at Z2 = %.3f mm %s)",
-                             d->travel_mm[0], lim[0], lim[1], lim[0], d->contact_limit[0]);
-    else if (d->travel_mm[1] > lim[1])
-        rc = tippe_json_fail(c, "travel_mm",
-                             "ends at %g mm, beyond the physical travel %.3f .. %.3f mm "
-                             "(at Z2 = %.3f mm %s)",
-                             d->travel_mm[1], lim[0], lim[1], lim[1], d->contact_limit[1]);
-out:
+        return tippe_json_fail(L->c, "travel_mm",
+                               "starts at %g mm, below the physical travel %.3f .. %.3f mm "
+                               "(at Z2 = %.3f mm %s)",
+                               d->travel_mm[0], lim[0], lim[1], lim[0], d->contact_limit[0]);
+    if (d->travel_mm[1] > lim[1])
+        return tippe_json_fail(L->c, "travel_mm",
+                               "ends at %g mm, beyond the physical travel %.3f .. %.3f mm "
+                               "(at Z2 = %.3f mm %s)",
+                               d->travel_mm[1], lim[0], lim[1], lim[1], d->contact_limit[1]);
+    return TIPPE_OK;
+}
+
+/* Everything about where parts are, once the parts are parsed and resolved. */
+static int check_layout(const tippe_json_reader *c, tippe_design *d)
+{
+    layout L = {c, d, NULL, 0};
+    double *rs = sample_radii(d, &L.nr);
+    if (!rs)
+        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+    L.rs = rs;
+    int rc = check_surface(&L);
+    if (!rc)
+        rc = check_parts_placed(&L);
+    if (!rc)
+        rc = find_physical_travel(&L);
+    if (!rc)
+        rc = check_travel(&L);
     free(rs);
     return rc;
 }
@@ -907,20 +972,9 @@ static char *dup_string(const char *s)
     return r;
 }
 
-static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d)
+/* travel_mm: [from, to], from < to. */
+static int parse_travel(const tippe_json_reader *c, const cJSON *root, tippe_design *d)
 {
-    int rc;
-    char name[256];
-    if (!cJSON_IsObject(root))
-        return tippe_json_wrong_type(c, NULL, "a JSON object (a design)", root);
-    if ((rc = tippe_json_check_keys(c, root, "", "a design", top_keys, NULL)) ||
-        (rc = tippe_json_string(c, root, "", "name", 1, name, sizeof name, NULL)) ||
-        (rc = tippe_json_string(c, root, "", "notes", 0, NULL, 0, NULL)) ||
-        (rc = field_length(c, root, "", "radius_mm", 1, 0, &d->radius_mm, NULL)))
-        return rc;
-    if (!(d->name = dup_string(name)) || !(d->path = dup_string(path)))
-        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
-
     const cJSON *tr = cJSON_GetObjectItemCaseSensitive(root, "travel_mm");
     if (!tr)
         return tippe_json_fail(c, "travel_mm",
@@ -938,15 +992,39 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
     if (!(d->travel_mm[0] < d->travel_mm[1]))
         return tippe_json_fail(c, "travel_mm", "from (%g mm) must be less than to (%g mm)",
                                d->travel_mm[0], d->travel_mm[1]);
+    return TIPPE_OK;
+}
 
-    char mat_rel[512] = "materials.json";
-    int has_mat_file = 0;
-    if ((rc = tippe_json_string(c, root, "", "materials", 0, mat_rel, sizeof mat_rel,
-                                &has_mat_file)))
+/* The top-level fields other than parts; mat_rel gets the materials file as
+ * written (default materials.json), *has_mat_file whether it was given. */
+static int parse_header(const tippe_json_reader *c, const cJSON *root, const char *path,
+                        tippe_design *d, char *mat_rel, size_t mat_cap, int *has_mat_file)
+{
+    int rc;
+    char name[256];
+    if (!cJSON_IsObject(root))
+        return tippe_json_wrong_type(c, NULL, "a JSON object (a design)", root);
+    if ((rc = tippe_json_check_keys(c, root, "", "a design", top_keys, NULL)) ||
+        (rc = tippe_json_string(c, root, "", "name", 1, name, sizeof name, NULL)) ||
+        (rc = tippe_json_string(c, root, "", "notes", 0, NULL, 0, NULL)) ||
+        (rc = field_length(c, root, "", "radius_mm", 1, 0, &d->radius_mm, NULL)))
         return rc;
-    if (has_mat_file && !mat_rel[0])
+    if (!(d->name = dup_string(name)) || !(d->path = dup_string(path)))
+        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+    if ((rc = parse_travel(c, root, d)))
+        return rc;
+    snprintf(mat_rel, mat_cap, "materials.json");
+    if ((rc = tippe_json_string(c, root, "", "materials", 0, mat_rel, mat_cap, has_mat_file)))
+        return rc;
+    if (*has_mat_file && !mat_rel[0])
         return tippe_json_fail(c, "materials", "must be a file name (relative to the design file)");
+    return TIPPE_OK;
+}
 
+/* parts: 1 to MAX_PARTS parts with unique names. */
+static int parse_parts(const tippe_json_reader *c, const cJSON *root, tippe_design *d)
+{
+    int rc;
     const cJSON *parts = cJSON_GetObjectItemCaseSensitive(root, "parts");
     if (!parts)
         return tippe_json_fail(c, "parts", "missing (required: an array of parts)");
@@ -962,7 +1040,6 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
     for (const cJSON *p = parts->child; p; p = p->next, i++)
         if ((rc = parse_part(c, p, i, &d->parts[i])))
             return rc;
-
     char pth[64];
     for (i = 0; i < n; i++)
         for (int j = 0; j < i; j++)
@@ -972,49 +1049,109 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
                     c, pth, "'%s' is already the name of parts[%d]: names must be unique",
                     d->parts[i].name, j);
             }
+    return TIPPE_OK;
+}
 
-    /* Materials: only read the table when some part names a material. */
-    cJSON *table = NULL;
-    char mat_file[1024];
+/* Densities of the parts that name a material. The table is read only when
+ * some part names one; its path is relative to the design file. */
+static int resolve_materials(const tippe_json_reader *c, const char *path, const char *mat_rel,
+                             int has_mat_file, tippe_design *d)
+{
     int uses_table = 0;
-    for (i = 0; i < n; i++)
+    for (int i = 0; i < d->n_parts; i++)
         uses_table |= !d->parts[i].is_void && d->parts[i].material[0];
-    if (uses_table) {
-        const char *slash = strrchr(path, '/');
-        if (mat_rel[0] == '/' || !slash)
-            snprintf(mat_file, sizeof mat_file, "%s", mat_rel);
-        else
-            snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
-        if ((rc = load_materials(mat_file, &table, c->err))) {
-            if (has_mat_file) {
-                char inner[sizeof c->err->msg];
-                snprintf(inner, sizeof inner, "%s", c->err->msg);
-                return tippe_json_fail(c, "materials", "%s", inner);
-            }
-            return rc;
+    if (!uses_table)
+        return TIPPE_OK;
+    char mat_file[1024];
+    const char *slash = strrchr(path, '/');
+    if (mat_rel[0] == '/' || !slash)
+        snprintf(mat_file, sizeof mat_file, "%s", mat_rel);
+    else
+        snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
+    cJSON *table = NULL;
+    int rc = load_materials(mat_file, &table, c->err);
+    if (rc) {
+        if (has_mat_file) {
+            char inner[sizeof c->err->msg];
+            snprintf(inner, sizeof inner, "%s", c->err->msg);
+            return tippe_json_fail(c, "materials", "%s", inner);
         }
-        for (i = 0; i < n && !rc; i++) {
-            part *p = &d->parts[i];
-            if (p->is_void || !p->material[0])
-                continue;
-            snprintf(pth, sizeof pth, "parts[%d].material", i);
-            rc = lookup_material(c, table, mat_file, p->material, pth, &p->density_g_cm3,
-                                 &p->printable);
-        }
-        cJSON_Delete(table);
-        if (rc)
-            return rc;
+        return rc;
     }
+    char pth[64];
+    for (int i = 0; i < d->n_parts && !rc; i++) {
+        part *p = &d->parts[i];
+        if (p->is_void || !p->material[0])
+            continue;
+        snprintf(pth, sizeof pth, "parts[%d].material", i);
+        rc = lookup_material(c, table, mat_file, p->material, pth, &p->density_g_cm3,
+                             &p->printable);
+    }
+    cJSON_Delete(table);
+    return rc;
+}
 
-    /* Voids take their parent's density and motion; clips and default sizes
-     * are resolved against the sphere and the shell. */
-    int shell = -1, n_shell = 0;
-    for (i = 0; i < n; i++)
+/* Void p takes its parent's density and motion. */
+static int resolve_void(const tippe_json_reader *c, tippe_design *d, int i)
+{
+    part *p = &d->parts[i];
+    char pth[64];
+    int j = 0;
+    while (j < d->n_parts && strcmp(d->parts[j].name, p->material))
+        j++;
+    snprintf(pth, sizeof pth, "parts[%d].cut_from", i);
+    if (j == d->n_parts)
+        return tippe_json_fail(c, pth, "no part named '%s'", p->material);
+    if (d->parts[j].is_void)
+        return tippe_json_fail(c, pth, "'%s' is itself a void: cut from the solid part",
+                               p->material);
+    p->parent = j;
+    p->moving = d->parts[j].moving;
+    p->density_g_cm3 = d->parts[j].density_g_cm3;
+    p->printable = d->parts[j].printable;
+    snprintf(p->material, sizeof p->material, "%s", d->parts[j].material);
+    return TIPPE_OK;
+}
+
+/* The clip radius of part i: the sphere, or the cavity of the one fixed
+ * shell (shell: its index, n_shell: how many fixed shells there are). */
+static int resolve_clip(const tippe_json_reader *c, tippe_design *d, int i, int shell,
+                        int n_shell)
+{
+    part *p = &d->parts[i];
+    char pth[64];
+    snprintf(pth, sizeof pth, "parts[%d].clip", i);
+    if (p->clip && p->moving)
+        return tippe_json_fail(c, pth,
+                               "a void cut from a moving part cannot be clipped (its shape "
+                               "would change as it moves)");
+    if (p->clip == 1) {
+        p->clip_radius_mm = d->radius_mm;
+    } else if (p->clip == 2) {
+        if (n_shell != 1)
+            return tippe_json_fail(c, pth,
+                                   "\"cavity\" needs exactly one fixed shell part, the design "
+                                   "has %d",
+                                   n_shell);
+        if (d->parts[shell].z_mm != 0)
+            return tippe_json_fail(c, pth, "\"cavity\" needs the shell '%s' centred at z_mm = 0",
+                                   d->parts[shell].name);
+        p->clip_radius_mm = d->parts[shell].radius_mm - d->parts[shell].thickness_mm;
+    }
+    return TIPPE_OK;
+}
+
+/* Voids, clips and default sizes, resolved against the sphere and the shell. */
+static int resolve_parts(const tippe_json_reader *c, tippe_design *d)
+{
+    int rc, shell = -1, n_shell = 0;
+    char pth[64];
+    for (int i = 0; i < d->n_parts; i++)
         if (d->parts[i].shape == SHAPE_SHELL && !d->parts[i].is_void && !d->parts[i].moving) {
             shell = i;
             n_shell++;
         }
-    for (i = 0; i < n; i++) {
+    for (int i = 0; i < d->n_parts; i++) {
         part *p = &d->parts[i];
         if ((p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL) && !p->has_radius)
             p->radius_mm = d->radius_mm; /* default: the sphere itself */
@@ -1023,53 +1160,22 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
             return tippe_json_fail(c, pth, "%g mm is not less than the shell's radius %g mm",
                                    p->thickness_mm, p->radius_mm);
         }
-        if (p->is_void) {
-            int j = 0;
-            while (j < n && strcmp(d->parts[j].name, p->material))
-                j++;
-            snprintf(pth, sizeof pth, "parts[%d].cut_from", i);
-            if (j == n)
-                return tippe_json_fail(c, pth, "no part named '%s'", p->material);
-            if (d->parts[j].is_void)
-                return tippe_json_fail(c, pth, "'%s' is itself a void: cut from the solid part",
-                                       p->material);
-            p->parent = j;
-            p->moving = d->parts[j].moving;
-            p->density_g_cm3 = d->parts[j].density_g_cm3;
-            p->printable = d->parts[j].printable;
-            snprintf(p->material, sizeof p->material, "%s", d->parts[j].material);
-        }
-        if (p->clip && p->moving) {
-            snprintf(pth, sizeof pth, "parts[%d].clip", i);
-            return tippe_json_fail(c, pth,
-                                   "a void cut from a moving part cannot be clipped (its shape "
-                                   "would change as it moves)");
-        }
-        if (p->clip == 1) {
-            p->clip_radius_mm = d->radius_mm;
-        } else if (p->clip == 2) {
-            snprintf(pth, sizeof pth, "parts[%d].clip", i);
-            if (n_shell != 1)
-                return tippe_json_fail(c, pth,
-                                       "\"cavity\" needs exactly one fixed shell part, the design "
-                                       "has %d",
-                                       n_shell);
-            if (d->parts[shell].z_mm != 0)
-                return tippe_json_fail(c, pth,
-                                       "\"cavity\" needs the shell '%s' centred at z_mm = 0",
-                                       d->parts[shell].name);
-            p->clip_radius_mm = d->parts[shell].radius_mm - d->parts[shell].thickness_mm;
-        }
+        if (p->is_void && (rc = resolve_void(c, d, i)))
+            return rc;
+        if ((rc = resolve_clip(c, d, i, shell, n_shell)))
+            return rc;
         if ((p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE) && !p->has_height)
             p->height_mm = 2 * p->clip_radius_mm; /* spans the clip ball */
     }
+    return TIPPE_OK;
+}
 
-    if ((rc = check_layout(c, d)))
-        return rc;
-
-    /* Moments: parts add, voids subtract (with the parent's density). */
+/* Moments: parts add, voids subtract (with the parent's density); the fixed
+ * parts and the moving group at Z2 = 0. */
+static int sum_moments(const tippe_json_reader *c, tippe_design *d)
+{
     d->fixed = d->moving = (tippe_moments){0, 0, 0, 0};
-    for (i = 0; i < n; i++) {
+    for (int i = 0; i < d->n_parts; i++) {
         part *p = &d->parts[i];
         tippe_moments m = tippe_moments_scale(part_moments(p), p->density_g_cm3 * 1e3);
         if (!finite_moments(m) || !(m.m > 0))
@@ -1086,30 +1192,54 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
     return TIPPE_OK;
 }
 
-int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
-                      tippe_design **out, tippe_error *err)
+/* A parsed (and overridden) design file, checked step by step; check = 0
+ * skips the layout checks (overlaps, travel), for tippe_design_derive. */
+static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d,
+                 int check)
+{
+    char mat_rel[512];
+    int has_mat_file = 0, rc;
+    if ((rc = parse_header(c, root, path, d, mat_rel, sizeof mat_rel, &has_mat_file)) ||
+        (rc = parse_parts(c, root, d)) ||
+        (rc = resolve_materials(c, path, mat_rel, has_mat_file, d)) ||
+        (rc = resolve_parts(c, d)) || (check && (rc = check_layout(c, d))) ||
+        (rc = sum_moments(c, d)))
+        return rc;
+    return tippe_tolerances_read(c, cJSON_GetObjectItemCaseSensitive(root, "tolerances"), d,
+                                 &d->tolerances, &d->n_tolerances);
+}
+
+static int load(const char *path, const char *const *overrides, int n_overrides, int check,
+                tippe_design **out, tippe_error *err)
 {
     /* The geometry module may call GSL: report, never abort. */
     tippe_gsl_errors_as_codes();
     *out = NULL;
     if (!path)
         return tippe_error_set(err, TIPPE_EINPUT, "no design file given");
+    if (n_overrides < 0)
+        n_overrides = 0;
     tippe_json_reader *c =
         tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, "set by --set ");
     tippe_design *d = calloc(1, sizeof *d);
-    if (!c || !d) {
+    if (d)
+        d->overrides = calloc((size_t)n_overrides + 1, sizeof *d->overrides);
+    if (!c || !d || !d->overrides) {
         free(c);
-        free(d);
+        tippe_design_free(d);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
     }
     cJSON *root = NULL;
     int rc = tippe_json_load(c, MAX_FILE_MIB, "design", &root);
     if (!rc)
         rc = tippe_json_check_duplicates(c, root, "");
-    for (int i = 0; !rc && i < n_overrides; i++)
+    for (int i = 0; !rc && i < n_overrides; i++) {
         rc = apply_override(c, root, overrides[i]);
+        if (!rc && !(d->overrides[d->n_overrides++] = dup_string(overrides[i])))
+            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    }
     if (!rc)
-        rc = build(c, root, path, d);
+        rc = build(c, root, path, d, check);
     cJSON_Delete(root);
     free(c);
     if (rc) {
@@ -1120,10 +1250,38 @@ int tippe_design_load(const char *path, const char *const *overrides, int n_over
     return TIPPE_OK;
 }
 
+int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
+                      tippe_design **out, tippe_error *err)
+{
+    return load(path, overrides, n_overrides, 1, out, err);
+}
+
+int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_extra,
+                        tippe_design **out, tippe_error *err)
+{
+    *out = NULL;
+    if (n_extra < 0)
+        n_extra = 0;
+    const char **all = malloc(((size_t)d->n_overrides + (size_t)n_extra + 1) * sizeof *all);
+    if (!all)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    for (int i = 0; i < d->n_overrides; i++)
+        all[i] = d->overrides[i];
+    for (int i = 0; i < n_extra; i++)
+        all[d->n_overrides + i] = extra[i];
+    int rc = load(d->path, all, d->n_overrides + n_extra, 0, out, err);
+    free(all);
+    return rc;
+}
+
 void tippe_design_free(tippe_design *d)
 {
     if (!d)
         return;
+    for (int i = 0; d->overrides && i < d->n_overrides; i++)
+        free(d->overrides[i]);
+    free(d->overrides);
+    free(d->tolerances);
     free(d->path);
     free(d->name);
     free(d->parts);
@@ -1221,6 +1379,137 @@ int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
 int tippe_design_part_printable(const tippe_design *d, int i)
 {
     return i >= 0 && i < d->n_parts && d->parts[i].printable;
+}
+
+/* ------------------------------------------------------ numeric fields */
+
+/* The length fields a part of this shape has, and where each lives. */
+static double *length_field(part *p, const char *key)
+{
+    int cyl = p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE;
+    if (!strcmp(key, "radius_mm") && p->shape != SHAPE_TORUS)
+        return &p->radius_mm;
+    if (!strcmp(key, "thickness_mm") && p->shape == SHAPE_SHELL)
+        return &p->thickness_mm;
+    if (!strcmp(key, "inner_radius_mm") && cyl)
+        return &p->inner_radius_mm;
+    if (!strcmp(key, "height_mm") && cyl)
+        return &p->height_mm;
+    if (p->shape == SHAPE_TORUS) {
+        if (!strcmp(key, "centre_radius_mm"))
+            return &p->centre_radius_mm;
+        if (!strcmp(key, "radial_semi_mm"))
+            return &p->radial_semi_mm;
+        if (!strcmp(key, "axial_semi_mm"))
+            return &p->axial_semi_mm;
+    }
+    return NULL;
+}
+
+/* Index of the part a "parts.NAME" / "parts[I]" prefix (len characters of
+ * field) names, or -1. */
+static int part_named(const tippe_design *d, const char *field, size_t len)
+{
+    if (len > 7 && field[5] == '[') {
+        char *end = NULL;
+        long i = strtol(field + 6, &end, 10);
+        return end == field + len - 1 && *end == ']' && i >= 0 && i < d->n_parts ? (int)i : -1;
+    }
+    for (int i = 0; i < d->n_parts; i++)
+        if (strlen(d->parts[i].name) == len - 6 && !strncmp(d->parts[i].name, field + 6, len - 6))
+            return i;
+    return -1;
+}
+
+int tippe_design_field(const tippe_design *d, const char *field, double *value, int *part_index,
+                       char *why, size_t why_cap)
+{
+    *part_index = -1;
+    if (!strcmp(field, "radius_mm")) {
+        *value = d->radius_mm;
+        return TIPPE_OK;
+    }
+    const char *dot = strrchr(field, '.');
+    if (strncmp(field, "parts", 5) || (field[5] != '.' && field[5] != '[') || !dot ||
+        dot < field + 6) {
+        snprintf(why, why_cap, "not a number field of the design (radius_mm, "
+                               "parts.NAME.FIELD or parts[I].FIELD)");
+        return TIPPE_EINPUT;
+    }
+    int i = part_named(d, field, (size_t)(dot - field));
+    if (i < 0) {
+        snprintf(why, why_cap, "no part %.*s", (int)(dot - field - 5), field + 5);
+        return TIPPE_EINPUT;
+    }
+    part *p = &d->parts[i];
+    const char *key = dot + 1;
+    *part_index = i;
+    if (!strcmp(key, "z_mm")) {
+        *value = p->z_mm;
+        return TIPPE_OK;
+    }
+    if (!strcmp(key, "density_g_cm3")) {
+        if (p->is_void) {
+            snprintf(why, why_cap, "a void has its part's density: give the tolerance to "
+                                   "'%s'", d->parts[p->parent].name);
+            return TIPPE_EINPUT;
+        }
+        *value = p->density_g_cm3;
+        return TIPPE_OK;
+    }
+    const double *v = length_field(p, key);
+    if (!v) {
+        snprintf(why, why_cap, "not a number field of a %s (radius_mm, ... as the shape has; "
+                               "z_mm; density_g_cm3)", shape_names[p->shape]);
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "height_mm") && !p->has_height) {
+        snprintf(why, why_cap, "the height is not in the file: the part spans its clip ball, "
+                               "so the clip decides it");
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "radius_mm") && tippe_design_forms_sphere(d, i)) {
+        snprintf(why, why_cap, "the part forms the sphere the top rolls on: its radius is "
+                               "radius_mm (give the tolerance there)");
+        return TIPPE_EINPUT;
+    }
+    *value = *v;
+    return TIPPE_OK;
+}
+
+int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, int cap)
+{
+    static const char *const all[] = {"radius_mm", "thickness_mm", "inner_radius_mm",
+                                      "height_mm", "centre_radius_mm", "radial_semi_mm",
+                                      "axial_semi_mm"};
+    if (i < 0 || i >= d->n_parts)
+        return 0;
+    part *p = &d->parts[i];
+    int n = 0;
+    for (size_t k = 0; k < sizeof all / sizeof all[0] && n < cap; k++) {
+        const double *v = length_field(p, all[k]);
+        if (!v || *v <= 0 || (!strcmp(all[k], "height_mm") && !p->has_height) ||
+            (!strcmp(all[k], "radius_mm") && tippe_design_forms_sphere(d, i)))
+            continue;
+        keys[n++] = all[k];
+    }
+    return n;
+}
+
+int tippe_design_forms_sphere(const tippe_design *d, int i)
+{
+    if (i < 0 || i >= d->n_parts)
+        return 0;
+    const part *p = &d->parts[i];
+    return !p->is_void && !p->moving && (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL) &&
+           fabs(p->radius_mm - d->radius_mm) < SAME_LENGTH_MM && p->z_mm == 0;
+}
+
+int tippe_design_n_tolerances(const tippe_design *d) { return d->n_tolerances; }
+
+const tippe_tolerance *tippe_design_tolerance(const tippe_design *d, int i)
+{
+    return i >= 0 && i < d->n_tolerances ? &d->tolerances[i] : NULL;
 }
 
 int tippe_design_part_solid(const tippe_design *d, int i, tippe_design_solid *out)

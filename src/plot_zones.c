@@ -2,6 +2,7 @@
  * the design's path (Figure 2), and the zones of a vary. See tippe/sweep.h. */
 #include "tippe/plot.h"
 #include "tippe/sweep.h"
+#include "tippe/sweep_bands.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -16,6 +17,8 @@
 #define C_BPLUS 0x8e2ac0u
 #define C_BMINUS 0x9a6a1eu
 #define C_TRAVEL 0x555555u
+#define C_BAND 0x202020u
+#define BAND_ALPHA 0.30
 
 static unsigned group_rgb(tippe_group g)
 {
@@ -99,6 +102,13 @@ enum { NS = 1200 };
 int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
                            const tippe_sweep_result *r, const char *title, tippe_error *err)
 {
+    return tippe_sweep_plot_zones_banded(file, path, r, NULL, title, err);
+}
+
+int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path,
+                                  const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
+                                  const char *title, tippe_error *err)
+{
     if (!r || r->n_zones < 1 || !path)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: nothing to plot", file);
     double *z = malloc(6 * NS * sizeof *z);
@@ -157,6 +167,17 @@ int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
             tippe_plot_hatch(fmax(r->travel_to_mm, r->from_mm), r->to_mm, ymin, ymax, C_TRAVEL);
             beyond = 1;
         }
+    }
+    /* Each zone boundary's tolerance band, shaded over the zones. */
+    int banded = 0;
+    for (int i = 0; b && i < b->n; i++) {
+        double w = b->bands[i].band_mm, x = b->bands[i].z2_mm;
+        if (!(w > 0))
+            continue;
+        w = isfinite(w) ? w : xspan;
+        tippe_plot_rect(fmax(r->from_mm, x - w), fmin(r->to_mm, x + w), ymin, ymax, C_BAND,
+                        BAND_ALPHA);
+        banded = 1;
     }
     tippe_plot_grid();
     double zero[2] = {0.0, 0.0}, xr[2] = {r->from_mm, r->to_mm};
@@ -258,6 +279,9 @@ int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
         if (present[g])
             keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_BOX, group_text[g],
                                           tippe_plot_pale(group_rgb((tippe_group)g), SHADE), 1.0, 0, 0};
+    if (banded)
+        keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_BOX, "boundary ± tolerance band",
+                                      C_BAND, BAND_ALPHA, 0, 0};
     if (beyond) {
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "beyond physical travel", C_TRAVEL,
                                       1.0, 0, 0};

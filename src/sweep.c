@@ -74,6 +74,15 @@ static int eval_point(ctx *c, double z2_mm, double g[NB], tippe_theory_class *cl
     return TIPPE_OK;
 }
 
+int tippe_sweep_boundary_values(const tippe_sweep_path *path, double z2_mm,
+                                double g[TIPPE_SWEEP_N_BOUNDARIES], tippe_error *err)
+{
+    ctx c = {.path = path};
+    if (eval_point(&c, z2_mm, g, NULL) != TIPPE_OK)
+        return tippe_error_set(err, c.err.code, "%s", c.err.msg);
+    return TIPPE_OK;
+}
+
 static double g_one(double z2_mm, void *vp)
 {
     ctx *c = vp;

@@ -506,3 +506,341 @@ int tippe_theory_predict(const tippe_top *top, double g, double J, tippe_theory_
                                "J = %.17g kg m^3/s", k, e, J);
     return TIPPE_OK;
 }
+
+/* ---- Effective potential and its wells ------------------------------------------
+ * Energy (section 4) at fixed theta and Jellett J (eq 3.20): the kinetic energy
+ * A a^2/2 + C n^2/2 of the rotation about i and k (a = phi_dot sin theta) is least,
+ * on the line A R sin(theta) a + C (R cos theta - eps) n = J, at J^2 / (2 D); every
+ * other term (theta_dot, sliding, the vertical motion of eq 3.11) only adds. */
+
+static double potential_D(const tippe_top *t, double x, double s)
+{
+    const double z = t->R * x - t->eps;
+    return t->A * t->R * t->R * s * s + t->C * z * z;
+}
+
+double tippe_theory_potential(const tippe_top *top, double g, double J, double theta)
+{
+    const double x = cos(theta), s = sin(theta);
+    return top->m * g * (top->R - top->eps * x) + 0.5 * J * J / potential_D(top, x, s);
+}
+
+/* dV/dtheta = sin(theta) (m g eps - J^2 R ((A - C) R cos theta + C eps) / D^2). */
+double tippe_theory_potential_slope(const tippe_top *top, double g, double J, double theta)
+{
+    const double x = cos(theta), s = sin(theta), D = potential_D(top, x, s);
+    return s * (top->m * g * top->eps -
+                J * J * top->R * ((top->A - top->C) * top->R * x + top->C * top->eps) / (D * D));
+}
+
+/* A polynomial c[0] + c[1] x + ... + c[deg] x^deg, deg <= 4. */
+typedef struct {
+    int deg;
+    double c[5];
+} poly;
+
+static double poly_eval(const poly *p, double x)
+{
+    double v = 0.0;
+    for (int i = p->deg; i >= 0; i--)
+        v = v * x + p->c[i];
+    return v;
+}
+
+static poly poly_deriv(const poly *p)
+{
+    poly d = {p->deg > 0 ? p->deg - 1 : 0, {0}};
+    for (int i = 1; i <= p->deg; i++)
+        d.c[i - 1] = i * p->c[i];
+    return d;
+}
+
+/* Bisection of a sign change of p on [lo, hi] down to adjacent doubles. */
+static double poly_bisect(const poly *p, double lo, double hi)
+{
+    double f_lo = poly_eval(p, lo);
+    for (int it = 0; it < 200; it++) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi)
+            break;
+        const double f = poly_eval(p, mid);
+        if (f == 0.0)
+            return mid;
+        if ((f < 0.0) == (f_lo < 0.0)) {
+            lo = mid;
+            f_lo = f;
+        } else {
+            hi = mid;
+        }
+    }
+    return 0.5 * (lo + hi);
+}
+
+/* The points in (a, b) where p changes sign, sorted, found by splitting [a, b] at
+ * the sign changes of p' (recursively): on each piece p is monotone, so it has at
+ * most one root there and the subdivision misses none. A root of even multiplicity
+ * is no sign change and is not returned (the caller checks the points of p'). */
+static int poly_sign_changes(const poly *p, double a, double b, double *roots)
+{
+    if (p->deg <= 0)
+        return 0;
+    double cuts[6];
+    int n_cuts = 0;
+    cuts[n_cuts++] = a;
+    if (p->deg >= 2) {
+        poly d = poly_deriv(p);
+        n_cuts += poly_sign_changes(&d, a, b, cuts + 1);
+    }
+    cuts[n_cuts++] = b;
+    int n = 0;
+    for (int i = 0; i + 1 < n_cuts; i++) {
+        const double f_lo = poly_eval(p, cuts[i]), f_hi = poly_eval(p, cuts[i + 1]);
+        if (f_lo == 0.0 && i > 0 && (n == 0 || roots[n - 1] != cuts[i]))
+            roots[n++] = cuts[i];
+        else if ((f_lo < 0.0 && f_hi > 0.0) || (f_lo > 0.0 && f_hi < 0.0))
+            roots[n++] = poly_bisect(p, cuts[i], cuts[i + 1]);
+    }
+    return n;
+}
+
+/* G(x) of tippe_theory_find_wells, its scale for "is this zero" tests. */
+typedef struct {
+    double k, e, T;
+    poly G;
+} wells_ctx;
+
+static void wells_ctx_init(wells_ctx *w, const tippe_top *top, double g, double J)
+{
+    w->k = top->A / top->C;
+    w->e = top->eps / top->R;
+    w->T = J * J / (top->m * g * top->C * top->R * top->R * top->R);
+    const double p2 = 1.0 - w->k, p1 = -2.0 * w->e, p0 = w->e * w->e + w->k;
+    /* e P^2 - T ((k - 1) x + e) */
+    w->G.deg = 4;
+    w->G.c[4] = w->e * p2 * p2;
+    w->G.c[3] = w->e * 2.0 * p2 * p1;
+    w->G.c[2] = w->e * (p1 * p1 + 2.0 * p2 * p0);
+    w->G.c[1] = w->e * 2.0 * p1 * p0 - w->T * (w->k - 1.0);
+    w->G.c[0] = w->e * p0 * p0 - w->T * w->e;
+    while (w->G.deg > 0 && w->G.c[w->G.deg] == 0.0)
+        w->G.deg--;
+}
+
+static double G_of_theta(const wells_ctx *w, double theta)
+{
+    return poly_eval(&w->G, cos(theta));
+}
+
+/* A sign change of G(cos theta) between theta_lo and theta_hi, bisected in theta
+ * (not in x, whose rounding near x = +-1 would cost digits of theta). */
+static double bisect_theta(const wells_ctx *w, double th_lo, double th_hi)
+{
+    double f_lo = G_of_theta(w, th_lo);
+    for (int it = 0; it < 200; it++) {
+        const double mid = 0.5 * (th_lo + th_hi);
+        if (mid <= th_lo || mid >= th_hi)
+            break;
+        const double f = G_of_theta(w, mid);
+        if (f == 0.0)
+            return mid;
+        if ((f < 0.0) == (f_lo < 0.0)) {
+            th_lo = mid;
+            f_lo = f;
+        } else {
+            th_hi = mid;
+        }
+    }
+    return 0.5 * (th_lo + th_hi);
+}
+
+static void add_crit(tippe_theory_wells *out, const tippe_top *top, double g, double theta,
+                     int kind, double V2, double V2_scale)
+{
+    if (out->n_crit >= TIPPE_THEORY_MAX_CRIT)
+        return;
+    int i = out->n_crit++;
+    while (i > 0 && out->crit_theta_rad[i - 1] > theta) {
+        out->crit_theta_rad[i] = out->crit_theta_rad[i - 1];
+        out->crit_kind[i] = out->crit_kind[i - 1];
+        out->crit_degenerate[i] = out->crit_degenerate[i - 1];
+        out->crit_V[i] = out->crit_V[i - 1];
+        i--;
+    }
+    out->crit_theta_rad[i] = theta;
+    out->crit_kind[i] = kind;
+    out->crit_degenerate[i] = !(fabs(V2) > 1e-9 * V2_scale);
+    out->crit_V[i] = tippe_theory_potential(top, g, out->J, theta);
+}
+
+/* Critical points: the poles, the sign changes of G, and the points of G' where G
+ * nearly vanishes without changing sign (double points, kind 0). */
+static void find_critical_points(const tippe_top *top, double g, const wells_ctx *w,
+                                 tippe_theory_wells *out)
+{
+    const double mgR = top->m * g * top->R;
+    const double V2_scale = top->m * g * top->eps + out->J * out->J / (top->C * top->R * top->R);
+    const double G1 = poly_eval(&w->G, 1.0), Gm1 = poly_eval(&w->G, -1.0);
+    const double P1 = (1.0 - w->e) * (1.0 - w->e), Pm1 = (1.0 + w->e) * (1.0 + w->e);
+    /* V''(0) = m g R G(1) / P(1)^2, V''(pi) = -m g R G(-1) / P(-1)^2 */
+    add_crit(out, top, g, 0.0, G1 > 0.0 ? -1 : G1 < 0.0 ? 1 : 0, mgR * G1 / (P1 * P1), V2_scale);
+    add_crit(out, top, g, M_PI, Gm1 < 0.0 ? -1 : Gm1 > 0.0 ? 1 : 0, mgR * Gm1 / (Pm1 * Pm1),
+             V2_scale);
+
+    double xr[6];
+    const int n = poly_sign_changes(&w->G, -1.0, 1.0, xr);
+    const poly dG = poly_deriv(&w->G);
+    for (int i = n - 1; i >= 0; i--) {
+        /* the piece of monotony around xr[i], from the neighbouring roots of G' */
+        const double x = xr[i];
+        const double th = acos(x);
+        /* bracket in theta: G changes sign within [acos(x + d), acos(x - d)] */
+        double d = 1e-9, th_lo = acos(fmin(1.0, x + d)), th_hi = acos(fmax(-1.0, x - d));
+        const double root = (G_of_theta(w, th_lo) < 0.0) != (G_of_theta(w, th_hi) < 0.0)
+                                ? bisect_theta(w, th_lo, th_hi)
+                                : th;
+        const double xx = cos(root), s = sin(root);
+        const double P = (xx - w->e) * (xx - w->e) + w->k * s * s;
+        const double G_prime = poly_eval(&dG, xx);
+        /* V'' = -m g R sin^2 G'(x) / P^2; a max where G rises with x */
+        add_crit(out, top, g, root, G_prime > 0.0 ? 1 : -1, -mgR * s * s * G_prime / (P * P),
+                 V2_scale);
+    }
+    double xd[6];
+    const int nd = w->G.deg >= 2 ? poly_sign_changes(&dG, -1.0, 1.0, xd) : 0;
+    for (int i = 0; i < nd; i++) {
+        const double x = xd[i], P = (x - w->e) * (x - w->e) + w->k * (1.0 - x * x);
+        const double G_scale = w->e * P * P + w->T * fabs((w->k - 1.0) * x + w->e);
+        if (fabs(poly_eval(&w->G, x)) <= 1e-9 * G_scale)
+            add_crit(out, top, g, acos(x), 0, 0.0, V2_scale);
+    }
+}
+
+static void build_wells(tippe_theory_wells *out)
+{
+    double ends[TIPPE_THEORY_MAX_CRIT + 2];
+    int n_ends = 0;
+    ends[n_ends++] = 0.0;
+    for (int i = 0; i < out->n_crit; i++) {
+        const double th = out->crit_theta_rad[i];
+        if (out->crit_kind[i] == 1 && th > 0.0 && th < M_PI)
+            ends[n_ends++] = th;
+    }
+    ends[n_ends++] = M_PI;
+    out->n_wells = 0;
+    for (int j = 0; j + 1 < n_ends && out->n_wells < TIPPE_THEORY_MAX_WELLS; j++) {
+        tippe_theory_well *wl = &out->well[out->n_wells++];
+        const double lo = ends[j], hi = ends[j + 1];
+        wl->theta_lo_rad = lo;
+        wl->theta_hi_rad = hi;
+        wl->V_escape = INFINITY;
+        wl->flat = 0;
+        int best = -1, best_is_min = 0;
+        for (int i = 0; i < out->n_crit; i++) {
+            const double th = out->crit_theta_rad[i];
+            if (th < lo || th > hi)
+                continue;
+            if (out->crit_degenerate[i])
+                wl->flat = 1;
+            const int interior_max = out->crit_kind[i] == 1 && th > 0.0 && th < M_PI;
+            if (interior_max) {
+                if (out->crit_V[i] < wl->V_escape)
+                    wl->V_escape = out->crit_V[i];
+                continue;
+            }
+            const int is_min = out->crit_kind[i] == -1;
+            if (best < 0 || (is_min && !best_is_min) ||
+                (is_min == best_is_min && out->crit_V[i] < out->crit_V[best])) {
+                best = i;
+                best_is_min = is_min;
+            }
+        }
+        if (best < 0) { /* cannot happen with a sign change on each side; be safe */
+            wl->flat = 1;
+            wl->theta_min_rad = 0.5 * (lo + hi);
+            wl->V_min = NAN;
+            wl->curvature = 0.0;
+            continue;
+        }
+        if (!best_is_min)
+            wl->flat = 1;
+        wl->theta_min_rad = out->crit_theta_rad[best];
+        wl->V_min = out->crit_V[best];
+    }
+}
+
+/* V'' at theta by the closed forms of find_critical_points (G = 0 there). */
+static double curvature_at(const tippe_top *top, double g, const wells_ctx *w, double theta)
+{
+    const double mgR = top->m * g * top->R, x = cos(theta), s = sin(theta);
+    const double P = (x - w->e) * (x - w->e) + w->k * s * s;
+    if (theta == 0.0 || theta == M_PI) {
+        const double Gx = poly_eval(&w->G, theta == 0.0 ? 1.0 : -1.0);
+        return (theta == 0.0 ? mgR : -mgR) * Gx / (P * P);
+    }
+    const poly dG = poly_deriv(&w->G);
+    return -mgR * s * s * poly_eval(&dG, x) / (P * P);
+}
+
+int tippe_theory_find_wells(const tippe_top *top, double g, double J, tippe_theory_wells *out,
+                            tippe_error *err)
+{
+    int rc = check_top(top, g, err);
+    if (rc)
+        return rc;
+    if (!isfinite(J))
+        return tippe_error_set(err, TIPPE_EINPUT, "theory: Jellett invariant J = %g is not finite",
+                               J);
+    *out = (tippe_theory_wells){0};
+    out->J = J;
+    wells_ctx w;
+    wells_ctx_init(&w, top, g, J);
+    find_critical_points(top, g, &w, out);
+    build_wells(out);
+    for (int i = 0; i < out->n_wells; i++) {
+        tippe_theory_well *wl = &out->well[i];
+        wl->curvature = curvature_at(top, g, &w, wl->theta_min_rad);
+        if (!(wl->curvature > 0.0))
+            wl->flat = 1;
+    }
+    return TIPPE_OK;
+}
+
+int tippe_theory_well_index(const tippe_theory_wells *w, double theta)
+{
+    for (int i = 0; i < w->n_wells; i++)
+        if (theta <= w->well[i].theta_hi_rad)
+            return i;
+    return w->n_wells - 1;
+}
+
+/* Where V = E between a (V(a) <= E) and b (V(b) > E), V monotone in between. */
+static double level_crossing(const tippe_top *top, double g, double J, double E, double a,
+                             double b)
+{
+    for (int it = 0; it < 200; it++) {
+        const double mid = 0.5 * (a + b);
+        if (mid == a || mid == b || fabs(b - a) < 1e-14)
+            break;
+        if (tippe_theory_potential(top, g, J, mid) <= E)
+            a = mid;
+        else
+            b = mid;
+    }
+    return a;
+}
+
+void tippe_theory_well_range(const tippe_top *top, double g, const tippe_theory_wells *w, int i,
+                             double E, double *lo, double *hi)
+{
+    const tippe_theory_well *wl = &w->well[i];
+    const double th0 = wl->theta_min_rad;
+    *lo = *hi = th0;
+    if (!(E > wl->V_min))
+        return;
+    *lo = tippe_theory_potential(top, g, w->J, wl->theta_lo_rad) <= E
+              ? wl->theta_lo_rad
+              : level_crossing(top, g, w->J, E, th0, wl->theta_lo_rad);
+    *hi = tippe_theory_potential(top, g, w->J, wl->theta_hi_rad) <= E
+              ? wl->theta_hi_rad
+              : level_crossing(top, g, w->J, E, th0, wl->theta_hi_rad);
+}

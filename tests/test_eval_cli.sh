@@ -58,7 +58,7 @@ done
 
 # --- usage ------------------------------------------------------------------
 expect_fail "no --z2" 2 "--z2" -- eval "$base"
-expect_fail "bad --z2" 2 "'abc' is not a number" -- eval "$base" --z2 abc
+expect_fail "bad --z2" 2 "--z2 'abc': expected a number of mm" -- eval "$base" --z2 abc
 expect_fail "unknown option" 2 "unknown option '--frobnicate'" -- eval "$base" --z2 1 --frobnicate
 expect_fail "no design" 2 "no design file" -- eval --z2 1
 expect_fail "missing file" 2 "$tmp/nope.json" "cannot open" -- eval "$tmp/nope.json" --z2 1
@@ -133,5 +133,17 @@ expect_fail "override unknown part" 2 "--set parts.axle.material=nylon" "no part
 expect_fail "override bad value" 2 "parts[2].height_mm: must be positive" "set by --set parts.weight.height_mm=0" -- eval "$base" --z2 1 --set parts.weight.height_mm=0
 expect_fail "override unknown field" 2 "'radius' is not a design field" -- eval "$base" --z2 1 --set radius=30
 expect_fail "override not JSON" 2 "'five' is not a JSON value" -- eval "$base" --z2 1 --set parts.weight.height_mm=five
+
+# --- group and subgroup: eval's are those classify gives for eval's A/C, eps/R --
+for z in 0 20; do
+    "$tippe" eval designs/m3-setscrew.json --z2 $z --json >"$tmp/g.json" 2>&1
+    k=$(python3 -c "import json; o=json.load(open('$tmp/g.json')); print(repr(o['A_over_C']), repr(o['eps_over_R']))")
+    "$tippe" classify --A-over-C ${k% *} --eps-over-R ${k#* } --json >"$tmp/c.json" 2>&1
+    check "eval --z2 $z: group and subgroup as classify's" python3 -c "
+import json; e=json.load(open('$tmp/g.json')); c=json.load(open('$tmp/c.json'))
+assert (e['group'], e['subgroup']) == (c['group'], c['subgroup']), (e['subgroup'], c['subgroup'])"
+    "$tippe" eval designs/m3-setscrew.json --z2 $z >"$tmp/g.txt" 2>&1
+    check "eval --z2 $z text names the subgroup" grep -q "subgroup $(python3 -c "import json; print(json.load(open('$tmp/c.json'))['subgroup'])")" "$tmp/g.txt"
+done
 
 finish

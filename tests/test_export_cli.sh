@@ -196,10 +196,10 @@ expect_fail "a void that removes the whole body" 2 "nothing of the printed parts
 check "nothing written for it" test ! -e "$tmp/allgone"
 json_edit designs/m12-setscrew.json "$tmp/metal.json" 'd["parts"][0]["material"] = "steel"'
 expect_fail "a design with nothing printable" 2 "nothing to print" -- export "$tmp/metal.json" -o "$tmp/metal"
-expect_fail "chord out of range" 2 "0.001 .. 1 mm" -- export designs/m12-setscrew.json -o "$tmp/bad" --chord-mm 0
+expect_fail "chord out of range" 2 "from 0.001 to 1" -- export designs/m12-setscrew.json -o "$tmp/bad" --chord-mm 0
 check "bad usage leaves nothing" test ! -e "$tmp/bad"
 expect_fail "unknown format" 2 "unknown format 'obj'" -- export designs/m12-setscrew.json -o "$tmp/bad" --format stl,obj
-expect_fail "no output directory" 2 "-o DIR is required" -- export designs/m12-setscrew.json
+expect_fail "no output directory" 2 "--output DIR is required" -- export designs/m12-setscrew.json
 touch "$tmp/afile"
 expect_fail "output is a file" 2 "not a directory" -- export designs/m12-setscrew.json -o "$tmp/afile"
 expect_fail "z2 outside the travel" 2 "outside the design's travel" -- export designs/m12-setscrew.json -o "$tmp/bad" --z2 40

@@ -17,6 +17,8 @@
 #include "tippe/error.h"
 #include "tippe/top.h"
 
+#include <stddef.h>
+
 typedef struct tippe_design tippe_design; /* opaque */
 
 /* Loads path, applies the overrides ("parts.rod.material=nylon",
@@ -84,6 +86,31 @@ int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
  * 0 for bought hardware, for a material without the flag, for a density given
  * inline and for i out of range. */
 int tippe_design_part_printable(const tippe_design *d, int i);
+
+/* d's file loaded again with d's overrides and then extra ones, every field
+ * checked but not the layout (overlaps, travel, the sphere's surface): for
+ * sensitivities, where a tolerance may move a part a fraction of a mm into
+ * its neighbour. The result has no physical travel (use its geometry only). */
+int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_extra,
+                        tippe_design **out, tippe_error *err);
+
+/* The value of a number field as --set addresses it ("radius_mm",
+ * "parts.screw.height_mm", "parts[2].z_mm"; a part's density_g_cm3 whether
+ * given inline or by material) in the loaded design. *part_index is the part,
+ * or -1 for radius_mm. TIPPE_EINPUT with why filled (no such part, not a
+ * number field of that shape, a height the clip decides, the radius of the
+ * part forming the sphere, a void's density). */
+int tippe_design_field(const tippe_design *d, const char *field, double *value, int *part_index,
+                       char *why, size_t why_cap);
+
+/* The length fields part i has in the file (not the sphere's radius for the
+ * part forming the sphere, nor a height a clip decides, nor a zero inner
+ * radius), at most cap of them, into keys; returns how many. */
+int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, int cap);
+
+/* Whether part i is the fixed ball or shell whose outer surface is the sphere
+ * the top rolls on (radius radius_mm, centred). */
+int tippe_design_forms_sphere(const tippe_design *d, int i);
 
 /* The solid of part i, for exporters that rebuild its shape (mm). Fields that
  * the shape does not use are 0. clip_radius_mm is the ball the part is

@@ -51,6 +51,12 @@ typedef enum {
     TIPPE_SWEEP_N_BOUNDARIES
 } tippe_sweep_boundary;
 
+/* The boundary functions at z2_mm (the list above, in this enum's order; a
+ * boundary is where its function changes sign). TIPPE_EINPUT where the path
+ * leaves the classification's domain. */
+int tippe_sweep_boundary_values(const tippe_sweep_path *path, double z2_mm,
+                                double g[TIPPE_SWEEP_N_BOUNDARIES], tippe_error *err);
+
 /* The boundary's name, as tippe_theory_class.boundary spells it. */
 const char *tippe_sweep_boundary_name(tippe_sweep_boundary b);
 

@@ -133,4 +133,65 @@ int tippe_theory_predict(const tippe_top *top, double g, double J, tippe_theory_
 
 const char *tippe_final_kind_name(tippe_final_kind kind); /* "no_tip", "tip", "hang" */
 
+/* ---- Effective potential and its wells (docs/dynamics.md, "Proved verdicts") ----
+ *
+ * V(theta; J) = m g (R - eps cos theta) + J^2 / (2 D(theta)),
+ * D(theta) = A R^2 sin^2 theta + C (R cos theta - eps)^2:
+ * the least energy (section 4) of any state at angle theta with Jellett invariant J
+ * (eq 3.20), reached with no sliding, theta_dot = 0 and the spin/precession split
+ * that minimises the kinetic energy for that J. In J. Along a motion in contact,
+ * E(t) >= V(theta(t); J). */
+double tippe_theory_potential(const tippe_top *top, double g, double J, double theta);
+/* dV/dtheta, in J/rad. */
+double tippe_theory_potential_slope(const tippe_top *top, double g, double J, double theta);
+
+enum { TIPPE_THEORY_MAX_CRIT = 10, TIPPE_THEORY_MAX_WELLS = 3 };
+
+/* A well of V: the interval between two neighbouring interior maxima (or 0, pi:
+ * the poles separate nothing, theta passes through them), holding exactly one
+ * local minimum. */
+typedef struct {
+    double theta_min_rad;   /* the minimum, to ~1e-14 rad: a steady state (Theorem 5.1) */
+    double V_min;           /* J */
+    double theta_lo_rad, theta_hi_rad; /* its ends: interior maxima, or 0 and pi */
+    double V_escape;        /* J, the lower of the V at its interior maxima (INFINITY if none):
+                               with E below this, theta can never leave the well */
+    double curvature;       /* J/rad^2, V'' at the minimum (> 0) */
+    int flat;               /* 1 if the minimum or an end is degenerate (V'' ~ 0 there,
+                               or a double critical point nearby): no decision there */
+} tippe_theory_well;
+
+typedef struct {
+    double J;                                  /* the J they were computed for */
+    int n_crit;                                /* critical points in [0, pi], sorted */
+    double crit_theta_rad[TIPPE_THEORY_MAX_CRIT];
+    int crit_kind[TIPPE_THEORY_MAX_CRIT];      /* -1 minimum, +1 maximum, 0 neither (a
+                                                  double point where V' keeps its sign) */
+    int crit_degenerate[TIPPE_THEORY_MAX_CRIT]; /* 1 if |V''| is below 1e-9 of its scale */
+    double crit_V[TIPPE_THEORY_MAX_CRIT];      /* J */
+    int n_wells;
+    tippe_theory_well well[TIPPE_THEORY_MAX_WELLS];
+} tippe_theory_wells;
+
+/* All critical points of V(.; J) on [0, pi] and its wells. The critical points are
+ * theta = 0, pi (always) and the roots in (-1, 1) of the quartic in x = cos theta
+ *   G(x) = e P(x)^2 - T ((k - 1) x + e),  P(x) = (x - e)^2 + k (1 - x^2),
+ *   T = J^2 / (m g C R^3),
+ * since dV/dtheta = m g R sin(theta) G(cos theta) / P^2; G = 0 is eq 5.10 (the
+ * intermediate states). The roots are isolated on intervals where G is monotone,
+ * found from the roots of G', whose own monotone pieces come from the quadratic
+ * G'' in closed form: a subdivision proven complete, no sampling. A critical point
+ * where |V''| < 1e-9 of its natural scale (m g eps + J^2 / (C R^2)) is degenerate
+ * and makes the wells it touches flat. TIPPE_EINPUT for a bad top, g or J. */
+int tippe_theory_find_wells(const tippe_top *top, double g, double J, tippe_theory_wells *out,
+                            tippe_error *err);
+
+/* The index of the well whose [theta_lo, theta_hi] holds theta (the lower on a tie). */
+int tippe_theory_well_index(const tippe_theory_wells *w, double theta);
+
+/* The part of well i where V <= E: [*lo, *hi] around its minimum, found by bisection
+ * on the monotone sides to 1e-14 rad. E below V_min gives lo = hi = theta_min. */
+void tippe_theory_well_range(const tippe_top *top, double g, const tippe_theory_wells *w, int i,
+                             double E, double *lo, double *hi);
+
 #endif

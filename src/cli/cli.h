@@ -41,6 +41,81 @@ int tippe_cli_export(int argc, char **argv);
  * only if it cannot (2, with a message) or if not under mpirun (0). */
 int tippe_cli_mpi_reexec(int argc, char **argv);
 
+/* ---- the option parser every verb uses (src/cli/options.c) ----
+ *
+ * A verb describes its options in one table; the same table drives the
+ * parsing (getopt_long: "--opt=value" and "--opt value", "-n 5") and the
+ * generated --help. Numbers are checked against their allowed range, and a
+ * number whose unit is one of the unit families below may carry a unit
+ * suffix, converted to the option's unit:
+ *   rad/s (spin and other angular rates): 125rad/s, 20rev/s, 1200rpm
+ *   mm (lengths): 5mm, 0.5cm, 0.005m          rad (angles): 0.1rad, 6deg
+ * A number without a suffix is in the option's unit. */
+typedef enum {
+    TIPPE_CLI_FLAG,   /* no value; int *value = 1 */
+    TIPPE_CLI_STRING, /* const char **value = the text as typed */
+    TIPPE_CLI_DOUBLE, /* double *value, finite, in min .. max */
+    TIPPE_CLI_LONG,   /* long *value, whole, in min .. max */
+    TIPPE_CLI_RANGE,  /* tippe_cli_range *value: "X", "FROM:TO" or "FROM:TO:STEPS" */
+    TIPPE_CLI_SET     /* tippe_cli_sets *value: appends the text (repeatable) */
+} tippe_cli_kind;
+
+/* A range of numbers: "X" (from = to = X, steps 1), "FROM:TO" (steps 0) or,
+ * for an option with max_steps > 0, "FROM:TO:STEPS" (STEPS in 1 .. max_steps). */
+typedef struct {
+    double from, to;
+    long steps;
+} tippe_cli_range;
+
+typedef struct tippe_cli_opt {
+    const char *name;  /* long name without "--"; NULL ends the table */
+    char short_name;   /* e.g. 'n' for -n, 0 if none */
+    tippe_cli_kind kind;
+    void *value;       /* where the value goes (see tippe_cli_kind) */
+    const char *arg;   /* the value's placeholder in --help, e.g. "FILE" (default: UNIT or X) */
+    const char *unit;  /* unit of the value, e.g. "mm"; NULL for none */
+    double min, max;   /* allowed values (DOUBLE, LONG, both ends of a RANGE) */
+    const char *def;   /* the default as shown in --help; NULL: no default */
+    const char *help;  /* one line or more ("\n" starts a continuation line) */
+    int required;      /* 1: the verb cannot run without it */
+    long max_steps;    /* RANGE: largest STEPS; 0: "FROM:TO" without steps */
+    const char *field; /* with value a tippe_cli_sets *: the option is a shorthand
+                        * for --set FIELD=VALUE (numbers in the option's unit) */
+    int seen;          /* set by tippe_cli_parse: the option was given */
+} tippe_cli_opt;
+
+typedef struct {
+    const char *verb;
+    const char *synopsis; /* after "usage: tippe VERB " */
+    const char *about;    /* paragraph before the options */
+    const char *after;    /* text after the options: outputs, exit status, docs */
+    tippe_cli_opt *opts;  /* ends with {NULL}; --help is added */
+    int min_args, max_args;  /* positional arguments (files) */
+    const char *args_name;   /* what they are, for messages: "design file" */
+} tippe_cli_spec;
+
+enum { TIPPE_CLI_HELP = -1 };
+
+/* Largest |Z2| any verb accepts, mm: a top a metre across is not a tippe top. */
+#define TIPPE_CLI_Z2_MAX_MM 1000.0
+
+/* Parses argv[1 .. argc-1] (argv[0] is the verb) into the options' values and
+ * the positional arguments into args[0 .. *n_args-1] (room for max_args).
+ * Returns 0, TIPPE_CLI_HELP after printing --help on stdout (the verb exits
+ * 0), or 2 after a usage error on stderr. */
+int tippe_cli_parse(tippe_cli_spec *spec, int argc, char **argv, const char **args,
+                    int *n_args);
+
+/* Prints the --help generated from spec. */
+void tippe_cli_help(const tippe_cli_spec *spec, FILE *out);
+
+/* Reads text as a number in unit (with an optional unit suffix of unit's
+ * family): 1 if it is one, else 0. */
+int tippe_cli_parse_unit(const char *text, const char *unit, double *out);
+
+/* The option of the table called name (without "--"), or NULL. */
+tippe_cli_opt *tippe_cli_find_opt(tippe_cli_spec *spec, const char *name);
+
 /* ---- argument plumbing every verb shares (src/cli/common.c) ---- */
 
 /* Prints "tippe VERB: MESSAGE (try tippe VERB --help)" on stderr; returns 2. */

@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include "tippe/design.h"
+#include "tippe/theory.h"
 
 #include <cjson/cJSON.h>
 
@@ -9,27 +10,6 @@
 #include <string.h>
 
 static const char *const VERB = "eval";
-
-static void eval_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: tippe eval DESIGN.json --z2 MM [--json] [--set FIELD=VALUE ...]\n"
-            "\n"
-            "Mass, centre of mass and moments of inertia of a design with the midpoint of its\n"
-            "moving weight at height Z2 above the sphere's centre.\n"
-            "\n"
-            "  --z2 MM            position of the moving weight, mm (within the design's travel)\n"
-            "  --json             print one JSON object (SI units) instead of the table\n"
-            "  --set FIELD=VALUE  change a field of the design before it is checked, e.g.\n"
-            "                     --set parts.rod.material=nylon  --set radius_mm=30\n"
-            "                     --set parts.weight.height_mm=5  (VALUE null removes a field)\n"
-            "  --help             this text\n"
-            "\n"
-            "The table gives g, mm and g mm^2; A is about a transverse axis through the centre\n"
-            "of mass, C about the symmetry axis; eps is the distance from the sphere's centre to\n"
-            "the centre of mass. Exit status: 0 ok, 2 bad usage or design, 1 computation failed.\n"
-            "The design format is described in docs/design-format.md.\n");
-}
 
 static const char *side_text(int com_side)
 {
@@ -57,6 +37,11 @@ static void print_table(const tippe_design *d, double z2_mm, const tippe_top *t)
     printf("A        %10.2f g mm^2 (transverse, through the centre of mass)\n", t->A * g_mm2);
     printf("C        %10.2f g mm^2 (axial)\n", t->C * g_mm2);
     printf("A/C      %10.6f        (A/C - 1 = %+.6f)\n", t->A / t->C, t->A / t->C - 1);
+    tippe_theory_class cls;
+    if (tippe_theory_classify(t->A / t->C, t->eps / t->R, &cls) == TIPPE_OK)
+        printf("group    %s, subgroup %s of Theorem 5.1%s%s (tippe classify tells more)\n",
+               tippe_group_family(cls.group), tippe_group_name(cls.group),
+               cls.boundary ? ", on the boundary " : "", cls.boundary ? cls.boundary : "");
     printf("\n%-12s %-9s %-7s %-12s %9s %12s\n", "part", "shape", "role", "material",
            "g/cm^3", "mass g");
     int n = tippe_design_n_parts(d);
@@ -94,6 +79,12 @@ static cJSON *to_json(const tippe_design *d, double z2_mm, const tippe_top *t)
              cJSON_AddNumberToObject(o, "C_kg_m2", t->C) &&
              cJSON_AddNumberToObject(o, "A_over_C", t->A / t->C) &&
              cJSON_AddNumberToObject(o, "com_side", t->com_side);
+    tippe_theory_class cls;
+    if (ok && tippe_theory_classify(t->A / t->C, t->eps / t->R, &cls) == TIPPE_OK)
+        ok = cJSON_AddStringToObject(o, "group", tippe_group_family(cls.group)) &&
+             cJSON_AddStringToObject(o, "subgroup", tippe_group_name(cls.group)) &&
+             (cls.boundary ? cJSON_AddStringToObject(o, "boundary", cls.boundary)
+                           : cJSON_AddNullToObject(o, "boundary")) != NULL;
     double tr[2] = {from, to}, ct[2] = {cfrom, cto};
     cJSON *a1 = cJSON_CreateDoubleArray(tr, 2);
     if (a1 && !cJSON_AddItemToObject(o, "travel_mm", a1)) {
@@ -137,42 +128,46 @@ static cJSON *to_json(const tippe_design *d, double z2_mm, const tippe_top *t)
 
 int tippe_cli_eval(int argc, char **argv)
 {
-    const char *path = NULL, *z2_text = NULL, *v;
-    tippe_cli_sets sets = {.n = 0};
+    double z2_mm = 0.0;
     int json = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (tippe_cli_is_help(a)) {
-            eval_usage(stdout);
-            return 0;
-        } else if (!strcmp(a, "--json")) {
-            json = 1;
-        } else if (tippe_cli_option(VERB, argc, argv, &i, "--z2", 1, &v)) {
-            if (!v)
-                return 2;
-            z2_text = v;
-        } else if (tippe_cli_option(VERB, argc, argv, &i, "--set", 1, &v)) {
-            if (!v || tippe_cli_add_set(VERB, &sets, v))
-                return 2;
-        } else if (tippe_cli_is_option(a, 0)) {
-            return tippe_cli_usage_error(VERB, "unknown option '%s'", a);
-        } else if (!path) {
-            path = a;
-        } else {
-            return tippe_cli_usage_error(VERB, "one design file only (got also '%s')", a);
-        }
-    }
-    if (!path)
-        return tippe_cli_usage_error(VERB, "no design file given");
-    if (!z2_text)
-        return tippe_cli_usage_error(VERB, "--z2 MM is required (position of the moving weight)");
-    double z2_mm;
-    if (tippe_cli_number(VERB, "--z2", z2_text, "mm", &z2_mm))
-        return 2;
+    tippe_cli_sets sets = {.n = 0};
+    tippe_cli_opt opts[] = {
+        {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &z2_mm, .arg = "MM", .unit = "mm",
+         .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM, .required = 1,
+         .help = "position of the moving weight's midpoint above the sphere's centre\n"
+                 "(within the design's travel)"},
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &json,
+         .help = "print one JSON object (SI units) instead of the table"},
+        {.name = "set", .kind = TIPPE_CLI_SET, .value = &sets, .arg = "FIELD=VALUE",
+         .help = "change a field of the design before it is checked (repeatable), e.g.\n"
+                 "--set parts.rod.material=nylon  --set radius_mm=30\n"
+                 "--set parts.weight.height_mm=5  (VALUE null removes a field)"},
+        {NULL},
+    };
+    tippe_cli_spec spec = {
+        .verb = VERB,
+        .synopsis = "DESIGN.json --z2 MM [--json] [--set FIELD=VALUE ...]",
+        .about = "Mass, centre of mass and moments of inertia of a design with the midpoint of\n"
+                 "its moving weight at height Z2 above the sphere's centre, and the group of\n"
+                 "Theorem 5.1 that its A/C and eps/R fall in.",
+        .after = "The table gives g, mm and g mm^2; A is about a transverse axis through the\n"
+                 "centre of mass, C about the symmetry axis; eps is the distance from the\n"
+                 "sphere's centre to the centre of mass. Exit status: 0 ok, 2 bad usage or\n"
+                 "design, 1 computation failed. The design format: docs/design-format.md.",
+        .opts = opts,
+        .min_args = 1,
+        .max_args = 1,
+        .args_name = "design file",
+    };
+    const char *path = NULL;
+    int n_args = 0;
+    int rc = tippe_cli_parse(&spec, argc, argv, &path, &n_args);
+    if (rc)
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
 
     tippe_error err = {0};
     tippe_design *d = NULL;
-    int rc = tippe_design_load(path, sets.item, sets.n, &d, &err);
+    rc = tippe_design_load(path, sets.item, sets.n, &d, &err);
     tippe_top top;
     if (!rc)
         rc = tippe_design_top(d, z2_mm, &top, &err);

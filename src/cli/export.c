@@ -16,46 +16,6 @@
 
 static const char *const VERB = "export";
 
-static void export_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: tippe export DESIGN.json -o DIR [--z2 MM] [--format LIST] [--chord-mm MM]\n"
-            "                    [--clearance-mm MM] [--min-wall-mm MM] [--split [--split-z MM]]\n"
-            "                    [--json] [--set FIELD=VALUE ...]\n"
-            "\n"
-            "Writes what a maker prints from: every fixed part of a printable material, less\n"
-            "the voids cut from it, as one solid per printed body.\n"
-            "\n"
-            "  -o DIR             output directory (created if missing; its parent must exist)\n"
-            "  --format LIST      comma-separated, default stl,3mf,scad,svg,png:\n"
-            "                       stl   binary STL per body      DIR/STEM-BODY.stl\n"
-            "                       3mf   all bodies in one 3MF    DIR/STEM.3mf\n"
-            "                       scad  OpenSCAD source          DIR/STEM.scad\n"
-            "                       svg, png, pdf  section drawing DIR/STEM-section.EXT\n"
-            "                     (STEM is the design file's name without .json)\n"
-            "  --z2 MM            moving weight's place in the drawing and the OpenSCAD file,\n"
-            "                     mm (default: the middle of the design's travel)\n"
-            "  --chord-mm MM      largest distance from the mesh to the true surface, mm\n"
-            "                     (default 0.01; 0.001 .. 1); half goes to the profile's arcs,\n"
-            "                     half to the steps around the axis\n"
-            "  --clearance-mm MM  radial clearance of holes that take hardware, mm (default\n"
-            "                     0.2; 0 .. 2). Printed only: the mass model (eval, sweep)\n"
-            "                     keeps the design's hole\n"
-            "  --min-wall-mm MM   warn about printed walls thinner than this, mm (default 0.9:\n"
-            "                     two 0.45 mm perimeters)\n"
-            "  --split            cut each body at a plane across the axis into two halves, each\n"
-            "                     written standing on its flat cut face (no supports needed)\n"
-            "  --split-z MM       height of the cut plane above the centre, mm (default 0)\n"
-            "  --json             print the report as one JSON object\n"
-            "  --set FIELD=VALUE  change a field of the design first (see tippe eval --help)\n"
-            "  --help             this text\n"
-            "\n"
-            "Each mesh is checked before it is written (closed, manifold, outward, no\n"
-            "degenerate facet) and the report gives its volume beside the exact volume of\n"
-            "the body. Exit status: 0 ok, 2 bad usage or design (or nothing printable),\n"
-            "1 a file could not be written. See docs/export.md.\n");
-}
-
 static int parse_formats(const char *text, unsigned *out)
 {
     static const struct {
@@ -97,86 +57,6 @@ static int make_dir(const char *dir)
     if (mkdir(dir, 0777) != 0)
         return tippe_cli_usage_error(VERB, "-o %s: cannot create the directory: %s", dir,
                                      strerror(errno));
-    return 0;
-}
-
-typedef struct {
-    const char *path, *dir;
-    const char *z2_text;
-    const char *values[5]; /* chord, clearance, min wall, split z */
-    unsigned formats;
-    int split, json;
-    tippe_cli_sets sets;
-} export_args;
-
-static int parse_args(int argc, char **argv, export_args *a)
-{
-    static const char *const number_opts[] = {"--chord-mm", "--clearance-mm", "--min-wall-mm",
-                                              "--split-z"};
-    const char *v;
-    a->formats = TIPPE_EXPORT_STL | TIPPE_EXPORT_3MF | TIPPE_EXPORT_SCAD | TIPPE_EXPORT_SVG |
-                 TIPPE_EXPORT_PNG;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        int matched = 0;
-        if (tippe_cli_is_help(arg)) {
-            export_usage(stdout);
-            return -1;
-        } else if (!strcmp(arg, "--json")) {
-            a->json = 1;
-        } else if (!strcmp(arg, "--split")) {
-            a->split = 1;
-        } else if (tippe_cli_option(VERB, argc, argv, &i, "-o", 0, &v) ||
-                   tippe_cli_option(VERB, argc, argv, &i, "--output", 1, &v)) {
-            if (!v)
-                return 2;
-            a->dir = v;
-        } else if (tippe_cli_option(VERB, argc, argv, &i, "--z2", 1, &v)) {
-            if (!v)
-                return 2;
-            a->z2_text = v;
-        } else if (tippe_cli_option(VERB, argc, argv, &i, "--format", 1, &v)) {
-            if (!v || parse_formats(v, &a->formats))
-                return 2;
-        } else if (tippe_cli_option(VERB, argc, argv, &i, "--set", 1, &v)) {
-            if (!v || tippe_cli_add_set(VERB, &a->sets, v))
-                return 2;
-        } else {
-            for (int k = 0; k < 4 && !matched; k++)
-                if (tippe_cli_option(VERB, argc, argv, &i, number_opts[k], 1, &v)) {
-                    if (!v)
-                        return 2;
-                    a->values[k] = v;
-                    matched = 1;
-                }
-            if (matched)
-                continue;
-            if (tippe_cli_is_option(arg, 0))
-                return tippe_cli_usage_error(VERB, "unknown option '%s'", arg);
-            if (a->path)
-                return tippe_cli_usage_error(VERB, "one design file only (got also '%s')", arg);
-            a->path = arg;
-        }
-    }
-    if (!a->path)
-        return tippe_cli_usage_error(VERB, "no design file given");
-    if (!a->dir)
-        return tippe_cli_usage_error(VERB, "-o DIR is required (where the files go)");
-    if (a->values[3] && !a->split)
-        return tippe_cli_usage_error(VERB, "--split-z needs --split");
-    return 0;
-}
-
-/* The numbers of the request, with their ranges checked by the library. */
-static int read_numbers(const export_args *a, tippe_export_request *q)
-{
-    static const char *const names[] = {"--chord-mm", "--clearance-mm", "--min-wall-mm",
-                                        "--split-z"};
-    double *dst[] = {&q->profile.chord_mm, &q->profile.clearance_mm, &q->profile.min_wall_mm,
-                     &q->profile.split_z_mm};
-    for (int k = 0; k < 4; k++)
-        if (a->values[k] && tippe_cli_number(VERB, names[k], a->values[k], "mm", dst[k]))
-            return 2;
     return 0;
 }
 
@@ -292,27 +172,83 @@ static cJSON *to_json(const tippe_design *d, const tippe_export_request *q,
 
 int tippe_cli_export(int argc, char **argv)
 {
-    export_args a = {0};
-    int rc = parse_args(argc, argv, &a);
-    if (rc)
-        return rc < 0 ? 0 : rc;
-    tippe_export_request q = {.profile = tippe_profile_defaults(), .formats = a.formats,
-                              .dir = a.dir};
-    q.profile.split = a.split;
-    if (read_numbers(&a, &q))
-        return 2;
+    tippe_export_request q = {.profile = tippe_profile_defaults()};
+    const char *dir = NULL, *formats = "stl,3mf,scad,svg,png";
     double z2_mm = NAN;
-    if (a.z2_text && tippe_cli_number(VERB, "--z2", a.z2_text, "mm", &z2_mm))
+    int json = 0;
+    tippe_cli_sets sets = {.n = 0};
+    tippe_cli_opt opts[] = {
+        {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &dir,
+         .arg = "DIR", .required = 1,
+         .help = "output directory (created if missing; its parent must exist)"},
+        {.name = "format", .kind = TIPPE_CLI_STRING, .value = &formats, .arg = "LIST",
+         .def = "stl,3mf,scad,svg,png",
+         .help = "comma-separated: stl (binary STL per body, DIR/STEM-BODY.stl),\n"
+                 "3mf (all bodies, DIR/STEM.3mf), scad (OpenSCAD source, DIR/STEM.scad),\n"
+                 "svg, png, pdf (section drawing, DIR/STEM-section.EXT);\n"
+                 "STEM is the design file's name without .json"},
+        {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &z2_mm, .arg = "MM", .unit = "mm",
+         .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
+         .def = "middle of the travel",
+         .help = "the moving weight's place in the drawing and the OpenSCAD file"},
+        {.name = "chord-mm", .kind = TIPPE_CLI_DOUBLE, .value = &q.profile.chord_mm,
+         .arg = "MM", .unit = "mm", .min = 0.001, .max = 1, .def = "0.01",
+         .help = "largest distance from the mesh to the true surface; half goes to the\n"
+                 "profile's arcs, half to the steps around the axis"},
+        {.name = "clearance-mm", .kind = TIPPE_CLI_DOUBLE, .value = &q.profile.clearance_mm,
+         .arg = "MM", .unit = "mm", .min = 0, .max = 2, .def = "0.2",
+         .help = "radial clearance of holes that take hardware; printed only: the mass\n"
+                 "model (eval, sweep) keeps the design's hole"},
+        {.name = "min-wall-mm", .kind = TIPPE_CLI_DOUBLE, .value = &q.profile.min_wall_mm,
+         .arg = "MM", .unit = "mm", .min = 0, .max = 10, .def = "0.9",
+         .help = "warn about printed walls thinner than this (two 0.45 mm perimeters)"},
+        {.name = "split", .kind = TIPPE_CLI_FLAG, .value = &q.profile.split,
+         .help = "cut each body at a plane across the axis into two halves, each\n"
+                 "written standing on its flat cut face (no supports needed)"},
+        {.name = "split-z", .kind = TIPPE_CLI_DOUBLE, .value = &q.profile.split_z_mm,
+         .arg = "MM", .unit = "mm", .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
+         .def = "0", .help = "height of the cut plane above the sphere's centre (with --split)"},
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &json,
+         .help = "print the report as one JSON object"},
+        {.name = "set", .kind = TIPPE_CLI_SET, .value = &sets, .arg = "FIELD=VALUE",
+         .help = "change a field of the design before it is checked (repeatable)"},
+        {NULL},
+    };
+    tippe_cli_spec spec = {
+        .verb = VERB,
+        .synopsis = "DESIGN.json -o DIR [--z2 MM] [--format LIST] [--chord-mm MM]\n"
+                    "       [--clearance-mm MM] [--split [--split-z MM]] [--json]",
+        .about = "Writes what a maker prints from: every fixed part of a printable material,\n"
+                 "less the voids cut from it, as one solid per printed body; the OpenSCAD\n"
+                 "source of the whole top and its dimensioned section drawing.",
+        .after = "Each mesh is checked before it is written (closed, manifold, outward, no\n"
+                 "degenerate facet); the report gives its volume beside the exact volume of the\n"
+                 "body. Exit status: 0 ok, 2 bad usage or design (or nothing printable), 1 a\n"
+                 "file could not be written. See docs/export.md.",
+        .opts = opts,
+        .min_args = 1,
+        .max_args = 1,
+        .args_name = "design file",
+    };
+    const char *path = NULL;
+    int n_args = 0;
+    int rc = tippe_cli_parse(&spec, argc, argv, &path, &n_args);
+    if (rc)
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
+    if (tippe_cli_find_opt(&spec, "split-z")->seen && !q.profile.split)
+        return tippe_cli_usage_error(VERB, "--split-z needs --split");
+    if (parse_formats(formats, &q.formats))
         return 2;
+    q.dir = dir;
 
     tippe_error err = {0};
     tippe_design *d = NULL;
-    rc = tippe_design_load(a.path, a.sets.item, a.sets.n, &d, &err);
+    rc = tippe_design_load(path, sets.item, sets.n, &d, &err);
     if (rc)
         return tippe_cli_fail(VERB, &err, rc);
     double t0, t1;
     tippe_design_travel_mm(d, &t0, &t1);
-    q.z2_mm = a.z2_text ? z2_mm : 0.5 * (t0 + t1);
+    q.z2_mm = isnan(z2_mm) ? 0.5 * (t0 + t1) : z2_mm;
     tippe_top top;
     if ((rc = tippe_design_top(d, q.z2_mm, &top, &err))) {
         tippe_design_free(d);
@@ -332,7 +268,7 @@ int tippe_cli_export(int argc, char **argv)
             return fprintf(stderr, "tippe %s: out of memory\n", VERB), 1;
         return tippe_cli_fail(VERB, &err, err.code ? err.code : TIPPE_EINPUT);
     }
-    rc = make_dir(a.dir);
+    rc = make_dir(dir);
     for (int k = 0; !rc && k < np; k++)
         rc = tippe_cli_check_output(VERB, "-o", paths[k], 0);
     free(paths);
@@ -350,7 +286,7 @@ int tippe_cli_export(int argc, char **argv)
         tippe_design_free(d);
         return tippe_cli_fail(VERB, &err, rc);
     }
-    if (a.json)
+    if (json)
         rc = tippe_cli_print_json(VERB, to_json(d, &q, &r));
     else
         print_text(d, &q, &r);

@@ -4,6 +4,7 @@
 #include "tippe/design.h"
 #include "tippe/plot.h"
 #include "tippe/sweep.h"
+#include "tippe/sweep_bands.h"
 
 #include <cjson/cJSON.h>
 
@@ -226,10 +227,13 @@ int tippe_cli_sweep(int argc, char **argv)
     }
 
     tippe_sweep_result r;
+    tippe_sweep_bands_result b = {0};
     rc = tippe_sweep_design(d, from, to, NULL, &r, &err);
+    if (!rc)
+        rc = tippe_sweep_bands(d, &r, &b, &err);
     tippe_sweep_path p = tippe_sweep_design_path(d);
     if (!rc && plot)
-        rc = tippe_sweep_plot_zones(plot, &p, &r, tippe_design_name(d), &err);
+        rc = tippe_sweep_plot_zones_banded(plot, &p, &r, &b, tippe_design_name(d), &err);
     if (!rc && phase) {
         rc = tippe_sweep_plot_phase(phase, &p, &r, tippe_design_name(d), &err);
         if (rc && plot)
@@ -238,10 +242,17 @@ int tippe_cli_sweep(int argc, char **argv)
     if (rc) {
         rc = tippe_cli_fail(VERB, &err, rc);
     } else if (json) {
-        rc = tippe_cli_print_json(VERB, tippe_sweep_json(&r, d));
+        cJSON *o = tippe_sweep_json(&r, d);
+        if (o && tippe_sweep_json_add_bands(o, d, &r, &b)) {
+            cJSON_Delete(o);
+            o = NULL;
+        }
+        rc = tippe_cli_print_json(VERB, o);
     } else {
         tippe_sweep_print_table(stdout, &r, d);
+        tippe_sweep_print_bands(stdout, d, &r, &b);
     }
+    tippe_sweep_bands_free(&b);
     tippe_sweep_result_free(&r);
     tippe_design_free(d);
     return rc;

@@ -1,0 +1,394 @@
+/* The option parser of the tippe command (see cli.h): a verb's table of options
+ * drives getopt_long and the generated --help, so that every verb reads
+ * "--opt=value" and "--opt value" alike, checks numbers against the same kind
+ * of range and speaks one unit language. */
+#include "cli.h"
+
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { MAX_OPTS = 64, FIRST_LONG = 256 };
+
+/* Unit suffixes a number may carry, by family (the first row of a family is
+ * its base unit); a number is converted to its option's unit. */
+static const struct {
+    const char *family, *suffix;
+    double factor; /* value in the family's base unit per suffix unit */
+} units[] = {
+    {"rad/s", "rad/s", 1.0},
+    {"rad/s", "rev/s", 2.0 * M_PI},
+    {"rad/s", "rpm", 2.0 * M_PI / 60.0},
+    {"mm", "mm", 1.0},
+    {"mm", "cm", 10.0},
+    {"mm", "m", 1000.0},
+    {"rad", "rad", 1.0},
+    {"rad", "deg", M_PI / 180.0},
+};
+enum { N_UNITS = (int)(sizeof units / sizeof units[0]) };
+
+/* The row of unit in the table (its family's base), or -1. */
+static int unit_row(const char *unit)
+{
+    for (int i = 0; unit && i < N_UNITS; i++)
+        if (!strcmp(units[i].suffix, unit))
+            return i;
+    return -1;
+}
+
+int tippe_cli_parse_unit(const char *text, const char *unit, double *out)
+{
+    char *end = NULL;
+    double x = strtod(text, &end);
+    if (end == text || !isfinite(x))
+        return 0;
+    if (*end != '\0') {
+        int u = unit_row(unit);
+        if (u < 0)
+            return 0;
+        int k = 0;
+        while (k < N_UNITS &&
+               !(!strcmp(units[k].family, units[u].family) && !strcmp(units[k].suffix, end)))
+            k++;
+        if (k == N_UNITS)
+            return 0;
+        x *= units[k].factor / units[u].factor;
+    }
+    *out = x;
+    return isfinite(x);
+}
+
+tippe_cli_opt *tippe_cli_find_opt(tippe_cli_spec *spec, const char *name)
+{
+    for (tippe_cli_opt *o = spec->opts; o->name; o++)
+        if (!strcmp(o->name, name))
+            return o;
+    return NULL;
+}
+
+static int takes_value(const tippe_cli_opt *o)
+{
+    return o->kind != TIPPE_CLI_FLAG;
+}
+
+/* "--name" or "-n, --name", as the user types it. */
+static void opt_label(const tippe_cli_opt *o, char *buf, size_t size)
+{
+    if (o->short_name && !o->name[1] && o->name[0] == o->short_name)
+        snprintf(buf, size, "-%c", o->short_name);
+    else
+        snprintf(buf, size, "--%s", o->name);
+}
+
+/* The allowed values of o, e.g. "a number of mm from 0 to 100". */
+static void allowed_text(const tippe_cli_opt *o, char *buf, size_t size)
+{
+    const char *what = o->kind == TIPPE_CLI_LONG ? "a whole number" : "a number";
+    char unit[64] = "";
+    if (o->unit)
+        snprintf(unit, sizeof unit, " of %s", o->unit);
+    if (o->kind == TIPPE_CLI_RANGE) {
+        char steps[64] = "";
+        if (o->max_steps > 0)
+            snprintf(steps, sizeof steps, "[:STEPS] with STEPS 1 .. %ld", o->max_steps);
+        snprintf(buf, size, "X or FROM:TO%s, numbers%s from %g to %g", steps, unit, o->min,
+                 o->max);
+    } else {
+        snprintf(buf, size, "%s%s from %g to %g", what, unit, o->min, o->max);
+    }
+}
+
+static int bad_value(const tippe_cli_spec *spec, const tippe_cli_opt *o, const char *text,
+                     const char *why)
+{
+    char label[80], allowed[256];
+    opt_label(o, label, sizeof label);
+    allowed_text(o, allowed, sizeof allowed);
+    if (why)
+        return tippe_cli_usage_error(spec->verb, "%s '%s': %s", label, text, why);
+    return tippe_cli_usage_error(spec->verb, "%s '%s': expected %s", label, text, allowed);
+}
+
+static int in_range(const tippe_cli_opt *o, double x)
+{
+    return x >= o->min && x <= o->max;
+}
+
+/* "X", "FROM:TO" or "FROM:TO:STEPS" into r: 0, or 2 after the usage error. */
+static int parse_range(const tippe_cli_spec *spec, const tippe_cli_opt *o, const char *text,
+                       tippe_cli_range *r)
+{
+    char buf[256];
+    if (strlen(text) >= sizeof buf)
+        return bad_value(spec, o, text, "too long");
+    snprintf(buf, sizeof buf, "%s", text);
+    char *c1 = strchr(buf, ':'), *c2 = c1 ? strchr(c1 + 1, ':') : NULL;
+    if (c1)
+        *c1 = '\0';
+    if (c2)
+        *c2 = '\0';
+    double from, to;
+    long steps = c1 ? 0 : 1;
+    if (!tippe_cli_parse_unit(buf, o->unit, &from) ||
+        (c1 && !tippe_cli_parse_unit(c1 + 1, o->unit, &to)) ||
+        (c2 && (o->max_steps <= 0 || !tippe_cli_parse_long(c2 + 1, 1, o->max_steps, &steps))))
+        return bad_value(spec, o, text, NULL);
+    if (!c1)
+        to = from;
+    if (!in_range(o, from) || !in_range(o, to))
+        return bad_value(spec, o, text, NULL);
+    if (from > to || (steps > 1 && from == to) || (steps == 1 && c2 && from != to))
+        return bad_value(spec, o, text,
+                         steps == 1 ? "one step needs FROM = TO"
+                                    : "expected FROM < TO (FROM = TO with one step)");
+    r->from = from;
+    r->to = to;
+    r->steps = steps;
+    return 0;
+}
+
+/* Stores text as the value of o: 0, or 2 after a usage error. */
+static int store(const tippe_cli_spec *spec, tippe_cli_opt *o, const char *text)
+{
+    double x;
+    long l;
+    char num[64];
+    switch (o->kind) {
+    case TIPPE_CLI_FLAG:
+        *(int *)o->value = 1;
+        return 0;
+    case TIPPE_CLI_STRING:
+        if (o->field)
+            break;
+        *(const char **)o->value = text;
+        return 0;
+    case TIPPE_CLI_DOUBLE:
+        if (!tippe_cli_parse_unit(text, o->unit, &x) || !in_range(o, x))
+            return bad_value(spec, o, text, NULL);
+        if (o->field) {
+            snprintf(num, sizeof num, "%.17g", x);
+            text = num;
+            break;
+        }
+        *(double *)o->value = x;
+        return 0;
+    case TIPPE_CLI_LONG:
+        if (!tippe_cli_parse_long(text, (long)o->min, (long)o->max, &l))
+            return bad_value(spec, o, text, NULL);
+        *(long *)o->value = l;
+        return 0;
+    case TIPPE_CLI_RANGE:
+        return parse_range(spec, o, text, o->value);
+    case TIPPE_CLI_SET:
+        break;
+    }
+    /* a --set item, or an option that stands for one */
+    if (tippe_cli_sets_add(o->value, o->field, text))
+        return tippe_cli_usage_error(spec->verb, "too many --set options and overrides (at "
+                                     "most %d)", TIPPE_CLI_MAX_SETS);
+    return 0;
+}
+
+/* getopt_long's tables for spec: 0, or -1 if the table is too long. */
+static int build_getopt(const tippe_cli_spec *spec, struct option *lo, char *shorts)
+{
+    int n = 0, s = 0;
+    shorts[s++] = ':'; /* a missing value is reported as ':' */
+    shorts[s++] = 'h';
+    for (const tippe_cli_opt *o = spec->opts; o->name; o++, n++) {
+        if (n >= MAX_OPTS - 2)
+            return -1;
+        lo[n] = (struct option){o->name, takes_value(o) ? required_argument : no_argument, NULL,
+                                FIRST_LONG + n};
+        if (o->short_name) {
+            shorts[s++] = o->short_name;
+            if (takes_value(o))
+                shorts[s++] = ':';
+        }
+    }
+    lo[n++] = (struct option){"help", no_argument, NULL, 'h'};
+    lo[n] = (struct option){NULL, 0, NULL, 0};
+    shorts[s] = '\0';
+    return 0;
+}
+
+/* The option getopt_long returned as c, or NULL. */
+static tippe_cli_opt *option_for(tippe_cli_spec *spec, int c)
+{
+    int n = 0;
+    for (tippe_cli_opt *o = spec->opts; o->name; o++, n++)
+        if (c == FIRST_LONG + n || (o->short_name && c == o->short_name))
+            return o;
+    return NULL;
+}
+
+/* After getopt_long's '?' or ':' for the argument at argv[optind - 1]. */
+static int getopt_error(const tippe_cli_spec *spec, int c, char **argv)
+{
+    const char *arg = argv[optind - 1];
+    if (c == ':')
+        return tippe_cli_usage_error(spec->verb, "%s needs a value", arg);
+    if (optopt && optopt < FIRST_LONG && strncmp(arg, "--", 2))
+        return tippe_cli_usage_error(spec->verb, "unknown option '-%c'", optopt);
+    if (optopt >= FIRST_LONG) /* a flag given a value: --json=1 */
+        return tippe_cli_usage_error(spec->verb, "%s takes no value", arg);
+    /* an unknown long option, or a prefix of several (getopt_long says 0 for both) */
+    size_t len = strcspn(arg + 2, "=");
+    char which[256] = "";
+    int n = 0;
+    for (const tippe_cli_opt *o = spec->opts; o->name && !strncmp(arg, "--", 2); o++)
+        if (!strncmp(o->name, arg + 2, len) && strlen(which) + strlen(o->name) + 8 < sizeof which)
+            n += snprintf(which + strlen(which), sizeof which - strlen(which), "%s--%s",
+                          n ? ", " : "", o->name) > 0;
+    if (n > 1)
+        return tippe_cli_usage_error(spec->verb, "ambiguous option '%s' (%s)", arg, which);
+    return tippe_cli_usage_error(spec->verb, "unknown option '%s'", arg);
+}
+
+/* Positional arguments and required options: 0, or 2 after a usage error. */
+static int check_args(tippe_cli_spec *spec, int argc, char **argv)
+{
+    const char *what = spec->args_name ? spec->args_name : "file";
+    const int n = argc - optind;
+    if (n < spec->min_args)
+        return tippe_cli_usage_error(spec->verb, "no %s given", what);
+    if (n > spec->max_args && spec->max_args == 0)
+        return tippe_cli_usage_error(spec->verb, "unexpected argument '%s'", argv[optind]);
+    if (n > spec->max_args)
+        return tippe_cli_usage_error(spec->verb, "at most %d %s%s (got also '%s')",
+                                     spec->max_args, what, spec->max_args > 1 ? "s" : "",
+                                     argv[optind + spec->max_args]);
+    for (tippe_cli_opt *o = spec->opts; o->name; o++)
+        if (o->required && !o->seen) {
+            char label[80];
+            opt_label(o, label, sizeof label);
+            return tippe_cli_usage_error(spec->verb, "%s %s is required", label,
+                                         o->arg ? o->arg : "X");
+        }
+    return 0;
+}
+
+int tippe_cli_parse(tippe_cli_spec *spec, int argc, char **argv, const char **args,
+                    int *n_args)
+{
+    struct option lo[MAX_OPTS];
+    char shorts[2 * MAX_OPTS + 4];
+    if (build_getopt(spec, lo, shorts))
+        return tippe_cli_usage_error(spec->verb, "internal error: too many options");
+    optind = 0; /* glibc: start afresh (a process may parse more than once) */
+    opterr = 0;
+    int c;
+    while ((c = getopt_long(argc, argv, shorts, lo, NULL)) != -1) {
+        if (c == 'h') {
+            tippe_cli_help(spec, stdout);
+            return TIPPE_CLI_HELP;
+        }
+        tippe_cli_opt *o = (c == '?' || c == ':') ? NULL : option_for(spec, c);
+        if (!o)
+            return getopt_error(spec, c, argv);
+        if (store(spec, o, optarg))
+            return 2;
+        o->seen = 1;
+    }
+    if (check_args(spec, argc, argv))
+        return 2;
+    /* getopt_long has moved the positional arguments after the options */
+    *n_args = argc - optind;
+    for (int i = 0; i < *n_args; i++)
+        args[i] = argv[optind + i];
+    return 0;
+}
+
+/* ---- --help --------------------------------------------------------------- */
+
+/* Prints text indented by indent after its first line. */
+static void print_wrapped(FILE *out, const char *text, int indent)
+{
+    for (const char *p = text; *p; p++) {
+        fputc(*p, out);
+        if (*p == '\n')
+            fprintf(out, "%*s", indent, "");
+    }
+}
+
+/* "[mm; default 5; 0 .. 100]": what the help line says of the value. */
+static void value_note(const tippe_cli_opt *o, char *buf, size_t size)
+{
+    buf[0] = '\0';
+    if (!takes_value(o) || o->kind == TIPPE_CLI_STRING || o->kind == TIPPE_CLI_SET)
+        return;
+    int n = snprintf(buf, size, "[");
+    if (o->unit)
+        n += snprintf(buf + n, size - (size_t)n, "%s; ", o->unit);
+    if (o->def)
+        n += snprintf(buf + n, size - (size_t)n, "default %s; ", o->def);
+    else if (o->required)
+        n += snprintf(buf + n, size - (size_t)n, "required; ");
+    snprintf(buf + n, size - (size_t)n, "%g .. %g]", o->min, o->max);
+}
+
+static void print_option(FILE *out, const tippe_cli_opt *o)
+{
+    enum { COLUMN = 26 };
+    char left[128], note[256];
+    const char *arg = o->arg ? o->arg : "X";
+    if (o->short_name && !(o->name[1] == '\0' && o->name[0] == o->short_name))
+        snprintf(left, sizeof left, "  -%c, --%s%s%s", o->short_name, o->name,
+                 takes_value(o) ? " " : "", takes_value(o) ? arg : "");
+    else if (o->short_name)
+        snprintf(left, sizeof left, "  -%c%s%s", o->short_name, takes_value(o) ? " " : "",
+                 takes_value(o) ? arg : "");
+    else
+        snprintf(left, sizeof left, "  --%s%s%s", o->name, takes_value(o) ? " " : "",
+                 takes_value(o) ? arg : "");
+    fprintf(out, "%-*s", COLUMN - 1, left);
+    if ((int)strlen(left) >= COLUMN - 1)
+        fprintf(out, "\n%*s", COLUMN - 1, "");
+    fputc(' ', out);
+    print_wrapped(out, o->help, COLUMN);
+    value_note(o, note, sizeof note);
+    if (o->kind == TIPPE_CLI_STRING && o->def)
+        snprintf(note, sizeof note, "[default %s]", o->def);
+    if (note[0])
+        fprintf(out, "\n%*s%s", COLUMN, "", note);
+    fputc('\n', out);
+}
+
+/* The unit language, one line for each family spec's options use. */
+static void print_units(const tippe_cli_spec *spec, FILE *out)
+{
+    int shown = 0;
+    for (int u = 0; u < N_UNITS; u++) {
+        if (strcmp(units[u].family, units[u].suffix))
+            continue; /* from the family's base row */
+        int used = 0;
+        for (const tippe_cli_opt *o = spec->opts; o->name && !used; o++) {
+            int r = unit_row(o->unit);
+            used = r >= 0 && !strcmp(units[r].family, units[u].family);
+        }
+        if (!used)
+            continue;
+        fprintf(out, "%s  a number of %s may carry its unit:", shown++ ? "" : "\nUnits:\n",
+                units[u].family);
+        for (int k = 0; k < N_UNITS; k++)
+            if (!strcmp(units[k].family, units[u].family))
+                fprintf(out, " 2.5%s", units[k].suffix);
+        fprintf(out, "\n");
+    }
+}
+
+void tippe_cli_help(const tippe_cli_spec *spec, FILE *out)
+{
+    fprintf(out, "usage: tippe %s %s\n\n", spec->verb, spec->synopsis);
+    if (spec->about)
+        fprintf(out, "%s\n\n", spec->about);
+    fprintf(out, "options:\n");
+    for (const tippe_cli_opt *o = spec->opts; o->name; o++)
+        print_option(out, o);
+    fprintf(out, "  -h, --help              this text\n");
+    print_units(spec, out);
+    if (spec->after)
+        fprintf(out, "\n%s\n", spec->after);
+}
