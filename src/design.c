@@ -18,6 +18,7 @@
 #include "tippe/error.h"
 #include "tippe/geometry.h"
 #include "tippe/json.h"
+#include "tippe/print.h"
 
 #include <cjson/cJSON.h>
 #include <gsl/gsl_errno.h>
@@ -35,6 +36,9 @@
 #define TOL_MM 1e-6
 /* Uniform r samples across the widest part; see the resolution note in docs. */
 #define N_R_UNIFORM 4000
+/* The same for an optimiser's candidates (TIPPE_DESIGN_COARSE_LAYOUT): 20 times
+ * fewer uniform samples; every part's edges are still sampled exactly. */
+#define N_R_COARSE 200
 /* A sphere radius match (the part forming the sphere's surface), mm. */
 #define SAME_LENGTH_MM 1e-9
 /* Slack on the travel check for a sweep's rounded steps, mm. */
@@ -43,6 +47,8 @@
 #define BIG_MM 1e12
 /* Intervals per r: a part gives at most 2, each void removes at most 2 more. */
 #define MAX_IV (4 + 4 * MAX_PARTS)
+
+enum { CLIP_NONE, CLIP_SPHERE, CLIP_CAVITY, CLIP_SHELL };
 
 typedef enum { SHAPE_BALL, SHAPE_SHELL, SHAPE_CYLINDER, SHAPE_TUBE, SHAPE_TORUS, N_SHAPES } shape_kind;
 static const char *const shape_names[N_SHAPES] = {"ball", "shell", "cylinder", "tube", "torus"};
@@ -62,8 +68,16 @@ typedef struct {
     int printable;          /* the material's "printable" flag (voids: the parent's) */
     int has_height, has_radius;
     int parent;             /* voids: index of the part cut from; else -1 */
-    int clip;               /* 0 none, 1 sphere, 2 cavity */
+    int clip;               /* CLIP_NONE, CLIP_SPHERE, CLIP_CAVITY, CLIP_SHELL */
     double clip_radius_mm;  /* resolved; 0 = not clipped */
+    double clip_inner_mm;   /* CLIP_SHELL: the shell's cavity radius (the part is cut to
+                               the wall between it and clip_radius_mm); else 0 */
+    int printed;            /* has a "print" block */
+    tippe_print_settings print;
+    int calibrated;         /* the infill comes from measured_mass_g */
+    double measured_mass_g;
+    double infill;          /* used: print.infill, or the calibrated one */
+    double solid_mass_kg, skin_mass_kg, print_rel_error;
     double mass_kg;         /* signed contribution */
 } part;
 
@@ -79,7 +93,14 @@ struct tippe_design {
     int n_overrides;
     tippe_tolerance *tolerances; /* the tolerances block and the defaults */
     int n_tolerances;
+    /* Set only while a tippe_design_source builds it: the source's parsed
+     * materials table (not owned) and whether the travel is the physical one. */
+    const struct tippe_design_source *source;
+    int travel_physical, coarse_layout;
 };
+
+static int source_materials(const tippe_design *d, const char *mat_file, cJSON **out);
+static double widest_free_gap_mid(const tippe_design *d, const double *rs, int nr);
 
 /* A length in mm that must be > 0 (or >= 0 with allow_zero). */
 static int field_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
@@ -106,7 +127,7 @@ static const char *const top_keys[] = {"name", "notes", "radius_mm", "travel_mm"
 static const char *const top_string_keys[] = {"name", "notes", "materials", NULL};
 static const char *const part_common_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from",
-    "clip", "moving", "may_protrude", NULL};
+    "clip", "moving", "may_protrude", "print", NULL};
 static const char *const part_string_keys[] = {"name", "shape", "notes", "material",
                                                "cut_from", "clip", NULL};
 static const char *const ball_keys[] = {"radius_mm", NULL};
@@ -118,8 +139,11 @@ static const char *const *const shape_keys[N_SHAPES] = {ball_keys, shell_keys, c
                                                         cylinder_keys, torus_keys};
 static const char *const all_part_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from", "clip",
-    "moving", "may_protrude", "radius_mm", "inner_radius_mm", "thickness_mm", "height_mm",
-    "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
+    "moving", "may_protrude", "print", "radius_mm", "inner_radius_mm", "thickness_mm",
+    "height_mm", "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
+static const char *const print_keys[] = {"perimeters", "line_width_mm", "top_bottom_layers",
+                                         "layer_height_mm", "infill", "measured_mass_g",
+                                         "notes", NULL};
 static const char *const material_keys[] = {"density_g_cm3", "source", "printable", "notes",
                                              NULL};
 
@@ -155,6 +179,11 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
                                    "%s: --set %s: expected parts.NAME.FIELD=VALUE", c->file, text);
         *dot = '\0';
         key = dot + 1;
+        /* parts.NAME.print.KEY: a field of the part's print block */
+        size_t flen2 = strlen(field);
+        int in_print = flen2 > 12 && !strcmp(field + flen2 - 6, ".print");
+        if (in_print)
+            field[flen2 - 6] = '\0';
         int index = -1;
         if (field[5] == '[') {
             char *endp = NULL;
@@ -191,14 +220,36 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
             snprintf(path, sizeof path, "parts[%d]", index);
             return tippe_json_fail(c, path, "must be an object (cannot apply --set %s)", text);
         }
-        if (!tippe_json_in_list(key, all_part_keys)) {
+        if (in_print) {
+            if (!tippe_json_in_list(key, print_keys)) {
+                char list[256];
+                tippe_json_key_list(list, sizeof list, print_keys, NULL);
+                return tippe_error_set(c->err, TIPPE_EINPUT,
+                                       "%s: --set %s: '%s' is not a print setting (settings: %s)",
+                                       c->file, text, key, list);
+            }
+            /* true, false or no block: an object of defaults, then this field */
+            cJSON *pr = cJSON_GetObjectItemCaseSensitive(obj, "print");
+            if (!cJSON_IsObject(pr)) {
+                cJSON *fresh = cJSON_CreateObject();
+                if (!fresh)
+                    return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+                int rc = tippe_json_put(c, obj, "print", fresh);
+                if (rc)
+                    return rc;
+                pr = fresh;
+            }
+            obj = pr;
+            snprintf(path, sizeof path, "parts[%d].print.%s", index, key);
+        } else if (!tippe_json_in_list(key, all_part_keys)) {
             char list[512];
             tippe_json_key_list(list, sizeof list, all_part_keys, NULL);
             return tippe_error_set(c->err, TIPPE_EINPUT,
                                    "%s: --set %s: '%s' is not a part field (fields: %s)", c->file,
                                    text, key, list);
+        } else {
+            snprintf(path, sizeof path, "parts[%d].%s", index, key);
         }
-        snprintf(path, sizeof path, "parts[%d].%s", index, key);
     } else {
         if (!tippe_json_in_list(key, top_keys) || !strcmp(key, "parts")) {
             char list[256];
@@ -245,6 +296,65 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
 
 /* ----------------------------------------------------------------- parts */
 
+/* A print setting: a number in [lo, hi] (an integer if integer). */
+static int print_number(const tippe_json_reader *c, const cJSON *obj, const char *pre,
+                        const char *key, double lo, double hi, int integer, const char *unit,
+                        double *out)
+{
+    int here = 0;
+    int rc = tippe_json_number(c, obj, pre, key, 0, out, &here);
+    if (rc || !here)
+        return rc;
+    char path[96];
+    tippe_json_path(path, sizeof path, pre, key);
+    if (integer && *out != floor(*out))
+        return tippe_json_fail(c, path, "must be a whole number of %s, got %g", unit, *out);
+    if (!(*out >= lo && *out <= hi))
+        return tippe_json_fail(c, path, "must be %g .. %g %s, got %g", lo, hi, unit, *out);
+    return TIPPE_OK;
+}
+
+/* "print": true (slicer defaults), false (solid), or an object of settings
+ * (defaults for the ones left out). docs/design-format.md gives the ranges. */
+static int parse_print(const tippe_json_reader *c, const cJSON *obj, const char *pre, part *p)
+{
+    const cJSON *item = cJSON_GetObjectItemCaseSensitive(obj, "print");
+    if (!item || cJSON_IsFalse(item))
+        return TIPPE_OK;
+    char path[64];
+    tippe_json_path(path, sizeof path, pre, "print");
+    if (p->is_void)
+        return tippe_json_fail(c, path,
+                               "a void is not printed: give the part it is cut from the "
+                               "print block (its holes get walls too)");
+    p->printed = 1;
+    p->print = tippe_print_defaults();
+    if (cJSON_IsTrue(item))
+        return TIPPE_OK;
+    if (!cJSON_IsObject(item))
+        return tippe_json_wrong_type(c, path, "true, false or an object of print settings",
+                                     item);
+    int rc;
+    double per = p->print.perimeters, layers = p->print.top_bottom_layers;
+    if ((rc = tippe_json_check_keys(c, item, path, "a print block", print_keys, NULL)) ||
+        (rc = tippe_json_string(c, item, path, "notes", 0, NULL, 0, NULL)) ||
+        (rc = print_number(c, item, path, "perimeters", 0, 50, 1, "perimeters", &per)) ||
+        (rc = print_number(c, item, path, "line_width_mm", 0.05, 3, 0, "mm",
+                           &p->print.line_width_mm)) ||
+        (rc = print_number(c, item, path, "top_bottom_layers", 0, 200, 1, "layers", &layers)) ||
+        (rc = print_number(c, item, path, "layer_height_mm", 0.01, 2, 0, "mm",
+                           &p->print.layer_height_mm)) ||
+        (rc = print_number(c, item, path, "infill", 0, 1, 0,
+                           "(a fraction of the solid density: 15 % is 0.15)", &p->print.infill)) ||
+        (rc = print_number(c, item, path, "measured_mass_g", 1e-6, 1e6, 0, "g",
+                           &p->measured_mass_g)))
+        return rc;
+    p->print.perimeters = (int)per;
+    p->print.top_bottom_layers = (int)layers;
+    p->calibrated = cJSON_GetObjectItemCaseSensitive(item, "measured_mass_g") != NULL;
+    return TIPPE_OK;
+}
+
 static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, part *p)
 {
     char pre[32], path[64], shape[16];
@@ -282,7 +392,8 @@ static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, p
     int has_void = 0, has_moving = 0, has_protrude = 0;
     if ((rc = tippe_json_bool(c, obj, pre, "void", &p->is_void, &has_void)) ||
         (rc = tippe_json_bool(c, obj, pre, "moving", &p->moving, &has_moving)) ||
-        (rc = tippe_json_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)))
+        (rc = tippe_json_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)) ||
+        (rc = parse_print(c, obj, pre, p)))
         return rc;
     int has_mat = 0, has_dens = 0, has_cut = 0, has_clip = 0;
     char cut[NAME_LEN] = "", clip[16] = "";
@@ -330,11 +441,14 @@ static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, p
     if (has_clip) {
         tippe_json_path(path, sizeof path, pre, "clip");
         if (!strcmp(clip, "sphere"))
-            p->clip = 1;
+            p->clip = CLIP_SPHERE;
         else if (!strcmp(clip, "cavity"))
-            p->clip = 2;
+            p->clip = CLIP_CAVITY;
+        else if (!strcmp(clip, "shell"))
+            p->clip = CLIP_SHELL;
         else
-            return tippe_json_fail(c, path, "must be \"sphere\" or \"cavity\", not '%s'", clip);
+            return tippe_json_fail(c, path,
+                                   "must be \"sphere\", \"cavity\" or \"shell\", not '%s'", clip);
         if (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL)
             return tippe_json_fail(c, path, "only a cylinder, tube or torus can be clipped");
         if (p->moving)
@@ -556,9 +670,16 @@ static void prim_ivs(const part *p, double r, double dz, double g, ivset *s)
         break;
     }
     if (p->clip_radius_mm > 0) {
+        /* the clip ball, or with clip_inner_mm the shell's wall */
         ivset c = {0}, t;
-        if ((h = chord(p->clip_radius_mm + g, r)) > 0)
-            iv_push(&c, -h, h);
+        if ((h = chord(p->clip_radius_mm + g, r)) > 0) {
+            if (p->clip_inner_mm > 0 && (hi = chord(p->clip_inner_mm - g, r)) > 0) {
+                iv_push(&c, -h, -hi);
+                iv_push(&c, hi, h);
+            } else {
+                iv_push(&c, -h, h);
+            }
+        }
         iv_intersect(s, &c, &t);
         *s = t;
     }
@@ -603,7 +724,7 @@ static int cmp_double(const void *a, const void *b)
 static double *sample_radii(const tippe_design *d, int *n_out)
 {
     double rmax = d->radius_mm;
-    double brk[8 * MAX_PARTS + 2];
+    double brk[9 * MAX_PARTS + 2];
     int nb = 0;
     brk[nb++] = d->radius_mm;
     for (int i = 0; i < d->n_parts; i++) {
@@ -631,18 +752,21 @@ static double *sample_radii(const tippe_design *d, int *n_out)
         }
         if (p->clip_radius_mm > 0)
             brk[nb++] = p->clip_radius_mm;
+        if (p->clip_inner_mm > 0)
+            brk[nb++] = p->clip_inner_mm;
     }
     for (int k = 0; k < nb; k++)
         rmax = fmax(rmax, brk[k]);
     rmax += 1.0;
-    int n = N_R_UNIFORM + 3 * nb + 1;
+    int n_uniform = d->coarse_layout ? N_R_COARSE : N_R_UNIFORM;
+    int n = n_uniform + 3 * nb + 1;
     double *r = malloc((size_t)n * sizeof *r);
     if (!r)
         return NULL;
     int m = 0;
     r[m++] = 0;
-    for (int k = 0; k < N_R_UNIFORM; k++)
-        r[m++] = (k + 0.5) * rmax / N_R_UNIFORM;
+    for (int k = 0; k < n_uniform; k++)
+        r[m++] = (k + 0.5) * rmax / n_uniform;
     for (int k = 0; k < nb; k++) {
         double off[3] = {-2 * TOL_MM, 0, 2 * TOL_MM};
         for (int j = 0; j < 3; j++)
@@ -870,11 +994,13 @@ static int limit_by_contact(const layout *L, int i, int j, double mid, double li
 }
 
 /* The physical travel (d->contact_mm, d->contact_limit) around the middle of
- * the stated travel. */
+ * the stated travel, or for a travel_physical design (an optimiser's
+ * candidate) the widest free stretch, which then becomes its travel. */
 static int find_physical_travel(const layout *L)
 {
     tippe_design *d = L->d;
-    double mid = 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
+    double mid = d->travel_physical ? widest_free_gap_mid(d, L->rs, L->nr)
+                                    : 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
     double lim[2] = {-BIG_MM, BIG_MM};
     snprintf(d->contact_limit[0], sizeof d->contact_limit[0], "nothing");
     snprintf(d->contact_limit[1], sizeof d->contact_limit[1], "nothing");
@@ -893,6 +1019,13 @@ static int find_physical_travel(const layout *L)
     }
     d->contact_mm[0] = lim[0];
     d->contact_mm[1] = lim[1];
+    if (!rc && d->travel_physical) {
+        if (!(lim[0] > -BIG_MM && lim[1] < BIG_MM && lim[0] < lim[1]))
+            return tippe_json_fail(L->c, "travel_mm", "the moving weight has no bounded "
+                                                      "physical travel (nothing stops it)");
+        d->travel_mm[0] = lim[0];
+        d->travel_mm[1] = lim[1];
+    }
     return rc;
 }
 
@@ -935,11 +1068,12 @@ static int check_layout(const tippe_json_reader *c, tippe_design *d)
 
 /* ------------------------------------------------------------ mass moments */
 
-/* Unit-density moments of p's own region (SI), at its z_mm. */
-static tippe_moments part_moments(const part *p)
+/* Unit-density moments of p's own shape cut to the ball of radius clip_m
+ * (0: not cut), SI, at its z_mm. */
+static tippe_moments shape_moments(const part *p, double clip_m)
 {
     const double mm = 1e-3;
-    double zc = p->z_mm * mm, clip = p->clip_radius_mm * mm; /* 0: not clipped */
+    double zc = p->z_mm * mm;
     switch (p->shape) {
     case SHAPE_BALL:
         return tippe_ball(p->radius_mm * mm, zc);
@@ -948,12 +1082,23 @@ static tippe_moments part_moments(const part *p)
     case SHAPE_CYLINDER:
     case SHAPE_TUBE:
         return tippe_tube(p->inner_radius_mm * mm, p->radius_mm * mm, p->height_mm * mm, zc,
-                          clip);
+                          clip_m);
     case SHAPE_TORUS:
     default:
         return tippe_torus(p->centre_radius_mm * mm, p->radial_semi_mm * mm,
-                           p->axial_semi_mm * mm, zc, clip);
+                           p->axial_semi_mm * mm, zc, clip_m);
     }
+}
+
+/* Unit-density moments of p's own region (SI), at its z_mm. Cut to a shell's
+ * wall, it is the part cut to the outer ball less the part cut to the cavity
+ * (the second lies inside the first). */
+static tippe_moments part_moments(const part *p)
+{
+    tippe_moments m = shape_moments(p, p->clip_radius_mm * 1e-3);
+    if (p->clip_inner_mm > 0)
+        m = tippe_moments_sub(m, shape_moments(p, p->clip_inner_mm * 1e-3));
+    return m;
 }
 
 static int finite_moments(tippe_moments m)
@@ -1069,7 +1214,8 @@ static int resolve_materials(const tippe_json_reader *c, const char *path, const
     else
         snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
     cJSON *table = NULL;
-    int rc = load_materials(mat_file, &table, c->err);
+    int rc = source_materials(d, mat_file, &table) ? TIPPE_OK
+                                                   : load_materials(mat_file, &table, c->err);
     if (rc) {
         if (has_mat_file) {
             char inner[sizeof c->err->msg];
@@ -1125,18 +1271,21 @@ static int resolve_clip(const tippe_json_reader *c, tippe_design *d, int i, int 
         return tippe_json_fail(c, pth,
                                "a void cut from a moving part cannot be clipped (its shape "
                                "would change as it moves)");
-    if (p->clip == 1) {
+    if (p->clip == CLIP_SPHERE) {
         p->clip_radius_mm = d->radius_mm;
-    } else if (p->clip == 2) {
+    } else if (p->clip == CLIP_CAVITY || p->clip == CLIP_SHELL) {
+        const char *word = p->clip == CLIP_CAVITY ? "cavity" : "shell";
         if (n_shell != 1)
             return tippe_json_fail(c, pth,
-                                   "\"cavity\" needs exactly one fixed shell part, the design "
+                                   "\"%s\" needs exactly one fixed shell part, the design "
                                    "has %d",
-                                   n_shell);
+                                   word, n_shell);
         if (d->parts[shell].z_mm != 0)
-            return tippe_json_fail(c, pth, "\"cavity\" needs the shell '%s' centred at z_mm = 0",
-                                   d->parts[shell].name);
-        p->clip_radius_mm = d->parts[shell].radius_mm - d->parts[shell].thickness_mm;
+            return tippe_json_fail(c, pth, "\"%s\" needs the shell '%s' centred at z_mm = 0",
+                                   word, d->parts[shell].name);
+        double cavity = d->parts[shell].radius_mm - d->parts[shell].thickness_mm;
+        p->clip_radius_mm = p->clip == CLIP_CAVITY ? cavity : d->parts[shell].radius_mm;
+        p->clip_inner_mm = p->clip == CLIP_SHELL ? cavity : 0;
     }
     return TIPPE_OK;
 }
@@ -1166,7 +1315,104 @@ static int resolve_parts(const tippe_json_reader *c, tippe_design *d)
             return rc;
         if ((p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE) && !p->has_height)
             p->height_mm = 2 * p->clip_radius_mm; /* spans the clip ball */
+        if (p->printed && p->material[0] && !p->printable) {
+            snprintf(pth, sizeof pth, "parts[%d].print", i);
+            return tippe_json_fail(c, pth,
+                                   "material '%s' is not printable (the materials table says "
+                                   "so): only a printed part has a print block",
+                                   p->material);
+        }
     }
+    return TIPPE_OK;
+}
+
+/* The print model's description of p's own region (SI). */
+static tippe_solid print_solid(const part *p)
+{
+    const double mm = 1e-3;
+    tippe_solid s = {0};
+    s.z_centre = p->z_mm * mm;
+    s.radius = p->radius_mm * mm;
+    s.clip_outer = p->clip_radius_mm * mm;
+    s.clip_inner = p->clip_inner_mm * mm;
+    switch (p->shape) {
+    case SHAPE_BALL:
+        s.kind = TIPPE_SOLID_BALL;
+        break;
+    case SHAPE_SHELL:
+        s.kind = TIPPE_SOLID_SHELL;
+        s.inner_radius = (p->radius_mm - p->thickness_mm) * mm;
+        break;
+    case SHAPE_CYLINDER:
+    case SHAPE_TUBE:
+        s.kind = TIPPE_SOLID_TUBE;
+        s.inner_radius = p->inner_radius_mm * mm;
+        s.height = p->height_mm * mm;
+        break;
+    case SHAPE_TORUS:
+    default:
+        s.kind = TIPPE_SOLID_TORUS;
+        s.centre_radius = p->centre_radius_mm * mm;
+        s.radial_semi = p->radial_semi_mm * mm;
+        s.axial_semi = p->axial_semi_mm * mm;
+        break;
+    }
+    return s;
+}
+
+/* Unit-density moments of printed part i as printed: the part minus its voids
+ * (closed forms) less (1 - infill) x its sparse core (print model). Sets the
+ * part's infill (calibrated from a weighed mass when one is given), its solid
+ * and skin masses and the relative error bound. */
+static int printed_moments(const tippe_json_reader *c, tippe_design *d, int i,
+                           tippe_moments *out)
+{
+    part *p = &d->parts[i];
+    tippe_solid shape = print_solid(p), holes[MAX_PARTS];
+    tippe_moments solid = part_moments(p);
+    int n_holes = 0;
+    for (int k = 0; k < d->n_parts; k++)
+        if (d->parts[k].parent == i) {
+            holes[n_holes++] = print_solid(&d->parts[k]);
+            solid = tippe_moments_sub(solid, part_moments(&d->parts[k]));
+        }
+    tippe_print_core core;
+    tippe_error perr;
+    char pth[64];
+    snprintf(pth, sizeof pth, "parts[%d].print", i);
+    int rc = tippe_print_core_moments(&shape, holes, n_holes, tippe_print_wall_mm(&p->print) * 1e-3,
+                                      tippe_print_skin_mm(&p->print) * 1e-3, &core, &perr);
+    if (rc)
+        return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", perr.msg)
+                                  : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,
+                                                    perr.msg);
+    double rho = p->density_g_cm3 * 1e3;
+    p->infill = p->print.infill;
+    if (p->calibrated) {
+        double m0, m1;
+        int side = tippe_print_infill_for_mass(p->measured_mass_g * 1e-3, solid.m, core.core.m,
+                                               rho, &p->infill, &m0, &m1);
+        snprintf(pth, sizeof pth, "parts[%d].print.measured_mass_g", i);
+        if (side < 0)
+            return tippe_json_fail(c, pth,
+                                   "%g g is less than the walls and top/bottom skins alone "
+                                   "weigh (%.3f g at 0 %% infill with these settings and %g "
+                                   "g/cm^3)",
+                                   p->measured_mass_g, m0 * 1e3, p->density_g_cm3);
+        if (side > 0)
+            return tippe_json_fail(c, pth,
+                                   "%g g is more than part '%s' weighs printed solid (%.3f g at "
+                                   "%g g/cm^3)",
+                                   p->measured_mass_g, p->name, m1 * 1e3, p->density_g_cm3);
+    }
+    p->solid_mass_kg = rho * solid.m;
+    p->skin_mass_kg = rho * (solid.m - core.core.m);
+    /* the error bound of each moment, relative to the printed part's */
+    double lack = 1.0 - p->infill, printed_m = solid.m - lack * core.core.m;
+    double printed_rr = solid.m_rr - lack * core.core.m_rr;
+    p->print_rel_error = lack * fmax(core.abserr[0] / printed_m, core.abserr[3] / printed_rr);
+    /* the part's own region, its voids added back: they subtract as usual */
+    *out = tippe_moments_sub(part_moments(p), tippe_moments_scale(core.core, lack));
     return TIPPE_OK;
 }
 
@@ -1177,7 +1423,11 @@ static int sum_moments(const tippe_json_reader *c, tippe_design *d)
     d->fixed = d->moving = (tippe_moments){0, 0, 0, 0};
     for (int i = 0; i < d->n_parts; i++) {
         part *p = &d->parts[i];
-        tippe_moments m = tippe_moments_scale(part_moments(p), p->density_g_cm3 * 1e3);
+        tippe_moments unit = part_moments(p);
+        int rc;
+        if (p->printed && (rc = printed_moments(c, d, i, &unit)))
+            return rc;
+        tippe_moments m = tippe_moments_scale(unit, p->density_g_cm3 * 1e3);
         if (!finite_moments(m) || !(m.m > 0))
             return tippe_error_set(c->err, TIPPE_ECOMPUTE,
                                    "%s: parts[%d]: the geometry module gave no finite positive "
@@ -1376,6 +1626,36 @@ int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
     return TIPPE_OK;
 }
 
+int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out)
+{
+    memset(out, 0, sizeof *out);
+    if (i < 0 || i >= d->n_parts)
+        return tippe_error_set(NULL, TIPPE_EINPUT, "no part %d", i);
+    const part *p = &d->parts[i];
+    if (!p->printed)
+        return TIPPE_OK;
+    out->printed = 1;
+    out->settings = p->print;
+    out->wall_mm = tippe_print_wall_mm(&p->print);
+    out->skin_mm = tippe_print_skin_mm(&p->print);
+    out->infill = p->infill;
+    out->calibrated = p->calibrated;
+    out->measured_mass_kg = p->calibrated ? p->measured_mass_g * 1e-3 : 0;
+    out->solid_mass_kg = p->solid_mass_kg;
+    out->skin_mass_kg = p->skin_mass_kg;
+    out->printed_mass_kg = p->skin_mass_kg + p->infill * (p->solid_mass_kg - p->skin_mass_kg);
+    out->rel_error = p->print_rel_error;
+    return TIPPE_OK;
+}
+
+int tippe_design_has_printed_parts(const tippe_design *d)
+{
+    for (int i = 0; i < d->n_parts; i++)
+        if (d->parts[i].printed)
+            return 1;
+    return 0;
+}
+
 int tippe_design_part_printable(const tippe_design *d, int i)
 {
     return i >= 0 && i < d->n_parts && d->parts[i].printable;
@@ -1421,6 +1701,38 @@ static int part_named(const tippe_design *d, const char *field, size_t len)
     return -1;
 }
 
+/* parts.NAME.print.KEY: the print settings that are numbers (infill: the one
+ * used, calibrated or not). */
+static int print_field(const tippe_design *d, int i, const char *key, double *value,
+                       int *part_index, char *why, size_t why_cap)
+{
+    const part *p = &d->parts[i];
+    *part_index = i;
+    if (!p->printed) {
+        snprintf(why, why_cap, "part '%s' has no print block", p->name);
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "infill"))
+        *value = p->infill;
+    else if (!strcmp(key, "line_width_mm"))
+        *value = p->print.line_width_mm;
+    else if (!strcmp(key, "layer_height_mm"))
+        *value = p->print.layer_height_mm;
+    else if (!strcmp(key, "perimeters"))
+        *value = p->print.perimeters;
+    else if (!strcmp(key, "top_bottom_layers"))
+        *value = p->print.top_bottom_layers;
+    else if (!strcmp(key, "measured_mass_g") && p->calibrated)
+        *value = p->measured_mass_g;
+    else {
+        snprintf(why, why_cap, "not a number setting of the print block (infill, "
+                               "line_width_mm, layer_height_mm, perimeters, "
+                               "top_bottom_layers, measured_mass_g when given)");
+        return TIPPE_EINPUT;
+    }
+    return TIPPE_OK;
+}
+
 int tippe_design_field(const tippe_design *d, const char *field, double *value, int *part_index,
                        char *why, size_t why_cap)
 {
@@ -1437,6 +1749,10 @@ int tippe_design_field(const tippe_design *d, const char *field, double *value, 
         return TIPPE_EINPUT;
     }
     int i = part_named(d, field, (size_t)(dot - field));
+    size_t plen = (size_t)(dot - field);
+    if (i < 0 && plen > 12 && !strncmp(dot - 6, ".print", 6) &&
+        (i = part_named(d, field, plen - 6)) >= 0)
+        return print_field(d, i, dot + 1, value, part_index, why, why_cap);
     if (i < 0) {
         snprintf(why, why_cap, "no part %.*s", (int)(dot - field - 5), field + 5);
         return TIPPE_EINPUT;
@@ -1512,6 +1828,264 @@ const tippe_tolerance *tippe_design_tolerance(const tippe_design *d, int i)
     return i >= 0 && i < d->n_tolerances ? &d->tolerances[i] : NULL;
 }
 
+/* ------------------------------------------ physical travel without a guess */
+
+typedef struct {
+    double lo, hi;
+} shift_iv;
+
+static int cmp_shift(const void *a, const void *b)
+{
+    const shift_iv *x = a, *y = b;
+    return (x->lo > y->lo) - (x->lo < y->lo);
+}
+
+static int push_shift(shift_iv **v, int *n, int *cap, double lo, double hi)
+{
+    if (*n == *cap) {
+        int nc = *cap ? 2 * *cap : 256;
+        shift_iv *t = realloc(*v, (size_t)nc * sizeof *t);
+        if (!t)
+            return -1;
+        *v = t;
+        *cap = nc;
+    }
+    (*v)[(*n)++] = (shift_iv){lo, hi};
+    return 0;
+}
+
+/* The middle of the widest stretch of Z2 where no moving part overlaps a fixed
+ * one or leaves the sphere: the Z2 shifts that make a moving z interval share
+ * volume with a fixed one are open intervals (the same arithmetic as the
+ * physical travel in check_layout), and the stretch is a gap between their
+ * union. Used when the travel is to be the physical one (an optimiser's
+ * candidate, whose stated travel means nothing); NAN when there is no gap. */
+static double widest_free_gap_mid(const tippe_design *d, const double *rs, int nr)
+{
+    shift_iv *v = NULL;
+    int n = 0, cap = 0, oom = 0;
+    const double R = d->radius_mm;
+    ivset a, b;
+    for (int i = 0; i < d->n_parts && !oom; i++) {
+        const part *p = &d->parts[i];
+        if (p->is_void || !p->moving)
+            continue;
+        if (p->may_protrude) /* held only while its centre is inside */
+            oom |= push_shift(&v, &n, &cap, -BIG_MM, -R - p->z_mm) ||
+                   push_shift(&v, &n, &cap, R - p->z_mm, BIG_MM);
+        for (int j = -1; j < d->n_parts && !oom; j++) {
+            if (j < 0 ? p->may_protrude : (d->parts[j].is_void || d->parts[j].moving))
+                continue;
+            for (int k = 0; k < nr && !oom; k++) {
+                material_ivs(d, i, rs[k], 0, &a);
+                if (!a.n)
+                    continue;
+                if (j < 0)
+                    outside_ivs(R, rs[k], &b);
+                else
+                    material_ivs(d, j, rs[k], 0, &b);
+                for (int u = 0; u < a.n && !oom; u++)
+                    for (int w = 0; w < b.n && !oom; w++)
+                        oom |= push_shift(&v, &n, &cap, b.lo[w] - a.hi[u], b.hi[w] - a.lo[u]);
+            }
+        }
+    }
+    double best = 0.0, mid = NAN;
+    if (!oom) {
+        qsort(v, (size_t)n, sizeof *v, cmp_shift);
+        double reach = -BIG_MM; /* the union of intervals so far ends here */
+        for (int k = 0; k <= n; k++) {
+            double next = k < n ? v[k].lo : BIG_MM;
+            if (next > reach && next - reach > best) {
+                best = next - reach;
+                mid = 0.5 * (next + reach);
+            }
+            if (k < n)
+                reach = fmax(reach, v[k].hi);
+        }
+    }
+    free(v);
+    return mid;
+}
+
+/* ------------------------------------------------------- design sources */
+
+struct tippe_design_source {
+    char *path;
+    cJSON *root;      /* the design file as parsed (duplicate keys refused) */
+    char mat_file[1024];
+    cJSON *materials; /* the materials table it names, read and checked once; or NULL */
+};
+
+/* The source's materials table (a copy the caller deletes) if it is the one
+ * build() is about to read; 0 if not. */
+static int source_materials(const tippe_design *d, const char *mat_file, cJSON **out)
+{
+    if (!d->source || !d->source->materials || strcmp(mat_file, d->source->mat_file))
+        return 0;
+    *out = cJSON_Duplicate(d->source->materials, 1);
+    return *out != NULL;
+}
+
+int tippe_design_source_open(const char *path, tippe_design_source **out, tippe_error *err)
+{
+    tippe_gsl_errors_as_codes();
+    *out = NULL;
+    /* A first full load checks the file and resolves its materials table. */
+    tippe_design *d = NULL;
+    int rc = tippe_design_load(path, NULL, 0, &d, err);
+    if (rc)
+        return rc;
+    tippe_design_free(d);
+    tippe_design_source *s = calloc(1, sizeof *s);
+    tippe_json_reader *c = tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, NULL);
+    if (!s || !c || !(s->path = dup_string(path))) {
+        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+        goto fail;
+    }
+    if ((rc = tippe_json_load(c, MAX_FILE_MIB, "design", &s->root)))
+        goto fail;
+    char mat_rel[512] = "materials.json";
+    const cJSON *m = cJSON_GetObjectItemCaseSensitive(s->root, "materials");
+    if (cJSON_IsString(m))
+        snprintf(mat_rel, sizeof mat_rel, "%s", m->valuestring);
+    const char *slash = strrchr(path, '/');
+    if (mat_rel[0] == '/' || !slash)
+        snprintf(s->mat_file, sizeof s->mat_file, "%s", mat_rel);
+    else
+        snprintf(s->mat_file, sizeof s->mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
+    tippe_error ignored = {0};
+    /* A design with inline densities only has no table: then none is cached. */
+    if (load_materials(s->mat_file, &s->materials, &ignored))
+        s->materials = NULL;
+    free(c);
+    *out = s;
+    return TIPPE_OK;
+fail:
+    free(c);
+    tippe_design_source_free(s);
+    return rc;
+}
+
+int tippe_design_source_apply(const tippe_design_source *s, const char *const *overrides,
+                              int n_overrides, cJSON **out, tippe_error *err)
+{
+    *out = NULL;
+    tippe_json_reader *c = tippe_json_reader_new(s->path, err, TIPPE_JSON_WORDS_FIELD, "set by ");
+    cJSON *root = cJSON_Duplicate(s->root, 1);
+    int rc = (!c || !root) ? tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory") : TIPPE_OK;
+    for (int i = 0; !rc && i < n_overrides; i++)
+        rc = apply_override(c, root, overrides[i]);
+    free(c);
+    if (rc) {
+        cJSON_Delete(root);
+        return rc;
+    }
+    *out = root;
+    return TIPPE_OK;
+}
+
+/* A built variant remembers its overrides (and its travel, when that was the
+ * physical one) so that tippe_design_derive() rebuilds the same design. */
+static int remember_overrides(tippe_design *d, const char *const *overrides, int n,
+                              tippe_error *err)
+{
+    if (!(d->overrides = calloc((size_t)n + 1, sizeof *d->overrides)))
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    char travel[128];
+    snprintf(travel, sizeof travel, "travel_mm=[%.17g,%.17g]", d->travel_mm[0], d->travel_mm[1]);
+    for (int i = 0; i <= n; i++) {
+        if (i == n && !d->travel_physical)
+            break;
+        if (!(d->overrides[d->n_overrides++] = dup_string(i < n ? overrides[i] : travel)))
+            return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    }
+    return TIPPE_OK;
+}
+
+int tippe_design_source_build(const tippe_design_source *s, const char *const *overrides,
+                              int n_overrides, unsigned flags, tippe_design **out,
+                              tippe_error *err)
+{
+    *out = NULL;
+    tippe_json_reader *c = tippe_json_reader_new(s->path, err, TIPPE_JSON_WORDS_FIELD, "set by ");
+    cJSON *root = cJSON_Duplicate(s->root, 1);
+    tippe_design *d = calloc(1, sizeof *d);
+    int rc = (!c || !root || !d) ? tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory")
+                                 : TIPPE_OK;
+    for (int i = 0; !rc && i < n_overrides; i++)
+        rc = apply_override(c, root, overrides[i]);
+    if (!rc) {
+        d->source = s;
+        d->travel_physical = (flags & TIPPE_DESIGN_TRAVEL_PHYSICAL) != 0;
+        d->coarse_layout = (flags & TIPPE_DESIGN_COARSE_LAYOUT) != 0;
+        rc = build(c, root, s->path, d, 1);
+        d->source = NULL;
+    }
+    if (!rc)
+        rc = remember_overrides(d, overrides, n_overrides, err);
+    cJSON_Delete(root);
+    free(c);
+    if (rc) {
+        tippe_design_free(d);
+        return rc;
+    }
+    *out = d;
+    return TIPPE_OK;
+}
+
+const char *tippe_design_source_path(const tippe_design_source *s) { return s->path; }
+
+void tippe_design_source_free(tippe_design_source *s)
+{
+    if (!s)
+        return;
+    free(s->path);
+    cJSON_Delete(s->root);
+    cJSON_Delete(s->materials);
+    free(s);
+}
+
+/* ------------------------------------------------------------ printability */
+
+/* Thinnest wall around a hole (a cylinder or tube void cut from a fixed ball):
+ * the side wall at the hole's layer nearest the ball's centre (the widest ring
+ * of material around it), and a floor or roof where the hole ends inside the
+ * ball (measured along the hole's wall, r = its radius, where it is thinnest).
+ * Where a hole opens through the surface its rim thins to nothing in every
+ * drilled ball; that is not counted. INFINITY if there is no such hole. */
+double tippe_design_min_hole_wall_mm(const tippe_design *d, const char **hole)
+{
+    double wall = INFINITY;
+    if (hole)
+        *hole = NULL;
+    for (int i = 0; i < d->n_parts; i++) {
+        const part *p = &d->parts[i];
+        if (!p->is_void || p->moving || (p->shape != SHAPE_CYLINDER && p->shape != SHAPE_TUBE))
+            continue;
+        const part *q = &d->parts[p->parent];
+        if (q->shape != SHAPE_BALL)
+            continue;
+        double a = p->radius_mm, rb = q->radius_mm, zb = q->z_mm;
+        double lo = p->z_mm - p->height_mm / 2, hi = p->z_mm + p->height_mm / 2;
+        double open_at = p->clip_radius_mm > a ? sqrt(p->clip_radius_mm * p->clip_radius_mm - a * a)
+                                               : INFINITY; /* the clip opens the hole there */
+        double surf = rb > a ? sqrt(rb * rb - a * a) : 0.0; /* ball surface at r = a */
+        double zs = fmin(fmax(zb, lo), hi);
+        double w = rb * rb > (zs - zb) * (zs - zb) ? sqrt(rb * rb - (zs - zb) * (zs - zb)) - a : -a;
+        if (lo > -open_at + TOL_MM)
+            w = fmin(w, lo - (zb - surf));
+        if (hi < open_at - TOL_MM)
+            w = fmin(w, (zb + surf) - hi);
+        if (w < wall) {
+            wall = w;
+            if (hole)
+                *hole = p->name;
+        }
+    }
+    return wall;
+}
+
 int tippe_design_part_solid(const tippe_design *d, int i, tippe_design_solid *out)
 {
     if (i < 0 || i >= d->n_parts)
@@ -1522,7 +2096,8 @@ int tippe_design_part_solid(const tippe_design *d, int i, tippe_design_solid *ou
                                 .moving = p->moving,
                                 .parent = p->parent,
                                 .z_mm = p->z_mm,
-                                .clip_radius_mm = p->clip_radius_mm};
+                                .clip_radius_mm = p->clip_radius_mm,
+                                .clip_inner_mm = p->clip_inner_mm};
     switch (p->shape) {
     case SHAPE_BALL:
         out->radius_mm = p->radius_mm;

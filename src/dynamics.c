@@ -1,8 +1,12 @@
 /* One launch of the eccentric sphere: the regular lab-frame equations of motion,
- * the energy and Jellett monitors, the lost-contact event and the settling
- * verdict. docs/dynamics.md derives the equations and documents each criterion. */
+ * the energy and Jellett monitors, the lost-contact event, and the run that ends
+ * in a proved verdict (dynamics_verdict.c). docs/dynamics.md derives the
+ * equations and documents each criterion. */
 #include "tippe/dynamics.h"
 #include "tippe/error.h"
+#include "tippe/theory.h"
+
+#include "dynamics_verdict.h"
 
 #include <float.h>
 #include <gsl/gsl_errno.h>
@@ -19,9 +23,8 @@ enum { DIM_VERDICT = 9, DIM_TRAJECTORY = 15 };
 
 /* The accuracy presets, chosen from the work-precision benchmark
  * (tools/bench/run.sh, docs/performance.md): rk8pd is on the best front of
- * every non-stiff scenario from errors of 1e-4 down; its cost is set by the
- * step cap (1/8 period) down to rtol 1e-9, hence balanced there. fast is rkck,
- * which at the same cost as rkf45 is 2-6 times more accurate. */
+ * every non-stiff scenario from errors of 1e-4 down. fast is rkck, which at the
+ * same cost as rkf45 is 2-6 times more accurate. */
 static const struct {
     const char *name, *stepper;
     double rtol;
@@ -53,6 +56,18 @@ const char *tippe_verdict_name(tippe_verdict v)
     case TIPPE_VERDICT_HANG: return "hang";
     case TIPPE_VERDICT_LOST_CONTACT: return "lost_contact";
     case TIPPE_VERDICT_UNDECIDED: return "undecided";
+    case TIPPE_VERDICT_BOUNDED: return "bounded";
+    }
+    return "?";
+}
+
+const char *tippe_decision_name(tippe_decision d)
+{
+    switch (d) {
+    case TIPPE_DECIDED_T_END: return "t_end";
+    case TIPPE_DECIDED_TRAPPED: return "trapped";
+    case TIPPE_DECIDED_LOST_CONTACT: return "lost_contact";
+    case TIPPE_DECIDED_FLAT_WELL: return "flat_well";
     }
     return "?";
 }
@@ -95,11 +110,7 @@ void tippe_dynamics_options_default(tippe_dynamics_options *o)
     o->t_end = 100.0;
     tippe_dynamics_accuracy_preset("balanced", &o->accuracy, NULL);
     o->sample_dt = 0.0;
-    o->settle_slip = 1e-4;
-    o->settle_theta_rad = 2e-3;
-    o->settle_vertical_rad = 1e-2;
-    o->settle_periods = 4.0;
-    o->settle_windows = 3;
+    o->margin_factor = 10.0;
     o->run_to_t_end = 0;
     o->max_steps = 10000000;
 }
@@ -370,44 +381,6 @@ static void euler_angles(const double *p, double *phi, double *psi)
     }
 }
 
-/* ---- settling ------------------------------------------------------------ */
-
-typedef struct {
-    double t_start, length;
-    double theta_min, theta_max, slip_max;
-    double prev_slip[8]; /* largest slip ratio of the previous windows, newest first */
-    int n_prev;
-} settle_window;
-
-/* The slowest natural rate near the current state: the smaller root of
- * A cos(theta) a^2 - C n a - m g eps = 0, the slow precession of a sleeping
- * top (eq A.11 at theta = 0) and the pendulum rate without spin. */
-static double slow_rate(const dyn_ctx *c, double theta, double n, double omega_scale)
-{
-    const double co = cos(theta), Cn = c->C * n, mge = c->m * c->g * c->eps;
-    const double disc = Cn * Cn + 4.0 * c->A * co * mge;
-    double rate;
-    if (disc >= 0.0) {
-        const double big = Cn + copysign(sqrt(disc), Cn);
-        rate = big != 0.0 ? fabs(2.0 * mge / big) : 0.0;
-    } else {
-        rate = sqrt(mge / (c->A * fabs(co))); /* complex pair: common modulus */
-    }
-    /* A centred sphere (eps = 0) has no gravitational precession: fall back to
-     * a hundredth of the rotation rate so that windows stay finite. */
-    return fmax(rate, 1e-2 * omega_scale);
-}
-
-static void window_start(settle_window *w, const dyn_ctx *c, const tippe_dynamics_options *o,
-                         double t, double theta, double n, double omega_scale)
-{
-    w->t_start = t;
-    w->length = o->settle_periods * 2.0 * M_PI / slow_rate(c, theta, n, omega_scale);
-    w->theta_min = INFINITY;
-    w->theta_max = -INFINITY;
-    w->slip_max = 0.0;
-}
-
 /* ---- the run --------------------------------------------------------------- */
 
 static void set_omega_scale(const dyn_ctx *c, const double *y, double *omega_scale)
@@ -448,11 +421,9 @@ static int check_inputs(const tippe_dynamics_model *model, const tippe_dynamics_
     if (opt->max_steps < 0)
         return tippe_error_set(err, TIPPE_EINPUT, "max_steps = %ld must be >= 0 (0: no budget)",
                                opt->max_steps);
-    if (!(opt->settle_slip > 0) || !(opt->settle_theta_rad > 0) ||
-        !(opt->settle_vertical_rad > 0) || !(opt->settle_periods > 0) ||
-        opt->settle_windows < 2 || opt->settle_windows > 8)
-        return tippe_error_set(err, TIPPE_EINPUT,
-                               "settling options must be positive, with 2..8 windows");
+    if (!(opt->margin_factor >= 1.0 && opt->margin_factor <= 1e6))
+        return tippe_error_set(err, TIPPE_EINPUT, "margin_factor = %g must be in [1, 1e6]",
+                               opt->margin_factor);
     return TIPPE_OK;
 }
 
@@ -588,235 +559,348 @@ static int locate_lift_off(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0, 
     return status < 0 ? status : found;
 }
 
+
+/* ---- the run, in named steps -------------------------------------------------- */
+
+typedef struct {
+    const tippe_dynamics_options *opt;
+    int traj;
+    dyn_ctx c;
+    gsl_odeiv2_system sys;
+    gsl_odeiv2_driver *drv;
+    double y[DIM_TRAJECTORY], y_prev[DIM_TRAJECTORY];
+    double t, t_prev, theta_prev, h;
+    double phi, psi;                /* continued Euler angles (trajectory level) */
+    long i_sample;                  /* index of the next sample time */
+    int at_sample;                  /* the last step landed on a sample time */
+    double J_scale, E_min;
+    double energy_abs_err, J_abs_err; /* running maxima of |E + D - E0|, |J - J0| */
+    verdict_ctx vc;
+    double contact_retry_excess;    /* try the contact bound when E - V_min is below this */
+    contact ct;
+    tippe_dynamics_sample smp;
+} run_state;
+
+/* Inputs, context, launch state, tolerance scales, monitors at t = 0, the wells of
+ * V for the launch's J, and the GSL driver. */
+static int run_setup(run_state *rs, const tippe_dynamics_model *model,
+                     const tippe_dynamics_initial *ic, const tippe_dynamics_options *opt,
+                     tippe_dynamics_result *res, tippe_error *err)
+{
+    int st = check_inputs(model, ic, opt, err);
+    if (st)
+        return st;
+    rs->opt = opt;
+    rs->traj = opt->level == TIPPE_LEVEL_TRAJECTORY;
+    dyn_ctx *c = &rs->c;
+    ctx_init(c, model, rs->traj ? DIM_TRAJECTORY : DIM_VERDICT);
+    res->state_dim = (int)c->dim;
+    initial_state(c, ic, rs->y);
+    double omega_scale;
+    set_omega_scale(c, rs->y, &omega_scale);
+    /* Absolute tolerance = rtol * scale per component: unit vectors 1, angular
+     * velocity the launch's rotation rate, velocities and positions from R. */
+    for (size_t i = 0; i < c->dim; i++)
+        c->scale[i] = 1.0;
+    for (int i = 0; i < 3; i++)
+        c->scale[IW + i] = omega_scale;
+    c->scale[IV] = c->scale[IV + 1] = c->R * omega_scale;
+    if (contact_eval(c, rs->y, &rs->ct))
+        return tippe_error_set(err, TIPPE_ECOMPUTE,
+                               "contact force undetermined at launch (denominator of eq 3.19 "
+                               "= %g <= 0: friction too strong for the model)",
+                               rs->ct.den);
+    res->E0 = energy(c, &rs->ct);
+    res->J0 = jellett(c, &rs->ct);
+    c->scale[ID] = res->E0;
+    if (rs->traj)
+        c->scale[IX] = c->scale[IX + 1] = c->R;
+    rs->J_scale = fmax(fabs(res->J0), 1e-6 * c->C * omega_scale * c->R);
+    rs->E_min = res->E0;
+    rs->contact_retry_excess = INFINITY;
+    st = verdict_init(&rs->vc, model, res->J0, err);
+    if (st)
+        return st;
+    rs->sys = (gsl_odeiv2_system){rhs, jacobian, c->dim, c};
+    /* A first step of 1e-4 of the fastest period; the controller grows it. */
+    rs->h = 1e-4 * 2.0 * M_PI / omega_scale;
+    rs->drv = gsl_odeiv2_driver_alloc_scaled_new(&rs->sys, stepper_type(opt->accuracy.stepper),
+                                                 rs->h, opt->accuracy.rtol, opt->accuracy.rtol,
+                                                 1.0, 0.0, c->scale);
+    if (!rs->drv)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "cannot allocate the GSL driver");
+    return TIPPE_OK;
+}
+
+/* The reported state at rs->t, with the orientation at trajectory level. */
+static void run_fill_sample(run_state *rs)
+{
+    paper_variables(&rs->c, rs->t, rs->y, &rs->ct, &rs->smp);
+    if (rs->traj) {
+        euler_angles(rs->y + IQ, &rs->phi, &rs->psi);
+        rs->smp.phi = rs->phi;
+        rs->smp.psi = rs->psi;
+        rs->smp.x = rs->y[IX];
+        rs->smp.y = rs->y[IX + 1];
+    }
+}
+
+static int run_emit(run_state *rs, tippe_error *err)
+{
+    if (!rs->opt->on_sample)
+        return TIPPE_OK;
+    int cb = rs->opt->on_sample(&rs->smp, rs->opt->sample_ctx);
+    if (cb)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "sample callback stopped the run (%d)", cb);
+    return TIPPE_OK;
+}
+
+/* The verdict of a trapped well and the steady state at its minimum for J0. */
+static void run_set_trapped(run_state *rs, const verdict_trap *tr, double margin, double Rn_bound,
+                            tippe_dynamics_result *res)
+{
+    const tippe_theory_well *wl = &rs->vc.wells.well[tr->well];
+    const tippe_top *top = &rs->vc.top;
+    const double th = wl->theta_min_rad;
+    res->how = TIPPE_DECIDED_TRAPPED;
+    res->verdict = TIPPE_VERDICT_UNDECIDED;
+    res->t_verdict = rs->t;
+    res->final = rs->smp;
+    res->theta_final_rad = th;
+    res->theta_lo_rad = tr->lo;
+    res->theta_hi_rad = tr->hi;
+    res->barrier_gap_J = tr->gap;
+    res->margin_J = margin;
+    res->Rn_bound_N = Rn_bound;
+    res->phi_dot_final_rad_s = 0.0;
+    if (!tr->trapped && rs->c.mu > 0.0) {
+        /* unresolvable: one of the well's steady states, not provably which */
+        res->how = TIPPE_DECIDED_FLAT_WELL;
+        res->spin_final_rad_s = rs->smp.spin;
+        res->phi_dot_final_rad_s = NAN;
+    } else if (rs->c.mu == 0.0) {
+        res->verdict = TIPPE_VERDICT_BOUNDED;
+        res->spin_final_rad_s = rs->smp.spin;
+        res->phi_dot_final_rad_s = NAN;
+    } else if (th == 0.0) {
+        res->verdict = TIPPE_VERDICT_NO_TIP;
+        res->spin_final_rad_s = tippe_theory_n0(top, res->J0);
+    } else if (th == M_PI) {
+        res->verdict = TIPPE_VERDICT_TIP;
+        res->spin_final_rad_s = tippe_theory_npi(top, res->J0);
+    } else {
+        res->verdict = TIPPE_VERDICT_HANG;
+        tippe_theory_state st;
+        if (tippe_theory_intermediate(top, rs->c.g, th, res->J0 < 0.0 ? -1 : 1, &st, NULL) ==
+            TIPPE_OK) {
+            res->spin_final_rad_s = st.spin_rad_s;
+            res->phi_dot_final_rad_s = st.phi_dot_rad_s;
+        } else { /* eps = 0 ball hanging at pi/2: no spin, precession from J */
+            res->spin_final_rad_s = 0.0;
+            res->phi_dot_final_rad_s = res->J0 / (top->A * top->R);
+        }
+    }
+}
+
+/* The energy test at every accepted step (a comparison with a constant of the
+ * well), and the contact bound when the energy excess over the well's minimum has
+ * halved since its last failure (it only gets easier as E falls). 1 if decided:
+ * trapped; bounded (mu = 0, confined: E never changes); or stopped early in a
+ * well that can never be resolved (undecided, flat_well). */
+static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
+{
+    const double margin = verdict_margin(&rs->vc, rs->opt->margin_factor, rs->energy_abs_err,
+                                         rs->J_abs_err, res->E0);
+    verdict_trap tr;
+    verdict_energy_test(&rs->vc, rs->smp.theta, rs->smp.E, margin, &tr);
+    const int decidable = rs->c.mu == 0.0 ? tr.confined : (tr.trapped || tr.unresolvable);
+    if (!decidable)
+        return 0;
+    const double excess = rs->smp.E - rs->vc.wells.well[tr.well].V_min;
+    if (!(excess < rs->contact_retry_excess))
+        return 0;
+    const double Rn_bound = verdict_contact_bound(&rs->vc, rs->smp.E + margin, tr.lo, tr.hi);
+    /* a twentieth of m g: room for the variation of the bound between its nodes */
+    if (!(Rn_bound > 0.05 * rs->c.m * rs->c.g)) {
+        rs->contact_retry_excess = 0.5 * excess;
+        return 0;
+    }
+    run_set_trapped(rs, &tr, margin, Rn_bound, res);
+    return 1;
+}
+
+/* The monitors of an accepted state. */
+static void run_monitor(run_state *rs, tippe_dynamics_result *res)
+{
+    const tippe_dynamics_sample *s = &rs->smp;
+    const double dJ = fabs(s->J - res->J0);
+    if (dJ > rs->J_abs_err)
+        rs->J_abs_err = dJ;
+    const double dE = fabs(s->E + s->D - res->E0);
+    if (dE > rs->energy_abs_err)
+        rs->energy_abs_err = dE;
+    if (s->E - rs->E_min > res->energy_max_rise)
+        res->energy_max_rise = s->E - rs->E_min;
+    if (s->E < rs->E_min)
+        rs->E_min = s->E;
+    if (s->Rn < res->min_Rn)
+        res->min_Rn = s->Rn;
+    if (isnan(res->t_flip) && s->theta > 0.5 * M_PI) /* linear in between the steps */
+        res->t_flip = rs->t_prev + (rs->t - rs->t_prev) * (0.5 * M_PI - rs->theta_prev) /
+                                       (s->theta - rs->theta_prev);
+    rs->theta_prev = s->theta;
+}
+
+/* One accepted step towards the next sample time or t_end. Returns 1 if the top
+ * lost contact in it (the state is then the lift-off), 0 if not, or an error. */
+static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
+{
+    const tippe_dynamics_options *opt = rs->opt;
+    dyn_ctx *c = &rs->c;
+    double t_target = opt->t_end;
+    if (rs->traj && opt->sample_dt > 0.0)
+        t_target = fmin(opt->t_end, (double)rs->i_sample * opt->sample_dt);
+    rs->t_prev = rs->t;
+    memcpy(rs->y_prev, rs->y, c->dim * sizeof *rs->y);
+    c->min_stage_Rn = INFINITY;
+    c->bad_contact = 0;
+    int s = gsl_odeiv2_evolve_apply(rs->drv->e, rs->drv->c, rs->drv->s, &rs->sys, &rs->t,
+                                    t_target, &rs->h, rs->y);
+    if (s != GSL_SUCCESS) {
+        if (c->bad_contact)
+            return -tippe_error_set(err, TIPPE_ECOMPUTE,
+                                    "at t = %g s the contact force became undetermined "
+                                    "(denominator of eq 3.19 <= 0: friction mu = %g s/m "
+                                    "too strong for the model)",
+                                    rs->t, c->mu);
+        return -tippe_error_set(err, TIPPE_ECOMPUTE,
+                                "integrator (%s, rtol %g) failed at t = %g s: %s",
+                                opt->accuracy.stepper, opt->accuracy.rtol, rs->t,
+                                gsl_strerror(s));
+    }
+    res->steps++;
+    rs->at_sample = rs->t >= t_target;
+    if (rs->traj && opt->sample_dt > 0.0 && rs->at_sample)
+        rs->i_sample++;
+    if (contact_eval(c, rs->y, &rs->ct))
+        return -tippe_error_set(err, TIPPE_ECOMPUTE,
+                                "at t = %g s the contact force became undetermined "
+                                "(denominator of eq 3.19 <= 0)", rs->t);
+    int lost = 0;
+    if (rs->ct.Rn < 0.0 || c->min_stage_Rn < 0.0) {
+        /* Never accept a state with Rn < 0: find where it reached 0. */
+        double hc = 0.0, ycross[DIM_TRAJECTORY];
+        int f = locate_lift_off(c, &rs->sys, rs->t_prev, rs->y_prev, rs->t - rs->t_prev,
+                                rs->ct.Rn < 0.0, ycross, &hc);
+        if (f < 0)
+            return -tippe_error_set(err, TIPPE_ECOMPUTE,
+                                    "failed to locate the lift-off near t = %g s", rs->t);
+        if (f == 1) {
+            rs->t = rs->t_prev + hc;
+            memcpy(rs->y, ycross, c->dim * sizeof *rs->y);
+            contact_eval(c, rs->y, &rs->ct);
+            lost = 1;
+        }
+    }
+    run_fill_sample(rs);
+    run_monitor(rs, res);
+    return lost;
+}
+
+static void run_set_lost_contact(run_state *rs, tippe_dynamics_result *res)
+{
+    res->verdict = TIPPE_VERDICT_LOST_CONTACT;
+    res->how = TIPPE_DECIDED_LOST_CONTACT;
+    res->t_verdict = rs->t;
+    res->final = rs->smp;
+    res->theta_final_rad = rs->smp.theta;
+    res->spin_final_rad_s = rs->smp.spin;
+    res->phi_dot_final_rad_s = rs->smp.phi_dot;
+}
+
+/* Whether the loop may stop once the verdict is known. */
+static int run_may_stop(const run_state *rs, const tippe_dynamics_result *res)
+{
+    if ((res->verdict == TIPPE_VERDICT_UNDECIDED && res->how != TIPPE_DECIDED_FLAT_WELL) ||
+        rs->opt->run_to_t_end)
+        return 0;
+    if (rs->opt->until_flip && res->verdict == TIPPE_VERDICT_TIP && isnan(res->t_flip))
+        return 0;
+    return 1;
+}
+
+static void run_result_init(tippe_dynamics_result *res)
+{
+    memset(res, 0, sizeof *res);
+    res->verdict = TIPPE_VERDICT_UNDECIDED;
+    res->how = TIPPE_DECIDED_T_END;
+    res->theta_lo_rad = res->theta_hi_rad = NAN;
+    res->barrier_gap_J = res->margin_J = res->Rn_bound_N = NAN;
+    res->t_flip = NAN;
+}
+
 int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_initial *ic,
                        const tippe_dynamics_options *opt, tippe_dynamics_result *res,
                        tippe_error *err)
 {
     tippe_gsl_errors_as_codes();
-
-    memset(res, 0, sizeof *res);
-    res->verdict = TIPPE_VERDICT_UNDECIDED;
-    int st = check_inputs(model, ic, opt, err);
-    if (st)
-        return st;
-
-    const int traj = opt->level == TIPPE_LEVEL_TRAJECTORY;
-    dyn_ctx c;
-    ctx_init(&c, model, traj ? DIM_TRAJECTORY : DIM_VERDICT);
-    res->state_dim = (int)c.dim;
-
-    double y[DIM_TRAJECTORY], y_prev[DIM_TRAJECTORY];
-    initial_state(&c, ic, y);
-    double omega_scale;
-    set_omega_scale(&c, y, &omega_scale);
-
-    /* Absolute tolerance = rtol * scale per component: unit vectors 1, angular
-     * velocity the launch's rotation rate, velocities and positions from R. */
-    const double v_scale = c.R * omega_scale;
-    for (size_t i = 0; i < c.dim; i++)
-        c.scale[i] = 1.0;
-    for (int i = 0; i < 3; i++)
-        c.scale[IW + i] = omega_scale;
-    c.scale[IV] = c.scale[IV + 1] = v_scale;
-
-    contact ct;
-    if (contact_eval(&c, y, &ct))
-        return tippe_error_set(err, TIPPE_ECOMPUTE,
-                               "contact force undetermined at launch (denominator of eq 3.19 "
-                               "= %g <= 0: friction too strong for the model)",
-                               ct.den);
-    res->E0 = energy(&c, &ct);
-    res->J0 = jellett(&c, &ct);
-    c.scale[ID] = res->E0;
-    if (traj)
-        c.scale[IX] = c.scale[IX + 1] = c.R;
-    const double J_scale = fmax(fabs(res->J0), 1e-6 * c.C * omega_scale * c.R);
-
-    gsl_odeiv2_system sys = {rhs, jacobian, c.dim, &c};
-    const gsl_odeiv2_step_type *T = stepper_type(opt->accuracy.stepper);
-    const double rtol = opt->accuracy.rtol;
-    /* The fastest natural period bounds the step, so that the settling windows
-     * see every oscillation. */
-    const double h_max = 0.125 * 2.0 * M_PI / omega_scale;
-    double h = 1e-3 * h_max;
-    gsl_odeiv2_driver *drv =
-        gsl_odeiv2_driver_alloc_scaled_new(&sys, T, h, rtol, rtol, 1.0, 0.0, c.scale);
-    if (!drv)
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "cannot allocate the GSL driver");
-
-    double t = 0.0, phi = 0.0, psi = 0.0;
-    double E_min = res->E0;
-    tippe_dynamics_sample smp;
-    paper_variables(&c, t, y, &ct, &smp);
-    res->min_Rn = ct.Rn;
-    res->final = smp;
-    int status = TIPPE_OK, done = 0;
-
-    if (ct.Rn < 0.0) {
-        /* Launched already pulling away from the table. */
-        res->verdict = TIPPE_VERDICT_LOST_CONTACT;
-        done = 1;
+    run_result_init(res);
+    run_state rs;
+    memset(&rs, 0, sizeof rs);
+    int status = run_setup(&rs, model, ic, opt, res, err);
+    if (status) {
+        if (rs.drv)
+            gsl_odeiv2_driver_free(rs.drv);
+        return status;
     }
-    if (traj) {
-        smp.phi = phi;
-        smp.psi = psi;
-        smp.x = smp.y = 0.0;
-        res->final = smp;
-        if (opt->on_sample) {
-            int cb = opt->on_sample(&smp, opt->sample_ctx);
-            if (cb) {
-                status = tippe_error_set(err, TIPPE_ECOMPUTE, "sample callback stopped the run (%d)", cb);
-                done = 1;
-            }
-        }
-    }
+    rs.i_sample = 1;
+    run_fill_sample(&rs);
+    rs.theta_prev = rs.smp.theta;
+    res->min_Rn = rs.ct.Rn;
+    res->final = rs.smp;
+    if (rs.traj)
+        status = run_emit(&rs, err);
+    if (rs.ct.Rn < 0.0) /* launched already pulling away from the table */
+        run_set_lost_contact(&rs, res);
+    else if (!status)
+        run_try_decide(&rs, res);
 
-    settle_window win;
-    memset(&win, 0, sizeof win);
-    window_start(&win, &c, opt, t, smp.theta, smp.spin, omega_scale);
-    long i_sample = 1;
-
-    while (!done && t < opt->t_end) {
+    while (!status && !run_may_stop(&rs, res) && rs.t < opt->t_end &&
+           res->verdict != TIPPE_VERDICT_LOST_CONTACT) {
         if (opt->max_steps > 0 && res->steps >= opt->max_steps) {
             res->budget_exhausted = 1;
             break;
         }
-        double t_target = opt->t_end;
-        if (traj && opt->sample_dt > 0.0)
-            t_target = fmin(opt->t_end, (double)i_sample * opt->sample_dt);
-        if (h > h_max)
-            h = h_max;
-        const double t_prev = t;
-        memcpy(y_prev, y, c.dim * sizeof *y);
-        c.min_stage_Rn = INFINITY;
-        c.bad_contact = 0;
-        int s = gsl_odeiv2_evolve_apply(drv->e, drv->c, drv->s, &sys, &t, t_target, &h, y);
-        if (s != GSL_SUCCESS) {
-            if (c.bad_contact)
-                status = tippe_error_set(err, TIPPE_ECOMPUTE,
-                                         "at t = %g s the contact force became undetermined "
-                                         "(denominator of eq 3.19 <= 0: friction mu = %g s/m "
-                                         "too strong for the model)",
-                                         t, c.mu);
-            else
-                status = tippe_error_set(err, TIPPE_ECOMPUTE,
-                                         "integrator (%s, rtol %g) failed at t = %g s: %s",
-                                         opt->accuracy.stepper, rtol, t, gsl_strerror(s));
+        const int lost = run_step(&rs, res, err);
+        if (lost < 0) {
+            status = -lost;
             break;
         }
-        res->steps++;
-        if (contact_eval(&c, y, &ct)) {
-            status = tippe_error_set(err, TIPPE_ECOMPUTE,
-                                     "at t = %g s the contact force became undetermined "
-                                     "(denominator of eq 3.19 <= 0)", t);
+        if (lost && res->how == TIPPE_DECIDED_T_END)
+            run_set_lost_contact(&rs, res);
+        if (rs.traj) {
+            const int due = opt->sample_dt <= 0.0 || rs.at_sample || lost;
+            if (due)
+                status = run_emit(&rs, err);
+        }
+        if (lost)
             break;
-        }
-        if (ct.Rn < 0.0 || c.min_stage_Rn < 0.0) {
-            /* Never accept a state with Rn < 0: find where it reached 0. */
-            double hc = 0.0, ycross[DIM_TRAJECTORY];
-            int f = locate_lift_off(&c, &sys, t_prev, y_prev, t - t_prev, ct.Rn < 0.0, ycross, &hc);
-            if (f < 0) {
-                status = tippe_error_set(err, TIPPE_ECOMPUTE,
-                                         "failed to locate the lift-off near t = %g s", t);
-                break;
-            }
-            if (f == 1) {
-                t = t_prev + hc;
-                memcpy(y, ycross, c.dim * sizeof *y);
-                contact_eval(&c, y, &ct);
-                res->verdict = TIPPE_VERDICT_LOST_CONTACT;
-                done = 1;
-            }
-        }
-
-        paper_variables(&c, t, y, &ct, &smp);
-        /* monitors */
-        const double dJ = fabs(smp.J - res->J0) / J_scale;
-        if (dJ > res->jellett_rel_drift)
-            res->jellett_rel_drift = dJ;
-        const double dE = fabs(smp.E + smp.D - res->E0) / res->E0;
-        if (dE > res->energy_rel_error)
-            res->energy_rel_error = dE;
-        if (smp.E - E_min > res->energy_max_rise)
-            res->energy_max_rise = smp.E - E_min;
-        if (smp.E < E_min)
-            E_min = smp.E;
-        if (ct.Rn < res->min_Rn)
-            res->min_Rn = ct.Rn;
-
-        if (traj) {
-            euler_angles(y + IQ, &phi, &psi);
-            smp.phi = phi;
-            smp.psi = psi;
-            smp.x = y[IX];
-            smp.y = y[IX + 1];
-            int due = opt->sample_dt <= 0.0 || t >= t_target || done;
-            if (opt->sample_dt > 0.0 && t >= t_target)
-                i_sample++;
-            if (due && opt->on_sample) {
-                int cb = opt->on_sample(&smp, opt->sample_ctx);
-                if (cb) {
-                    status = tippe_error_set(err, TIPPE_ECOMPUTE,
-                                             "sample callback stopped the run (%d)", cb);
-                    break;
-                }
-            }
-        }
-        if (done) {
-            res->t_verdict = t;
-            res->final = smp;
-            break;
-        }
-
-        /* settling */
-        if (res->verdict == TIPPE_VERDICT_UNDECIDED) {
-            set_omega_scale(&c, y, &omega_scale);
-            const double slip = smp.slip_speed / (c.R * omega_scale);
-            if (slip > win.slip_max)
-                win.slip_max = slip;
-            if (smp.theta < win.theta_min)
-                win.theta_min = smp.theta;
-            if (smp.theta > win.theta_max)
-                win.theta_max = smp.theta;
-            if (t - win.t_start >= win.length) {
-                int ok = win.n_prev >= opt->settle_windows - 1 && win.slip_max < opt->settle_slip &&
-                         win.theta_max - win.theta_min < opt->settle_theta_rad;
-                /* Decaying: near an unstable equilibrium the contact speed grows. */
-                for (int i = 0; ok && i < opt->settle_windows - 1; i++) {
-                    double newer = i == 0 ? win.slip_max : win.prev_slip[i - 1];
-                    if (!(newer < win.prev_slip[i]))
-                        ok = 0;
-                }
-                if (ok) {
-                    const double th = 0.5 * (win.theta_min + win.theta_max);
-                    if (th < opt->settle_vertical_rad)
-                        res->verdict = TIPPE_VERDICT_NO_TIP;
-                    else if (th > M_PI - opt->settle_vertical_rad)
-                        res->verdict = TIPPE_VERDICT_TIP;
-                    else
-                        res->verdict = TIPPE_VERDICT_HANG;
-                    res->t_verdict = t;
-                    res->final = smp;
-                    if (!opt->run_to_t_end)
-                        break;
-                }
-                for (int i = 7; i > 0; i--)
-                    win.prev_slip[i] = win.prev_slip[i - 1];
-                win.prev_slip[0] = win.slip_max;
-                if (win.n_prev < 8)
-                    win.n_prev++;
-                window_start(&win, &c, opt, t, smp.theta, smp.spin, omega_scale);
-            }
-        }
+        if (res->how == TIPPE_DECIDED_T_END)
+            run_try_decide(&rs, res);
     }
 
-    res->last = smp;
-    if (res->verdict == TIPPE_VERDICT_UNDECIDED) {
-        res->t_verdict = t;
-        res->final = smp;
+    res->last = rs.smp;
+    if (res->how == TIPPE_DECIDED_T_END) {
+        res->t_verdict = rs.t;
+        res->final = rs.smp;
+        res->theta_final_rad = rs.smp.theta;
+        res->spin_final_rad_s = rs.smp.spin;
+        res->phi_dot_final_rad_s = rs.smp.phi_dot;
     }
-    res->rhs_evals = c.nevals;
-    res->rejected_steps = (long)drv->e->failed_steps;
-    gsl_odeiv2_driver_free(drv);
+    res->jellett_rel_drift = rs.J_abs_err / rs.J_scale;
+    res->energy_rel_error = rs.energy_abs_err / res->E0;
+    res->rhs_evals = rs.c.nevals;
+    res->rejected_steps = (long)rs.drv->e->failed_steps;
+    gsl_odeiv2_driver_free(rs.drv);
     return status;
 }

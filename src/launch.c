@@ -15,7 +15,7 @@
 
 /* The median of a half-normal distribution in units of its scale: sqrt(2)
  * erfinv(1/2) = Phi^-1(3/4). */
-#define HALF_NORMAL_MEDIAN 0.6744897501960817
+#define HALF_NORMAL_MEDIAN TIPPE_LAUNCH_HALF_NORMAL_MEDIAN
 
 void tippe_launch_options_default(tippe_launch_options *o)
 {
@@ -29,6 +29,7 @@ void tippe_launch_options_default(tippe_launch_options *o)
     o->mu = 0.1;
     o->g = TIPPE_DEFAULT_G_M_S2;
     o->t_end = 600.0;
+    o->until_flip = 1;
     snprintf(o->accuracy_name, sizeof o->accuracy_name, "balanced");
     tippe_dynamics_accuracy_preset("balanced", &o->accuracy, NULL);
 }
@@ -174,7 +175,8 @@ static void compare_with_theory(const tippe_top *top, double g, tippe_launch_rec
         if (p.state[i].kind == TIPPE_FINAL_HANG)
             rec->hang_theta_rad = p.state[i].theta_rad;
     }
-    if (rec->verdict == TIPPE_VERDICT_LOST_CONTACT || rec->verdict == TIPPE_VERDICT_UNDECIDED)
+    if (rec->verdict == TIPPE_VERDICT_LOST_CONTACT || rec->verdict == TIPPE_VERDICT_UNDECIDED ||
+        rec->verdict == TIPPE_VERDICT_BOUNDED)
         return;
     rec->agrees = 0;
     for (int i = 0; i < p.n; i++)
@@ -196,6 +198,8 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->hang_theta_rad = NAN;
     rec->agrees = -1;
     rec->t_s = rec->theta_final_rad = rec->spin_final_rad_s = NAN;
+    rec->how = TIPPE_DECIDED_T_END;
+    rec->barrier_gap_J = rec->margin_J = rec->t_flip_s = NAN;
     rec->J0 = rec->jellett_rel_drift = NAN;
     rec->rhs_evals = 0;
 
@@ -206,14 +210,19 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     opt.level = TIPPE_LEVEL_VERDICT; /* the least work that gives a final state */
     opt.t_end = o->t_end;
     opt.accuracy = o->accuracy;
+    opt.until_flip = o->until_flip;
     tippe_dynamics_result res;
     rec->status = tippe_dynamics_run(&m, ic, &opt, &res, err);
     if (rec->status != TIPPE_OK)
         return rec->status;
     rec->verdict = res.verdict;
     rec->t_s = res.t_verdict;
-    rec->theta_final_rad = res.final.theta;
-    rec->spin_final_rad_s = res.final.spin;
+    rec->how = res.how;
+    rec->theta_final_rad = res.theta_final_rad;
+    rec->spin_final_rad_s = res.spin_final_rad_s;
+    rec->barrier_gap_J = res.barrier_gap_J;
+    rec->margin_J = res.margin_J;
+    rec->t_flip_s = res.t_flip;
     rec->J0 = res.J0;
     rec->jellett_rel_drift = res.jellett_rel_drift;
     rec->rhs_evals = res.rhs_evals;
@@ -321,6 +330,19 @@ int tippe_launch_tally_records(const tippe_launch_record *r, long n, tippe_launc
             out->max_jellett_rel_drift = x->jellett_rel_drift;
         out->rhs_evals += (double)x->rhs_evals;
     }
+    long m_flip = 0;
+    out->min_gap_over_margin = INFINITY;
+    for (long i = 0; i < n; i++) {
+        if (r[i].status != TIPPE_OK)
+            continue;
+        if (r[i].verdict == TIPPE_VERDICT_TIP && isfinite(r[i].t_flip_s))
+            t[m_flip++] = r[i].t_flip_s;
+        if (r[i].how == TIPPE_DECIDED_TRAPPED && r[i].barrier_gap_J / r[i].margin_J <
+                                                     out->min_gap_over_margin)
+            out->min_gap_over_margin = r[i].barrier_gap_J / r[i].margin_J;
+    }
+    out->flips = m_flip;
+    out->median_t_flip_s = median_of(t, m_flip);
     for (int v = 0; v < TIPPE_LAUNCH_N_VERDICTS; v++) {
         long m = 0;
         for (long i = 0; i < n; i++)

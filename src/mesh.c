@@ -306,18 +306,16 @@ int tippe_mesh_write_3mf(const tippe_mesh *meshes, const char *const *names,
 {
     _Static_assert(sizeof(lib3mf_triangle) == 3 * sizeof(unsigned), "triangle layout");
     tippe_report_file rf;
-    int rc = tippe_report_open(&rf, path, "the 3MF file", err);
+    /* lib3mf writes the file itself, by name */
+    int rc = tippe_report_open_name(&rf, path, "the 3MF file", err);
     if (rc)
         return rc;
-    /* lib3mf writes the file itself: it takes over the temporary by name. */
-    fclose(rf.f);
-    rf.f = NULL;
     void *model = NULL, *writer = NULL;
     int ok = lib3mf_createmodel(&model) == 0;
     for (int k = 0; ok && k < n; k++)
         ok = add_3mf_object(model, &meshes[k], names[k], offset_x_mm[k]);
     ok = ok && lib3mf_model_querywriter(model, "3mf", &writer) == 0 &&
-         lib3mf_writer_writetofileutf8(writer, rf.tmp_path) == 0;
+         lib3mf_writer_writetofileutf8(writer, rf.write_path) == 0;
     if (writer)
         lib3mf_release(writer);
     if (model)

@@ -8,10 +8,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <sys/stat.h>
 
 struct tippe_plot {
-    tippe_report_file file; /* file.f is NULL: PLplot owns the stream (plsfile) */
+    tippe_report_file file; /* the output, opened before drawing so that it is checked first */
+    const char *device;     /* "pngcairo", ... */
+    char *bytes;            /* PLplot draws into memory (open_memstream) ... */
+    size_t n_bytes;         /* ... and tippe_plot_close() writes it out, every write checked */
     int width, height;
 };
 
@@ -82,8 +84,16 @@ int tippe_plot_open(const char *path, int width, int height, tippe_plot **out, t
         free(p);
         return rc;
     }
-    FILE *f = p->file.f;
-    p->file.f = NULL;
+    /* PLplot reports no write error and closes the stream itself in plend():
+     * it gets a stream in memory, and the file is written by report.c, which
+     * checks every write. */
+    FILE *f = open_memstream(&p->bytes, &p->n_bytes);
+    if (!f) {
+        tippe_report_abort(&p->file);
+        free(p);
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
+    }
+    p->device = dev;
     p->width = width;
     p->height = height;
     abort_msg[0] = '\0';
@@ -103,23 +113,45 @@ int tippe_plot_open(const char *path, int width, int height, tippe_plot **out, t
     return TIPPE_OK;
 }
 
+/* Whether the bytes end as a whole file of the device's format does: PNG's
+ * IEND chunk, SVG's closing tag, PDF's %%EOF marker. A second check, beside
+ * the checked writes, that the cairo driver finished its file. */
+static int complete_file(const char *dev, const char *b, size_t n)
+{
+    static const char png_end[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', (char)0xae, 0x42, 0x60,
+                                     (char)0x82};
+    while (n > 0 && strcmp(dev, "pngcairo") && (b[n - 1] == '\n' || b[n - 1] == '\r' ||
+                                                  b[n - 1] == ' '))
+        n--; /* text formats may end in white space */
+    if (!strcmp(dev, "pngcairo"))
+        return n >= 8 + 12 && !memcmp(b, "\x89PNG", 4) && !memcmp(b + n - 12, png_end, 12);
+    if (!strcmp(dev, "svgcairo"))
+        return n >= 6 && !memcmp(b + n - 6, "</svg>", 6);
+    return n >= 5 + 5 && !memcmp(b, "%PDF-", 5) && !memcmp(b + n - 5, "%%EOF", 5);
+}
+
 int tippe_plot_close(tippe_plot *p, tippe_error *err)
 {
     if (!p)
         return tippe_error_set(err, TIPPE_ECOMPUTE, "no plot to close");
-    plend();
+    plend(); /* closes the memory stream: p->bytes, p->n_bytes are final */
     open_plot = NULL;
-    struct stat st;
     int status = TIPPE_OK;
     if (abort_msg[0])
         status = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: plotting failed: %s", p->file.path,
                                  abort_msg);
-    else if (stat(p->file.tmp_path, &st) != 0 || st.st_size == 0)
-        status = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: the plot came out empty", p->file.path);
-    if (status != TIPPE_OK)
-        tippe_report_abort(&p->file);
-    else
+    else if (!p->bytes || !complete_file(p->device, p->bytes, p->n_bytes))
+        status = tippe_error_set(err, TIPPE_ECOMPUTE,
+                                 "%s: the plot came out incomplete (%zu bytes from the %s driver)",
+                                 p->file.path, p->n_bytes, p->device);
+    if (status == TIPPE_OK) {
+        /* A short write is remembered by the stream; commit names its reason. */
+        fwrite(p->bytes, 1, p->n_bytes, p->file.f);
         status = tippe_report_commit(&p->file, err);
+    } else {
+        tippe_report_abort(&p->file);
+    }
+    free(p->bytes);
     free(p);
     return status;
 }
@@ -131,6 +163,7 @@ void tippe_plot_abort(tippe_plot *p)
     plend();
     open_plot = NULL;
     tippe_report_abort(&p->file);
+    free(p->bytes);
     free(p);
 }
 
@@ -175,6 +208,21 @@ static void panel_steps(double steps[2])
     double ny = fmax(3.0, fmin(10.0, (panel_vp[3] - panel_vp[2]) * h / 55.0));
     steps[0] = nice_step(panel_win[1] - panel_win[0], nx);
     steps[1] = nice_step(panel_win[3] - panel_win[2], ny);
+}
+
+void tippe_plot_axes_x(const char *xlabel, const char *title)
+{
+    panel_steps(axis_steps);
+    plslabelfunc(tick_label, axis_steps);
+    plcol0(SLOT_FG);
+    plwidth(1.0);
+    pllsty(1);
+    plbox("bcnsto", axis_steps[0], 0, "bc", 0, 0);
+    plslabelfunc(NULL, NULL);
+    if (xlabel)
+        plmtex("b", 3.0, 0.5, 0.5, xlabel);
+    if (title)
+        plmtex("t", 1.0, 0.5, 0.5, title);
 }
 
 void tippe_plot_axes(const char *xlabel, const char *ylabel, const char *title)

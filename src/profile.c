@@ -193,8 +193,12 @@ static GEOSGeometry *solid_region(geos_ctx *g, const tippe_design_solid *s, doub
         p = ellipse(g, s->centre_radius_mm, s->radial_semi_mm + grow_mm,
                     s->axial_semi_mm + grow_mm, z0, sag);
     }
-    if (p && s->clip_radius_mm > 0)
-        p = combine(g, p, half_disc(g, s->clip_radius_mm, 0, sag), OP_INTER);
+    if (p && s->clip_radius_mm > 0) {
+        GEOSGeometry *clip = half_disc(g, s->clip_radius_mm, 0, sag);
+        if (s->clip_inner_mm > 0) /* clip "shell": the wall only */
+            clip = combine(g, clip, half_disc(g, s->clip_inner_mm, 0, sag), OP_DIFF);
+        p = combine(g, p, clip, OP_INTER);
+    }
     return p;
 }
 
@@ -341,11 +345,12 @@ static void warn(tippe_profile_set *s, const char *fmt, ...)
     va_end(ap);
 }
 
-/* Unit-density volume of a solid in mm^3, from the geometry module's closed forms. */
-static double solid_volume_mm3(const tippe_design_solid *s, double grow_mm)
+/* Unit-density volume of a solid cut to the ball of radius clip_mm (0: not
+ * cut), in mm^3, from the geometry module's closed forms. */
+static double clipped_volume_mm3(const tippe_design_solid *s, double grow_mm, double clip_mm)
 {
     const double mm = 1e-3;
-    double clip = s->clip_radius_mm * mm;
+    double clip = clip_mm * mm;
     tippe_moments m;
     if (!strcmp(s->shape, "ball"))
         m = tippe_ball((s->radius_mm + grow_mm) * mm, 0);
@@ -358,6 +363,15 @@ static double solid_volume_mm3(const tippe_design_solid *s, double grow_mm)
         m = tippe_torus(s->centre_radius_mm * mm, (s->radial_semi_mm + grow_mm) * mm,
                         (s->axial_semi_mm + grow_mm) * mm, s->z_mm * mm, clip);
     return m.m * 1e9;
+}
+
+/* The same, with the solid's own clip (a shell clip: the outer ball less the inner). */
+static double solid_volume_mm3(const tippe_design_solid *s, double grow_mm)
+{
+    double v = clipped_volume_mm3(s, grow_mm, s->clip_radius_mm);
+    if (s->clip_inner_mm > 0)
+        v -= clipped_volume_mm3(s, grow_mm, s->clip_inner_mm);
+    return v;
 }
 
 /* Region a hardware part occupies over the travel (a moving one at nine
@@ -407,6 +421,14 @@ static int mark_clearance(geos_ctx *g, const tippe_design *d, double sag, int *g
     return 1;
 }
 
+static int mirror_r(double *x, double *y, void *unused)
+{
+    (void)y;
+    (void)unused;
+    *x = -*x;
+    return 1;
+}
+
 /* Morphological opening of the body mirrored across the axis (so that a rod
  * on the axis counts its full diameter): what it loses are walls thinner than
  * min_wall. Corner residues are no wider than min_wall/2 in any direction, so
@@ -414,27 +436,8 @@ static int mark_clearance(geos_ctx *g, const tippe_design *d, double sag, int *g
  * thickness of the thinnest such wall (twice the area over the length), or NAN. */
 static double thin_wall_mm(geos_ctx *g, const GEOSGeometry *body, double min_wall)
 {
-    GEOSGeometry *whole = GEOSGeom_clone_r(g->h, body);
-    int ng = whole ? GEOSGetNumGeometries_r(g->h, body) : 0;
-    for (int k = 0; k < ng && whole; k++) {
-        /* The mirror image of each exterior ring (holes do not matter on the
-         * far side: the opening there only reaches min_wall/2 across the axis). */
-        const GEOSGeometry *poly = GEOSGetGeometryN_r(g->h, body, k);
-        const GEOSCoordSequence *cs =
-            GEOSGeom_getCoordSeq_r(g->h, GEOSGetExteriorRing_r(g->h, poly));
-        unsigned n = 0;
-        if (!cs || !GEOSCoordSeq_getSize_r(g->h, cs, &n) || n < 4)
-            continue;
-        GEOSCoordSequence *c2 = GEOSCoordSeq_create_r(g->h, n, 2);
-        for (unsigned i = 0; c2 && i < n; i++) {
-            double r, z;
-            GEOSCoordSeq_getXY_r(g->h, cs, i, &r, &z);
-            GEOSCoordSeq_setXY_r(g->h, c2, i, -r, z);
-        }
-        GEOSGeometry *ring = c2 ? GEOSGeom_createLinearRing_r(g->h, c2) : NULL;
-        GEOSGeometry *p = ring ? GEOSGeom_createPolygon_r(g->h, ring, NULL, 0) : NULL;
-        whole = combine(g, whole, p, OP_UNION);
-    }
+    GEOSGeometry *mirror = GEOSGeom_transformXY_r(g->h, body, mirror_r, NULL);
+    GEOSGeometry *whole = mirror ? combine(g, GEOSGeom_clone_r(g->h, body), mirror, OP_UNION) : NULL;
     if (!whole)
         return NAN;
     GEOSGeometry *in = GEOSBuffer_r(g->h, whole, -min_wall / 2, 16);
@@ -461,40 +464,59 @@ static double thin_wall_mm(geos_ctx *g, const GEOSGeometry *body, double min_wal
     return worst;
 }
 
-/* Whether some hardware lies in a pocket of the complement that the outside
- * cannot reach: a closed shell around a rod and weight. */
+static int shift_z(double *x, double *y, void *dz)
+{
+    (void)x;
+    *y += *(const double *)dz;
+    return 1;
+}
+
+/* Whether the region p, slid along the axis by +-travel (the only way a part
+ * of revolution goes in), runs into the printed body both ways. The swept
+ * region is the convex hull of p and its shifted copy: exact for the convex
+ * (r, z) outlines of rods and weights, larger for others (a warning too many,
+ * never one too few). */
+static int trapped(geos_ctx *g, const GEOSGeometry *p, const GEOSGeometry *printed,
+                   double travel)
+{
+    int blocked = 0;
+    for (int dir = -1; dir <= 1; dir += 2) {
+        double dz = dir * travel;
+        GEOSGeometry *moved = GEOSGeom_transformXY_r(g->h, p, shift_z, &dz);
+        GEOSGeometry *both = moved ? combine(g, GEOSGeom_clone_r(g->h, p), moved, OP_UNION) : NULL;
+        GEOSGeometry *sweep = both ? GEOSConvexHull_r(g->h, both) : NULL;
+        GEOSGeometry *hit = sweep ? GEOSIntersectionPrec_r(g->h, sweep, printed, GRID_MM) : NULL;
+        double area = 0;
+        if (hit)
+            GEOSArea_r(g->h, hit, &area);
+        blocked += area > TINY_AREA_MM2;
+        GEOSGeometry *tmp[3] = {both, sweep, hit};
+        for (int k = 0; k < 3; k++)
+            if (tmp[k])
+                GEOSGeom_destroy_r(g->h, tmp[k]);
+    }
+    return blocked == 2;
+}
+
+/* The first hardware part that cannot be slid in along the axis from either
+ * end (a rod or weight inside a closed shell), or -1. */
 static int hardware_enclosed(geos_ctx *g, const tippe_design *d, const GEOSGeometry *printed,
                              double sag)
 {
-    double R = tippe_design_radius_mm(d);
-    GEOSGeometry *hw = hardware_region(g, d, sag);
-    if (!hw)
-        return 0;
-    GEOSGeometry *box = rect(g, 0, 3 * R, -3 * R, 3 * R);
-    GEOSGeometry *empty = box ? GEOSDifferencePrec_r(g->h, box, printed, GRID_MM) : NULL;
-    int enclosed = 0;
-    int n = empty ? GEOSGetNumGeometries_r(g->h, empty) : 0;
-    for (int k = 0; k < n; k++) {
-        const GEOSGeometry *piece = GEOSGetGeometryN_r(g->h, empty, k);
-        double xmin = 0, xmax = 0;
-        GEOSGeom_getXMax_r(g->h, piece, &xmax);
-        GEOSGeom_getXMin_r(g->h, piece, &xmin);
-        if (xmax >= 3 * R - 1e-9)
-            continue; /* the outside */
-        GEOSGeometry *x = GEOSIntersectionPrec_r(g->h, piece, hw, GRID_MM);
-        double area = 0;
-        if (x) {
-            GEOSArea_r(g->h, x, &area);
-            GEOSGeom_destroy_r(g->h, x);
-        }
-        enclosed |= area > TINY_AREA_MM2;
+    double R = tippe_design_radius_mm(d), t0, t1;
+    tippe_design_travel_mm(d, &t0, &t1);
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_solid s;
+        if (!part_is_hardware(d, i) || tippe_design_part_solid(d, i, &s))
+            continue;
+        GEOSGeometry *p = solid_region(g, &s, 0, s.moving ? 0.5 * (t0 + t1) : 0, sag);
+        int stuck = p && trapped(g, p, printed, 4 * R);
+        if (p)
+            GEOSGeom_destroy_r(g->h, p);
+        if (stuck)
+            return i;
     }
-    if (empty)
-        GEOSGeom_destroy_r(g->h, empty);
-    if (box)
-        GEOSGeom_destroy_r(g->h, box);
-    GEOSGeom_destroy_r(g->h, hw);
-    return enclosed;
+    return -1;
 }
 
 static int fail(geos_ctx *g, tippe_error *err, const tippe_design *d, const char *what)
@@ -668,10 +690,14 @@ int tippe_profile_build(const tippe_design *d, const tippe_profile_options *o,
             warn(s, "%s: a printed wall is about %.2f mm thick, thinner than %.2f mm (two "
                     "perimeters): the slicer may drop or weaken it",
                  tippe_design_path(d), s->thinnest_wall_mm, o->min_wall_mm);
-        if (hardware_enclosed(&g, d, printed, o->chord_mm / 2) && !o->split)
-            warn(s, "%s: the printed body closes around hardware (no way in from outside): "
-                    "print it in two halves (--split) to fit the hardware",
-                 tippe_design_path(d));
+        int stuck = o->split ? -1 : hardware_enclosed(&g, d, printed, o->chord_mm / 2);
+        if (stuck >= 0) {
+            tippe_design_part_info p;
+            tippe_design_part(d, stuck, &p);
+            warn(s, "%s: part '%s' cannot be slid into the printed body along the axis from "
+                    "either end: print the body in two halves (--split) to fit it",
+                 tippe_design_path(d), p.name);
+        }
     }
     if (!rc && !o->split) {
         rc = add_bodies(&g, d, printed, part_geom, exact, "", 0, NAN, s, err);

@@ -54,6 +54,8 @@ static void part_variables(FILE *f, const tippe_design *d, int i, const tippe_pr
     put_var(f, id, "z_mm", sd.z_mm, sd.moving ? "offset from z2_mm" : NULL);
     if (sd.clip_radius_mm > 0)
         put_var(f, id, "clip_radius_mm", sd.clip_radius_mm, "intersected with this ball");
+    if (sd.clip_inner_mm > 0)
+        put_var(f, id, "clip_inner_mm", sd.clip_inner_mm, "less this ball (the shell's wall)");
     if (sd.is_void)
         fprintf(f, "%s_grow_mm = %s; // radial clearance (hole that takes hardware)\n", id,
                 s->clearance_applied[i] ? "clearance_mm" : "0");
@@ -75,7 +77,14 @@ static void part_module(FILE *f, const tippe_design *d, int i)
     fprintf(f, "module %s() {\n", id);
     const char *pad = "    ";
     if (sd.clip_radius_mm > 0) {
-        fprintf(f, "    intersection() {\n        sphere(r = %s_clip_radius_mm);\n", id);
+        if (sd.clip_inner_mm > 0)
+            fprintf(f,
+                    "    intersection() {\n        difference() {\n"
+                    "            sphere(r = %s_clip_radius_mm);\n"
+                    "            sphere(r = %s_clip_inner_mm);\n        }\n",
+                    id, id);
+        else
+            fprintf(f, "    intersection() {\n        sphere(r = %s_clip_radius_mm);\n", id);
         pad = "        ";
     }
     if (!strcmp(sd.shape, "ball")) {

@@ -55,6 +55,24 @@ static int material_density(const tippe_design *d, const char *name, double *rho
     return 0;
 }
 
+/* A printed part's infill: weighed, the scale's reading; else the slicer's
+ * infill, unless solid (it cannot be denser). */
+static void add_print_default(const tippe_design *d, int i, const char *name, tol_list *l)
+{
+    tippe_design_print_info pi;
+    char field[TIPPE_TOLERANCE_FIELD_LEN];
+    if (tippe_design_part_print(d, i, &pi) != TIPPE_OK || !pi.printed)
+        return;
+    if (pi.calibrated) {
+        snprintf(field, sizeof field, "parts.%s.print.measured_mass_g", name);
+        put(l, field, pi.measured_mass_kg * 1e3, TIPPE_TOL_WEIGHED_G, 0, "g", "scale reading");
+    } else if (pi.infill < 1) {
+        snprintf(field, sizeof field, "parts.%s.print.infill", name);
+        put(l, field, pi.infill, pi.infill * TIPPE_TOL_INFILL_PERCENT / 100,
+            TIPPE_TOL_INFILL_PERCENT, "", "slicer infill");
+    }
+}
+
 /* The defaults: printed dimensions +/-0.2 mm (parts of a printable material
  * and the voids cut from them, and the sphere's radius when a printed part
  * forms it); +/-3 % on each filament's density, one error per material (one
@@ -88,6 +106,7 @@ static void add_defaults(const tippe_design *d, tol_list *l)
                     info.density_g_cm3 * TIPPE_TOL_FILAMENT_DENSITY_PERCENT / 100,
                     TIPPE_TOL_FILAMENT_DENSITY_PERCENT, "g/cm^3", "filament density");
             }
+            add_print_default(d, i, info.name, l);
         } else if (!is_void) {
             snprintf(field, sizeof field, "parts.%s." DENSITY_KEY, info.name);
             put(l, field, info.density_g_cm3,
@@ -119,13 +138,20 @@ static int resolve(const tippe_json_reader *c, const tippe_design *d, const char
     int part = -1;
     if (tippe_design_field(d, key, value, &part, why, sizeof why) != TIPPE_OK)
         return tippe_json_fail(c, path, "%s", why);
+    if (strstr(key, ".print.perimeters") || strstr(key, ".print.top_bottom_layers"))
+        return tippe_json_fail(c, path, "a whole number of lines or layers has no tolerance "
+                                        "(give one on the infill or on line_width_mm)");
     const char *field = strrchr(key, '.');
+    int in_print = strstr(key, ".print.") != NULL;
     tippe_design_part_info info;
     if (part >= 0 && tippe_design_part(d, part, &info) == TIPPE_OK)
-        snprintf(canon, cap, "parts.%s%s", info.name, field);
+        snprintf(canon, cap, "parts.%s%s%s", info.name, in_print ? ".print" : "", field);
     else
         snprintf(canon, cap, "%s", key);
-    *unit = strstr(key, DENSITY_KEY) ? "g/cm^3" : "mm";
+    *unit = strstr(key, DENSITY_KEY)          ? "g/cm^3"
+            : strstr(key, "measured_mass_g")  ? "g"
+            : strstr(key, ".print.infill")    ? ""
+                                              : "mm";
     return TIPPE_OK;
 }
 

@@ -13,6 +13,8 @@
 static const char *const designs[] = {"designs/m12-setscrew.json", "designs/m3-setscrew.json",
                                       "designs/shell-rod-iron.json",
                                       "designs/shell-rod-nylon.json", "designs/shell-band.json",
+                                      "designs/shell-rod-through.json",
+                                      "designs/drilled-ball-blind.json",
                                       NULL};
 
 /* Volume of the printed parts less their voids as the mass model has it:

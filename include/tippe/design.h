@@ -15,6 +15,7 @@
 #define TIPPE_DESIGN_H
 
 #include "tippe/error.h"
+#include "tippe/print.h"
 #include "tippe/top.h"
 
 #include <stddef.h>
@@ -81,6 +82,28 @@ int tippe_design_n_parts(const tippe_design *d);
 /* Fills *out for part i (0-based, file order); TIPPE_EINPUT if i is out of range. */
 int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out);
 
+/* How part i is printed (docs/design-format.md, "Printed parts"). A part
+ * without a print block is solid: printed = 0 and the rest is zero. */
+typedef struct {
+    int printed;
+    tippe_print_settings settings; /* as given (settings.infill: the slicer's) */
+    double wall_mm, skin_mm;       /* perimeters x line width, layers x layer height */
+    double infill;                 /* used: settings.infill, or calibrated */
+    int calibrated;                /* infill solved from measured_mass_kg */
+    double measured_mass_kg;
+    double solid_mass_kg;          /* the printed part (part less its voids) if solid */
+    double skin_mass_kg;           /* its walls and top/bottom skins alone (0 % infill) */
+    double printed_mass_kg;        /* as printed, at `infill` */
+    double rel_error;              /* bound on the print model's relative error in the
+                                      part's mass and moments (QAGS estimates) */
+} tippe_design_print_info;
+
+/* Fills *out for part i; TIPPE_EINPUT if i is out of range. */
+int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out);
+
+/* Whether any part is printed (has a print block). */
+int tippe_design_has_printed_parts(const tippe_design *d);
+
 /* Whether part i (0-based, file order) is made of a printable filament: its
  * material's "printable" flag in the materials table (a void: its parent's).
  * 0 for bought hardware, for a material without the flag, for a density given
@@ -123,11 +146,56 @@ typedef struct {
     double radius_mm, inner_radius_mm, thickness_mm, height_mm;
     double centre_radius_mm, radial_semi_mm, axial_semi_mm;
     double z_mm, clip_radius_mm;
+    double clip_inner_mm; /* clip "shell": the part is cut to the wall between this
+                             radius and clip_radius_mm; else 0 */
 } tippe_design_solid;
 
 /* Fills *out for part i; TIPPE_EINPUT if i is out of range. */
 int tippe_design_part_solid(const tippe_design *d, int i, tippe_design_solid *out);
 
 void tippe_design_free(tippe_design *d);
+
+/* The thinnest wall of material around a hole (a cylinder or tube void cut
+ * from a fixed ball), mm: the side wall at the hole's layer nearest the ball's
+ * centre, and the floor or roof where the hole ends inside the ball; the rim
+ * where a hole opens through the surface is not counted. INFINITY if there is
+ * no such hole; *hole (may be NULL) names the thinnest. */
+double tippe_design_min_hole_wall_mm(const tippe_design *d, const char **hole);
+
+/* A design file read once, to build many variants of it (an optimiser's
+ * candidates) without reading or parsing files again: the file's JSON and its
+ * materials table stay in memory. A source is read-only once opened: builds
+ * may run in many threads at once. */
+typedef struct tippe_design_source tippe_design_source;
+
+/* Reads and fully checks path (as tippe_design_load with no overrides). */
+int tippe_design_source_open(const char *path, tippe_design_source **out, tippe_error *err);
+
+/* The stated travel_mm is replaced by the physical travel: the widest stretch
+ * of Z2 in which the moving parts touch nothing (for candidates whose stated
+ * travel cannot be known beforehand). */
+#define TIPPE_DESIGN_TRAVEL_PHYSICAL 1u
+/* Overlaps and the travel are decided on 20 times fewer uniform radii (every
+ * edge and corner of every part is still a sample, so contacts at edges stay
+ * exact; a contact between two curved surfaces away from any edge may be
+ * missed by up to the grid's spacing, ~0.13 mm for R = 25 mm). For screening
+ * many candidates; a result worth keeping is rebuilt without it. */
+#define TIPPE_DESIGN_COARSE_LAYOUT 2u
+
+/* The design with overrides applied (the --set syntax of tippe_design_load),
+ * checked as at load; flags: 0 or TIPPE_DESIGN_TRAVEL_PHYSICAL. Messages name
+ * the file and blame the override that set a bad field ("(set by FIELD=VALUE)"). */
+int tippe_design_source_build(const tippe_design_source *s, const char *const *overrides,
+                              int n_overrides, unsigned flags, tippe_design **out,
+                              tippe_error *err);
+
+/* The file's JSON with the overrides applied, not checked (to write a variant
+ * out as a design file); the caller owns *out (cJSON_Delete). */
+struct cJSON;
+int tippe_design_source_apply(const tippe_design_source *s, const char *const *overrides,
+                              int n_overrides, struct cJSON **out, tippe_error *err);
+
+const char *tippe_design_source_path(const tippe_design_source *s);
+void tippe_design_source_free(tippe_design_source *s);
 
 #endif

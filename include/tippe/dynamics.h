@@ -20,16 +20,35 @@
 #include "tippe/error.h"
 #include "tippe/top.h"
 
+/* Verdicts no_tip, tip and hang are proved (docs/dynamics.md, "Proved verdicts"):
+ * the energy is below every barrier of the effective potential V(theta; J) around
+ * the current well and the normal force stays positive over the trapped set, so the
+ * top ends in the well's minimum. */
 typedef enum {
-    TIPPE_VERDICT_NO_TIP,       /* settled spinning near theta = 0 */
-    TIPPE_VERDICT_TIP,          /* settled spinning near theta = pi */
-    TIPPE_VERDICT_HANG,         /* settled at a constant intermediate angle */
+    TIPPE_VERDICT_NO_TIP,       /* trapped in the well of theta = 0 */
+    TIPPE_VERDICT_TIP,          /* trapped in the well of theta = pi */
+    TIPPE_VERDICT_HANG,         /* trapped in a well whose minimum is 0 < theta < pi */
     TIPPE_VERDICT_LOST_CONTACT, /* Rn reached 0: the top leaves the table */
-    TIPPE_VERDICT_UNDECIDED     /* t_end reached before any of the above */
+    TIPPE_VERDICT_UNDECIDED,    /* t_end (or the step budget) reached first */
+    TIPPE_VERDICT_BOUNDED       /* mu = 0: energy conserved, theta stays for ever in
+                                   [theta_lo_rad, theta_hi_rad] of one well */
 } tippe_verdict;
 
-/* "no_tip", "tip", "hang", "lost_contact", "undecided". */
+/* "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded". */
 const char *tippe_verdict_name(tippe_verdict v);
+
+/* How a verdict was reached. */
+typedef enum {
+    TIPPE_DECIDED_T_END,        /* not decided: t_end or the step budget */
+    TIPPE_DECIDED_TRAPPED,      /* energy below the well's barrier, contact bound > 0 */
+    TIPPE_DECIDED_LOST_CONTACT, /* Rn crossed 0 (located by bisection) */
+    TIPPE_DECIDED_FLAT_WELL     /* undecided for ever at this accuracy: confined to a well
+                                   that is flat, or whose barrier above its minimum is
+                                   within the energy margin (which never shrinks) */
+} tippe_decision;
+
+/* "t_end", "trapped", "lost_contact", "flat_well". */
+const char *tippe_decision_name(tippe_decision d);
 
 typedef struct {
     tippe_top top;
@@ -110,34 +129,41 @@ typedef struct {
     double sample_dt;
     tippe_dynamics_sample_fn on_sample;
     void *sample_ctx;
-    /* Settling (docs/dynamics.md): over settle_windows consecutive windows of
-     * settle_periods slow precession periods each, the largest contact speed
-     * falls from window to window and ends below settle_slip times the velocity
-     * scale R|omega| + sqrt(g R), and theta varies by less than settle_theta_rad
-     * in the last window. Vertical if theta is within settle_vertical_rad of 0
-     * or pi, else hanging. */
-    double settle_slip;
-    double settle_theta_rad;
-    double settle_vertical_rad;
-    double settle_periods;
-    int settle_windows;
+    /* The energy margin of a decision is margin_factor times (energy-balance
+     * error + the change of V that the Jellett drift can make), docs/dynamics.md. */
+    double margin_factor;
     int run_to_t_end;  /* 1: record the verdict but keep integrating to t_end */
+    /* 1: after a tip verdict, integrate on until theta first passes pi/2 so that
+     * t_flip is known (a verdict is usually proved well before the flip). */
+    int until_flip;
     /* Step budget: the run stops, undecided, with budget_exhausted set, after
      * this many accepted steps (0: no budget). Bounds the work of a launch that
      * never settles (mu = 0, or a t_end of millions of periods). */
     long max_steps;
 } tippe_dynamics_options;
 
-/* Defaults: verdict level, t_end 100 s, preset "balanced", settle_slip 1e-4,
- * settle_theta_rad 2e-3, settle_vertical_rad 1e-2, settle_periods 4,
- * settle_windows 3, sample_dt 0, no callback, max_steps 1e7 (about 10 s of
- * one core at the verdict level with rk8pd; docs/performance.md). */
+/* Defaults: verdict level, t_end 100 s, preset "balanced", margin_factor 10,
+ * sample_dt 0, no callback, until_flip 0, max_steps 1e7 (a few seconds of one
+ * core at the verdict level with rk8pd; docs/performance.md). */
 void tippe_dynamics_options_default(tippe_dynamics_options *o);
 
 typedef struct {
     tippe_verdict verdict;
-    double t_verdict;            /* s, when the verdict was reached */
-    tippe_dynamics_sample final; /* state at t_verdict */
+    tippe_decision how;          /* how it was reached */
+    double t_verdict;            /* s, when the verdict was reached (decision time) */
+    tippe_dynamics_sample final; /* state at t_verdict (not the end state: see below) */
+    /* The end state. Trapped: the well's minimum of V (to ~1e-14 rad) and the steady
+     * state there for J0 (tippe_theory_intermediate, n0 or n_pi; phi_dot 0 on the
+     * vertical); bounded: the minimum the motion oscillates about; otherwise the
+     * state at t_verdict. */
+    double theta_final_rad, spin_final_rad_s, phi_dot_final_rad_s;
+    /* Trapped or bounded: theta stays in [theta_lo_rad, theta_hi_rad] (the part of
+     * the well where V <= E + margin); the barrier gap is the least other critical
+     * value of V in the well minus E (INFINITY if the well has none), the margin
+     * the energy margin demanded, Rn_bound_N the lower bound of Rn over that set.
+     * NAN when not trapped. */
+    double theta_lo_rad, theta_hi_rad, barrier_gap_J, margin_J, Rn_bound_N;
+    double t_flip;               /* s, first time theta passed pi/2 (NAN if it did not) */
     tippe_dynamics_sample last;  /* state where integration stopped */
     double J0, E0;               /* at launch */
     double jellett_rel_drift;    /* max |J - J0| / max(|J0|, 1e-6 C W R), W = |omega0| + sqrt(g/R) */

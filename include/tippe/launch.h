@@ -40,9 +40,14 @@ typedef struct {
     double mu;                /* s/m, viscous sliding friction (eq 3.12) */
     double g;                 /* m/s^2 */
     double t_end;             /* s, bound on each launch's simulated time */
+    int until_flip;           /* 1: follow a tip to its flip (t_flip_s), 0: stop at the proof */
     char accuracy_name[16];   /* a preset of tippe/dynamics.h, or "custom" */
     tippe_dynamics_accuracy accuracy;
 } tippe_launch_options;
+
+/* The median of a half-normal distribution of scale 1 (sqrt(2) erf^-1(1/2)):
+ * a central launch's tilt is this times the tilt scale. */
+#define TIPPE_LAUNCH_HALF_NORMAL_MEDIAN 0.6744897501960817
 
 /* The documented defaults (docs/launch.md): spin 5..25 rev/s, tilt scale
  * 0.1 rad (redrawn above 1 rad), precession spread 0.1, sliding 0.05 m/s,
@@ -71,12 +76,12 @@ int tippe_launch_draw(const tippe_top *top, const tippe_launch_options *o, uint6
 int tippe_launch_central(const tippe_top *top, const tippe_launch_options *o, double spin_rad_s,
                          tippe_dynamics_initial *ic, tippe_error *err);
 
-/* A hang agrees with theory when the angles differ by less than this, rad:
- * the settling test leaves a hanging angle within a few 1e-3 rad of its limit
- * (docs/dynamics.md), and `tippe simulate` uses the same value. */
-#define TIPPE_LAUNCH_HANG_AGREE_RAD 1e-2
+/* A hang agrees with theory when the angles differ by less than this, rad: a
+ * proved hang reports the well's minimum of V, a root of eq 5.10 like theory's
+ * angle, so both agree to ~1e-12; 1e-8 leaves room for ill-conditioned roots. */
+#define TIPPE_LAUNCH_HANG_AGREE_RAD 1e-8
 
-enum { TIPPE_LAUNCH_N_VERDICTS = 5 }; /* tippe_verdict values 0 .. 4 */
+enum { TIPPE_LAUNCH_N_VERDICTS = 6 }; /* tippe_verdict values 0 .. 5 */
 
 /* One launch and its outcome. Plain data (no pointers), so that records can be
  * sent between MPI ranks as bytes. */
@@ -86,9 +91,12 @@ typedef struct {
     int status;              /* TIPPE_OK, or the dynamics' error code */
     tippe_dynamics_initial ic;
     tippe_verdict verdict;
-    double t_s;              /* s, when the verdict was reached */
-    double theta_final_rad;  /* theta at t_s */
-    double spin_final_rad_s; /* spin at t_s */
+    double t_s;              /* s, when the verdict was reached (decision time) */
+    tippe_decision how;      /* trapped, lost_contact or t_end */
+    double theta_final_rad;  /* the end state (tippe_dynamics_result.theta_final_rad) */
+    double spin_final_rad_s; /* its spin */
+    double barrier_gap_J, margin_J; /* of a trapped decision (NAN otherwise) */
+    double t_flip_s;         /* s, theta first passed pi/2 (NAN: not, or not followed) */
     double J0;               /* kg m^3/s, Jellett invariant at launch (eq 3.20) */
     double jellett_rel_drift;
     long rhs_evals;
@@ -149,6 +157,12 @@ typedef struct {
     double median_t_s[TIPPE_LAUNCH_N_VERDICTS];
     double max_jellett_rel_drift;
     double rhs_evals; /* total */
+    /* Over tips followed to the flip (until_flip): how many, and the median model
+     * time at which theta passed pi/2 (NAN if none). */
+    long flips;
+    double median_t_flip_s;
+    /* Over trapped decisions: the smallest barrier gap / margin (INFINITY if none). */
+    double min_gap_over_margin;
 } tippe_launch_tally;
 
 /* TIPPE_ECOMPUTE if out of memory. */

@@ -1,9 +1,11 @@
 /* tippe/plot.h: small helpers over PLplot's cairo drivers, shared by every plot.
  *
  * A figure goes to PNG, SVG or PDF according to the extension of its path
- * (pngcairo, svgcairo, pdfcairo). It is drawn into a temporary file in the same
- * directory and renamed into place only by tippe_plot_close(), so a failed or
- * abandoned plot leaves nothing behind.
+ * (pngcairo, svgcairo, pdfcairo). PLplot draws into memory; tippe_plot_close()
+ * checks that the driver finished a whole file (PNG IEND chunk, SVG closing
+ * tag, PDF %%EOF) and writes it through tippe/report.h (every write checked,
+ * a temporary renamed into place, devices and FIFOs straight through), so a
+ * failed or abandoned plot leaves nothing behind and no old file is lost.
  *
  * PLplot keeps one global drawing state, so only one figure can be open at a
  * time in a process and these functions must be called from one thread.
@@ -47,6 +49,9 @@ void tippe_plot_panel(double vx0, double vx1, double vy0, double vy1, double xmi
  * the "x10^n" form, so that the numbers read as they are), axis labels and a
  * title; any label may be NULL. */
 void tippe_plot_axes(const char *xlabel, const char *ylabel, const char *title);
+
+/* The same with numbers on the x axis only (rows of bars, whose y means nothing). */
+void tippe_plot_axes_x(const char *xlabel, const char *title);
 
 /* Dashed vertical and horizontal grid lines at the major ticks. */
 void tippe_plot_grid(void);

@@ -31,6 +31,7 @@ int tippe_cli_eval(int argc, char **argv);
 int tippe_cli_classify(int argc, char **argv);
 int tippe_cli_simulate(int argc, char **argv);
 int tippe_cli_sweep(int argc, char **argv);
+int tippe_cli_optimise(int argc, char **argv);
 int tippe_cli_compare(int argc, char **argv);
 int tippe_cli_launch(int argc, char **argv);
 int tippe_cli_map(int argc, char **argv);
@@ -92,6 +93,7 @@ typedef struct {
     tippe_cli_opt *opts;  /* ends with {NULL}; --help is added */
     int min_args, max_args;  /* positional arguments (files) */
     const char *args_name;   /* what they are, for messages: "design file" */
+    int quiet_help;          /* 1: --help prints nothing (tippe-mpi's other ranks) */
 } tippe_cli_spec;
 
 enum { TIPPE_CLI_HELP = -1 };
@@ -172,10 +174,42 @@ int tippe_cli_sets_add(tippe_cli_sets *s, const char *field, const char *value);
  * options (at most 64)". */
 int tippe_cli_add_set(const char *verb, tippe_cli_sets *s, const char *value);
 
-/* An output file (plot: its extension names a plot format) whose directory
- * can be written: 0, or 2 after a usage error naming option, path and reason.
- * Checked before any work, so that bad usage leaves nothing and costs nothing. */
+/* The changes as one line for titles and reports, "radius_mm=30,
+ * parts.rod.material=nylon" (cut with "..." to fit size), or "" without any.
+ * Returns buf. */
+const char *tippe_cli_sets_text(const tippe_cli_sets *s, char *buf, size_t size);
+/* Adds the changes to o as "set": ["FIELD=VALUE", ...] (an empty array without
+ * any), so that a report never claims to show the file's design when it shows
+ * a variant. */
+void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
+
+/* An output file (plot: its extension names a plot format) that can be
+ * written, found by really creating (and removing) a temporary next to it
+ * (tippe/report.h): 0, or 2 after a usage error naming option, path and
+ * reason (a directory, a path through a file, /proc, no permission, or the
+ * same file as an earlier output of this run). "-" is standard output. Every
+ * verb calls it for every output before any work, so that bad usage leaves
+ * nothing and costs nothing. */
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot);
+
+/* Runs verb v (argv[0] is its name) the way both front ends do: signals stop
+ * it cleanly (tippe_cli_signals_install), its output files form one set that
+ * is committed only if it succeeds, and a failed write to standard output is a
+ * failure (exit 1 with a message). Returns the exit status. */
+int tippe_cli_run(const tippe_cli_verb *v, int argc, char **argv);
+
+/* ---- signals (src/cli/signals.c) ----
+ * SIGINT, SIGTERM, SIGHUP (and, quietly, SIGPIPE) remove every temporary output
+ * file and end the process at once as killed by that signal (exit status
+ * 128 + signal: 130, 143), after the one line "tippe VERB: stopped by SIGINT;
+ * ..."; files already in place are never touched. SIGXFSZ (ulimit -f) is
+ * caught so that the write fails with EFBIG and is reported. Nothing to poll:
+ * a verb (or a library loop) needs no cancel flag; it only has to write its
+ * files through tippe/report.h. */
+void tippe_cli_signals_install(const char *verb);
+/* After the outputs were renamed into place: if a stop signal came during the
+ * renames, says so and ends the process by it; otherwise returns 0. */
+int tippe_cli_signal_pending(const char *verb);
 
 /* Prints o (NULL: out of memory while building it) as JSON on stdout and
  * deletes it: 0, or 1 after "tippe VERB: out of memory while writing JSON". */
@@ -185,6 +219,15 @@ int tippe_cli_print_json(const char *verb, struct cJSON *o);
  * same object in every verb that integrates. */
 void tippe_cli_json_accuracy(struct cJSON *o, const char *preset,
                              const tippe_dynamics_accuracy *acc);
+
+/* How a dynamics verdict was reached (src/cli/verdict_out.c), the same words in
+ * simulate, check and launch: the final state, the decision (trapped,
+ * lost_contact, t_end), its time, barrier gap, margin and contact bound. */
+void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *prefix);
+/* The same as JSON fields of o: decided_by, decision_t_s, theta_final_rad,
+ * spin_final_rad_s, phi_dot_final_rad_s, theta_range_rad, barrier_gap_J,
+ * margin_J, Rn_bound_N, t_flip_s (null where not applicable). */
+void tippe_cli_json_verdict_proof(struct cJSON *o, const tippe_dynamics_result *r);
 
 /* Seconds on the monotonic clock, for the run times the verbs report. */
 double tippe_cli_now_s(void);

@@ -4,16 +4,19 @@
 #include "cli.h"
 
 #include "tippe/plot.h"
+#include "tippe/report.h"
 
 #include <cjson/cJSON.h>
 
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 int tippe_cli_usage_error(const char *verb, const char *fmt, ...)
@@ -149,25 +152,104 @@ int tippe_cli_add_set(const char *verb, tippe_cli_sets *s, const char *value)
     return 0;
 }
 
+const char *tippe_cli_sets_text(const tippe_cli_sets *s, char *buf, size_t size)
+{
+    size_t len = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < s->n; i++) {
+        int n = snprintf(buf + len, size - len, "%s%s", i ? ", " : "", s->item[i]);
+        if (n < 0 || (size_t)n >= size - len) {
+            if (size > 4)
+                snprintf(buf + size - 4, 4, "...");
+            break;
+        }
+        len += (size_t)n;
+    }
+    return buf;
+}
+
+void tippe_cli_json_sets(cJSON *o, const tippe_cli_sets *s)
+{
+    cJSON *a = cJSON_AddArrayToObject(o, "set");
+    for (int i = 0; a && i < s->n; i++)
+        cJSON_AddItemToArray(a, cJSON_CreateString(s->item[i]));
+}
+
+/* The files the verb's outputs finally name, to refuse two outputs that are
+ * one file (each would replace the other). */
+enum { MAX_OUTPUTS = 16 };
+static struct {
+    char file[4096 + 256];
+    const char *option;
+} checked[MAX_OUTPUTS];
+static int n_checked;
+
+/* dir's real path + "/" + base of a (link-resolved) target: one name per file. */
+static int canonical_name(const char *target, char *out, size_t size)
+{
+    char dir[4096];
+    const char *slash = strrchr(target, '/');
+    const char *base = slash ? slash + 1 : target;
+    if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else if (slash == target)
+        snprintf(dir, sizeof dir, "/");
+    else
+        snprintf(dir, sizeof dir, "%.*s", (int)(slash - target), target);
+    char real[PATH_MAX];
+    if (!realpath(dir, real))
+        return 0;
+    return snprintf(out, size, "%s/%s", real, base) < (int)size;
+}
+
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot)
 {
     if (plot && !tippe_plot_device(path))
         return tippe_cli_usage_error(
             verb, "%s %s: unsupported plot format (use a .png, .svg or .pdf file name)", option,
             path);
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *slash = strrchr(dir, '/');
-    if (!slash)
-        snprintf(dir, sizeof dir, ".");
-    else if (slash == dir)
-        dir[1] = '\0';
-    else
-        *slash = '\0';
-    if (access(dir, W_OK) != 0)
-        return tippe_cli_usage_error(verb, "%s %s: cannot write in directory '%s': %s", option,
-                                     path, dir, strerror(errno));
+    tippe_error err = {0};
+    if (tippe_report_check(path, plot ? "the plot" : "the output file", &err))
+        return tippe_cli_usage_error(verb, "%s %s", option, err.msg);
+    char target[4096], name[sizeof checked[0].file];
+    struct stat st;
+    if (strcmp(path, "-") && tippe_report_target(path, target, sizeof target, &err) == 0 &&
+        (stat(target, &st) != 0 || S_ISREG(st.st_mode)) &&
+        canonical_name(target, name, sizeof name)) {
+        for (int i = 0; i < n_checked; i++)
+            if (!strcmp(checked[i].file, name) && strcmp(checked[i].option, option))
+                return tippe_cli_usage_error(verb, "%s and %s name the same file '%s'",
+                                             checked[i].option, option, path);
+        if (n_checked < MAX_OUTPUTS) {
+            memcpy(checked[n_checked].file, name, sizeof name);
+            checked[n_checked++].option = option;
+        }
+    }
     return 0;
+}
+
+int tippe_cli_run(const tippe_cli_verb *v, int argc, char **argv)
+{
+    tippe_cli_signals_install(v->name);
+    tippe_report_set_begin();
+    int status = v->run(argc, argv);
+    /* Stdout is an output like the others: a full disk or a closed pipe there
+     * is a failure, and the files of a failed run are not committed. */
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        const int e = errno ? errno : EIO;
+        fprintf(stderr, "tippe %s: writing to standard output failed: %s\n", v->name,
+                strerror(e));
+        if (status == 0)
+            status = 1;
+    }
+    tippe_error err = {0};
+    if (status != 0)
+        tippe_report_set_abort();
+    else if (tippe_report_set_commit(&err) != TIPPE_OK)
+        status = tippe_cli_fail(v->name, &err, TIPPE_ECOMPUTE);
+    const int stopped = tippe_cli_signal_pending(v->name);
+    return stopped ? stopped : status;
 }
 
 int tippe_cli_print_json(const char *verb, cJSON *o)

@@ -3,6 +3,7 @@
 
 #include "tippe/design.h"
 #include "tippe/sweep.h"
+#include "tippe/sweep_bands.h"
 
 #include <cjson/cJSON.h>
 
@@ -11,7 +12,7 @@
 #include <string.h>
 
 #define MAX_DESIGNS 16
-#define COL 38 /* characters per design column */
+#define COL 44 /* characters per design column */
 
 static const char *const VERB = "compare";
 
@@ -21,8 +22,10 @@ static void compare_usage(FILE *out)
             "usage: tippe compare A.json B.json ... [--json] [--set FIELD=VALUE ...]\n"
             "\n"
             "The zones of several designs (each swept over its stated travel) side by side:\n"
-            "group, from .. to and width in mm (* marks a zone beyond the physical travel),\n"
-            "then whether each is \"3-in-1\" and its narrowest reachable zone.\n"
+            "group, from .. to, width and robust width in mm (the width less the tolerance\n"
+            "bands at both ends, as tippe sweep reports them; * marks a zone beyond the\n"
+            "physical travel), then whether each is \"3-in-1\" and its narrowest reachable\n"
+            "zone, as found and robust.\n"
             "\n"
             "  --json             print {\"designs\": [...]} with one sweep object per design\n"
             "                     (as tippe sweep --json) instead of the table\n"
@@ -44,7 +47,8 @@ static void cell(const char *s)
 
 static double clean(double x) { return fabs(x) < 5e-4 ? 0.0 : x; }
 
-static void print_side_by_side(int n, tippe_design **d, tippe_sweep_result *r)
+static void print_side_by_side(int n, tippe_design **d, tippe_sweep_result *r,
+                               const tippe_sweep_bands_result *b)
 {
     char buf[256];
     for (int i = 0; i < n; i++)
@@ -60,7 +64,7 @@ static void print_side_by_side(int n, tippe_design **d, tippe_sweep_result *r)
     }
     printf("\n");
     for (int i = 0; i < n; i++)
-        cell("zone  from (mm)  to (mm) width (mm)");
+        cell("zone     from       to    width   robust");
     printf("\n");
     int rows = 0;
     for (int i = 0; i < n; i++)
@@ -70,8 +74,9 @@ static void print_side_by_side(int n, tippe_design **d, tippe_sweep_result *r)
             buf[0] = '\0';
             if (j < r[i].n_zones) {
                 const tippe_sweep_zone *z = &r[i].zones[j];
-                snprintf(buf, sizeof buf, "%-4s %9.3f %9.3f %9.3f%s", tippe_group_name(z->group),
-                         clean(z->z2_from_mm), clean(z->z2_to_mm), z->z2_to_mm - z->z2_from_mm,
+                snprintf(buf, sizeof buf, "%-4s %8.3f %8.3f %8.3f %8.3f%s",
+                         tippe_group_name(z->group), clean(z->z2_from_mm), clean(z->z2_to_mm),
+                         z->z2_to_mm - z->z2_from_mm, tippe_sweep_zone_robust_mm(&r[i], &b[i], j),
                          z->within_travel ? "" : "*");
             }
             cell(buf);
@@ -96,6 +101,14 @@ static void print_side_by_side(int n, tippe_design **d, tippe_sweep_result *r)
             snprintf(buf, sizeof buf, "narrowest: -");
         cell(buf);
     }
+    printf("\n");
+    for (int i = 0; i < n; i++) {
+        double rob[3], narrow;
+        tippe_sweep_robust_widths(&r[i], &b[i], rob, &narrow);
+        snprintf(buf, sizeof buf, "robust narrowest: %.3f mm", narrow);
+        cell(buf);
+    }
+    printf("\n(mm; robust: less the tolerance bands of the zone's ends, see tippe sweep)");
     printf("\n* beyond the physical travel (a moving part would pass through a fixed one)\n");
 }
 
@@ -127,13 +140,17 @@ int tippe_cli_compare(int argc, char **argv)
 
     tippe_design *d[MAX_DESIGNS] = {0};
     tippe_sweep_result r[MAX_DESIGNS];
+    tippe_sweep_bands_result b[MAX_DESIGNS];
     memset(r, 0, sizeof r);
+    memset(b, 0, sizeof b);
     tippe_error err = {0};
     int rc = TIPPE_OK, loaded = 0;
     for (int i = 0; i < n && rc == TIPPE_OK; i++, loaded++) {
         rc = tippe_design_load(paths[i], sets.item, sets.n, &d[i], &err);
         if (rc == TIPPE_OK)
             rc = tippe_sweep_design(d[i], 0.0, 0.0, NULL, &r[i], &err);
+        if (rc == TIPPE_OK)
+            rc = tippe_sweep_bands(d[i], &r[i], &b[i], &err);
     }
     if (rc != TIPPE_OK) {
         rc = tippe_cli_fail(VERB, &err, rc);
@@ -142,7 +159,8 @@ int tippe_cli_compare(int argc, char **argv)
         cJSON *arr = o ? cJSON_AddArrayToObject(o, "designs") : NULL;
         for (int i = 0; arr && i < n; i++) {
             cJSON *s = tippe_sweep_json(&r[i], d[i]);
-            if (!s || !cJSON_AddItemToArray(arr, s)) {
+            if (!s || tippe_sweep_json_add_bands(s, d[i], &r[i], &b[i]) ||
+                !cJSON_AddItemToArray(arr, s)) {
                 cJSON_Delete(s);
                 arr = NULL;
             }
@@ -153,9 +171,10 @@ int tippe_cli_compare(int argc, char **argv)
         }
         rc = tippe_cli_print_json(VERB, o);
     } else {
-        print_side_by_side(n, d, r);
+        print_side_by_side(n, d, r, b);
     }
     for (int i = 0; i < loaded; i++) {
+        tippe_sweep_bands_free(&b[i]);
         tippe_sweep_result_free(&r[i]);
         tippe_design_free(d[i]);
     }

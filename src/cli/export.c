@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 static const char *const VERB = "export";
 
@@ -45,10 +46,12 @@ static int parse_formats(const char *text, unsigned *out)
     return 0;
 }
 
-/* Creates dir if it is missing (one level): 0, or 2 after a usage error. */
-static int make_dir(const char *dir)
+/* Creates dir if it is missing (one level; *made says so): 0, or 2 after a
+ * usage error. */
+static int make_dir(const char *dir, int *made)
 {
     struct stat st;
+    *made = 0;
     if (stat(dir, &st) == 0) {
         if (!S_ISDIR(st.st_mode))
             return tippe_cli_usage_error(VERB, "-o %s: not a directory", dir);
@@ -57,6 +60,7 @@ static int make_dir(const char *dir)
     if (mkdir(dir, 0777) != 0)
         return tippe_cli_usage_error(VERB, "-o %s: cannot create the directory: %s", dir,
                                      strerror(errno));
+    *made = 1;
     return 0;
 }
 
@@ -268,7 +272,8 @@ int tippe_cli_export(int argc, char **argv)
             return fprintf(stderr, "tippe %s: out of memory\n", VERB), 1;
         return tippe_cli_fail(VERB, &err, err.code ? err.code : TIPPE_EINPUT);
     }
-    rc = make_dir(dir);
+    int made = 0;
+    rc = make_dir(dir, &made);
     for (int k = 0; !rc && k < np; k++)
         rc = tippe_cli_check_output(VERB, "-o", paths[k], 0);
     free(paths);
@@ -284,7 +289,12 @@ int tippe_cli_export(int argc, char **argv)
     if (rc) {
         tippe_export_result_free(&r);
         tippe_design_free(d);
-        return tippe_cli_fail(VERB, &err, rc);
+        /* the command removes this run's files afterwards; rmdir only takes an
+         * empty directory made for them (one with finished files stays) */
+        int status = tippe_cli_fail(VERB, &err, rc);
+        if (made)
+            rmdir(dir);
+        return status;
     }
     if (json)
         rc = tippe_cli_print_json(VERB, to_json(d, &q, &r));

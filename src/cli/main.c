@@ -34,7 +34,7 @@ int main(int argc, char **argv)
         return mpi;
     const tippe_cli_verb *v = tippe_cli_find_verb(argv[1]);
     if (v)
-        return v->run(argc - 1, argv + 1);
+        return tippe_cli_run(v, argc - 1, argv + 1);
     fprintf(stderr, "tippe: unknown verb '%s' (try tippe --help)\n", argv[1]);
     return 2;
 }

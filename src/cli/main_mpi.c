@@ -36,10 +36,10 @@ int main(int argc, char **argv)
             if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr))
                 MPI_Abort(MPI_COMM_WORLD, 1);
         }
-        status = verb->run(argc - 1, argv + 1);
+        status = tippe_cli_run(verb, argc - 1, argv + 1);
     } else if (rank == 0) {
         if (verb) {
-            status = verb->run(argc - 1, argv + 1);
+            status = tippe_cli_run(verb, argc - 1, argv + 1);
         } else if (argc >= 2 && tippe_cli_is_help(argv[1])) {
             usage(stdout);
             status = 0;

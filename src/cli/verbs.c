@@ -17,6 +17,7 @@ const tippe_cli_verb tippe_cli_verbs[] = {
     {"simulate", tippe_cli_simulate, "integrate one launch of a scenario: tip, no tip or hang",
      0},
     {"sweep", tippe_cli_sweep, "zones of a design along the travel of its weight, plots", 0},
+    {"optimise", tippe_cli_optimise, "search a design space for the widest narrowest zone", 0},
     {"compare", tippe_cli_compare, "zone tables of several designs side by side", 0},
     {"launch", tippe_cli_launch, "many hand launches at one Z2: outcome counts against theory",
      1},

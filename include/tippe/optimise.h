@@ -1,0 +1,140 @@
+/* tippe/optimise.h: search a design space for the top whose narrowest zone is
+ * widest (issue 13; docs/optimise.md).
+ *
+ * A spec (JSON) names a base design and what may change, with the override
+ * paths of `--set`: continuous ranges (`vary`), discrete options (`choose`:
+ * values, or items of a hardware catalogue), fields that follow others (`tie`),
+ * constraints and the objective. For each combination of discrete options
+ * (a "choice") a global NLopt algorithm searches the continuous parameters and
+ * a local one polishes the best point; choices run in parallel (OpenMP), each
+ * on its own, so the answer depends on the seed only, not on the threads.
+ *
+ * A candidate's zones are the sweep's (tippe/sweep.h): each group's widest
+ * contiguous run of Z2 within the physical travel. The objective is the
+ * narrowest of the three (0 if a group is not reachable). Infeasible candidates
+ * score below 0 (-1 - violation), so every algorithm sees one function. */
+#ifndef TIPPE_OPTIMISE_H
+#define TIPPE_OPTIMISE_H
+
+#include "tippe/design.h"
+#include "tippe/error.h"
+#include "tippe/sweep.h"
+
+#include <stddef.h>
+
+#define TIPPE_OPT_MAX_VARY 8
+#define TIPPE_OPT_PATH_LEN 128
+
+typedef struct tippe_opt_spec tippe_opt_spec; /* opaque */
+
+/* Reads and checks a spec: every message names the file and the JSON path.
+ * The design (and the catalogue) paths are relative to the spec's directory.
+ * TIPPE_EINPUT for a bad spec. */
+int tippe_opt_spec_load(const char *path, tippe_opt_spec **out, tippe_error *err);
+void tippe_opt_spec_free(tippe_opt_spec *s);
+
+int tippe_opt_spec_n_vary(const tippe_opt_spec *s);
+const char *tippe_opt_spec_vary_path(const tippe_opt_spec *s, int k);
+int tippe_opt_spec_n_choices(const tippe_opt_spec *s);
+/* "parts.screw.material=iron, parts.screw=M8x10" (into buf). */
+const char *tippe_opt_spec_choice_label(const tippe_opt_spec *s, int choice, char *buf,
+                                        size_t cap);
+const char *tippe_opt_spec_path(const tippe_opt_spec *s);
+const tippe_design_source *tippe_opt_spec_design(const tippe_opt_spec *s);
+
+/* Why a candidate is not feasible. */
+typedef enum {
+    TIPPE_OPT_OK = 0,
+    TIPPE_OPT_DOES_NOT_FIT,    /* the design does not build: parts overlap, no travel */
+    TIPPE_OPT_THIN_WALL,       /* a hole's wall or floor is thinner than min_wall_mm */
+    TIPPE_OPT_HEAVY,           /* the moving weight is heavier than max_weight_g */
+    TIPPE_OPT_EPS_SMALL,       /* eps_max over the travel below eps_max_min_mm */
+    TIPPE_OPT_SPIN_HIGH,       /* flipping in zone II needs more than spin_max_rev_s */
+    TIPPE_OPT_NO_ZONES         /* the sweep failed (outside the phase diagram) */
+} tippe_opt_status;
+
+const char *tippe_opt_status_name(tippe_opt_status s);
+
+/* One evaluated candidate. */
+typedef struct {
+    int choice;
+    double x[TIPPE_OPT_MAX_VARY];  /* the vary values, in spec order */
+    tippe_opt_status status;
+    double score;                  /* what the search maximises: the objective in mm
+                                      (>= 0) if feasible, else -1 - violation */
+    double zone_mm[3];             /* I, II, III: widest run within the travel */
+    double objective_mm;           /* narrowest of the three (0 unless 3-in-1) */
+    double travel_mm[2];           /* physical travel */
+    double eps_max_mm;             /* largest |eps| over the travel */
+    double spin_flip_rev_s;        /* n* (section 7.1) over zone II's middle half; 0 if none */
+    double wall_mm;                /* thinnest hole wall or floor (INFINITY: no hole) */
+    double weight_g;               /* moving mass */
+} tippe_opt_eval;
+
+typedef struct {
+    unsigned long seed;     /* for the stochastic algorithms (CRS2, MLSL, ISRES) */
+    int threads;            /* OpenMP threads; <= 0: the OpenMP default */
+    int keep_all;           /* keep every evaluated candidate (for a CSV) */
+    /* Called after every evaluation, from any thread (tippe_progress_add is safe). */
+    void (*progress)(void *ctx, long n);
+    void *progress_ctx;
+} tippe_opt_options;
+
+void tippe_opt_options_default(tippe_opt_options *o);
+
+/* The best of one choice, and how the search went. */
+typedef struct {
+    tippe_opt_eval best;     /* re-evaluated with the full sweep (1e-7 mm) */
+    long n_evals;            /* global + polish */
+    long n_global;           /* of which in the global phase */
+    double *best_so_far;     /* score after each evaluation, n_evals entries */
+    tippe_opt_eval *all;     /* every candidate in order if keep_all, else NULL */
+} tippe_opt_choice_result;
+
+typedef struct {
+    int n_choices;
+    tippe_opt_choice_result *choices;
+    int best_choice;         /* highest best.score; the lowest index on a tie */
+    long total_evals;
+    int robust_nominal;      /* 1: robust objective asked, tolerance bands not modelled */
+} tippe_opt_result;
+
+/* Total evaluations the search will make at most (for a progress bar). */
+long tippe_opt_planned_evals(const tippe_opt_spec *s);
+
+/* Runs the search. TIPPE_ECOMPUTE if NLopt fails; *out must be freed with
+ * tippe_opt_result_free() whatever the return. */
+int tippe_opt_run(const tippe_opt_spec *s, const tippe_opt_options *o, tippe_opt_result *out,
+                  tippe_error *err);
+void tippe_opt_result_free(tippe_opt_result *r);
+
+/* Evaluates one candidate (n_scan sweep intervals; 0 for the sweep's default). */
+void tippe_opt_evaluate(const tippe_opt_spec *s, int choice, const double *x, int n_scan,
+                        tippe_opt_eval *out);
+
+/* The overrides that make candidate (choice, x) from the base design, as
+ * "FIELD=VALUE" strings (vary, choices, ties, in that order) in buf; returns
+ * how many (at most cap), or -1 if buf is too small. */
+int tippe_opt_overrides(const tippe_opt_spec *s, int choice, const double *x, char (*buf)[256],
+                        int cap);
+
+/* The candidate's sweep over its physical travel (full resolution), for
+ * plots and checks; *out must be freed with tippe_sweep_result_free(). */
+int tippe_opt_sweep(const tippe_opt_spec *s, const tippe_opt_eval *e, tippe_sweep_result *out,
+                    tippe_error *err);
+
+/* The plot (src/plot_optimise.c; PNG, SVG or PDF by extension): the zones along
+ * Z2 of the best design of each choice (the best ten when there are more),
+ * with each group's width, and the convergence of the search (best score so
+ * far against evaluations) for the same choices. */
+int tippe_opt_plot(const char *file, const tippe_opt_spec *s, const tippe_opt_result *r,
+                   tippe_error *err);
+
+/* The candidate as a design file a user can load: the base design with its
+ * overrides, travel_mm the physical travel, materials relative to out_path's
+ * directory, and notes saying how it was found and the objective's value.
+ * NULL, with err set, on failure. */
+struct cJSON *tippe_opt_design_json(const tippe_opt_spec *s, const tippe_opt_eval *e,
+                                    const char *out_path, const char *how, tippe_error *err);
+
+#endif

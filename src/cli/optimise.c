@@ -1,0 +1,320 @@
+/* tippe optimise: search a spec's design space for the widest narrowest zone. */
+#include "cli.h"
+
+#include "tippe/optimise.h"
+#include "tippe/progress.h"
+#include "tippe/report.h"
+
+#include <cjson/cJSON.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const VERB = "optimise";
+
+static void optimise_usage(FILE *out)
+{
+    fprintf(out,
+            "usage: tippe optimise SPEC.json [-o BEST.json] [--json] [--plot FILE]\n"
+            "                      [--csv FILE] [--seed S] [--threads N]\n"
+            "\n"
+            "Searches the designs a spec allows (a base design with fields that vary over\n"
+            "ranges, discrete choices such as materials or catalogue screws, fields tied to\n"
+            "others, constraints) for the one whose narrowest zone is widest: for each of the\n"
+            "groups I, II and III its widest contiguous run of Z2 within the physical travel,\n"
+            "the narrowest of the three (0 unless all three are reachable). NLopt's global\n"
+            "algorithm (default DIRECT-L) runs for each choice, then a local polish (COBYLA);\n"
+            "the best of each choice is re-measured with the full sweep (zone ends to 1e-6 mm).\n"
+            "docs/optimise.md describes the spec.\n"
+            "\n"
+            "  -o BEST.json     write the best design as a design file (travel_mm its physical\n"
+            "                   travel, notes saying how it was found and its zone widths)\n"
+            "  --json           print one JSON object instead of the table\n"
+            "  --plot FILE      zone widths of the best design of each choice and the search's\n"
+            "                   convergence; PNG, SVG or PDF by the file's extension\n"
+            "  --csv FILE       every evaluated candidate (choice, parameters, zones in mm,\n"
+            "                   constraint values, status, score)\n"
+            "  --seed S         seed of the stochastic algorithms (CRS2, MLSL, ISRES);\n"
+            "                   default 1; DIRECT-L, COBYLA and BOBYQA do not draw numbers\n"
+            "  --threads N      OpenMP threads for the choices (default: all cores); the\n"
+            "                   answer does not depend on it\n"
+            "  --help           this text\n"
+            "\n"
+            "Exit status: 0 ok, 2 bad usage or spec (nothing written), 1 search failed.\n");
+}
+
+typedef struct {
+    const char *spec, *best, *plot, *csv;
+    int json;
+    long seed, threads;
+} optimise_args;
+
+static int parse_args(int argc, char **argv, optimise_args *a, int *done)
+{
+    *done = 0;
+    const char *seed = NULL, *threads = NULL;
+    for (int i = 1; i < argc; i++) {
+        const char *s = argv[i];
+        const char **val = NULL;
+        if (tippe_cli_is_help(s)) {
+            optimise_usage(stdout);
+            *done = 1;
+            return 0;
+        } else if (!strcmp(s, "--json")) {
+            a->json = 1;
+            continue;
+        } else if (!strcmp(s, "-o") || !strcmp(s, "--output")) {
+            val = &a->best;
+        } else if (!strcmp(s, "--plot")) {
+            val = &a->plot;
+        } else if (!strcmp(s, "--csv")) {
+            val = &a->csv;
+        } else if (!strcmp(s, "--seed")) {
+            val = &seed;
+        } else if (!strcmp(s, "--threads")) {
+            val = &threads;
+        } else if (tippe_cli_is_option(s, 0)) {
+            return tippe_cli_usage_error(VERB, "unknown option '%s'", s);
+        } else if (!a->spec) {
+            a->spec = s;
+            continue;
+        } else {
+            return tippe_cli_usage_error(VERB, "one spec file only (got also '%s')", s);
+        }
+        if (!(*val = tippe_cli_value(VERB, argc, argv, &i)))
+            return 2;
+    }
+    if (!a->spec)
+        return tippe_cli_usage_error(VERB, "no spec file given");
+    a->seed = 1;
+    a->threads = 0;
+    if (seed && !tippe_cli_parse_long(seed, 0, 2147483647L, &a->seed))
+        return tippe_cli_usage_error(VERB, "--seed '%s': expected a whole number 0 .. 2147483647",
+                                     seed);
+    if (threads && !tippe_cli_parse_long(threads, 1, 1024, &a->threads))
+        return tippe_cli_usage_error(VERB, "--threads '%s': expected a whole number 1 .. 1024",
+                                     threads);
+    const char *outs[3] = {a->best, a->plot, a->csv};
+    const char *names[3] = {"-o", "--plot", "--csv"};
+    for (int k = 0; k < 3; k++) {
+        if (outs[k] && tippe_cli_check_output(VERB, names[k], outs[k], k == 1))
+            return 2;
+        for (int j = 0; j < k; j++)
+            if (outs[k] && outs[j] && !strcmp(outs[k], outs[j]))
+                return tippe_cli_usage_error(VERB, "%s and %s name the same file '%s'", names[j],
+                                             names[k], outs[k]);
+        if (outs[k] && !strcmp(outs[k], a->spec))
+            return tippe_cli_usage_error(VERB, "%s would overwrite the spec '%s'", names[k],
+                                         a->spec);
+    }
+    return 0;
+}
+
+static void progress_add(void *ctx, long n) { tippe_progress_add(ctx, n); }
+
+static void print_params(FILE *f, const tippe_opt_spec *s, const tippe_opt_eval *e, int csv)
+{
+    for (int k = 0; k < tippe_opt_spec_n_vary(s); k++)
+        fprintf(f, csv ? ",%.10g" : " %10.4f", e->x[k]);
+}
+
+static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, double seconds)
+{
+    int nv = tippe_opt_spec_n_vary(s);
+    printf("spec     %s\n", tippe_opt_spec_path(s));
+    printf("search   %ld candidates in %.1f s over %d choice%s\n\n", r->total_evals, seconds,
+           r->n_choices, r->n_choices == 1 ? "" : "s");
+    printf("%-24s", "choice");
+    for (int k = 0; k < nv; k++) {
+        const char *p = tippe_opt_spec_vary_path(s, k);
+        const char *tail = strrchr(p, '.');
+        char head[64];
+        snprintf(head, sizeof head, "%s", tail && tail > p ? tail + 1 : p);
+        printf(" %10.10s", head);
+    }
+    printf(" %8s %8s %8s %9s %8s %8s  %s\n", "I (mm)", "II (mm)", "III (mm)", "narrowest",
+           "eps_max", "n* rev/s", "status");
+    for (int c = 0; c < r->n_choices; c++) {
+        const tippe_opt_eval *e = &r->choices[c].best;
+        char label[256];
+        printf("%-24.24s", tippe_opt_spec_choice_label(s, c, label, sizeof label));
+        print_params(stdout, s, e, 0);
+        printf(" %8.3f %8.3f %8.3f %9.3f %8.3f %8.2f  %s%s\n", e->zone_mm[0], e->zone_mm[1],
+               e->zone_mm[2], e->objective_mm, e->eps_max_mm, e->spin_flip_rev_s,
+               tippe_opt_status_name(e->status), c == r->best_choice ? "  <- best" : "");
+    }
+    const tippe_opt_eval *b = &r->choices[r->best_choice].best;
+    printf("\nbest     narrowest zone %.6f mm (I %.6f, II %.6f, III %.6f mm), travel %.3f .. "
+           "%.3f mm\n",
+           b->objective_mm, b->zone_mm[0], b->zone_mm[1], b->zone_mm[2], b->travel_mm[0],
+           b->travel_mm[1]);
+    printf("accuracy zone ends root-found to 1e-7 mm (full sweep of the best point); the search\n"
+           "         itself is a global search, not a proof of the global optimum\n");
+    if (r->robust_nominal)
+        printf("note     robust_narrowest_zone: tolerance bands are not modelled yet, the widths "
+               "are nominal\n");
+}
+
+static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, double seconds,
+                          const char *best_path)
+{
+    cJSON *o = cJSON_CreateObject(), *choices = NULL;
+    if (!o || !cJSON_AddStringToObject(o, "spec", tippe_opt_spec_path(s)) ||
+        !cJSON_AddNumberToObject(o, "evaluations", (double)r->total_evals) ||
+        !cJSON_AddNumberToObject(o, "seconds", seconds) ||
+        !cJSON_AddBoolToObject(o, "robust_is_nominal", r->robust_nominal) ||
+        !(choices = cJSON_AddArrayToObject(o, "choices"))) {
+        cJSON_Delete(o);
+        return NULL;
+    }
+    for (int c = 0; c < r->n_choices; c++) {
+        const tippe_opt_eval *e = &r->choices[c].best;
+        char label[256];
+        cJSON *ch = cJSON_CreateObject(), *params = NULL, *zones = NULL;
+        if (!ch || !cJSON_AddItemToArray(choices, ch)) {
+            cJSON_Delete(ch);
+            cJSON_Delete(o);
+            return NULL;
+        }
+        int ok = cJSON_AddStringToObject(ch, "choice",
+                                         tippe_opt_spec_choice_label(s, c, label, sizeof label)) &&
+                 (params = cJSON_AddObjectToObject(ch, "parameters")) &&
+                 (zones = cJSON_AddObjectToObject(ch, "zone_widths_mm"));
+        for (int k = 0; ok && k < tippe_opt_spec_n_vary(s); k++)
+            ok = cJSON_AddNumberToObject(params, tippe_opt_spec_vary_path(s, k), e->x[k]) != NULL;
+        const char *g[3] = {"I", "II", "III"};
+        for (int k = 0; ok && k < 3; k++)
+            ok = cJSON_AddNumberToObject(zones, g[k], e->zone_mm[k]) != NULL;
+        double tr[2] = {e->travel_mm[0], e->travel_mm[1]};
+        cJSON *t = ok ? cJSON_CreateDoubleArray(tr, 2) : NULL;
+        ok = ok && t && cJSON_AddItemToObject(ch, "physical_travel_mm", t);
+        ok = ok && cJSON_AddNumberToObject(ch, "narrowest_zone_mm", e->objective_mm) &&
+             cJSON_AddNumberToObject(ch, "eps_max_mm", e->eps_max_mm) &&
+             cJSON_AddNumberToObject(ch, "flip_spin_rev_s", e->spin_flip_rev_s) &&
+             (isfinite(e->wall_mm) ? cJSON_AddNumberToObject(ch, "wall_mm", e->wall_mm)
+                                   : cJSON_AddNullToObject(ch, "wall_mm")) &&
+             cJSON_AddNumberToObject(ch, "weight_g", e->weight_g) &&
+             cJSON_AddStringToObject(ch, "status", tippe_opt_status_name(e->status)) &&
+             cJSON_AddNumberToObject(ch, "evaluations", (double)r->choices[c].n_evals) &&
+             cJSON_AddBoolToObject(ch, "best", c == r->best_choice);
+        if (!ok) {
+            cJSON_Delete(o);
+            return NULL;
+        }
+    }
+    if (!(best_path ? cJSON_AddStringToObject(o, "best_design", best_path)
+                    : cJSON_AddNullToObject(o, "best_design"))) {
+        cJSON_Delete(o);
+        return NULL;
+    }
+    return o;
+}
+
+static int write_csv(const char *path, const tippe_opt_spec *s, const tippe_opt_result *r,
+                     tippe_error *err)
+{
+    tippe_report_file rf;
+    int rc = tippe_report_open(&rf, path, "the CSV file", err);
+    if (rc)
+        return rc;
+    FILE *f = rf.f;
+    fprintf(f, "choice,index");
+    for (int k = 0; k < tippe_opt_spec_n_vary(s); k++)
+        fprintf(f, ",%s", tippe_opt_spec_vary_path(s, k));
+    fprintf(f, ",zone_I_mm,zone_II_mm,zone_III_mm,narrowest_mm,travel_from_mm,travel_to_mm,"
+               "eps_max_mm,flip_spin_rev_s,wall_mm,weight_g,status,score\n");
+    for (int c = 0; c < r->n_choices; c++) {
+        char label[256];
+        tippe_opt_spec_choice_label(s, c, label, sizeof label);
+        for (char *p = label; *p; p++)
+            if (*p == ',' || *p == '"')
+                *p = ';';
+        for (long i = 0; i < r->choices[c].n_evals; i++) {
+            const tippe_opt_eval *e = &r->choices[c].all[i];
+            fprintf(f, "%s,%ld", label, i);
+            print_params(f, s, e, 1);
+            fprintf(f, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,", e->zone_mm[0], e->zone_mm[1],
+                    e->zone_mm[2], e->objective_mm, e->travel_mm[0], e->travel_mm[1],
+                    e->eps_max_mm, e->spin_flip_rev_s);
+            if (isfinite(e->wall_mm))
+                fprintf(f, "%.6g", e->wall_mm);
+            fprintf(f, ",%.6g,%s,%.9g\n", e->weight_g, tippe_opt_status_name(e->status),
+                    e->score);
+        }
+    }
+    return tippe_report_commit(&rf, err);
+}
+
+static int write_best(const char *path, const tippe_opt_spec *s, const tippe_opt_result *r,
+                      unsigned long seed, tippe_error *err)
+{
+    const tippe_opt_choice_result *b = &r->choices[r->best_choice];
+    char how[512], label[256];
+    snprintf(how, sizeof how, "best of %d choice%s, this one %s, after %ld evaluations in all, "
+                              "seed %lu",
+             r->n_choices, r->n_choices == 1 ? "" : "s",
+             tippe_opt_spec_choice_label(s, r->best_choice, label, sizeof label),
+             r->total_evals, seed);
+    cJSON *d = tippe_opt_design_json(s, &b->best, path, how, err);
+    if (!d)
+        return err->code ? err->code : TIPPE_ECOMPUTE;
+    char *text = cJSON_Print(d);
+    cJSON_Delete(d);
+    if (!text)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    tippe_report_file rf;
+    int rc = tippe_report_open(&rf, path, "the design file", err);
+    if (!rc) {
+        fprintf(rf.f, "%s\n", text);
+        rc = tippe_report_commit(&rf, err);
+    }
+    free(text);
+    return rc;
+}
+
+int tippe_cli_optimise(int argc, char **argv)
+{
+    optimise_args a = {0};
+    int done = 0, rc = parse_args(argc, argv, &a, &done);
+    if (rc || done)
+        return rc;
+    tippe_error err = {0};
+    tippe_opt_spec *s = NULL;
+    if ((rc = tippe_opt_spec_load(a.spec, &s, &err)))
+        return tippe_cli_fail(VERB, &err, rc);
+    tippe_progress bar;
+    tippe_progress_start(&bar, stderr, "optimise", tippe_opt_planned_evals(s),
+                         TIPPE_PROGRESS_AUTO);
+    tippe_opt_options o;
+    tippe_opt_options_default(&o);
+    o.seed = (unsigned long)a.seed;
+    o.threads = (int)a.threads;
+    o.keep_all = a.csv != NULL;
+    o.progress = progress_add;
+    o.progress_ctx = &bar;
+    tippe_opt_result r;
+    double t0 = tippe_cli_now_s();
+    rc = tippe_opt_run(s, &o, &r, &err);
+    double seconds = tippe_cli_now_s() - t0;
+    tippe_progress_finish(&bar);
+    if (!rc && a.csv)
+        rc = write_csv(a.csv, s, &r, &err);
+    if (!rc && a.plot)
+        rc = tippe_opt_plot(a.plot, s, &r, &err);
+    if (!rc && a.best)
+        rc = write_best(a.best, s, &r, o.seed, &err);
+    if (rc) {
+        rc = tippe_cli_fail(VERB, &err, rc);
+    } else if (a.json) {
+        rc = tippe_cli_print_json(VERB, result_json(s, &r, seconds, a.best));
+    } else {
+        print_table(s, &r, seconds);
+        if (a.best)
+            printf("wrote    %s\n", a.best);
+    }
+    tippe_opt_result_free(&r);
+    tippe_opt_spec_free(s);
+    return rc;
+}

@@ -1,0 +1,69 @@
+/* The words and JSON fields that say how a dynamics verdict was reached, shared by
+ * simulate, check and launch (docs/dynamics.md, "Proved verdicts"). */
+#include "cli.h"
+
+#include <cjson/cJSON.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *prefix)
+{
+    const double th = r->theta_final_rad;
+    if (r->verdict == TIPPE_VERDICT_BOUNDED) {
+        printf("%sbounded (mu = 0, energy conserved): theta stays in [%.6g, %.6g] rad "
+               "([%.2f, %.2f] deg) about the well's minimum %.6g rad\n",
+               prefix, r->theta_lo_rad, r->theta_hi_rad, r->theta_lo_rad * 180 / M_PI,
+               r->theta_hi_rad * 180 / M_PI, th);
+    } else if (r->how == TIPPE_DECIDED_FLAT_WELL) {
+        printf("%sundecided (flat_well): confined to theta in [%.6g, %.6g] rad, a well whose "
+               "steady states lie closer in energy than the margin; theory's minimum %.10f rad\n",
+               prefix, r->theta_lo_rad, r->theta_hi_rad, th);
+        printf("%*sstopped at t = %.6g s: margin %.3g J (never smaller later; a smaller rtol "
+               "may decide)\n",
+               (int)strlen(prefix), "", r->t_verdict, r->margin_J);
+        return;
+    } else {
+        printf("%s%s: ends at theta %.10f rad (%.4f deg), spin %.6g rad/s, phi_dot %.6g rad/s\n",
+               prefix, tippe_verdict_name(r->verdict), th, th * 180 / M_PI, r->spin_final_rad_s,
+               r->phi_dot_final_rad_s);
+    }
+    printf("%*sproved at t = %.6g s (trapped): energy %.3g J below the well's barrier",
+           (int)strlen(prefix), "", r->t_verdict, r->barrier_gap_J);
+    if (isinf(r->barrier_gap_J))
+        printf(" (no barrier: one well)");
+    printf(", margin %.3g J; Rn >= %.4g N while theta in [%.6g, %.6g] rad\n", r->margin_J,
+           r->Rn_bound_N, r->theta_lo_rad, r->theta_hi_rad);
+}
+
+static void add_number_or_null(cJSON *o, const char *key, double v)
+{
+    if (isfinite(v))
+        cJSON_AddNumberToObject(o, key, v);
+    else
+        cJSON_AddNullToObject(o, key);
+}
+
+void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
+{
+    cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(r->how));
+    add_number_or_null(o, "decision_t_s", r->t_verdict);
+    add_number_or_null(o, "theta_final_rad", r->theta_final_rad);
+    add_number_or_null(o, "spin_final_rad_s", r->spin_final_rad_s);
+    add_number_or_null(o, "phi_dot_final_rad_s", r->phi_dot_final_rad_s);
+    if (r->how == TIPPE_DECIDED_TRAPPED) {
+        cJSON *range = cJSON_AddArrayToObject(o, "theta_range_rad");
+        if (range) {
+            cJSON_AddItemToArray(range, cJSON_CreateNumber(r->theta_lo_rad));
+            cJSON_AddItemToArray(range, cJSON_CreateNumber(r->theta_hi_rad));
+        }
+    } else {
+        cJSON_AddNullToObject(o, "theta_range_rad");
+    }
+    /* an infinite gap (a single well) is null, with barrier false */
+    add_number_or_null(o, "barrier_gap_J", r->barrier_gap_J);
+    add_number_or_null(o, "margin_J", r->margin_J);
+    add_number_or_null(o, "Rn_bound_N", r->Rn_bound_N);
+    add_number_or_null(o, "t_flip_s", r->t_flip);
+}

@@ -1,0 +1,45 @@
+/* Private to the dynamics module: the proved verdict (docs/dynamics.md, "Proved
+ * verdicts"). Pure functions of a top, g, mu and the launch's Jellett invariant. */
+#ifndef TIPPE_DYNAMICS_VERDICT_H
+#define TIPPE_DYNAMICS_VERDICT_H
+
+#include "tippe/dynamics.h"
+#include "tippe/theory.h"
+
+typedef struct {
+    tippe_top top;
+    double g, mu, J;
+    tippe_theory_wells wells;
+    double D_min;  /* kg m^2, least of D(theta) = A R^2 sin^2 + C (R cos - eps)^2 */
+} verdict_ctx;
+
+int verdict_init(verdict_ctx *v, const tippe_dynamics_model *model, double J, tippe_error *err);
+
+/* Energy margin, J: factor * (energy-balance error + the change of V that a Jellett
+ * error dJ can make, |J| dJ / D_min) plus 1e-12 E0 for rounding. */
+double verdict_margin(const verdict_ctx *v, double factor, double energy_err_J, double J_err,
+                      double E0);
+
+/* What the energy test found for a state at angle theta with energy E. */
+typedef struct {
+    int well;            /* index in v->wells */
+    int confined;        /* E + margin < the well's escape level: theta stays in it */
+    int trapped;         /* confined, E + margin < barrier and the well is not flat */
+    int unresolvable;    /* confined, and the well flat or its barrier within the margin
+                            of its minimum: as the margin never shrinks, never trapped */
+    double barrier;      /* J, least V of any other critical point in the well (INFINITY: none) */
+    double gap;          /* J, barrier - E */
+    double lo, hi;       /* rad, where V <= E + margin in the well */
+} verdict_trap;
+
+void verdict_energy_test(const verdict_ctx *v, double theta, double E, double margin,
+                         verdict_trap *out);
+
+/* A lower bound of the normal force Rn (eq 3.19) over every state with theta in
+ * [lo, hi], Jellett J and energy <= E_max (N); -INFINITY where the bound fails. */
+double verdict_contact_bound(const verdict_ctx *v, double E_max, double lo, double hi);
+
+/* Number of theta nodes at which the contact bound is evaluated. */
+enum { VERDICT_CONTACT_NODES = 65 };
+
+#endif

@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# tippe optimise as a user drives it: a small search (tests/data/optimise-small.json,
+# ~150 candidates, well under a second), its best design re-measured by tippe sweep and
+# launched by hand at the middle of each zone, determinism, and bad input.
+# Usage: test_optimise_cli.sh TIPPE
+source "$(dirname "$0")/lib.sh"
+setup "$@"
+spec=tests/data/optimise-small.json
+
+# --- a search, its outputs ----------------------------------------------------
+"$tippe" optimise "$spec" -o "$tmp/best.json" --csv "$tmp/all.csv" --plot "$tmp/opt.png" \
+    --json --threads 2 >"$tmp/res.json"
+check "optimise exits 0" test $? -eq 0
+check "optimise wrote BEST.json, the CSV and the plot" \
+    test -s "$tmp/best.json" -a -s "$tmp/all.csv" -a -s "$tmp/opt.png"
+check "the best design is 3-in-1 and feasible" json_ok "$tmp/res.json" \
+    '[c for c in o["choices"] if c["best"]][0]["status"] == "ok" and [c for c in o["choices"] if c["best"]][0]["narrowest_zone_mm"] > 0'
+# Every evaluation is a CSV row (header + evaluations).
+rows=$(($(wc -l <"$tmp/all.csv") - 1))
+check "the CSV has one row per evaluation ($rows)" json_ok "$tmp/res.json" "o['evaluations'] == $rows"
+
+# --- BEST.json is a design every verb takes: sweep measures the same zones -------
+"$tippe" sweep "$tmp/best.json" --json >"$tmp/sweep.json"
+check "sweep accepts BEST.json" test $? -eq 0
+# The optimiser re-measured its best with the same full sweep; both print zone ends
+# found to 1e-7 mm, so widths that differ by more than 1e-6 mm are different zones.
+check "sweep's zone widths agree with optimise's to 1e-6 mm" python3 - "$tmp/res.json" "$tmp/sweep.json" <<'EOF'
+import json, sys
+res = json.load(open(sys.argv[1])); sw = json.load(open(sys.argv[2]))
+best = [c for c in res["choices"] if c["best"]][0]
+for g in ("I", "II", "III"):
+    a, b = best["zone_widths_mm"][g], sw["zone_widths_mm"][g]
+    assert abs(a - b) <= 1e-6, (g, a, b)
+assert abs(best["narrowest_zone_mm"] - sw["narrowest_zone_mm"]) <= 1e-6
+assert sw["three_in_one"]
+assert sw["physical_travel_mm"] == sw["travel_mm"], "BEST.json's travel is its physical travel"
+EOF
+check "BEST.json's notes say how it was found and the objective" \
+    grep -q '"notes":.*Found by tippe optimise.*Narrowest zone' "$tmp/best.json"
+
+# --- hand launches at the middle of each zone -----------------------------------
+# Zone I straddles the balanced point, where the top has no preferred side and
+# settles too slowly to be decided in a test; it is launched at the middle of its
+# wider part on one side. 12 launches, default hand distribution, fast preset:
+# the majority of the decided launches must be the zone's behaviour (I no_tip,
+# II tip, III hang), with at least 3 decided.
+python3 - "$tmp/sweep.json" >"$tmp/mids" <<'EOF'
+import json, sys
+sw = json.load(open(sys.argv[1]))
+runs = {}
+for z in sw["zones"]:
+    if not z["reachable_mm"]:
+        continue
+    fam = z["group"] if z["group"] in ("I", "III") else "II"
+    a, b = z["reachable_mm"]
+    if fam == "I":  # each side of the balanced point on its own
+        runs.setdefault("I", []).append((a, b))
+    elif runs.get(fam) and abs(runs[fam][-1][1] - a) < 1e-9:
+        runs[fam][-1] = (runs[fam][-1][0], b)
+    else:
+        runs.setdefault(fam, []).append((a, b))
+want = {"I": "no_tip", "II": "tip", "III": "hang"}
+for fam in ("I", "II", "III"):
+    a, b = max(runs[fam], key=lambda r: r[1] - r[0])
+    print(fam, 0.5 * (a + b), want[fam])
+EOF
+while read -r fam mid want; do
+    "$tippe" launch "$tmp/best.json" --z2 "$mid" -n 12 --accuracy fast --json --threads 2 \
+        >"$tmp/launch-$fam.json"
+    check "launch at the middle of zone $fam (Z2 = $mid mm): majority $want" python3 - \
+        "$tmp/launch-$fam.json" "$want" <<'EOF'
+import json, sys
+c = json.load(open(sys.argv[1]))["counts"]
+decided = {k: v for k, v in c.items() if k != "undecided"}
+assert sum(decided.values()) >= 3, c
+top = max(decided, key=decided.get)
+assert top == sys.argv[2] and decided[top] > sum(decided.values()) / 2, c
+EOF
+done <"$tmp/mids"
+
+# --- same seed, same answer, at any number of threads ---------------------------
+"$tippe" optimise "$spec" -o "$tmp/best1.json" --threads 1 >/dev/null
+check "one thread and two give the same BEST.json" cmp -s "$tmp/best.json" "$tmp/best1.json"
+
+# --- bad input: a clear message naming the file and the field, exit 2, nothing written
+json_edit "$spec" "$tmp/bad-key.json" 'd["design"] = "'"$PWD"'/designs/drilled-ball-blind.json"; d["vary"]["parts.screw.radius_mm"] = [6, 2]'
+expect_fail "a reversed range" 2 "bad-key.json" "vary.parts.screw.radius_mm" "from < to" \
+    -- optimise "$tmp/bad-key.json" -o "$tmp/never.json"
+check "nothing written after bad input" test ! -e "$tmp/never.json"
+json_edit "$spec" "$tmp/bad-obj.json" 'd["design"] = "'"$PWD"'/designs/drilled-ball-blind.json"; d["objective"] = "widest"'
+expect_fail "an unknown objective" 2 "bad-obj.json" "objective" "narrowest_zone" \
+    -- optimise "$tmp/bad-obj.json"
+json_edit "$spec" "$tmp/bad-field.json" 'd["design"] = "'"$PWD"'/designs/drilled-ball-blind.json"; d["vary"]["parts.screw.colour_mm"] = [1, 2]'
+expect_fail "a field the design does not have" 2 "colour_mm" -- optimise "$tmp/bad-field.json"
+json_edit "$spec" "$tmp/bad-design.json" 'd["design"] = "no-such-design.json"'
+expect_fail "a missing design" 2 "bad-design.json: design" "no-such-design.json" \
+    -- optimise "$tmp/bad-design.json"
+expect_fail "an output in a missing directory" 2 "-o" "$tmp/no/dir/best.json" \
+    -- optimise "$spec" -o "$tmp/no/dir/best.json"
+expect_fail "a plot with an unknown extension" 2 "--plot" -- optimise "$spec" --plot "$tmp/x.gif"
+expect_fail "no spec" 2 "no spec" -- optimise
+finish

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Tolerance bands as a user meets them: sweep prints and writes them, the JSON
+# robust widths are width less both bands, compare shows robust widths, a bad
+# tolerances block is refused naming the file and the entry, the banded plot is
+# written. Usage: test_tolerance_cli.sh TIPPE
+source "$(dirname "$0")/lib.sh"
+setup "$@"
+m12=designs/m12-setscrew.json
+
+out=$("$tippe" sweep "$m12")
+check "sweep lists the tolerances it used" grep -q "independent, combined in quadrature" <<<"$out"
+check "sweep gives a band per boundary" grep -q "band +/- mm" <<<"$out"
+check "sweep gives robust widths" grep -q "robust (mm)" <<<"$out"
+
+"$tippe" sweep "$m12" --json >"$tmp/m12.json"
+check "sweep --json with bands: robust = width - both bands, never negative" \
+    python3 - "$tmp/m12.json" <<'PY'
+import json, sys
+o = json.load(open(sys.argv[1]))
+assert o["bands"] and all(b["combined"] == "quadrature" for b in o["bands"])
+assert {t["rule"] for t in o["tolerances"]} >= {"printed dimension", "filament density", "hardware mass"}
+for b in o["bands"]:
+    # quadrature <= linear sum, and both from the sensitivities
+    s = {t["field"]: t["plus_minus"] for t in o["tolerances"]}
+    terms = [abs(x["dz2_dfield"]) * s[x["field"]] for x in b["sensitivities"]]
+    assert abs(sum(t * t for t in terms) ** 0.5 - b["band_mm"]) < 1e-12 * (1 + b["band_mm"])
+    assert abs(sum(terms) - b["worst_mm"]) < 1e-12 * (1 + b["worst_mm"])
+for z in o["zones"] + o["intervals"]:
+    want = max(0.0, z["width_mm"] - z["band_from_mm"] - z["band_to_mm"])
+    assert abs(z["robust_width_mm"] - want) < 1e-12, z
+assert o["zones"][0]["band_from_mm"] == 0, "the sweep's start has no band"
+PY
+
+out=$("$tippe" compare "$m12" designs/shell-rod-nylon.json)
+check "compare shows robust widths" grep -q "robust narrowest: .* mm" <<<"$out"
+"$tippe" compare "$m12" --json >"$tmp/cmp.json"
+check "compare --json has robust widths" python3 -c "
+import json; o = json.load(open('$tmp/cmp.json'))
+assert 'robust_zone_widths_mm' in o['designs'][0]"
+
+# a bad block: exit 2, file and entry named, nothing on stdout
+json_edit "$m12" "$tmp/bad.json" 'd["tolerances"] = {"parts.bolt.height_mm": 0.1}; d["materials"] = "'"$(pwd)"'/designs/materials.json"'
+expect_fail "unknown part in tolerances" 2 "$tmp/bad.json" 'tolerances["parts.bolt.height_mm"]' \
+    "no part" -- sweep "$tmp/bad.json"
+json_edit "$m12" "$tmp/bad2.json" 'd["tolerances"] = {"parts.screw.height_mm": "3 percent"}; d["materials"] = "'"$(pwd)"'/designs/materials.json"'
+expect_fail "a percentage that is not one" 2 "$tmp/bad2.json" "not a percentage" -- sweep "$tmp/bad2.json"
+expect_fail "--set tolerances with a bad field" 2 'tolerances["radius"]' -- \
+    sweep "$m12" --set 'tolerances={"radius": 0.1}'
+
+# the banded plot
+"$tippe" sweep "$m12" --plot "$tmp/zones.png" >/dev/null
+check "banded zone plot written" test -s "$tmp/zones.png"
+finish
