@@ -72,6 +72,16 @@ for k in range(3):
 assert any("--split" in w and "'rod'" in w for w in r["warnings"])  # closed around the rod
 EOF
 
+# --- eval reports the printed volume export writes ----------------------------
+"$tippe" eval designs/m12-setscrew.json --z2 5 --json >"$tmp/eval.json" 2>/dev/null
+"$py" - "$tmp/eval.json" "$m12" <<'EOF' && ok || bad "eval's printed_bodies volume differs from export's"
+import json, sys
+e = json.load(open(sys.argv[1])); r = json.load(open(sys.argv[2]))
+assert [b["name"] for b in e["printed_bodies"]] == [b["name"] for b in r["bodies"]]
+for pb, b in zip(e["printed_bodies"], r["bodies"]):
+    assert abs(pb["volume_mm3"] - b["exact_volume_mm3"]) < 1e-9 * b["exact_volume_mm3"]
+EOF
+
 # --- convergence: the volume error falls in proportion to --chord-mm ------------
 # (chord sag ~ step^2 and the volume deficit ~ sag: order 1 in the chord)
 for c in 0.04 0.02 0.01 0.005; do
