@@ -11,6 +11,17 @@ d=$tmp/d
 mkdir -p "$d"
 tippe_abs=$(realpath "$tippe")
 
+# limited KIB ARGS...: tippe ARGS under a file-size limit of KIB KiB with SIGXFSZ
+# ignored (so that a write past it fails with EFBIG); stderr in $d/err.
+limited() {
+    local kib=$1
+    shift
+    (
+        ulimit -f "$kib"
+        trap '' XFSZ
+        "$tippe" "$@" >/dev/null 2>"$d/err"
+    )
+}
 # nothing_left DIR: no temporary ("*.tmp.*") left in DIR.
 nothing_left() { [ -z "$(find "$1" -name '*.tmp.*' -print -quit)" ]; }
 # same_text FILE TEXT: FILE holds exactly TEXT (and a newline).
@@ -85,11 +96,7 @@ check "sweep > /dev/full says why" grep -q "writing to standard output failed: N
 # A file-size limit (ulimit -f, in KiB; SIGXFSZ ignored so that write fails with
 # EFBIG): the CSV is 3 MB, so 100 KiB cuts it short.
 echo "old csv" >"$d/keep.csv"
-(
-    ulimit -f 100
-    trap '' XFSZ
-    "$tippe" simulate "$sc" --csv "$d/keep.csv" >/dev/null 2>"$d/err"
-)
+limited 100 simulate "$sc" --csv "$d/keep.csv"
 check "a CSV cut short by ulimit -f exits 1" test $? -eq 1
 check "the message names the CSV file and the reason" grep -q "keep.csv: writing the CSV file failed: File too large" "$d/err"
 check "the old CSV is untouched" same_text "$d/keep.csv" "old csv"
@@ -105,11 +112,7 @@ check "without trap '' XFSZ: the old CSV is untouched" same_text "$d/keep.csv" "
 # A plot cut short (PLplot reports no write error of its own).
 for ext in png svg pdf; do
     echo "old plot" >"$d/keep.$ext"
-    (
-        ulimit -f 20
-        trap '' XFSZ
-        "$tippe" simulate "$sc" --plot "$d/keep.$ext" >/dev/null 2>"$d/err"
-    )
+    limited 20 simulate "$sc" --plot "$d/keep.$ext"
     check "a $ext plot cut short by ulimit -f exits 1" test $? -eq 1
     check "the message names the $ext plot" grep -q "keep.$ext: writing the plot failed" "$d/err"
     check "the old $ext plot is untouched" same_text "$d/keep.$ext" "old plot"
@@ -121,11 +124,7 @@ check "no temporary is left after the plots" nothing_left "$d"
 # the CSV is finished first, but its old file must survive the failed plot.
 echo "old csv" >"$d/set.csv"
 echo "old svg" >"$d/set.svg"
-(
-    ulimit -f 600
-    trap '' XFSZ
-    "$tippe" simulate "$sc" --sample-dt 1 --csv "$d/set.csv" --plot "$d/set.svg" >/dev/null 2>"$d/err"
-)
+limited 600 simulate "$sc" --sample-dt 1 --csv "$d/set.csv" --plot "$d/set.svg"
 check "simulate: a failed second output exits 1" test $? -eq 1
 check "simulate: the first output's old file survives" same_text "$d/set.csv" "old csv"
 check "simulate: the second output's old file survives" same_text "$d/set.svg" "old svg"
@@ -133,11 +132,7 @@ check "simulate: no temporary is left" nothing_left "$d"
 # sweep: zone plot (PNG, ~100 kB) then phase plot (SVG, ~900 kB).
 echo "old png" >"$d/zones.png"
 echo "old svg" >"$d/phase.svg"
-(
-    ulimit -f 300
-    trap '' XFSZ
-    "$tippe" sweep "$m3" --plot "$d/zones.png" --phase-plot "$d/phase.svg" >/dev/null 2>"$d/err"
-)
+limited 300 sweep "$m3" --plot "$d/zones.png" --phase-plot "$d/phase.svg"
 check "sweep: a failed phase plot exits 1" test $? -eq 1
 check "sweep: the old zone plot survives" same_text "$d/zones.png" "old png"
 check "sweep: the old phase plot survives" same_text "$d/phase.svg" "old svg"
