@@ -580,6 +580,71 @@ done:
     return rc;
 }
 
+struct tippe_materials {
+    cJSON *root;
+    int n;
+};
+
+int tippe_materials_load(const char *path, tippe_materials **out, tippe_error *err)
+{
+    *out = NULL;
+    tippe_materials *t = calloc(1, sizeof *t);
+    if (!t)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    int rc = load_materials(path, &t->root, err);
+    if (rc) {
+        free(t);
+        return rc;
+    }
+    t->n = cJSON_GetArraySize(t->root);
+    *out = t;
+    return TIPPE_OK;
+}
+
+int tippe_materials_count(const tippe_materials *t) { return t->n; }
+
+void tippe_materials_get(const tippe_materials *t, int i, tippe_material *out)
+{
+    const cJSON *m = cJSON_GetArrayItem(t->root, i);
+    const cJSON *notes = cJSON_GetObjectItemCaseSensitive(m, "notes");
+    out->name = m->string;
+    out->source = cJSON_GetObjectItemCaseSensitive(m, "source")->valuestring;
+    out->notes = cJSON_IsString(notes) ? notes->valuestring : "";
+    out->density_g_cm3 = cJSON_GetObjectItemCaseSensitive(m, "density_g_cm3")->valuedouble;
+    out->printable = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(m, "printable"));
+}
+
+void tippe_materials_free(tippe_materials *t)
+{
+    if (t)
+        cJSON_Delete(t->root);
+    free(t);
+}
+
+int tippe_design_materials_file(const char *design_path, char *buf, size_t size,
+                                tippe_error *err)
+{
+    tippe_json_reader *c = tippe_json_reader_new(design_path, err, TIPPE_JSON_WORDS_FIELD, NULL);
+    if (!c)
+        return TIPPE_ECOMPUTE;
+    cJSON *root = NULL;
+    char rel[512] = "materials.json";
+    int rc = tippe_json_load(c, MAX_FILE_MIB, "design", &root);
+    if (!rc && !(cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts")))
+        rc = tippe_json_fail(c, "", "not a design (no parts)");
+    if (!rc)
+        rc = tippe_json_string(c, root, "", "materials", 0, rel, sizeof rel, NULL);
+    const char *slash = strrchr(design_path, '/');
+    if (!rc && (rel[0] == '/' || !slash ? snprintf(buf, size, "%s", rel)
+                                        : snprintf(buf, size, "%.*s/%s",
+                                                   (int)(slash - design_path), design_path,
+                                                   rel)) >= (int)size)
+        rc = tippe_error_set(err, TIPPE_EINPUT, "%s: materials: path too long", design_path);
+    cJSON_Delete(root);
+    free(c);
+    return rc;
+}
+
 /* ------------------------------------------------------ z intervals at r */
 
 typedef struct {
