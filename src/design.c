@@ -1639,6 +1639,33 @@ int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_e
     return rc;
 }
 
+/* Probable unit mistakes: a sphere smaller than 1 mm (its radius typed in
+ * metres), a density above any solid's (osmium, 22.6 g/cm^3: typed in kg/m^3). */
+#define WARN_RADIUS_MIN_MM 1.0
+#define WARN_DENSITY_MAX_G_CM3 25.0
+
+int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size)
+{
+    int k = 0;
+    if (d->radius_mm < WARN_RADIUS_MIN_MM && k++ == i) {
+        snprintf(buf, size, "radius_mm: %g mm is smaller than any tippe top; if it was meant in "
+                            "metres, that is %g mm (lengths in a design are in mm)",
+                 d->radius_mm, 1e3 * d->radius_mm);
+        return 1;
+    }
+    for (int j = 0; j < d->n_parts; j++) {
+        const part *p = &d->parts[j];
+        if (p->is_void || !(p->density_g_cm3 > WARN_DENSITY_MAX_G_CM3) || k++ != i)
+            continue;
+        snprintf(buf, size, "parts[%d] ('%s'%s%s): density %g g/cm^3 is above any solid's "
+                            "(osmium 22.6); if it was meant in kg/m^3, that is %g g/cm^3",
+                 j, p->name, p->material[0] ? ", material " : "", p->material, p->density_g_cm3,
+                 1e-3 * p->density_g_cm3);
+        return 1;
+    }
+    return 0;
+}
+
 void tippe_design_free(tippe_design *d)
 {
     if (!d)

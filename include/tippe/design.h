@@ -135,6 +135,12 @@ int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, i
  * the top rolls on (radius radius_mm, centred). */
 int tippe_design_forms_sphere(const tippe_design *d, int i);
 
+/* Warning i (0, 1, ...) about a probable unit mistake in a design that loaded:
+ * a sphere radius below 1 mm (metres typed for mm), a part's density above
+ * 25 g/cm^3 (kg/m^3 typed for g/cm^3). Writes the message (naming the field
+ * and the likely unit) into buf and returns 1, or returns 0 past the last. */
+int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size);
+
 void tippe_design_free(tippe_design *d);
 
 /* ---- the materials table (docs/design-format.md, "Materials") ---- */

@@ -212,6 +212,11 @@ void tippe_cli_signals_install(const char *verb);
  * renames, says so and ends the process by it; otherwise returns 0. */
 int tippe_cli_signal_pending(const char *verb);
 
+/* Prints the design's probable unit mistakes (tippe_design_warning) on stderr,
+ * "tippe VERB: warning: FILE: ...", after a design loaded. */
+struct tippe_design;
+void tippe_cli_design_warnings(const char *verb, const struct tippe_design *d);
+
 /* Prints o (NULL: out of memory while building it) as JSON on stdout and
  * deletes it: 0, or 1 after "tippe VERB: out of memory while writing JSON". */
 int tippe_cli_print_json(const char *verb, struct cJSON *o);

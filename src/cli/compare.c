@@ -299,6 +299,8 @@ int tippe_cli_compare(int argc, char **argv)
     for (int i = 0; i < a.n && rc == TIPPE_OK; i++, loaded++) {
         rc = tippe_design_load(a.paths[i], a.sets[i].item, a.sets[i].n, &d[i], &err);
         if (rc == TIPPE_OK)
+            tippe_cli_design_warnings(VERB, d[i]);
+        if (rc == TIPPE_OK)
             rc = tippe_sweep_design(d[i], 0.0, 0.0, NULL, &r[i], &err);
         if (rc == TIPPE_OK)
             rc = tippe_sweep_bands(d[i], &r[i], &b[i], &err);

@@ -180,6 +180,8 @@ int tippe_cli_eval(int argc, char **argv)
     tippe_error err = {0};
     tippe_design *d = NULL;
     rc = tippe_design_load(path, sets.item, sets.n, &d, &err);
+    if (!rc)
+        tippe_cli_design_warnings(VERB, d);
     tippe_top top;
     if (!rc)
         rc = tippe_design_top(d, z2_mm, &top, &err);
