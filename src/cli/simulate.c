@@ -318,6 +318,32 @@ static int is_design_file(const char *path)
     return design;
 }
 
+/* After the options: the file's kind, --z2 and --set by that kind, the
+ * outputs checked. 0, or 2 after a usage error. */
+static int simulate_resolve(simulate_args *a, int z2_given)
+{
+    int rc;
+    if (a->phi_dot && (rc = add_phi_dot(a)))
+        return rc;
+    a->is_design = is_design_file(a->file);
+    if (a->is_design && !z2_given)
+        return tippe_cli_usage_error(VERB, "--z2 MM is required with a design file");
+    if (!a->is_design && z2_given) {
+        char num[64];
+        snprintf(num, sizeof num, "%.17g", a->z2_mm);
+        tippe_cli_sets_add(&a->over, "top.z2_mm", num);
+    }
+    if (!a->is_design) /* --set names scenario fields, after the shorthands */
+        for (int i = 0; i < a->sets.n; i++)
+            if (tippe_cli_sets_add(&a->over, NULL, a->sets.item[i]))
+                return tippe_cli_usage_error(VERB, "more than %d overrides", TIPPE_CLI_MAX_SETS);
+    /* Before the integration, so that a bad output path costs nothing. */
+    if ((a->csv && tippe_cli_check_output(VERB, "--csv", a->csv, 0)) ||
+        (a->plot && tippe_cli_check_output(VERB, "--plot", a->plot, 1)))
+        return 2;
+    return 0;
+}
+
 static int simulate_parse(simulate_args *a, int argc, char **argv)
 {
     tippe_cli_sets *ov = &a->over;
@@ -385,27 +411,7 @@ static int simulate_parse(simulate_args *a, int argc, char **argv)
         .args_name = "scenario or design file",
     };
     int n_args, rc = tippe_cli_parse(&spec, argc, argv, &a->file, &n_args);
-    if (rc)
-        return rc;
-    if (a->phi_dot && (rc = add_phi_dot(a)))
-        return rc;
-    a->is_design = is_design_file(a->file);
-    if (a->is_design && !opts[0].seen)
-        return tippe_cli_usage_error(VERB, "--z2 MM is required with a design file");
-    if (!a->is_design && opts[0].seen) {
-        char num[64];
-        snprintf(num, sizeof num, "%.17g", a->z2_mm);
-        tippe_cli_sets_add(ov, "top.z2_mm", num);
-    }
-    if (!a->is_design) /* --set names scenario fields, after the shorthands */
-        for (int i = 0; i < a->sets.n; i++)
-            if (tippe_cli_sets_add(ov, NULL, a->sets.item[i]))
-                return tippe_cli_usage_error(VERB, "more than %d overrides", TIPPE_CLI_MAX_SETS);
-    /* Before the integration, so that a bad output path costs nothing. */
-    if ((a->csv && tippe_cli_check_output(VERB, "--csv", a->csv, 0)) ||
-        (a->plot && tippe_cli_check_output(VERB, "--plot", a->plot, 1)))
-        return 2;
-    return 0;
+    return rc ? rc : simulate_resolve(a, opts[0].seen);
 }
 
 static int simulate_load(const simulate_args *a, tippe_scenario *sc)
