@@ -224,6 +224,9 @@ int tippe_cli_launch(int argc, char **argv)
         fprintf(stderr, "tippe launch: out of memory for %ld launches\n", a.n);
         rc = 1;
     }
+    if (!rc && a.n >= 100000 && hands_mpi_rank() == 0)
+        fprintf(stderr, "tippe launch: %ld launches ahead; this takes a while (progress below)\n",
+                a.n);
     if ((rc = hands_mpi_agree(rc)) == 0)
         rc = launch_run(&a, d, &top, rec);
     free(rec);
