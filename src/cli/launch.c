@@ -594,7 +594,7 @@ static void launch_usage(FILE *out)
         "  --tilt-max-rad MAX   tilts above MAX are drawn again, rad (default 1)\n"
         "  --precession-rel SD  precession = steady rate x (1 + SD N(0,1)) (default 0.1)\n"
         "  --slide-m-s SD       sliding speed half-normal with scale SD, m/s (default 0.05)\n"
-        "  --mu S_PER_M         viscous sliding friction, s/m (default 0.1)\n"
+        "  --mu S_PER_M         viscous sliding friction, s/m (default 2.3: docs/launch.md)\n"
         "  --g M_S2             gravity, m/s^2 (default 9.81)\n"
         "  --t-end S            longest simulated time of one launch, s (default 600)\n"
         "  --accuracy PRESET    fast, balanced or precise (default balanced)\n"
