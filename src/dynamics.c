@@ -719,6 +719,7 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
     const double excess = rs->smp.E - rs->vc.wells.well[tr.well].V_min;
     if (!(excess < rs->contact_retry_excess))
         return 0;
+    verdict_trap_range(&rs->vc, rs->smp.E, margin, &tr);
     const double Rn_bound = verdict_contact_bound(&rs->vc, rs->smp.E + margin, tr.lo, tr.hi);
     /* a twentieth of m g: room for the variation of the bound between its nodes */
     if (!(Rn_bound > 0.05 * rs->c.m * rs->c.g)) {
