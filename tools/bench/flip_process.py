@@ -7,14 +7,15 @@ over the same model time, at the same rtol and per-component atol.
 
 TIPPE (and BASE_TIPPE, an older build, if given) run interleaved, REPEATS times
 (default 7); the median wall time of each whole process is printed, with the
-model time it integrated (tippe stops at its proved verdict). SciPy integrates
-from 0 to the same end time (solve_ivp time only, median of 3, and the process
-including Python's start-up and imports, once). On a shared machine the ratio of
-medians of interleaved runs is what to read, not the absolute times.
+model time it integrated (tippe stops at its proved verdict). Times are CPU times
+(user + sys: getrusage of the child for tippe's whole process, process_time around
+solve_ivp for SciPy), medians; SciPy integrates from 0 to the same end time, median
+of 3. On a shared machine read the ratios of interleaved runs.
 """
 import json
 import math
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -30,11 +31,14 @@ SCENARIO = "designs/scenarios/fig12-tip.json"
 
 
 def run_tippe(exe):
-    t0 = time.perf_counter()
+    """CPU time (user + sys) of the whole child process: less sensitive than wall
+    time to the other jobs of a shared machine."""
+    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     out = subprocess.run([exe, "simulate", SCENARIO, "--rtol", "1e-9", "--json"],
                          check=True, capture_output=True, text=True).stdout
-    wall = time.perf_counter() - t0
-    return wall, json.loads(out)
+    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
+    return cpu, json.loads(out)
 
 
 def main():
@@ -50,11 +54,11 @@ def main():
             last[e] = d
     d = last[exe]
     T = d["last"]["t_s"] if "last" in d else d["t_s"]
-    print(f"tippe {exe}: median {1e3 * statistics.median(walls[exe]):.2f} ms whole process, "
+    print(f"tippe {exe}: median {1e3 * statistics.median(walls[exe]):.2f} ms CPU, whole process, "
           f"verdict {d['verdict']} at t = {d['t_s']:.6g} s, {d['rhs_evals']} RHS evaluations")
     if base:
         db = last[base]
-        print(f"base  {base}: median {1e3 * statistics.median(walls[base]):.2f} ms whole process, "
+        print(f"base  {base}: median {1e3 * statistics.median(walls[base]):.2f} ms CPU, whole process, "
               f"verdict {db['verdict']} at t = {db['t_s']:.6g} s, {db['rhs_evals']} RHS evaluations")
         print(f"base / new: {statistics.median(walls[base]) / statistics.median(walls[exe]):.2f}")
     m, R, eps, A, C, g, mu = 1.0, 1.0, 0.3, 0.92, 1.0, 1.0, 0.04
@@ -70,12 +74,12 @@ def main():
     for _ in range(3):
         cnt = [0]
         rhs = make_rhs(m, R, eps, A, C, g, mu, cnt)
-        t0 = time.perf_counter()
+        t0 = time.process_time()
         sol = solve_ivp(rhs, (0.0, T), y0, method="DOP853", rtol=1e-9, atol=1e-9 * scale)
-        times.append(time.perf_counter() - t0)
+        times.append(time.process_time() - t0)
     th, n = theta_spin(sol.y[:, -1])
     print(f"scipy DOP853 0..{T:.6g} s: median {1e3 * statistics.median(times):.1f} ms "
-          f"(solve_ivp only), {cnt[0]} RHS evaluations, theta(T) = {th:.6f} "
+          f"CPU (solve_ivp only), {cnt[0]} RHS evaluations, theta(T) = {th:.6f} "
           f"(tippe at its decision: {d['theta_rad']:.6f})")
     print(f"scipy / tippe (whole process): "
           f"{statistics.median(times) / statistics.median(walls[exe]):.1f}")
