@@ -15,7 +15,7 @@
 
 /* The median of a half-normal distribution in units of its scale: sqrt(2)
  * erfinv(1/2) = Phi^-1(3/4). */
-#define HALF_NORMAL_MEDIAN 0.6744897501960817
+#define HALF_NORMAL_MEDIAN TIPPE_LAUNCH_HALF_NORMAL_MEDIAN
 
 void tippe_launch_options_default(tippe_launch_options *o)
 {

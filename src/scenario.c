@@ -4,6 +4,7 @@
 
 #include "tippe/design.h"
 #include "tippe/json.h"
+#include "tippe/launch.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -109,6 +110,31 @@ static void dirname_of(const char *path, char *dir, size_t cap)
         snprintf(dir, cap, "%.*s", (int)(slash - path), path);
 }
 
+/* The numbers a scenario may hold: wide enough for every top and launch the
+ * model describes (a 1 mm bead to a 1 km ball), narrow enough that no product
+ * of them in the equations of motion overflows or underflows a double. */
+#define TOP_M_MIN_KG 1e-9
+#define TOP_M_MAX_KG 1e9
+#define TOP_R_MIN_M 1e-6
+#define TOP_R_MAX_M 1e3
+#define TOP_I_MIN_KG_M2 1e-30
+#define TOP_I_MAX_KG_M2 1e15
+#define RATE_MAX_RAD_S 1e6
+#define SPEED_MAX_M_S 1e4
+#define T_END_MAX_S 1e8
+#define G_MAX_M_S2 1e6
+#define MU_MAX_S_M 1e9
+
+/* TIPPE_OK if lo <= x <= hi, else the message naming path and the range. */
+static int check_range(tippe_json_reader *c, const char *path, double x, double lo, double hi,
+                       const char *unit)
+{
+    if (x >= lo && x <= hi)
+        return TIPPE_OK;
+    return tippe_json_fail(c, path, "%g %s is outside the allowed %g .. %g %s", x, unit, lo, hi,
+                           unit);
+}
+
 static int read_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s)
 {
     if (!top)
@@ -138,10 +164,11 @@ static int read_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s)
             (rc = tippe_json_number(c, top, "top", "A", 1, &t->A, NULL)) ||
             (rc = tippe_json_number(c, top, "top", "C", 1, &t->C, NULL)))
             return rc;
-        if (!(t->m > 0))
-            return tippe_json_fail(c, "top.m", "mass must be > 0 kg, got %g", t->m);
-        if (!(t->R > 0))
-            return tippe_json_fail(c, "top.R", "radius must be > 0 m, got %g", t->R);
+        if ((rc = check_range(c, "top.m", t->m, TOP_M_MIN_KG, TOP_M_MAX_KG, "kg")) ||
+            (rc = check_range(c, "top.R", t->R, TOP_R_MIN_M, TOP_R_MAX_M, "m")) ||
+            (rc = check_range(c, "top.A", t->A, TOP_I_MIN_KG_M2, TOP_I_MAX_KG_M2, "kg m^2")) ||
+            (rc = check_range(c, "top.C", t->C, TOP_I_MIN_KG_M2, TOP_I_MAX_KG_M2, "kg m^2")))
+            return rc;
         if (!(t->eps >= 0 && t->eps < t->R))
             return tippe_json_fail(c, "top.eps", "must satisfy 0 <= eps < R = %g m, got %g", t->R,
                                    t->eps);
@@ -265,9 +292,18 @@ static int read_initial(tippe_json_reader *c, const cJSON *ini, tippe_scenario *
         return rc;
     if (!(ic->theta >= 0 && ic->theta <= M_PI))
         return tippe_json_fail(c, "initial.theta", "must be in [0, pi] rad, got %g", ic->theta);
+    if ((rc = check_range(c, "initial.theta_dot", ic->theta_dot, -RATE_MAX_RAD_S,
+                          RATE_MAX_RAD_S, "rad/s")) ||
+        (rc = check_range(c, "initial.spin", ic->spin, -RATE_MAX_RAD_S, RATE_MAX_RAD_S,
+                          "rad/s")) ||
+        (rc = check_range(c, "initial.U", ic->U, -SPEED_MAX_M_S, SPEED_MAX_M_S, "m/s")) ||
+        (rc = check_range(c, "initial.V", ic->V, -SPEED_MAX_M_S, SPEED_MAX_M_S, "m/s")))
+        return rc;
     const cJSON *pd = cJSON_GetObjectItemCaseSensitive(ini, "phi_dot");
     if (!pd || cJSON_IsNumber(pd)) {
-        if ((rc = tippe_json_number(c, ini, "initial", "phi_dot", 0, &ic->phi_dot, NULL)))
+        if ((rc = tippe_json_number(c, ini, "initial", "phi_dot", 0, &ic->phi_dot, NULL)) ||
+            (rc = check_range(c, "initial.phi_dot", ic->phi_dot, -RATE_MAX_RAD_S,
+                              RATE_MAX_RAD_S, "rad/s")))
             return rc;
         s->phi_dot_rule = TIPPE_PHI_DOT_GIVEN;
         return TIPPE_OK;
@@ -310,39 +346,23 @@ const char *tippe_scenario_phi_dot_rule_name(int rule)
     }
 }
 
-int tippe_scenario_load(const char *path, const char *const *overrides, int n_overrides,
-                        tippe_scenario *out, tippe_error *err)
+/* The scenario of root (read from the file, or made for a design), with the
+ * overrides applied and everything checked. */
+static int scenario_from_root(tippe_json_reader *c, cJSON *root, const char *path,
+                              const char *const *overrides, int n_overrides, tippe_scenario *out)
 {
-    memset(out, 0, sizeof *out);
-    if (!path || !path[0])
-        return tippe_error_set(err, TIPPE_EINPUT, "no scenario file given");
-    if (n_overrides > MAX_OVERRIDES)
-        return tippe_error_set(err, TIPPE_EINPUT, "more than %d overrides", MAX_OVERRIDES);
-    snprintf(out->path, sizeof out->path, "%s", path);
-    tippe_json_reader *c =
-        tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_KEY, "set on the command line: ");
-    if (!c)
-        return TIPPE_ECOMPUTE;
-    cJSON *root = NULL;
-    int rc = tippe_json_load(c, MAX_SCENARIO_MIB, "scenario", &root);
-    if (rc)
-        goto done;
-    if (!cJSON_IsObject(root)) {
-        rc = tippe_json_wrong_type(c, "", "a JSON object at the top", root);
-        goto done;
-    }
+    int rc;
     if ((rc = tippe_json_check_duplicates(c, root, "")))
-        goto done;
+        return rc;
     for (int i = 0; i < n_overrides; i++)
         if ((rc = apply_override(c, root, overrides[i])))
-            goto done;
+            return rc;
     if ((rc = tippe_json_check_keys(c, root, "", NULL, top_level_keys, NULL)))
-        goto done;
+        return rc;
 
     const cJSON *name = cJSON_GetObjectItemCaseSensitive(root, "name");
     if (name && !cJSON_IsString(name)) {
-        rc = tippe_json_wrong_type(c, "name", "a string", name);
-        goto done;
+        return tippe_json_wrong_type(c, "name", "a string", name);
     }
     snprintf(out->name, sizeof out->name, "%s", name ? name->valuestring : path);
     /* the file's name may describe values the command line changed: say so */
@@ -359,34 +379,117 @@ int tippe_scenario_load(const char *path, const char *const *overrides, int n_ov
     const cJSON *notes = cJSON_GetObjectItemCaseSensitive(root, "notes");
     if (notes && !cJSON_IsString(notes)) {
         rc = tippe_json_wrong_type(c, "notes", "a string", notes);
-        goto done;
+        return rc;
     }
     if ((rc = read_top(c, cJSON_GetObjectItemCaseSensitive(root, "top"), out)))
-        goto done;
+        return rc;
     out->model.g = TIPPE_DEFAULT_G_M_S2;
     if ((rc = tippe_json_number(c, root, "", "g", 0, &out->model.g, NULL)))
-        goto done;
-    if (!(out->model.g > 0)) {
-        rc = tippe_json_fail(c, "g", "must be > 0 m/s^2, got %g", out->model.g);
-        goto done;
-    }
+        return rc;
+    if (!(out->model.g > 0))
+        return tippe_json_fail(c, "g", "must be > 0 m/s^2, got %g", out->model.g);
+    if ((rc = check_range(c, "g", out->model.g, 0, G_MAX_M_S2, "m/s^2")))
+        return rc;
     if ((rc = tippe_json_number(c, root, "", "mu", 1, &out->model.mu, NULL)))
-        goto done;
-    if (!(out->model.mu >= 0)) {
-        rc = tippe_json_fail(c, "mu", "friction coefficient must be >= 0 s/m, got %g",
-                             out->model.mu);
-        goto done;
-    }
+        return rc;
+    if (!(out->model.mu >= 0))
+        return tippe_json_fail(c, "mu", "friction coefficient must be >= 0 s/m, got %g",
+                               out->model.mu);
+    if ((rc = check_range(c, "mu", out->model.mu, 0, MU_MAX_S_M, "s/m")))
+        return rc;
     if ((rc = tippe_json_number(c, root, "", "t_end", 1, &out->t_end, NULL)))
-        goto done;
-    if (!(out->t_end > 0)) {
-        rc = tippe_json_fail(c, "t_end", "must be > 0 s, got %g", out->t_end);
-        goto done;
-    }
+        return rc;
+    if (!(out->t_end > 0))
+        return tippe_json_fail(c, "t_end", "must be > 0 s, got %g", out->t_end);
+    if ((rc = check_range(c, "t_end", out->t_end, 0, T_END_MAX_S, "s")))
+        return rc;
     if ((rc = read_accuracy(c, cJSON_GetObjectItemCaseSensitive(root, "accuracy"), out)))
-        goto done;
-    rc = read_initial(c, cJSON_GetObjectItemCaseSensitive(root, "initial"), out);
-done:
+        return rc;
+    return read_initial(c, cJSON_GetObjectItemCaseSensitive(root, "initial"), out);
+}
+
+int tippe_scenario_load(const char *path, const char *const *overrides, int n_overrides,
+                        tippe_scenario *out, tippe_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (!path || !path[0])
+        return tippe_error_set(err, TIPPE_EINPUT, "no scenario file given");
+    if (n_overrides > MAX_OVERRIDES)
+        return tippe_error_set(err, TIPPE_EINPUT, "more than %d overrides", MAX_OVERRIDES);
+    snprintf(out->path, sizeof out->path, "%s", path);
+    tippe_json_reader *c =
+        tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_KEY, "set on the command line: ");
+    if (!c)
+        return TIPPE_ECOMPUTE;
+    cJSON *root = NULL;
+    int rc = tippe_json_load(c, MAX_SCENARIO_MIB, "scenario", &root);
+    if (!rc && !cJSON_IsObject(root))
+        rc = tippe_json_wrong_type(c, "", "a JSON object at the top", root);
+    if (!rc)
+        rc = scenario_from_root(c, root, path, overrides, n_overrides, out);
+    cJSON_Delete(root);
+    free(c);
+    return rc;
+}
+
+/* The scenario of a design's central hand launch (the defaults of tippe
+ * launch, docs/launch.md): the median tilt of the half-normal, steady
+ * precession, the middle of the spin range, no sliding; its mu, g and t_end. */
+static cJSON *design_root(const char *design_path, double z2_mm, const char *const *sets,
+                          int n_sets)
+{
+    tippe_launch_options o;
+    tippe_launch_options_default(&o);
+    const char *slash = strrchr(design_path, '/');
+    cJSON *root = cJSON_CreateObject(), *top = cJSON_AddObjectToObject(root, "top"),
+          *ini = cJSON_AddObjectToObject(root, "initial"),
+          *set = cJSON_AddArrayToObject(top, "set");
+    if (!root || !top || !ini || !set) {
+        cJSON_Delete(root);
+        return NULL;
+    }
+    char name[1200];
+    snprintf(name, sizeof name, "central hand launch of %s at Z2 = %g mm", design_path, z2_mm);
+    cJSON_AddStringToObject(root, "name", name);
+    /* the design's path is read relative to the "scenario" file: the design itself */
+    cJSON_AddStringToObject(top, "design", slash ? slash + 1 : design_path);
+    cJSON_AddNumberToObject(top, "z2_mm", z2_mm);
+    for (int i = 0; i < n_sets; i++)
+        cJSON_AddItemToArray(set, cJSON_CreateString(sets[i]));
+    cJSON_AddNumberToObject(root, "g", o.g);
+    cJSON_AddNumberToObject(root, "mu", o.mu);
+    cJSON_AddNumberToObject(root, "t_end", o.t_end);
+    cJSON_AddStringToObject(root, "accuracy", o.accuracy_name);
+    cJSON_AddNumberToObject(ini, "theta", TIPPE_LAUNCH_HALF_NORMAL_MEDIAN * o.tilt_sd_rad);
+    cJSON_AddNumberToObject(ini, "theta_dot", 0.0);
+    cJSON_AddStringToObject(ini, "phi_dot", "steady");
+    cJSON_AddNumberToObject(ini, "spin", M_PI * (o.spin_from_rev_s + o.spin_to_rev_s));
+    cJSON_AddNumberToObject(ini, "U", 0.0);
+    cJSON_AddNumberToObject(ini, "V", 0.0);
+    return root;
+}
+
+int tippe_scenario_for_design(const char *design_path, double z2_mm,
+                              const char *const *design_sets, int n_design_sets,
+                              const char *const *overrides, int n_overrides,
+                              tippe_scenario *out, tippe_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (!design_path || !design_path[0])
+        return tippe_error_set(err, TIPPE_EINPUT, "no design file given");
+    if (n_overrides > MAX_OVERRIDES || n_design_sets > MAX_DESIGN_SETS)
+        return tippe_error_set(err, TIPPE_EINPUT, "more than %d overrides", MAX_OVERRIDES);
+    if (!isfinite(z2_mm))
+        return tippe_error_set(err, TIPPE_EINPUT, "Z2 = %g mm is not a number", z2_mm);
+    snprintf(out->path, sizeof out->path, "%s", design_path);
+    tippe_json_reader *c = tippe_json_reader_new(design_path, err, TIPPE_JSON_WORDS_KEY,
+                                                 "set on the command line: ");
+    if (!c)
+        return TIPPE_ECOMPUTE;
+    cJSON *root = design_root(design_path, z2_mm, design_sets, n_design_sets);
+    int rc = root ? TIPPE_OK : tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    if (!rc)
+        rc = scenario_from_root(c, root, design_path, overrides, n_overrides, out);
     cJSON_Delete(root);
     free(c);
     return rc;

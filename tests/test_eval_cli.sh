@@ -44,7 +44,7 @@ for f in designs/m12-setscrew.json designs/m3-setscrew.json designs/shell-rod-ir
 import json, math, sys
 o = json.load(open(sys.argv[1]))
 need = ["mass_kg", "eps_m", "eps_over_R", "A_kg_m2", "C_kg_m2", "A_over_C", "z2_mm",
-        "com_side", "design", "travel_mm", "contact_travel_mm", "parts"]
+        "com_side", "design", "travel_mm", "physical_travel_mm", "parts"]
 missing = [k for k in need if k not in o]
 assert not missing, missing
 # Consistency of the printed numbers (double printed to 15+ digits): 1e-12.

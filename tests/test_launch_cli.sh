@@ -26,7 +26,7 @@ for k in keys:
     p = o["counts"][k] / 8
     assert 0 <= lo <= p <= hi <= 1, (k, lo, p, hi)
 t = o["theory"]
-assert t["group"] == "IIb"
+assert t["group"] == "II" and t["subgroup"] == "IIb"
 assert t["zone_mm"][0] <= 15 <= t["zone_mm"][1]
 assert sum(t["predicted"].values()) == 8
 assert 0 <= t["agree"] <= t["comparable"] <= 8
@@ -60,7 +60,7 @@ assert all(r["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided"
 EOF
 
 # --- map -------------------------------------------------------------------------
-"$tippe" map "$m12" --z2 10:15:2 --spin 5:20:2 -n 2 "${quick[@]}" --json \
+"$tippe" map "$m12" --z2 10:15:2 --spin 5:20rev/s:2 -n 2 "${quick[@]}" --json \
     --plot "$tmp/map.png" --csv "$tmp/map.csv" >"$tmp/map.json"
 check "map exits 0" test $? -eq 0
 check "map plot is a PNG" python3 -c "
@@ -68,15 +68,18 @@ import sys; assert open(sys.argv[1], 'rb').read(8) == b'\x89PNG\r\n\x1a\n'" "$tm
 check "map JSON has 4 cells whose counts add to the launches per cell" python3 - "$tmp/map.json" "$tmp/map.csv" <<'EOF'
 import csv, json, sys
 o = json.load(open(sys.argv[1]))
-assert o["z2_mm"] == [10, 15] and o["spin_rev_s"] == [5, 20] and o["per_cell"] == 2
+# 5 and 20 rev/s in rad/s: 2 pi x, to the last bits of the conversion (1e-12 relative)
+import math
+assert o["z2_mm"] == [10, 15] and o["per_cell"] == 2
+assert all(abs(a - 2 * math.pi * b) < 1e-12 * a for a, b in zip(o["spin_rad_s"], [5, 20]))
 assert len(o["cells"]) == 4
 for c in o["cells"]:
     assert sum(c["counts"].values()) == 2
-assert [z["group"] for z in o["zones"]] == ["IIb"]
+assert [z["subgroup"] for z in o["zones"]] == ["IIb"] and o["zones"][0]["group"] == "II"
 rows = list(csv.DictReader(open(sys.argv[2])))
 assert len(rows) == 4 and "dominant_share" in rows[0]
 EOF
-OMP_NUM_THREADS=1 "$tippe" map "$m12" --z2 10:15:2 --spin 5:20:2 -n 2 "${quick[@]}" --json \
+OMP_NUM_THREADS=1 "$tippe" map "$m12" --z2 10:15:2 --spin 5:20rev/s:2 -n 2 "${quick[@]}" --json \
     >"$tmp/map1.json"
 check "map: same JSON on 1 thread as on the default threads" cmp -s "$tmp/map.json" "$tmp/map1.json"
 
@@ -88,7 +91,7 @@ import json, sys
 o = json.load(open(sys.argv[1]))
 assert o["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided")
 assert o["initial"]["spin_rad_s"] == 100 and o["initial"]["U_m_s"] == 0
-assert o["theory"]["group"] == "IIb" and "prediction" in o["theory"] and "agrees" in o["theory"]
+assert o["theory"]["subgroup"] == "IIb" and o["theory"]["group"] == "II" and "prediction" in o["theory"] and "agrees" in o["theory"]
 EOF
 out=$("$tippe" check "$m12" --z2 10 --accuracy fast)
 check "check text gives verdict, calculator zone and theory" \
@@ -99,7 +102,7 @@ for verb in launch map check; do
     check "$verb --help exits 0" exits 0 "$verb" --help
 done
 check "map --help says spins are in rev/s" bash -c '"$1" map --help | grep -q "rev/s"' _ "$tippe"
-check "check --help says the spin is in rad/s" bash -c '"$1" check --help | grep -q "RAD_S"' _ "$tippe"
+check "check --help says the spin is in rad/s" bash -c '"$1" check --help | grep -q "\[rad/s; default 15rev/s"' _ "$tippe"
 
 # --- bad input: exit 2, a message naming the problem, no output file ---------------
 refused() { # refused DESCRIPTION PATTERN ARGS...: exit 2, stderr matches PATTERN, no output files
@@ -115,24 +118,24 @@ refused() { # refused DESCRIPTION PATTERN ARGS...: exit 2, stderr matches PATTER
 }
 refused "Z2 outside the travel" "outside the design's travel" \
     launch "$m12" --z2 30 -n 2 --csv "$tmp/out.csv"
-refused "no --z2" "--z2 is required" launch "$m12" -n 2 --csv "$tmp/out.csv"
+refused "no --z2" "--z2 MM is required" launch "$m12" -n 2 --csv "$tmp/out.csv"
 refused "zero launches" "-n '0'" launch "$m12" --z2 10 -n 0 --csv "$tmp/out.csv"
 refused "unknown option" "unknown option '--spin-rpm'" launch "$m12" --z2 10 --spin-rpm 5
 refused "map-only option on launch" "unknown option '--plot'" \
     launch "$m12" --z2 10 --plot "$tmp/out.png"
-refused "bad spin range" "--spin-rev-s '25:5'" launch "$m12" --z2 10 --spin-rev-s 25:5
+refused "bad spin range" "--spin '25:5rev/s'" launch "$m12" --z2 10 --spin 25:5rev/s
 refused "missing design file" "no-such.json" launch "$tmp/no-such.json" --z2 10 --csv "$tmp/out.csv"
 refused "bad preset" "unknown accuracy preset" launch "$m12" --z2 10 --accuracy sloppy
-refused "bad mu" "mu = -1" launch "$m12" --z2 10 --mu -1 --csv "$tmp/out.csv"
+refused "bad mu" "--mu '-1': expected a number of s/m from 0" launch "$m12" --z2 10 --mu -1 --csv "$tmp/out.csv"
 refused "bad design override" "parts.screw" \
     launch "$m12" --z2 10 --set parts.screw.height_mm=-3 --csv "$tmp/out.csv"
 refused "CSV in a missing directory" "its directory does not exist" \
     launch "$m12" --z2 10 --csv "$tmp/none/out.csv"
 refused "map plot format" "unsupported plot format" \
-    map "$m12" --z2 10:15:2 --spin 5:20:2 --plot "$tmp/out.gif" --csv "$tmp/out.csv"
-refused "map grid" "FROM:TO:STEPS" map "$m12" --z2 10:15 --spin 5:20:2 --csv "$tmp/out.csv"
+    map "$m12" --z2 10:15:2 --spin 5:20rev/s:2 --plot "$tmp/out.gif" --csv "$tmp/out.csv"
+refused "map grid" "FROM:TO:STEPS" map "$m12" --z2 10:15 --spin 5:20rev/s:2 --csv "$tmp/out.csv"
 refused "map Z2 beyond the travel" "outside the design's travel" \
-    map "$m12" --z2 10:25:2 --spin 5:20:2 -n 1 --plot "$tmp/out.png" --csv "$tmp/out.csv"
+    map "$m12" --z2 10:25:2 --spin 5:20rev/s:2 -n 1 --plot "$tmp/out.png" --csv "$tmp/out.csv"
 refused "map without --spin" "--spin FROM:TO:STEPS" map "$m12" --z2 10:15:2 --plot "$tmp/out.png"
 refused "check spin" "--spin 'fast'" check "$m12" --z2 10 --spin fast
 refused "no design" "no design file" check --z2 10

@@ -34,9 +34,9 @@ check "launch: tippe under mpirun (re-executed as tippe-mpi) gives the same JSON
 run_mpi 1 "$mpi" launch "$m12" --z2 15 -n 12 --seed 9 "${quick[@]}" --json >"$tmp/mpi1.json"
 check "launch: tippe-mpi on 1 rank gives the same JSON" cmp -s "$tmp/single.json" "$tmp/mpi1.json"
 
-OMP_NUM_THREADS=1 "$tippe" map "$m12" --z2 10:20:3 --spin 5:25:2 -n 2 "${quick[@]}" --json \
+OMP_NUM_THREADS=1 "$tippe" map "$m12" --z2 10:20:3 --spin 5:25rev/s:2 -n 2 "${quick[@]}" --json \
     >"$tmp/map1.json"
-run_mpi 2 "$mpi" map "$m12" --z2 10:20:3 --spin 5:25:2 -n 2 "${quick[@]}" --json \
+run_mpi 2 "$mpi" map "$m12" --z2 10:20:3 --spin 5:25rev/s:2 -n 2 "${quick[@]}" --json \
     --csv "$tmp/map.csv" >"$tmp/map2.json"
 check "map: 2 ranks give the single-process JSON byte for byte" \
     cmp -s "$tmp/map1.json" "$tmp/map2.json"

@@ -36,4 +36,69 @@ check "eval --help names the unit suffixes" grep -q "2.5cm" "$tmp/help"
 "$tippe" eval -h >"$tmp/help2" 2>&1
 check "-h is --help" cmp -s "$tmp/help" "$tmp/help2"
 
+# --- one spin language: rad/s by default, rev/s and rpm by suffix ----------------
+m12=designs/m12-setscrew.json
+for spin in 125.66370614359172 20rev/s 1200rpm 125.66370614359172rad/s; do
+    "$tippe" check "$m12" --z2 10 --spin "$spin" --accuracy fast --t-end 1 --json >"$tmp/s.json" 2>"$tmp/err"
+    # 20 rev/s = 1200 rpm = 40 pi rad/s; the conversion costs at most a few ulps (1e-12 relative)
+    check "check --spin $spin is 40 pi rad/s" json_ok "$tmp/s.json" \
+        "abs(o['initial']['spin_rad_s'] - 40 * math.pi) < 1e-12 * 40 * math.pi"
+done
+"$tippe" launch "$m12" --z2 10 -n 1 --spin 10:20rev/s --accuracy fast --t-end 1 --json >"$tmp/l.json"
+check "launch --spin 10:20rev/s: the unit on TO applies to FROM" json_ok "$tmp/l.json" \
+    "all(abs(a - 2 * math.pi * b) < 1e-12 * a for a, b in zip(o['distribution']['spin_uniform_rad_s'], [10, 20]))"
+check "launch --json: thresholds in rad/s" json_ok "$tmp/l.json" \
+    "'n_minus_rad_s' in o['theory'] and not any(k.endswith('rev_s') for k in o['theory'])"
+
+# --- defects 6 and 8: absurd numbers refused up front with the allowed range ------
+expect_fail "map --spin 1e308" 2 "--spin '1e308:1e308:1'" "from 0 to 10000" -- \
+    map "$m12" --z2 10:10:1 --spin 1e308:1e308:1
+expect_fail "map grid beyond the memory bound" 2 "launches; at most 1e+07" -- \
+    map "$m12" --z2 0:20:1000 --spin 1:40:1000 -n 100
+expect_fail "simulate --sample-dt 1e-300" 2 "--sample-dt '1e-300'" "from 1e-09 to" -- \
+    simulate designs/scenarios/fig12-tip.json --sample-dt 1e-300 --csv "$tmp/t.csv"
+expect_fail "simulate samples beyond the bound" 2 "samples; at most 1e+06" -- \
+    simulate designs/scenarios/fig12-tip.json --sample-dt 1e-6 --csv "$tmp/t.csv"
+check "no CSV left by the refused runs" test ! -e "$tmp/t.csv"
+expect_fail "simulate --theta-dot 1e160" 2 "--theta-dot '1e160'" "from -100000 to 100000" -- \
+    simulate designs/scenarios/fig12-tip.json --theta-dot 1e160
+expect_fail "simulate --set top.R=1e300" 2 "top.R" "outside the allowed 1e-06 .. 1000 m" -- \
+    simulate designs/scenarios/fig12-tip.json --set top.R=1e300
+expect_fail "sweep --from -1e308 --to 1e308" 2 "--from '-1e308'" "from -1000 to 1000" -- \
+    sweep "$m12" --from -1e308 --to 1e308
+"$tippe" sweep "$m12" --from -1000 --to 1000 >"$tmp/wide.txt" 2>&1
+check "sweep over the widest allowed Z2 prints no NaN" bash -c '! grep -qi nan "$1"' _ "$tmp/wide.txt"
+
+# --- --set is shown in every report it changes ---------------------------------
+"$tippe" sweep "$m12" --set radius_mm=26 --json >"$tmp/sw.json"
+check "sweep --json lists the --set changes" json_ok "$tmp/sw.json" "o['set'] == ['radius_mm=26']"
+"$tippe" sweep "$m12" --json >"$tmp/sw0.json"
+check "sweep --json without changes: an empty list" json_ok "$tmp/sw0.json" "o['set'] == []"
+"$tippe" check "$m12" --z2 10 --set radius_mm=26 --accuracy fast --t-end 1 >"$tmp/ck.txt"
+check "check text names the changes" grep -q "^changes    radius_mm=26" "$tmp/ck.txt"
+
+# --- classify and simulate take a design ---------------------------------------
+"$tippe" eval "$m12" --z2 12 --json >"$tmp/e.json"
+"$tippe" classify "$m12" --z2 12 --json >"$tmp/c.json"
+check "classify DESIGN --z2: the A/C and eps/R eval gives (same numbers, to the last digit)" \
+    python3 -c "
+import json,sys; e=json.load(open(sys.argv[1])); c=json.load(open(sys.argv[2]))
+assert c['A_over_C'] == e['A_over_C'] and c['eps_over_R'] == e['eps_over_R']
+assert c['subgroup'] == e['subgroup'] and c['n_minus_rad_s'] is not None" "$tmp/e.json" "$tmp/c.json"
+expect_fail "classify: design and numbers" 2 "either the design or the numbers" -- \
+    classify "$m12" --z2 12 --A-over-C 0.9
+expect_fail "classify: design without --z2" 2 "--z2 MM is required with a design" -- classify "$m12"
+# simulate DESIGN is tippe check's central hand launch: the same initial state (two
+# code paths: tippe_scenario_for_design and tippe_launch_central) and the same verdict.
+"$tippe" simulate "$m12" --z2 12 --spin 30rev/s --t-end 20 --accuracy fast --json >"$tmp/sim.json"
+"$tippe" check "$m12" --z2 12 --spin 30rev/s --t-end 20 --accuracy fast --json >"$tmp/chk.json"
+check "simulate DESIGN --z2 launches as tippe check does" python3 -c "
+import json,sys; s=json.load(open(sys.argv[1])); c=json.load(open(sys.argv[2]))
+for k in ('theta_rad', 'phi_dot_rad_s', 'spin_rad_s', 'U_m_s', 'V_m_s'):
+    a, b = s['initial'][k], c['initial'][k]
+    assert abs(a - b) <= 1e-12 * max(1, abs(b)), (k, a, b)   # same formulas, same doubles
+assert s['verdict'] == c['verdict'], (s['verdict'], c['verdict'])" "$tmp/sim.json" "$tmp/chk.json"
+expect_fail "simulate: design without --z2" 2 "--z2 MM is required with a design file" -- \
+    simulate "$m12" --spin 20rev/s
+
 finish

@@ -148,14 +148,15 @@ mutate "$tmp/x.json" 'd["accuracy"] = {"stepper": "euler", "rtol": 1e-6}'
 expect_fail "unknown stepper" 2 "accuracy.stepper" "euler" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["accuracy"] = {"stepper": "rk4", "rtol": 0.5}'
 expect_fail "rtol out of range" 2 "accuracy.rtol" -- simulate "$tmp/x.json"
-expect_fail "bad override value" 2 "initial.spin" "command line" "initial.spin=abc" -- simulate "$base" --spin abc
+expect_fail "bad --spin" 2 "--spin 'abc': expected a number of rad/s" -- simulate "$base" --spin abc
+expect_fail "bad override value" 2 "initial.spin" "command line" "initial.spin=abc" -- simulate "$base" --set initial.spin=abc
 expect_fail "missing file" 2 "nowhere.json" "cannot open" -- simulate "$tmp/nowhere.json"
 
 # --- bad usage -----------------------------------------------------------------
-expect_fail "no scenario" 2 "no scenario file" -- simulate
+expect_fail "no scenario" 2 "no scenario or design file given" -- simulate
 expect_fail "unknown option" 2 "unknown option '--fast'" -- simulate "$base" --fast
 expect_fail "flag without value" 2 "--mu needs a value" -- simulate "$base" --mu
-expect_fail "two scenarios" 2 "more than one scenario" -- simulate "$base" "$base"
+expect_fail "two scenarios" 2 "at most 1 scenario or design file" -- simulate "$base" "$base"
 expect_fail "plot format" 2 ".png, .svg or .pdf" -- simulate "$base" --plot "$tmp/p.txt"
 expect_fail "plot directory" 2 "nodir" -- simulate "$base" --plot "$tmp/nodir/p.png"
 expect_fail "csv directory" 2 "nodir" -- simulate "$base" --csv "$tmp/nodir/t.csv"

@@ -50,6 +50,10 @@ typedef struct {
  * (docs/launch.md derives it and gives the sources). */
 #define TIPPE_LAUNCH_DEFAULT_MU_S_M 2.3
 
+/* The median of a half-normal distribution of scale 1 (sqrt(2) erf^-1(1/2)):
+ * a central launch's tilt is this times the tilt scale. */
+#define TIPPE_LAUNCH_HALF_NORMAL_MEDIAN 0.6744897501960817
+
 /* The documented defaults (docs/launch.md): spin 5..25 rev/s, tilt scale
  * 0.1 rad (redrawn above 1 rad), precession spread 0.1, sliding 0.05 m/s,
  * mu TIPPE_LAUNCH_DEFAULT_MU_S_M, g TIPPE_DEFAULT_G_M_S2, t_end 600 s, preset

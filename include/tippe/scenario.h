@@ -40,6 +40,18 @@ typedef struct {
 int tippe_scenario_load(const char *path, const char *const *overrides, int n_overrides,
                         tippe_scenario *out, tippe_error *err);
 
+/* The scenario of a design's central hand launch with its weight at z2_mm,
+ * without a scenario file: the design (with design_sets applied, as
+ * tippe_design_load) and the defaults of tippe launch (docs/launch.md): tilt
+ * TIPPE_LAUNCH_HALF_NORMAL_MEDIAN x 0.1 rad, steady precession, spin 15 rev/s,
+ * no sliding, mu 0.1 s/m, g, t_end 600 s, preset "balanced"; then the
+ * overrides as for tippe_scenario_load ("initial.spin=100"). Messages name the
+ * design file. */
+int tippe_scenario_for_design(const char *design_path, double z2_mm,
+                              const char *const *design_sets, int n_design_sets,
+                              const char *const *overrides, int n_overrides,
+                              tippe_scenario *out, tippe_error *err);
+
 /* "steady", "s1", "s2", "s3", or "given". */
 const char *tippe_scenario_phi_dot_rule_name(int rule);
 

@@ -2,6 +2,7 @@
  * thresholds when the top's m, R and C are given. */
 #include "cli.h"
 
+#include "tippe/design.h"
 #include "tippe/theory.h"
 
 #include <cjson/cJSON.h>
@@ -12,37 +13,7 @@
 #define RAD_TO_DEG (180.0 / 3.14159265358979323846)
 #define RAD_S_TO_REV_S (1.0 / (2.0 * 3.14159265358979323846))
 
-static void classify_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: tippe classify --A-over-C K --eps-over-R E [--m KG --R M --C KG_M2]\n"
-            "                      [--g M_S2] [--json]\n"
-            "\n"
-            "The group (I, II, III) and subgroup (Ia, Ib, IIa, IIb, IIc) of Theorem 5.1 of\n"
-            "Ciocci et al. 2012 for an eccentric sphere with inertia ratio K = A/C and\n"
-            "eccentricity E = eps/R, with b, theta_b (eq 5.11) and c, theta_c (eq 5.8/5.9).\n"
-            "\n"
-            "  --A-over-C K   A/C, A transverse through the centre of mass, C axial (> 0)\n"
-            "  --eps-over-R E eps/R, centre of mass below the sphere's centre (0 <= E < 1)\n"
-            "  --m KG         mass, kg         } all three give the spin thresholds n-, n+,\n"
-            "  --R M          sphere radius, m } n* and n_b in rad/s and rev/s\n"
-            "  --C KG_M2      axial moment, kg m^2 }\n"
-            "  --g M_S2       gravity, m/s^2 (default %.5f)\n"
-            "  --json         print one JSON object (SI units) instead of the text\n"
-            "  --help         this text\n"
-            "\n"
-            "A point within 1e-12 of a boundary of the phase diagram is reported on it, with\n"
-            "the side chosen as docs/theory.md says. Exit status: 0 ok, 2 bad usage.\n",
-            TIPPE_DEFAULT_G_M_S2);
-}
-
 static const char *const VERB = "classify";
-
-typedef struct {
-    const char *name; /* "--A-over-C" */
-    const char *text;
-    double value;
-} num_opt;
 
 enum { OPT_K, OPT_E, OPT_M, OPT_R, OPT_C, OPT_G, N_OPTS };
 
@@ -149,72 +120,158 @@ static cJSON *to_json(const tippe_theory_class *c, const tippe_theory_thresholds
     return o;
 }
 
-int tippe_cli_classify(int argc, char **argv)
+typedef struct {
+    double v[N_OPTS]; /* by OPT_* */
+    int seen[N_OPTS];
+    const char *design;
+    double z2_mm;
+    int has_z2, json;
+    tippe_cli_sets sets;
+} classify_args;
+
+static int classify_parse(classify_args *a, int argc, char **argv)
 {
-    num_opt opt[N_OPTS] = {{"--A-over-C", NULL, 0}, {"--eps-over-R", NULL, 0}, {"--m", NULL, 0},
-                           {"--R", NULL, 0},        {"--C", NULL, 0},          {"--g", NULL, 0}};
-    int json = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (tippe_cli_is_help(a)) {
-            classify_usage(stdout);
-            return 0;
-        }
-        if (!strcmp(a, "--json")) {
-            json = 1;
-            continue;
-        }
-        int found = 0;
-        for (int j = 0; j < N_OPTS && !found; j++)
-            if ((found = tippe_cli_option(VERB, argc, argv, &i, opt[j].name, 1, &opt[j].text)) &&
-                !opt[j].text)
-                return 2;
-        if (!found)
-            return tippe_cli_usage_error(VERB, "unknown argument '%s'", a);
-    }
+    double *v = a->v;
+    tippe_cli_opt opts[] = {
+        [OPT_K] = {.name = "A-over-C", .kind = TIPPE_CLI_DOUBLE, .value = &v[OPT_K], .arg = "K",
+                   .min = 1e-6, .max = 1e6,
+                   .help = "A/C, A transverse through the centre of mass, C axial"},
+        [OPT_E] = {.name = "eps-over-R", .kind = TIPPE_CLI_DOUBLE, .value = &v[OPT_E],
+                   .arg = "E", .min = 0, .max = 1,
+                   .help = "eps/R, centre of mass below the sphere's centre (E < 1)"},
+        [OPT_M] = {.name = "m", .kind = TIPPE_CLI_DOUBLE, .value = &v[OPT_M], .unit = "kg",
+                   .min = 1e-9, .max = 1e6,
+                   .help = "mass; --m, --R and --C together give the spin thresholds\nn-, n+, n* and n_b"},
+        [OPT_R] = {.name = "R", .kind = TIPPE_CLI_DOUBLE, .value = &v[OPT_R], .unit = "m",
+                   .min = 1e-6, .max = 100,
+                   .help = "radius of the sphere"},
+        [OPT_C] = {.name = "C", .kind = TIPPE_CLI_DOUBLE, .value = &v[OPT_C], .unit = "kg m^2",
+                   .min = 1e-24, .max = 1e6, .help = "axial moment of inertia"},
+        [OPT_G] = {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &v[OPT_G], .unit = "m/s^2",
+                   .min = 0.01, .max = 1000, .def = "9.81", .help = "gravity"},
+        [N_OPTS] = {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &a->z2_mm, .arg = "MM",
+                    .unit = "mm", .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
+                    .help = "with a design: the moving weight's position (instead of the\n"
+                            "numbers above, which the design gives)"},
+        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
+         .help = "with a design: change a field of it (repeatable)"},
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
+         .help = "print one JSON object (SI units) instead of the text"},
+        {NULL},
+    };
+    tippe_cli_spec spec = {
+        .verb = VERB,
+        .synopsis = "--A-over-C K --eps-over-R E [--m KG --R M --C KG_M2] [--g M_S2] [--json]\n"
+                    "       tippe classify DESIGN.json --z2 MM [--set FIELD=VALUE ...] [--json]",
+        .about = "The group (I, II, III) and subgroup (Ia, Ib, IIa, IIb, IIc) of Theorem 5.1 of\n"
+                 "Ciocci et al. 2012 for an eccentric sphere with inertia ratio K = A/C and\n"
+                 "eccentricity E = eps/R, with b, theta_b (eq 5.11) and c, theta_c (eq 5.8/5.9);\n"
+                 "given a design and Z2, for the design's top there (with its thresholds).",
+        .after = "A point within 1e-12 of a boundary of the phase diagram is reported on it,\n"
+                 "with the side chosen as docs/theory.md says. Exit status: 0 ok, 2 bad\n"
+                 "usage or design.",
+        .opts = opts,
+        .max_args = 1,
+        .args_name = "design file",
+    };
+    v[OPT_G] = TIPPE_DEFAULT_G_M_S2;
+    int n_args = 0, rc = tippe_cli_parse(&spec, argc, argv, &a->design, &n_args);
+    if (rc)
+        return rc;
+    if (!n_args)
+        a->design = NULL;
     for (int j = 0; j < N_OPTS; j++)
-        if (opt[j].text && tippe_cli_number(VERB, opt[j].name, opt[j].text, NULL, &opt[j].value))
-            return 2;
-    if (!opt[OPT_K].text || !opt[OPT_E].text)
-        return tippe_cli_usage_error(VERB, "--A-over-C and --eps-over-R are both required");
-    if (!(opt[OPT_K].value > 0.0))
-        return tippe_cli_usage_error(VERB, "--A-over-C: %g must be > 0", opt[OPT_K].value);
-    if (!(opt[OPT_E].value >= 0.0 && opt[OPT_E].value < 1.0))
+        a->seen[j] = opts[j].seen;
+    a->has_z2 = opts[N_OPTS].seen;
+    return 0;
+}
+
+/* A/C, eps/R and the top's numbers given by hand: 0, or 2 after a usage error. */
+static int check_numbers(classify_args *a, int *have_top)
+{
+    if (a->sets.n || a->has_z2)
+        return tippe_cli_usage_error(VERB, "--z2 and --set need a design file");
+    if (!a->seen[OPT_K] || !a->seen[OPT_E])
+        return tippe_cli_usage_error(VERB, "--A-over-C and --eps-over-R are both required "
+                                           "(or a design file and --z2)");
+    if (!(a->v[OPT_E] < 1.0))
         return tippe_cli_usage_error(VERB,
-                                     "--eps-over-R: %g must satisfy 0 <= eps/R < 1 (centre of mass "
-                                     "inside the sphere)",
-                                     opt[OPT_E].value);
-    int n_top = !!opt[OPT_M].text + !!opt[OPT_R].text + !!opt[OPT_C].text;
+                                     "--eps-over-R: %g must satisfy 0 <= eps/R < 1 (centre of "
+                                     "mass inside the sphere)",
+                                     a->v[OPT_E]);
+    int n_top = a->seen[OPT_M] + a->seen[OPT_R] + a->seen[OPT_C];
     if (n_top != 0 && n_top != 3)
         return tippe_cli_usage_error(
             VERB, "--m, --R and --C go together (the thresholds need all three)");
-    int have_top = n_top == 3;
-    if (opt[OPT_G].text && !have_top)
+    *have_top = n_top == 3;
+    if (a->seen[OPT_G] && !*have_top)
         return tippe_cli_usage_error(VERB, "--g only matters with --m, --R and --C");
-    if (!opt[OPT_G].text)
-        opt[OPT_G].value = TIPPE_DEFAULT_G_M_S2;
-    for (int j = OPT_M; j < N_OPTS; j++)
-        if ((opt[j].text || j == OPT_G) && have_top && !(opt[j].value > 0.0))
-            return tippe_cli_usage_error(VERB, "%s: %g must be > 0", opt[j].name, opt[j].value);
+    return 0;
+}
 
-    double v[N_OPTS];
-    for (int j = 0; j < N_OPTS; j++)
-        v[j] = opt[j].value;
+/* The design's top at --z2 into top and a->v: 0, or the exit status after a message. */
+static int design_numbers(classify_args *a, tippe_top *top)
+{
+    for (int j = OPT_K; j <= OPT_C; j++)
+        if (a->seen[j])
+            return tippe_cli_usage_error(VERB, "a design gives A/C, eps/R, m, R and C: give "
+                                               "either the design or the numbers");
+    if (!a->has_z2)
+        return tippe_cli_usage_error(VERB, "--z2 MM is required with a design");
+    tippe_error err = {0};
+    tippe_design *d = NULL;
+    int rc = tippe_design_load(a->design, a->sets.item, a->sets.n, &d, &err);
+    if (!rc)
+        rc = tippe_design_top(d, a->z2_mm, top, &err);
+    tippe_design_free(d);
+    if (rc)
+        return tippe_cli_fail(VERB, &err, rc);
+    double *v = a->v;
+    v[OPT_K] = top->A / top->C;
+    v[OPT_E] = top->eps / top->R;
+    v[OPT_M] = top->m;
+    v[OPT_R] = top->R;
+    v[OPT_C] = top->C;
+    return 0;
+}
+
+int tippe_cli_classify(int argc, char **argv)
+{
+    classify_args a = {.z2_mm = 0};
+    int rc = classify_parse(&a, argc, argv), have_top = 1;
+    if (rc)
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
+    const double *v = a.v;
+    tippe_top top = {v[OPT_M], v[OPT_R], v[OPT_E] * v[OPT_R], v[OPT_K] * v[OPT_C], v[OPT_C],
+                     v[OPT_E] > 0.0 ? -1 : 0};
+    rc = a.design ? design_numbers(&a, &top) : check_numbers(&a, &have_top);
+    if (rc)
+        return rc;
     tippe_theory_class cls;
     if (tippe_theory_classify(v[OPT_K], v[OPT_E], &cls) != TIPPE_OK)
         return tippe_cli_usage_error(VERB, "A/C = %g, eps/R = %g cannot be classified", v[OPT_K],
                                      v[OPT_E]);
     tippe_theory_thresholds th = {0};
     if (have_top) {
-        tippe_top top = {v[OPT_M], v[OPT_R], v[OPT_E] * v[OPT_R], v[OPT_K] * v[OPT_C], v[OPT_C],
-                         v[OPT_E] > 0.0 ? -1 : 0};
         tippe_error err = {0};
-        int rc = tippe_theory_compute_thresholds(&top, v[OPT_G], &th, &err);
+        rc = tippe_theory_compute_thresholds(&top, v[OPT_G], &th, &err);
         if (rc)
             return tippe_cli_fail(VERB, &err, rc);
     }
-    if (json)
-        return tippe_cli_print_json(VERB, to_json(&cls, &th, v, have_top));
+    if (a.json) {
+        cJSON *o = to_json(&cls, &th, v, have_top);
+        if (o && a.design) {
+            cJSON_AddStringToObject(o, "file", a.design);
+            cJSON_AddNumberToObject(o, "z2_mm", a.z2_mm);
+            tippe_cli_json_sets(o, &a.sets);
+        }
+        return tippe_cli_print_json(VERB, o);
+    }
+    if (a.design) {
+        char sets[1024];
+        printf("design    %s at Z2 = %g mm%s%s\n", a.design, a.z2_mm, a.sets.n ? " with " : "",
+               tippe_cli_sets_text(&a.sets, sets, sizeof sets));
+    }
     print_text(&cls, &th, v, have_top);
     return 0;
 }

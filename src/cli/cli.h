@@ -92,6 +92,7 @@ typedef struct {
     tippe_cli_opt *opts;  /* ends with {NULL}; --help is added */
     int min_args, max_args;  /* positional arguments (files) */
     const char *args_name;   /* what they are, for messages: "design file" */
+    int quiet_help;          /* 1: --help prints nothing (tippe-mpi's other ranks) */
 } tippe_cli_spec;
 
 enum { TIPPE_CLI_HELP = -1 };
@@ -171,6 +172,15 @@ int tippe_cli_sets_add(tippe_cli_sets *s, const char *field, const char *value);
 /* Appends one --set value: 0, or 2 after the usage error "too many --set
  * options (at most 64)". */
 int tippe_cli_add_set(const char *verb, tippe_cli_sets *s, const char *value);
+
+/* The changes as one line for titles and reports, "radius_mm=30,
+ * parts.rod.material=nylon" (cut with "..." to fit size), or "" without any.
+ * Returns buf. */
+const char *tippe_cli_sets_text(const tippe_cli_sets *s, char *buf, size_t size);
+/* Adds the changes to o as "set": ["FIELD=VALUE", ...] (an empty array without
+ * any), so that a report never claims to show the file's design when it shows
+ * a variant. */
+void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
 
 /* An output file (plot: its extension names a plot format) that can be
  * written, found by really creating (and removing) a temporary next to it

@@ -152,6 +152,29 @@ int tippe_cli_add_set(const char *verb, tippe_cli_sets *s, const char *value)
     return 0;
 }
 
+const char *tippe_cli_sets_text(const tippe_cli_sets *s, char *buf, size_t size)
+{
+    size_t len = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < s->n; i++) {
+        int n = snprintf(buf + len, size - len, "%s%s", i ? ", " : "", s->item[i]);
+        if (n < 0 || (size_t)n >= size - len) {
+            if (size > 4)
+                snprintf(buf + size - 4, 4, "...");
+            break;
+        }
+        len += (size_t)n;
+    }
+    return buf;
+}
+
+void tippe_cli_json_sets(cJSON *o, const tippe_cli_sets *s)
+{
+    cJSON *a = cJSON_AddArrayToObject(o, "set");
+    for (int i = 0; a && i < s->n; i++)
+        cJSON_AddItemToArray(a, cJSON_CreateString(s->item[i]));
+}
+
 /* The files the verb's outputs finally name, to refuse two outputs that are
  * one file (each would replace the other). */
 enum { MAX_OUTPUTS = 16 };

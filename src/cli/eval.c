@@ -92,7 +92,7 @@ static cJSON *to_json(const tippe_design *d, double z2_mm, const tippe_top *t)
         a1 = NULL;
     }
     cJSON *a2 = cJSON_CreateDoubleArray(ct, 2);
-    if (a2 && !cJSON_AddItemToObject(o, "contact_travel_mm", a2)) {
+    if (a2 && !cJSON_AddItemToObject(o, "physical_travel_mm", a2)) {
         cJSON_Delete(a2);
         a2 = NULL;
     }

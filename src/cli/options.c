@@ -93,10 +93,12 @@ static void allowed_text(const tippe_cli_opt *o, char *buf, size_t size)
         char steps[64] = "";
         if (o->max_steps > 0)
             snprintf(steps, sizeof steps, "[:STEPS] with STEPS 1 .. %ld", o->max_steps);
-        snprintf(buf, size, "X or FROM:TO%s, numbers%s from %g to %g", steps, unit, o->min,
-                 o->max);
+        snprintf(buf, size, "X or FROM:TO%s, numbers%s from %.10g to %.10g", steps, unit,
+                 o->min, o->max);
     } else {
-        snprintf(buf, size, "%s%s from %g to %g", what, unit, o->min, o->max);
+        snprintf(buf, size, o->kind == TIPPE_CLI_LONG ? "%s%s from %.0f to %.0f"
+                                                      : "%s%s from %.10g to %.10g",
+                 what, unit, o->min, o->max);
     }
 }
 
@@ -116,6 +118,14 @@ static int in_range(const tippe_cli_opt *o, double x)
     return x >= o->min && x <= o->max;
 }
 
+/* The unit suffix of a number's text ("" without one). */
+static const char *suffix_of(const char *text)
+{
+    char *end = NULL;
+    strtod(text, &end);
+    return end;
+}
+
 /* "X", "FROM:TO" or "FROM:TO:STEPS" into r: 0, or 2 after the usage error. */
 static int parse_range(const tippe_cli_spec *spec, const tippe_cli_opt *o, const char *text,
                        tippe_cli_range *r)
@@ -129,9 +139,13 @@ static int parse_range(const tippe_cli_spec *spec, const tippe_cli_opt *o, const
         *c1 = '\0';
     if (c2)
         *c2 = '\0';
+    /* "5:40rev/s": a unit written on TO only applies to FROM too */
+    char from_text[300];
+    const char *to_unit = c1 ? suffix_of(c1 + 1) : "";
+    snprintf(from_text, sizeof from_text, "%s%s", buf, *suffix_of(buf) ? "" : to_unit);
     double from, to;
     long steps = c1 ? 0 : 1;
-    if (!tippe_cli_parse_unit(buf, o->unit, &from) ||
+    if (!tippe_cli_parse_unit(from_text, o->unit, &from) ||
         (c1 && !tippe_cli_parse_unit(c1 + 1, o->unit, &to)) ||
         (c2 && (o->max_steps <= 0 || !tippe_cli_parse_long(c2 + 1, 1, o->max_steps, &steps))))
         return bad_value(spec, o, text, NULL);
@@ -282,7 +296,8 @@ int tippe_cli_parse(tippe_cli_spec *spec, int argc, char **argv, const char **ar
     int c;
     while ((c = getopt_long(argc, argv, shorts, lo, NULL)) != -1) {
         if (c == 'h') {
-            tippe_cli_help(spec, stdout);
+            if (!spec->quiet_help)
+                tippe_cli_help(spec, stdout);
             return TIPPE_CLI_HELP;
         }
         tippe_cli_opt *o = (c == '?' || c == ':') ? NULL : option_for(spec, c);
@@ -326,7 +341,8 @@ static void value_note(const tippe_cli_opt *o, char *buf, size_t size)
         n += snprintf(buf + n, size - (size_t)n, "default %s; ", o->def);
     else if (o->required)
         n += snprintf(buf + n, size - (size_t)n, "required; ");
-    snprintf(buf + n, size - (size_t)n, "%g .. %g]", o->min, o->max);
+    snprintf(buf + n, size - (size_t)n,
+             o->kind == TIPPE_CLI_LONG ? "%.0f .. %.0f]" : "%.10g .. %.10g]", o->min, o->max);
 }
 
 static void print_option(FILE *out, const tippe_cli_opt *o)
@@ -370,8 +386,10 @@ static void print_units(const tippe_cli_spec *spec, FILE *out)
         }
         if (!used)
             continue;
-        fprintf(out, "%s  a number of %s may carry its unit:", shown++ ? "" : "\nUnits:\n",
-                units[u].family);
+        const char *noun = !strcmp(units[u].family, "rad/s") ? "an angular rate (spin)"
+                           : !strcmp(units[u].family, "mm")  ? "a length"
+                                                             : "an angle";
+        fprintf(out, "%s  %s may carry its unit:", shown++ ? "" : "\nUnits:\n", noun);
         for (int k = 0; k < N_UNITS; k++)
             if (!strcmp(units[k].family, units[u].family))
                 fprintf(out, " 2.5%s", units[k].suffix);

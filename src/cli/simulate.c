@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include "tippe/dynamics.h"
+#include "tippe/json.h"
 #include "tippe/plot.h"
 #include "tippe/report.h"
 #include "tippe/scenario.h"
@@ -20,37 +21,8 @@ static const char *const VERB = "simulate";
  * settling tolerance leaves ~1e-3 rad, a "fast" run's Jellett drift a few 1e-3. */
 #define HANG_AGREE_RAD 1e-2
 
-static void simulate_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: tippe simulate SCENARIO.json [--json] [--csv FILE] [--plot FILE] [options]\n"
-            "\n"
-            "Integrates the launch of a scenario file (the paper's section 3 model with viscous\n"
-            "sliding friction) until the top settles, loses contact or reaches t_end, and\n"
-            "compares the outcome with Theorem 5.1's prediction for the launch's Jellett\n"
-            "invariant. Verdicts: no_tip, tip, hang, lost_contact, undecided.\n"
-            "\n"
-            "  --json              print one JSON object (SI units) instead of the summary\n"
-            "  --csv FILE          write the trajectory (t, theta, theta_dot, phi_dot, n, U, V,\n"
-            "                      Rn, |V_Q|, E, J, ...; units in the header)\n"
-            "  --plot FILE         draw theta, spin and contact speed against time and the\n"
-            "                      (phi_dot, theta, n) path; .png, .svg or .pdf\n"
-            "  --sample-dt S       trajectory sample interval, s (default: 16 per turn of the\n"
-            "                      launch, between t_end/10^5 and t_end/10^4)\n"
-            "  --full              keep integrating to t_end after the verdict (always with\n"
-            "                      --csv or --plot)\n"
-            "\n"
-            "Overrides of scenario fields (applied before the file is checked):\n"
-            "  --mu S_PER_M  --g M_S2  --t-end S\n"
-            "  --theta RAD  --theta-dot RAD_S  --phi-dot RAD_S|steady|s1|s2|s3  --spin RAD_S\n"
-            "  --U M_S  --V M_S  --z2 MM (design tops)\n"
-            "  --accuracy fast|balanced|precise  --stepper NAME  --rtol X\n"
-            "  --set FIELD=VALUE   any field, e.g. --set initial.spin=3 --set top.C=1e-6\n"
-            "  --help              this text\n"
-            "\n"
-            "Exit status: 0 ok (whatever the verdict), 2 bad usage or scenario, 1 computation\n"
-            "failed. The scenario format and the settling criteria are in docs/dynamics.md.\n");
-}
+/* Largest angular rate (spin, tilt rate, precession) the options accept, rad/s. */
+#define SIM_RATE_MAX_RAD_S 1e5
 
 typedef struct {
     int n, cap;
@@ -296,140 +268,245 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
     return o;
 }
 
+/* Most trajectory samples one run may keep: 10^6 samples of ~130 bytes. */
+#define MAX_SAMPLES 1e6
+
+typedef struct {
+    const char *file, *csv, *plot, *phi_dot, *accuracy;
+    int json, full, is_design;
+    double sample_dt, z2_mm;
+    tippe_cli_sets over;  /* scenario fields (the option shorthands, and --set of a scenario) */
+    tippe_cli_sets sets;  /* --set: of the scenario, or of the design */
+} simulate_args;
+
+#define SIMULATE_ABOUT                                                                        \
+    "Integrates one launch (the paper's section 3 model with viscous sliding friction)\n"     \
+    "until the top settles, loses contact or reaches t_end, and compares the outcome with\n" \
+    "Theorem 5.1's prediction for the launch's Jellett invariant. Verdicts: no_tip, tip,\n"  \
+    "hang, lost_contact, undecided. The launch is a scenario file (docs/dynamics.md), or a\n"\
+    "design with --z2 and the launch options below: without them, tippe launch's central\n" \
+    "hand launch (tilt 0.0674 rad, steady precession, spin 15 rev/s, no sliding, mu 0.1)."
+
+/* --phi-dot: a rule, or a rate with its unit, as the override initial.phi_dot. */
+static int add_phi_dot(simulate_args *a)
+{
+    static const char *const rules[] = {"steady", "s1", "s2", "s3"};
+    for (int i = 0; i < 4; i++)
+        if (!strcmp(a->phi_dot, rules[i]))
+            return tippe_cli_sets_add(&a->over, "initial.phi_dot", a->phi_dot) ? 2 : 0;
+    double x;
+    char num[64];
+    if (!tippe_cli_parse_unit(a->phi_dot, "rad/s", &x) || !(fabs(x) <= SIM_RATE_MAX_RAD_S))
+        return tippe_cli_usage_error(VERB,
+                                     "--phi-dot '%s': expected steady, s1, s2, s3 or a number "
+                                     "of rad/s from -%g to %g",
+                                     a->phi_dot, SIM_RATE_MAX_RAD_S, SIM_RATE_MAX_RAD_S);
+    snprintf(num, sizeof num, "%.17g", x);
+    return tippe_cli_sets_add(&a->over, "initial.phi_dot", num) ? 2 : 0;
+}
+
+/* The file's kind: a design has "parts" at its top (a scenario never has). */
+static int is_design_file(const char *path)
+{
+    tippe_error err;
+    tippe_json_reader *c = tippe_json_reader_new(path, &err, TIPPE_JSON_WORDS_KEY, "");
+    cJSON *root = NULL;
+    int design = c && tippe_json_load(c, 16, "file", &root) == TIPPE_OK &&
+                 cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts");
+    cJSON_Delete(root);
+    free(c);
+    return design;
+}
+
+static int simulate_parse(simulate_args *a, int argc, char **argv)
+{
+    tippe_cli_sets *ov = &a->over;
+    tippe_cli_opt opts[] = {
+        {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &a->z2_mm, .arg = "MM", .unit = "mm",
+         .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
+         .help = "the moving weight's position: required with a design; with a scenario\n"
+                 "whose top is a design, its top.z2_mm"},
+        {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.spin",
+         .arg = "RATE", .unit = "rad/s", .min = -SIM_RATE_MAX_RAD_S, .max = SIM_RATE_MAX_RAD_S,
+         .help = "spin about the symmetry axis (initial.spin; design: 15rev/s)"},
+        {.name = "theta", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.theta",
+         .unit = "rad", .min = 0, .max = M_PI, .help = "tilt (initial.theta; design: 0.0674)"},
+        {.name = "theta-dot", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.theta_dot",
+         .arg = "RATE", .unit = "rad/s", .min = -SIM_RATE_MAX_RAD_S, .max = SIM_RATE_MAX_RAD_S,
+         .help = "tilt rate (initial.theta_dot; design: 0)"},
+        {.name = "phi-dot", .kind = TIPPE_CLI_STRING, .value = &a->phi_dot, .arg = "RATE|RULE",
+         .help = "precession (initial.phi_dot): rad/s, or steady, s1, s2, s3\n"
+                 "(design: steady)"},
+        {.name = "U", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.U", .unit = "m/s",
+         .min = -100, .max = 100, .help = "sliding velocity of the centre (initial.U; design: 0)"},
+        {.name = "V", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.V", .unit = "m/s",
+         .min = -100, .max = 100, .help = "its other component (initial.V; design: 0)"},
+        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "mu", .unit = "s/m",
+         .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12 (design: 0.1)"},
+        {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "g", .unit = "m/s^2",
+         .min = 0.01, .max = 1000, .help = "gravity (design: 9.81)"},
+        {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "t_end", .unit = "s",
+         .min = 1e-3, .max = 1e6, .help = "longest simulated time (design: 600)"},
+        {.name = "accuracy", .kind = TIPPE_CLI_STRING, .value = ov, .field = "accuracy",
+         .arg = "PRESET", .help = "fast, balanced or precise (design: balanced)"},
+        {.name = "stepper", .kind = TIPPE_CLI_STRING, .value = ov, .field = "accuracy.stepper",
+         .arg = "NAME", .help = "a GSL stepper instead of the preset's (docs/dynamics.md)"},
+        {.name = "rtol", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "accuracy.rtol",
+         .min = 1e-14, .max = 1e-2, .help = "relative tolerance instead of the preset's"},
+        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
+         .help = "any field of the scenario (e.g. --set top.C=1e-6) or, with a design,\n"
+                 "of the design (e.g. --set radius_mm=30); repeatable"},
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
+         .help = "print one JSON object (SI units) instead of the summary"},
+        {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
+         .help = "write the trajectory (t, theta, theta_dot, phi_dot, n, U, V, Rn,\n"
+                 "|V_Q|, E, J, ...; units in the header)"},
+        {.name = "plot", .kind = TIPPE_CLI_STRING, .value = &a->plot, .arg = "FILE",
+         .help = "theta, spin and contact speed against time and the (phi_dot, theta, n)\n"
+                 "path; .png, .svg or .pdf"},
+        {.name = "sample-dt", .kind = TIPPE_CLI_DOUBLE, .value = &a->sample_dt, .unit = "s",
+         .min = 1e-9, .max = 1e6, .def = "16 per turn, t_end/10^5 .. t_end/10^4",
+         .help = "trajectory sample interval (at most 10^6 samples in all)"},
+        {.name = "full", .kind = TIPPE_CLI_FLAG, .value = &a->full,
+         .help = "keep integrating to t_end after the verdict (always with --csv or\n--plot)"},
+        {NULL},
+    };
+    tippe_cli_spec spec = {
+        .verb = VERB,
+        .synopsis = "SCENARIO.json [options]\n"
+                    "       tippe simulate DESIGN.json --z2 MM [--spin RATE] [--theta RAD] "
+                    "[options]",
+        .about = SIMULATE_ABOUT,
+        .after = "Exit status: 0 ok (whatever the verdict), 2 bad usage or scenario, 1\n"
+                 "computation failed. The scenario format and the verdicts: docs/dynamics.md.",
+        .opts = opts,
+        .min_args = 1,
+        .max_args = 1,
+        .args_name = "scenario or design file",
+    };
+    int n_args, rc = tippe_cli_parse(&spec, argc, argv, &a->file, &n_args);
+    if (rc)
+        return rc;
+    if (a->phi_dot && (rc = add_phi_dot(a)))
+        return rc;
+    a->is_design = is_design_file(a->file);
+    if (a->is_design && !opts[0].seen)
+        return tippe_cli_usage_error(VERB, "--z2 MM is required with a design file");
+    if (!a->is_design && opts[0].seen) {
+        char num[64];
+        snprintf(num, sizeof num, "%.17g", a->z2_mm);
+        tippe_cli_sets_add(ov, "top.z2_mm", num);
+    }
+    if (!a->is_design) /* --set names scenario fields, after the shorthands */
+        for (int i = 0; i < a->sets.n; i++)
+            if (tippe_cli_sets_add(ov, NULL, a->sets.item[i]))
+                return tippe_cli_usage_error(VERB, "more than %d overrides", TIPPE_CLI_MAX_SETS);
+    /* Before the integration, so that a bad output path costs nothing. */
+    if ((a->csv && tippe_cli_check_output(VERB, "--csv", a->csv, 0)) ||
+        (a->plot && tippe_cli_check_output(VERB, "--plot", a->plot, 1)))
+        return 2;
+    return 0;
+}
+
+static int simulate_load(const simulate_args *a, tippe_scenario *sc)
+{
+    tippe_error err;
+    int rc = a->is_design ? tippe_scenario_for_design(a->file, a->z2_mm, a->sets.item,
+                                                      a->sets.n, a->over.item, a->over.n, sc,
+                                                      &err)
+                          : tippe_scenario_load(a->file, a->over.item, a->over.n, sc, &err);
+    return rc ? tippe_cli_fail(VERB, &err, rc) : 0;
+}
+
+/* The trajectory sampling (with --csv or --plot): 0, or 2 if the samples
+ * would be more than MAX_SAMPLES. */
+static int plan_samples(const simulate_args *a, const tippe_scenario *sc,
+                        tippe_dynamics_options *opt, samples *buf)
+{
+    if (!a->csv && !a->plot)
+        return 0;
+    double dt = a->sample_dt;
+    if (dt <= 0) {
+        /* 16 samples per turn at the launch's rotation rate, so that the
+         * plots resolve the precession, but no more than 10^5 samples */
+        const tippe_dynamics_initial *ic = &sc->initial;
+        double w = sqrt(ic->theta_dot * ic->theta_dot + ic->spin * ic->spin +
+                        pow(ic->phi_dot * sin(ic->theta), 2)) +
+                   sqrt(sc->model.g / sc->model.top.R);
+        dt = fmax(sc->t_end * 1e-5, fmin(sc->t_end * 1e-4, 2 * M_PI / (16 * w)));
+    }
+    if (sc->t_end / dt > MAX_SAMPLES)
+        return tippe_cli_usage_error(VERB,
+                                     "--sample-dt %g s over t_end = %g s is %.3g samples; at "
+                                     "most %.0e (%.0f MB): give a larger --sample-dt or a "
+                                     "smaller --t-end",
+                                     dt, sc->t_end, sc->t_end / dt, MAX_SAMPLES,
+                                     MAX_SAMPLES * sizeof(tippe_dynamics_sample) / 1e6);
+    opt->level = TIPPE_LEVEL_TRAJECTORY;
+    opt->sample_dt = dt;
+    opt->on_sample = keep_sample;
+    opt->sample_ctx = buf;
+    return 0;
+}
+
+/* The outputs (all of them or none) and the report. */
+static int simulate_report(const simulate_args *a, const tippe_scenario *sc,
+                           const tippe_dynamics_result *res, const samples *buf,
+                           double elapsed)
+{
+    theory_check tc;
+    check_theory(sc, res, &tc);
+    tippe_error err;
+    int rc = 0;
+    if (a->csv && (rc = write_csv(a->csv, buf, &err)) != 0)
+        return tippe_cli_fail(VERB, &err, rc);
+    /* The outputs form one set (tippe_cli_run): a failed plot keeps the CSV's
+     * old file too. */
+    if (a->plot && (rc = tippe_plot_sim(a->plot, sc, res, buf->s, buf->n, &err)) != 0)
+        return tippe_cli_fail(VERB, &err, rc);
+    if (a->json) {
+        cJSON *o = to_json(sc, res, &tc, elapsed);
+        if (o && a->is_design)
+            tippe_cli_json_sets(o, &a->sets);
+        return tippe_cli_print_json(VERB, o);
+    }
+    print_text(sc, res, &tc, elapsed);
+    if (a->csv)
+        printf("csv       %s (%d samples)\n", a->csv, buf->n);
+    if (a->plot)
+        printf("plot      %s\n", a->plot);
+    return 0;
+}
+
 int tippe_cli_simulate(int argc, char **argv)
 {
-    static const struct {
-        const char *flag, *field;
-    } field_flags[] = {
-        {"--mu", "mu"},
-        {"--g", "g"},
-        {"--t-end", "t_end"},
-        {"--theta", "initial.theta"},
-        {"--theta-dot", "initial.theta_dot"},
-        {"--phi-dot", "initial.phi_dot"},
-        {"--spin", "initial.spin"},
-        {"--U", "initial.U"},
-        {"--V", "initial.V"},
-        {"--z2", "top.z2_mm"},
-        {"--accuracy", "accuracy"},
-        {"--stepper", "accuracy.stepper"},
-        {"--rtol", "accuracy.rtol"},
-    };
-    const int n_field_flags = (int)(sizeof field_flags / sizeof field_flags[0]);
-    const char *scenario = NULL, *csv = NULL, *plot = NULL;
-    int json = 0, full = 0;
-    double sample_dt = 0.0;
-    tippe_cli_sets over = {.n = 0};
-
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *field = NULL, *v;
-        if (tippe_cli_is_help(a)) {
-            simulate_usage(stdout);
-            return 0;
-        }
-        if (!strcmp(a, "--json")) {
-            json = 1;
-            continue;
-        }
-        if (!strcmp(a, "--full")) {
-            full = 1;
-            continue;
-        }
-        for (int k = 0; k < n_field_flags && !field; k++)
-            if (!strcmp(a, field_flags[k].flag))
-                field = field_flags[k].field;
-        const int takes_value = field || !strcmp(a, "--csv") || !strcmp(a, "--plot") ||
-                                !strcmp(a, "--sample-dt") || !strcmp(a, "--set");
-        if (!takes_value) {
-            if (tippe_cli_is_option(a, 0))
-                return tippe_cli_usage_error(VERB, "unknown option '%s'", a);
-            if (scenario)
-                return tippe_cli_usage_error(
-                    VERB, "more than one scenario file ('%s' and '%s')", scenario, a);
-            scenario = a;
-            continue;
-        }
-        if (!(v = tippe_cli_value(VERB, argc, argv, &i)))
-            return 2;
-        if (!strcmp(a, "--csv")) {
-            csv = v;
-        } else if (!strcmp(a, "--plot")) {
-            plot = v;
-        } else if (!strcmp(a, "--sample-dt")) {
-            if (!tippe_cli_parse_double(v, &sample_dt) || !(sample_dt > 0))
-                return tippe_cli_usage_error(
-                    VERB, "--sample-dt '%s': expected a positive number of seconds", v);
-        } else if (tippe_cli_sets_add(&over, field, v)) {
-            return tippe_cli_usage_error(VERB, "more than %d overrides", TIPPE_CLI_MAX_SETS);
-        }
-    }
-    if (!scenario)
-        return tippe_cli_usage_error(VERB, "no scenario file given");
-    /* Before the integration, so that a bad output path costs nothing. */
-    if ((csv && tippe_cli_check_output(VERB, "--csv", csv, 0)) ||
-        (plot && tippe_cli_check_output(VERB, "--plot", plot, 1)))
-        return 2;
-
-    tippe_scenario sc;
-    tippe_error err;
-    int rc = tippe_scenario_load(scenario, over.item, over.n, &sc, &err);
+    simulate_args a = {.sample_dt = 0.0};
+    int rc = simulate_parse(&a, argc, argv);
     if (rc)
-        return tippe_cli_fail(VERB, &err, rc);
-
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
+    tippe_scenario sc;
+    if ((rc = simulate_load(&a, &sc)) != 0)
+        return rc;
     tippe_dynamics_options opt;
     tippe_dynamics_options_default(&opt);
     opt.t_end = sc.t_end;
     opt.accuracy = sc.accuracy;
     /* A verdict is often proved long before the motion ends (even at t = 0): a
      * trajectory asked for runs to t_end; a flip is followed to report its time. */
-    opt.run_to_t_end = full || csv || plot;
+    opt.run_to_t_end = a.full || a.csv || a.plot;
     opt.until_flip = 1;
     samples buf = {0, 0, NULL};
-    if (csv || plot) {
-        opt.level = TIPPE_LEVEL_TRAJECTORY;
-        if (sample_dt <= 0) {
-            /* 16 samples per turn at the launch's rotation rate, so that the
-             * plots resolve the precession, but no more than 10^5 samples */
-            const tippe_dynamics_initial *ic = &sc.initial;
-            double w = sqrt(ic->theta_dot * ic->theta_dot + ic->spin * ic->spin +
-                            pow(ic->phi_dot * sin(ic->theta), 2)) +
-                       sqrt(sc.model.g / sc.model.top.R);
-            sample_dt = fmax(sc.t_end * 1e-5, fmin(sc.t_end * 1e-4, 2 * M_PI / (16 * w)));
-        }
-        opt.sample_dt = sample_dt;
-        opt.on_sample = keep_sample;
-        opt.sample_ctx = &buf;
-    }
+    if ((rc = plan_samples(&a, &sc, &opt, &buf)) != 0)
+        return rc;
     tippe_dynamics_result res;
+    tippe_error err;
     const double t0 = tippe_cli_now_s();
     rc = tippe_dynamics_run(&sc.model, &sc.initial, &opt, &res, &err);
     const double elapsed = tippe_cli_now_s() - t0;
-    if (rc) {
-        fprintf(stderr, "tippe simulate: %s: %s\n", scenario, err.msg);
-        free(buf.s);
-        return rc;
-    }
-    theory_check tc;
-    check_theory(&sc, &res, &tc);
-
-    int status = 0;
-    if (csv && (rc = write_csv(csv, &buf, &err)) != 0)
-        status = tippe_cli_fail(VERB, &err, rc);
-    /* The outputs form one set (tippe_cli_run): a failed plot keeps the CSV's
-     * old file too. */
-    if (!status && plot && (rc = tippe_plot_sim(plot, &sc, &res, buf.s, buf.n, &err)) != 0)
-        status = tippe_cli_fail(VERB, &err, rc);
-    if (!status) {
-        if (json) {
-            status = tippe_cli_print_json(VERB, to_json(&sc, &res, &tc, elapsed));
-        } else {
-            print_text(&sc, &res, &tc, elapsed);
-            if (csv)
-                printf("csv       %s (%d samples)\n", csv, buf.n);
-            if (plot)
-                printf("plot      %s\n", plot);
-        }
-    }
+    if (rc)
+        fprintf(stderr, "tippe simulate: %s: %s\n", a.file, err.msg);
+    else
+        rc = simulate_report(&a, &sc, &res, &buf, elapsed);
     free(buf.s);
-    return status;
+    return rc;
 }

@@ -15,42 +15,6 @@
 
 static const char *const VERB = "sweep";
 
-static void sweep_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: tippe sweep DESIGN.json [--from MM] [--to MM] [--json] [--plot FILE]\n"
-            "                   [--phase-plot FILE] [--set FIELD=VALUE ...]\n"
-            "                   [--vary FIELD=FROM:TO:STEPS]\n"
-            "\n"
-            "Where along the travel of the moving weight (its midpoint at height Z2 above the\n"
-            "sphere's centre) the top is of group Ia, Ib, IIa, IIb, IIc or III (Theorem 5.1 of\n"
-            "Ciocci et al. 2012). Zone ends are located to 1e-6 mm.\n"
-            "\n"
-            "  --from MM, --to MM  sweep Z2 over [FROM, TO] mm (default: the design's stated\n"
-            "                      travel); zones beyond the physical travel (where a moving\n"
-            "                      part would pass through a fixed one) are marked\n"
-            "  --json              print one JSON object instead of the table\n"
-            "  --plot FILE         zone plot (A/C - 1 against Z2, as the paper's Figures 7, 9,\n"
-            "                      11); PNG, SVG or PDF by the file's extension\n"
-            "  --phase-plot FILE   the design's path through the phase diagram (Figure 2)\n"
-            "  --set FIELD=VALUE   change a field of the design before it is checked, e.g.\n"
-            "                      --set parts.rod.material=nylon  --set radius_mm=30\n"
-            "  --vary FIELD=FROM:TO:STEPS\n"
-            "                      sweep again with FIELD set to STEPS values from FROM to TO\n"
-            "                      (e.g. parts.weight.height_mm=5:15:11) and show how the zones\n"
-            "                      move; --plot then draws the zones against FIELD\n"
-            "  --help              this text\n"
-            "\n"
-            "The table lists each zone: its group, where it starts and ends (mm), its width\n"
-            "(mm), the boundary that ends it and notes; then whether the top is \"3-in-1\"\n"
-            "(groups I, II and III all reachable within the physical travel) and its narrowest\n"
-            "reachable zone. Then the design's tolerances (its \"tolerances\" block and the\n"
-            "defaults: printed dimensions +/-0.2 mm, filament density +/-3 %%, hardware mass\n"
-            "+/-2 %%), each zone boundary's band (+/- mm, first order, independent tolerances\n"
-            "in quadrature; docs/sweep.md) and each zone's robust width (its width less the\n"
-            "bands at both ends). Exit status: 0 ok, 2 bad usage or design, 1 computation failed.\n");
-}
-
 /* "FIELD=FROM:TO:STEPS"; FROM may exceed TO (the values then fall). */
 static int parse_vary(const char *spec, char *field, size_t n, double *from, double *to,
                       int *steps)
@@ -64,9 +28,12 @@ static int parse_vary(const char *spec, char *field, size_t n, double *from, dou
 }
 
 static void print_vary_table(const tippe_design *d, const tippe_sweep_vary_result *v,
-                             const char *field)
+                             const char *field, const tippe_cli_sets *sets)
 {
+    char text[1024];
     printf("design   %s (%s)\n", tippe_design_name(d), tippe_design_path(d));
+    if (sets->n)
+        printf("changes  %s\n", tippe_cli_sets_text(sets, text, sizeof text));
     printf("vary     %s from %g to %g in %d steps\n\n", field, v->values[0],
            v->values[v->n - 1], v->n);
     int w = (int)strlen(field) > 10 ? (int)strlen(field) : 10;
@@ -120,141 +87,189 @@ static cJSON *vary_json(const tippe_design *d, const tippe_sweep_vary_result *v,
     return o;
 }
 
-int tippe_cli_sweep(int argc, char **argv)
+typedef struct {
+    const char *design, *plot, *phase, *vary;
+    double from, to; /* from >= to: the design's stated travel */
+    int has_from, has_to, json;
+    tippe_cli_sets sets;
+    char field[256]; /* --vary's */
+    double vfrom, vto;
+    int vsteps;
+} sweep_args;
+
+static int sweep_parse(sweep_args *a, int argc, char **argv)
 {
-    const char *path = NULL, *plot = NULL, *phase = NULL, *vary = NULL;
-    const char *from_text = NULL, *to_text = NULL, *set = NULL;
-    tippe_cli_sets sets = {.n = 0};
-    int json = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char **val = NULL;
-        if (tippe_cli_is_help(a)) {
-            sweep_usage(stdout);
-            return 0;
-        } else if (!strcmp(a, "--json")) {
-            json = 1;
-            continue;
-        } else if (!strcmp(a, "--from")) {
-            val = &from_text;
-        } else if (!strcmp(a, "--to")) {
-            val = &to_text;
-        } else if (!strcmp(a, "--plot")) {
-            val = &plot;
-        } else if (!strcmp(a, "--phase-plot")) {
-            val = &phase;
-        } else if (!strcmp(a, "--vary")) {
-            val = &vary;
-        } else if (!strcmp(a, "--set")) {
-            val = &set;
-        } else if (tippe_cli_is_option(a, 1)) {
-            return tippe_cli_usage_error(VERB, "unknown option '%s'", a);
-        } else if (!path) {
-            path = a;
-            continue;
-        } else {
-            return tippe_cli_usage_error(
-                VERB, "one design file only (got also '%s'; tippe compare takes several)", a);
-        }
-        if (!(*val = tippe_cli_value(VERB, argc, argv, &i)))
-            return 2;
-        if (val == &set && tippe_cli_add_set(VERB, &sets, set))
-            return 2;
-    }
-    if (!path)
-        return tippe_cli_usage_error(VERB, "no design file given");
-    double from = 0.0, to = 0.0; /* from >= to: the design's stated travel */
-    int has_from = from_text != NULL, has_to = to_text != NULL;
-    if ((has_from && tippe_cli_number(VERB, "--from", from_text, "mm", &from)) ||
-        (has_to && tippe_cli_number(VERB, "--to", to_text, "mm", &to)))
+    tippe_cli_opt opts[] = {
+        {.name = "from", .kind = TIPPE_CLI_DOUBLE, .value = &a->from, .arg = "MM", .unit = "mm",
+         .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
+         .def = "the travel's start",
+         .help = "sweep Z2 from FROM (zones beyond the physical travel, where a moving\n"
+                 "part would pass through a fixed one, are marked)"},
+        {.name = "to", .kind = TIPPE_CLI_DOUBLE, .value = &a->to, .arg = "MM", .unit = "mm",
+         .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM, .def = "the travel's end",
+         .help = "sweep Z2 up to TO"},
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
+         .help = "print one JSON object instead of the table"},
+        {.name = "plot", .kind = TIPPE_CLI_STRING, .value = &a->plot, .arg = "FILE",
+         .help = "zone plot (A/C - 1 against Z2, as the paper's Figures 7, 9, 11);\n"
+                 "PNG, SVG or PDF by the file's extension"},
+        {.name = "phase-plot", .kind = TIPPE_CLI_STRING, .value = &a->phase, .arg = "FILE",
+         .help = "the design's path through the phase diagram (Figure 2)"},
+        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
+         .help = "change a field of the design before it is checked (repeatable), e.g.\n"
+                 "--set parts.rod.material=nylon  --set radius_mm=30"},
+        {.name = "vary", .kind = TIPPE_CLI_STRING, .value = &a->vary,
+         .arg = "FIELD=FROM:TO:STEPS",
+         .help = "sweep again with FIELD set to STEPS (1 .. 10000) values from FROM to TO\n"
+                 "(e.g. parts.weight.height_mm=5:15:11) and show how the zones move;\n"
+                 "--plot then draws the zones against FIELD"},
+        {NULL},
+    };
+    tippe_cli_spec spec = {
+        .verb = VERB,
+        .synopsis = "DESIGN.json [--from MM] [--to MM] [--json] [--plot FILE]\n"
+                    "                   [--phase-plot FILE] [--set FIELD=VALUE ...]\n"
+                    "                   [--vary FIELD=FROM:TO:STEPS]",
+        .about = "Where along the travel of the moving weight (its midpoint at height Z2 above\n"
+                 "the sphere's centre) the top is of group Ia, Ib, IIa, IIb, IIc or III\n"
+                 "(Theorem 5.1 of Ciocci et al. 2012). Zone ends are located to 1e-6 mm.",
+        .after = "The table lists each zone: its group, where it starts and ends (mm), its\n"
+                 "width (mm), the boundary that ends it and notes; then whether the top is\n"
+                 "\"3-in-1\" (groups I, II and III all reachable within the physical travel)\n"
+                 "and its narrowest reachable zone. Then the design's tolerances (its\n"
+                 "\"tolerances\" block and the defaults: printed dimensions +/-0.2 mm,\n"
+                 "filament density +/-3 %, hardware mass +/-2 %), each zone boundary's band\n"
+                 "(+/- mm, first order, independent tolerances in quadrature; docs/sweep.md)\n"
+                 "and each zone's robust width (its width less the bands at both ends).\n"
+                 "Exit status: 0 ok, 2 bad usage or design, 1 computation failed. tippe\n"
+                 "compare takes several designs.",
+        .opts = opts,
+        .min_args = 1,
+        .max_args = 1,
+        .args_name = "design file",
+    };
+    int n_args, rc = tippe_cli_parse(&spec, argc, argv, &a->design, &n_args);
+    if (rc)
+        return rc;
+    a->has_from = opts[0].seen;
+    a->has_to = opts[1].seen;
+    if (a->has_from && a->has_to && !(a->from < a->to))
+        return tippe_cli_usage_error(VERB, "--from %g must be below --to %g", a->from, a->to);
+    if ((a->plot && tippe_cli_check_output(VERB, "--plot", a->plot, 1)) ||
+        (a->phase && tippe_cli_check_output(VERB, "--phase-plot", a->phase, 1)))
         return 2;
-    if (has_from && has_to && !(from < to))
-        return tippe_cli_usage_error(VERB, "--from %g must be below --to %g", from, to);
-    if ((plot && tippe_cli_check_output(VERB, "--plot", plot, 1)) ||
-        (phase && tippe_cli_check_output(VERB, "--phase-plot", phase, 1)))
-        return 2;
-    if (plot && phase && !strcmp(plot, phase))
-        return tippe_cli_usage_error(VERB, "--plot and --phase-plot name the same file '%s'", plot);
-    char field[256];
-    double vfrom = 0, vto = 0;
-    int vsteps = 0;
-    if (vary && !parse_vary(vary, field, sizeof field, &vfrom, &vto, &vsteps))
-        return tippe_cli_usage_error(
-            VERB,
-            "--vary '%s': expected FIELD=FROM:TO:STEPS with numbers FROM, TO "
-            "and 1 to 10000 STEPS (e.g. parts.weight.height_mm=5:15:11)",
-            vary);
-    if (vary && phase)
+    if (a->plot && a->phase && !strcmp(a->plot, a->phase))
+        return tippe_cli_usage_error(VERB, "--plot and --phase-plot name the same file '%s'",
+                                     a->plot);
+    if (a->vary &&
+        !parse_vary(a->vary, a->field, sizeof a->field, &a->vfrom, &a->vto, &a->vsteps))
+        return tippe_cli_usage_error(VERB,
+                                     "--vary '%s': expected FIELD=FROM:TO:STEPS with numbers "
+                                     "FROM, TO and 1 to 10000 STEPS (e.g. "
+                                     "parts.weight.height_mm=5:15:11)",
+                                     a->vary);
+    if (a->vary && a->phase)
         return tippe_cli_usage_error(
             VERB, "--phase-plot draws one sweep; it cannot be combined with --vary");
+    return 0;
+}
 
-    tippe_error err = {0};
-    tippe_design *d = NULL;
-    int rc = tippe_design_load(path, sets.item, sets.n, &d, &err);
-    if (rc)
-        return tippe_cli_fail(VERB, &err, rc);
-    /* One end given: the other is the stated travel's. */
+/* One end given: the other is the stated travel's. 0, or 2 if that is empty. */
+static int sweep_ends(sweep_args *a, const tippe_design *d)
+{
     double tf, tt;
     tippe_design_travel_mm(d, &tf, &tt);
-    if (has_from != has_to) {
-        if (!has_from)
-            from = tf;
-        if (!has_to)
-            to = tt;
-        if (!(from < to)) {
-            tippe_design_free(d);
-            return tippe_cli_usage_error(
-                VERB,
-                "the sweep Z2 = %g .. %g mm is empty (the stated travel is "
-                "%g .. %g mm)",
-                from, to, tf, tt);
-        }
-    }
+    if (a->has_from == a->has_to)
+        return 0;
+    if (!a->has_from)
+        a->from = tf;
+    if (!a->has_to)
+        a->to = tt;
+    if (!(a->from < a->to))
+        return tippe_cli_usage_error(
+            VERB, "the sweep Z2 = %g .. %g mm is empty (the stated travel is %g .. %g mm)",
+            a->from, a->to, tf, tt);
+    return 0;
+}
 
-    if (vary) {
-        tippe_sweep_vary_result v;
-        rc = tippe_sweep_vary(path, sets.item, sets.n, field, vfrom, vto, vsteps, from, to, NULL,
-                              &v, &err);
-        if (!rc && plot)
-            rc = tippe_sweep_plot_vary(plot, &v, field, tippe_design_name(d), &err);
-        if (!rc) {
-            if (json)
-                rc = tippe_cli_print_json(VERB, vary_json(d, &v, field));
-            else
-                print_vary_table(d, &v, field);
+static int sweep_vary_run(const sweep_args *a, const tippe_design *d, const char *title)
+{
+    tippe_error err = {0};
+    tippe_sweep_vary_result v;
+    int rc = tippe_sweep_vary(a->design, a->sets.item, a->sets.n, a->field, a->vfrom, a->vto,
+                              a->vsteps, a->from, a->to, NULL, &v, &err);
+    if (!rc && a->plot)
+        rc = tippe_sweep_plot_vary(a->plot, &v, a->field, title, &err);
+    if (!rc) {
+        if (a->json) {
+            cJSON *o = vary_json(d, &v, a->field);
+            if (o)
+                tippe_cli_json_sets(o, &a->sets);
+            rc = tippe_cli_print_json(VERB, o);
         } else {
-            rc = tippe_cli_fail(VERB, &err, rc);
+            print_vary_table(d, &v, a->field, &a->sets);
         }
-        tippe_sweep_vary_free(&v);
-        tippe_design_free(d);
-        return rc;
+    } else {
+        rc = tippe_cli_fail(VERB, &err, rc);
     }
+    tippe_sweep_vary_free(&v);
+    return rc;
+}
 
+static int sweep_run(const sweep_args *a, const tippe_design *d, const char *title)
+{
+    tippe_error err = {0};
     tippe_sweep_result r;
     tippe_sweep_bands_result b = {0};
-    rc = tippe_sweep_design(d, from, to, NULL, &r, &err);
+    int rc = tippe_sweep_design(d, a->from, a->to, NULL, &r, &err);
     if (!rc)
         rc = tippe_sweep_bands(d, &r, &b, &err);
     tippe_sweep_path p = tippe_sweep_design_path(d);
-    if (!rc && plot)
-        rc = tippe_sweep_plot_zones_banded(plot, &p, &r, &b, tippe_design_name(d), &err);
-    if (!rc && phase) /* one set with the plot (tippe_cli_run): both or neither */
-        rc = tippe_sweep_plot_phase(phase, &p, &r, tippe_design_name(d), &err);
+    if (!rc && a->plot)
+        rc = tippe_sweep_plot_zones_banded(a->plot, &p, &r, &b, title, &err);
+    if (!rc && a->phase) /* one set with the plot (tippe_cli_run): both or neither */
+        rc = tippe_sweep_plot_phase(a->phase, &p, &r, title, &err);
     if (rc) {
         rc = tippe_cli_fail(VERB, &err, rc);
-    } else if (json) {
+    } else if (a->json) {
         cJSON *o = tippe_sweep_json(&r, d);
         if (o && tippe_sweep_json_add_bands(o, d, &r, &b)) {
             cJSON_Delete(o);
             o = NULL;
         }
+        if (o)
+            tippe_cli_json_sets(o, &a->sets);
         rc = tippe_cli_print_json(VERB, o);
     } else {
+        char sets[1024];
+        if (a->sets.n) /* first, so that the design line below reads as the variant */
+            printf("changes  %s\n", tippe_cli_sets_text(&a->sets, sets, sizeof sets));
         tippe_sweep_print_table(stdout, &r, d);
         tippe_sweep_print_bands(stdout, d, &r, &b);
     }
     tippe_sweep_bands_free(&b);
     tippe_sweep_result_free(&r);
+    return rc;
+}
+
+int tippe_cli_sweep(int argc, char **argv)
+{
+    sweep_args a = {.from = 0.0};
+    int rc = sweep_parse(&a, argc, argv);
+    if (rc)
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
+    tippe_error err = {0};
+    tippe_design *d = NULL;
+    rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err);
+    if (rc)
+        return tippe_cli_fail(VERB, &err, rc);
+    /* the plots' titles name the variant, not only the file's design */
+    char title[1024], sets[900];
+    snprintf(title, sizeof title, "%s%s%s", tippe_design_name(d), a.sets.n ? " with " : "",
+             tippe_cli_sets_text(&a.sets, sets, sizeof sets));
+    rc = sweep_ends(&a, d);
+    if (!rc)
+        rc = a.vary ? sweep_vary_run(&a, d, title) : sweep_run(&a, d, title);
     tippe_design_free(d);
     return rc;
 }

@@ -1,0 +1,185 @@
+/* tippe check: one central hand launch at one Z2 beside the calculator's zone
+ * and theory's prediction. */
+#include "hands.h"
+
+#include "tippe/theory.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+
+static int check_parse(hands_args *a, int argc, char **argv)
+{
+    tippe_cli_opt own[] = {
+        {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &a->z2_mm, .arg = "MM", .unit = "mm",
+         .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM, .required = 1,
+         .help = "position of the moving weight's midpoint (in the design's travel)"},
+        {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = &a->spin.from, .arg = "RATE",
+         .unit = "rad/s", .min = 0, .max = HANDS_SPIN_MAX_RAD_S, .def = "15rev/s",
+         .help = "launch spin (the default is the middle of tippe launch's range)"},
+        {NULL},
+    };
+    hands_verb v = {
+        .spec = {.verb = "check",
+                 .synopsis = "DESIGN.json --z2 MM [--spin RATE] [--json] [options]",
+                 .about = "One realistic hand launch of the design's top with the weight at Z2:\n"
+                          "the central values of tippe launch's distributions (the median tilt,\n"
+                          "steady precession, no sliding) at the given spin, integrated to its\n"
+                          "outcome. Prints the outcome beside the zone the calculator (tippe\n"
+                          "sweep) puts Z2 in and Theorem 5.1's prediction for the launch's\n"
+                          "Jellett invariant.",
+                 .after = "--tilt is the scale of the hand-launch distribution; the launch uses\n"
+                          "its median, 0.674 SD. Exit status: 0 ok (whatever the outcome), 2 bad\n"
+                          "usage or design, 1 the launch could not be computed."},
+        .own = own,
+    };
+    return hands_parse(&v, a, argc, argv);
+}
+
+/* One check's result: the launch and the calculator's zone for its Z2. */
+typedef struct {
+    const tippe_design *d;
+    tippe_top top;
+    tippe_dynamics_initial ic;
+    tippe_launch_record rec;
+    hands_zone zone;
+} check_result;
+
+static cJSON *theory_json(const hands_args *a, const check_result *r)
+{
+    cJSON *th = hands_json_theory(&r->top, a->o.g, &r->zone, NULL);
+    if (!th)
+        return NULL;
+    if (r->rec.theory_ok) {
+        cJSON_AddStringToObject(th, "prediction", tippe_launch_predicted_name(r->rec.predicted));
+        if (isfinite(r->rec.hang_theta_rad))
+            cJSON_AddNumberToObject(th, "hang_theta_rad", r->rec.hang_theta_rad);
+    } else {
+        cJSON_AddNullToObject(th, "prediction");
+    }
+    if (r->rec.agrees < 0)
+        cJSON_AddNullToObject(th, "agrees");
+    else
+        cJSON_AddBoolToObject(th, "agrees", r->rec.agrees);
+    return th;
+}
+
+/* How the verdict was reached (docs/dynamics.md, "Proved verdicts"). */
+static void add_decision_json(cJSON *o, const tippe_launch_record *rec)
+{
+    cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(rec->how));
+    if (rec->how == TIPPE_DECIDED_TRAPPED) {
+        cJSON_AddNumberToObject(o, "margin_J", rec->margin_J);
+        if (isfinite(rec->barrier_gap_J))
+            cJSON_AddNumberToObject(o, "barrier_gap_J", rec->barrier_gap_J);
+        else
+            cJSON_AddNullToObject(o, "barrier_gap_J");
+    }
+    if (isfinite(rec->t_flip_s))
+        cJSON_AddNumberToObject(o, "t_flip_s", rec->t_flip_s);
+    else
+        cJSON_AddNullToObject(o, "t_flip_s");
+}
+
+static int check_json(const hands_args *a, const check_result *r)
+{
+    const tippe_dynamics_initial *ic = &r->ic;
+    const tippe_launch_record *rec = &r->rec;
+    cJSON *o = cJSON_CreateObject();
+    if (o) {
+        cJSON_AddStringToObject(o, "design", tippe_design_name(r->d));
+        cJSON_AddStringToObject(o, "file", tippe_design_path(r->d));
+        tippe_cli_json_sets(o, &a->sets);
+        cJSON_AddNumberToObject(o, "z2_mm", a->z2_mm);
+        cJSON *ini = cJSON_AddObjectToObject(o, "initial");
+        if (ini) {
+            cJSON_AddNumberToObject(ini, "theta_rad", ic->theta);
+            cJSON_AddNumberToObject(ini, "phi_dot_rad_s", ic->phi_dot);
+            cJSON_AddStringToObject(ini, "phi_dot_rule", "steady");
+            cJSON_AddNumberToObject(ini, "spin_rad_s", ic->spin);
+            cJSON_AddNumberToObject(ini, "U_m_s", ic->U);
+            cJSON_AddNumberToObject(ini, "V_m_s", ic->V);
+        }
+        cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(rec->verdict));
+        cJSON_AddNumberToObject(o, "t_s", rec->t_s);
+        add_decision_json(o, rec);
+        cJSON_AddNumberToObject(o, "theta_final_rad", rec->theta_final_rad);
+        cJSON_AddNumberToObject(o, "spin_final_rad_s", rec->spin_final_rad_s);
+        cJSON_AddNumberToObject(o, "J0_kg_m3_s", rec->J0);
+        cJSON_AddNumberToObject(o, "jellett_rel_drift", rec->jellett_rel_drift);
+        cJSON_AddItemToObject(o, "options", hands_json_options(&a->o, 1));
+        cJSON_AddItemToObject(o, "theory", theory_json(a, r));
+    }
+    return tippe_cli_print_json(a->verb, o);
+}
+
+static void check_text(const hands_args *a, const check_result *r)
+{
+    const tippe_dynamics_initial *ic = &r->ic;
+    const tippe_launch_record *rec = &r->rec;
+    hands_print_top(r->d, a->z2_mm, &r->top, a->o.g, &r->zone);
+    char sets[1024];
+    if (a->sets.n)
+        printf("changes    %s\n", tippe_cli_sets_text(&a->sets, sets, sizeof sets));
+    printf("launch     spin %.4g rad/s (%.3g rev/s), tilt %.4g rad (%.2f deg), steady "
+           "precession %.4g rad/s, no sliding\n",
+           ic->spin, ic->spin / (2 * M_PI), ic->theta, ic->theta * 180 / M_PI, ic->phi_dot);
+    hands_print_model(&a->o);
+    printf("\nverdict    %s: ends at theta %.4f rad (%.1f deg), spin %.4g rad/s\n",
+           tippe_verdict_name(rec->verdict), rec->theta_final_rad,
+           rec->theta_final_rad * 180 / M_PI, rec->spin_final_rad_s);
+    printf("           decided by %s at t = %.4g s", tippe_decision_name(rec->how), rec->t_s);
+    if (rec->how == TIPPE_DECIDED_TRAPPED)
+        printf(" (energy %.3g J below the well's barrier, margin %.3g J)", rec->barrier_gap_J,
+               rec->margin_J);
+    printf("\n");
+    if (isfinite(rec->t_flip_s))
+        printf("flip       theta passed 90 deg at t = %.4g s of model time (mu = %g s/m)\n",
+               rec->t_flip_s, a->o.mu);
+    tippe_theory_class cls;
+    tippe_theory_classify(r->top.A / r->top.C, r->top.eps / r->top.R, &cls);
+    const tippe_group g = r->zone.ok ? r->zone.group : cls.group;
+    printf("calculator zone %s at Z2 = %g mm (%s)\n", tippe_group_name(g), a->z2_mm,
+           hands_group_meaning(g));
+    if (rec->theory_ok) {
+        printf("theory     Theorem 5.1 for J0 = %.4g kg m^3/s: %s", rec->J0,
+               tippe_launch_predicted_name(rec->predicted));
+        if (isfinite(rec->hang_theta_rad))
+            printf(" (hang at %.4f rad, %.1f deg)", rec->hang_theta_rad,
+                   rec->hang_theta_rad * 180 / M_PI);
+        printf(" -> %s\n", rec->agrees > 0    ? "agrees"
+                           : rec->agrees == 0 ? "DISAGREES"
+                                              : "not comparable");
+    } else {
+        printf("theory     no prediction for J0 = %.4g kg m^3/s\n", rec->J0);
+    }
+    printf("accuracy   Jellett drift %.2g, %ld RHS evaluations\n", rec->jellett_rel_drift,
+           rec->rhs_evals);
+}
+
+int tippe_cli_check(int argc, char **argv)
+{
+    hands_args a = {.verb = "check", .spin = {2 * M_PI * 15.0, 0, 0}};
+    tippe_launch_options_default(&a.o);
+    int rc = check_parse(&a, argc, argv);
+    if (rc)
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
+    tippe_error err;
+    tippe_design *d = NULL;
+    if ((rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err)) != 0)
+        return tippe_cli_fail(a.verb, &err, rc);
+    check_result r = {.d = d};
+    if ((rc = tippe_design_top(d, a.z2_mm, &r.top, &err)) != 0 ||
+        (rc = tippe_launch_central(&r.top, &a.o, a.spin.from, &r.ic, &err)) != 0 ||
+        (rc = tippe_launch_run_initial(&r.top, &a.o, &r.ic, &r.rec, &err)) != 0) {
+        tippe_design_free(d);
+        return tippe_cli_fail(a.verb, &err, rc);
+    }
+    hands_find_zone(d, a.z2_mm, &r.zone);
+    if (a.json)
+        rc = check_json(&a, &r);
+    else
+        check_text(&a, &r);
+    tippe_design_free(d);
+    return rc;
+}

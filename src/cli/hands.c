@@ -1,0 +1,334 @@
+/* What tippe launch, map and check share (see hands.h): their options, and the
+ * words and JSON in which they describe the top, the launches and theory. */
+#include "hands.h"
+
+#include "tippe/sweep.h"
+#include "tippe/theory.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <string.h>
+
+const char *const hands_verdict_names[TIPPE_LAUNCH_N_VERDICTS] = {
+    "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded"};
+
+/* Largest --seed: seeds go into JSON as numbers, exact up to 2^53. */
+#define SEED_MAX 9007199254740991.0
+
+enum { MAX_HAND_OPTS = 40 };
+
+/* The options every hand-launch verb reads: the model and the integrator. */
+static int model_options(hands_args *a, tippe_cli_opt *t)
+{
+    tippe_launch_options *o = &a->o;
+    tippe_cli_opt m[] = {
+        {.name = "tilt", .kind = TIPPE_CLI_DOUBLE, .value = &o->tilt_sd_rad, .arg = "SD",
+         .unit = "rad", .min = 0, .max = 0.7, .def = "0.1",
+         .help = "tilt at launch: half-normal with scale SD (at most half of --tilt-max)"},
+        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu, .unit = "s/m", .min = 0,
+         .max = 1e6, .def = "0.1", .help = "viscous sliding friction (eq 3.12)"},
+        {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &o->g, .unit = "m/s^2", .min = 0.01,
+         .max = 1000, .def = "9.81", .help = "gravity"},
+        {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &o->t_end, .unit = "s",
+         .min = 1e-3, .max = 1e6, .def = "600", .help = "longest simulated time of one launch"},
+        {.name = "accuracy", .kind = TIPPE_CLI_STRING, .value = &a->accuracy, .arg = "PRESET",
+         .def = "balanced", .help = "integrator preset: fast, balanced or precise"},
+        {.name = "stepper", .kind = TIPPE_CLI_STRING, .value = &a->stepper, .arg = "NAME",
+         .help = "a GSL stepper instead of the preset's: rk2, rk4, rkf45, rkck, rk8pd,\n"
+                 "rk1imp, rk2imp, rk4imp, bsimp, msadams, msbdf"},
+        {.name = "rtol", .kind = TIPPE_CLI_DOUBLE, .value = &o->accuracy.rtol, .min = 1e-14,
+         .max = 1e-2, .help = "relative tolerance instead of the preset's"},
+        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
+         .help = "change a field of the design (repeatable), e.g. --set radius_mm=30"},
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
+         .help = "print one JSON object (SI units) instead of the text"},
+    };
+    const int n = (int)(sizeof m / sizeof m[0]);
+    memcpy(t, m, sizeof m);
+    return n;
+}
+
+/* The options of the drawn hand launches (launch and map). */
+static int distribution_options(hands_args *a, tippe_cli_opt *t)
+{
+    tippe_launch_options *o = &a->o;
+    tippe_cli_opt m[] = {
+        {.name = "seed", .kind = TIPPE_CLI_LONG, .value = &a->seed, .arg = "S", .min = 0,
+         .max = SEED_MAX, .def = "1",
+         .help = "random seed: the same seed gives the same launches and counts on\n"
+                 "any number of threads or ranks"},
+        {.name = "tilt-max", .kind = TIPPE_CLI_DOUBLE, .value = &o->tilt_max_rad, .arg = "MAX",
+         .unit = "rad", .min = 1e-3, .max = 1.4, .def = "1",
+         .help = "tilts above MAX are drawn again"},
+        {.name = "precession-rel", .kind = TIPPE_CLI_DOUBLE, .value = &o->precession_sd_rel,
+         .arg = "SD", .min = 0, .max = 1, .def = "0.1",
+         .help = "precession = steady rate x (1 + SD N(0,1))"},
+        {.name = "slide", .kind = TIPPE_CLI_DOUBLE, .value = &o->slide_sd_m_s, .arg = "SD",
+         .unit = "m/s", .min = 0, .max = 10, .def = "0.05",
+         .help = "sliding speed: half-normal with scale SD, random direction"},
+        {.name = "threads", .kind = TIPPE_CLI_LONG, .value = &a->threads, .arg = "N", .min = 1,
+         .max = 4096, .help = "OpenMP threads (default: OMP_NUM_THREADS or all cores)"},
+    };
+    const int n = (int)(sizeof m / sizeof m[0]);
+    memcpy(t, m, sizeof m);
+    return n;
+}
+
+/* --accuracy, --stepper and --rtol into a->o: 0, or 2 after a usage error. */
+static int apply_accuracy(hands_args *a, const tippe_cli_spec *spec)
+{
+    tippe_launch_options *o = &a->o;
+    const double rtol = o->accuracy.rtol; /* --rtol, if given, wins over the preset's */
+    tippe_error e;
+    if (a->accuracy) {
+        if (tippe_dynamics_accuracy_preset(a->accuracy, &o->accuracy, &e))
+            return tippe_cli_usage_error(a->verb, "--accuracy: %s", e.msg);
+        snprintf(o->accuracy_name, sizeof o->accuracy_name, "%s", a->accuracy);
+    }
+    if (a->stepper) {
+        if (!tippe_dynamics_stepper_known(a->stepper) ||
+            strlen(a->stepper) >= sizeof o->accuracy.stepper)
+            return tippe_cli_usage_error(a->verb, "--stepper '%s': unknown (see tippe %s --help)",
+                                         a->stepper, a->verb);
+        snprintf(o->accuracy.stepper, sizeof o->accuracy.stepper, "%s", a->stepper);
+        snprintf(o->accuracy_name, sizeof o->accuracy_name, "custom");
+    }
+    const tippe_cli_opt *r = tippe_cli_find_opt((tippe_cli_spec *)spec, "rtol");
+    if (r && r->seen) {
+        o->accuracy.rtol = rtol;
+        snprintf(o->accuracy_name, sizeof o->accuracy_name, "custom");
+    }
+    return 0;
+}
+
+int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
+{
+    tippe_cli_opt opts[MAX_HAND_OPTS];
+    int n = 0;
+    for (const tippe_cli_opt *o = v->own; o->name && n < MAX_HAND_OPTS; o++)
+        opts[n++] = *o;
+    if (n + 16 >= MAX_HAND_OPTS)
+        return tippe_cli_usage_error(a->verb, "internal error: too many options");
+    n += model_options(a, opts + n);
+    if (v->distribution)
+        n += distribution_options(a, opts + n);
+    opts[n] = (tippe_cli_opt){NULL};
+    v->spec.opts = opts;
+    v->spec.min_args = v->spec.max_args = 1;
+    v->spec.args_name = "design file";
+    v->spec.quiet_help = hands_mpi_rank() != 0; /* one --help, not one per rank */
+    int rc = tippe_cli_parse(&v->spec, argc, argv, &a->design, &(int){0});
+    if (!rc)
+        rc = apply_accuracy(a, &v->spec);
+    tippe_error e;
+    if (!rc && tippe_launch_options_check(&a->o, &e))
+        rc = tippe_cli_usage_error(a->verb, "%s", e.msg);
+    if (!rc && a->threads > 0)
+        omp_set_num_threads((int)a->threads);
+    v->spec.opts = NULL; /* opts lives on this stack frame */
+    return rc;
+}
+
+void hands_find_zone(const tippe_design *d, double z2, hands_zone *z)
+{
+    memset(z, 0, sizeof *z);
+    tippe_sweep_result r;
+    tippe_error e;
+    if (tippe_sweep_design(d, 0.0, 0.0, NULL, &r, &e) == TIPPE_OK)
+        for (int i = 0; i < r.n_zones; i++)
+            if (z2 >= r.zones[i].z2_from_mm && z2 <= r.zones[i].z2_to_mm) {
+                z->ok = 1;
+                z->group = r.zones[i].group;
+                z->from_mm = r.zones[i].z2_from_mm;
+                z->to_mm = r.zones[i].z2_to_mm;
+                break;
+            }
+    tippe_sweep_result_free(&r);
+}
+
+const char *hands_group_meaning(tippe_group g)
+{
+    switch (g) {
+    case TIPPE_GROUP_IA:
+    case TIPPE_GROUP_IB: return "theta = 0 stable at every spin: no tipping";
+    case TIPPE_GROUP_IIA: return "tips at high spin; the hanging branch folds";
+    case TIPPE_GROUP_IIB: return "tips at high spin, hangs at moderate spin";
+    case TIPPE_GROUP_IIC: return "tips completely above n-";
+    case TIPPE_GROUP_III: return "theta = pi never stable: hangs at high spin";
+    }
+    return "";
+}
+
+void hands_print_top(const tippe_design *d, double z2, const tippe_top *t, double g,
+                      const hands_zone *z)
+{
+    tippe_theory_class cls;
+    tippe_theory_classify(t->A / t->C, t->eps / t->R, &cls);
+    printf("design     %s (%s) at Z2 = %g mm\n", tippe_design_name(d), tippe_design_path(d), z2);
+    printf("top        m %.2f g, R %.2f mm, eps %.3f mm, A/C %.5f, eps/R %.5f: group %s (%s)\n",
+           1e3 * t->m, 1e3 * t->R, 1e3 * t->eps, t->A / t->C, t->eps / t->R,
+           tippe_group_name(cls.group), hands_group_meaning(cls.group));
+    if (z->ok)
+        printf("zone       %s from %.3f to %.3f mm along the stated travel (tippe sweep)\n",
+               tippe_group_name(z->group), z->from_mm, z->to_mm);
+    tippe_theory_thresholds th;
+    tippe_error e;
+    if (tippe_theory_compute_thresholds(t, g, &th, &e) == TIPPE_OK) {
+        printf("thresholds");
+        if (th.has_n_minus)
+            printf(" n- %.4g rad/s = %.2f rev/s (theta = 0 unstable above);", th.n_minus_rad_s,
+                   th.n_minus_rad_s / (2 * M_PI));
+        else
+            printf(" n- none (theta = 0 stable at every spin);");
+        if (th.has_n_star)
+            printf(" n* %.4g rad/s = %.2f rev/s (theta = pi stable above, from theta = 0)\n",
+                   th.n_star_rad_s, th.n_star_rad_s / (2 * M_PI));
+        else
+            printf(" n* none (theta = pi never stable)\n");
+    }
+}
+
+void hands_print_distribution(const tippe_launch_options *o, int fixed_spin)
+{
+    if (!fixed_spin)
+        printf("hands      spin uniform %.4g .. %.4g rad/s (%g .. %g rev/s); ",
+               2 * M_PI * o->spin_from_rev_s, 2 * M_PI * o->spin_to_rev_s, o->spin_from_rev_s,
+               o->spin_to_rev_s);
+    else
+        printf("hands      spin fixed per cell; ");
+    printf("tilt half-normal, scale %g rad (redrawn above %g rad); precession steady x (1 + %g "
+           "N(0,1)); sliding half-normal, scale %g m/s, random direction\n",
+           o->tilt_sd_rad, o->tilt_max_rad, o->precession_sd_rel, o->slide_sd_m_s);
+}
+
+void hands_print_model(const tippe_launch_options *o)
+{
+    printf("model      mu %g s/m (viscous sliding, eq 3.12), g %g m/s^2, t_end %g s, accuracy %s "
+           "(%s, rtol %g), verdict level\n",
+           o->mu, o->g, o->t_end, o->accuracy_name, o->accuracy.stepper, o->accuracy.rtol);
+}
+
+cJSON *hands_json_options(const tippe_launch_options *o, int fixed_spin)
+{
+    cJSON *d = cJSON_CreateObject();
+    if (!d)
+        return NULL;
+    if (!fixed_spin) {
+        double sp[2] = {2 * M_PI * o->spin_from_rev_s, 2 * M_PI * o->spin_to_rev_s};
+        cJSON_AddItemToObject(d, "spin_uniform_rad_s", cJSON_CreateDoubleArray(sp, 2));
+    }
+    cJSON_AddNumberToObject(d, "tilt_half_normal_scale_rad", o->tilt_sd_rad);
+    cJSON_AddNumberToObject(d, "tilt_max_rad", o->tilt_max_rad);
+    cJSON_AddNumberToObject(d, "precession_rel_sd", o->precession_sd_rel);
+    cJSON_AddNumberToObject(d, "slide_half_normal_scale_m_s", o->slide_sd_m_s);
+    cJSON_AddNumberToObject(d, "mu_s_m", o->mu);
+    cJSON_AddNumberToObject(d, "g_m_s2", o->g);
+    cJSON_AddNumberToObject(d, "t_end_s", o->t_end);
+    tippe_cli_json_accuracy(d, o->accuracy_name, &o->accuracy);
+    return d;
+}
+
+static cJSON *json_counts(const tippe_launch_tally *t)
+{
+    cJSON *c = cJSON_CreateObject();
+    for (int v = 0; c && v < TIPPE_LAUNCH_N_VERDICTS; v++)
+        cJSON_AddNumberToObject(c, hands_verdict_names[v], (double)t->counts[v]);
+    return c;
+}
+
+cJSON *hands_json_tally(const tippe_launch_tally *t)
+{
+    cJSON *o = cJSON_CreateObject();
+    if (!o)
+        return NULL;
+    cJSON_AddNumberToObject(o, "n", (double)t->n);
+    cJSON_AddItemToObject(o, "counts", json_counts(t));
+    cJSON_AddNumberToObject(o, "flips", (double)t->flips);
+    if (t->flips)
+        cJSON_AddNumberToObject(o, "median_t_flip_s", t->median_t_flip_s);
+    else
+        cJSON_AddNullToObject(o, "median_t_flip_s");
+    if (isfinite(t->min_gap_over_margin))
+        cJSON_AddNumberToObject(o, "min_gap_over_margin", t->min_gap_over_margin);
+    else
+        cJSON_AddNullToObject(o, "min_gap_over_margin");
+    cJSON *fr = cJSON_AddObjectToObject(o, "fractions");
+    cJSON *ci = cJSON_AddObjectToObject(o, "ci95");
+    cJSON *mt = cJSON_AddObjectToObject(o, "median_theta_final_rad");
+    cJSON *ms = cJSON_AddObjectToObject(o, "median_t_s");
+    for (int v = 0; v < TIPPE_LAUNCH_N_VERDICTS; v++) {
+        double lo, hi;
+        tippe_launch_wilson(t->counts[v], t->n, TIPPE_LAUNCH_Z95, &lo, &hi);
+        double b[2] = {lo, hi};
+        if (fr)
+            cJSON_AddNumberToObject(fr, hands_verdict_names[v],
+                                    t->n ? (double)t->counts[v] / (double)t->n : 0.0);
+        if (ci)
+            cJSON_AddItemToObject(ci, hands_verdict_names[v], cJSON_CreateDoubleArray(b, 2));
+        if (mt) {
+            if (t->counts[v])
+                cJSON_AddNumberToObject(mt, hands_verdict_names[v], t->median_theta_rad[v]);
+            else
+                cJSON_AddNullToObject(mt, hands_verdict_names[v]);
+        }
+        if (ms) {
+            if (t->counts[v])
+                cJSON_AddNumberToObject(ms, hands_verdict_names[v], t->median_t_s[v]);
+            else
+                cJSON_AddNullToObject(ms, hands_verdict_names[v]);
+        }
+    }
+    return o;
+}
+
+cJSON *hands_json_theory(const tippe_top *t, double g, const hands_zone *z,
+                          const tippe_launch_tally *tl)
+{
+    cJSON *o = cJSON_CreateObject();
+    if (!o)
+        return NULL;
+    tippe_theory_class cls;
+    tippe_theory_classify(t->A / t->C, t->eps / t->R, &cls);
+    cJSON_AddStringToObject(o, "group", tippe_group_family(cls.group));
+    cJSON_AddStringToObject(o, "subgroup", tippe_group_name(cls.group));
+    cJSON_AddNumberToObject(o, "A_over_C", t->A / t->C);
+    cJSON_AddNumberToObject(o, "eps_over_R", t->eps / t->R);
+    if (z->ok) {
+        double b[2] = {z->from_mm, z->to_mm};
+        cJSON_AddItemToObject(o, "zone_mm", cJSON_CreateDoubleArray(b, 2));
+    } else {
+        cJSON_AddNullToObject(o, "zone_mm");
+    }
+    tippe_theory_thresholds th;
+    tippe_error e;
+    if (tippe_theory_compute_thresholds(t, g, &th, &e) == TIPPE_OK) {
+        if (th.has_n_minus)
+            cJSON_AddNumberToObject(o, "n_minus_rad_s", th.n_minus_rad_s);
+        else
+            cJSON_AddNullToObject(o, "n_minus_rad_s");
+        if (th.has_n_star)
+            cJSON_AddNumberToObject(o, "n_star_rad_s", th.n_star_rad_s);
+        else
+            cJSON_AddNullToObject(o, "n_star_rad_s");
+    }
+    if (tl) {
+        cJSON *p = cJSON_AddObjectToObject(o, "predicted");
+        for (unsigned m = 0; p && m < 8; m++)
+            if (tl->predicted[m])
+                cJSON_AddNumberToObject(p, tippe_launch_predicted_name(m), (double)tl->predicted[m]);
+        cJSON_AddNumberToObject(o, "agree", (double)tl->agree);
+        cJSON_AddNumberToObject(o, "comparable", (double)tl->comparable);
+        double lo, hi;
+        tippe_launch_wilson(tl->agree, tl->comparable, TIPPE_LAUNCH_Z95, &lo, &hi);
+        if (tl->comparable)
+            cJSON_AddNumberToObject(o, "agreement", (double)tl->agree / (double)tl->comparable);
+        else
+            cJSON_AddNullToObject(o, "agreement");
+        double b[2] = {lo, hi};
+        cJSON_AddItemToObject(o, "agreement_ci95", cJSON_CreateDoubleArray(b, 2));
+        cJSON_AddNumberToObject(o, "hang_tolerance_rad", TIPPE_LAUNCH_HANG_AGREE_RAD);
+    }
+    return o;
+}

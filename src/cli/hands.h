@@ -1,0 +1,83 @@
+/* What the hand-launch verbs share (private to src/cli): tippe launch
+ * (launch.c), tippe map (map.c) and tippe check (check.c) read the same
+ * options, describe the top and the launch model in the same words, and run
+ * their launches through hands_run_plan (mpi.c), which shares them among MPI
+ * ranks in tippe-mpi. */
+#ifndef TIPPE_CLI_HANDS_H
+#define TIPPE_CLI_HANDS_H
+
+#include "cli.h"
+
+#include "tippe/design.h"
+#include "tippe/launch.h"
+#include "tippe/progress.h"
+
+#include <stdint.h>
+
+struct cJSON;
+
+/* Largest launch spin any verb accepts, rad/s (1592 rev/s: ten times what a
+ * hand or a launcher gives a tippe top). */
+#define HANDS_SPIN_MAX_RAD_S 1e4
+
+/* The options of a hand-launch verb, filled by hands_parse. */
+typedef struct {
+    const char *verb;          /* "launch", "map", "check" */
+    const char *design;        /* the design file */
+    double z2_mm;              /* launch, check: --z2 */
+    tippe_cli_range z2_range;  /* map: --z2 FROM:TO:STEPS, mm */
+    tippe_cli_range spin;      /* --spin, rad/s: launch FROM:TO, map FROM:TO:STEPS,
+                                * check one value (from = to) */
+    long n, threads, seed;
+    int json;
+    const char *csv, *plot, *accuracy, *stepper;
+    tippe_launch_options o;    /* the distributions and the model */
+    tippe_cli_sets sets;       /* --set */
+} hands_args;
+
+/* The verbs and their own options: appended to the shared ones by hands_parse. */
+typedef struct {
+    tippe_cli_spec spec;      /* verb, synopsis, about, after (opts are made here) */
+    tippe_cli_opt *own;       /* the verb's own options, ending with {NULL} */
+    int distribution;         /* 1: the hand-launch distribution options too */
+} hands_verb;
+
+/* Parses argv for v into a (whose verb, n and spin defaults the caller set):
+ * 0, TIPPE_CLI_HELP after --help (printed by rank 0 only), or 2. */
+int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv);
+
+/* The zone of the design's sweep that contains z2 (over the stated travel). */
+typedef struct {
+    int ok;
+    tippe_group group;
+    double from_mm, to_mm;
+} hands_zone;
+void hands_find_zone(const tippe_design *d, double z2, hands_zone *z);
+const char *hands_group_meaning(tippe_group g);
+
+/* The text lines: the top at z2 (with its zone and thresholds), the launch
+ * distribution (fixed_spin: the spin is not drawn) and the model. */
+void hands_print_top(const tippe_design *d, double z2, const tippe_top *t, double g,
+                     const hands_zone *z);
+void hands_print_distribution(const tippe_launch_options *o, int fixed_spin);
+void hands_print_model(const tippe_launch_options *o);
+
+/* The JSON pieces: the options, one tally, and theory beside a tally (tl may be NULL). */
+struct cJSON *hands_json_options(const tippe_launch_options *o, int fixed_spin);
+struct cJSON *hands_json_tally(const tippe_launch_tally *t);
+struct cJSON *hands_json_theory(const tippe_top *t, double g, const hands_zone *z,
+                                const tippe_launch_tally *tl);
+
+extern const char *const hands_verdict_names[TIPPE_LAUNCH_N_VERDICTS];
+
+/* ---- ranks (mpi.c): 0 and 1 without MPI ---- */
+int hands_mpi_rank(void);
+int hands_mpi_size(void);
+/* The worst status of all ranks, so that no rank waits for work that will not come. */
+int hands_mpi_agree(int status);
+/* Runs every launch of the plan into rec (on rank 0; other ranks only help).
+ * Returns the error of the lowest-numbered failed launch, if any. */
+int hands_run_plan(const tippe_launch_plan *plan, const tippe_launch_options *o, uint64_t seed,
+                   tippe_launch_record *rec, tippe_progress *prog, tippe_error *err);
+
+#endif
