@@ -9,6 +9,7 @@
 #include "tippe/optimise.h"
 #include "tippe/json.h"
 #include "tippe/sweep.h"
+#include "tippe/sweep_bands.h"
 #include "tippe/theory.h"
 
 #include <cjson/cJSON.h>
@@ -157,6 +158,19 @@ static double design_number(const cJSON *root, const char *path)
     return cJSON_IsNumber(v) ? v->valuedouble : NAN;
 }
 
+/* The JSON path of entry v of section ("vary.parts.hole.z_mm") into p; refuses
+ * one entry too many (n of max) and a key that is not a field path. */
+static int entry_path(tippe_json_reader *c, const char *section, const cJSON *v, int n, int max,
+                      const char *what, char *p, size_t cap)
+{
+    tippe_json_path(p, cap, section, v->string);
+    if (n == max)
+        return tippe_json_fail(c, p, "at most %d %s", max, what);
+    if (strlen(v->string) >= TIPPE_OPT_PATH_LEN || strchr(v->string, '='))
+        return tippe_json_fail(c, p, "not a field path");
+    return TIPPE_OK;
+}
+
 static int parse_vary(tippe_json_reader *c, const cJSON *vary, tippe_opt_spec *s)
 {
     if (!vary)
@@ -165,11 +179,10 @@ static int parse_vary(tippe_json_reader *c, const cJSON *vary, tippe_opt_spec *s
         return tippe_json_wrong_type(c, "vary", "an object {FIELD: [from, to]}", vary);
     for (const cJSON *v = vary->child; v; v = v->next) {
         char p[256];
-        tippe_json_path(p, sizeof p, "vary", v->string);
-        if (s->n_vary == TIPPE_OPT_MAX_VARY)
-            return tippe_json_fail(c, p, "at most %d continuous parameters", TIPPE_OPT_MAX_VARY);
-        if (strlen(v->string) >= TIPPE_OPT_PATH_LEN || strchr(v->string, '='))
-            return tippe_json_fail(c, p, "not a field path");
+        int rc = entry_path(c, "vary", v, s->n_vary, TIPPE_OPT_MAX_VARY,
+                            "continuous parameters", p, sizeof p);
+        if (rc)
+            return rc;
         if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != 2 ||
             !cJSON_IsNumber(cJSON_GetArrayItem(v, 0)) || !cJSON_IsNumber(cJSON_GetArrayItem(v, 1)))
             return tippe_json_wrong_type(c, p, "[from, to] (two numbers)", v);
@@ -258,10 +271,6 @@ static int catalogue_options(tippe_json_reader *c, const char *cpath, const cJSO
         snprintf(o->set[1], sizeof o->set[1], "%s.height_mm=%.17g", part_path, h);
         o->n_set = 2;
     }
-    if (!rc && n == 0) {
-        tippe_json_path(p, sizeof p, cpath, "items");
-        rc = tippe_json_fail(c, p, "names no item of catalogue '%s'", name);
-    }
     for (const cJSON *w = want ? want->child : NULL; !rc && w; w = w->next) {
         int found = 0;
         for (int k = 0; k < n; k++)
@@ -271,6 +280,10 @@ static int catalogue_options(tippe_json_reader *c, const char *cpath, const cJSO
             rc = tippe_json_fail(c, p, "'%s' is not an item of catalogue '%s'",
                                  cJSON_IsString(w) ? w->valuestring : "?", name);
         }
+    }
+    if (!rc && n == 0) {
+        tippe_json_path(p, sizeof p, cpath, "items");
+        rc = tippe_json_fail(c, p, "names no item of catalogue '%s'", name);
     }
     ch->n = n;
     cJSON_Delete(cat);
@@ -287,11 +300,10 @@ static int parse_choose(tippe_json_reader *c, const cJSON *choose, const char *c
         return tippe_json_wrong_type(c, "choose", "an object {FIELD: [options]}", choose);
     for (const cJSON *v = choose->child; v; v = v->next) {
         char p[256];
-        tippe_json_path(p, sizeof p, "choose", v->string);
-        if (s->n_choose == MAX_CHOOSE)
-            return tippe_json_fail(c, p, "at most %d discrete choices", MAX_CHOOSE);
-        if (strlen(v->string) >= TIPPE_OPT_PATH_LEN || strchr(v->string, '='))
-            return tippe_json_fail(c, p, "not a field path");
+        int rc = entry_path(c, "choose", v, s->n_choose, MAX_CHOOSE, "discrete choices", p,
+                            sizeof p);
+        if (rc)
+            return rc;
         choose_t *ch = &s->choose[s->n_choose++];
         snprintf(ch->path, sizeof ch->path, "%s", v->string);
         if (cJSON_IsObject(v)) {
@@ -299,7 +311,7 @@ static int parse_choose(tippe_json_reader *c, const cJSON *choose, const char *c
                 return tippe_json_fail(c, p, "a catalogue choice is keyed by a part "
                                              "(parts.NAME), whose radius_mm and height_mm "
                                              "each item sets");
-            int rc = catalogue_options(c, p, v, v->string, catalogue_file, ch);
+            rc = catalogue_options(c, p, v, v->string, catalogue_file, ch);
             if (rc)
                 return rc;
             continue;
@@ -341,17 +353,14 @@ static int parse_tie(tippe_json_reader *c, const cJSON *tie, const cJSON *design
         return tippe_json_wrong_type(c, "tie", "an object {FIELD: OTHER_FIELD}", tie);
     for (const cJSON *v = tie->child; v; v = v->next) {
         char p[256];
-        tippe_json_path(p, sizeof p, "tie", v->string);
-        if (s->n_tie == MAX_TIE)
-            return tippe_json_fail(c, p, "at most %d ties", MAX_TIE);
-        if (strlen(v->string) >= TIPPE_OPT_PATH_LEN || strchr(v->string, '='))
-            return tippe_json_fail(c, p, "not a field path");
+        int rc = entry_path(c, "tie", v, s->n_tie, MAX_TIE, "ties", p, sizeof p);
+        if (rc)
+            return rc;
         tie_t *t = &s->tie[s->n_tie++];
         snprintf(t->path, sizeof t->path, "%s", v->string);
         t->times = 1.0;
         t->plus_mm = 0.0;
         char follows[TIPPE_OPT_PATH_LEN] = "";
-        int rc;
         if (cJSON_IsString(v)) {
             snprintf(follows, sizeof follows, "%s", v->valuestring);
         } else if (cJSON_IsObject(v)) {
@@ -731,6 +740,21 @@ static double flip_spin_rev_s(const tippe_design *d, double from, double to)
     return worst;
 }
 
+/* The tolerance bands of the sweep's zone ends and the widths that survive
+ * them (tippe/sweep_bands.h); left unset if they cannot be computed. */
+static void robust_widths(const tippe_design *d, const tippe_sweep_result *r, tippe_opt_eval *out)
+{
+    tippe_sweep_bands_result b;
+    tippe_error e = {0};
+    if (tippe_sweep_bands(d, r, &b, &e) == TIPPE_OK) {
+        double narrow = 0.0;
+        tippe_sweep_robust_widths(r, &b, out->robust_zone_mm, &narrow);
+        out->robust_mm = out->objective_mm > 0 ? narrow : 0.0;
+        out->has_robust = 1;
+    }
+    tippe_sweep_bands_free(&b);
+}
+
 void tippe_opt_evaluate(const tippe_opt_spec *s, int choice, const double *x, int n_scan,
                         tippe_opt_eval *out)
 {
@@ -779,6 +803,8 @@ void tippe_opt_evaluate(const tippe_opt_spec *s, int choice, const double *x, in
         for (int k = 0; k < 3; k++)
             out->zone_mm[k] = sum.widest_mm[k];
         out->objective_mm = tippe_sweep_summary_three_zone_mm(&sum);
+        if (n_scan <= 0 && s->robust)
+            robust_widths(d, &r, out);
         double f = 0.0, t = 0.0;
         if (isfinite(s->spin_max_rev_s) && widest_ii_run(&r, &f, &t)) {
             out->spin_flip_rev_s = flip_spin_rev_s(d, f, t);
@@ -964,6 +990,18 @@ void tippe_opt_result_free(tippe_opt_result *r)
     memset(r, 0, sizeof *r);
 }
 
+/* Whether a ranks above b: feasible before infeasible, then by robust width
+ * where both have one, else by score. */
+int tippe_opt_rank_above(const tippe_opt_eval *a, const tippe_opt_eval *b)
+{
+    int fa = a->status == TIPPE_OPT_OK, fb = b->status == TIPPE_OPT_OK;
+    if (fa != fb)
+        return fa;
+    if (fa && a->has_robust && b->has_robust && a->robust_mm != b->robust_mm)
+        return a->robust_mm > b->robust_mm;
+    return a->score > b->score;
+}
+
 int tippe_opt_run(const tippe_opt_spec *s, const tippe_opt_options *o, tippe_opt_result *out,
                   tippe_error *err)
 {
@@ -985,7 +1023,7 @@ int tippe_opt_run(const tippe_opt_spec *s, const tippe_opt_options *o, tippe_opt
         return tippe_error_set(err, TIPPE_ECOMPUTE, "optimise: out of memory");
     }
     out->n_choices = nc;
-    out->robust_nominal = s->robust;
+    out->robust = s->robust;
     int oom = 0;
     for (int c = 0; c < nc; c++) {
         tippe_opt_choice_result *r = &out->choices[c];
@@ -1009,7 +1047,7 @@ int tippe_opt_run(const tippe_opt_spec *s, const tippe_opt_options *o, tippe_opt
         out->total_evals += out->choices[c].n_evals;
         if (jobs[c].failed && failed < 0)
             failed = c;
-        if (out->choices[c].best.score > out->choices[out->best_choice].best.score)
+        if (tippe_opt_rank_above(&out->choices[c].best, &out->choices[out->best_choice].best))
             out->best_choice = c;
     }
     free(jobs);
@@ -1080,7 +1118,10 @@ cJSON *tippe_opt_design_json(const tippe_opt_spec *s, const tippe_opt_eval *e,
     if (tippe_design_source_apply(s->src, ov, n, &root, err))
         return NULL;
     /* travel_mm: the physical travel, so that every verb sweeps what was scored. */
-    double tr[2] = {e->travel_mm[0], e->travel_mm[1]};
+    /* Rounded inward by 1e-9 mm: the file's numbers, read back, may move the
+     * contact a few ulps (4e-15 mm seen), and a stated travel must lie within
+     * the physical one. 1e-9 mm is far below the 1e-6 mm zone ends carry. */
+    double tr[2] = {e->travel_mm[0] + 1e-9, e->travel_mm[1] - 1e-9};
     cJSON *travel = cJSON_CreateDoubleArray(tr, 2);
     /* materials: the base design's table, seen from where the file is written. */
     char mat_rel[512] = "materials.json", mat_abs[PATH_MAX], base_dir[PATH_MAX],
@@ -1123,10 +1164,12 @@ cJSON *tippe_opt_design_json(const tippe_opt_spec *s, const tippe_opt_eval *e,
         k += (size_t)snprintf(notes + k, sizeof notes - k, ". Overrides of %s:", s->design_path);
     for (int i = 0; i < n && k < sizeof notes; i++)
         k += (size_t)snprintf(notes + k, sizeof notes - k, " %s", buf[i]);
-    if (k < sizeof notes && s->robust)
+    if (k < sizeof notes && e->has_robust)
         snprintf(notes + k, sizeof notes - k,
-                 ". Objective robust_narrowest_zone: nominal widths (no tolerance bands "
-                 "modelled yet).");
+                 ". Robust widths (less the tolerance bands of each zone's ends, the design's "
+                 "tolerances): I %.3f, II %.3f, III %.3f mm, narrowest %.3f mm; the search "
+                 "maximised the nominal widths and ranked the choices by the robust one.",
+                 e->robust_zone_mm[0], e->robust_zone_mm[1], e->robust_zone_mm[2], e->robust_mm);
     if (ok)
         ok = put_string(root, "name", name) && put_string(root, "notes", notes);
     if (!ok) {

@@ -20,14 +20,14 @@ static const unsigned line_rgb[MAX_SHOWN] = {0x1f4fd0u, 0xd01c1cu, 0x2a9a2au, 0x
                                              0x9a6a1eu, 0x000000u, 0x36b3a8u, 0xf08c3cu,
                                              0x777777u, 0xc0317au};
 
-/* The best MAX_SHOWN choices by score, best first (lower index first on a tie). */
+/* The best MAX_SHOWN choices as the search ranks them, best first (lower index
+ * first on a tie). */
 static int order_choices(const tippe_opt_result *r, int *idx)
 {
     int n = 0;
     for (int c = 0; c < r->n_choices; c++) {
-        double sc = r->choices[c].best.score;
         int k = n;
-        while (k > 0 && sc > r->choices[idx[k - 1]].best.score)
+        while (k > 0 && tippe_opt_rank_above(&r->choices[c].best, &r->choices[idx[k - 1]].best))
             k--;
         if (k >= MAX_SHOWN)
             continue;
@@ -59,17 +59,20 @@ static void zone_bars(const tippe_opt_spec *s, const tippe_opt_result *r, const 
         tippe_opt_spec_choice_label(s, idx[i], label, sizeof label);
         tippe_plot_escape(label, esc, sizeof esc);
         const tippe_opt_eval *e = &r->choices[idx[i]].best;
-        snprintf(text, sizeof text, "%s: narrowest %.3f mm (I %.3f, II %.3f, III %.3f)%s", esc,
-                 e->objective_mm, e->zone_mm[0], e->zone_mm[1], e->zone_mm[2],
+        char robust[64] = "";
+        if (e->has_robust)
+            snprintf(robust, sizeof robust, ", robust %.3f", e->robust_mm);
+        snprintf(text, sizeof text, "%s: narrowest %.3f mm (I %.3f, II %.3f, III %.3f)%s%s", esc,
+                 e->objective_mm, e->zone_mm[0], e->zone_mm[1], e->zone_mm[2], robust,
                  e->status == TIPPE_OPT_OK ? "" : " infeasible");
-        tippe_plot_text(lo, y + 0.27, 0, 0.0, 0.7, line_rgb[i], text); /* as its convergence line */
+        tippe_plot_text(lo, y + 0.2, 0, 0.0, 0.7, line_rgb[i], text); /* as its convergence line */
         if (!ok[i])
             continue;
         for (int z = 0; z < sw[i].n_zones; z++) {
             const tippe_sweep_zone *zn = &sw[i].zones[z];
             if (!zn->within_travel)
                 continue;
-            tippe_plot_rect(zn->z2_from_mm, zn->z2_to_mm, y - 0.3, y + 0.15,
+            tippe_plot_rect(zn->z2_from_mm, zn->z2_to_mm, y - 0.38, y + 0.08,
                             tippe_plot_pale(family_rgb(zn->group), 0.75), 1.0);
         }
     }
@@ -117,7 +120,7 @@ static void convergence(const tippe_opt_result *r, const int *idx, int n)
         free(y);
     }
     tippe_plot_axes("evaluations", "best narrowest zone so far (mm)",
-                    "convergence (colours as the labels on the left)");
+                    "convergence (colours as the labels)");
 }
 
 int tippe_opt_plot(const char *file, const tippe_opt_spec *s, const tippe_opt_result *r,
@@ -133,7 +136,7 @@ int tippe_opt_plot(const char *file, const tippe_opt_spec *s, const tippe_opt_re
                 tippe_opt_sweep(s, &r->choices[idx[i]].best, &sw[i], &e) == TIPPE_OK;
     }
     tippe_plot *p = NULL;
-    int st = tippe_plot_open(file, 1300, 120 + 60 * (n < 6 ? 6 : n), &p, err);
+    int st = tippe_plot_open(file, 1300, 140 + 64 * (n < 6 ? 6 : n), &p, err);
     if (st == TIPPE_OK) {
         char title[600], esc[520];
         tippe_plot_escape(tippe_opt_spec_path(s), esc, sizeof esc);

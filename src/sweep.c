@@ -640,6 +640,11 @@ static int ends_a_zone(const tippe_sweep_result *r, const tippe_sweep_event *ev)
     return 0;
 }
 
+int tippe_sweep_event_ends_zone(const tippe_sweep_result *r, const tippe_sweep_event *ev)
+{
+    return ends_a_zone(r, ev);
+}
+
 static const char *side_down(int com_side)
 {
     return com_side > 0 ? "+z side down" : com_side < 0 ? "-z side down" : "balanced";

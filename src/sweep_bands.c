@@ -104,16 +104,6 @@ static double f_of_z(double z2_mm, void *vp)
     return g[p->which];
 }
 
-/* Whether event ev of r is where a zone ends (a crossing that changes group). */
-static int ends_zone(const tippe_sweep_result *r, const tippe_sweep_event *ev)
-{
-    for (int i = 0; i + 1 < r->n_zones; i++)
-        if ((r->zones[i].to_boundaries & (1u << ev->boundary)) &&
-            fabs(r->zones[i].z2_to_mm - ev->z2_mm) <= 2.0 * TIPPE_SWEEP_XTOL_MM)
-            return 1;
-    return 0;
-}
-
 void tippe_sweep_bands_free(tippe_sweep_bands_result *b)
 {
     if (!b)
@@ -136,7 +126,7 @@ static int find_crossings(const tippe_design *d, const tippe_sweep_result *r, in
     tippe_sweep_path path = tippe_sweep_design_path(d);
     for (int e = 0; e < r->n_events; e++) {
         const tippe_sweep_event *ev = &r->events[e];
-        if (ev->touch || !ends_zone(r, ev))
+        if (ev->touch || !tippe_sweep_event_ends_zone(r, ev))
             continue;
         tippe_sweep_band *b = &out->bands[out->n++];
         b->event = e;
@@ -306,6 +296,12 @@ void tippe_sweep_print_bands(FILE *out, const tippe_design *d, const tippe_sweep
         const tippe_sweep_band *bd = &b->bands[k];
         double mm = 0;
         int i = main_term(d, bd, nt, &mm);
+        if (!isfinite(bd->band_mm)) { /* the path runs along the boundary there */
+            fprintf(out, "%-18s %10.3f %12s %12s  (the path is tangent to the boundary)\n",
+                    tippe_sweep_boundary_name(bd->boundary), bd->z2_mm, "unbounded",
+                    "unbounded");
+            continue;
+        }
         fprintf(out, "%-18s %10.3f %12.3f %12.3f  %s (+/-%.3f mm)\n",
                 tippe_sweep_boundary_name(bd->boundary), bd->z2_mm, bd->band_mm, bd->worst_mm,
                 i >= 0 ? tippe_design_tolerance(d, i)->field : "-", mm);

@@ -33,7 +33,23 @@ for g in ("I", "II", "III"):
     assert abs(a - b) <= 1e-6, (g, a, b)
 assert abs(best["narrowest_zone_mm"] - sw["narrowest_zone_mm"]) <= 1e-6
 assert sw["three_in_one"]
-assert sw["physical_travel_mm"] == sw["travel_mm"], "BEST.json's travel is its physical travel"
+# The robust widths are sweep's bands on the same design: the same numbers.
+assert abs(best["robust_narrowest_zone_mm"] - sw["robust_narrowest_zone_mm"]) <= 1e-6
+assert best["robust_narrowest_zone_mm"] <= best["narrowest_zone_mm"]
+# BEST.json's travel is its physical travel, rounded inward by 1e-9 mm.
+assert all(abs(a - b) <= 2e-9 for a, b in zip(sw["physical_travel_mm"], sw["travel_mm"]))
+EOF
+# Independent geometry (tools/check_drilled_ball.py: its own mass integrals, closed-form
+# travel, Theorem 5.1 by bisection). 1e-5 mm: tippe lets parts touch within 1e-6 mm, which
+# moves the travel's end at the screw's corner by ~2e-6 mm; interior zone ends agree to 1e-9.
+python3 tools/check_drilled_ball.py "$tmp/best.json" >"$tmp/indep.txt"
+check "independent geometry gives the same zones to 1e-5 mm" python3 - "$tmp/indep.txt" "$tmp/sweep.json" <<'EOF'
+import json, sys
+line = [l for l in open(sys.argv[1]) if l.startswith("zones")][0].split()
+indep = {"I": float(line[2]), "II": float(line[4]), "III": float(line[6])}
+sw = json.load(open(sys.argv[2]))["zone_widths_mm"]
+for g in indep:
+    assert abs(indep[g] - sw[g]) <= 1e-5, (g, indep[g], sw[g])
 EOF
 check "BEST.json's notes say how it was found and the objective" \
     grep -q '"notes":.*Found by tippe optimise.*Narrowest zone' "$tmp/best.json"
@@ -81,6 +97,13 @@ done <"$tmp/mids"
 # --- same seed, same answer, at any number of threads ---------------------------
 "$tippe" optimise "$spec" -o "$tmp/best1.json" --threads 1 >/dev/null
 check "one thread and two give the same BEST.json" cmp -s "$tmp/best.json" "$tmp/best1.json"
+
+# CRS2 draws random numbers: per choice, from NLopt's per-thread generator seeded by
+# --seed and the choice, so three choices on one or two threads give the same file.
+json_edit "$spec" "$tmp/crs.json" 'd["design"] = "'"$PWD"'/designs/drilled-ball-blind.json"; d["search"]["algorithm"] = "CRS2"; d["choose"]["parts.screw.material"] = ["brass", "iron", "steel"]; d["objective"] = "narrowest_zone"'
+"$tippe" optimise "$tmp/crs.json" --seed 5 --threads 1 -o "$tmp/crs1.json" >/dev/null
+"$tippe" optimise "$tmp/crs.json" --seed 5 --threads 2 -o "$tmp/crs2.json" >/dev/null
+check "CRS2: same seed, same BEST.json on 1 and 2 threads" cmp -s "$tmp/crs1.json" "$tmp/crs2.json"
 
 # --- bad input: a clear message naming the file and the field, exit 2, nothing written
 json_edit "$spec" "$tmp/bad-key.json" 'd["design"] = "'"$PWD"'/designs/drilled-ball-blind.json"; d["vary"]["parts.screw.radius_mm"] = [6, 2]'

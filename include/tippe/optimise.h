@@ -69,6 +69,10 @@ typedef struct {
     double spin_flip_rev_s;        /* n* (section 7.1) over zone II's middle half; 0 if none */
     double wall_mm;                /* thinnest hole wall or floor (INFINITY: no hole) */
     double weight_g;               /* moving mass */
+    /* Robust widths (tippe/sweep_bands.h: each width less the tolerance bands
+     * of its ends), computed for the reported best of each choice only. */
+    int has_robust;
+    double robust_zone_mm[3], robust_mm;
 } tippe_opt_eval;
 
 typedef struct {
@@ -94,10 +98,16 @@ typedef struct {
 typedef struct {
     int n_choices;
     tippe_opt_choice_result *choices;
-    int best_choice;         /* highest best.score; the lowest index on a tie */
+    int best_choice;         /* highest best.score (robust_mm with the robust objective);
+                                the lowest index on a tie */
     long total_evals;
-    int robust_nominal;      /* 1: robust objective asked, tolerance bands not modelled */
+    int robust;              /* 1: robust objective: the search maximises nominal widths,
+                                the choices are ranked by robust widths at their best */
 } tippe_opt_result;
+
+/* Whether candidate a ranks above b: feasible before infeasible, then by the
+ * robust width where both have one, else by score. */
+int tippe_opt_rank_above(const tippe_opt_eval *a, const tippe_opt_eval *b);
 
 /* Total evaluations the search will make at most (for a progress bar). */
 long tippe_opt_planned_evals(const tippe_opt_spec *s);

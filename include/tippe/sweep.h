@@ -115,6 +115,9 @@ int tippe_sweep_mark_travel(tippe_sweep_result *r, double from_mm, double to_mm,
 
 void tippe_sweep_result_free(tippe_sweep_result *r);
 
+/* Whether ev (one of r's events) is a crossing where a zone of r ends. */
+int tippe_sweep_event_ends_zone(const tippe_sweep_result *r, const tippe_sweep_event *ev);
+
 /* The path of a design: Z2 -> its top (tippe_design_top_any), k and signed e. */
 tippe_sweep_path tippe_sweep_design_path(const tippe_design *d);
 

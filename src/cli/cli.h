@@ -214,6 +214,15 @@ int tippe_cli_signal_pending(const char *verb);
  * deletes it: 0, or 1 after "tippe VERB: out of memory while writing JSON". */
 int tippe_cli_print_json(const char *verb, struct cJSON *o);
 
+/* ---- printed parts (src/cli/printed.c), for eval and sweep ---- */
+struct tippe_design;
+/* One entry per printed part: its settings, infill (calibrated or not) and
+ * masses; or a line saying every part is solid. */
+void tippe_cli_print_printed_parts(FILE *out, const struct tippe_design *d);
+/* Adds "printed_parts": [...] to o (an empty array when all parts are solid);
+ * -1 when out of memory. */
+int tippe_cli_printed_parts_json(struct cJSON *o, const struct tippe_design *d);
+
 /* Adds {"preset": preset, "stepper": ..., "rtol": ...} to o as "accuracy", the
  * same object in every verb that integrates. */
 void tippe_cli_json_accuracy(struct cJSON *o, const char *preset,

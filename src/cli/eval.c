@@ -55,8 +55,13 @@ static void print_table(const tippe_design *d, double z2_mm, const tippe_top *t)
             printf("  (cut from %s)", p.cut_from);
         if (p.may_protrude)
             printf("  (may protrude)");
+        tippe_design_print_info pi;
+        if (!tippe_design_part_print(d, i, &pi) && pi.printed)
+            printf("  (printed: walls, skins and infill, below)");
         printf("\n");
     }
+    printf("\n");
+    tippe_cli_print_printed_parts(stdout, d);
 }
 
 static cJSON *to_json(const tippe_design *d, double z2_mm, const tippe_top *t)
@@ -116,10 +121,13 @@ static cJSON *to_json(const tippe_design *d, double z2_mm, const tippe_top *t)
              cJSON_AddStringToObject(po, "material", p.material) &&
              cJSON_AddNumberToObject(po, "density_g_cm3", p.density_g_cm3) &&
              cJSON_AddNumberToObject(po, "mass_kg", p.mass_kg);
+        tippe_design_print_info pi;
+        ok = ok && !tippe_design_part_print(d, i, &pi) &&
+             cJSON_AddBoolToObject(po, "printed", pi.printed);
         if (!ok)
             break;
     }
-    if (!ok || !parts) {
+    if (!ok || !parts || tippe_cli_printed_parts_json(o, d)) {
         cJSON_Delete(o);
         return NULL;
     }

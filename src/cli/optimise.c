@@ -14,88 +14,64 @@
 
 static const char *const VERB = "optimise";
 
-static void optimise_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: tippe optimise SPEC.json [-o BEST.json] [--json] [--plot FILE]\n"
-            "                      [--csv FILE] [--seed S] [--threads N]\n"
-            "\n"
-            "Searches the designs a spec allows (a base design with fields that vary over\n"
-            "ranges, discrete choices such as materials or catalogue screws, fields tied to\n"
-            "others, constraints) for the one whose narrowest zone is widest: for each of the\n"
-            "groups I, II and III its widest contiguous run of Z2 within the physical travel,\n"
-            "the narrowest of the three (0 unless all three are reachable). NLopt's global\n"
-            "algorithm (default DIRECT-L) runs for each choice, then a local polish (COBYLA);\n"
-            "the best of each choice is re-measured with the full sweep (zone ends to 1e-6 mm).\n"
-            "docs/optimise.md describes the spec.\n"
-            "\n"
-            "  -o BEST.json     write the best design as a design file (travel_mm its physical\n"
-            "                   travel, notes saying how it was found and its zone widths)\n"
-            "  --json           print one JSON object instead of the table\n"
-            "  --plot FILE      zone widths of the best design of each choice and the search's\n"
-            "                   convergence; PNG, SVG or PDF by the file's extension\n"
-            "  --csv FILE       every evaluated candidate (choice, parameters, zones in mm,\n"
-            "                   constraint values, status, score)\n"
-            "  --seed S         seed of the stochastic algorithms (CRS2, MLSL, ISRES);\n"
-            "                   default 1; DIRECT-L, COBYLA and BOBYQA do not draw numbers\n"
-            "  --threads N      OpenMP threads for the choices (default: all cores); the\n"
-            "                   answer does not depend on it\n"
-            "  --help           this text\n"
-            "\n"
-            "Exit status: 0 ok, 2 bad usage or spec (nothing written), 1 search failed.\n");
-}
-
 typedef struct {
     const char *spec, *best, *plot, *csv;
     int json;
     long seed, threads;
 } optimise_args;
 
-static int parse_args(int argc, char **argv, optimise_args *a, int *done)
+static int parse_args(int argc, char **argv, optimise_args *a)
 {
-    *done = 0;
-    const char *seed = NULL, *threads = NULL;
-    for (int i = 1; i < argc; i++) {
-        const char *s = argv[i];
-        const char **val = NULL;
-        if (tippe_cli_is_help(s)) {
-            optimise_usage(stdout);
-            *done = 1;
-            return 0;
-        } else if (!strcmp(s, "--json")) {
-            a->json = 1;
-            continue;
-        } else if (!strcmp(s, "-o") || !strcmp(s, "--output")) {
-            val = &a->best;
-        } else if (!strcmp(s, "--plot")) {
-            val = &a->plot;
-        } else if (!strcmp(s, "--csv")) {
-            val = &a->csv;
-        } else if (!strcmp(s, "--seed")) {
-            val = &seed;
-        } else if (!strcmp(s, "--threads")) {
-            val = &threads;
-        } else if (tippe_cli_is_option(s, 0)) {
-            return tippe_cli_usage_error(VERB, "unknown option '%s'", s);
-        } else if (!a->spec) {
-            a->spec = s;
-            continue;
-        } else {
-            return tippe_cli_usage_error(VERB, "one spec file only (got also '%s')", s);
-        }
-        if (!(*val = tippe_cli_value(VERB, argc, argv, &i)))
-            return 2;
-    }
-    if (!a->spec)
-        return tippe_cli_usage_error(VERB, "no spec file given");
     a->seed = 1;
     a->threads = 0;
-    if (seed && !tippe_cli_parse_long(seed, 0, 2147483647L, &a->seed))
-        return tippe_cli_usage_error(VERB, "--seed '%s': expected a whole number 0 .. 2147483647",
-                                     seed);
-    if (threads && !tippe_cli_parse_long(threads, 1, 1024, &a->threads))
-        return tippe_cli_usage_error(VERB, "--threads '%s': expected a whole number 1 .. 1024",
-                                     threads);
+    tippe_cli_opt opts[] = {
+        {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &a->best,
+         .arg = "BEST.json",
+         .help = "write the best design as a design file (travel_mm its physical\n"
+                 "travel, notes saying how it was found and its zone widths)"},
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
+         .help = "print one JSON object instead of the table"},
+        {.name = "plot", .kind = TIPPE_CLI_STRING, .value = &a->plot, .arg = "FILE",
+         .help = "zones of the best design of each choice (the best ten) and the\n"
+                 "search's convergence; PNG, SVG or PDF by the file's extension"},
+        {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
+         .help = "every evaluated candidate (choice, parameters, zones in mm,\n"
+                 "constraint values, status, score)"},
+        {.name = "seed", .kind = TIPPE_CLI_LONG, .value = &a->seed, .arg = "S", .min = 0,
+         .max = 2147483647.0, .def = "1",
+         .help = "seed of the stochastic algorithms (CRS2, MLSL, ISRES); DIRECT-L,\n"
+                 "COBYLA and BOBYQA draw no random numbers"},
+        {.name = "threads", .kind = TIPPE_CLI_LONG, .value = &a->threads, .arg = "N", .min = 1,
+         .max = 1024, .def = "all cores",
+         .help = "OpenMP threads for the choices; the answer does not depend on it"},
+        {NULL},
+    };
+    tippe_cli_spec spec = {
+        .verb = VERB,
+        .synopsis = "SPEC.json [-o BEST.json] [--json] [--plot FILE] [--csv FILE] [--seed S]\n"
+                    "                      [--threads N]",
+        .about = "Searches the designs a spec allows (a base design with fields that vary over\n"
+                 "ranges, discrete choices such as materials or catalogue screws, fields tied\n"
+                 "to others, constraints) for the one whose narrowest zone is widest: for each\n"
+                 "of the groups I, II and III its widest contiguous run of Z2 within the\n"
+                 "physical travel, the narrowest of the three (0 unless all three are\n"
+                 "reachable). NLopt's global algorithm (default DIRECT-L) runs for each choice\n"
+                 "(choices in parallel), then a local polish (COBYLA); the best of each choice\n"
+                 "is re-measured with the full sweep (zone ends to 1e-6 mm). With the objective\n"
+                 "robust_narrowest_zone the choices are ranked by the widths left after the\n"
+                 "tolerance bands of the zone ends.",
+        .after = "A progress bar is shown on stderr when it is a terminal. The spec format and\n"
+                 "the shipped specs: docs/optimise.md. Exit status: 0 ok, 2 bad usage or spec\n"
+                 "(nothing written), 1 search failed.",
+        .opts = opts,
+        .min_args = 1,
+        .max_args = 1,
+        .args_name = "spec file",
+    };
+    int n_args = 0;
+    int rc = tippe_cli_parse(&spec, argc, argv, &a->spec, &n_args);
+    if (rc)
+        return rc;
     const char *outs[3] = {a->best, a->plot, a->csv};
     const char *names[3] = {"-o", "--plot", "--csv"};
     for (int k = 0; k < 3; k++) {
@@ -134,15 +110,18 @@ static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, doub
         snprintf(head, sizeof head, "%s", tail && tail > p ? tail + 1 : p);
         printf(" %10.10s", head);
     }
-    printf(" %8s %8s %8s %9s %8s %8s  %s\n", "I (mm)", "II (mm)", "III (mm)", "narrowest",
-           "eps_max", "n* rev/s", "status");
+    printf(" %8s %8s %8s %9s%s %8s %8s  %s\n", "I (mm)", "II (mm)", "III (mm)", "narrowest",
+           r->robust ? "    robust" : "", "eps_max", "n* rev/s", "status");
     for (int c = 0; c < r->n_choices; c++) {
         const tippe_opt_eval *e = &r->choices[c].best;
         char label[256];
         printf("%-24.24s", tippe_opt_spec_choice_label(s, c, label, sizeof label));
         print_params(stdout, s, e, 0);
-        printf(" %8.3f %8.3f %8.3f %9.3f %8.3f %8.2f  %s%s\n", e->zone_mm[0], e->zone_mm[1],
-               e->zone_mm[2], e->objective_mm, e->eps_max_mm, e->spin_flip_rev_s,
+        printf(" %8.3f %8.3f %8.3f %9.3f", e->zone_mm[0], e->zone_mm[1], e->zone_mm[2],
+               e->objective_mm);
+        if (r->robust)
+            printf(" %9.3f", e->robust_mm);
+        printf(" %8.3f %8.2f  %s%s\n", e->eps_max_mm, e->spin_flip_rev_s,
                tippe_opt_status_name(e->status), c == r->best_choice ? "  <- best" : "");
     }
     const tippe_opt_eval *b = &r->choices[r->best_choice].best;
@@ -152,9 +131,11 @@ static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, doub
            b->travel_mm[1]);
     printf("accuracy zone ends root-found to 1e-7 mm (full sweep of the best point); the search\n"
            "         itself is a global search, not a proof of the global optimum\n");
-    if (r->robust_nominal)
-        printf("note     robust_narrowest_zone: tolerance bands are not modelled yet, the widths "
-               "are nominal\n");
+    if (r->robust && b->has_robust)
+        printf("robust   narrowest zone %.6f mm (I %.6f, II %.6f, III %.6f mm): each width less\n"
+               "         the tolerance bands of its ends (tippe sweep's bands); the search\n"
+               "         maximised nominal widths and ranked the choices by this\n",
+               b->robust_mm, b->robust_zone_mm[0], b->robust_zone_mm[1], b->robust_zone_mm[2]);
 }
 
 static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, double seconds,
@@ -164,7 +145,8 @@ static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, do
     if (!o || !cJSON_AddStringToObject(o, "spec", tippe_opt_spec_path(s)) ||
         !cJSON_AddNumberToObject(o, "evaluations", (double)r->total_evals) ||
         !cJSON_AddNumberToObject(o, "seconds", seconds) ||
-        !cJSON_AddBoolToObject(o, "robust_is_nominal", r->robust_nominal) ||
+        !cJSON_AddStringToObject(o, "objective", r->robust ? "robust_narrowest_zone"
+                                                            : "narrowest_zone") ||
         !(choices = cJSON_AddArrayToObject(o, "choices"))) {
         cJSON_Delete(o);
         return NULL;
@@ -196,6 +178,8 @@ static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, do
              (isfinite(e->wall_mm) ? cJSON_AddNumberToObject(ch, "wall_mm", e->wall_mm)
                                    : cJSON_AddNullToObject(ch, "wall_mm")) &&
              cJSON_AddNumberToObject(ch, "weight_g", e->weight_g) &&
+             (e->has_robust ? cJSON_AddNumberToObject(ch, "robust_narrowest_zone_mm", e->robust_mm)
+                            : cJSON_AddNullToObject(ch, "robust_narrowest_zone_mm")) &&
              cJSON_AddStringToObject(ch, "status", tippe_opt_status_name(e->status)) &&
              cJSON_AddNumberToObject(ch, "evaluations", (double)r->choices[c].n_evals) &&
              cJSON_AddBoolToObject(ch, "best", c == r->best_choice);
@@ -277,9 +261,9 @@ static int write_best(const char *path, const tippe_opt_spec *s, const tippe_opt
 int tippe_cli_optimise(int argc, char **argv)
 {
     optimise_args a = {0};
-    int done = 0, rc = parse_args(argc, argv, &a, &done);
-    if (rc || done)
-        return rc;
+    int rc = parse_args(argc, argv, &a);
+    if (rc)
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
     tippe_error err = {0};
     tippe_opt_spec *s = NULL;
     if ((rc = tippe_opt_spec_load(a.spec, &s, &err)))

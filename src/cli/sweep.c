@@ -233,7 +233,7 @@ static int sweep_run(const sweep_args *a, const tippe_design *d, const char *tit
         rc = tippe_cli_fail(VERB, &err, rc);
     } else if (a->json) {
         cJSON *o = tippe_sweep_json(&r, d);
-        if (o && tippe_sweep_json_add_bands(o, d, &r, &b)) {
+        if (o && (tippe_sweep_json_add_bands(o, d, &r, &b) || tippe_cli_printed_parts_json(o, d))) {
             cJSON_Delete(o);
             o = NULL;
         }
@@ -246,6 +246,8 @@ static int sweep_run(const sweep_args *a, const tippe_design *d, const char *tit
             printf("changes  %s\n", tippe_cli_sets_text(&a->sets, sets, sizeof sets));
         tippe_sweep_print_table(stdout, &r, d);
         tippe_sweep_print_bands(stdout, d, &r, &b);
+        printf("\n");
+        tippe_cli_print_printed_parts(stdout, d);
     }
     tippe_sweep_bands_free(&b);
     tippe_sweep_result_free(&r);

@@ -1,0 +1,77 @@
+/* How a design's parts are printed, for eval and sweep (text and JSON). */
+#include "cli.h"
+
+#include "tippe/design.h"
+
+#include <cjson/cJSON.h>
+
+#include <stdio.h>
+
+void tippe_cli_print_printed_parts(FILE *out, const tippe_design *d)
+{
+    int any = 0;
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_part_info p;
+        tippe_design_print_info pi;
+        if (tippe_design_part(d, i, &p) || tippe_design_part_print(d, i, &pi) || !pi.printed)
+            continue;
+        const tippe_print_settings *s = &pi.settings;
+        fprintf(out,
+                "%s%s: axis vertical, %d x %.2f mm perimeters (walls %.2f mm), %d x %.2f mm "
+                "top/bottom layers (skins %.2f mm), ",
+                any ? "         " : "printed  ", p.name, s->perimeters, s->line_width_mm,
+                pi.wall_mm, s->top_bottom_layers, s->layer_height_mm, pi.skin_mm);
+        if (pi.calibrated)
+            fprintf(out, "infill %.2f %% from the weighed %.3f g (slicer: %.0f %%)",
+                    pi.infill * 100, pi.measured_mass_kg * 1e3, s->infill * 100);
+        else
+            fprintf(out, "infill %.0f %%", pi.infill * 100);
+        fprintf(out,
+                "\n         %.3f g as printed (%.3f g solid, %.3f g walls and skins alone); "
+                "print model error < %.0e\n",
+                pi.printed_mass_kg * 1e3, pi.solid_mass_kg * 1e3, pi.skin_mass_kg * 1e3,
+                pi.rel_error > 1e-15 ? pi.rel_error : 1e-15);
+        any = 1;
+    }
+    if (!any)
+        fprintf(out, "printed  no part has a print block: every part is solid\n");
+}
+
+int tippe_cli_printed_parts_json(struct cJSON *o, const tippe_design *d)
+{
+    cJSON *arr = cJSON_AddArrayToObject(o, "printed_parts");
+    if (!arr)
+        return -1;
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_part_info p;
+        tippe_design_print_info pi;
+        if (tippe_design_part(d, i, &p) || tippe_design_part_print(d, i, &pi) || !pi.printed)
+            continue;
+        cJSON *e = cJSON_CreateObject();
+        if (!e || !cJSON_AddItemToArray(arr, e)) {
+            cJSON_Delete(e);
+            return -1;
+        }
+        const tippe_print_settings *s = &pi.settings;
+        int ok =
+            cJSON_AddStringToObject(e, "part", p.name) &&
+            cJSON_AddNumberToObject(e, "perimeters", s->perimeters) &&
+            cJSON_AddNumberToObject(e, "line_width_mm", s->line_width_mm) &&
+            cJSON_AddNumberToObject(e, "top_bottom_layers", s->top_bottom_layers) &&
+            cJSON_AddNumberToObject(e, "layer_height_mm", s->layer_height_mm) &&
+            cJSON_AddNumberToObject(e, "wall_mm", pi.wall_mm) &&
+            cJSON_AddNumberToObject(e, "skin_mm", pi.skin_mm) &&
+            cJSON_AddNumberToObject(e, "infill", pi.infill) &&
+            cJSON_AddNumberToObject(e, "slicer_infill", s->infill) &&
+            cJSON_AddBoolToObject(e, "calibrated", pi.calibrated) &&
+            (pi.calibrated ? cJSON_AddNumberToObject(e, "measured_mass_kg", pi.measured_mass_kg)
+                           : cJSON_AddNullToObject(e, "measured_mass_kg")) &&
+            cJSON_AddNumberToObject(e, "printed_mass_kg", pi.printed_mass_kg) &&
+            cJSON_AddNumberToObject(e, "solid_mass_kg", pi.solid_mass_kg) &&
+            cJSON_AddNumberToObject(e, "skin_mass_kg", pi.skin_mass_kg) &&
+            cJSON_AddNumberToObject(e, "model_rel_error", pi.rel_error);
+        if (!ok)
+            return -1;
+    }
+    return 0;
+}

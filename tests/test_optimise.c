@@ -1,0 +1,131 @@
+/* Tests of the optimiser's building blocks against closed forms: the physical
+ * travel a design source finds for a candidate (interval arithmetic on the
+ * (r, z) half-plane, coarse and full grids) against the geometry of a screw in
+ * a blind hole, the hole wall check, and spec errors naming the JSON path. */
+#include "tippe/design.h"
+#include "tippe/optimise.h"
+
+#include "check.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The layout code lets parts touch within 1e-6 mm (TOL_MM in src/design.c). */
+#define TRAVEL_TOL_MM 1e-5
+
+static void test_blind_hole_travel(void)
+{
+    tippe_design_source *s = NULL;
+    tippe_error err = {0};
+    int rc = tippe_design_source_open("designs/drilled-ball-blind.json", &s, &err);
+    CHECK(rc == TIPPE_OK, "source: %s", err.msg);
+    if (rc)
+        return;
+    const double R = 25.0;
+    const double cases[][3] = {{5.5, 15.0, 10.0}, {3.0, 8.0, 20.0}, {6.0, 20.0, 2.0},
+                               {1.0, 3.0, 24.0}};
+    for (int k = 0; k < 4; k++) {
+        double a = cases[k][0], h = cases[k][1], zh = cases[k][2];
+        char o[3][96];
+        snprintf(o[0], sizeof o[0], "parts.screw.radius_mm=%g", a);
+        snprintf(o[1], sizeof o[1], "parts.hole.radius_mm=%g", a);
+        snprintf(o[2], sizeof o[2], "parts.hole.z_mm=%g", zh);
+        char o3[96];
+        snprintf(o3, sizeof o3, "parts.screw.height_mm=%g", h);
+        const char *ov[4] = {o[0], o[1], o[2], o3};
+        /* Closed form: the screw rests on the floor (z_hole - R) below, and its
+         * top corner (r = a) meets the sphere above. */
+        double lo = zh - R + h / 2, hi = sqrt(R * R - a * a) - h / 2;
+        for (int coarse = 0; coarse < 2; coarse++) {
+            tippe_design *d = NULL;
+            unsigned flags = TIPPE_DESIGN_TRAVEL_PHYSICAL | (coarse ? TIPPE_DESIGN_COARSE_LAYOUT : 0);
+            rc = tippe_design_source_build(s, ov, 4, flags, &d, &err);
+            CHECK(rc == TIPPE_OK, "case %d: %s", k, err.msg);
+            if (rc)
+                continue;
+            double f, t;
+            tippe_design_travel_mm(d, &f, &t);
+            CHECK(fabs(f - lo) < TRAVEL_TOL_MM && fabs(t - hi) < TRAVEL_TOL_MM,
+                  "case %d (coarse %d): travel %.7f .. %.7f mm, closed form %.7f .. %.7f", k,
+                  coarse, f, t, lo, hi);
+            /* Walls: the side wall at the layer nearest the centre, the floor at r = a. */
+            double zs = fmin(fmax(0.0, zh - R), zh + R);
+            double side = sqrt(R * R - zs * zs) - a;
+            double floor = (zh - R) + sqrt(R * R - a * a);
+            double want = fmin(side, zh > 0 ? floor : INFINITY);
+            double wall = tippe_design_min_hole_wall_mm(d, NULL);
+            CHECK(fabs(wall - want) < 1e-9, "case %d: wall %.9f mm, closed form %.9f", k, wall,
+                  want);
+            /* A derived design (for tolerance bands) is the same design. */
+            tippe_design *dd = NULL;
+            rc = tippe_design_derive(d, NULL, 0, &dd, &err);
+            CHECK(rc == TIPPE_OK, "derive: %s", err.msg);
+            if (!rc) {
+                tippe_top t1, t2;
+                tippe_design_top_any(d, 0.5 * (lo + hi), &t1);
+                tippe_design_top_any(dd, 0.5 * (lo + hi), &t2);
+                CHECK(t1.m == t2.m && t1.A == t2.A && t1.C == t2.C && t1.eps == t2.eps,
+                      "derived design differs");
+            }
+            tippe_design_free(dd);
+            tippe_design_free(d);
+        }
+    }
+    /* A screw longer than the whole hole does not fit: the build fails. */
+    const char *nofit[3] = {"parts.screw.height_mm=40", "parts.hole.z_mm=20",
+                            "parts.screw.radius_mm=5.5"};
+    tippe_design *d = NULL;
+    rc = tippe_design_source_build(s, nofit, 3, TIPPE_DESIGN_TRAVEL_PHYSICAL, &d, &err);
+    CHECK(rc == TIPPE_EINPUT && !d, "a 40 mm screw in a 30 mm blind hole should not fit");
+    tippe_design_free(d);
+    tippe_design_source_free(s);
+}
+
+static void test_spec_errors(void)
+{
+    const char *path = "build-test-optimise-spec.json";
+    struct {
+        const char *text, *want;
+    } cases[] = {
+        {"{\"design\": \"designs/drilled-ball-blind.json\", \"vary\": {\"parts.hole.z_mm\": 3}}",
+         "vary.parts.hole.z_mm"},
+        {"{\"design\": \"designs/drilled-ball-blind.json\", \"vary\": {\"parts.hole.z_mm\": [0, 5]},"
+         " \"constraints\": {\"spin_max_rev_s\": -1}}",
+         "constraints.spin_max_rev_s"},
+        {"{\"design\": \"designs/drilled-ball-blind.json\", \"vary\": {\"parts.hole.z_mm\": [0, 5]},"
+         " \"search\": {\"algorithm\": \"GA\"}}",
+         "search.algorithm"},
+        {"{\"design\": \"designs/drilled-ball-blind.json\", \"vary\": {\"parts.hole.z_mm\": [0, 5]},"
+         " \"tie\": {\"parts.hole.radius_mm\": \"parts.nothing.radius_mm\"}}",
+         "tie.parts.hole.radius_mm"},
+        {"{\"design\": \"designs/drilled-ball-blind.json\", \"vary\": {\"parts.hole.z_mm\": [0, 5]},"
+         " \"choose\": {\"parts.screw\": {\"catalogue\": \"iso4026\", \"items\": [\"M7x7\"]}}}",
+         "M7x7"},
+        {"{\"design\": \"designs/drilled-ball-blind.json\", \"vary\": {\"parts.hole.z_mm\": [0, 5]},"
+         " \"bogus\": 1}",
+         "bogus"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        FILE *f = fopen(path, "w");
+        if (!f)
+            break;
+        fputs(cases[k].text, f);
+        fclose(f);
+        tippe_opt_spec *s = NULL;
+        tippe_error err = {0};
+        int rc = tippe_opt_spec_load(path, &s, &err);
+        CHECK(rc == TIPPE_EINPUT && strstr(err.msg, path) && strstr(err.msg, cases[k].want),
+              "case %zu: rc %d, message '%s' should name %s and %s", k, rc, err.msg, path,
+              cases[k].want);
+        tippe_opt_spec_free(s);
+    }
+    remove(path);
+}
+
+int main(void)
+{
+    test_blind_hole_travel();
+    test_spec_errors();
+    return check_summary("test_optimise");
+}

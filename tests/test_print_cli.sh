@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# tippe eval and sweep on printed designs: the issue's figures for the paper's M12
+# ball, the print block in text and JSON, calibration and its errors, and a part
+# printed at 100 % infill = the solid part.
+source "$(dirname "$0")/lib.sh"
+setup "$@"
+
+M12=designs/m12-setscrew-printed.json
+
+# The issue's figures (computed independently and quoted to 0.1 g and 0.01 mm):
+# the body printed with 2 x 0.45 mm walls, 4 x 0.2 mm skins. Tolerance: half the
+# last quoted digit.
+"$tippe" eval "$M12" --z2 0 --json >"$tmp/e15.json"
+check "M12 body printed at 15 % weighs 16.6 g, solid 65.6 g (issue)" json_ok "$tmp/e15.json" \
+    "abs(o['printed_parts'][0]['printed_mass_kg']*1e3-16.6)<0.05 and abs(o['printed_parts'][0]['solid_mass_kg']*1e3-65.6)<0.05"
+"$tippe" sweep "$M12" --json >"$tmp/s15.json"
+check "at 15 % no zone I, type III up to Z2 = 0.17 mm (issue)" json_ok "$tmp/s15.json" \
+    "o['zones'][0]['group']=='III' and abs(o['zones'][0]['z2_to_mm']-0.17)<0.005 and not any(z['group'] in ('I','Ia','Ib') for z in o['zones'])"
+"$tippe" sweep "$M12" --set parts.body.print.infill=0.4 --json >"$tmp/s40.json"
+check "at 40 % the I/II boundary is at 2.19 mm (issue)" json_ok "$tmp/s40.json" \
+    "abs([z for z in o['zones'] if z['group'] in ('I','Ia','Ib')][0]['z2_to_mm']-2.19)<0.005"
+check "at 40 % the II/III boundary is at 13.61 mm (issue)" json_ok "$tmp/s40.json" \
+    "abs([z for z in o['zones'] if z['group']=='III'][0]['z2_from_mm']-13.61)<0.005"
+
+# Printed at 100 % infill is the solid design: the same mass properties, to
+# rounding (the core's moments enter multiplied by 1 - infill = 0).
+for name in m12-setscrew shell-band shell-rod-through; do
+    sets=$(python3 -c "import json; d=json.load(open('designs/$name-printed.json')); \
+print(' '.join('--set parts.%s.print.infill=1' % p['name'] for p in d['parts'] if p.get('print')))")
+    "$tippe" eval "designs/$name.json" --z2 3 --json >"$tmp/solid.json"
+    # shellcheck disable=SC2086
+    "$tippe" eval "designs/$name-printed.json" --z2 3 --json $sets >"$tmp/full.json"
+    check "$name printed at 100 % infill = solid (m, A, C to 1e-12)" python3 -c "
+import json, sys
+a, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+sys.exit(0 if all(abs(a[k] - b[k]) <= 1e-12 * abs(a[k]) for k in ('mass_kg', 'A_kg_m2', 'C_kg_m2')) else 1)
+" "$tmp/solid.json" "$tmp/full.json"
+done
+
+# The text says what is printed and how.
+"$tippe" eval "$M12" --z2 5 >"$tmp/e.txt"
+check "eval names the printed part and its settings" grep -qF \
+    "printed  body: axis vertical, 2 x 0.45 mm perimeters (walls 0.90 mm), 4 x 0.20 mm top/bottom layers (skins 0.80 mm), infill 15 %" \
+    "$tmp/e.txt"
+"$tippe" sweep "$M12" >"$tmp/s.txt"
+check "sweep names the printed part" grep -qF "printed  body: axis vertical" "$tmp/s.txt"
+"$tippe" sweep designs/m12-setscrew.json >"$tmp/s.txt"
+check "sweep of a solid design says every part is solid" grep -qF "every part is solid" "$tmp/s.txt"
+"$tippe" sweep "$M12" --json >"$tmp/s.json"
+check "sweep --json has printed_parts" json_ok "$tmp/s.json" \
+    "o['printed_parts'][0]['part']=='body' and o['printed_parts'][0]['infill']==0.15 and o['printed_parts'][0]['wall_mm']==0.9"
+
+# Calibration: a weighed mass gives the infill; impossible masses are refused.
+"$tippe" eval "$M12" --z2 5 --set parts.body.print.measured_mass_g=20 >"$tmp/cal.txt"
+check "a weighed 20 g body gives its infill" grep -qF "infill 20.86 % from the weighed 20.000 g" "$tmp/cal.txt"
+expect_fail "a body lighter than its walls and skins" 2 \
+    "parts[0].print.measured_mass_g: 5 g is less than the walls and top/bottom skins" -- \
+    eval "$M12" --z2 5 --set parts.body.print.measured_mass_g=5
+expect_fail "a body heavier than solid" 2 "70 g is more than part 'body' weighs printed solid" -- \
+    eval "$M12" --z2 5 --set parts.body.print.measured_mass_g=70
+expect_fail "infill given in percent" 2 "parts[0].print.infill: must be 0 .. 1" -- \
+    eval "$M12" --z2 5 --set parts.body.print.infill=15
+
+finish
