@@ -149,6 +149,110 @@ static const char *const material_keys[] = {"density_g_cm3", "source", "printabl
 
 /* ------------------------------------------------------------- overrides */
 
+/* The index of the part "parts.NAME" or "parts[I]" (field, already cut
+ * before its last dot) names in the file's parts array; -1 with the error set. */
+static int override_part_index(tippe_json_reader *c, const cJSON *parts, const char *field,
+                               const char *text)
+{
+    if (field[5] == '[') {
+        char *endp = NULL;
+        long i = strtol(field + 6, &endp, 10);
+        if (!endp || endp == field + 6 || strcmp(endp, "]") || i < 0 ||
+            i >= cJSON_GetArraySize(parts)) {
+            tippe_error_set(c->err, TIPPE_EINPUT,
+                            "%s: --set %s: no such part index (the file has %d parts)", c->file,
+                            text, cJSON_GetArraySize(parts));
+            return -1;
+        }
+        return (int)i;
+    }
+    const char *want = field + 6;
+    char names[512] = "";
+    size_t n = 0;
+    int i = 0, index = -1;
+    for (const cJSON *p = parts->child; p; p = p->next, i++) {
+        const cJSON *nm = cJSON_GetObjectItemCaseSensitive(p, "name");
+        if (!cJSON_IsString(nm))
+            continue;
+        if (!strcmp(nm->valuestring, want) && index < 0)
+            index = i;
+        int w = snprintf(names + n, sizeof names - n, "%s%s", n ? ", " : "", nm->valuestring);
+        if (w > 0 && (size_t)w < sizeof names - n)
+            n += (size_t)w;
+    }
+    if (index < 0)
+        tippe_error_set(c->err, TIPPE_EINPUT, "%s: --set %s: no part named '%s' (parts: %s)",
+                        c->file, text, want, names);
+    return index;
+}
+
+/* The print block of part object obj (index), for --set parts.NAME.print.KEY:
+ * true, false or no block becomes an object (the defaults), then takes key. */
+static int override_print_block(tippe_json_reader *c, cJSON **obj, int index, const char *key,
+                                const char *text, char *path, size_t path_cap)
+{
+    if (!tippe_json_in_list(key, print_keys)) {
+        char list[256];
+        tippe_json_key_list(list, sizeof list, print_keys, NULL);
+        return tippe_error_set(c->err, TIPPE_EINPUT,
+                               "%s: --set %s: '%s' is not a print setting (settings: %s)",
+                               c->file, text, key, list);
+    }
+    cJSON *pr = cJSON_GetObjectItemCaseSensitive(*obj, "print");
+    if (!cJSON_IsObject(pr)) {
+        cJSON *fresh = cJSON_CreateObject();
+        if (!fresh)
+            return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+        int rc = tippe_json_put(c, *obj, "print", fresh);
+        if (rc)
+            return rc;
+        pr = fresh;
+    }
+    *obj = pr;
+    snprintf(path, path_cap, "parts[%d].print.%s", index, key);
+    return TIPPE_OK;
+}
+
+/* Where --set parts.NAME.KEY (or parts.NAME.print.KEY) writes: *obj, *key and
+ * the JSON path for messages. field is modified (cut at its last dot). */
+static int override_part_target(tippe_json_reader *c, cJSON *root, char *field, const char *text,
+                                cJSON **obj, const char **key, char *path, size_t path_cap)
+{
+    cJSON *parts = cJSON_GetObjectItemCaseSensitive(root, "parts");
+    if (!cJSON_IsArray(parts))
+        return tippe_json_fail(c, "parts", "must be an array of parts (cannot apply --set %s)",
+                               text);
+    char *dot = strrchr(field, '.');
+    if (!dot || dot < field + 6 || dot[1] == '\0')
+        return tippe_error_set(c->err, TIPPE_EINPUT,
+                               "%s: --set %s: expected parts.NAME.FIELD=VALUE", c->file, text);
+    *dot = '\0';
+    *key = dot + 1;
+    size_t flen = strlen(field);
+    int in_print = flen > 12 && !strcmp(field + flen - 6, ".print");
+    if (in_print)
+        field[flen - 6] = '\0';
+    int index = override_part_index(c, parts, field, text);
+    if (index < 0)
+        return TIPPE_EINPUT;
+    *obj = cJSON_GetArrayItem(parts, index);
+    if (!cJSON_IsObject(*obj)) {
+        snprintf(path, path_cap, "parts[%d]", index);
+        return tippe_json_fail(c, path, "must be an object (cannot apply --set %s)", text);
+    }
+    if (in_print)
+        return override_print_block(c, obj, index, *key, text, path, path_cap);
+    if (!tippe_json_in_list(*key, all_part_keys)) {
+        char list[512];
+        tippe_json_key_list(list, sizeof list, all_part_keys, NULL);
+        return tippe_error_set(c->err, TIPPE_EINPUT,
+                               "%s: --set %s: '%s' is not a part field (fields: %s)", c->file,
+                               text, *key, list);
+    }
+    snprintf(path, path_cap, "parts[%d].%s", index, *key);
+    return TIPPE_OK;
+}
+
 static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
 {
     const char *eq = strchr(text, '=');
@@ -169,87 +273,9 @@ static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
     const char *key = field;
     char path[300];
     if (!strncmp(field, "parts.", 6) || !strncmp(field, "parts[", 6)) {
-        cJSON *parts = cJSON_GetObjectItemCaseSensitive(root, "parts");
-        if (!cJSON_IsArray(parts))
-            return tippe_json_fail(c, "parts", "must be an array of parts (cannot apply --set %s)",
-                                   text);
-        char *dot = strrchr(field, '.');
-        if (!dot || dot < field + 6 || dot[1] == '\0')
-            return tippe_error_set(c->err, TIPPE_EINPUT,
-                                   "%s: --set %s: expected parts.NAME.FIELD=VALUE", c->file, text);
-        *dot = '\0';
-        key = dot + 1;
-        /* parts.NAME.print.KEY: a field of the part's print block */
-        size_t flen2 = strlen(field);
-        int in_print = flen2 > 12 && !strcmp(field + flen2 - 6, ".print");
-        if (in_print)
-            field[flen2 - 6] = '\0';
-        int index = -1;
-        if (field[5] == '[') {
-            char *endp = NULL;
-            long i = strtol(field + 6, &endp, 10);
-            if (!endp || endp == field + 6 || strcmp(endp, "]") || i < 0 ||
-                i >= cJSON_GetArraySize(parts))
-                return tippe_error_set(c->err, TIPPE_EINPUT,
-                                       "%s: --set %s: no such part index (the file has %d parts)",
-                                       c->file, text, cJSON_GetArraySize(parts));
-            index = (int)i;
-        } else {
-            const char *want = field + 6;
-            char names[512] = "";
-            size_t n = 0;
-            int i = 0;
-            for (const cJSON *p = parts->child; p; p = p->next, i++) {
-                const cJSON *nm = cJSON_GetObjectItemCaseSensitive(p, "name");
-                if (!cJSON_IsString(nm))
-                    continue;
-                if (!strcmp(nm->valuestring, want) && index < 0)
-                    index = i;
-                int w = snprintf(names + n, sizeof names - n, "%s%s", n ? ", " : "",
-                                 nm->valuestring);
-                if (w > 0 && (size_t)w < sizeof names - n)
-                    n += (size_t)w;
-            }
-            if (index < 0)
-                return tippe_error_set(c->err, TIPPE_EINPUT,
-                                       "%s: --set %s: no part named '%s' (parts: %s)", c->file,
-                                       text, want, names);
-        }
-        obj = cJSON_GetArrayItem(parts, index);
-        if (!cJSON_IsObject(obj)) {
-            snprintf(path, sizeof path, "parts[%d]", index);
-            return tippe_json_fail(c, path, "must be an object (cannot apply --set %s)", text);
-        }
-        if (in_print) {
-            if (!tippe_json_in_list(key, print_keys)) {
-                char list[256];
-                tippe_json_key_list(list, sizeof list, print_keys, NULL);
-                return tippe_error_set(c->err, TIPPE_EINPUT,
-                                       "%s: --set %s: '%s' is not a print setting (settings: %s)",
-                                       c->file, text, key, list);
-            }
-            /* true, false or no block: an object of defaults, then this field */
-            cJSON *pr = cJSON_GetObjectItemCaseSensitive(obj, "print");
-            if (!cJSON_IsObject(pr)) {
-                cJSON *fresh = cJSON_CreateObject();
-                if (!fresh)
-                    return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
-                int rc = tippe_json_put(c, obj, "print", fresh);
-                if (rc)
-                    return rc;
-                pr = fresh;
-            }
-            obj = pr;
-            snprintf(path, sizeof path, "parts[%d].print.%s", index, key);
-        } else if (!tippe_json_in_list(key, all_part_keys)) {
-            char list[512];
-            tippe_json_key_list(list, sizeof list, all_part_keys, NULL);
-            return tippe_error_set(c->err, TIPPE_EINPUT,
-                                   "%s: --set %s: '%s' is not a part field (fields: %s)", c->file,
-                                   text, key, list);
-        } else {
-            snprintf(path, sizeof path, "parts[%d].%s", index, key);
-        }
+        int rc = override_part_target(c, root, field, text, &obj, &key, path, sizeof path);
+        if (rc)
+            return rc;
     } else {
         if (!tippe_json_in_list(key, top_keys) || !strcmp(key, "parts")) {
             char list[256];
@@ -355,46 +381,13 @@ static int parse_print(const tippe_json_reader *c, const cJSON *obj, const char 
     return TIPPE_OK;
 }
 
-static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, part *p)
+/* What part p is made of and how it is cut: material or density, void and
+ * cut_from, clip (has_moving, has_protrude: whether the file gave those). */
+static int parse_part_material(const tippe_json_reader *c, const cJSON *obj, const char *pre,
+                               part *p, int has_moving, int has_protrude)
 {
-    char pre[32], path[64], shape[16];
-    snprintf(pre, sizeof pre, "parts[%d]", index);
-    memset(p, 0, sizeof *p);
-    p->parent = -1;
-    if (!cJSON_IsObject(obj))
-        return tippe_json_wrong_type(c, pre, "an object", obj);
+    char path[64];
     int rc;
-    if ((rc = tippe_json_string(c, obj, pre, "shape", 1, shape, sizeof shape, NULL)))
-        return rc;
-    int s = 0;
-    while (s < N_SHAPES && strcmp(shape, shape_names[s]))
-        s++;
-    if (s == N_SHAPES) {
-        tippe_json_path(path, sizeof path, pre, "shape");
-        return tippe_json_fail(
-            c, path, "unknown shape '%s' (shapes: ball, shell, cylinder, tube, torus)", shape);
-    }
-    p->shape = (shape_kind)s;
-    char what[32];
-    snprintf(what, sizeof what, "a %s", shape_names[s]);
-    if ((rc = tippe_json_check_keys(c, obj, pre, what, part_common_keys, shape_keys[s])))
-        return rc;
-    if ((rc = tippe_json_string(c, obj, pre, "name", 1, p->name, sizeof p->name, NULL)))
-        return rc;
-    if (!p->name[0]) {
-        tippe_json_path(path, sizeof path, pre, "name");
-        return tippe_json_fail(c, path, "must not be empty");
-    }
-    if ((rc = tippe_json_string(c, obj, pre, "notes", 0, NULL, 0, NULL)))
-        return rc;
-    if ((rc = tippe_json_number(c, obj, pre, "z_mm", 0, &p->z_mm, NULL)))
-        return rc;
-    int has_void = 0, has_moving = 0, has_protrude = 0;
-    if ((rc = tippe_json_bool(c, obj, pre, "void", &p->is_void, &has_void)) ||
-        (rc = tippe_json_bool(c, obj, pre, "moving", &p->moving, &has_moving)) ||
-        (rc = tippe_json_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)) ||
-        (rc = parse_print(c, obj, pre, p)))
-        return rc;
     int has_mat = 0, has_dens = 0, has_cut = 0, has_clip = 0;
     char cut[NAME_LEN] = "", clip[16] = "";
     if ((rc = tippe_json_string(c, obj, pre, "material", 0, p->material, sizeof p->material,
@@ -457,6 +450,15 @@ static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, p
                                    "it moves)");
     }
 
+    return TIPPE_OK;
+}
+
+/* The dimensions of part p's shape. */
+static int parse_part_shape(const tippe_json_reader *c, const cJSON *obj, const char *pre,
+                            part *p)
+{
+    char path[64];
+    int rc;
     switch (p->shape) {
     case SHAPE_BALL:
     case SHAPE_SHELL:
@@ -479,7 +481,7 @@ static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, p
             return tippe_json_fail(c, path,
                                    "missing (required unless clip is given: a clipped %s without "
                                    "a height spans the clip ball)",
-                                   shape_names[s]);
+                                   shape_names[p->shape]);
         }
         if (p->inner_radius_mm >= p->radius_mm) {
             tippe_json_path(path, sizeof path, pre, "inner_radius_mm");
@@ -506,6 +508,51 @@ static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, p
         break;
     }
     return TIPPE_OK;
+}
+
+static int parse_part(const tippe_json_reader *c, const cJSON *obj, int index, part *p)
+{
+    char pre[32], path[64], shape[16];
+    snprintf(pre, sizeof pre, "parts[%d]", index);
+    memset(p, 0, sizeof *p);
+    p->parent = -1;
+    if (!cJSON_IsObject(obj))
+        return tippe_json_wrong_type(c, pre, "an object", obj);
+    int rc;
+    if ((rc = tippe_json_string(c, obj, pre, "shape", 1, shape, sizeof shape, NULL)))
+        return rc;
+    int s = 0;
+    while (s < N_SHAPES && strcmp(shape, shape_names[s]))
+        s++;
+    if (s == N_SHAPES) {
+        tippe_json_path(path, sizeof path, pre, "shape");
+        return tippe_json_fail(
+            c, path, "unknown shape '%s' (shapes: ball, shell, cylinder, tube, torus)", shape);
+    }
+    p->shape = (shape_kind)s;
+    char what[32];
+    snprintf(what, sizeof what, "a %s", shape_names[s]);
+    if ((rc = tippe_json_check_keys(c, obj, pre, what, part_common_keys, shape_keys[s])))
+        return rc;
+    if ((rc = tippe_json_string(c, obj, pre, "name", 1, p->name, sizeof p->name, NULL)))
+        return rc;
+    if (!p->name[0]) {
+        tippe_json_path(path, sizeof path, pre, "name");
+        return tippe_json_fail(c, path, "must not be empty");
+    }
+    if ((rc = tippe_json_string(c, obj, pre, "notes", 0, NULL, 0, NULL)))
+        return rc;
+    if ((rc = tippe_json_number(c, obj, pre, "z_mm", 0, &p->z_mm, NULL)))
+        return rc;
+    int has_void = 0, has_moving = 0, has_protrude = 0;
+    if ((rc = tippe_json_bool(c, obj, pre, "void", &p->is_void, &has_void)) ||
+        (rc = tippe_json_bool(c, obj, pre, "moving", &p->moving, &has_moving)) ||
+        (rc = tippe_json_bool(c, obj, pre, "may_protrude", &p->may_protrude, &has_protrude)) ||
+        (rc = parse_print(c, obj, pre, p)))
+        return rc;
+    if ((rc = parse_part_material(c, obj, pre, p, has_moving, has_protrude)))
+        return rc;
+    return parse_part_shape(c, obj, pre, p);
 }
 
 /* --------------------------------------------------------- materials table */
@@ -1406,7 +1453,8 @@ static int printed_moments(const tippe_json_reader *c, tippe_design *d, int i,
                                    p->measured_mass_g, p->name, m1 * 1e3, p->density_g_cm3);
     }
     p->solid_mass_kg = rho * solid.m;
-    p->skin_mass_kg = rho * (solid.m - core.core.m);
+    /* no walls and no skins: the core is the part, up to QAGS's 1e-12 */
+    p->skin_mass_kg = rho * fmax(0.0, solid.m - core.core.m);
     /* the error bound of each moment, relative to the printed part's */
     double lack = 1.0 - p->infill, printed_m = solid.m - lack * core.core.m;
     double printed_rr = solid.m_rr - lack * core.core.m_rr;
@@ -1455,6 +1503,8 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
         (rc = resolve_parts(c, d)) || (check && (rc = check_layout(c, d))) ||
         (rc = sum_moments(c, d)))
         return rc;
+    if (!check) /* a derived design (a field moved by a tolerance) needs no tolerances */
+        return TIPPE_OK;
     return tippe_tolerances_read(c, cJSON_GetObjectItemCaseSensitive(root, "tolerances"), d,
                                  &d->tolerances, &d->n_tolerances);
 }

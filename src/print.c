@@ -495,12 +495,76 @@ static int sample_heights(const core_model *M, double zlo, double zhi, breaks *s
     return 0;
 }
 
-int tippe_print_core_moments(const tippe_solid *part, const tippe_solid *voids, int n_voids,
-                             double wall_m, double skin_m, tippe_print_core *out,
-                             tippe_error *err)
+/* Every break of the core's signature in [zlo, zhi] (ends included, sorted),
+ * and the widest layer radius seen (*rmax). -1 if out of memory. */
+static int find_all_breaks(const core_model *M, double zlo, double zhi, breaks *brk,
+                           double *rmax)
 {
-    tippe_gsl_errors_as_codes();
-    memset(out, 0, sizeof *out);
+    breaks samples = {0};
+    int rc = -1;
+    if (sample_heights(M, zlo, zhi, &samples) || add_break(brk, zlo))
+        goto done;
+    *rmax = 0;
+    tivset prev, cur;
+    core_at(M, samples.z[0], &prev);
+    for (int i = 0; i < samples.n; i++) {
+        tivset lay;
+        layer(M, samples.z[i], &lay);
+        if (lay.n)
+            *rmax = fmax(*rmax, lay.iv[lay.n - 1].hi);
+        if (i == 0)
+            continue;
+        core_at(M, samples.z[i], &cur);
+        if (find_breaks(M, samples.z[i - 1], &prev, samples.z[i], &cur, BREAK_TOL * (zhi - zlo),
+                        brk, 0))
+            goto done;
+        prev = cur;
+    }
+    rc = add_break(brk, zhi);
+done:
+    free(samples.z);
+    return rc;
+}
+
+/* QAGS on every piece between breaks where the core is not empty; scale[k]
+ * sets the absolute tolerance of moment k. */
+static int integrate_pieces(const core_model *M, const breaks *brk, const double scale[4],
+                            gsl_integration_workspace *ws, tippe_print_core *out,
+                            tippe_error *err)
+{
+    double sum[4] = {0, 0, 0, 0};
+    for (int i = 0; i + 1 < brk->n; i++) {
+        double a = brk->z[i], b = brk->z[i + 1];
+        if (!(b > a))
+            continue;
+        tivset mid;
+        core_at(M, 0.5 * (a + b), &mid);
+        if (!mid.n)
+            continue;
+        out->n_pieces++;
+        for (int k = 0; k < 4; k++) {
+            slice_params sp = {M, k};
+            gsl_function f = {slice, &sp};
+            double res = 0, abserr = 0;
+            int st = gsl_integration_qags(&f, a, b, 1e-3 * EPS_REL * scale[k], EPS_REL, QAGS_LIMIT,
+                                          ws, &res, &abserr);
+            if (st != GSL_SUCCESS && !(abserr <= 1e-3 * ACCEPT_REL * scale[k]))
+                return tippe_error_set(err, TIPPE_ECOMPUTE,
+                                       "print model: GSL QAGS failed on z = %g .. %g m (%s, error "
+                                       "estimate %g of the part's scale)",
+                                       a, b, gsl_strerror(st), abserr / scale[k]);
+            sum[k] += res;
+            out->abserr[k] += abserr;
+        }
+    }
+    out->core = (tippe_moments){sum[0], sum[1], sum[2], sum[3]};
+    return TIPPE_OK;
+}
+
+/* Refuses what the model cannot do. */
+static int check_core_input(const tippe_solid *voids, int n_voids, double wall_m, double skin_m,
+                            tippe_error *err)
+{
     if (n_voids < 0 || n_voids > MAX_VOIDS)
         return tippe_error_set(err, TIPPE_EINPUT, "print model: %d voids (at most %d)", n_voids,
                                MAX_VOIDS);
@@ -514,76 +578,35 @@ int tippe_print_core_moments(const tippe_solid *part, const tippe_solid *voids, 
                                    "print model: a clipped torus void is not supported (the "
                                    "extreme radii of its annulus over a range of heights are "
                                    "not at a fixed height)");
+    return TIPPE_OK;
+}
+
+int tippe_print_core_moments(const tippe_solid *part, const tippe_solid *voids, int n_voids,
+                             double wall_m, double skin_m, tippe_print_core *out,
+                             tippe_error *err)
+{
+    tippe_gsl_errors_as_codes();
+    memset(out, 0, sizeof *out);
+    int rc = check_core_input(voids, n_voids, wall_m, skin_m, err);
+    if (rc)
+        return rc;
     core_model M = {part, voids, n_voids, wall_m, skin_m};
     double z0[2], z1[2];
     int ns = support(part, z0, z1);
     if (!ns)
         return TIPPE_OK; /* nothing printed */
-    double zlo = z0[0], zhi = z1[ns - 1];
-
-    breaks samples = {0}, brk = {0};
+    double zlo = z0[0], zhi = z1[ns - 1], rmax = 0;
+    breaks brk = {0};
     gsl_integration_workspace *ws = gsl_integration_workspace_alloc(QAGS_LIMIT);
-    int rc = TIPPE_OK;
-    if (!ws || sample_heights(&M, zlo, zhi, &samples) || add_break(&brk, zlo)) {
+    if (!ws || find_all_breaks(&M, zlo, zhi, &brk, &rmax)) {
         rc = tippe_error_set(err, TIPPE_ECOMPUTE, "print model: out of memory");
-        goto done;
+    } else {
+        /* scales for the absolute tolerances: the part's bounding cylinder */
+        double zabs = fmax(fabs(zlo), fabs(zhi)), vol = M_PI * rmax * rmax * (zhi - zlo);
+        double scale[4] = {vol, vol * zabs, vol * zabs * zabs, vol * rmax * rmax};
+        rc = integrate_pieces(&M, &brk, scale, ws, out, err);
     }
-    /* Scales for the absolute tolerances: the part's bounding cylinder. */
-    double rmax = 0, zabs = fmax(fabs(zlo), fabs(zhi));
-    tivset prev, cur;
-    core_at(&M, samples.z[0], &prev);
-    for (int i = 0; i < samples.n; i++) {
-        tivset lay;
-        layer(&M, samples.z[i], &lay);
-        if (lay.n)
-            rmax = fmax(rmax, lay.iv[lay.n - 1].hi);
-        if (i == 0)
-            continue;
-        core_at(&M, samples.z[i], &cur);
-        if (find_breaks(&M, samples.z[i - 1], &prev, samples.z[i], &cur,
-                        BREAK_TOL * (zhi - zlo), &brk, 0)) {
-            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "print model: out of memory");
-            goto done;
-        }
-        prev = cur;
-    }
-    if (add_break(&brk, zhi)) {
-        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "print model: out of memory");
-        goto done;
-    }
-    double vol = M_PI * rmax * rmax * (zhi - zlo);
-    double scale[4] = {vol, vol * zabs, vol * zabs * zabs, vol * rmax * rmax};
-    double sum[4] = {0, 0, 0, 0};
-    for (int i = 0; i + 1 < brk.n; i++) {
-        double a = brk.z[i], b = brk.z[i + 1];
-        if (!(b > a))
-            continue;
-        tivset mid;
-        core_at(&M, 0.5 * (a + b), &mid);
-        if (!mid.n)
-            continue;
-        out->n_pieces++;
-        for (int k = 0; k < 4; k++) {
-            slice_params sp = {&M, k};
-            gsl_function f = {slice, &sp};
-            double res = 0, abserr = 0;
-            int st = gsl_integration_qags(&f, a, b, 1e-3 * EPS_REL * scale[k], EPS_REL, QAGS_LIMIT,
-                                          ws, &res, &abserr);
-            if (st != GSL_SUCCESS && !(abserr <= 1e-3 * ACCEPT_REL * scale[k])) {
-                rc = tippe_error_set(err, TIPPE_ECOMPUTE,
-                                     "print model: GSL QAGS failed on z = %g .. %g m (%s, error "
-                                     "estimate %g of the part's scale)",
-                                     a, b, gsl_strerror(st), abserr / scale[k]);
-                goto done;
-            }
-            sum[k] += res;
-            out->abserr[k] += abserr;
-        }
-    }
-    out->core = (tippe_moments){sum[0], sum[1], sum[2], sum[3]};
-done:
     gsl_integration_workspace_free(ws);
-    free(samples.z);
     free(brk.z);
     return rc;
 }

@@ -348,6 +348,30 @@ int main(void)
     tippe_sweep_result_free(&r);
     tippe_design_free(d);
 
+    /* The docs' example block (a material's density among them: the designs
+     * moved by a tolerance carry no tolerances of their own). A moving part's
+     * z_mm is its offset from Z2, so the whole path shifts with it: every
+     * boundary moves by exactly -1 mm per mm (to the derivatives' ~1e-9). */
+    const char *block[] = {"tolerances={\"parts.screw.height_mm\": 0.1, \"parts.hole.radius_mm\": "
+                           "0.1, \"materials.ABSplus.density_g_cm3\": \"2%\", "
+                           "\"parts.screw.z_mm\": 0.25, \"radius_mm\": 0}"};
+    d = NULL;
+    CHECK(tippe_design_load(M12, block, 1, &d, &err) == TIPPE_OK, "%s", err.msg);
+    if (d && tippe_sweep_design(d, 0, 0, NULL, &r, &err) == TIPPE_OK) {
+        CHECK(tippe_sweep_bands(d, &r, &b, &err) == TIPPE_OK, "docs block: %s", err.msg);
+        int iz = -1;
+        for (int i = 0; i < tippe_design_n_tolerances(d); i++)
+            if (!strcmp(tippe_design_tolerance(d, i)->field, "parts.screw.z_mm"))
+                iz = i;
+        CHECK(iz >= 0 && b.n == 4, "z_mm tolerance %d, %d bands", iz, b.n);
+        for (int k = 0; iz >= 0 && k < b.n; k++)
+            CHECK(fabs(b.bands[k].dz_dp[iz] + 1) < 1e-6, "%s: dZ2*/dz_mm = %.12g, want -1",
+                  tippe_sweep_boundary_name(b.bands[k].boundary), b.bands[k].dz_dp[iz]);
+        tippe_sweep_bands_free(&b);
+        tippe_sweep_result_free(&r);
+    }
+    tippe_design_free(d);
+
     /* The printed body at 40 % infill: the infill's sensitivity goes through
      * the print model's quadrature (relative error ~1e-9), still far inside
      * the 1e-3 of check_derivatives. */
