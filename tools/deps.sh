@@ -5,7 +5,7 @@ set -euo pipefail
 TIPPE_DEBS=(build-essential cmake pkg-config libgsl-dev libcjson-dev libplplot-dev
             plplot-driver-cairo libopenmpi-dev openmpi-bin python3 python3-numpy python3-scipy
             libnlopt-dev lib3mf-dev admesh python3-stl libcairo2-dev
-            libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg)
+            libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg)
 missing=()
 for p in "${TIPPE_DEBS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -36,6 +36,7 @@ int tippe_cli_compare(int argc, char **argv);
 int tippe_cli_launch(int argc, char **argv);
 int tippe_cli_map(int argc, char **argv);
 int tippe_cli_check(int argc, char **argv);
+int tippe_cli_animate(int argc, char **argv);
 /* Under mpirun with more than one rank (OMPI_COMM_WORLD_SIZE > 1), replaces the
  * process by tippe-mpi from the same directory with the same arguments; returns
  * only if it cannot (2, with a message) or if not under mpirun (0). */

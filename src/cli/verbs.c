@@ -24,6 +24,7 @@ const tippe_cli_verb tippe_cli_verbs[] = {
     {"map", tippe_cli_map, "outcome of hand launches over a grid of Z2 and spin, heat map", 1},
     {"check", tippe_cli_check, "one central hand launch at one Z2 beside the calculator's zone",
      0},
+    {"animate", tippe_cli_animate, "a film (MP4, WebM, GIF) or a picture of one launch", 0},
 };
 const int tippe_cli_n_verbs = (int)(sizeof tippe_cli_verbs / sizeof tippe_cli_verbs[0]);
 

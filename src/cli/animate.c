@@ -1,0 +1,366 @@
+/* tippe animate: a film (or one picture) of a launch, from a scenario file or
+ * from a design's central hand launch (as tippe check). */
+#include "cli.h"
+
+#include "tippe/animate.h"
+#include "tippe/design.h"
+#include "tippe/json.h"
+#include "tippe/progress.h"
+#include "tippe/report.h"
+#include "tippe/scenario.h"
+
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+static const char *const VERB = "animate";
+
+/* What the command line asked for. */
+typedef struct {
+    const char *input, *out, *size_text, *format;
+    double speed, length_s, frame_t, z2_mm;
+    long fps;
+    int width, height, json, still, has_z2, is_design;
+    tippe_cli_sets over; /* scenario fields: the option shorthands */
+    tippe_cli_sets sets; /* --set: of the scenario, or of the design */
+} args;
+
+static int parse_size(const char *text, int *w, int *h)
+{
+    char x, tail;
+    long a, b;
+    if (sscanf(text, "%ld%c%ld%c", &a, &x, &b, &tail) != 3 || (x != 'x' && x != 'X'))
+        return 0;
+    if (a < 64 || a > 3840 || b < 64 || b > 2160 || a % 2 || b % 2)
+        return 0;
+    *w = (int)a;
+    *h = (int)b;
+    return 1;
+}
+
+/* The file's kind: a design has "parts" at its top (a scenario never has). */
+static int is_design_file(const char *path)
+{
+    tippe_error e;
+    tippe_json_reader *r = tippe_json_reader_new(path, &e, TIPPE_JSON_WORDS_KEY, "");
+    cJSON *root = NULL;
+    int design = r && tippe_json_load(r, 16, "file", &root) == TIPPE_OK &&
+                 cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts");
+    cJSON_Delete(root);
+    free(r);
+    return design;
+}
+
+/* Returns 0, or an exit status (TIPPE_CLI_HELP after --help). */
+static int parse_args(args *a, int argc, char **argv)
+{
+    tippe_cli_sets *ov = &a->over;
+    tippe_cli_opt opts[] = {
+        {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &a->out,
+         .arg = "FILE", .required = 1,
+         .help = "the film: .mp4 (H.264), .webm (VP9) or .gif; with --frame, a .png"},
+        {.name = "format", .kind = TIPPE_CLI_STRING, .value = &a->format, .arg = "mp4|webm|gif",
+         .help = "the film's format, when -o does not end in .mp4, .webm or .gif\n"
+                 "(-o - writes to standard output)"},
+        {.name = "speed", .kind = TIPPE_CLI_DOUBLE, .value = &a->speed, .arg = "X",
+         .min = 1e-9, .max = 1e9,
+         .help = "model seconds per second of film (default: the whole launch in\n"
+                 "--length seconds, docs/animate.md)"},
+        {.name = "length", .kind = TIPPE_CLI_DOUBLE, .value = &a->length_s, .arg = "S",
+         .unit = "s", .min = 0.5, .max = 1200, .def = "10",
+         .help = "film length when --speed is not given"},
+        {.name = "fps", .kind = TIPPE_CLI_LONG, .value = &a->fps, .arg = "N", .min = 1,
+         .max = 120, .def = "30", .help = "frames per second of film"},
+        {.name = "size", .kind = TIPPE_CLI_STRING, .value = &a->size_text, .arg = "WxH",
+         .def = "640x480", .help = "picture size in pixels, even, 64x64 .. 3840x2160"},
+        {.name = "frame", .kind = TIPPE_CLI_DOUBLE, .value = &a->frame_t, .arg = "T", .unit = "s",
+         .min = 0, .max = 1e9, .help = "write one picture at model time T instead of a film"},
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
+         .help = "print a JSON summary instead of the text"},
+        {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &a->z2_mm, .arg = "MM", .unit = "mm",
+         .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
+         .help = "the moving weight's position: required with a design; with a scenario\n"
+                 "whose top is a design, its top.z2_mm"},
+        {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.spin",
+         .arg = "RATE", .unit = "rad/s", .min = -1e6, .max = 1e6,
+         .help = "spin about the symmetry axis (initial.spin; design: 15rev/s)"},
+        {.name = "theta", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.theta",
+         .unit = "rad", .min = 0, .max = M_PI, .help = "tilt (initial.theta; design: 0.0674)"},
+        {.name = "theta-dot", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.theta_dot",
+         .arg = "RATE", .unit = "rad/s", .min = -1e6, .max = 1e6,
+         .help = "tilt rate (initial.theta_dot; design: 0)"},
+        {.name = "phi-dot", .kind = TIPPE_CLI_STRING, .value = ov, .field = "initial.phi_dot",
+         .arg = "RAD_S|RULE", .help = "precession (initial.phi_dot): rad/s, or steady, s1, s2,\n"
+                                      "s3 (design: steady)"},
+        {.name = "U", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.U", .unit = "m/s",
+         .min = -100, .max = 100, .help = "sliding velocity of the centre (initial.U; design: 0)"},
+        {.name = "V", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.V", .unit = "m/s",
+         .min = -100, .max = 100, .help = "its other component (initial.V; design: 0)"},
+        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "mu", .unit = "s/m",
+         .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12 (design: 0.1)"},
+        {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "g", .unit = "m/s^2",
+         .min = 0.01, .max = 1000, .help = "gravity (design: 9.81)"},
+        {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "t_end", .unit = "s",
+         .min = 1e-3, .max = 1e6, .help = "longest simulated time (design: 600)"},
+        {.name = "accuracy", .kind = TIPPE_CLI_STRING, .value = ov, .field = "accuracy",
+         .arg = "PRESET", .help = "fast, balanced or precise (design: balanced)"},
+        {.name = "stepper", .kind = TIPPE_CLI_STRING, .value = ov, .field = "accuracy.stepper",
+         .arg = "NAME", .help = "a GSL stepper instead of the preset's (docs/dynamics.md)"},
+        {.name = "rtol", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "accuracy.rtol",
+         .min = 1e-14, .max = 1e-2, .help = "relative tolerance instead of the preset's"},
+        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
+         .help = "any field of the scenario or, with a design, of the design; repeatable"},
+        {NULL},
+    };
+    tippe_cli_spec spec = {
+        .verb = VERB,
+        .synopsis = "(SCENARIO.json | DESIGN.json --z2 MM [--spin RATE]) -o FILM.mp4|.webm|.gif\n"
+                    "       [--speed X] [--fps N] [--size WxH] [--frame T -o PICTURE.png]",
+        .about =
+            "Films a launch: the ball as a transparent shell seen from above the table, with\n"
+            "a red dot at the pole on the weight's side (down at theta = 0), a blue stripe\n"
+            "along a meridian (it turns with the spin), the moving weight and the centre of\n"
+            "mass (quartered disc) inside, the contact point's path on the table, the time,\n"
+            "tilt, spin, Jellett drift and the verdict once proved, and theta against time.\n"
+            "Frames are states of the integration at exact frame times. A design without\n"
+            "launch options gets tippe launch's central hand launch, as tippe simulate.",
+        .after = "A progress bar is shown on stderr when it is a terminal. Exit status: 0 ok,\n"
+                 "2 bad usage or input, 1 the launch or the film could not be made.\n"
+                 "docs/animate.md describes the picture and the time scale.",
+        .opts = opts,
+        .min_args = 1,
+        .max_args = 1,
+        .args_name = "scenario or design file",
+    };
+    int n_args = 0;
+    int rc = tippe_cli_parse(&spec, argc, argv, &a->input, &n_args);
+    if (rc)
+        return rc;
+    if (a->size_text && !parse_size(a->size_text, &a->width, &a->height))
+        return tippe_cli_usage_error(VERB, "--size '%s': expected WxH, even, 64x64 .. 3840x2160 "
+                                     "pixels", a->size_text);
+    a->still = tippe_cli_find_opt(&spec, "frame")->seen;
+    a->has_z2 = tippe_cli_find_opt(&spec, "z2")->seen;
+    a->is_design = is_design_file(a->input);
+    if (a->is_design && !a->has_z2)
+        return tippe_cli_usage_error(VERB, "--z2 MM is required with a design file");
+    if (!a->is_design && a->has_z2) {
+        char num[64];
+        snprintf(num, sizeof num, "%.17g", a->z2_mm);
+        tippe_cli_sets_add(&a->over, "top.z2_mm", num);
+    }
+    if (!a->is_design) /* --set names scenario fields, after the shorthands */
+        for (int i = 0; i < a->sets.n; i++)
+            if (tippe_cli_sets_add(&a->over, NULL, a->sets.item[i]))
+                return tippe_cli_usage_error(VERB, "more than %d overrides", TIPPE_CLI_MAX_SETS);
+    return 0;
+}
+
+/* The launch of a scenario file or of a design's hand launch, with the
+ * design's weight for the picture when the top comes from a design. */
+static int load_launch(const args *a, tippe_animate_launch *l, tippe_error *err)
+{
+    tippe_scenario sc;
+    int rc = a->is_design ? tippe_scenario_for_design(a->input, a->z2_mm, a->sets.item,
+                                                      a->sets.n, a->over.item, a->over.n, &sc,
+                                                      err)
+                          : tippe_scenario_load(a->input, a->over.item, a->over.n, &sc, err);
+    if (rc)
+        return rc;
+    memset(l, 0, sizeof *l);
+    snprintf(l->title, sizeof l->title, "%s", sc.name);
+    l->model = sc.model;
+    l->initial = sc.initial;
+    l->t_end = sc.t_end;
+    l->accuracy = sc.accuracy;
+    if (sc.design_path[0]) {
+        /* Only for the picture of the weight: the top itself is the scenario's
+         * (a scenario file's own design "set" list is not applied to it). */
+        tippe_design *d = NULL;
+        const int n = a->is_design ? a->sets.n : 0;
+        if (tippe_design_load(sc.design_path, a->sets.item, n, &d, err) == TIPPE_OK)
+            tippe_animate_design_weight(d, sc.z2_mm, &sc.model.top, &l->weight_offset_m,
+                                        &l->weight_radius_m);
+        tippe_design_free(d);
+    }
+    return TIPPE_OK;
+}
+
+/* Writes the film or the picture through the report module (a temporary
+ * renamed into place, or straight to a device); *bytes is its size (-1 if not
+ * a regular file). FFmpeg seeks back to finish an MP4 or a WebM, so the
+ * encoder gets a stream of its own on the path the report module chose. */
+static int write_output(const args *a, const tippe_film *film, tippe_film_format format,
+                        long *bytes, tippe_error *err)
+{
+    tippe_report_file rf;
+    const char *what = a->still ? "the picture" : "the film";
+    int rc = tippe_report_open_name(&rf, a->out, what, err);
+    if (rc)
+        return rc;
+    FILE *f = fopen(rf.write_path, "wb");
+    if (!f) {
+        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: cannot write %s: %s", a->out, what,
+                             strerror(errno));
+        tippe_report_abort(&rf);
+        return rc;
+    }
+    if (a->still) {
+        rc = tippe_film_write_png(film, f, err);
+    } else {
+        tippe_progress prog;
+        tippe_progress_start(&prog, stderr, "tippe animate", tippe_film_work(film, format),
+                             TIPPE_PROGRESS_AUTO);
+        rc = tippe_film_write(film, format, f, &prog, err);
+        tippe_progress_finish(&prog);
+    }
+    const int write_failed = fflush(f) != 0 || ferror(f);
+    const int e = errno;
+    struct stat sb;
+    *bytes = rf.mode == TIPPE_REPORT_REPLACE && fstat(fileno(f), &sb) == 0 ? (long)sb.st_size
+                                                                            : -1;
+    if ((fclose(f) != 0 || write_failed) && !rc)
+        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: writing %s failed: %s", a->out, what,
+                             strerror(e));
+    if (rc) {
+        tippe_report_abort(&rf);
+        return rc;
+    }
+    return tippe_report_commit(&rf, err);
+}
+
+static void print_summary(const args *a, const tippe_film *f, int film_format, long bytes,
+                          double elapsed_s)
+{
+    const tippe_dynamics_result *r = &f->result;
+    /* A film written to standard output leaves it to the film. */
+    FILE *out = strcmp(a->out, "-") ? stdout : stderr;
+    if (a->json) {
+        cJSON *o = cJSON_CreateObject();
+        if (o) {
+            cJSON_AddStringToObject(o, "input", a->input);
+            cJSON_AddStringToObject(o, "output", a->out);
+            cJSON_AddStringToObject(o, "format", a->still ? "PNG"
+                                                          : tippe_film_format_name(film_format));
+            cJSON_AddNumberToObject(o, "width_px", f->opt.width_px);
+            cJSON_AddNumberToObject(o, "height_px", f->opt.height_px);
+            if (a->still) {
+                cJSON_AddNumberToObject(o, "t_s", f->samples[f->n_samples - 1].t);
+            } else {
+                cJSON_AddNumberToObject(o, "fps", f->opt.fps);
+                cJSON_AddNumberToObject(o, "frames", f->n_frames);
+                cJSON_AddNumberToObject(o, "film_s", (double)f->n_frames / f->opt.fps);
+                cJSON_AddNumberToObject(o, "speed", f->speed);
+                cJSON_AddNumberToObject(o, "t_shown_s", (f->n_frames - 1) * f->frame_dt);
+            }
+            cJSON_AddNumberToObject(o, "samples", f->n_samples);
+            cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(r->verdict));
+            cJSON_AddStringToObject(o, "how", tippe_decision_name(r->how));
+            if (r->verdict != TIPPE_VERDICT_UNDECIDED)
+                cJSON_AddNumberToObject(o, "t_verdict_s", r->t_verdict);
+            if (isfinite(r->theta_final_rad))
+                cJSON_AddNumberToObject(o, "theta_final_rad", r->theta_final_rad);
+            if (isfinite(r->barrier_gap_J))
+                cJSON_AddNumberToObject(o, "barrier_gap_J", r->barrier_gap_J);
+            if (isfinite(r->margin_J))
+                cJSON_AddNumberToObject(o, "margin_J", r->margin_J);
+            if (isfinite(f->t_settled))
+                cJSON_AddNumberToObject(o, "t_settled_s", f->t_settled);
+            cJSON_AddNumberToObject(o, "jellett_rel_drift", r->jellett_rel_drift);
+            if (bytes >= 0)
+                cJSON_AddNumberToObject(o, "bytes", (double)bytes);
+            else
+                cJSON_AddNullToObject(o, "bytes");
+            cJSON_AddNumberToObject(o, "elapsed_s", elapsed_s);
+        }
+        char *text = o ? cJSON_Print(o) : NULL;
+        cJSON_Delete(o);
+        if (text)
+            fprintf(out, "%s\n", text);
+        free(text);
+        return;
+    }
+    if (a->still) {
+        fprintf(out, "picture   %s: %dx%d PNG at t = %.6g s (%ld bytes)\n", a->out, f->opt.width_px,
+               f->opt.height_px, f->samples[f->n_samples - 1].t, bytes);
+    } else {
+        fprintf(out, "film      %s: %s, %dx%d, %d fps, %d frames = %.4g s of film (%ld bytes)\n",
+               a->out, tippe_film_format_name(film_format), f->opt.width_px, f->opt.height_px,
+               f->opt.fps, f->n_frames, (double)f->n_frames / f->opt.fps, bytes);
+        fprintf(out, "time      t = 0 .. %.6g s of the launch; 1 s of film = %.4g s\n",
+               (f->n_frames - 1) * f->frame_dt, f->speed);
+    }
+    if (r->verdict != TIPPE_VERDICT_UNDECIDED)
+        fprintf(out, "verdict   %s, decided (%s) at t = %.6g s; end state theta %.4g rad\n",
+                tippe_verdict_name(r->verdict), tippe_decision_name(r->how), r->t_verdict,
+                r->theta_final_rad);
+    if (isfinite(f->t_settled))
+        fprintf(out, "settled   theta within 0.05 rad of its end state from t = %.6g s\n",
+                f->t_settled);
+    else
+        fprintf(out, "verdict   none reached in the part shown (to t = %.6g s)\n", r->last.t);
+    fprintf(out, "accuracy  %d samples at exact times, Jellett drift %.2g, made in %.3g s\n",
+           f->n_samples, r->jellett_rel_drift, elapsed_s);
+}
+
+int tippe_cli_animate(int argc, char **argv)
+{
+    args a = {.length_s = 10, .fps = 30, .width = 640, .height = 480};
+    int rc = parse_args(&a, argc, argv);
+    if (rc)
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
+    tippe_film_format format = TIPPE_FILM_MP4;
+    const char *dot = strrchr(a.out, '.');
+    const int png = dot && !strchr(dot, '/') && !strcasecmp(dot, ".png");
+    if (a.still && !png)
+        return tippe_cli_usage_error(VERB, "--frame writes a picture: -o %s must end in .png",
+                                     a.out);
+    if (!a.still && png)
+        return tippe_cli_usage_error(VERB, "-o %s: a .png is one picture; give --frame T", a.out);
+    if (a.format) {
+        char name[16];
+        snprintf(name, sizeof name, ".%s", a.format);
+        if (a.still || !tippe_film_format_of(name, &format))
+            return tippe_cli_usage_error(VERB, "--format %s: expected mp4, webm or gif (for a "
+                                         "film)", a.format);
+    } else if (!a.still && !tippe_film_format_of(a.out, &format)) {
+        return tippe_cli_usage_error(VERB, "-o %s: unknown film format (use .mp4, .webm or "
+                                     ".gif, or give --format)", a.out);
+    }
+    /* Before any work, so that bad usage costs nothing and leaves nothing. */
+    if (tippe_cli_check_output(VERB, "-o", a.out, 0))
+        return 2;
+
+    tippe_error err;
+    tippe_animate_launch launch;
+    rc = load_launch(&a, &launch, &err);
+    if (rc)
+        return tippe_cli_fail(VERB, &err, rc);
+    tippe_animate_options opt;
+    tippe_animate_options_default(&opt);
+    opt.speed = a.speed;
+    opt.film_s = a.length_s;
+    opt.fps = (int)a.fps;
+    opt.width_px = a.width;
+    opt.height_px = a.height;
+
+    const double t0 = tippe_cli_now_s();
+    tippe_film film;
+    rc = a.still ? tippe_film_make_still(&launch, &opt, a.frame_t, &film, &err)
+                 : tippe_film_make(&launch, &opt, &film, &err);
+    long bytes = -1;
+    if (!rc)
+        rc = write_output(&a, &film, format, &bytes, &err);
+    if (rc) {
+        tippe_film_free(&film);
+        return tippe_cli_fail(VERB, &err, rc);
+    }
+    print_summary(&a, &film, format, bytes, tippe_cli_now_s() - t0);
+    tippe_film_free(&film);
+    return 0;
+}
