@@ -1458,6 +1458,10 @@ static int printed_moments(const tippe_json_reader *c, tippe_design *d, int i,
     /* the error bound of each moment, relative to the printed part's */
     double lack = 1.0 - p->infill, printed_m = solid.m - lack * core.core.m;
     double printed_rr = solid.m_rr - lack * core.core.m_rr;
+    if (!(printed_m > 0) || !(printed_rr > 0))
+        return tippe_json_fail(c, pth, "part '%s' printed this way has no material (no walls, "
+                                       "no skins and 0 infill)",
+                               p->name);
     p->print_rel_error = lack * fmax(core.abserr[0] / printed_m, core.abserr[3] / printed_rr);
     /* the part's own region, its voids added back: they subtract as usual */
     *out = tippe_moments_sub(part_moments(p), tippe_moments_scale(core.core, lack));
@@ -2134,4 +2138,39 @@ double tippe_design_min_hole_wall_mm(const tippe_design *d, const char **hole)
         }
     }
     return wall;
+}
+
+int tippe_design_part_solid(const tippe_design *d, int i, tippe_design_solid *out)
+{
+    if (i < 0 || i >= d->n_parts)
+        return tippe_error_set(NULL, TIPPE_EINPUT, "no part %d", i);
+    const part *p = &d->parts[i];
+    *out = (tippe_design_solid){.shape = shape_names[p->shape],
+                                .is_void = p->is_void,
+                                .moving = p->moving,
+                                .parent = p->parent,
+                                .z_mm = p->z_mm,
+                                .clip_radius_mm = p->clip_radius_mm,
+                                .clip_inner_mm = p->clip_inner_mm};
+    switch (p->shape) {
+    case SHAPE_BALL:
+        out->radius_mm = p->radius_mm;
+        break;
+    case SHAPE_SHELL:
+        out->radius_mm = p->radius_mm;
+        out->thickness_mm = p->thickness_mm;
+        break;
+    case SHAPE_CYLINDER:
+    case SHAPE_TUBE:
+        out->radius_mm = p->radius_mm;
+        out->inner_radius_mm = p->inner_radius_mm;
+        out->height_mm = p->height_mm;
+        break;
+    default:
+        out->centre_radius_mm = p->centre_radius_mm;
+        out->radial_semi_mm = p->radial_semi_mm;
+        out->axial_semi_mm = p->axial_semi_mm;
+        break;
+    }
+    return TIPPE_OK;
 }

@@ -168,16 +168,36 @@ int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path
             beyond = 1;
         }
     }
-    /* Each zone boundary's tolerance band, shaded over the zones. */
+    /* The tolerance bands, shaded once where several overlap (stacked shades
+     * would hide the zone beneath); each band is also drawn as an error bar
+     * below the zone names, so that overlapping bands stay apart. */
     int banded = 0;
-    for (int i = 0; b && i < b->n; i++) {
-        double w = b->bands[i].band_mm, x = b->bands[i].z2_mm;
-        if (!(w > 0))
-            continue;
-        w = isfinite(w) ? w : xspan;
-        tippe_plot_rect(fmax(r->from_mm, x - w), fmin(r->to_mm, x + w), ymin, ymax, C_BAND,
-                        BAND_ALPHA);
-        banded = 1;
+    double *lo = b && b->n > 0 ? malloc(2 * (size_t)b->n * sizeof *lo) : NULL;
+    if (lo) {
+        double *hi = lo + b->n;
+        int nb = 0;
+        for (int i = 0; i < b->n; i++) {
+            double w = b->bands[i].band_mm, x = b->bands[i].z2_mm;
+            if (!(w > 0))
+                continue;
+            w = isfinite(w) ? w : xspan;
+            lo[nb] = fmax(r->from_mm, x - w);
+            hi[nb++] = fmin(r->to_mm, x + w);
+        }
+        banded = nb > 0;
+        /* bands come in order of Z2 and have similar widths; merge by sweep */
+        for (int i = 0; i < nb;) {
+            double a = lo[i], e = hi[i];
+            int j = i + 1;
+            while (j < nb && lo[j] <= e) {
+                a = fmin(a, lo[j]);
+                e = fmax(e, hi[j]);
+                j++;
+            }
+            tippe_plot_rect(a, e, ymin, ymax, C_BAND, BAND_ALPHA);
+            i = j;
+        }
+        free(lo);
     }
     tippe_plot_grid();
     double zero[2] = {0.0, 0.0}, xr[2] = {r->from_mm, r->to_mm};
@@ -259,6 +279,18 @@ int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path
                         0.5, 1.1, 0x000000u, tippe_group_name(zn->group));
     }
 
+    for (int i = 0; banded && i < b->n; i++) {
+        double w = b->bands[i].band_mm, x = b->bands[i].z2_mm;
+        if (!(w > 0) || !isfinite(w))
+            continue;
+        double y = ymax - (0.14 + 0.035 * (i % 3)) * (ymax - ymin), dy = 0.012 * (ymax - ymin);
+        double bx[2] = {fmax(r->from_mm, x - w), fmin(r->to_mm, x + w)}, by[2] = {y, y};
+        tippe_plot_line(2, bx, by, C_BAND, 1.4, TIPPE_PLOT_SOLID);
+        for (int e = 0; e < 2; e++) {
+            double tx[2] = {bx[e], bx[e]}, ty[2] = {y - dy, y + dy};
+            tippe_plot_line(2, tx, ty, C_BAND, 1.4, TIPPE_PLOT_SOLID);
+        }
+    }
     tippe_plot_axes("Z#d2#u: height of the moving weight's midpoint above the centre (mm)",
                     "A/C − 1", "groups of Theorem 5.1 along the travel");
     if (title) {

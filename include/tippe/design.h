@@ -135,6 +135,24 @@ int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, i
  * the top rolls on (radius radius_mm, centred). */
 int tippe_design_forms_sphere(const tippe_design *d, int i);
 
+/* The solid of part i, for exporters that rebuild its shape (mm). Fields that
+ * the shape does not use are 0. clip_radius_mm is the ball the part is
+ * intersected with (0: not clipped); height_mm is resolved (a clipped cylinder
+ * without one spans its clip ball). parent is a void's part index, else -1;
+ * for a moving part (or a void of one) z_mm is the offset from Z2. */
+typedef struct {
+    const char *shape; /* as in tippe_design_part_info */
+    int is_void, moving, parent;
+    double radius_mm, inner_radius_mm, thickness_mm, height_mm;
+    double centre_radius_mm, radial_semi_mm, axial_semi_mm;
+    double z_mm, clip_radius_mm;
+    double clip_inner_mm; /* clip "shell": the part is cut to the wall between this
+                             radius and clip_radius_mm; else 0 */
+} tippe_design_solid;
+
+/* Fills *out for part i; TIPPE_EINPUT if i is out of range. */
+int tippe_design_part_solid(const tippe_design *d, int i, tippe_design_solid *out);
+
 void tippe_design_free(tippe_design *d);
 
 /* The thinnest wall of material around a hole (a cylinder or tube void cut

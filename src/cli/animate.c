@@ -23,11 +23,10 @@ static const char *const VERB = "animate";
 /* What the command line asked for. */
 typedef struct {
     const char *input, *out, *size_text, *format;
-    double speed, length_s, frame_t, z2_mm;
+    double speed, length_s, frame_t;
     long fps;
-    int width, height, json, still, has_z2, is_design;
-    tippe_cli_sets over; /* scenario fields: the option shorthands */
-    tippe_cli_sets sets; /* --set: of the scenario, or of the design */
+    int width, height, json, still;
+    tippe_cli_launch_args l; /* the launch: scenario or design, and its options */
 } args;
 
 static int parse_size(const char *text, int *w, int *h)
@@ -43,23 +42,9 @@ static int parse_size(const char *text, int *w, int *h)
     return 1;
 }
 
-/* The file's kind: a design has "parts" at its top (a scenario never has). */
-static int is_design_file(const char *path)
-{
-    tippe_error e;
-    tippe_json_reader *r = tippe_json_reader_new(path, &e, TIPPE_JSON_WORDS_KEY, "");
-    cJSON *root = NULL;
-    int design = r && tippe_json_load(r, 16, "file", &root) == TIPPE_OK &&
-                 cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts");
-    cJSON_Delete(root);
-    free(r);
-    return design;
-}
-
 /* Returns 0, or an exit status (TIPPE_CLI_HELP after --help). */
 static int parse_args(args *a, int argc, char **argv)
 {
-    tippe_cli_sets *ov = &a->over;
     tippe_cli_opt opts[] = {
         {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &a->out,
          .arg = "FILE", .required = 1,
@@ -82,39 +67,7 @@ static int parse_args(args *a, int argc, char **argv)
          .min = 0, .max = 1e9, .help = "write one picture at model time T instead of a film"},
         {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
          .help = "print a JSON summary instead of the text"},
-        {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &a->z2_mm, .arg = "MM", .unit = "mm",
-         .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
-         .help = "the moving weight's position: required with a design; with a scenario\n"
-                 "whose top is a design, its top.z2_mm"},
-        {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.spin",
-         .arg = "RATE", .unit = "rad/s", .min = -1e6, .max = 1e6,
-         .help = "spin about the symmetry axis (initial.spin; design: 15rev/s)"},
-        {.name = "theta", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.theta",
-         .unit = "rad", .min = 0, .max = M_PI, .help = "tilt (initial.theta; design: 0.0674)"},
-        {.name = "theta-dot", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.theta_dot",
-         .arg = "RATE", .unit = "rad/s", .min = -1e6, .max = 1e6,
-         .help = "tilt rate (initial.theta_dot; design: 0)"},
-        {.name = "phi-dot", .kind = TIPPE_CLI_STRING, .value = ov, .field = "initial.phi_dot",
-         .arg = "RAD_S|RULE", .help = "precession (initial.phi_dot): rad/s, or steady, s1, s2,\n"
-                                      "s3 (design: steady)"},
-        {.name = "U", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.U", .unit = "m/s",
-         .min = -100, .max = 100, .help = "sliding velocity of the centre (initial.U; design: 0)"},
-        {.name = "V", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.V", .unit = "m/s",
-         .min = -100, .max = 100, .help = "its other component (initial.V; design: 0)"},
-        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "mu", .unit = "s/m",
-         .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12 (design: 0.1)"},
-        {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "g", .unit = "m/s^2",
-         .min = 0.01, .max = 1000, .help = "gravity (design: 9.81)"},
-        {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "t_end", .unit = "s",
-         .min = 1e-3, .max = 1e6, .help = "longest simulated time (design: 600)"},
-        {.name = "accuracy", .kind = TIPPE_CLI_STRING, .value = ov, .field = "accuracy",
-         .arg = "PRESET", .help = "fast, balanced or precise (design: balanced)"},
-        {.name = "stepper", .kind = TIPPE_CLI_STRING, .value = ov, .field = "accuracy.stepper",
-         .arg = "NAME", .help = "a GSL stepper instead of the preset's (docs/dynamics.md)"},
-        {.name = "rtol", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "accuracy.rtol",
-         .min = 1e-14, .max = 1e-2, .help = "relative tolerance instead of the preset's"},
-        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
-         .help = "any field of the scenario or, with a design, of the design; repeatable"},
+        TIPPE_CLI_LAUNCH_OPTS(&a->l),
         {NULL},
     };
     tippe_cli_spec spec = {
@@ -145,20 +98,7 @@ static int parse_args(args *a, int argc, char **argv)
         return tippe_cli_usage_error(VERB, "--size '%s': expected WxH, even, 64x64 .. 3840x2160 "
                                      "pixels", a->size_text);
     a->still = tippe_cli_find_opt(&spec, "frame")->seen;
-    a->has_z2 = tippe_cli_find_opt(&spec, "z2")->seen;
-    a->is_design = is_design_file(a->input);
-    if (a->is_design && !a->has_z2)
-        return tippe_cli_usage_error(VERB, "--z2 MM is required with a design file");
-    if (!a->is_design && a->has_z2) {
-        char num[64];
-        snprintf(num, sizeof num, "%.17g", a->z2_mm);
-        tippe_cli_sets_add(&a->over, "top.z2_mm", num);
-    }
-    if (!a->is_design) /* --set names scenario fields, after the shorthands */
-        for (int i = 0; i < a->sets.n; i++)
-            if (tippe_cli_sets_add(&a->over, NULL, a->sets.item[i]))
-                return tippe_cli_usage_error(VERB, "more than %d overrides", TIPPE_CLI_MAX_SETS);
-    return 0;
+    return tippe_cli_launch_finish(VERB, &spec, a->input, &a->l);
 }
 
 /* The launch of a scenario file or of a design's hand launch, with the
@@ -166,10 +106,7 @@ static int parse_args(args *a, int argc, char **argv)
 static int load_launch(const args *a, tippe_animate_launch *l, tippe_error *err)
 {
     tippe_scenario sc;
-    int rc = a->is_design ? tippe_scenario_for_design(a->input, a->z2_mm, a->sets.item,
-                                                      a->sets.n, a->over.item, a->over.n, &sc,
-                                                      err)
-                          : tippe_scenario_load(a->input, a->over.item, a->over.n, &sc, err);
+    int rc = tippe_cli_launch_load(a->input, &a->l, &sc, err);
     if (rc)
         return rc;
     memset(l, 0, sizeof *l);
@@ -182,8 +119,8 @@ static int load_launch(const args *a, tippe_animate_launch *l, tippe_error *err)
         /* Only for the picture of the weight: the top itself is the scenario's
          * (a scenario file's own design "set" list is not applied to it). */
         tippe_design *d = NULL;
-        const int n = a->is_design ? a->sets.n : 0;
-        if (tippe_design_load(sc.design_path, a->sets.item, n, &d, err) == TIPPE_OK)
+        const int n = a->l.is_design ? a->l.sets.n : 0;
+        if (tippe_design_load(sc.design_path, a->l.sets.item, n, &d, err) == TIPPE_OK)
             tippe_animate_design_weight(d, sc.z2_mm, &sc.model.top, &l->weight_offset_m,
                                         &l->weight_radius_m);
         tippe_design_free(d);
@@ -260,15 +197,9 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
             }
             cJSON_AddNumberToObject(o, "samples", f->n_samples);
             cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(r->verdict));
-            cJSON_AddStringToObject(o, "how", tippe_decision_name(r->how));
             if (r->verdict != TIPPE_VERDICT_UNDECIDED)
                 cJSON_AddNumberToObject(o, "t_verdict_s", r->t_verdict);
-            if (isfinite(r->theta_final_rad))
-                cJSON_AddNumberToObject(o, "theta_final_rad", r->theta_final_rad);
-            if (isfinite(r->barrier_gap_J))
-                cJSON_AddNumberToObject(o, "barrier_gap_J", r->barrier_gap_J);
-            if (isfinite(r->margin_J))
-                cJSON_AddNumberToObject(o, "margin_J", r->margin_J);
+            tippe_cli_json_verdict_proof(o, r);
             if (isfinite(f->t_settled))
                 cJSON_AddNumberToObject(o, "t_settled_s", f->t_settled);
             cJSON_AddNumberToObject(o, "jellett_rel_drift", r->jellett_rel_drift);

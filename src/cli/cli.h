@@ -5,9 +5,11 @@
 #ifndef TIPPE_CLI_H
 #define TIPPE_CLI_H
 
+#include <math.h>
 #include <stdio.h>
 
 #include "tippe/dynamics.h"
+#include "tippe/scenario.h"
 #include "tippe/error.h"
 
 struct cJSON;
@@ -37,6 +39,7 @@ int tippe_cli_launch(int argc, char **argv);
 int tippe_cli_map(int argc, char **argv);
 int tippe_cli_check(int argc, char **argv);
 int tippe_cli_animate(int argc, char **argv);
+int tippe_cli_export(int argc, char **argv);
 /* Under mpirun with more than one rank (OMPI_COMM_WORLD_SIZE > 1), replaces the
  * process by tippe-mpi from the same directory with the same arguments; returns
  * only if it cannot (2, with a message) or if not under mpirun (0). */
@@ -237,6 +240,73 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
  * spin_final_rad_s, phi_dot_final_rad_s, theta_range_rad, barrier_gap_J,
  * margin_J, Rn_bound_N, t_flip_s (null where not applicable). */
 void tippe_cli_json_verdict_proof(struct cJSON *o, const tippe_dynamics_result *r);
+
+/* ---- one launch, from a scenario file or a design (tippe simulate, animate) ---- */
+
+/* Largest spin or other rate a launch option takes, rad/s. */
+#define TIPPE_CLI_RATE_MAX_RAD_S 1e5
+
+typedef struct {
+    double z2_mm;
+    const char *phi_dot;  /* --phi-dot as typed: a rule or a rate */
+    int is_design;        /* the file is a design (it has "parts") */
+    tippe_cli_sets over;  /* scenario fields: the option shorthands (and a scenario's --set) */
+    tippe_cli_sets sets;  /* --set as given: of the scenario, or of the design */
+} tippe_cli_launch_args;
+
+/* The launch options both verbs read alike, for their option tables:
+ * --z2, --spin, --theta, --theta-dot, --phi-dot, --U, --V, --mu, --g, --t-end,
+ * --accuracy, --stepper, --rtol and --set, into the tippe_cli_launch_args *L. */
+#define TIPPE_CLI_LAUNCH_OPTS(L)                                                                   \
+    {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->z2_mm, .arg = "MM", .unit = "mm",    \
+     .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,                                     \
+     .help = "the moving weight's position: required with a design; with a scenario\n"           \
+             "whose top is a design, its top.z2_mm"},                                             \
+    {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "initial.spin",      \
+     .arg = "RATE", .unit = "rad/s", .min = -TIPPE_CLI_RATE_MAX_RAD_S,                            \
+     .max = TIPPE_CLI_RATE_MAX_RAD_S,                                                              \
+     .help = "spin about the symmetry axis (initial.spin; design: 15rev/s)"},                     \
+    {.name = "theta", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "initial.theta",    \
+     .unit = "rad", .min = 0, .max = M_PI, .help = "tilt (initial.theta; design: 0.0674)"},       \
+    {.name = "theta-dot", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over,                          \
+     .field = "initial.theta_dot", .arg = "RATE", .unit = "rad/s",                                \
+     .min = -TIPPE_CLI_RATE_MAX_RAD_S, .max = TIPPE_CLI_RATE_MAX_RAD_S,                           \
+     .help = "tilt rate (initial.theta_dot; design: 0)"},                                         \
+    {.name = "phi-dot", .kind = TIPPE_CLI_STRING, .value = &(L)->phi_dot, .arg = "RATE|RULE",     \
+     .help = "precession (initial.phi_dot): rad/s, or steady, s1, s2, s3\n"                      \
+             "(design: steady)"},                                                                 \
+    {.name = "U", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "initial.U",            \
+     .unit = "m/s", .min = -100, .max = 100,                                                       \
+     .help = "sliding velocity of the centre (initial.U; design: 0)"},                            \
+    {.name = "V", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "initial.V",            \
+     .unit = "m/s", .min = -100, .max = 100, .help = "its other component (initial.V; design: 0)"}, \
+    {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "mu", .unit = "s/m",   \
+     .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12 (design: 0.1)"},            \
+    {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "g", .unit = "m/s^2",   \
+     .min = 0.01, .max = 1000, .help = "gravity (design: 9.81)"},                                 \
+    {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "t_end",            \
+     .unit = "s", .min = 1e-3, .max = 1e6, .help = "longest simulated time (design: 600)"},       \
+    {.name = "accuracy", .kind = TIPPE_CLI_STRING, .value = &(L)->over, .field = "accuracy",      \
+     .arg = "PRESET", .help = "fast, balanced or precise (design: balanced)"},                    \
+    {.name = "stepper", .kind = TIPPE_CLI_STRING, .value = &(L)->over,                            \
+     .field = "accuracy.stepper", .arg = "NAME",                                                  \
+     .help = "a GSL stepper instead of the preset's (docs/dynamics.md)"},                         \
+    {.name = "rtol", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "accuracy.rtol",     \
+     .min = 1e-14, .max = 1e-2, .help = "relative tolerance instead of the preset's"},            \
+    {.name = "set", .kind = TIPPE_CLI_SET, .value = &(L)->sets, .arg = "FIELD=VALUE",             \
+     .help = "any field of the scenario (e.g. --set top.C=1e-6) or, with a design,\n"            \
+             "of the design (e.g. --set radius_mm=30); repeatable"}
+
+/* After tippe_cli_parse(): tells a design from a scenario by file's content,
+ * requires --z2 with a design, and turns --phi-dot, a scenario's --z2 and
+ * its --set into overrides. 0, or 2 after a usage error. */
+int tippe_cli_launch_finish(const char *verb, tippe_cli_spec *spec, const char *file,
+                            tippe_cli_launch_args *l);
+
+/* The launch as a scenario: the file's, or the design's central hand launch
+ * (tippe_scenario_for_design), with the overrides. A library status. */
+int tippe_cli_launch_load(const char *file, const tippe_cli_launch_args *l,
+                          tippe_scenario *sc, tippe_error *err);
 
 /* Seconds on the monotonic clock, for the run times the verbs report. */
 double tippe_cli_now_s(void);

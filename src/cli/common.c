@@ -3,6 +3,7 @@
  * checks its output files the same way. */
 #include "cli.h"
 
+#include "tippe/json.h"
 #include "tippe/plot.h"
 #include "tippe/report.h"
 
@@ -280,4 +281,68 @@ double tippe_cli_now_s(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* ---- one launch, from a scenario file or a design ---------------------------- */
+
+/* The file's kind: a design has "parts" at its top (a scenario never has). */
+static int is_design_file(const char *path)
+{
+    tippe_error err;
+    tippe_json_reader *c = tippe_json_reader_new(path, &err, TIPPE_JSON_WORDS_KEY, "");
+    cJSON *root = NULL;
+    int design = c && tippe_json_load(c, 16, "file", &root) == TIPPE_OK &&
+                 cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts");
+    cJSON_Delete(root);
+    free(c);
+    return design;
+}
+
+/* --phi-dot: a rule, or a rate with its unit, as the override initial.phi_dot. */
+static int add_phi_dot(const char *verb, tippe_cli_launch_args *l)
+{
+    static const char *const rules[] = {"steady", "s1", "s2", "s3"};
+    for (int i = 0; i < 4; i++)
+        if (!strcmp(l->phi_dot, rules[i]))
+            return tippe_cli_sets_add(&l->over, "initial.phi_dot", l->phi_dot) ? 2 : 0;
+    double x;
+    char num[64];
+    if (!tippe_cli_parse_unit(l->phi_dot, "rad/s", &x) || !(fabs(x) <= TIPPE_CLI_RATE_MAX_RAD_S))
+        return tippe_cli_usage_error(verb,
+                                     "--phi-dot '%s': expected steady, s1, s2, s3 or a number "
+                                     "of rad/s from -%g to %g",
+                                     l->phi_dot, TIPPE_CLI_RATE_MAX_RAD_S,
+                                     TIPPE_CLI_RATE_MAX_RAD_S);
+    snprintf(num, sizeof num, "%.17g", x);
+    return tippe_cli_sets_add(&l->over, "initial.phi_dot", num) ? 2 : 0;
+}
+
+int tippe_cli_launch_finish(const char *verb, tippe_cli_spec *spec, const char *file,
+                            tippe_cli_launch_args *l)
+{
+    int rc;
+    if (l->phi_dot && (rc = add_phi_dot(verb, l)) != 0)
+        return rc;
+    const int has_z2 = tippe_cli_find_opt(spec, "z2")->seen;
+    l->is_design = is_design_file(file);
+    if (l->is_design && !has_z2)
+        return tippe_cli_usage_error(verb, "--z2 MM is required with a design file");
+    if (!l->is_design && has_z2) {
+        char num[64];
+        snprintf(num, sizeof num, "%.17g", l->z2_mm);
+        tippe_cli_sets_add(&l->over, "top.z2_mm", num);
+    }
+    if (!l->is_design) /* --set names scenario fields, after the shorthands */
+        for (int i = 0; i < l->sets.n; i++)
+            if (tippe_cli_sets_add(&l->over, NULL, l->sets.item[i]))
+                return tippe_cli_usage_error(verb, "more than %d overrides", TIPPE_CLI_MAX_SETS);
+    return 0;
+}
+
+int tippe_cli_launch_load(const char *file, const tippe_cli_launch_args *l, tippe_scenario *sc,
+                          tippe_error *err)
+{
+    return l->is_design ? tippe_scenario_for_design(file, l->z2_mm, l->sets.item, l->sets.n,
+                                                    l->over.item, l->over.n, sc, err)
+                        : tippe_scenario_load(file, l->over.item, l->over.n, sc, err);
 }

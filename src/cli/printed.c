@@ -2,10 +2,65 @@
 #include "cli.h"
 
 #include "tippe/design.h"
+#include "tippe/profile.h"
 
 #include <cjson/cJSON.h>
 
+#include <math.h>
 #include <stdio.h>
+
+/* The printed bodies as tippe export writes them (default clearance), with
+ * their exact volumes: what a slicer's volume estimate should approach. */
+static void print_bodies(FILE *out, const tippe_design *d)
+{
+    tippe_profile_options o = tippe_profile_defaults();
+    tippe_profile_set s;
+    tippe_error err = {0};
+    if (tippe_profile_build(d, &o, &s, &err)) {
+        fprintf(out, "bodies   none printed (%s)\n", err.msg);
+        return;
+    }
+    for (int b = 0; b < s.n_bodies; b++) {
+        const tippe_profile_body *e = &s.body[b];
+        double v = isnan(e->exact_volume_mm3) ? e->polygon_volume_mm3 : e->exact_volume_mm3;
+        fprintf(out, "%s%s (%s): %.1f mm^3 = %.3f cm^3 printed volume\n",
+                b ? "         " : "bodies   ", e->name, e->material, v, v * 1e-3);
+    }
+    int grown = 0;
+    for (int i = 0; i < s.n_parts; i++)
+        grown |= s.clearance_applied[i];
+    fprintf(out, "         (as tippe export writes them%s; compare with the slicer's estimate)\n",
+            grown ? ", holes for hardware 0.2 mm wider in radius than in the mass model" : "");
+    tippe_profile_set_free(&s);
+}
+
+static int bodies_json(struct cJSON *o, const tippe_design *d)
+{
+    tippe_profile_options opt = tippe_profile_defaults();
+    tippe_profile_set s;
+    tippe_error err = {0};
+    cJSON *arr = cJSON_AddArrayToObject(o, "printed_bodies");
+    if (!arr)
+        return -1;
+    if (tippe_profile_build(d, &opt, &s, &err))
+        return 0; /* nothing printable: an empty list */
+    int ok = 1;
+    for (int b = 0; ok && b < s.n_bodies; b++) {
+        const tippe_profile_body *e = &s.body[b];
+        cJSON *j = cJSON_CreateObject();
+        ok = j && cJSON_AddItemToArray(arr, j);
+        if (!ok) {
+            cJSON_Delete(j);
+            break;
+        }
+        ok = cJSON_AddStringToObject(j, "name", e->name) &&
+             cJSON_AddStringToObject(j, "material", e->material) &&
+             cJSON_AddNumberToObject(j, "volume_mm3", e->exact_volume_mm3) &&
+             cJSON_AddNumberToObject(j, "clearance_mm", opt.clearance_mm);
+    }
+    tippe_profile_set_free(&s);
+    return ok ? 0 : -1;
+}
 
 void tippe_cli_print_printed_parts(FILE *out, const tippe_design *d)
 {
@@ -35,6 +90,7 @@ void tippe_cli_print_printed_parts(FILE *out, const tippe_design *d)
     }
     if (!any)
         fprintf(out, "printed  no part has a print block: every part is solid\n");
+    print_bodies(out, d);
 }
 
 int tippe_cli_printed_parts_json(struct cJSON *o, const tippe_design *d)
@@ -73,5 +129,5 @@ int tippe_cli_printed_parts_json(struct cJSON *o, const tippe_design *d)
         if (!ok)
             return -1;
     }
-    return 0;
+    return bodies_json(o, d);
 }

@@ -21,9 +21,6 @@ static const char *const VERB = "simulate";
  * settling tolerance leaves ~1e-3 rad, a "fast" run's Jellett drift a few 1e-3. */
 #define HANG_AGREE_RAD 1e-2
 
-/* Largest angular rate (spin, tilt rate, precession) the options accept, rad/s. */
-#define SIM_RATE_MAX_RAD_S 1e5
-
 typedef struct {
     int n, cap;
     tippe_dynamics_sample *s;
@@ -272,11 +269,10 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
 #define MAX_SAMPLES 1e6
 
 typedef struct {
-    const char *file, *csv, *plot, *phi_dot, *accuracy;
-    int json, full, is_design;
-    double sample_dt, z2_mm;
-    tippe_cli_sets over;  /* scenario fields (the option shorthands, and --set of a scenario) */
-    tippe_cli_sets sets;  /* --set: of the scenario, or of the design */
+    const char *file, *csv, *plot;
+    int json, full;
+    double sample_dt;
+    tippe_cli_launch_args l; /* the launch: scenario or design, and its options */
 } simulate_args;
 
 #define SIMULATE_ABOUT                                                                        \
@@ -287,75 +283,10 @@ typedef struct {
     "design with --z2 and the launch options below: without them, tippe launch's central\n" \
     "hand launch (tilt 0.0674 rad, steady precession, spin 15 rev/s, no sliding, mu 0.1)."
 
-/* --phi-dot: a rule, or a rate with its unit, as the override initial.phi_dot. */
-static int add_phi_dot(simulate_args *a)
-{
-    static const char *const rules[] = {"steady", "s1", "s2", "s3"};
-    for (int i = 0; i < 4; i++)
-        if (!strcmp(a->phi_dot, rules[i]))
-            return tippe_cli_sets_add(&a->over, "initial.phi_dot", a->phi_dot) ? 2 : 0;
-    double x;
-    char num[64];
-    if (!tippe_cli_parse_unit(a->phi_dot, "rad/s", &x) || !(fabs(x) <= SIM_RATE_MAX_RAD_S))
-        return tippe_cli_usage_error(VERB,
-                                     "--phi-dot '%s': expected steady, s1, s2, s3 or a number "
-                                     "of rad/s from -%g to %g",
-                                     a->phi_dot, SIM_RATE_MAX_RAD_S, SIM_RATE_MAX_RAD_S);
-    snprintf(num, sizeof num, "%.17g", x);
-    return tippe_cli_sets_add(&a->over, "initial.phi_dot", num) ? 2 : 0;
-}
-
-/* The file's kind: a design has "parts" at its top (a scenario never has). */
-static int is_design_file(const char *path)
-{
-    tippe_error err;
-    tippe_json_reader *c = tippe_json_reader_new(path, &err, TIPPE_JSON_WORDS_KEY, "");
-    cJSON *root = NULL;
-    int design = c && tippe_json_load(c, 16, "file", &root) == TIPPE_OK &&
-                 cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts");
-    cJSON_Delete(root);
-    free(c);
-    return design;
-}
-
 static int simulate_parse(simulate_args *a, int argc, char **argv)
 {
-    tippe_cli_sets *ov = &a->over;
     tippe_cli_opt opts[] = {
-        {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &a->z2_mm, .arg = "MM", .unit = "mm",
-         .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
-         .help = "the moving weight's position: required with a design; with a scenario\n"
-                 "whose top is a design, its top.z2_mm"},
-        {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.spin",
-         .arg = "RATE", .unit = "rad/s", .min = -SIM_RATE_MAX_RAD_S, .max = SIM_RATE_MAX_RAD_S,
-         .help = "spin about the symmetry axis (initial.spin; design: 15rev/s)"},
-        {.name = "theta", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.theta",
-         .unit = "rad", .min = 0, .max = M_PI, .help = "tilt (initial.theta; design: 0.0674)"},
-        {.name = "theta-dot", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.theta_dot",
-         .arg = "RATE", .unit = "rad/s", .min = -SIM_RATE_MAX_RAD_S, .max = SIM_RATE_MAX_RAD_S,
-         .help = "tilt rate (initial.theta_dot; design: 0)"},
-        {.name = "phi-dot", .kind = TIPPE_CLI_STRING, .value = &a->phi_dot, .arg = "RATE|RULE",
-         .help = "precession (initial.phi_dot): rad/s, or steady, s1, s2, s3\n"
-                 "(design: steady)"},
-        {.name = "U", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.U", .unit = "m/s",
-         .min = -100, .max = 100, .help = "sliding velocity of the centre (initial.U; design: 0)"},
-        {.name = "V", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "initial.V", .unit = "m/s",
-         .min = -100, .max = 100, .help = "its other component (initial.V; design: 0)"},
-        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "mu", .unit = "s/m",
-         .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12 (design: 0.1)"},
-        {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "g", .unit = "m/s^2",
-         .min = 0.01, .max = 1000, .help = "gravity (design: 9.81)"},
-        {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "t_end", .unit = "s",
-         .min = 1e-3, .max = 1e6, .help = "longest simulated time (design: 600)"},
-        {.name = "accuracy", .kind = TIPPE_CLI_STRING, .value = ov, .field = "accuracy",
-         .arg = "PRESET", .help = "fast, balanced or precise (design: balanced)"},
-        {.name = "stepper", .kind = TIPPE_CLI_STRING, .value = ov, .field = "accuracy.stepper",
-         .arg = "NAME", .help = "a GSL stepper instead of the preset's (docs/dynamics.md)"},
-        {.name = "rtol", .kind = TIPPE_CLI_DOUBLE, .value = ov, .field = "accuracy.rtol",
-         .min = 1e-14, .max = 1e-2, .help = "relative tolerance instead of the preset's"},
-        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
-         .help = "any field of the scenario (e.g. --set top.C=1e-6) or, with a design,\n"
-                 "of the design (e.g. --set radius_mm=30); repeatable"},
+        TIPPE_CLI_LAUNCH_OPTS(&a->l),
         {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
          .help = "print one JSON object (SI units) instead of the summary"},
         {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
@@ -387,20 +318,8 @@ static int simulate_parse(simulate_args *a, int argc, char **argv)
     int n_args, rc = tippe_cli_parse(&spec, argc, argv, &a->file, &n_args);
     if (rc)
         return rc;
-    if (a->phi_dot && (rc = add_phi_dot(a)))
+    if ((rc = tippe_cli_launch_finish(VERB, &spec, a->file, &a->l)) != 0)
         return rc;
-    a->is_design = is_design_file(a->file);
-    if (a->is_design && !opts[0].seen)
-        return tippe_cli_usage_error(VERB, "--z2 MM is required with a design file");
-    if (!a->is_design && opts[0].seen) {
-        char num[64];
-        snprintf(num, sizeof num, "%.17g", a->z2_mm);
-        tippe_cli_sets_add(ov, "top.z2_mm", num);
-    }
-    if (!a->is_design) /* --set names scenario fields, after the shorthands */
-        for (int i = 0; i < a->sets.n; i++)
-            if (tippe_cli_sets_add(ov, NULL, a->sets.item[i]))
-                return tippe_cli_usage_error(VERB, "more than %d overrides", TIPPE_CLI_MAX_SETS);
     /* Before the integration, so that a bad output path costs nothing. */
     if ((a->csv && tippe_cli_check_output(VERB, "--csv", a->csv, 0)) ||
         (a->plot && tippe_cli_check_output(VERB, "--plot", a->plot, 1)))
@@ -411,10 +330,7 @@ static int simulate_parse(simulate_args *a, int argc, char **argv)
 static int simulate_load(const simulate_args *a, tippe_scenario *sc)
 {
     tippe_error err;
-    int rc = a->is_design ? tippe_scenario_for_design(a->file, a->z2_mm, a->sets.item,
-                                                      a->sets.n, a->over.item, a->over.n, sc,
-                                                      &err)
-                          : tippe_scenario_load(a->file, a->over.item, a->over.n, sc, &err);
+    int rc = tippe_cli_launch_load(a->file, &a->l, sc, &err);
     return rc ? tippe_cli_fail(VERB, &err, rc) : 0;
 }
 
@@ -466,8 +382,8 @@ static int simulate_report(const simulate_args *a, const tippe_scenario *sc,
         return tippe_cli_fail(VERB, &err, rc);
     if (a->json) {
         cJSON *o = to_json(sc, res, &tc, elapsed);
-        if (o && a->is_design)
-            tippe_cli_json_sets(o, &a->sets);
+        if (o && a->l.is_design)
+            tippe_cli_json_sets(o, &a->l.sets);
         return tippe_cli_print_json(VERB, o);
     }
     print_text(sc, res, &tc, elapsed);

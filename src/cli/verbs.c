@@ -25,6 +25,8 @@ const tippe_cli_verb tippe_cli_verbs[] = {
     {"check", tippe_cli_check, "one central hand launch at one Z2 beside the calculator's zone",
      0},
     {"animate", tippe_cli_animate, "a film (MP4, WebM, GIF) or a picture of one launch", 0},
+    {"export", tippe_cli_export, "printed bodies as STL and 3MF, OpenSCAD source, section drawing",
+     0},
 };
 const int tippe_cli_n_verbs = (int)(sizeof tippe_cli_verbs / sizeof tippe_cli_verbs[0]);
 

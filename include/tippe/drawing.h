@@ -1,0 +1,31 @@
+/* tippe/drawing.h: the dimensioned cross-section of a design, for the maker.
+ *
+ * The section through the axis: every part cut and hatched by material (a
+ * legend names them), the printed bodies' holes with their clearance, the
+ * moving weight at Z2 in its own colour with its travel as a bracket, the
+ * centre of the sphere (O) and the centre of mass (G) marked, and the main
+ * dimensions with their values in mm (sphere radius, shell thickness, hole and
+ * weight diameters and heights, band semi-axes, Z2). The format follows the
+ * file's extension: .svg (written directly; each dimension is a <text> with
+ * class "dim" and data-mm="VALUE", so a test can read the values back), .png
+ * or .pdf (cairo). Written atomically (tippe/report.h). */
+#ifndef TIPPE_DRAWING_H
+#define TIPPE_DRAWING_H
+
+#include "tippe/design.h"
+#include "tippe/error.h"
+
+typedef struct {
+    double z2_mm;
+    double com_z_mm;            /* centre of mass above (+) the sphere's centre */
+    const char *title;          /* first line */
+    const char *note;           /* second line (the zone at Z2), or NULL */
+    double clearance_mm;        /* grown holes are drawn grown, and say so */
+    const int *clearance_applied; /* per part, or NULL */
+    double chord_mm;            /* outline accuracy */
+} tippe_drawing_options;
+
+int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, const char *path,
+                        tippe_error *err);
+
+#endif

@@ -1,0 +1,76 @@
+/* tippe/export.h: from a design to the files a maker prints from.
+ *
+ * One call writes, into one directory, for the printed bodies of a design
+ * (tippe/profile.h): a binary STL per body and one 3MF with all bodies
+ * (tippe/mesh.h), the OpenSCAD source of the whole top (tippe/scad.h) and the
+ * dimensioned cross-section drawing (tippe/drawing.h). Every mesh is audited
+ * (closed, manifold, consistently outward, no degenerate facet) before it is
+ * written; a mesh that fails is an error, never a file. Files are named after
+ * the design file: STEM-BODY.stl, STEM.3mf, STEM.scad, STEM-section.svg|png|pdf. */
+#ifndef TIPPE_EXPORT_H
+#define TIPPE_EXPORT_H
+
+#include <stddef.h>
+
+#include "tippe/design.h"
+#include "tippe/error.h"
+#include "tippe/mesh.h"
+#include "tippe/profile.h"
+
+enum {
+    TIPPE_EXPORT_STL = 1,
+    TIPPE_EXPORT_3MF = 2,
+    TIPPE_EXPORT_SCAD = 4,
+    TIPPE_EXPORT_SVG = 8,
+    TIPPE_EXPORT_PNG = 16,
+    TIPPE_EXPORT_PDF = 32,
+    TIPPE_EXPORT_ALL = 63
+};
+
+typedef struct {
+    tippe_profile_options profile;
+    double z2_mm;     /* the moving weight's place in the SCAD file and the drawing */
+    unsigned formats; /* TIPPE_EXPORT_* bits */
+    const char *dir;  /* output directory */
+    const char *title_note; /* second title line of the drawing (the zone), or NULL */
+} tippe_export_request;
+
+enum { TIPPE_EXPORT_MAX_FILES = 64 };
+
+typedef struct {
+    char name[128], material[64];
+    char stl_path[4096];
+    int n_angles, n_triangles;
+    double mesh_volume_mm3;    /* of the written mesh (float64 before rounding) */
+    double polygon_volume_mm3; /* the profile revolved exactly (Pappus) */
+    double exact_volume_mm3;   /* closed form; NAN for a split half */
+    double lo_mm[3], hi_mm[3]; /* bounding box of the mesh as written (print frame) */
+    tippe_mesh_audit audit;
+} tippe_export_body;
+
+typedef struct {
+    tippe_profile_set profiles; /* bodies, warnings, clearance_applied */
+    int n_bodies;
+    tippe_export_body *body;
+    int n_files;
+    char file[TIPPE_EXPORT_MAX_FILES][4096]; /* written, in order */
+    double seconds;
+} tippe_export_result;
+
+/* The paths a request would write, for checking before any work: fills up to
+ * max paths, returns how many (or -1 with err set if the profiles cannot be
+ * built, e.g. nothing printable). */
+int tippe_export_plan(const tippe_design *d, const tippe_export_request *q,
+                      char (*paths)[4096], int max, tippe_error *err);
+
+/* Builds and writes everything q asks for. On failure no file of this call is
+ * left half-written (each is atomic); files already finished stay. */
+int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
+                     tippe_export_result *out, tippe_error *err);
+
+void tippe_export_result_free(tippe_export_result *r);
+
+/* "m12-setscrew" for "designs/m12-setscrew.json". */
+void tippe_export_stem(const tippe_design *d, char *out, size_t size);
+
+#endif

@@ -1,0 +1,102 @@
+/* tippe/profile.h: the printed bodies of a design as profiles in the (r, z) half-plane.
+ *
+ * Every part is a solid of revolution about the z axis, so a printed body is a
+ * region of the half-plane r >= 0 revolved about the axis. This module builds
+ * that region for the parts a maker prints -- every fixed, non-void part of a
+ * printable material, with the voids cut from it -- as polygons whose chords
+ * stay within chord_mm / 2 of the true arcs (circles and ellipses), so that the
+ * revolved mesh (tippe/mesh.h, which spends the other half on its angular
+ * steps) is within chord_mm of the true surface. Boolean operations on the
+ * polygons (union of touching parts, voids cut, split plane) are GEOS's.
+ *
+ * Holes that take hardware (a void that a non-printable part enters at some
+ * Z2 of the travel) are grown by clearance_mm radially before cutting; the
+ * design's mass model (tippe/design.h) is not changed by this.
+ *
+ * Units: mm throughout (the design file's). */
+#ifndef TIPPE_PROFILE_H
+#define TIPPE_PROFILE_H
+
+#include "tippe/design.h"
+#include "tippe/error.h"
+
+typedef struct {
+    double r_mm, z_mm;
+} tippe_profile_point;
+
+/* A closed ring (last point != first). Exterior rings run counter-clockwise
+ * in the (r, z) plane (r to the right, z up), holes clockwise. */
+typedef struct {
+    int n;
+    tippe_profile_point *pt;
+} tippe_profile_ring;
+
+typedef struct {
+    char name[128];     /* "body", "shell+band", "body-lower" */
+    char material[64];
+    int n_rings;        /* ring[0] exterior, the rest holes */
+    tippe_profile_ring *ring;
+    /* Volume of the region revolved exactly (Pappus on the polygon), mm^3:
+     * what the mesh converges to as its angular step shrinks. */
+    double polygon_volume_mm3;
+    /* The body's exact volume from the geometry module's closed forms (parts
+     * less voids, clearance included), mm^3; NAN when not known in closed form
+     * (the halves of a split body: their sum is the whole's). */
+    double exact_volume_mm3;
+    double r_max_mm, z_min_mm, z_max_mm;
+    /* Print orientation of a split half: 1 if it is printed upside down (the
+     * lower half, whose cut face is on top in the design), else 0. */
+    int flip;
+    /* Height of the cut plane of a split half (mm, design frame), else NAN. */
+    double cut_z_mm;
+} tippe_profile_body;
+
+typedef struct {
+    double chord_mm;     /* deviation of mesh from true surface; the profile uses half */
+    double clearance_mm; /* radial clearance of holes that take hardware */
+    double min_wall_mm;  /* thinner walls get a warning (two perimeters) */
+    int split;           /* cut each body at split_z_mm into two */
+    double split_z_mm;
+} tippe_profile_options;
+
+enum { TIPPE_PROFILE_MAX_WARNINGS = 16 };
+
+typedef struct {
+    int n_bodies;
+    tippe_profile_body *body;
+    /* Voids grown by the clearance, by part index (1 grown, 0 not); n_parts entries. */
+    int n_parts;
+    int *clearance_applied;
+    int n_warnings;
+    char warning[TIPPE_PROFILE_MAX_WARNINGS][320];
+    double thinnest_wall_mm; /* thinnest wall found below min_wall_mm, else NAN */
+} tippe_profile_set;
+
+/* Defaults: chord 0.01 mm, clearance 0.2 mm, min wall 0.9 mm (two 0.45 mm
+ * perimeters of a 0.4 mm nozzle), no split. */
+tippe_profile_options tippe_profile_defaults(void);
+
+/* Whether part i is printed (a fixed, non-void part of a printable material). */
+int tippe_profile_part_printed(const tippe_design *d, int i);
+
+/* Builds the printed bodies. TIPPE_EINPUT (message naming the design file) if
+ * the design prints nothing, if a body is cut away entirely, or if an option is
+ * out of range; TIPPE_ECOMPUTE if GEOS fails. Warnings (thin walls, hardware
+ * enclosed by a body, a body in several pieces) go to out->warning. */
+int tippe_profile_build(const tippe_design *d, const tippe_profile_options *opt,
+                        tippe_profile_set *out, tippe_error *err);
+
+/* The (r, z) outline of part i's own solid (before voids), moved by dz_mm,
+ * with the same chord rule; for drawings. Returns the number of rings written
+ * into *rings (caller frees with tippe_profile_rings_free), or -1 on failure. */
+int tippe_profile_part_outline(const tippe_design *d, int i, double dz_mm, double chord_mm,
+                               tippe_profile_ring **rings);
+void tippe_profile_rings_free(tippe_profile_ring *rings, int n);
+
+/* Number of steps around the axis that keeps the chord of a circle of radius
+ * r_max_mm within sag_mm: a multiple of 4 (so the bounding box is exact), >= 8. */
+int tippe_profile_angle_steps(double r_max_mm, double sag_mm);
+
+void tippe_profile_set_free(tippe_profile_set *s);
+
+#endif

@@ -1,0 +1,192 @@
+/* OpenSCAD source of a design: named numbers, one module per part. */
+#include "tippe/scad.h"
+
+#include "tippe/report.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* A part name as an OpenSCAD identifier: letters, digits and '_'. */
+static void ident(const char *name, char *out, size_t size)
+{
+    size_t n = 0;
+    if (size < 3)
+        return;
+    if (!isalpha((unsigned char)name[0]))
+        out[n++] = 'p';
+    for (const char *c = name; *c && n + 1 < size; c++)
+        out[n++] = isalnum((unsigned char)*c) ? *c : '_';
+    out[n] = '\0';
+}
+
+static void put_var(FILE *f, const char *id, const char *field, double v, const char *comment)
+{
+    fprintf(f, "%s_%s = %.10g;%s%s\n", id, field, v, comment ? " // " : "", comment ? comment : "");
+}
+
+/* The part's numbers, as variables named <part>_<field>. */
+static void part_variables(FILE *f, const tippe_design *d, int i, const tippe_profile_set *s)
+{
+    tippe_design_solid sd;
+    tippe_design_part_info info;
+    tippe_design_part_solid(d, i, &sd);
+    tippe_design_part(d, i, &info);
+    char id[80];
+    ident(info.name, id, sizeof id);
+    fprintf(f, "// part '%s': %s, %s, %s\n", info.name, info.shape, info.role,
+            info.cut_from ? info.cut_from : info.material);
+    if (!strcmp(sd.shape, "ball")) {
+        put_var(f, id, "radius_mm", sd.radius_mm, NULL);
+    } else if (!strcmp(sd.shape, "shell")) {
+        put_var(f, id, "radius_mm", sd.radius_mm, NULL);
+        put_var(f, id, "thickness_mm", sd.thickness_mm, NULL);
+    } else if (!strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube")) {
+        put_var(f, id, "radius_mm", sd.radius_mm, NULL);
+        put_var(f, id, "inner_radius_mm", sd.inner_radius_mm, NULL);
+        put_var(f, id, "height_mm", sd.height_mm, NULL);
+    } else {
+        put_var(f, id, "centre_radius_mm", sd.centre_radius_mm, NULL);
+        put_var(f, id, "radial_semi_mm", sd.radial_semi_mm, NULL);
+        put_var(f, id, "axial_semi_mm", sd.axial_semi_mm, NULL);
+    }
+    put_var(f, id, "z_mm", sd.z_mm, sd.moving ? "offset from z2_mm" : NULL);
+    if (sd.clip_radius_mm > 0)
+        put_var(f, id, "clip_radius_mm", sd.clip_radius_mm, "intersected with this ball");
+    if (sd.clip_inner_mm > 0)
+        put_var(f, id, "clip_inner_mm", sd.clip_inner_mm, "less this ball (the shell's wall)");
+    if (sd.is_void)
+        fprintf(f, "%s_grow_mm = %s; // radial clearance (hole that takes hardware)\n", id,
+                s->clearance_applied[i] ? "clearance_mm" : "0");
+}
+
+/* module <part>(): the solid from OpenSCAD primitives. */
+static void part_module(FILE *f, const tippe_design *d, int i)
+{
+    tippe_design_solid sd;
+    tippe_design_part_info info;
+    tippe_design_part_solid(d, i, &sd);
+    tippe_design_part(d, i, &info);
+    char id[80], g[100];
+    ident(info.name, id, sizeof id);
+    if (sd.is_void)
+        snprintf(g, sizeof g, " + %s_grow_mm", id);
+    else
+        g[0] = '\0';
+    fprintf(f, "module %s() {\n", id);
+    const char *pad = "    ";
+    if (sd.clip_radius_mm > 0) {
+        if (sd.clip_inner_mm > 0)
+            fprintf(f,
+                    "    intersection() {\n        difference() {\n"
+                    "            sphere(r = %s_clip_radius_mm);\n"
+                    "            sphere(r = %s_clip_inner_mm);\n        }\n",
+                    id, id);
+        else
+            fprintf(f, "    intersection() {\n        sphere(r = %s_clip_radius_mm);\n", id);
+        pad = "        ";
+    }
+    if (!strcmp(sd.shape, "ball")) {
+        fprintf(f, "%stranslate([0, 0, %s_z_mm]) sphere(r = %s_radius_mm%s);\n", pad, id, id, g);
+    } else if (!strcmp(sd.shape, "shell")) {
+        fprintf(f,
+                "%stranslate([0, 0, %s_z_mm]) difference() {\n"
+                "%s    sphere(r = %s_radius_mm%s);\n"
+                "%s    sphere(r = %s_radius_mm - %s_thickness_mm);\n%s}\n",
+                pad, id, pad, id, g, pad, id, id, pad);
+    } else if (!strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube")) {
+        fprintf(f,
+                "%stranslate([0, 0, %s_z_mm - %s_height_mm / 2]) difference() {\n"
+                "%s    cylinder(h = %s_height_mm, r = %s_radius_mm%s);\n",
+                pad, id, id, pad, id, id, g);
+        if (sd.inner_radius_mm > 0)
+            fprintf(f,
+                    "%s    translate([0, 0, -1]) cylinder(h = %s_height_mm + 2, "
+                    "r = %s_inner_radius_mm%s%s%s);\n",
+                    pad, id, id, sd.is_void ? " - " : "", sd.is_void ? id : "",
+                    sd.is_void ? "_grow_mm" : "");
+        fprintf(f, "%s}\n", pad);
+    } else {
+        fprintf(f,
+                "%stranslate([0, 0, %s_z_mm]) rotate_extrude()\n"
+                "%s    translate([%s_centre_radius_mm, 0]) scale([%s_radial_semi_mm%s, "
+                "%s_axial_semi_mm%s]) circle(r = 1);\n",
+                pad, id, pad, id, id, g, id, g);
+    }
+    if (sd.clip_radius_mm > 0)
+        fprintf(f, "    }\n");
+    fprintf(f, "}\n\n");
+}
+
+/* Calls of the parts whose role matches (printed, hardware fixed, moving). */
+enum { PRINTED, VOIDS, HARDWARE, MOVING };
+static int calls(FILE *f, const tippe_design *d, int which, const char *indent)
+{
+    int n = 0;
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_solid sd;
+        tippe_design_part_info info;
+        tippe_design_part_solid(d, i, &sd);
+        tippe_design_part(d, i, &info);
+        int printed = tippe_profile_part_printed(d, i);
+        int take = which == PRINTED    ? printed
+                   : which == VOIDS    ? sd.is_void && tippe_profile_part_printed(d, sd.parent)
+                   : which == HARDWARE ? !sd.is_void && !sd.moving && !printed
+                                       : !sd.is_void && sd.moving;
+        if (!take)
+            continue;
+        char id[80];
+        ident(info.name, id, sizeof id);
+        fprintf(f, "%s%s();\n", indent, id);
+        n++;
+    }
+    return n;
+}
+
+int tippe_scad_write(const tippe_design *d, const tippe_profile_set *s,
+                     const tippe_profile_options *opt, double z2_mm, int fn, const char *path,
+                     tippe_error *err)
+{
+    tippe_report_file rf;
+    int rc = tippe_report_open(&rf, path, "the OpenSCAD file", err);
+    if (rc)
+        return rc;
+    FILE *f = rf.f;
+    double t0, t1;
+    tippe_design_travel_mm(d, &t0, &t1);
+    fprintf(f,
+            "// %s\n// Written by tippe export from %s. Units: mm.\n"
+            "// Edit the numbers below and render again (F6). show = \"printed\" renders\n"
+            "// only the printed bodies (what the STL files hold); \"all\" adds the\n"
+            "// hardware (grey) and the moving weight at z2_mm (orange).\n\n",
+            tippe_design_name(d), tippe_design_path(d));
+    fprintf(f, "show = \"all\"; // \"all\" or \"printed\"\n");
+    fprintf(f, "fn = %d; // facets around a circle, from --chord-mm %g\n", fn, opt->chord_mm);
+    fprintf(f, "$fn = fn;\n");
+    fprintf(f, "sphere_radius_mm = %.10g;\n", tippe_design_radius_mm(d));
+    fprintf(f, "z2_mm = %.10g; // moving weight's midpoint above the centre (travel %g .. %g)\n",
+            z2_mm, t0, t1);
+    fprintf(f, "clearance_mm = %.10g; // radial clearance of holes that take hardware\n\n",
+            opt->clearance_mm);
+    for (int i = 0; i < tippe_design_n_parts(d); i++)
+        part_variables(f, d, i, s);
+    fprintf(f, "\n");
+    for (int i = 0; i < tippe_design_n_parts(d); i++)
+        part_module(f, d, i);
+    fprintf(f, "module printed() {\n    difference() {\n        union() {\n");
+    calls(f, d, PRINTED, "            ");
+    fprintf(f, "        }\n");
+    calls(f, d, VOIDS, "        ");
+    fprintf(f, "    }\n}\n\nmodule hardware() {\n");
+    if (!calls(f, d, HARDWARE, "    "))
+        fprintf(f, "    // none\n");
+    fprintf(f, "}\n\nmodule weight() {\n    translate([0, 0, z2_mm]) {\n");
+    calls(f, d, MOVING, "        ");
+    fprintf(f, "    }\n}\n\n");
+    fprintf(f, "if (show == \"printed\") {\n    printed();\n} else {\n"
+               "    color(\"lightsteelblue\") printed();\n"
+               "    color(\"grey\") hardware();\n"
+               "    color(\"orange\") weight();\n}\n");
+    return tippe_report_commit(&rf, err);
+}
