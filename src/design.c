@@ -1458,6 +1458,10 @@ static int printed_moments(const tippe_json_reader *c, tippe_design *d, int i,
     /* the error bound of each moment, relative to the printed part's */
     double lack = 1.0 - p->infill, printed_m = solid.m - lack * core.core.m;
     double printed_rr = solid.m_rr - lack * core.core.m_rr;
+    if (!(printed_m > 0) || !(printed_rr > 0))
+        return tippe_json_fail(c, pth, "part '%s' printed this way has no material (no walls, "
+                                       "no skins and 0 infill)",
+                               p->name);
     p->print_rel_error = lack * fmax(core.abserr[0] / printed_m, core.abserr[3] / printed_rr);
     /* the part's own region, its voids added back: they subtract as usual */
     *out = tippe_moments_sub(part_moments(p), tippe_moments_scale(core.core, lack));

@@ -60,5 +60,8 @@ expect_fail "a body heavier than solid" 2 "70 g is more than part 'body' weighs 
     eval "$M12" --z2 5 --set parts.body.print.measured_mass_g=70
 expect_fail "infill given in percent" 2 "parts[0].print.infill: must be 0 .. 1" -- \
     eval "$M12" --z2 5 --set parts.body.print.infill=15
+expect_fail "no walls, no skins, no infill" 2 "parts[0].print: part 'body' printed this way has no material" -- \
+    eval "$M12" --z2 5 --set parts.body.print.perimeters=0 --set parts.body.print.top_bottom_layers=0 \
+    --set parts.body.print.infill=0
 
 finish
