@@ -17,7 +17,8 @@
     "Launches the design's top N times by hand, as a person would: a spin, a small tilt,\n"  \
     "a precession near the steady one and a little sliding, each drawn at random\n"         \
     "(docs/launch.md), and integrates each launch (the paper's section 3 model with\n"      \
-    "viscous sliding friction) until it settles, leaves the table or reaches t_end.\n"      \
+    "viscous sliding friction) until its verdict is proved (an energy barrier and a\n"     \
+    "contact bound, docs/dynamics.md), it leaves the table or it reaches t_end.\n"        \
     "Prints how many launches end in no_tip, tip, hang, lost_contact and undecided, with\n" \
     "95% Wilson confidence intervals, beside Theorem 5.1's prediction for each launch's\n"  \
     "Jellett invariant and the fraction of launches that agree with it."
@@ -216,6 +217,8 @@ int tippe_cli_launch(int argc, char **argv)
     tippe_top top;
     if (!rc && (rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err)) != 0)
         rc = tippe_cli_fail(a.verb, &err, rc);
+    if (!rc && hands_mpi_rank() == 0)
+        tippe_cli_design_warnings(a.verb, d);
     if (!rc && (rc = tippe_design_top(d, a.z2_mm, &top, &err)) != 0)
         rc = tippe_cli_fail(a.verb, &err, rc);
     tippe_launch_record *rec = NULL;
@@ -223,6 +226,9 @@ int tippe_cli_launch(int argc, char **argv)
         fprintf(stderr, "tippe launch: out of memory for %ld launches\n", a.n);
         rc = 1;
     }
+    if (!rc && a.n >= 100000 && hands_mpi_rank() == 0)
+        fprintf(stderr, "tippe launch: %ld launches ahead; this takes a while (progress below)\n",
+                a.n);
     if ((rc = hands_mpi_agree(rc)) == 0)
         rc = launch_run(&a, d, &top, rec);
     free(rec);
