@@ -569,7 +569,7 @@ typedef struct {
     gsl_odeiv2_system sys;
     gsl_odeiv2_driver *drv;
     double y[DIM_TRAJECTORY], y_prev[DIM_TRAJECTORY];
-    double t, t_prev, theta_prev, h;
+    double t, t_prev, theta_prev, theta_launch, h;
     double phi, psi;                /* continued Euler angles (trajectory level) */
     long i_sample;                  /* index of the next sample time */
     int at_sample;                  /* the last step landed on a sample time */
@@ -719,6 +719,7 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
     const double excess = rs->smp.E - rs->vc.wells.well[tr.well].V_min;
     if (!(excess < rs->contact_retry_excess))
         return 0;
+    verdict_trap_range(&rs->vc, rs->smp.E, margin, &tr);
     const double Rn_bound = verdict_contact_bound(&rs->vc, rs->smp.E + margin, tr.lo, tr.hi);
     /* a twentieth of m g: room for the variation of the bound between its nodes */
     if (!(Rn_bound > 0.05 * rs->c.m * rs->c.g)) {
@@ -745,7 +746,8 @@ static void run_monitor(run_state *rs, tippe_dynamics_result *res)
         rs->E_min = s->E;
     if (s->Rn < res->min_Rn)
         res->min_Rn = s->Rn;
-    if (isnan(res->t_flip) && s->theta > 0.5 * M_PI) /* linear in between the steps */
+    if (isnan(res->t_flip) && rs->theta_prev <= 0.5 * M_PI && s->theta > 0.5 * M_PI)
+        /* linear in between the steps */
         res->t_flip = rs->t_prev + (rs->t - rs->t_prev) * (0.5 * M_PI - rs->theta_prev) /
                                        (s->theta - rs->theta_prev);
     rs->theta_prev = s->theta;
@@ -824,7 +826,9 @@ static int run_may_stop(const run_state *rs, const tippe_dynamics_result *res)
     if ((res->verdict == TIPPE_VERDICT_UNDECIDED && res->how != TIPPE_DECIDED_FLAT_WELL) ||
         rs->opt->run_to_t_end)
         return 0;
-    if (rs->opt->until_flip && res->verdict == TIPPE_VERDICT_TIP && isnan(res->t_flip))
+    /* a tip launched below pi/2 must cross it; one launched above has no flip */
+    if (rs->opt->until_flip && res->verdict == TIPPE_VERDICT_TIP && isnan(res->t_flip) &&
+        rs->theta_launch <= 0.5 * M_PI)
         return 0;
     return 1;
 }
@@ -855,7 +859,7 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
     }
     rs.i_sample = 1;
     run_fill_sample(&rs);
-    rs.theta_prev = rs.smp.theta;
+    rs.theta_prev = rs.theta_launch = rs.smp.theta;
     res->min_Rn = rs.ct.Rn;
     res->final = rs.smp;
     if (rs.traj)

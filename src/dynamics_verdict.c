@@ -74,9 +74,11 @@ void verdict_energy_test(const verdict_ctx *v, double theta, double E, double ma
     out->trapped = out->confined && !wl->flat && E + margin < out->barrier;
     out->unresolvable = out->confined && (wl->flat || !(out->barrier - wl->V_min > margin));
     out->lo = out->hi = wl->theta_min_rad;
-    if (out->confined)
-        tippe_theory_well_range(&v->top, v->g, &v->wells, out->well, E + margin, &out->lo,
-                                &out->hi);
+}
+
+void verdict_trap_range(const verdict_ctx *v, double E, double margin, verdict_trap *tr)
+{
+    tippe_theory_well_range(&v->top, v->g, &v->wells, tr->well, E + margin, &tr->lo, &tr->hi);
 }
 
 /* The bound at one theta. Rn = m N / den (eq 3.19) with

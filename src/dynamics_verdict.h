@@ -29,11 +29,14 @@ typedef struct {
                             of its minimum: as the margin never shrinks, never trapped */
     double barrier;      /* J, least V of any other critical point in the well (INFINITY: none) */
     double gap;          /* J, barrier - E */
-    double lo, hi;       /* rad, where V <= E + margin in the well */
+    double lo, hi;       /* rad, where V <= E + margin in the well (verdict_trap_range) */
 } verdict_trap;
 
+/* Cheap (a few comparisons): called at every accepted step. */
 void verdict_energy_test(const verdict_ctx *v, double theta, double E, double margin,
                          verdict_trap *out);
+/* Fills tr->lo, tr->hi by bisection on V (~100 evaluations): only before a contact bound. */
+void verdict_trap_range(const verdict_ctx *v, double E, double margin, verdict_trap *tr);
 
 /* A lower bound of the normal force Rn (eq 3.19) over every state with theta in
  * [lo, hi], Jellett J and energy <= E_max (N); -INFINITY where the bound fails. */

@@ -7,6 +7,7 @@
  * shared between choices but the read-only spec, so the result does not depend
  * on how many threads there are. */
 #include "tippe/optimise.h"
+#include "tippe/print.h"
 #include "tippe/json.h"
 #include "tippe/sweep.h"
 #include "tippe/sweep_bands.h"
@@ -400,8 +401,9 @@ static int parse_tie(tippe_json_reader *c, const cJSON *tie, const cJSON *design
 
 static int parse_constraints(tippe_json_reader *c, const cJSON *con, tippe_opt_spec *s)
 {
-    /* Two perimeters of a 0.45 mm line (a 0.4 mm nozzle's usual width). */
-    s->min_wall_mm = 0.9;
+    /* Unset (-1): two perimeters of the hole's part as printed (its print block,
+     * else tippe_print_defaults: 2 x 0.45 mm). */
+    s->min_wall_mm = -1.0;
     s->eps_max_min_mm = 0.0;
     s->spin_max_rev_s = INFINITY;
     s->max_weight_g = INFINITY;
@@ -427,7 +429,7 @@ static int parse_constraints(tippe_json_reader *c, const cJSON *con, tippe_opt_s
     if (!(s->spin_max_rev_s > 0 && s->spin_max_rev_s <= 1e4))
         return tippe_json_fail(c, "constraints.spin_max_rev_s",
                                "must be in (0, 10000] rev/s, got %g", s->spin_max_rev_s);
-    if (!(s->min_wall_mm >= 0 && s->min_wall_mm <= 100))
+    if (s->min_wall_mm != -1.0 && !(s->min_wall_mm >= 0 && s->min_wall_mm <= 100))
         return tippe_json_fail(c, "constraints.min_wall_mm", "must be in [0, 100] mm, got %g",
                                s->min_wall_mm);
     if (!(s->max_weight_g > 0))
@@ -755,6 +757,27 @@ static void robust_widths(const tippe_design *d, const tippe_sweep_result *r, ti
     tippe_sweep_bands_free(&b);
 }
 
+/* Two perimeters around the hole: twice the line width of the part it is cut
+ * from as printed (its print block), or of the slicer defaults
+ * (tippe_print_defaults) for a part without one. */
+static double perimeter_wall_mm(const tippe_design *d, const char *hole)
+{
+    tippe_print_settings set = tippe_print_defaults();
+    int n = tippe_design_n_parts(d), parent = -1;
+    tippe_design_part_info info;
+    for (int i = 0; hole && i < n; i++)
+        if (tippe_design_part(d, i, &info) == TIPPE_OK && !strcmp(info.name, hole))
+            for (int j = 0; j < n && info.cut_from; j++) {
+                tippe_design_part_info pj;
+                if (tippe_design_part(d, j, &pj) == TIPPE_OK && !strcmp(pj.name, info.cut_from))
+                    parent = j;
+            }
+    tippe_design_print_info pr;
+    if (parent >= 0 && tippe_design_part_print(d, parent, &pr) == TIPPE_OK && pr.printed)
+        set = pr.settings;
+    return 2.0 * set.line_width_mm;
+}
+
 void tippe_opt_evaluate(const tippe_opt_spec *s, int choice, const double *x, int n_scan,
                         tippe_opt_eval *out)
 {
@@ -780,7 +803,9 @@ void tippe_opt_evaluate(const tippe_opt_spec *s, int choice, const double *x, in
     }
     tippe_design_travel_mm(d, &out->travel_mm[0], &out->travel_mm[1]);
     out->weight_g = tippe_design_moving_mass_kg(d) * 1e3;
-    out->wall_mm = tippe_design_min_hole_wall_mm(d, NULL);
+    const char *hole = NULL;
+    out->wall_mm = tippe_design_min_hole_wall_mm(d, &hole);
+    double min_wall = s->min_wall_mm >= 0 ? s->min_wall_mm : perimeter_wall_mm(d, hole);
     /* z_cm is linear in Z2 (the total mass does not change), so |eps| is
      * largest at an end of the travel. */
     tippe_top t0, t1;
@@ -826,9 +851,9 @@ void tippe_opt_evaluate(const tippe_opt_spec *s, int choice, const double *x, in
         out->status = TIPPE_OPT_HEAVY;
         violation += out->weight_g / s->max_weight_g - 1.0;
     }
-    if (out->wall_mm < s->min_wall_mm) {
+    if (out->wall_mm < min_wall) {
         out->status = TIPPE_OPT_THIN_WALL;
-        violation += s->min_wall_mm > 0 ? fmin(1.0, 1.0 - out->wall_mm / s->min_wall_mm) : 1.0;
+        violation += min_wall > 0 ? fmin(1.0, 1.0 - out->wall_mm / min_wall) : 1.0;
     }
     out->score = out->status == TIPPE_OPT_OK ? out->objective_mm : -1.0 - fmin(violation, 0.99);
     tippe_design_free(d);

@@ -555,26 +555,29 @@ static poly poly_deriv(const poly *p)
     return d;
 }
 
-/* Bisection of a sign change of p on [lo, hi] down to adjacent doubles. */
-static double poly_bisect(const poly *p, double lo, double hi)
+/* Bisection of a sign change of f on [lo, hi] down to adjacent doubles. */
+static double bisect_sign_change(double (*f)(double, const void *), const void *ctx, double lo,
+                                 double hi)
 {
-    double f_lo = poly_eval(p, lo);
+    double f_lo = f(lo, ctx);
     for (int it = 0; it < 200; it++) {
         const double mid = 0.5 * (lo + hi);
         if (mid <= lo || mid >= hi)
             break;
-        const double f = poly_eval(p, mid);
-        if (f == 0.0)
+        const double fm = f(mid, ctx);
+        if (fm == 0.0)
             return mid;
-        if ((f < 0.0) == (f_lo < 0.0)) {
+        if ((fm < 0.0) == (f_lo < 0.0)) {
             lo = mid;
-            f_lo = f;
+            f_lo = fm;
         } else {
             hi = mid;
         }
     }
     return 0.5 * (lo + hi);
 }
+
+static double poly_at(double x, const void *p) { return poly_eval(p, x); }
 
 /* The points in (a, b) where p changes sign, sorted, found by splitting [a, b] at
  * the sign changes of p' (recursively): on each piece p is monotone, so it has at
@@ -598,7 +601,7 @@ static int poly_sign_changes(const poly *p, double a, double b, double *roots)
         if (f_lo == 0.0 && i > 0 && (n == 0 || roots[n - 1] != cuts[i]))
             roots[n++] = cuts[i];
         else if ((f_lo < 0.0 && f_hi > 0.0) || (f_lo > 0.0 && f_hi < 0.0))
-            roots[n++] = poly_bisect(p, cuts[i], cuts[i + 1]);
+            roots[n++] = bisect_sign_change(poly_at, p, cuts[i], cuts[i + 1]);
     }
     return n;
 }
@@ -631,27 +634,9 @@ static double G_of_theta(const wells_ctx *w, double theta)
     return poly_eval(&w->G, cos(theta));
 }
 
-/* A sign change of G(cos theta) between theta_lo and theta_hi, bisected in theta
- * (not in x, whose rounding near x = +-1 would cost digits of theta). */
-static double bisect_theta(const wells_ctx *w, double th_lo, double th_hi)
-{
-    double f_lo = G_of_theta(w, th_lo);
-    for (int it = 0; it < 200; it++) {
-        const double mid = 0.5 * (th_lo + th_hi);
-        if (mid <= th_lo || mid >= th_hi)
-            break;
-        const double f = G_of_theta(w, mid);
-        if (f == 0.0)
-            return mid;
-        if ((f < 0.0) == (f_lo < 0.0)) {
-            th_lo = mid;
-            f_lo = f;
-        } else {
-            th_hi = mid;
-        }
-    }
-    return 0.5 * (th_lo + th_hi);
-}
+/* G(cos theta): its sign changes are bisected in theta, not in x, whose rounding
+ * near x = +-1 would cost digits of theta. */
+static double G_at_theta(double theta, const void *w) { return G_of_theta(w, theta); }
 
 static void add_crit(tippe_theory_wells *out, const tippe_top *top, double g, double theta,
                      int kind, double V2, double V2_scale)
@@ -696,7 +681,7 @@ static void find_critical_points(const tippe_top *top, double g, const wells_ctx
         /* bracket in theta: G changes sign within [acos(x + d), acos(x - d)] */
         double d = 1e-9, th_lo = acos(fmin(1.0, x + d)), th_hi = acos(fmax(-1.0, x - d));
         const double root = (G_of_theta(w, th_lo) < 0.0) != (G_of_theta(w, th_hi) < 0.0)
-                                ? bisect_theta(w, th_lo, th_hi)
+                                ? bisect_sign_change(G_at_theta, w, th_lo, th_hi)
                                 : th;
         const double xx = cos(root), s = sin(root);
         const double P = (xx - w->e) * (xx - w->e) + w->k * s * s;

@@ -105,6 +105,21 @@ json_edit "$spec" "$tmp/crs.json" 'd["design"] = "'"$PWD"'/designs/drilled-ball-
 "$tippe" optimise "$tmp/crs.json" --seed 5 --threads 2 -o "$tmp/crs2.json" >/dev/null
 check "CRS2: same seed, same BEST.json on 1 and 2 threads" cmp -s "$tmp/crs1.json" "$tmp/crs2.json"
 
+# Printable walls: with no min_wall_mm the wall is two line widths of the body as printed.
+# A body printed with 3 mm lines needs 6 mm around the hole and under its floor; with the
+# hole's centre below 8 mm its floor is under 7.4 mm, so some candidates are too thin.
+json_edit designs/drilled-ball-blind.json "$tmp/wide-lines.json" 'd["materials"] = "'"$PWD"'/designs/materials.json"; d["parts"][0]["print"] = {"line_width_mm": 3, "infill": 1}'
+json_edit "$spec" "$tmp/walls.json" 'd["design"] = "'"$tmp"'/wide-lines.json"; d["objective"] = "narrowest_zone"; d["vary"]["parts.hole.z_mm"] = [0, 8]'
+"$tippe" optimise "$tmp/walls.json" --csv "$tmp/walls.csv" >/dev/null
+check "two 3 mm perimeters: walls under 6 mm (and over the default 0.9 mm) are refused" \
+    python3 - "$tmp/walls.csv" <<'EOF'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+thin = [r for r in rows if r["status"] == "thin wall"]
+assert any(0.9 < float(r["wall_mm"]) < 6 for r in thin), "no candidate refused for a wall in 0.9 .. 6 mm"
+assert all(float(r["wall_mm"]) >= 6 - 1e-9 for r in rows if r["status"] == "ok")
+EOF
+
 # --- bad input: a clear message naming the file and the field, exit 2, nothing written
 json_edit "$spec" "$tmp/bad-key.json" 'd["design"] = "'"$PWD"'/designs/drilled-ball-blind.json"; d["vary"]["parts.screw.radius_mm"] = [6, 2]'
 expect_fail "a reversed range" 2 "bad-key.json" "vary.parts.screw.radius_mm" "from < to" \

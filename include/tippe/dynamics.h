@@ -163,7 +163,8 @@ typedef struct {
      * the energy margin demanded, Rn_bound_N the lower bound of Rn over that set.
      * NAN when not trapped. */
     double theta_lo_rad, theta_hi_rad, barrier_gap_J, margin_J, Rn_bound_N;
-    double t_flip;               /* s, first time theta passed pi/2 (NAN if it did not) */
+    double t_flip;               /* s, first time theta passed pi/2 upwards (NAN if it did
+                                    not), linear between accepted steps */
     tippe_dynamics_sample last;  /* state where integration stopped */
     double J0, E0;               /* at launch */
     double jellett_rel_drift;    /* max |J - J0| / max(|J0|, 1e-6 C W R), W = |omega0| + sqrt(g/R) */

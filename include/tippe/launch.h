@@ -45,13 +45,19 @@ typedef struct {
     tippe_dynamics_accuracy accuracy;
 } tippe_launch_options;
 
+/* Viscous friction (eq 3.12) for a plastic ball on a table, s/m: a Coulomb
+ * coefficient of about 0.3 divided by a typical contact slip speed of 0.13 m/s
+ * (docs/launch.md derives it and gives the sources). */
+#define TIPPE_LAUNCH_DEFAULT_MU_S_M 2.3
+
 /* The median of a half-normal distribution of scale 1 (sqrt(2) erf^-1(1/2)):
  * a central launch's tilt is this times the tilt scale. */
 #define TIPPE_LAUNCH_HALF_NORMAL_MEDIAN 0.6744897501960817
 
 /* The documented defaults (docs/launch.md): spin 5..25 rev/s, tilt scale
  * 0.1 rad (redrawn above 1 rad), precession spread 0.1, sliding 0.05 m/s,
- * mu 0.1 s/m, g TIPPE_DEFAULT_G_M_S2, t_end 600 s, preset "balanced". */
+ * mu TIPPE_LAUNCH_DEFAULT_MU_S_M, g TIPPE_DEFAULT_G_M_S2, t_end 600 s, preset
+ * "balanced", until_flip 1. */
 void tippe_launch_options_default(tippe_launch_options *o);
 
 /* TIPPE_EINPUT naming the first bad field. */

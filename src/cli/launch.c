@@ -17,7 +17,8 @@
     "Launches the design's top N times by hand, as a person would: a spin, a small tilt,\n"  \
     "a precession near the steady one and a little sliding, each drawn at random\n"         \
     "(docs/launch.md), and integrates each launch (the paper's section 3 model with\n"      \
-    "viscous sliding friction) until it settles, leaves the table or reaches t_end.\n"      \
+    "viscous sliding friction) until its verdict is proved (an energy barrier and a\n"     \
+    "contact bound, docs/dynamics.md), it leaves the table or it reaches t_end.\n"        \
     "Prints how many launches end in no_tip, tip, hang, lost_contact and undecided, with\n" \
     "95% Wilson confidence intervals, beside Theorem 5.1's prediction for each launch's\n"  \
     "Jellett invariant and the fraction of launches that agree with it."

@@ -93,7 +93,7 @@ static void progress_add(void *ctx, long n) { tippe_progress_add(ctx, n); }
 static void print_params(FILE *f, const tippe_opt_spec *s, const tippe_opt_eval *e, int csv)
 {
     for (int k = 0; k < tippe_opt_spec_n_vary(s); k++)
-        fprintf(f, csv ? ",%.10g" : " %10.4f", e->x[k]);
+        fprintf(f, csv ? ",%.10g" : " %12.4f", e->x[k]);
 }
 
 static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, double seconds)
@@ -104,11 +104,15 @@ static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, doub
            r->n_choices, r->n_choices == 1 ? "" : "s");
     printf("%-24s", "choice");
     for (int k = 0; k < nv; k++) {
+        /* "parts.rod.radius_mm" -> "rod.radius": the part and the field, which
+         * tell two radii apart in 12 characters. */
         const char *p = tippe_opt_spec_vary_path(s, k);
-        const char *tail = strrchr(p, '.');
-        char head[64];
-        snprintf(head, sizeof head, "%s", tail && tail > p ? tail + 1 : p);
-        printf(" %10.10s", head);
+        char head[TIPPE_OPT_PATH_LEN];
+        snprintf(head, sizeof head, "%s", strncmp(p, "parts.", 6) ? p : p + 6);
+        size_t n = strlen(head);
+        if (n > 3 && !strcmp(head + n - 3, "_mm"))
+            head[n - 3] = '\0';
+        printf(" %12.12s", head);
     }
     printf(" %8s %8s %8s %9s%s %8s %8s  %s\n", "I (mm)", "II (mm)", "III (mm)", "narrowest",
            r->robust ? "    robust" : "", "eps_max", "n* rev/s", "status");
