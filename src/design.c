@@ -627,6 +627,71 @@ done:
     return rc;
 }
 
+struct tippe_materials {
+    cJSON *root;
+    int n;
+};
+
+int tippe_materials_load(const char *path, tippe_materials **out, tippe_error *err)
+{
+    *out = NULL;
+    tippe_materials *t = calloc(1, sizeof *t);
+    if (!t)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    int rc = load_materials(path, &t->root, err);
+    if (rc) {
+        free(t);
+        return rc;
+    }
+    t->n = cJSON_GetArraySize(t->root);
+    *out = t;
+    return TIPPE_OK;
+}
+
+int tippe_materials_count(const tippe_materials *t) { return t->n; }
+
+void tippe_materials_get(const tippe_materials *t, int i, tippe_material *out)
+{
+    const cJSON *m = cJSON_GetArrayItem(t->root, i);
+    const cJSON *notes = cJSON_GetObjectItemCaseSensitive(m, "notes");
+    out->name = m->string;
+    out->source = cJSON_GetObjectItemCaseSensitive(m, "source")->valuestring;
+    out->notes = cJSON_IsString(notes) ? notes->valuestring : "";
+    out->density_g_cm3 = cJSON_GetObjectItemCaseSensitive(m, "density_g_cm3")->valuedouble;
+    out->printable = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(m, "printable"));
+}
+
+void tippe_materials_free(tippe_materials *t)
+{
+    if (t)
+        cJSON_Delete(t->root);
+    free(t);
+}
+
+int tippe_design_materials_file(const char *design_path, char *buf, size_t size,
+                                tippe_error *err)
+{
+    tippe_json_reader *c = tippe_json_reader_new(design_path, err, TIPPE_JSON_WORDS_FIELD, NULL);
+    if (!c)
+        return TIPPE_ECOMPUTE;
+    cJSON *root = NULL;
+    char rel[512] = "materials.json";
+    int rc = tippe_json_load(c, MAX_FILE_MIB, "design", &root);
+    if (!rc && !(cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts")))
+        rc = tippe_json_fail(c, "", "not a design (no parts)");
+    if (!rc)
+        rc = tippe_json_string(c, root, "", "materials", 0, rel, sizeof rel, NULL);
+    const char *slash = strrchr(design_path, '/');
+    if (!rc && (rel[0] == '/' || !slash ? snprintf(buf, size, "%s", rel)
+                                        : snprintf(buf, size, "%.*s/%s",
+                                                   (int)(slash - design_path), design_path,
+                                                   rel)) >= (int)size)
+        rc = tippe_error_set(err, TIPPE_EINPUT, "%s: materials: path too long", design_path);
+    cJSON_Delete(root);
+    free(c);
+    return rc;
+}
+
 /* ------------------------------------------------------ z intervals at r */
 
 typedef struct {
@@ -1576,6 +1641,33 @@ int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_e
     int rc = load(d->path, all, d->n_overrides + n_extra, 0, out, err);
     free(all);
     return rc;
+}
+
+/* Probable unit mistakes: a sphere smaller than 1 mm (its radius typed in
+ * metres), a density above any solid's (osmium, 22.6 g/cm^3: typed in kg/m^3). */
+#define WARN_RADIUS_MIN_MM 1.0
+#define WARN_DENSITY_MAX_G_CM3 25.0
+
+int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size)
+{
+    int k = 0;
+    if (d->radius_mm < WARN_RADIUS_MIN_MM && k++ == i) {
+        snprintf(buf, size, "radius_mm: %g mm is smaller than any tippe top; if it was meant in "
+                            "metres, that is %g mm (lengths in a design are in mm)",
+                 d->radius_mm, 1e3 * d->radius_mm);
+        return 1;
+    }
+    for (int j = 0; j < d->n_parts; j++) {
+        const part *p = &d->parts[j];
+        if (p->is_void || !(p->density_g_cm3 > WARN_DENSITY_MAX_G_CM3) || k++ != i)
+            continue;
+        snprintf(buf, size, "parts[%d] ('%s'%s%s): density %g g/cm^3 is above any solid's "
+                            "(osmium 22.6); if it was meant in kg/m^3, that is %g g/cm^3",
+                 j, p->name, p->material[0] ? ", material " : "", p->material, p->density_g_cm3,
+                 1e-3 * p->density_g_cm3);
+        return 1;
+    }
+    return 0;
 }
 
 void tippe_design_free(tippe_design *d)

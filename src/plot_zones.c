@@ -705,3 +705,70 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
     tippe_plot_legend(keys, nk, "outside", 1, 0.8);
     return tippe_plot_close(p, err);
 }
+
+/* ---- compare ----------------------------------------------------------------- */
+
+/* One design's bar: its zones along Z2 between y0 and y1, hatched beyond the
+ * physical travel, each zone named where it is wide enough to hold the name. */
+static void compare_bar(const tippe_sweep_result *r, double y0, double y1, double span,
+                        int *present, int *beyond)
+{
+    for (int j = 0; j < r->n_zones; j++) {
+        const tippe_sweep_zone *zn = &r->zones[j];
+        present[zn->group] = 1;
+        tippe_plot_rect(zn->z2_from_mm, zn->z2_to_mm, y0, y1,
+                        tippe_plot_pale(group_rgb(zn->group), 0.75), 1.0);
+        if (!zn->within_travel) {
+            tippe_plot_hatch(zn->z2_from_mm, zn->z2_to_mm, y0, y1, C_TRAVEL);
+            *beyond = 1;
+        }
+        if (zn->z2_to_mm - zn->z2_from_mm > 0.06 * span)
+            tippe_plot_text(0.5 * (zn->z2_from_mm + zn->z2_to_mm), 0.5 * (y0 + y1) - 0.08, 0.0,
+                            0.5, 0.8, 0x000000u, tippe_group_name(zn->group));
+        if (j + 1 < r->n_zones && zn->to_boundaries) { /* a boundary, not a travel split */
+            double x[2] = {zn->z2_to_mm, zn->z2_to_mm}, y[2] = {y0, y1};
+            tippe_plot_line(2, x, y, 0x000000u, 1.2, TIPPE_PLOT_SOLID);
+        }
+    }
+}
+
+int tippe_sweep_plot_compare(const char *file, const tippe_sweep_result *r,
+                             const char *const *labels, int n, const char *title,
+                             tippe_error *err)
+{
+    if (n < 1)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: nothing to plot", file);
+    double zmin = INFINITY, zmax = -INFINITY;
+    for (int i = 0; i < n; i++) {
+        zmin = fmin(zmin, r[i].from_mm);
+        zmax = fmax(zmax, r[i].to_mm);
+    }
+    tippe_plot *p;
+    int st = tippe_plot_open(file, 1200, 220 + 70 * n, &p, err);
+    if (st != TIPPE_OK)
+        return st;
+    tippe_plot_panel(0.27, 0.70, 0.16 + 0.3 / (n + 2), 0.86, zmin, zmax, 0.0, (double)n);
+    int present[6] = {0}, beyond = 0;
+    char esc[300];
+    for (int i = 0; i < n; i++) {
+        double y1 = n - i - 0.15, y0 = n - i - 0.85; /* the first design on top */
+        compare_bar(&r[i], y0, y1, zmax - zmin, present, &beyond);
+        tippe_plot_margin_text("lv", 0.8, (n - i - 0.5) / n, 1.0, 0.8, 0x000000u,
+                               tippe_plot_escape(labels[i], esc, sizeof esc));
+    }
+    tippe_plot_axes_x("Z#d2#u (mm)", "zones of each design along its weight's travel");
+    if (title)
+        tippe_plot_page_title(tippe_plot_escape(title, esc, sizeof esc), 1.1);
+    tippe_plot_key keys[8];
+    int nk = 0;
+    for (int g = 0; g < 6; g++)
+        if (present[g])
+            keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_BOX, group_text[g],
+                                          tippe_plot_pale(group_rgb((tippe_group)g), 0.75), 1.0,
+                                          0, 0};
+    if (beyond)
+        keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "beyond physical travel", C_TRAVEL,
+                                      1.0, 0, 0};
+    tippe_plot_legend(keys, nk, "outside", 1, 0.8);
+    return tippe_plot_close(p, err);
+}

@@ -101,4 +101,30 @@ assert s['verdict'] == c['verdict'], (s['verdict'], c['verdict'])" "$tmp/sim.jso
 expect_fail "simulate: design without --z2" 2 "--z2 MM is required with a design file" -- \
     simulate "$m12" --spin 20rev/s
 
+# --- defect 6: probable unit mistakes in a design are warned about, naming the unit --
+# The M12 design with every length in metres (each *_mm number x 1e-3): it loads
+# (a self-consistent tiny top) but its radius of 0.025 "mm" was meant in metres.
+python3 - "$tmp/metres.json" "$(pwd)/designs/materials.json" <<'PY'
+import json, sys
+d = json.load(open("designs/m12-setscrew.json"))
+def scale(o, key=""):
+    if isinstance(o, dict):
+        return {k: scale(v, k) for k, v in o.items()}
+    if isinstance(o, list):
+        return [scale(x, key) for x in o]
+    return o * 1e-3 if key.endswith("_mm") and isinstance(o, (int, float)) else o
+s = scale(d)
+s["materials"] = sys.argv[2]
+json.dump(s, open(sys.argv[1], "w"))
+PY
+"$tippe" eval "$tmp/metres.json" --z2 0.005 >"$tmp/out" 2>"$tmp/err"
+check "a design in metres still evaluates" test $? -eq 0
+check "a design in metres: warned, with the likely unit" \
+    grep -q "warning: .*radius_mm: 0.025 mm is smaller than any tippe top; if it was meant in metres, that is 25 mm" "$tmp/err"
+"$tippe" sweep "$m12" --set parts.screw.density_g_cm3=7850 >"$tmp/out" 2>"$tmp/err"
+check "a density of 7850 g/cm^3: warned as probably kg/m^3 (7.85 g/cm^3)" \
+    grep -q "warning: .*parts\[2\] ('screw').*density 7850 g/cm^3.*kg/m^3, that is 7.85 g/cm^3" "$tmp/err"
+"$tippe" sweep "$m12" >"$tmp/out" 2>"$tmp/err"
+check "the shipped design: no warning" test ! -s "$tmp/err"
+
 finish

@@ -73,7 +73,7 @@ rm -f "$tmp"/*
 # --- compare -------------------------------------------------------------------
 out=$("$tippe" compare "$m12" "$nylon")
 check "compare exits 0" test $? -eq 0
-check "compare shows both designs" grep -q "M12.*nylon" <<<"$out"
+check "compare shows both designs" bash -c 'grep -q "^\[1\] M12" <<<"$1" && grep -q "^\[2\] .*nylon" <<<"$1"' _ "$out"
 "$tippe" compare "$m12" "$nylon" --json >"$tmp/cmp.json"
 check "compare --json has both designs" python3 -c \
     'import json,sys; assert len(json.load(open(sys.argv[1]))["designs"]) == 2' "$tmp/cmp.json"
@@ -111,7 +111,7 @@ refused "sweep --vary with a phase plot" sweep "$m12" --vary parts.screw.height_
 refused "compare without designs" compare
 refused "compare with a missing file" compare "$m12" "$tmp/missing.json"
 refused "compare with a broken file" compare "$tmp/broken.json" "$m12"
-refused "compare with an unknown option" compare "$m12" --plot "$p"
+refused "compare with an unknown option" compare "$m12" --frobnicate "$p"
 refused "compare with a bad --set" compare "$m12" "$nylon" --set radius_mm=-3
 
 for verb in sweep compare; do

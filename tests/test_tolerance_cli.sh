@@ -32,7 +32,9 @@ assert o["zones"][0]["band_from_mm"] == 0, "the sweep's start has no band"
 PY
 
 out=$("$tippe" compare "$m12" designs/shell-rod-nylon.json)
-check "compare shows robust widths" grep -q "robust narrowest: .* mm" <<<"$out"
+check "compare shows robust widths" bash -c 'grep -q "robust narrowest" <<<"$1" && grep -Eq "^\[1 \] .* [0-9]+\.[0-9]{3}$" <<<"$1" && grep -q "robust (mm)" <<<"$1"' _ "$out"
+out=$("$tippe" compare "$m12" designs/shell-rod-nylon.json --wide)
+check "compare --wide shows robust widths" grep -q "robust narrowest: .* mm" <<<"$out"
 "$tippe" compare "$m12" --json >"$tmp/cmp.json"
 check "compare --json has robust widths" python3 -c "
 import json; o = json.load(open('$tmp/cmp.json'))

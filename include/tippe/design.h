@@ -135,6 +135,12 @@ int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, i
  * the top rolls on (radius radius_mm, centred). */
 int tippe_design_forms_sphere(const tippe_design *d, int i);
 
+/* Warning i (0, 1, ...) about a probable unit mistake in a design that loaded:
+ * a sphere radius below 1 mm (metres typed for mm), a part's density above
+ * 25 g/cm^3 (kg/m^3 typed for g/cm^3). Writes the message (naming the field
+ * and the likely unit) into buf and returns 1, or returns 0 past the last. */
+int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size);
+
 /* The solid of part i, for exporters that rebuild its shape (mm). Fields that
  * the shape does not use are 0. clip_radius_mm is the ball the part is
  * intersected with (0: not clipped); height_mm is resolved (a clipped cylinder
@@ -154,6 +160,27 @@ typedef struct {
 int tippe_design_part_solid(const tippe_design *d, int i, tippe_design_solid *out);
 
 void tippe_design_free(tippe_design *d);
+
+/* ---- the materials table (docs/design-format.md, "Materials") ---- */
+typedef struct {
+    const char *name, *source, *notes; /* notes "" if none */
+    double density_g_cm3;
+    int printable;
+} tippe_material;
+typedef struct tippe_materials tippe_materials;
+
+/* Reads and checks a materials table as tippe_design_load does (TIPPE_EINPUT
+ * naming the file and field). */
+int tippe_materials_load(const char *path, tippe_materials **out, tippe_error *err);
+int tippe_materials_count(const tippe_materials *t);
+/* Entry i (0 .. count - 1) in the file's order; its strings live as long as t. */
+void tippe_materials_get(const tippe_materials *t, int i, tippe_material *out);
+void tippe_materials_free(tippe_materials *t);
+/* The materials table the design file at design_path reads: its "materials"
+ * field (default "materials.json") relative to the design's directory.
+ * TIPPE_EINPUT if the file is not a design (a JSON object with "parts"). */
+int tippe_design_materials_file(const char *design_path, char *buf, size_t size,
+                                tippe_error *err);
 
 /* The thinnest wall of material around a hole (a cylinder or tube void cut
  * from a fixed ball), mm: the side wall at the hole's layer nearest the ball's

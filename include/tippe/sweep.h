@@ -207,5 +207,10 @@ int tippe_sweep_plot_phase(const char *file, const tippe_sweep_path *path,
  * the physical travel. */
 int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
                           const char *field, const char *title, tippe_error *err);
+/* The zones of several sweeps as horizontal bars, one per design (labels[i]),
+ * the first on top, against Z2 (mm): tippe compare --plot. */
+int tippe_sweep_plot_compare(const char *file, const tippe_sweep_result *r,
+                             const char *const *labels, int n, const char *title,
+                             tippe_error *err);
 
 #endif

@@ -230,11 +230,11 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
         fprintf(out, "verdict   %s, decided (%s) at t = %.6g s; end state theta %.4g rad\n",
                 tippe_verdict_name(r->verdict), tippe_decision_name(r->how), r->t_verdict,
                 r->theta_final_rad);
+    else
+        fprintf(out, "verdict   none proved in the part shown (to t = %.6g s)\n", r->last.t);
     if (isfinite(f->t_settled))
         fprintf(out, "settled   theta within 0.05 rad of its end state from t = %.6g s\n",
                 f->t_settled);
-    else
-        fprintf(out, "verdict   none reached in the part shown (to t = %.6g s)\n", r->last.t);
     fprintf(out, "accuracy  %d samples at exact times, Jellett drift %.2g, made in %.3g s\n",
            f->n_samples, r->jellett_rel_drift, elapsed_s);
 }

@@ -168,6 +168,7 @@ int tippe_cli_check(int argc, char **argv)
     tippe_design *d = NULL;
     if ((rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err)) != 0)
         return tippe_cli_fail(a.verb, &err, rc);
+    tippe_cli_design_warnings(a.verb, d);
     check_result r = {.d = d};
     if ((rc = tippe_design_top(d, a.z2_mm, &r.top, &err)) != 0 ||
         (rc = tippe_launch_central(&r.top, &a.o, a.spin.from, &r.ic, &err)) != 0 ||

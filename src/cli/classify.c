@@ -222,6 +222,8 @@ static int design_numbers(classify_args *a, tippe_top *top)
     tippe_design *d = NULL;
     int rc = tippe_design_load(a->design, a->sets.item, a->sets.n, &d, &err);
     if (!rc)
+        tippe_cli_design_warnings(VERB, d);
+    if (!rc)
         rc = tippe_design_top(d, a->z2_mm, top, &err);
     tippe_design_free(d);
     if (rc)

@@ -38,6 +38,7 @@ int tippe_cli_compare(int argc, char **argv);
 int tippe_cli_launch(int argc, char **argv);
 int tippe_cli_map(int argc, char **argv);
 int tippe_cli_check(int argc, char **argv);
+int tippe_cli_materials(int argc, char **argv);
 int tippe_cli_animate(int argc, char **argv);
 int tippe_cli_export(int argc, char **argv);
 /* Under mpirun with more than one rank (OMPI_COMM_WORLD_SIZE > 1), replaces the
@@ -213,6 +214,11 @@ void tippe_cli_signals_install(const char *verb);
 /* After the outputs were renamed into place: if a stop signal came during the
  * renames, says so and ends the process by it; otherwise returns 0. */
 int tippe_cli_signal_pending(const char *verb);
+
+/* Prints the design's probable unit mistakes (tippe_design_warning) on stderr,
+ * "tippe VERB: warning: FILE: ...", after a design loaded. */
+struct tippe_design;
+void tippe_cli_design_warnings(const char *verb, const struct tippe_design *d);
 
 /* Prints o (NULL: out of memory while building it) as JSON on stdout and
  * deletes it: 0, or 1 after "tippe VERB: out of memory while writing JSON". */

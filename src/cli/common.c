@@ -3,6 +3,7 @@
  * checks its output files the same way. */
 #include "cli.h"
 
+#include "tippe/design.h"
 #include "tippe/json.h"
 #include "tippe/plot.h"
 #include "tippe/report.h"
@@ -281,6 +282,13 @@ double tippe_cli_now_s(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void tippe_cli_design_warnings(const char *verb, const tippe_design *d)
+{
+    char msg[512];
+    for (int i = 0; tippe_design_warning(d, i, msg, sizeof msg); i++)
+        fprintf(stderr, "tippe %s: warning: %s: %s\n", verb, tippe_design_path(d), msg);
 }
 
 /* ---- one launch, from a scenario file or a design ---------------------------- */

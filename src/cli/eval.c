@@ -20,13 +20,17 @@ static const char *side_text(int com_side)
     return "at the centre";
 }
 
-static void print_table(const tippe_design *d, double z2_mm, const tippe_top *t)
+static void print_table(const tippe_design *d, double z2_mm, const tippe_top *t,
+                        const tippe_cli_sets *sets)
 {
     double from, to, cfrom, cto;
     tippe_design_travel_mm(d, &from, &to);
     tippe_design_contact_travel_mm(d, &cfrom, &cto);
     const double g_mm2 = 1e9; /* kg m^2 -> g mm^2 */
     printf("design   %s (%s)\n", tippe_design_name(d), tippe_design_path(d));
+    char text[1024];
+    if (sets->n)
+        printf("changes  %s\n", tippe_cli_sets_text(sets, text, sizeof text));
     printf("Z2       %10.3f mm     travel %.3f .. %.3f mm, physical %.3f .. %.3f mm\n", z2_mm,
            from, to, cfrom, cto);
     printf("R        %10.3f mm\n", t->R * 1e3);
@@ -176,6 +180,8 @@ int tippe_cli_eval(int argc, char **argv)
     tippe_error err = {0};
     tippe_design *d = NULL;
     rc = tippe_design_load(path, sets.item, sets.n, &d, &err);
+    if (!rc)
+        tippe_cli_design_warnings(VERB, d);
     tippe_top top;
     if (!rc)
         rc = tippe_design_top(d, z2_mm, &top, &err);
@@ -183,10 +189,14 @@ int tippe_cli_eval(int argc, char **argv)
         tippe_design_free(d);
         return tippe_cli_fail(VERB, &err, rc);
     }
-    if (json)
-        rc = tippe_cli_print_json(VERB, to_json(d, z2_mm, &top));
-    else
-        print_table(d, z2_mm, &top);
+    if (json) {
+        cJSON *o = to_json(d, z2_mm, &top);
+        if (o)
+            tippe_cli_json_sets(o, &sets);
+        rc = tippe_cli_print_json(VERB, o);
+    } else {
+        print_table(d, z2_mm, &top, &sets);
+    }
     tippe_design_free(d);
     return rc;
 }

@@ -216,6 +216,8 @@ int tippe_cli_launch(int argc, char **argv)
     tippe_top top;
     if (!rc && (rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err)) != 0)
         rc = tippe_cli_fail(a.verb, &err, rc);
+    if (!rc && hands_mpi_rank() == 0)
+        tippe_cli_design_warnings(a.verb, d);
     if (!rc && (rc = tippe_design_top(d, a.z2_mm, &top, &err)) != 0)
         rc = tippe_cli_fail(a.verb, &err, rc);
     tippe_launch_record *rec = NULL;
@@ -223,6 +225,9 @@ int tippe_cli_launch(int argc, char **argv)
         fprintf(stderr, "tippe launch: out of memory for %ld launches\n", a.n);
         rc = 1;
     }
+    if (!rc && a.n >= 100000 && hands_mpi_rank() == 0)
+        fprintf(stderr, "tippe launch: %ld launches ahead; this takes a while (progress below)\n",
+                a.n);
     if ((rc = hands_mpi_agree(rc)) == 0)
         rc = launch_run(&a, d, &top, rec);
     free(rec);

@@ -326,6 +326,8 @@ int tippe_cli_map(int argc, char **argv)
     map_grid g = {0};
     if (!rc && (rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err)) != 0)
         rc = tippe_cli_fail(a.verb, &err, rc);
+    if (!rc && hands_mpi_rank() == 0)
+        tippe_cli_design_warnings(a.verb, d);
     if (!rc)
         rc = grid_make(&a, d, &g);
     if (!rc && g.total >= 100000 && hands_mpi_rank() == 0)

@@ -265,6 +265,7 @@ int tippe_cli_sweep(int argc, char **argv)
     rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err);
     if (rc)
         return tippe_cli_fail(VERB, &err, rc);
+    tippe_cli_design_warnings(VERB, d);
     /* the plots' titles name the variant, not only the file's design */
     char title[1024], sets[900];
     snprintf(title, sizeof title, "%s%s%s", tippe_design_name(d), a.sets.n ? " with " : "",

@@ -24,6 +24,8 @@ const tippe_cli_verb tippe_cli_verbs[] = {
     {"map", tippe_cli_map, "outcome of hand launches over a grid of Z2 and spin, heat map", 1},
     {"check", tippe_cli_check, "one central hand launch at one Z2 beside the calculator's zone",
      0},
+    {"materials", tippe_cli_materials, "the materials table: densities, sources, where it is read",
+     0},
     {"animate", tippe_cli_animate, "a film (MP4, WebM, GIF) or a picture of one launch", 0},
     {"export", tippe_cli_export, "printed bodies as STL and 3MF, OpenSCAD source, section drawing",
      0},

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# tippe compare: fits 100 columns (or --wide side by side), writes CSV, JSON and
+# a plot of the zone bars, and --set N: changes one design only.
+# Usage: test_compare_cli.sh TIPPE
+source "$(dirname "$0")/lib.sh"
+setup "$@"
+a=designs/m12-setscrew.json
+b=designs/m3-setscrew.json
+c=designs/shell-rod-nylon.json
+
+"$tippe" compare "$a" "$b" "$c" >"$tmp/t.txt"
+check "compare exits 0" test $? -eq 0
+check "compare's table fits 100 columns" bash -c '! awk "length > 100" "$1" | grep -q .' _ "$tmp/t.txt"
+"$tippe" compare "$a" "$b" "$c" --wide >"$tmp/w.txt"
+check "--wide puts the designs side by side (3 x 44 columns)" \
+    bash -c 'awk "length > 100" "$1" | grep -q .' _ "$tmp/w.txt"
+
+"$tippe" compare "$a" "$b" --json --set 2:radius_mm=26 >"$tmp/s.json"
+"$tippe" compare "$a" "$b" --json >"$tmp/n.json"
+check "--set 2: changes the second design only, and says so" python3 - "$tmp/s.json" "$tmp/n.json" <<'PY'
+import json, sys
+s, n = (json.load(open(f))["designs"] for f in sys.argv[1:])
+assert s[0]["set"] == [] and s[1]["set"] == ["radius_mm=26"]
+assert s[0]["zones"] == n[0]["zones"]            # design 1 untouched, to the last digit
+assert s[1]["zones"] != n[1]["zones"]            # design 2 is the variant
+PY
+"$tippe" compare "$a" "$b" --set radius_mm=26 --json >"$tmp/all.json"
+check "--set without N changes every design" json_ok "$tmp/all.json" \
+    "all(d['set'] == ['radius_mm=26'] for d in o['designs'])"
+
+"$tippe" compare "$a" "$b" "$c" --csv "$tmp/z.csv" --plot "$tmp/z.png" --json >"$tmp/z.json"
+check "compare CSV has one row per zone of each design, as the JSON" python3 - "$tmp/z.csv" "$tmp/z.json" <<'PY'
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+o = json.load(open(sys.argv[2]))
+want = [(i + 1, len(d["intervals"])) for i, d in enumerate(o["designs"])]
+got = [(i, sum(1 for r in rows if int(r["design_index"]) == i)) for i, _ in want]
+assert [g for _, g in got] == [w for _, w in want], (got, want)
+for r in rows:   # widths add up: to - from = width (printed to 10 digits)
+    assert abs(float(r["z2_to_mm"]) - float(r["z2_from_mm"]) - float(r["width_mm"])) < 1e-8
+    assert 0 <= float(r["robust_width_mm"]) <= float(r["width_mm"]) + 1e-9
+PY
+check "compare --plot is a PNG" python3 -c "
+import sys; assert open(sys.argv[1], 'rb').read(8) == b'\x89PNG\r\n\x1a\n'" "$tmp/z.png"
+expect_fail "--set to a design that is not there" 2 "--set '3:radius_mm=26'" "1 .. 2" -- \
+    compare "$a" "$b" --set 3:radius_mm=26
+expect_fail "compare plot format" 2 "--plot" -- compare "$a" --plot "$tmp/z.gif"
+finish

@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# Every command shown in README.md and docs/*.md runs as written: each command
+# block (an indented or fenced code block whose first line is a command:
+# build/..., tools/..., mpirun, mkdir, for, time, export, cmake, a=...) is run
+# in a scratch directory where `build` is the tested tippe's directory,
+# `designs` and `tools` are the repository's, and `docs/`, `out/` are empty
+# scratch folders, so that every output lands in scratch. A failure names the
+# file, the line and the command, with the end of its stderr.
+#
+# Not run (said in the log): commands that build the project, run this suite
+# or the benchmarks (cmake, tools/quickstart.sh, tools/run-tests.sh,
+# tools/bench/run.sh), mpirun without Open MPI or tippe-mpi, and any block
+# right after the line <!-- docs-test: skip REASON --> in the Markdown.
+#
+# Usage: test_docs_commands.sh TIPPE [FILE.md ...] (default: README.md docs/*.md)
+source "$(dirname "$0")/lib.sh"
+setup "$1"
+shift
+repo=$(pwd)
+bindir=$(cd "$(dirname "$tippe")" && pwd)
+files=("$@")
+[ ${#files[@]} -gt 0 ] || files=(README.md docs/*.md)
+
+mkdir -p "$tmp/run/docs/img" "$tmp/run/out"
+ln -s "$bindir" "$tmp/run/build"
+ln -s "$repo/designs" "$tmp/run/designs"
+ln -s "$repo/tools" "$tmp/run/tools"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+
+if ! command -v mpirun >/dev/null || [ ! -x "$bindir/tippe-mpi" ]; then
+    export NO_MPI=1
+fi
+
+# The blocks as runnable scripts: one file per block, each command preceded by
+# a marker naming its file and line (read back to say which command failed).
+python3 - "$tmp/blocks" "${files[@]}" <<'EOF'
+import os, re, sys
+out, files = sys.argv[1], sys.argv[2:]
+os.makedirs(out)
+COMMAND = re.compile(r"^(build/|tools/|mpirun |mkdir |for |time |export |cmake |[a-z_]+=)")
+SKIP = re.compile(r"^(cmake |tools/quickstart\.sh|tools/run-tests\.sh|tools/bench/run\.sh)")
+
+def shell_quote(text):
+    return "'" + text.replace("'", "'\\''") + "'"
+
+def blocks(path):
+    """(first line number, [lines], skip reason or None) of each code block."""
+    lines = open(path, encoding="utf-8").read().split("\n")
+    i, skip = 0, None
+    while i < len(lines):
+        m = re.match(r"\s*<!--\s*docs-test:\s*skip\s*(.*?)\s*-->", lines[i])
+        if m:
+            skip = m.group(1) or "marked in the Markdown"
+        if lines[i].startswith("```"):
+            j = i + 1
+            while j < len(lines) and not lines[j].startswith("```"):
+                j += 1
+            yield i + 2, lines[i + 1:j], skip
+            skip, i = None, j + 1
+            continue
+        if lines[i].startswith("    ") and (i == 0 or not lines[i - 1].strip()):
+            j = i
+            while j < len(lines) and (lines[j].startswith("    ") or not lines[j].strip()):
+                j += 1
+            body = [l[4:] for l in lines[i:j]]
+            while body and not body[-1].strip():
+                body.pop()
+            yield i + 1, body, skip
+            skip, i = None, j
+            continue
+        if lines[i].strip() and not m:
+            skip = None
+        i += 1
+
+n = 0
+for path in files:
+    for first, body, skip in blocks(path):
+        if not body or not COMMAND.match(body[0]):
+            continue
+        n += 1
+        with open(os.path.join(out, "%03d.sh" % n), "w") as f:
+            k = 0
+            while k < len(body):
+                line, cmd = first + k, body[k]
+                while cmd.endswith("\\") and k + 1 < len(body):  # continuation lines
+                    k += 1
+                    cmd = cmd[:-1] + " " + body[k].strip()
+                k += 1
+                if not cmd.strip():
+                    continue
+                where = "%s:%d" % (path, line)
+                why = skip or ("builds the project, runs the suite or the benchmarks"
+                               if SKIP.match(cmd) else None)
+                if not why and cmd.startswith("mpirun") and os.environ.get("NO_MPI"):
+                    why = "no Open MPI (mpirun or tippe-mpi missing)"
+                if why:
+                    f.write("echo %s >&4\n" % shell_quote("SKIPPED %s: %s (%s)" % (where, cmd, why)))
+                    continue
+                f.write("echo %s >&5\n" % shell_quote("%s %s" % (where, cmd)))
+                f.write(cmd + "\n")
+EOF
+
+for block in "$tmp"/blocks/*.sh; do
+    [ -e "$block" ] || break
+    # set -e: the block stops at its first failing command, named by the last marker
+    (cd "$tmp/run" && bash -e "$block" >"$tmp/out" 2>"$tmp/err" 4>>"$tmp/skipped" 5>"$tmp/last")
+    st=$?
+    where=$(tail -n 1 "$tmp/last")
+    if [ $st -ne 0 ]; then
+        bad "${where%% *}: exit $st: ${where#* }
+$(tail -n 5 "$tmp/err" | sed 's/^/    /')"
+    elif [ -n "$where" ]; then # a block of skipped commands only counts for nothing
+        ok
+    fi
+done
+[ -s "$tmp/skipped" ] && sed 's/^/  /' "$tmp/skipped"
+check "found command blocks to run" test "$passed" -gt 0
+finish
