@@ -357,10 +357,10 @@ static int verdict_lines(const tippe_film *f, char *l1, char *l2, size_t size)
     case TIPPE_VERDICT_TIP:
     case TIPPE_VERDICT_HANG:
         if (r->verdict == TIPPE_VERDICT_HANG)
-            snprintf(l1, size, "verdict: hang at \xce\xb8 = %.1f\xc2\xb0, t = %.4g s",
+            snprintf(l1, size, "verdict: hang at \xce\xb8 = %.1f\xc2\xb0, proved at t = %.4g s",
                      r->theta_final_rad * deg, r->t_verdict);
         else
-            snprintf(l1, size, "verdict: %s at t = %.4g s",
+            snprintf(l1, size, "verdict: %s, proved at t = %.4g s",
                      r->verdict == TIPPE_VERDICT_TIP ? "tip" : "no tip", r->t_verdict);
         if (isfinite(r->barrier_gap_J))
             snprintf(l2, size, "energy below barrier by %.2g J (margin %.2g J)",

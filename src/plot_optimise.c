@@ -113,8 +113,10 @@ static void convergence(const tippe_opt_result *r, const int *idx, int n)
         if (c->n_global > 0 && c->n_global < c->n_evals && i == 0) {
             double vx[2] = {(double)c->n_global, (double)c->n_global}, vy[2] = {0, ytop};
             tippe_plot_line(2, vx, vy, 0x777777u, 1.0, TIPPE_PLOT_DASHED);
-            tippe_plot_text((double)c->n_global, 0.04 * ytop, 90, 0.0, 0.6, 0x555555u,
-                            "polish starts");
+            /* left of the line, off it and off the right axis (the polish often starts
+             * near the last evaluation) */
+            tippe_plot_text(fmax((double)c->n_global - 0.03 * (double)nmax, 0.04 * nmax),
+                            0.04 * ytop, 90, 0.0, 0.6, 0x555555u, "polish starts");
         }
         free(x);
         free(y);

@@ -346,6 +346,20 @@ const char *tippe_scenario_phi_dot_rule_name(int rule)
     }
 }
 
+/* Appends "sep FIELD=VALUE" to name, a number to 6 digits: the command line
+ * passes exact values (%.17g), which would only clutter a title. */
+static void append_override(char *name, size_t size, const char *sep, const char *override)
+{
+    size_t len = strlen(name);
+    const char *eq = strchr(override, '=');
+    char *end = NULL;
+    double x = eq ? strtod(eq + 1, &end) : 0.0;
+    if (eq && end != eq + 1 && *end == '\0' && isfinite(x))
+        snprintf(name + len, size - len, "%s%.*s=%.6g", sep, (int)(eq - override), override, x);
+    else
+        snprintf(name + len, size - len, "%s%s", sep, override);
+}
+
 /* The scenario of root (read from the file, or made for a design), with the
  * overrides applied and everything checked. */
 static int scenario_from_root(tippe_json_reader *c, cJSON *root, const char *path,
@@ -366,11 +380,8 @@ static int scenario_from_root(tippe_json_reader *c, cJSON *root, const char *pat
     }
     snprintf(out->name, sizeof out->name, "%s", name ? name->valuestring : path);
     /* the file's name may describe values the command line changed: say so */
-    for (int i = 0; i < n_overrides; i++) {
-        size_t len = strlen(out->name);
-        snprintf(out->name + len, sizeof out->name - len, "%s%s", i ? ", " : " [changed: ",
-                 overrides[i]);
-    }
+    for (int i = 0; i < n_overrides; i++)
+        append_override(out->name, sizeof out->name, i ? ", " : " [changed: ", overrides[i]);
     if (n_overrides > 0) {
         size_t len = strlen(out->name);
         if (len + 1 < sizeof out->name)
@@ -449,7 +460,9 @@ static cJSON *design_root(const char *design_path, double z2_mm, const char *con
         return NULL;
     }
     char name[1200];
-    snprintf(name, sizeof name, "central hand launch of %s at Z2 = %g mm", design_path, z2_mm);
+    /* what differs from launch to launch first: a film's caption may be cut at its end */
+    snprintf(name, sizeof name, "%s at Z2 = %g mm, central hand launch",
+             slash ? slash + 1 : design_path, z2_mm);
     cJSON_AddStringToObject(root, "name", name);
     /* the design's path is read relative to the "scenario" file: the design itself */
     cJSON_AddStringToObject(top, "design", slash ? slash + 1 : design_path);
