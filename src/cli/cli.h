@@ -141,20 +141,6 @@ int tippe_cli_fail(const char *verb, const tippe_error *err, int rc);
 /* 1 for "--help" and "-h". */
 int tippe_cli_is_help(const char *arg);
 
-/* 1 if arg is an option rather than a file name: "-" followed by something;
- * with numbers_are_values, "-5" or "-0.3" is not an option. */
-int tippe_cli_is_option(const char *arg, int numbers_are_values);
-
-/* The value of the option argv[*i]: the next argument (*i moves onto it), or
- * NULL after the usage error "OPTION needs a value". */
-const char *tippe_cli_value(const char *verb, int argc, char **argv, int *i);
-
-/* Whether argv[*i] is the option name ("--z2") given as "--z2 VALUE" or, with
- * eq, as "--z2=VALUE". On a match *value is VALUE, or NULL after the usage
- * error "--z2 needs a value". */
-int tippe_cli_option(const char *verb, int argc, char **argv, int *i, const char *name, int eq,
-                     const char **value);
-
 /* A whole finite number (strtod) or a whole integer in lo .. hi (strtol):
  * 1 if text is one, 0 if not (*out unchanged for the integer). */
 int tippe_cli_parse_double(const char *text, double *out);
@@ -163,11 +149,6 @@ int tippe_cli_parse_long(const char *text, long lo, long hi, long *out);
 /* "FROM:TO" (steps NULL) or "FROM:TO:STEPS" with STEPS in 1 .. max_steps; a
  * single step needs FROM = TO. 1 if text is one, else 0. */
 int tippe_cli_parse_range(const char *text, double *from, double *to, int *steps, int max_steps);
-
-/* Parses option's number: 0, or 2 after the usage error
- * "OPTION: 'TEXT' is not a number" (followed by " of UNIT" unless unit is NULL). */
-int tippe_cli_number(const char *verb, const char *option, const char *text, const char *unit,
-                     double *out);
 
 /* Overrides of design or scenario fields, "FIELD=VALUE", in the order given. */
 enum { TIPPE_CLI_MAX_SETS = 64 };

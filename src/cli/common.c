@@ -43,40 +43,6 @@ int tippe_cli_is_help(const char *arg)
     return !strcmp(arg, "--help") || !strcmp(arg, "-h");
 }
 
-int tippe_cli_is_option(const char *arg, int numbers_are_values)
-{
-    if (arg[0] != '-' || arg[1] == '\0')
-        return 0; /* "-" alone is taken as a file name */
-    return !(numbers_are_values && arg[1] >= '0' && arg[1] <= '9');
-}
-
-const char *tippe_cli_value(const char *verb, int argc, char **argv, int *i)
-{
-    if (*i + 1 >= argc) {
-        tippe_cli_usage_error(verb, "%s needs a value", argv[*i]);
-        return NULL;
-    }
-    return argv[++*i];
-}
-
-int tippe_cli_option(const char *verb, int argc, char **argv, int *i, const char *name, int eq,
-                     const char **value)
-{
-    const char *a = argv[*i];
-    size_t len = strlen(name);
-    if (strncmp(a, name, len))
-        return 0;
-    if (a[len] == '\0') {
-        *value = tippe_cli_value(verb, argc, argv, i);
-        return 1;
-    }
-    if (eq && a[len] == '=') {
-        *value = a + len + 1;
-        return 1;
-    }
-    return 0;
-}
-
 int tippe_cli_parse_double(const char *text, double *out)
 {
     /* No errno test: an underflow to 0 or a subnormal is still the number the
@@ -121,15 +87,6 @@ int tippe_cli_parse_range(const char *text, double *from, double *to, int *steps
         *steps = (int)s;
     }
     return 1;
-}
-
-int tippe_cli_number(const char *verb, const char *option, const char *text, const char *unit,
-                     double *out)
-{
-    if (tippe_cli_parse_double(text, out))
-        return 0;
-    return tippe_cli_usage_error(verb, "%s: '%s' is not a number%s%s", option, text,
-                                 unit ? " of " : "", unit ? unit : "");
 }
 
 int tippe_cli_sets_add(tippe_cli_sets *s, const char *field, const char *value)
