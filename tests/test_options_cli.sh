@@ -20,6 +20,9 @@ expect_fail "z2 not a number" 2 "--z2 'abc'" -- eval "$d" --z2 abc
 expect_fail "z2 unit of another family" 2 "--z2 '5rpm'" -- eval "$d" --z2 5rpm
 expect_fail "z2 infinite" 2 "--z2 'inf'" -- eval "$d" --z2 inf
 expect_fail "z2 NaN" 2 "--z2 'nan'" -- eval "$d" --z2 nan
+# a mistyped unit is answered with the suffixes that would have worked
+expect_fail "spin with a misspelt unit" 2 "--spin '20revs'" "or suffix rev/s, rpm" -- \
+    simulate "$d" --z2 12 --spin 20revs
 expect_fail "missing value" 2 "--z2 needs a value" -- eval "$d" --z2
 expect_fail "required option" 2 "--z2 MM is required" -- eval "$d"
 expect_fail "flag with a value" 2 "--json=1 takes no value" -- eval "$d" --z2 5 --json=1

@@ -91,13 +91,31 @@ static void opt_label(const tippe_cli_opt *o, char *buf, size_t size)
         snprintf(buf, size, "--%s", o->name);
 }
 
-/* The allowed values of o, e.g. "a number of mm from 0 to 100". */
+/* " of UNIT", with the suffixes a number may carry when UNIT has others
+ * (" of rad/s (or suffix rad/s, rev/s, rpm)"); "" without a unit. */
+static void unit_text(const char *unit, char *buf, size_t size)
+{
+    buf[0] = '\0';
+    if (!unit)
+        return;
+    int n = snprintf(buf, size, " of %s", unit);
+    int u = unit_row(unit), first = 1;
+    for (int k = 0; u >= 0 && k < N_UNITS && n > 0 && (size_t)n < size; k++)
+        if (!strcmp(units[k].family, units[u].family) && strcmp(units[k].family, units[k].suffix)) {
+            n += snprintf(buf + n, size - (size_t)n, "%s%s", first ? " (or suffix " : ", ",
+                          units[k].suffix);
+            first = 0;
+        }
+    if (!first && n > 0 && (size_t)n < size)
+        snprintf(buf + n, size - (size_t)n, ")");
+}
+
+/* The allowed values of o, e.g. "a number of mm (or suffix cm, m) from 0 to 100". */
 static void allowed_text(const tippe_cli_opt *o, char *buf, size_t size)
 {
     const char *what = o->kind == TIPPE_CLI_LONG ? "a whole number" : "a number";
-    char unit[64] = "";
-    if (o->unit)
-        snprintf(unit, sizeof unit, " of %s", o->unit);
+    char unit[96];
+    unit_text(o->unit, unit, sizeof unit);
     if (o->kind == TIPPE_CLI_RANGE) {
         char steps[64] = "";
         if (o->max_steps > 0)
