@@ -1578,6 +1578,11 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
                                  &d->tolerances, &d->n_tolerances);
 }
 
+/* Keeps the overrides a design was built with (src/design.c, below), so that
+ * tippe_design_derive can rebuild it with more. */
+static int remember_overrides(tippe_design *d, const char *const *overrides, int n,
+                              tippe_error *err);
+
 static int load(const char *path, const char *const *overrides, int n_overrides, int check,
                 tippe_design **out, tippe_error *err)
 {
@@ -1591,9 +1596,7 @@ static int load(const char *path, const char *const *overrides, int n_overrides,
     tippe_json_reader *c =
         tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, "set by --set ");
     tippe_design *d = calloc(1, sizeof *d);
-    if (d)
-        d->overrides = calloc((size_t)n_overrides + 1, sizeof *d->overrides);
-    if (!c || !d || !d->overrides) {
+    if (!c || !d) {
         free(c);
         tippe_design_free(d);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
@@ -1602,13 +1605,12 @@ static int load(const char *path, const char *const *overrides, int n_overrides,
     int rc = tippe_json_load(c, MAX_FILE_MIB, "design", &root);
     if (!rc)
         rc = tippe_json_check_duplicates(c, root, "");
-    for (int i = 0; !rc && i < n_overrides; i++) {
+    for (int i = 0; !rc && i < n_overrides; i++)
         rc = apply_override(c, root, overrides[i]);
-        if (!rc && !(d->overrides[d->n_overrides++] = dup_string(overrides[i])))
-            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
-    }
     if (!rc)
         rc = build(c, root, path, d, check);
+    if (!rc)
+        rc = remember_overrides(d, overrides, n_overrides, err);
     cJSON_Delete(root);
     free(c);
     if (rc) {
