@@ -36,20 +36,6 @@ static void on_plabort(PLCHAR_VECTOR msg)
         snprintf(abort_msg, sizeof abort_msg, "%s", msg ? msg : "PLplot error");
 }
 
-const char *tippe_plot_device(const char *path)
-{
-    const char *dot = path ? strrchr(path, '.') : NULL;
-    if (!dot || strchr(dot, '/'))
-        return NULL;
-    if (!strcasecmp(dot, ".png"))
-        return "pngcairo";
-    if (!strcasecmp(dot, ".svg"))
-        return "svgcairo";
-    if (!strcasecmp(dot, ".pdf"))
-        return "pdfcairo";
-    return NULL;
-}
-
 static void set_slot(int slot, unsigned rgb, double alpha)
 {
     plscol0a(slot, (PLINT)((rgb >> 16) & 0xff), (PLINT)((rgb >> 8) & 0xff), (PLINT)(rgb & 0xff),

@@ -325,15 +325,6 @@ static int body_from_polygon(geos_ctx *g, const GEOSGeometry *poly, tippe_profil
 
 /* ------------------------------------------------------------- bodies */
 
-tippe_profile_options tippe_profile_defaults(void)
-{
-    return (tippe_profile_options){.chord_mm = 0.01,
-                                   .clearance_mm = 0.2,
-                                   .min_wall_mm = 0.9,
-                                   .split = 0,
-                                   .split_z_mm = 0};
-}
-
 static void warn(tippe_profile_set *s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 static void warn(tippe_profile_set *s, const char *fmt, ...)
 {

@@ -1,0 +1,25 @@
+/* Stubs of the files of printed bodies (src/export.c with mesh.c, drawing.c,
+ * scad.c and profile.c: lib3MF, cairo, GEOS) for the tippe command: see module.h. */
+#include "module.h"
+#include "tippe/export.h"
+
+static tippe_module export_module =
+    TIPPE_MODULE("export", "GEOS, lib3MF and cairo: apt-get install libgeos-dev lib3mf-dev "
+                           "libcairo2-dev");
+
+int tippe_export_plan(const tippe_design *d, const tippe_export_request *q, char (*paths)[4096],
+                      int max, tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&export_module, tippe_export_plan, err, d, q, paths, max, err);
+}
+
+int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
+                     tippe_export_result *out, tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&export_module, tippe_export_run, err, d, q, out, err);
+}
+
+void tippe_export_result_free(tippe_export_result *r)
+{
+    TIPPE_MODULE_FREE(&export_module, tippe_export_result_free, r);
+}

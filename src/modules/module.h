@@ -1,0 +1,56 @@
+/* The tippe command's heavy-library modules (private to the command).
+ *
+ * The parts of the library that call PLplot, GEOS, lib3MF or cairo are built
+ * twice: into libtippe.a, as every other part, and into shared modules placed
+ * next to the tippe command (tippe-plot.so, tippe-export.so, tippe-animate.so).
+ * The command links the rest of the library and, instead of those parts, the
+ * stubs in this folder: functions with the same names and prototypes (from
+ * include/tippe/) that open their module on the first call and forward to it.
+ * So a command that draws nothing never loads a drawing library: linked, their
+ * ~35 dependencies cost every command ~10 ms of CPU in the dynamic loader.
+ * The modules call back into the library through the command's exported symbols. */
+#ifndef TIPPE_MODULE_H
+#define TIPPE_MODULE_H
+
+#include "tippe/error.h"
+
+#include <limits.h>
+#include <pthread.h>
+
+typedef struct {
+    const char *name;  /* "plot": the file tippe-plot.so */
+    const char *needs; /* the libraries it loads, with their Debian packages */
+    pthread_mutex_t lock;
+    int tried;
+    void *handle; /* NULL until it is open; then open for the life of the process */
+    char error[PATH_MAX + 1024];
+} tippe_module;
+
+#define TIPPE_MODULE(name, needs) {name, needs, PTHREAD_MUTEX_INITIALIZER, 0, NULL, ""}
+
+/* The module's function `symbol`, opening the module (from the directory of the
+ * running executable) on the first call; NULL with err set (TIPPE_ECOMPUTE) when
+ * the module or the function is missing. Thread-safe. */
+void *tippe_module_function(tippe_module *m, const char *symbol, tippe_error *err);
+
+/* The module's function `symbol` if the module is already open, else NULL
+ * (for a stub that frees: what a module never made needs no freeing). */
+void *tippe_module_function_if_open(tippe_module *m, const char *symbol);
+
+/* The body of a stub that returns a tippe status: calls the module's fn with
+ * the stub's arguments, or returns TIPPE_ECOMPUTE with err set. */
+#define TIPPE_MODULE_CALL(m, fn, err, ...)                                                       \
+    do {                                                                                         \
+        __typeof__(&fn) real_ = (__typeof__(&fn))tippe_module_function(m, #fn, err);             \
+        return real_ ? real_(__VA_ARGS__) : TIPPE_ECOMPUTE;                                      \
+    } while (0)
+
+/* The body of a stub that frees: calls the module's fn if the module is open. */
+#define TIPPE_MODULE_FREE(m, fn, ...)                                                            \
+    do {                                                                                         \
+        __typeof__(&fn) real_ = (__typeof__(&fn))tippe_module_function_if_open(m, #fn);          \
+        if (real_)                                                                               \
+            real_(__VA_ARGS__);                                                                  \
+    } while (0)
+
+#endif

@@ -1,0 +1,60 @@
+/* Stubs of the plots (src/plot*.c, PLplot) for the tippe command: see module.h. */
+#include "module.h"
+#include "tippe/launch.h"
+#include "tippe/optimise.h"
+#include "tippe/scenario.h"
+#include "tippe/sweep.h"
+#include "tippe/sweep_bands.h"
+
+static tippe_module plot =
+    TIPPE_MODULE("plot", "PLplot: apt-get install libplplot-dev plplot-driver-cairo");
+
+int tippe_launch_plot_map(const char *file, const tippe_launch_map *map, const tippe_design *d,
+                          double g, const char *title, tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&plot, tippe_launch_plot_map, err, file, map, d, g, title, err);
+}
+
+int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynamics_result *res,
+                   const tippe_dynamics_sample *samples, int n_samples, tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&plot, tippe_plot_sim, err, path, sc, res, samples, n_samples, err);
+}
+
+int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
+                           const tippe_sweep_result *r, const char *title, tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&plot, tippe_sweep_plot_zones, err, file, path, r, title, err);
+}
+
+int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path,
+                                  const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
+                                  const char *title, tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&plot, tippe_sweep_plot_zones_banded, err, file, path, r, b, title, err);
+}
+
+int tippe_sweep_plot_phase(const char *file, const tippe_sweep_path *path,
+                           const tippe_sweep_result *r, const char *title, tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&plot, tippe_sweep_plot_phase, err, file, path, r, title, err);
+}
+
+int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v, const char *field,
+                          const char *title, tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&plot, tippe_sweep_plot_vary, err, file, v, field, title, err);
+}
+
+int tippe_sweep_plot_compare(const char *file, const tippe_sweep_result *r,
+                             const char *const *labels, int n, const char *title,
+                             tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&plot, tippe_sweep_plot_compare, err, file, r, labels, n, title, err);
+}
+
+int tippe_opt_plot(const char *file, const tippe_opt_spec *s, const tippe_opt_result *r,
+                   tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&plot, tippe_opt_plot, err, file, s, r, err);
+}
