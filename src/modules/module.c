@@ -34,10 +34,16 @@ static void module_open(tippe_module *m)
     /* RTLD_NOW: a module that does not fit this program fails here, with a
      * message, and not at some later call. */
     m->handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
-    if (!m->handle)
-        snprintf(m->error, sizeof m->error,
-                 "cannot load %s, which this command needs (it is built next to the tippe "
-                 "program, and needs %s): %s", path, m->needs, dlerror());
+    if (m->handle)
+        return;
+    /* dlerror() often starts with the path: say it once. */
+    const char *why = dlerror();
+    const size_t n = strlen(path);
+    if (!strncmp(why, path, n) && !strncmp(why + n, ": ", 2))
+        why += n + 2;
+    snprintf(m->error, sizeof m->error,
+             "cannot load %s (built with the tippe program; it needs %s): %s", path, m->needs,
+             why);
 }
 
 void *tippe_module_function(tippe_module *m, const char *symbol, tippe_error *err)

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# The command loads PLplot, GEOS, lib3MF and cairo only when a command needs them
+# (src/modules/module.h): not linked, loaded with their module on first use, and a
+# missing module is an error that names it. Usage: test_modules.sh TIPPE
+source "$(dirname "$0")/lib.sh"
+setup "$@"
+bin=$(dirname "$tippe")
+heavy='plplot|geos|3MF|cairo'
+
+# --- linked: none of the heavy libraries; each module links its own -----------
+needed() { readelf -d "$1" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p'; }
+check "readelf lists what tippe needs" test -n "$(needed "$tippe")"
+check "tippe links none of PLplot, GEOS, lib3MF, cairo" \
+    bash -c "! grep -Eq '$heavy' <<<'$(needed "$tippe")'"
+for m in plot:plplot profile:geos_c export:3MF animate:cairo; do
+    check "tippe-${m%%:*}.so sits next to tippe and links lib${m#*:}" \
+        grep -q "^lib${m#*:}\.so" <<<"$(needed "$bin/tippe-${m%%:*}.so")"
+done
+
+# --- loaded: what each command needs, seen by the dynamic loader --------------
+# loaded ARGS...: the files the loader opened for tippe ARGS (one per line).
+loaded() {
+    rm -f "$tmp"/ld.*
+    LD_DEBUG=files LD_DEBUG_OUTPUT="$tmp/ld" "$tippe" "$@" >/dev/null 2>&1 || return 1
+    sed -n 's/.*file=\([^ ]*\) .*/\1/p' "$tmp"/ld.* | sort -u
+}
+check "simulate runs" loaded simulate designs/scenarios/fig12-tip.json >"$tmp/sim.libs"
+check "simulate loads GSL (the loader's trace works)" grep -q libgsl "$tmp/sim.libs"
+check "simulate loads no module and no heavy library" \
+    bash -c "! grep -Eq 'tippe-|$heavy' '$tmp/sim.libs'"
+check "sweep --plot runs" loaded sweep designs/m12-setscrew.json --plot "$tmp/z.png" >"$tmp/plot.libs"
+check "sweep --plot loads the plot module and PLplot" \
+    bash -c "grep -q 'tippe-plot.so' '$tmp/plot.libs' && grep -q libplplot '$tmp/plot.libs'"
+check "sweep --plot loads no lib3MF" bash -c "! grep -q 3MF '$tmp/plot.libs'"
+check "eval runs" loaded eval designs/m12-setscrew.json --z2 15 >"$tmp/eval.libs"
+check "eval loads GEOS for the printed bodies, not lib3MF or PLplot" \
+    bash -c "grep -q libgeos_c '$tmp/eval.libs' && ! grep -Eq '3MF|plplot' '$tmp/eval.libs'"
+
+# --- missing or broken module: exit 1, the module named, no output file --------
+mkdir -p "$tmp/alone"
+cp "$tippe" "$tmp/alone/tippe"
+tippe_alone=$tmp/alone/tippe
+"$tippe_alone" simulate designs/scenarios/fig12-tip.json >"$tmp/sim.txt"
+check "without modules simulate still works" test $? -eq 0
+check "... and gives its verdict" grep -q "verdict" "$tmp/sim.txt"
+for case in "plot:sweep designs/m12-setscrew.json --plot $tmp/alone/z.png" \
+            "export:export designs/shell-band.json -o $tmp/alone/print" \
+            "animate:animate designs/scenarios/film-IIb-hang.json --frame 12.9 -o $tmp/alone/s.png"; do
+    m=${case%%:*}
+    # shellcheck disable=SC2086 # the arguments are words
+    "$tippe_alone" ${case#*:} >"$tmp/out" 2>"$tmp/err"
+    st=$?
+    check "without tippe-$m.so, ${case#*:} exits 1 (got $st)" test $st -eq 1
+    check "... naming tippe-$m.so" grep -q "cannot load $tmp/alone/tippe-$m.so" "$tmp/err"
+done
+check "... and leaves no output behind" \
+    bash -c "! ls '$tmp/alone/z.png' '$tmp/alone/print' '$tmp/alone/s.png' 2>/dev/null | grep -q ."
+"$tippe_alone" eval designs/m12-setscrew.json --z2 15 >"$tmp/eval.txt"
+check "without tippe-profile.so eval still gives the physics (exit 0)" test $? -eq 0
+check "... and says why the printed bodies are missing" \
+    grep -q "bodies .*cannot load .*tippe-profile.so" "$tmp/eval.txt"
+echo "not a module" >"$tmp/alone/tippe-plot.so" # fault injection
+"$tippe_alone" sweep designs/m12-setscrew.json --plot "$tmp/alone/z.png" >/dev/null 2>"$tmp/err"
+st=$?
+check "a broken tippe-plot.so: exit 1 (got $st)" test $st -eq 1
+check "... naming it, with the loader's reason" grep -q "cannot load .*tippe-plot.so.*: ." "$tmp/err"
+
+finish
