@@ -3,6 +3,7 @@
 
 #include "tippe/dynamics.h"
 #include "tippe/json.h"
+#include "tippe/launch.h"
 #include "tippe/plot.h"
 #include "tippe/report.h"
 #include "tippe/scenario.h"
@@ -17,9 +18,6 @@
 
 static const char *const VERB = "simulate";
 
-/* A hang agrees with theory when the angles differ by less than this: the
- * settling tolerance leaves ~1e-3 rad, a "fast" run's Jellett drift a few 1e-3. */
-#define HANG_AGREE_RAD 1e-2
 
 typedef struct {
     int n, cap;
@@ -91,7 +89,8 @@ static void check_theory(const tippe_scenario *sc, const tippe_dynamics_result *
         if ((k == TIPPE_FINAL_NO_TIP && r->verdict == TIPPE_VERDICT_NO_TIP) ||
             (k == TIPPE_FINAL_TIP && r->verdict == TIPPE_VERDICT_TIP) ||
             (k == TIPPE_FINAL_HANG && r->verdict == TIPPE_VERDICT_HANG &&
-             fabs(tc->pred.state[i].theta_rad - r->theta_final_rad) < HANG_AGREE_RAD))
+             fabs(tc->pred.state[i].theta_rad - r->theta_final_rad) <
+                 TIPPE_LAUNCH_HANG_AGREE_RAD))
             tc->agrees = 1;
     }
 }
@@ -260,7 +259,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
             cJSON_AddNullToObject(th, "agrees");
         else
             cJSON_AddBoolToObject(th, "agrees", tc->agrees);
-        cJSON_AddNumberToObject(th, "hang_tolerance_rad", HANG_AGREE_RAD);
+        cJSON_AddNumberToObject(th, "hang_tolerance_rad", TIPPE_LAUNCH_HANG_AGREE_RAD);
     }
     return o;
 }
