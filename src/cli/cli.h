@@ -182,6 +182,9 @@ void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
  * verb calls it for every output before any work, so that bad usage leaves
  * nothing and costs nothing. */
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot);
+/* Records the verb's input files (tippe_cli_parse does it for the positional
+ * arguments): tippe_cli_check_output refuses an output that is one of them. */
+void tippe_cli_note_inputs(const char *const *paths, int n);
 
 /* Runs verb v (argv[0] is its name) the way both front ends do: signals stop
  * it cleanly (tippe_cli_signals_install), its output files form one set that
