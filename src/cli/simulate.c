@@ -160,7 +160,7 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
         }
         printf(" -> %s\n", tc->agrees > 0   ? "agrees"
                            : tc->agrees == 0 ? "DISAGREES"
-                                             : "not comparable (no settled state)");
+                                             : "not comparable (no proved end state)");
     }
     printf("accuracy  %s rtol %g (%s): Jellett drift %.2g, energy balance error %.2g, "
            "%ld steps (%ld rejected), %ld RHS evaluations, %.3g s\n",
@@ -274,13 +274,14 @@ typedef struct {
     tippe_cli_launch_args l; /* the launch: scenario or design, and its options */
 } simulate_args;
 
-#define SIMULATE_ABOUT                                                                        \
-    "Integrates one launch (the paper's section 3 model with viscous sliding friction)\n"     \
-    "until the top settles, loses contact or reaches t_end, and compares the outcome with\n" \
-    "Theorem 5.1's prediction for the launch's Jellett invariant. Verdicts: no_tip, tip,\n"  \
-    "hang, lost_contact, undecided. The launch is a scenario file (docs/dynamics.md), or a\n"\
-    "design with --z2 and the launch options below: without them, tippe launch's central\n" \
-    "hand launch (tilt 0.0674 rad, steady precession, spin 15 rev/s, no sliding, mu 0.1)."
+#define SIMULATE_ABOUT                                                                    \
+    "Integrates one launch (the paper's section 3 model with viscous sliding friction)\n" \
+    "until its verdict is proved, it loses contact or it reaches t_end, and compares it\n" \
+    "with Theorem 5.1's prediction for the launch's Jellett invariant. Verdicts: no_tip,\n" \
+    "tip, hang, lost_contact, undecided, bounded (mu = 0). The launch is a scenario file\n" \
+    "(docs/dynamics.md), or a design with --z2 and the launch options below: without\n"   \
+    "them, tippe launch's central hand launch (tilt 0.0674 rad, steady precession, spin\n" \
+    "15 rev/s, no sliding, mu " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) " s/m)."
 
 static int simulate_parse(simulate_args *a, int argc, char **argv)
 {
@@ -330,7 +331,16 @@ static int simulate_load(const simulate_args *a, tippe_scenario *sc)
 {
     tippe_error err;
     int rc = tippe_cli_launch_load(a->file, &a->l, sc, &err);
-    return rc ? tippe_cli_fail(VERB, &err, rc) : 0;
+    if (rc)
+        return tippe_cli_fail(VERB, &err, rc);
+    /* the design's --set changes go into the name, hence the text and plot titles */
+    if (a->l.is_design && a->l.sets.n) {
+        char sets[512];
+        const size_t len = strlen(sc->name);
+        snprintf(sc->name + len, sizeof sc->name - len, " [design: %s]",
+                 tippe_cli_sets_text(&a->l.sets, sets, sizeof sets));
+    }
+    return 0;
 }
 
 /* The trajectory sampling (with --csv or --plot): 0, or 2 if the samples
