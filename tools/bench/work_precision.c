@@ -5,9 +5,12 @@
  *   1. a reference verdict run (rk8pd at rtol 1e-14, the library's floor, to
  *      the scenario's t_end) gives the reference verdict and its time t_v;
  *   2. the error is measured at the sample times t_j = j T / 4, j = 1..4, with
- *      T = min(t_v, t_end): each sample is the final state of a verdict-level
- *      run with t_end = t_j that keeps integrating past any verdict, so the
- *      steps are exactly those of a launch (no landing on a sampling grid);
+ *      T = min(t_v, t_end), or the scenario's horizon when the verdict is
+ *      proved at launch (t_v = 0: the verdict costs nothing, and the benchmark
+ *      measures the trajectory over that horizon instead): each sample is the
+ *      final state of a verdict-level run with t_end = t_j that keeps
+ *      integrating past any verdict, so the steps are exactly those of a
+ *      launch (no landing on a sampling grid);
  *      the reference samples come from rk8pd at 1e-14 and are checked by a
  *      second stepper (rkck at 1e-14, or msadams where rkck exceeds the step
  *      budget): their mutual difference is the floor
@@ -48,19 +51,24 @@ typedef struct {
     const char *file;
     const char *overrides[4];
     int n_overrides;
+    double horizon_s; /* T when the reference verdict is proved at t = 0 */
 } bench_scenario;
 
 /* The shipped scenarios where they exist; the stiff and slow cases are the
  * Figure 12 flip with mu changed by an override. */
 static const bench_scenario scenarios[] = {
-    {"fig12-flip", "designs/scenarios/fig12-tip.json", {0}, 0},
-    {"fig12-hang", "designs/scenarios/fig12-hang.json", {0}, 0},
-    {"fig14-fall", "designs/scenarios/fig14-s3-fall.json", {0}, 0},
-    {"film-si-flip", "designs/scenarios/film-IIb-flip.json", {0}, 0},
+    {"fig12-flip", "designs/scenarios/fig12-tip.json", {0}, 0, 0},
+    /* The hang and the fall are proved at launch (docs/dynamics.md): their
+     * trajectories are measured over 2000 s, about where the settling rule of
+     * earlier releases decided them (1999.6 and 2020.7 s), so that the errors
+     * stay comparable with the earlier tables. */
+    {"fig12-hang", "designs/scenarios/fig12-hang.json", {0}, 0, 2000},
+    {"fig14-fall", "designs/scenarios/fig14-s3-fall.json", {0}, 0, 2000},
+    {"film-si-flip", "designs/scenarios/film-IIb-flip.json", {0}, 0, 0},
     /* mu 1e3 s/m: sliding relaxes ~1e3 times faster than the top moves */
-    {"stiff-mu1e3", "designs/scenarios/fig12-tip.json", {"mu=1000", "t_end=200"}, 2},
+    {"stiff-mu1e3", "designs/scenarios/fig12-tip.json", {"mu=1000", "t_end=200"}, 2, 0},
     /* mu 1e-3 s/m: the flip takes ~35 times longer than at 0.04 */
-    {"slow-mu1e-3", "designs/scenarios/fig12-tip.json", {"mu=0.001", "t_end=200000"}, 2},
+    {"slow-mu1e-3", "designs/scenarios/fig12-tip.json", {"mu=0.001", "t_end=200000"}, 2, 0},
 };
 enum { N_SCEN = (int)(sizeof scenarios / sizeof scenarios[0]) };
 
@@ -203,7 +211,8 @@ int main(int argc, char **argv)
             fprintf(stderr, "work_precision: %s reference: %s\n", B->label, err.msg);
             return 1;
         }
-        const double T = fmin(ref.t_verdict, sc.t_end);
+        const double T =
+            ref.t_verdict > 0 ? fmin(ref.t_verdict, sc.t_end) : fmin(B->horizon_s, sc.t_end);
         const double cap_s = fmax(CAP_MIN_S, CAP_FACTOR * ref_wall);
         double t_s[N_SAMPLES];
         for (int j = 0; j < N_SAMPLES; j++)
