@@ -711,8 +711,11 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
 {
     const double margin = verdict_margin(&rs->vc, rs->opt->margin_factor, rs->energy_abs_err,
                                          rs->J_abs_err, res->E0);
+    const tippe_dynamics_sample *s = &rs->smp;
+    const int at_rest = (s->theta == 0.0 || s->theta == M_PI) && s->theta_dot == 0.0 &&
+                        s->slip_speed == 0.0;
     verdict_trap tr;
-    verdict_energy_test(&rs->vc, rs->smp.theta, rs->smp.E, margin, &tr);
+    verdict_energy_test(&rs->vc, s->theta, s->E, margin, at_rest ? s->theta : NAN, &tr);
     const int decidable = rs->c.mu == 0.0 ? tr.confined : (tr.trapped || tr.unresolvable);
     if (!decidable)
         return 0;

@@ -45,10 +45,13 @@ double verdict_margin(const verdict_ctx *v, double factor, double energy_err_J, 
     return factor * (energy_err_J + fabs(v->J) * J_err / v->D_min) + 1e-12 * E0;
 }
 
-/* The least V over the critical points of well i other than its minimum: the
- * poles too (a pole that is a maximum is an unstable steady state the motion
- * could approach), interior maxima, and degenerate points. */
-static double well_barrier(const verdict_ctx *v, int i)
+/* The least V over the critical points of well i other than its minimum that the
+ * motion can end at: interior maxima and degenerate points. A pole that is a strict
+ * maximum of V is an unstable steady state (Theorem 5.1): a motion that dissipates
+ * (eq 4.1) ends there only from that state's stable manifold, a set of launches of
+ * measure zero, so it is not a barrier, except when the state is exactly that steady
+ * state (at the pole, no tilt rate, no slip: E never falls and it stays for ever). */
+static double well_barrier(const verdict_ctx *v, int i, double rest_pole_rad)
 {
     const tippe_theory_wells *w = &v->wells;
     const tippe_theory_well *wl = &w->well[i];
@@ -57,6 +60,9 @@ static double well_barrier(const verdict_ctx *v, int i)
         const double th = w->crit_theta_rad[c];
         if (th < wl->theta_lo_rad || th > wl->theta_hi_rad || th == wl->theta_min_rad)
             continue;
+        const int pole = th == 0.0 || th == M_PI;
+        if (pole && w->crit_kind[c] == 1 && !w->crit_degenerate[c] && th != rest_pole_rad)
+            continue;
         if (w->crit_V[c] < b)
             b = w->crit_V[c];
     }
@@ -64,11 +70,11 @@ static double well_barrier(const verdict_ctx *v, int i)
 }
 
 void verdict_energy_test(const verdict_ctx *v, double theta, double E, double margin,
-                         verdict_trap *out)
+                         double rest_pole_rad, verdict_trap *out)
 {
     out->well = tippe_theory_well_index(&v->wells, theta);
     const tippe_theory_well *wl = &v->wells.well[out->well];
-    out->barrier = well_barrier(v, out->well);
+    out->barrier = well_barrier(v, out->well, rest_pole_rad);
     out->gap = out->barrier - E;
     out->confined = E + margin < wl->V_escape;
     out->trapped = out->confined && !wl->flat && E + margin < out->barrier;

@@ -27,14 +27,17 @@ typedef struct {
     int trapped;         /* confined, E + margin < barrier and the well is not flat */
     int unresolvable;    /* confined, and the well flat or its barrier within the margin
                             of its minimum: as the margin never shrinks, never trapped */
-    double barrier;      /* J, least V of any other critical point in the well (INFINITY: none) */
+    double barrier;      /* J, least V of the well's other critical points where a motion can
+                            end (interior maxima, degenerate points; INFINITY: none) */
     double gap;          /* J, barrier - E */
     double lo, hi;       /* rad, where V <= E + margin in the well (verdict_trap_range) */
 } verdict_trap;
 
-/* Cheap (a few comparisons): called at every accepted step. */
+/* Cheap (a few comparisons): called at every accepted step. rest_pole_rad is 0 or pi
+ * when the state is exactly the steady state at that pole (no tilt rate, no slip),
+ * NAN otherwise: only then is a pole that is a maximum of V a barrier. */
 void verdict_energy_test(const verdict_ctx *v, double theta, double E, double margin,
-                         verdict_trap *out);
+                         double rest_pole_rad, verdict_trap *out);
 /* Fills tr->lo, tr->hi by bisection on V (~100 evaluations): only before a contact bound. */
 void verdict_trap_range(const verdict_ctx *v, double E, double margin, verdict_trap *tr);
 

@@ -339,8 +339,12 @@ int tippe_launch_tally_records(const tippe_launch_record *r, long n, tippe_launc
             continue;
         if (r[i].verdict == TIPPE_VERDICT_TIP && isfinite(r[i].t_flip_s))
             t[m_flip++] = r[i].t_flip_s;
-        if (r[i].how == TIPPE_DECIDED_TRAPPED && r[i].barrier_gap_J / r[i].margin_J <
-                                                     out->min_gap_over_margin)
+        if (r[i].how != TIPPE_DECIDED_TRAPPED)
+            continue;
+        out->trapped++;
+        if (isinf(r[i].barrier_gap_J))
+            out->trapped_no_barrier++;
+        else if (r[i].barrier_gap_J / r[i].margin_J < out->min_gap_over_margin)
             out->min_gap_over_margin = r[i].barrier_gap_J / r[i].margin_J;
     }
     out->flips = m_flip;

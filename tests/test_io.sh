@@ -170,6 +170,14 @@ expect_fail "two outputs that are one file through a link" 2 "name the same file
 expect_fail "simulate: a directory" 2 "it is a directory" -- simulate "$sc" --csv "$d/adir"
 expect_fail "sweep: a plot through a file" 2 "Not a directory" -- sweep "$m3" --plot "$d/afile/z.png"
 expect_fail "launch: a CSV under /proc" 2 "no new file" -- launch "$m3" --z2 4 -n 100000 --csv /proc/x.csv
+cp "$sc" "$d/input.json"
+ln -s input.json "$d/input-link.csv"
+expect_fail "an output that is the input file" 2 "is the input file" -- \
+    simulate "$d/input.json" --csv "$d/input.json"
+expect_fail "an output that is the input file through a link" 2 "is the input file" -- \
+    simulate "$d/input.json" --csv "$d/input-link.csv"
+check "the input file is intact" cmp -s "$sc" "$d/input.json"
+rm -f "$d/input-link.csv" "$d/input.json"
 elapsed_ms=$((($(date +%s%N) - t0) / 1000000))
 tippe=$real_tippe
 rm -f "$d/same-link.png"

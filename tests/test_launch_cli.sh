@@ -78,6 +78,8 @@ for c in o["cells"]:
 assert [z["subgroup"] for z in o["zones"]] == ["IIb"] and o["zones"][0]["group"] == "II"
 rows = list(csv.DictReader(open(sys.argv[2])))
 assert len(rows) == 4 and "dominant_share" in rows[0]
+verdicts = ["no_tip", "tip", "hang", "lost_contact", "undecided", "bounded"]
+assert all(sum(int(r[v]) for v in verdicts) == int(r["n"]) for r in rows)
 EOF
 OMP_NUM_THREADS=1 "$tippe" map "$m12" --z2 10:15:2 --spin 5:20rev/s:2 -n 2 "${quick[@]}" --json \
     >"$tmp/map1.json"

@@ -191,11 +191,44 @@ static void test_sweep(void)
     CHECK(decided >= 12, "only %d of 24 decided", decided);
 }
 
+/* An unstable pole is not a barrier (docs/dynamics.md, "Wells"): a hang 0.8 deg from
+ * theta = pi, V(pi) only ~3e-11 J above its minimum, is proved (it used to be
+ * undecided, flat_well); the exact steady state at an unstable pole is never decided. */
+static void test_unstable_poles(void)
+{
+    /* launch 58 of `tippe launch designs/m12-setscrew.json --z2 15 -n 200 --seed 1 --mu 0.1` */
+    tippe_dynamics_model m = {{0.0768353, 0.025, 0.00219014, 1.90535e-05, 1.77648e-05, -1},
+                              9.81, 0.1};
+    tippe_dynamics_initial a = {0.1020083457, 0, 86.90752611, 101.3246194, -0.03382981768,
+                                0.005757684295};
+    check_case("hang near pi", &m, &a, 600.0, TIPPE_VERDICT_HANG, 600.0, 0.0);
+
+    /* Figure 12's top exactly upright at n- < n = 1.5 < n*: theta = 0 is a maximum of V
+     * and the contact bound holds (without the rest rule this is "hang" at t = 0), but
+     * nothing slides and nothing moves: it must stay undecided, at theta = 0 */
+    tippe_dynamics_model f = {{1.0, 1.0, 0.3, 0.92, 1.0, 0}, 1.0, 0.04};
+    tippe_dynamics_initial up = {0.0, 0, 0, 1.5, 0, 0};
+    tippe_dynamics_options o;
+    tippe_dynamics_options_default(&o);
+    o.t_end = 200.0;
+    tippe_dynamics_result r;
+    tippe_error e;
+    CHECK(tippe_dynamics_run(&f, &up, &o, &r, &e) == TIPPE_OK, "upright: %s", e.msg);
+    CHECK(r.verdict == TIPPE_VERDICT_UNDECIDED && r.how == TIPPE_DECIDED_T_END &&
+              r.last.theta == 0.0,
+          "upright at an unstable pole: %s (%s), theta %g", tippe_verdict_name(r.verdict),
+          tippe_decision_name(r.how), r.last.theta);
+    /* the same top tilted by 1e-6 rad hangs, proved */
+    tippe_dynamics_initial tilted = steady(&f, 1e-6, 1.5);
+    check_case("upright + 1e-6 rad", &f, &tilted, 20000.0, TIPPE_VERDICT_HANG, 100.0, 0.0);
+}
+
 int main(void)
 {
     test_strong_friction();
     test_small_top();
     test_falls();
+    test_unstable_poles();
     test_sweep();
     return check_summary("test_verdict");
 }

@@ -129,7 +129,9 @@ static void check_text(const hands_args *a, const check_result *r)
            tippe_verdict_name(rec->verdict), rec->theta_final_rad,
            rec->theta_final_rad * 180 / M_PI, rec->spin_final_rad_s);
     printf("           decided by %s at t = %.4g s", tippe_decision_name(rec->how), rec->t_s);
-    if (rec->how == TIPPE_DECIDED_TRAPPED)
+    if (rec->how == TIPPE_DECIDED_TRAPPED && isinf(rec->barrier_gap_J))
+        printf(" (a well with no barrier; energy margin %.3g J)", rec->margin_J);
+    else if (rec->how == TIPPE_DECIDED_TRAPPED)
         printf(" (energy %.3g J below the well's barrier, margin %.3g J)", rec->barrier_gap_J,
                rec->margin_J);
     printf("\n");

@@ -9,7 +9,12 @@
 #include <stdio.h>
 
 #include "tippe/dynamics.h"
+#include "tippe/launch.h"
 #include "tippe/scenario.h"
+
+/* A macro's value as a string literal, for defaults quoted in --help texts. */
+#define TIPPE_CLI_STR_(x) #x
+#define TIPPE_CLI_STR(x) TIPPE_CLI_STR_(x)
 #include "tippe/error.h"
 
 struct cJSON;
@@ -182,6 +187,9 @@ void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
  * verb calls it for every output before any work, so that bad usage leaves
  * nothing and costs nothing. */
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot);
+/* Records the verb's input files (tippe_cli_parse does it for the positional
+ * arguments): tippe_cli_check_output refuses an output that is one of them. */
+void tippe_cli_note_inputs(const char *const *paths, int n);
 
 /* Runs verb v (argv[0] is its name) the way both front ends do: signals stop
  * it cleanly (tippe_cli_signals_install), its output files form one set that
@@ -274,7 +282,7 @@ typedef struct {
     {.name = "V", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "initial.V",            \
      .unit = "m/s", .min = -100, .max = 100, .help = "its other component (initial.V; design: 0)"}, \
     {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "mu", .unit = "s/m",   \
-     .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12 (design: 0.1)"},            \
+     .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12 (design: " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) ")"}, \
     {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "g", .unit = "m/s^2",   \
      .min = 0.01, .max = 1000, .help = "gravity (design: 9.81)"},                                 \
     {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "t_end",            \

@@ -161,8 +161,48 @@ static int canonical_name(const char *target, char *out, size_t size)
     return snprintf(out, size, "%s/%s", real, base) < (int)size;
 }
 
+/* The verb's input files (its positional arguments), to refuse an output that
+ * would replace one of them. */
+enum { MAX_INPUTS = 16 };
+static struct {
+    const char *path;
+    dev_t dev;
+    ino_t ino;
+} inputs[MAX_INPUTS];
+static int n_inputs;
+
+void tippe_cli_note_inputs(const char *const *paths, int n)
+{
+    n_inputs = 0;
+    for (int i = 0; i < n && n_inputs < MAX_INPUTS; i++) {
+        struct stat st;
+        if (strcmp(paths[i], "-") && stat(paths[i], &st) == 0 && S_ISREG(st.st_mode)) {
+            inputs[n_inputs].path = paths[i];
+            inputs[n_inputs].dev = st.st_dev;
+            inputs[n_inputs++].ino = st.st_ino;
+        }
+    }
+}
+
+/* The input that path (through any symlink) already is, or NULL. */
+static const char *input_named_by(const char *path)
+{
+    struct stat st;
+    if (!strcmp(path, "-") || stat(path, &st) != 0)
+        return NULL;
+    for (int i = 0; i < n_inputs; i++)
+        if (inputs[i].dev == st.st_dev && inputs[i].ino == st.st_ino)
+            return inputs[i].path;
+    return NULL;
+}
+
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot)
 {
+    const char *input = input_named_by(path);
+    if (input)
+        return tippe_cli_usage_error(verb, "%s %s is the input file '%s': it would be "
+                                     "replaced; choose another output name",
+                                     option, path, input);
     if (plot && !tippe_plot_device(path))
         return tippe_cli_usage_error(
             verb, "%s %s: unsupported plot format (use a .png, .svg or .pdf file name)", option,

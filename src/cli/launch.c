@@ -89,10 +89,15 @@ static void print_theory_summary(const tippe_launch_tally *t)
     else
         printf("agreement  no settled launch to compare\n");
     /* how the verdicts were reached (docs/dynamics.md, "Proved verdicts") */
-    if (isfinite(t->min_gap_over_margin))
-        printf("proof      no_tip/tip/hang proved by energy trapping and a contact bound; "
-               "smallest barrier gap %.3g times its margin\n",
-               t->min_gap_over_margin);
+    if (t->trapped) {
+        printf("proof      %ld no_tip/tip/hang proved by energy trapping and a contact bound",
+               t->trapped);
+        if (t->trapped_no_barrier)
+            printf(", %ld of them in a well with no barrier", t->trapped_no_barrier);
+        if (isfinite(t->min_gap_over_margin))
+            printf("; smallest barrier gap %.3g times its margin", t->min_gap_over_margin);
+        printf("\n");
+    }
     if (t->flips)
         printf("flip       %ld tips followed to theta = 90 deg: median model time %.3g s\n",
                t->flips, t->median_t_flip_s);

@@ -18,7 +18,7 @@
 
 #define MAP_ABOUT                                                                          \
     "Hand launches over a grid of weight positions Z2 and launch spins: the share of\n"     \
-    "no_tip, tip, hang, lost_contact and undecided in each cell. Within a cell the spin\n"  \
+    "no_tip, tip, hang, lost_contact, undecided and bounded in each cell. Within a cell the spin\n"  \
     "is fixed and the rest of each hand launch (tilt, precession, sliding) is drawn as in\n"\
     "tippe launch; every cell uses the same N draws, so that differences between cells\n"   \
     "are not noise of the draws."
@@ -33,18 +33,18 @@ static int write_map_csv(const char *path, const tippe_launch_map *m, const tipp
     if (rc)
         return rc;
     FILE *f = rf.f;
-    fprintf(f, "z2_mm,spin_rad_s,group,subgroup,n,no_tip,tip,hang,lost_contact,undecided,agree,"
-               "comparable,dominant,dominant_share\n");
+    fprintf(f, "z2_mm,spin_rad_s,group,subgroup,n,no_tip,tip,hang,lost_contact,undecided,"
+               "bounded,agree,comparable,dominant,dominant_share\n");
     for (int i = 0; i < m->n_z2; i++)
         for (int j = 0; j < m->n_spin; j++) {
             const tippe_launch_tally *c = &m->cells[(long)i * m->n_spin + j];
             tippe_theory_class cls;
             tippe_theory_classify(tops[i].A / tops[i].C, tops[i].eps / tops[i].R, &cls);
             int v = tippe_launch_dominant(c);
-            fprintf(f, "%.10g,%.10g,%s,%s,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%s,%.6g\n",
+            fprintf(f, "%.10g,%.10g,%s,%s,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%ld,%s,%.6g\n",
                     m->z2_mm[i], 2 * M_PI * m->spin_rev_s[j], tippe_group_family(cls.group),
-                    tippe_group_name(cls.group), c->n, c->counts[0],
-                    c->counts[1], c->counts[2], c->counts[3], c->counts[4], c->agree,
+                    tippe_group_name(cls.group), c->n, c->counts[0], c->counts[1],
+                    c->counts[2], c->counts[3], c->counts[4], c->counts[5], c->agree,
                     c->comparable, hands_verdict_names[v], (double)c->counts[v] / (double)c->n);
         }
     return tippe_report_commit(&rf, err);
@@ -53,7 +53,7 @@ static int write_map_csv(const char *path, const tippe_launch_map *m, const tipp
 static void print_map_table(const tippe_launch_map *m)
 {
     printf("\nmost frequent outcome and its share in %% (N no_tip, T tip, H hang, L lost_contact, "
-           "U undecided)\n");
+           "U undecided, B bounded)\n");
     printf("spin rev/s |");
     for (int i = 0; i < m->n_z2; i++)
         printf(" %6.2f", m->z2_mm[i]);
@@ -319,6 +319,7 @@ int tippe_cli_map(int argc, char **argv)
 {
     hands_args a = {.verb = "map", .n = 10, .seed = 1};
     tippe_launch_options_default(&a.o);
+    a.o.until_flip = 0; /* the map shows shares of outcomes, not flip times */
     int rc = map_parse(&a, argc, argv);
     if (rc == TIPPE_CLI_HELP)
         return 0;

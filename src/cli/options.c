@@ -346,6 +346,7 @@ int tippe_cli_parse(tippe_cli_spec *spec, int argc, char **argv, const char **ar
     *n_args = argc - optind;
     for (int i = 0; i < *n_args; i++)
         args[i] = argv[optind + i];
+    tippe_cli_note_inputs(args, *n_args);
     return 0;
 }
 

@@ -3,6 +3,7 @@
 
 #include "tippe/dynamics.h"
 #include "tippe/json.h"
+#include "tippe/launch.h"
 #include "tippe/plot.h"
 #include "tippe/report.h"
 #include "tippe/scenario.h"
@@ -17,9 +18,6 @@
 
 static const char *const VERB = "simulate";
 
-/* A hang agrees with theory when the angles differ by less than this: the
- * settling tolerance leaves ~1e-3 rad, a "fast" run's Jellett drift a few 1e-3. */
-#define HANG_AGREE_RAD 1e-2
 
 typedef struct {
     int n, cap;
@@ -91,7 +89,8 @@ static void check_theory(const tippe_scenario *sc, const tippe_dynamics_result *
         if ((k == TIPPE_FINAL_NO_TIP && r->verdict == TIPPE_VERDICT_NO_TIP) ||
             (k == TIPPE_FINAL_TIP && r->verdict == TIPPE_VERDICT_TIP) ||
             (k == TIPPE_FINAL_HANG && r->verdict == TIPPE_VERDICT_HANG &&
-             fabs(tc->pred.state[i].theta_rad - r->theta_final_rad) < HANG_AGREE_RAD))
+             fabs(tc->pred.state[i].theta_rad - r->theta_final_rad) <
+                 TIPPE_LAUNCH_HANG_AGREE_RAD))
             tc->agrees = 1;
     }
 }
@@ -161,7 +160,7 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
         }
         printf(" -> %s\n", tc->agrees > 0   ? "agrees"
                            : tc->agrees == 0 ? "DISAGREES"
-                                             : "not comparable (no settled state)");
+                                             : "not comparable (no proved end state)");
     }
     printf("accuracy  %s rtol %g (%s): Jellett drift %.2g, energy balance error %.2g, "
            "%ld steps (%ld rejected), %ld RHS evaluations, %.3g s\n",
@@ -260,7 +259,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
             cJSON_AddNullToObject(th, "agrees");
         else
             cJSON_AddBoolToObject(th, "agrees", tc->agrees);
-        cJSON_AddNumberToObject(th, "hang_tolerance_rad", HANG_AGREE_RAD);
+        cJSON_AddNumberToObject(th, "hang_tolerance_rad", TIPPE_LAUNCH_HANG_AGREE_RAD);
     }
     return o;
 }
@@ -275,13 +274,14 @@ typedef struct {
     tippe_cli_launch_args l; /* the launch: scenario or design, and its options */
 } simulate_args;
 
-#define SIMULATE_ABOUT                                                                        \
-    "Integrates one launch (the paper's section 3 model with viscous sliding friction)\n"     \
-    "until the top settles, loses contact or reaches t_end, and compares the outcome with\n" \
-    "Theorem 5.1's prediction for the launch's Jellett invariant. Verdicts: no_tip, tip,\n"  \
-    "hang, lost_contact, undecided. The launch is a scenario file (docs/dynamics.md), or a\n"\
-    "design with --z2 and the launch options below: without them, tippe launch's central\n" \
-    "hand launch (tilt 0.0674 rad, steady precession, spin 15 rev/s, no sliding, mu 0.1)."
+#define SIMULATE_ABOUT                                                                    \
+    "Integrates one launch (the paper's section 3 model with viscous sliding friction)\n" \
+    "until its verdict is proved, it loses contact or it reaches t_end, and compares it\n" \
+    "with Theorem 5.1's prediction for the launch's Jellett invariant. Verdicts: no_tip,\n" \
+    "tip, hang, lost_contact, undecided, bounded (mu = 0). The launch is a scenario file\n" \
+    "(docs/dynamics.md), or a design with --z2 and the launch options below: without\n"   \
+    "them, tippe launch's central hand launch (tilt 0.0674 rad, steady precession, spin\n" \
+    "15 rev/s, no sliding, mu " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) " s/m)."
 
 static int simulate_parse(simulate_args *a, int argc, char **argv)
 {

@@ -29,10 +29,11 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
                prefix, tippe_verdict_name(r->verdict), th, th * 180 / M_PI, r->spin_final_rad_s,
                r->phi_dot_final_rad_s);
     }
-    printf("%*sproved at t = %.6g s (trapped): energy %.3g J below the well's barrier",
-           (int)strlen(prefix), "", r->t_verdict, r->barrier_gap_J);
+    printf("%*sproved at t = %.6g s (trapped): ", (int)strlen(prefix), "", r->t_verdict);
     if (isinf(r->barrier_gap_J))
-        printf(" (no barrier: one well)");
+        printf("the well has no barrier (no interior maximum of V)");
+    else
+        printf("energy %.3g J below the well's barrier", r->barrier_gap_J);
     printf(", margin %.3g J; Rn >= %.4g N while theta in [%.6g, %.6g] rad\n", r->margin_J,
            r->Rn_bound_N, r->theta_lo_rad, r->theta_hi_rad);
 }
