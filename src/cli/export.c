@@ -79,6 +79,12 @@ static void zone_note(const tippe_design *d, double z2_mm, char *out, size_t siz
              tippe_group_name(cls.group), top.A / top.C, top.eps / top.R);
 }
 
+/* A coordinate for a %.3f column: one that rounds to zero prints 0.000, not -0.000. */
+static double coord_3dp(double v)
+{
+    return fabs(v) < 5e-4 ? 0.0 : v;
+}
+
 static void print_text(const tippe_design *d, const tippe_export_request *q,
                        const tippe_export_result *r)
 {
@@ -111,7 +117,8 @@ static void print_text(const tippe_design *d, const tippe_export_request *q,
         }
         printf("%-18s %-10s %9d %8d %13.3f %13s %10s  %.3f..%.3f, %.3f..%.3f, %.3f..%.3f\n",
                e->name, e->material, e->n_triangles, e->n_angles, e->mesh_volume_mm3, exact, rel,
-               e->lo_mm[0], e->hi_mm[0], e->lo_mm[1], e->hi_mm[1], e->lo_mm[2], e->hi_mm[2]);
+               coord_3dp(e->lo_mm[0]), coord_3dp(e->hi_mm[0]), coord_3dp(e->lo_mm[1]), coord_3dp(e->hi_mm[1]),
+               coord_3dp(e->lo_mm[2]), coord_3dp(e->hi_mm[2]));
     }
     printf("\nevery mesh: 0 open edges, 0 non-manifold edges, 0 flipped edges, 0 degenerate "
            "facets\n");
