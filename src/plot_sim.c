@@ -125,8 +125,11 @@ int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynam
     }
     char esc[300], title[600];
     tippe_plot_escape(sc->name, esc, sizeof esc);
-    snprintf(title, sizeof title, "%s at t = %.4g s: %s", tippe_verdict_name(res->verdict),
-             res->t_verdict, esc);
+    if (res->verdict == TIPPE_VERDICT_UNDECIDED)
+        snprintf(title, sizeof title, "undecided at t = %.4g s: %s", res->t_verdict, esc);
+    else
+        snprintf(title, sizeof title, "%s (decided at t = %.4g s): %s",
+                 tippe_verdict_name(res->verdict), res->t_verdict, esc);
 
     const double t_lo = t[0], t_hi = t[n - 1] > t[0] ? t[n - 1] : t[0] + 1;
     const double lx0 = 0.085, lx1 = 0.465;
@@ -222,7 +225,7 @@ int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynam
     plschr(0.0, 1.0);
 
     /* one legend for both sides, in the strip under the 3D panel */
-    tippe_plot_panel(vx0, vx1, 0.07, 0.20, 0, 1, 0, 1);
+    tippe_plot_panel(vx0, vx1, 0.095, 0.225, 0, 1, 0, 1);
     const tippe_plot_key keys[] = {
         {TIPPE_PLOT_KEY_LINE, "simulation (3D: open circle start, dot end)", COL_TRAJ, 1, 2.0,
          TIPPE_PLOT_SOLID},
@@ -235,12 +238,14 @@ int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynam
     char note[400];
     tippe_theory_class cls;
     tippe_theory_classify(top->A / top->C, top->eps / top->R, &cls);
-    snprintf(note, sizeof note,
-             "A/C = %.4g, #ge/R = %.4g (group %s), #gm = %.3g s/m, J#d0#u = %.4g kg m#u3#d/s",
-             top->A / top->C, top->eps / top->R, tippe_group_name(cls.group), sc->model.mu,
-             res->J0);
+    /* two short lines: one would run off the page's right edge */
     tippe_plot_panel(0.0, 1.0, 0.0, 1.0, 0, 1, 0, 1);
-    tippe_plot_text(0.76, 0.025, 0.0, 0.5, 0.75, 0x000000, note);
+    snprintf(note, sizeof note, "A/C = %.4g, #ge/R = %.4g (group %s)", top->A / top->C,
+             top->eps / top->R, tippe_group_name(cls.group));
+    tippe_plot_text(0.76, 0.047, 0.0, 0.5, 0.75, 0x000000, note);
+    snprintf(note, sizeof note, "#gm = %.3g s/m, J#d0#u = %.4g kg m#u3#d/s", sc->model.mu,
+             res->J0);
+    tippe_plot_text(0.76, 0.017, 0.0, 0.5, 0.75, 0x000000, note);
     /* last: the title helper restores the current panel, so one must exist */
     tippe_plot_page_title(title, fmin(1.1, 110.0 / (double)strlen(title)));
 

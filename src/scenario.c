@@ -135,6 +135,105 @@ static int check_range(tippe_json_reader *c, const char *path, double x, double 
                            unit);
 }
 
+/* top as {m, R, eps, A, C} in SI units, each checked. */
+static int read_explicit_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s)
+{
+    tippe_top *t = &s->model.top;
+    int rc;
+    if ((rc = tippe_json_check_keys(c, top, "top", NULL, top_explicit_keys, NULL)))
+        return rc;
+    if ((rc = tippe_json_number(c, top, "top", "m", 1, &t->m, NULL)) ||
+        (rc = tippe_json_number(c, top, "top", "R", 1, &t->R, NULL)) ||
+        (rc = tippe_json_number(c, top, "top", "eps", 1, &t->eps, NULL)) ||
+        (rc = tippe_json_number(c, top, "top", "A", 1, &t->A, NULL)) ||
+        (rc = tippe_json_number(c, top, "top", "C", 1, &t->C, NULL)))
+        return rc;
+    if ((rc = check_range(c, "top.m", t->m, TOP_M_MIN_KG, TOP_M_MAX_KG, "kg")) ||
+        (rc = check_range(c, "top.R", t->R, TOP_R_MIN_M, TOP_R_MAX_M, "m")) ||
+        (rc = check_range(c, "top.A", t->A, TOP_I_MIN_KG_M2, TOP_I_MAX_KG_M2, "kg m^2")) ||
+        (rc = check_range(c, "top.C", t->C, TOP_I_MIN_KG_M2, TOP_I_MAX_KG_M2, "kg m^2")))
+        return rc;
+    if (!(t->eps >= 0 && t->eps < t->R))
+        return tippe_json_fail(c, "top.eps", "must satisfy 0 <= eps < R = %g m, got %g", t->R,
+                               t->eps);
+    if (!(t->A > 0))
+        return tippe_json_fail(c, "top.A", "must be > 0 kg m^2, got %g", t->A);
+    if (!(t->C > 0))
+        return tippe_json_fail(c, "top.C", "must be > 0 kg m^2, got %g", t->C);
+    /* A rigid body of revolution has A >= C/2 about its centre of mass
+     * (A = int (r^2/2 + z^2) dm, C = int r^2 dm). */
+    if (t->A < 0.5 * t->C * (1 - 1e-12))
+        return tippe_json_fail(c, "top.A",
+                               "A = %g kg m^2 < C/2 = %g: no rigid body has these moments", t->A,
+                               0.5 * t->C);
+    t->com_side = t->eps > 0 ? -1 : 0;
+    s->design_path[0] = '\0';
+    s->z2_mm = NAN;
+    return TIPPE_OK;
+}
+
+/* top.set: the design's "FIELD=VALUE" overrides, pointing into the JSON. */
+static int read_design_sets(tippe_json_reader *c, const cJSON *top, const char **sets,
+                            int *n_sets)
+{
+    *n_sets = 0;
+    const cJSON *set = cJSON_GetObjectItemCaseSensitive(top, "set");
+    if (!set)
+        return TIPPE_OK;
+    if (!cJSON_IsArray(set))
+        return tippe_json_wrong_type(c, "top.set", "an array of \"FIELD=VALUE\" strings", set);
+    int i = 0;
+    for (const cJSON *it = set->child; it; it = it->next, i++) {
+        char sub[64];
+        snprintf(sub, sizeof sub, "top.set[%d]", i);
+        if (!cJSON_IsString(it))
+            return tippe_json_wrong_type(c, sub, "a \"FIELD=VALUE\" string", it);
+        if (*n_sets == MAX_DESIGN_SETS)
+            return tippe_json_fail(c, "top.set", "more than %d overrides", MAX_DESIGN_SETS);
+        sets[(*n_sets)++] = it->valuestring;
+    }
+    return TIPPE_OK;
+}
+
+/* top as {design, z2_mm, set}: the design file (relative to the scenario's
+ * directory), loaded with its overrides, and its top with the weight at z2_mm. */
+static int read_design_top(tippe_json_reader *c, const cJSON *top, const cJSON *design,
+                           tippe_scenario *s)
+{
+    int rc;
+    if ((rc = tippe_json_check_keys(c, top, "top", NULL, top_design_keys, NULL)))
+        return rc;
+    if (!cJSON_IsString(design) || !design->valuestring[0])
+        return tippe_json_wrong_type(c, "top.design", "a file name", design);
+    if ((rc = tippe_json_number(c, top, "top", "z2_mm", 1, &s->z2_mm, NULL)))
+        return rc;
+    if (design->valuestring[0] == '/') {
+        snprintf(s->design_path, sizeof s->design_path, "%s", design->valuestring);
+    } else {
+        char dir[1024];
+        dirname_of(c->file, dir, sizeof dir);
+        if (snprintf(s->design_path, sizeof s->design_path, "%s/%s", dir, design->valuestring) >=
+            (int)sizeof s->design_path)
+            return tippe_json_fail(c, "top.design", "path too long");
+    }
+    const char *sets[MAX_DESIGN_SETS];
+    int n_sets;
+    if ((rc = read_design_sets(c, top, sets, &n_sets)))
+        return rc;
+    tippe_design *d = NULL;
+    tippe_error derr;
+    rc = tippe_design_load(s->design_path, sets, n_sets, &d, &derr);
+    if (rc)
+        return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.design", "%s", derr.msg)
+                                  : tippe_error_set(c->err, rc, "%s", derr.msg);
+    rc = tippe_design_top(d, s->z2_mm, &s->model.top, &derr);
+    tippe_design_free(d);
+    if (rc)
+        return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.z2_mm", "%s", derr.msg)
+                                  : tippe_error_set(c->err, rc, "%s", derr.msg);
+    return TIPPE_OK;
+}
+
 static int read_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s)
 {
     if (!top)
@@ -154,83 +253,7 @@ static int read_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s)
         return tippe_json_fail(c, "top",
                                "give either a design (design, z2_mm) or the explicit top "
                                "(m, R, eps, A, C), not both");
-    tippe_top *t = &s->model.top;
-    if (!design) {
-        if ((rc = tippe_json_check_keys(c, top, "top", NULL, top_explicit_keys, NULL)))
-            return rc;
-        if ((rc = tippe_json_number(c, top, "top", "m", 1, &t->m, NULL)) ||
-            (rc = tippe_json_number(c, top, "top", "R", 1, &t->R, NULL)) ||
-            (rc = tippe_json_number(c, top, "top", "eps", 1, &t->eps, NULL)) ||
-            (rc = tippe_json_number(c, top, "top", "A", 1, &t->A, NULL)) ||
-            (rc = tippe_json_number(c, top, "top", "C", 1, &t->C, NULL)))
-            return rc;
-        if ((rc = check_range(c, "top.m", t->m, TOP_M_MIN_KG, TOP_M_MAX_KG, "kg")) ||
-            (rc = check_range(c, "top.R", t->R, TOP_R_MIN_M, TOP_R_MAX_M, "m")) ||
-            (rc = check_range(c, "top.A", t->A, TOP_I_MIN_KG_M2, TOP_I_MAX_KG_M2, "kg m^2")) ||
-            (rc = check_range(c, "top.C", t->C, TOP_I_MIN_KG_M2, TOP_I_MAX_KG_M2, "kg m^2")))
-            return rc;
-        if (!(t->eps >= 0 && t->eps < t->R))
-            return tippe_json_fail(c, "top.eps", "must satisfy 0 <= eps < R = %g m, got %g", t->R,
-                                   t->eps);
-        if (!(t->A > 0))
-            return tippe_json_fail(c, "top.A", "must be > 0 kg m^2, got %g", t->A);
-        if (!(t->C > 0))
-            return tippe_json_fail(c, "top.C", "must be > 0 kg m^2, got %g", t->C);
-        /* A rigid body of revolution has A >= C/2 about its centre of mass
-         * (A = int (r^2/2 + z^2) dm, C = int r^2 dm). */
-        if (t->A < 0.5 * t->C * (1 - 1e-12))
-            return tippe_json_fail(c, "top.A",
-                                   "A = %g kg m^2 < C/2 = %g: no rigid body has these moments",
-                                   t->A, 0.5 * t->C);
-        t->com_side = t->eps > 0 ? -1 : 0;
-        s->design_path[0] = '\0';
-        s->z2_mm = NAN;
-        return TIPPE_OK;
-    }
-    if ((rc = tippe_json_check_keys(c, top, "top", NULL, top_design_keys, NULL)))
-        return rc;
-    if (!cJSON_IsString(design) || !design->valuestring[0])
-        return tippe_json_wrong_type(c, "top.design", "a file name", design);
-    if ((rc = tippe_json_number(c, top, "top", "z2_mm", 1, &s->z2_mm, NULL)))
-        return rc;
-    if (design->valuestring[0] == '/') {
-        snprintf(s->design_path, sizeof s->design_path, "%s", design->valuestring);
-    } else {
-        char dir[1024];
-        dirname_of(c->file, dir, sizeof dir);
-        if (snprintf(s->design_path, sizeof s->design_path, "%s/%s", dir, design->valuestring) >=
-            (int)sizeof s->design_path)
-            return tippe_json_fail(c, "top.design", "path too long");
-    }
-    const char *sets[MAX_DESIGN_SETS];
-    int n_sets = 0;
-    const cJSON *set = cJSON_GetObjectItemCaseSensitive(top, "set");
-    if (set) {
-        if (!cJSON_IsArray(set))
-            return tippe_json_wrong_type(c, "top.set", "an array of \"FIELD=VALUE\" strings", set);
-        int i = 0;
-        for (const cJSON *it = set->child; it; it = it->next, i++) {
-            char sub[64];
-            snprintf(sub, sizeof sub, "top.set[%d]", i);
-            if (!cJSON_IsString(it))
-                return tippe_json_wrong_type(c, sub, "a \"FIELD=VALUE\" string", it);
-            if (n_sets == MAX_DESIGN_SETS)
-                return tippe_json_fail(c, "top.set", "more than %d overrides", MAX_DESIGN_SETS);
-            sets[n_sets++] = it->valuestring;
-        }
-    }
-    tippe_design *d = NULL;
-    tippe_error derr;
-    rc = tippe_design_load(s->design_path, sets, n_sets, &d, &derr);
-    if (rc)
-        return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.design", "%s", derr.msg)
-                                  : tippe_error_set(c->err, rc, "%s", derr.msg);
-    rc = tippe_design_top(d, s->z2_mm, t, &derr);
-    tippe_design_free(d);
-    if (rc)
-        return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.z2_mm", "%s", derr.msg)
-                                  : tippe_error_set(c->err, rc, "%s", derr.msg);
-    return TIPPE_OK;
+    return design ? read_design_top(c, top, design, s) : read_explicit_top(c, top, s);
 }
 
 static int read_accuracy(tippe_json_reader *c, const cJSON *acc, tippe_scenario *s)

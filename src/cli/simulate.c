@@ -331,7 +331,16 @@ static int simulate_load(const simulate_args *a, tippe_scenario *sc)
 {
     tippe_error err;
     int rc = tippe_cli_launch_load(a->file, &a->l, sc, &err);
-    return rc ? tippe_cli_fail(VERB, &err, rc) : 0;
+    if (rc)
+        return tippe_cli_fail(VERB, &err, rc);
+    /* the design's --set changes go into the name, hence the text and plot titles */
+    if (a->l.is_design && a->l.sets.n) {
+        char sets[512];
+        const size_t len = strlen(sc->name);
+        snprintf(sc->name + len, sizeof sc->name - len, " [design: %s]",
+                 tippe_cli_sets_text(&a->l.sets, sets, sizeof sets));
+    }
+    return 0;
 }
 
 /* The trajectory sampling (with --csv or --plot): 0, or 2 if the samples
