@@ -179,7 +179,8 @@ static void intermediate_curve(sim_series *s, const tippe_scenario *sc, double J
     for (int i = 1; i < s->n && s->nc < s->n; i++) {
         double q = M_PI * i / s->n;
         tippe_theory_state st;
-        if (tippe_theory_intermediate(&sc->model.top, sc->model.g, q, sign, &st, NULL) !=
+        tippe_error terr;
+        if (tippe_theory_intermediate(&sc->model.top, sc->model.g, q, sign, &st, &terr) !=
             TIPPE_OK)
             continue;
         if (st.phi_dot_rad_s < alo || st.phi_dot_rad_s > ahi || st.spin_rad_s < nlo ||
