@@ -14,10 +14,12 @@
 #include "tippe/theory.h"
 
 #include <cjson/cJSON.h>
+#include <dlfcn.h>
 #include <limits.h>
 #include <math.h>
 #include <nlopt.h>
 #include <omp.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -892,6 +894,53 @@ typedef struct {
     int failed;
 } job_t;
 
+/* NLopt is opened when the first optimisation runs, as src/encode.c opens
+ * FFmpeg: linked, it would be loaded by every tippe command at start-up.
+ * TIPPE_NLOPT_SONAME is the linked library's file name (CMakeLists.txt). */
+#define NLOPT_FUNCS(X) \
+    X(nlopt_create) \
+    X(nlopt_destroy) \
+    X(nlopt_optimize) \
+    X(nlopt_set_lower_bounds) \
+    X(nlopt_set_upper_bounds) \
+    X(nlopt_set_max_objective) \
+    X(nlopt_set_maxeval) \
+    X(nlopt_set_initial_step) \
+    X(nlopt_set_xtol_rel) \
+    X(nlopt_set_xtol_abs1) \
+    X(nlopt_set_local_optimizer) \
+    X(nlopt_srand)
+
+static struct {
+#define X(fn) __typeof__(fn) *fn;
+    NLOPT_FUNCS(X)
+#undef X
+} nl;
+static pthread_once_t nl_once = PTHREAD_ONCE_INIT;
+static char nl_error[512];
+
+static void nl_load(void)
+{
+    /* The library stays open for the life of the process. */
+    void *h = dlopen(TIPPE_NLOPT_SONAME, RTLD_NOW | RTLD_LOCAL);
+    if (!h) {
+        snprintf(nl_error, sizeof nl_error,
+                 "NLopt is missing (apt-get install libnlopt-dev): %s", dlerror());
+        return;
+    }
+#define X(fn) \
+    if (!nl_error[0] && !(nl.fn = (__typeof__(nl.fn))dlsym(h, #fn))) \
+        snprintf(nl_error, sizeof nl_error, "NLopt (%s) has no %s", TIPPE_NLOPT_SONAME, #fn);
+    NLOPT_FUNCS(X)
+#undef X
+}
+
+static int nl_ready(tippe_error *err)
+{
+    pthread_once(&nl_once, nl_load);
+    return nl_error[0] ? tippe_error_set(err, TIPPE_ECOMPUTE, "optimise: %s", nl_error) : TIPPE_OK;
+}
+
 static double objective(unsigned n, const double *x, double *grad, void *data)
 {
     (void)grad;
@@ -945,23 +994,24 @@ static int run_nlopt(job_t *j, nlopt_algorithm alg, long maxeval, double *x)
         hi[k] = s->vary[k].hi;
         step[k] = 0.05 * (hi[k] - lo[k]);
     }
-    nlopt_opt opt = nlopt_create(alg, n);
+    nlopt_opt opt = nl.nlopt_create(alg, n);
     nlopt_opt local = NULL;
     if (!opt)
         return -1;
-    int ok = nlopt_set_lower_bounds(opt, lo) > 0 && nlopt_set_upper_bounds(opt, hi) > 0 &&
-             nlopt_set_max_objective(opt, objective, j) > 0 &&
-             nlopt_set_maxeval(opt, (int)maxeval) > 0 && nlopt_set_initial_step(opt, step) > 0;
+    int ok = nl.nlopt_set_lower_bounds(opt, lo) > 0 && nl.nlopt_set_upper_bounds(opt, hi) > 0 &&
+             nl.nlopt_set_max_objective(opt, objective, j) > 0 &&
+             nl.nlopt_set_maxeval(opt, (int)maxeval) > 0 &&
+             nl.nlopt_set_initial_step(opt, step) > 0;
     if (ok && alg == NLOPT_G_MLSL_LDS) {
-        local = nlopt_create(NLOPT_LN_COBYLA, n);
-        ok = local && nlopt_set_xtol_rel(local, 1e-6) > 0 &&
-             nlopt_set_local_optimizer(opt, local) > 0;
+        local = nl.nlopt_create(NLOPT_LN_COBYLA, n);
+        ok = local && nl.nlopt_set_xtol_rel(local, 1e-6) > 0 &&
+             nl.nlopt_set_local_optimizer(opt, local) > 0;
     }
     if (ok && (alg == NLOPT_LN_COBYLA || alg == NLOPT_LN_BOBYQA))
-        ok = nlopt_set_xtol_abs1(opt, 1e-7) > 0; /* the sweep's own resolution, mm */
-    nlopt_result res = ok ? nlopt_optimize(opt, x, &f) : NLOPT_FAILURE;
-    nlopt_destroy(opt);
-    nlopt_destroy(local);
+        ok = nl.nlopt_set_xtol_abs1(opt, 1e-7) > 0; /* the sweep's own resolution, mm */
+    nlopt_result res = ok ? nl.nlopt_optimize(opt, x, &f) : NLOPT_FAILURE;
+    nl.nlopt_destroy(opt);
+    nl.nlopt_destroy(local);
     /* Running out of evaluations or stopping on a tolerance is success here;
      * a roundoff-limited stop still leaves the best point seen. */
     return (res > 0 || res == NLOPT_ROUNDOFF_LIMITED) ? 0 : -1;
@@ -981,7 +1031,7 @@ static void search_choice(job_t *j)
         /* The stochastic algorithms draw from NLopt's generator, which is per
          * thread: seeding it here makes this choice's search depend on the
          * seed and the choice only. */
-        nlopt_srand(j->o->seed * 1000003ul + (unsigned long)j->choice);
+        nl.nlopt_srand(j->o->seed * 1000003ul + (unsigned long)j->choice);
         if (run_nlopt(j, nlopt_alg(s->algorithm), s->evals, x))
             j->failed = 1;
         j->res->n_global = j->res->n_evals;
@@ -1031,6 +1081,9 @@ int tippe_opt_run(const tippe_opt_spec *s, const tippe_opt_options *o, tippe_opt
                   tippe_error *err)
 {
     memset(out, 0, sizeof *out);
+    int rc = nl_ready(err);
+    if (rc)
+        return rc;
     tippe_gsl_errors_as_codes();
     tippe_opt_options def;
     if (!o) {

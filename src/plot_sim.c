@@ -94,97 +94,113 @@ static void hline(double t0, double t1, double y, unsigned rgb)
     tippe_plot_line(2, x, yy, rgb, 1.5, TIPPE_PLOT_DASHED);
 }
 
-int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynamics_result *res,
-                   const tippe_dynamics_sample *smp, int n, tippe_error *err)
-{
-    if (n < 2)
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: fewer than 2 samples to plot", path);
-    double *t = malloc(8 * (size_t)n * sizeof *t);
-    if (!t)
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
-    double *th = t + n, *spin = th + n, *lslip = spin + n, *al = lslip + n;
-    double *cx = al + n, *cy = cx + n, *cz = cy + n; /* eq 5.10 curve, n points at most */
-    for (int i = 0; i < n; i++) {
-        t[i] = smp[i].t;
-        th[i] = smp[i].theta;
-        spin[i] = smp[i].spin;
-        al[i] = smp[i].phi_dot;
-        /* 1e-16 m/s floors an exactly rolling contact on the log axis */
-        lslip[i] = log10(fmax(smp[i].slip_speed, 1e-16));
-    }
-    const tippe_top *top = &sc->model.top;
+/* The samples as columns, theory's final states for J0, and room for the curve
+ * of intermediate states (at most n points). */
+typedef struct {
+    int n;
+    double *t, *th, *spin, *lslip, *al;
+    double *cx, *cy, *cz;
+    int nc;
+    int have_pred;
     tippe_theory_prediction pred;
-    tippe_error terr;
-    int have_pred = tippe_theory_predict(top, sc->model.g, res->J0, &pred, &terr) == TIPPE_OK;
+} sim_series;
 
-    tippe_plot *p = NULL;
-    int rc = tippe_plot_open(path, PAGE_W, PAGE_H, &p, err);
-    if (rc) {
-        free(t);
-        return rc;
+static int series_fill(sim_series *s, const tippe_scenario *sc, const tippe_dynamics_result *res,
+                       const tippe_dynamics_sample *smp, int n)
+{
+    s->n = n;
+    s->t = malloc(8 * (size_t)n * sizeof *s->t);
+    if (!s->t)
+        return -1;
+    s->th = s->t + n;
+    s->spin = s->th + n;
+    s->lslip = s->spin + n;
+    s->al = s->lslip + n;
+    s->cx = s->al + n;
+    s->cy = s->cx + n;
+    s->cz = s->cy + n;
+    for (int i = 0; i < n; i++) {
+        s->t[i] = smp[i].t;
+        s->th[i] = smp[i].theta;
+        s->spin[i] = smp[i].spin;
+        s->al[i] = smp[i].phi_dot;
+        /* 1e-16 m/s floors an exactly rolling contact on the log axis */
+        s->lslip[i] = log10(fmax(smp[i].slip_speed, 1e-16));
     }
-    char esc[300], title[600];
-    tippe_plot_escape(sc->name, esc, sizeof esc);
-    if (res->verdict == TIPPE_VERDICT_UNDECIDED)
-        snprintf(title, sizeof title, "undecided at t = %.4g s: %s", res->t_verdict, esc);
-    else
-        snprintf(title, sizeof title, "%s (decided at t = %.4g s): %s",
-                 tippe_verdict_name(res->verdict), res->t_verdict, esc);
+    tippe_error terr;
+    s->have_pred =
+        tippe_theory_predict(&sc->model.top, sc->model.g, res->J0, &s->pred, &terr) == TIPPE_OK;
+    return 0;
+}
 
-    const double t_lo = t[0], t_hi = t[n - 1] > t[0] ? t[n - 1] : t[0] + 1;
+/* theta, spin and log10 |V_Q| against time, stacked on the left. */
+static void draw_series(const sim_series *s, const tippe_dynamics_result *res)
+{
+    const int n = s->n;
+    const double t_lo = s->t[0], t_hi = s->t[n - 1] > s->t[0] ? s->t[n - 1] : s->t[0] + 1;
     const double lx0 = 0.085, lx1 = 0.465;
+    const tippe_theory_prediction *pred = &s->pred;
 
     /* theta against time, on the full [0, pi] so that tip and no tip read at a glance */
     tippe_plot_panel(lx0, lx1, 0.66, 0.90, t_lo, t_hi, 0.0, M_PI);
     series_axes(t_hi - t_lo, M_PI, 0, NULL, "nutation #gh (rad)");
-    if (have_pred)
-        for (int i = 0; i < pred.n; i++)
-            hline(t_lo, t_hi, pred.state[i].theta_rad, COL_THEORY);
-    tippe_plot_line(n, t, th, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);
+    for (int i = 0; s->have_pred && i < pred->n; i++)
+        hline(t_lo, t_hi, pred->state[i].theta_rad, COL_THEORY);
+    tippe_plot_line(n, s->t, s->th, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);
 
     double lo, hi;
-    range(spin, n, &lo, &hi);
+    range(s->spin, n, &lo, &hi);
     /* after a lift-off theory's final spin is beside the point: keep the data's scale */
-    if (have_pred && res->verdict != TIPPE_VERDICT_LOST_CONTACT)
-        for (int i = 0; i < pred.n; i++) {
-            lo = fmin(lo, pred.state[i].spin_rad_s);
-            hi = fmax(hi, pred.state[i].spin_rad_s);
+    if (s->have_pred && res->verdict != TIPPE_VERDICT_LOST_CONTACT)
+        for (int i = 0; i < pred->n; i++) {
+            lo = fmin(lo, pred->state[i].spin_rad_s);
+            hi = fmax(hi, pred->state[i].spin_rad_s);
         }
     tippe_plot_panel(lx0, lx1, 0.39, 0.63, t_lo, t_hi, lo, hi);
     series_axes(t_hi - t_lo, hi - lo, 0, NULL, "spin n (rad/s)");
-    if (have_pred)
-        for (int i = 0; i < pred.n; i++)
-            hline(t_lo, t_hi, pred.state[i].spin_rad_s, COL_THEORY);
-    tippe_plot_line(n, t, spin, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);
+    for (int i = 0; s->have_pred && i < pred->n; i++)
+        hline(t_lo, t_hi, pred->state[i].spin_rad_s, COL_THEORY);
+    tippe_plot_line(n, s->t, s->spin, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);
 
-    range(lslip, n, &lo, &hi);
+    range(s->lslip, n, &lo, &hi);
     lo = fmax(lo, hi - 14.0); /* below 1e-14 of the largest speed is rounding */
     tippe_plot_panel(lx0, lx1, 0.12, 0.36, t_lo, t_hi, lo, hi);
     series_axes(t_hi - t_lo, hi - lo, 1, "time t (s)", "log#d10#u sliding speed |V#dQ#u| (m/s)");
-    tippe_plot_line(n, t, lslip, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);
+    tippe_plot_line(n, s->t, s->lslip, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);
+}
 
-
-    /* (alpha, theta, n): the projection of the paper's Figures 12 and 14 */
-    double alo, ahi, nlo, nhi;
-    range(al, n, &alo, &ahi);
-    range(spin, n, &nlo, &nhi);
-    /* eq 5.4-5.6 curve of intermediate states with the sign of J0's branch,
-     * kept inside the box of the trajectory */
-    int nc = 0;
-    const int sign = res->J0 >= 0 ? 1 : -1;
-    for (int i = 1; i < n && nc < n; i++) {
-        double q = M_PI * i / n;
+/* The eq 5.4-5.6 curve of intermediate states on J0's branch, kept inside the
+ * box [alo, ahi] x [nlo, nhi] of the trajectory. */
+static void intermediate_curve(sim_series *s, const tippe_scenario *sc, double J0, double alo,
+                               double ahi, double nlo, double nhi)
+{
+    const int sign = J0 >= 0 ? 1 : -1;
+    s->nc = 0;
+    for (int i = 1; i < s->n && s->nc < s->n; i++) {
+        double q = M_PI * i / s->n;
         tippe_theory_state st;
-        if (tippe_theory_intermediate(top, sc->model.g, q, sign, &st, &terr) != TIPPE_OK)
+        tippe_error terr;
+        if (tippe_theory_intermediate(&sc->model.top, sc->model.g, q, sign, &st, &terr) !=
+            TIPPE_OK)
             continue;
         if (st.phi_dot_rad_s < alo || st.phi_dot_rad_s > ahi || st.spin_rad_s < nlo ||
             st.spin_rad_s > nhi)
             continue;
-        cx[nc] = st.phi_dot_rad_s;
-        cy[nc] = q;
-        cz[nc] = st.spin_rad_s;
-        nc++;
+        s->cx[s->nc] = st.phi_dot_rad_s;
+        s->cy[s->nc] = q;
+        s->cz[s->nc] = st.spin_rad_s;
+        s->nc++;
     }
+}
+
+/* (alpha, theta, n): the projection of the paper's Figures 12 and 14, on the right. */
+static void draw_path_3d(sim_series *s, const tippe_scenario *sc, double J0)
+{
+    const int n = s->n;
+    double alo, ahi, nlo, nhi;
+    range(s->al, n, &alo, &ahi);
+    range(s->spin, n, &nlo, &nhi);
+    intermediate_curve(s, sc, J0, alo, ahi, nlo, nhi);
     const double vx0 = 0.56, vx1 = 0.98, vy0 = 0.24, vy1 = 0.88;
     tippe_plot_panel(vx0, vx1, vy0, vy1, 0, 1, 0, 1);
     tippe_plot_margin_text("t", 0.5, 0.5, 0.5, 0.9, 0x000000,
@@ -203,28 +219,33 @@ int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynam
     /* curve segments: consecutive kept points, broken where theta jumped */
     colour_3d(COL_CURVE);
     plwidth(2.5);
-    for (int i = 0; i < nc;) {
+    for (int i = 0; i < s->nc;) {
         int j = i + 1;
-        while (j < nc && cy[j] - cy[j - 1] < 2.5 * M_PI / n)
+        while (j < s->nc && s->cy[j] - s->cy[j - 1] < 2.5 * M_PI / n)
             j++;
         if (j - i > 1)
-            plline3(j - i, cx + i, cy + i, cz + i);
+            plline3(j - i, s->cx + i, s->cy + i, s->cz + i);
         i = j;
     }
     colour_3d(COL_TRAJ);
     plwidth(1.2);
-    plline3(n, al, th, spin);
+    plline3(n, s->al, s->th, s->spin);
     colour_3d(COL_GREY);
     /* start (circle) and end (filled dot) */
     plssym(0.0, 1.6);
-    plpoin3(1, al, th, spin, 4);
+    plpoin3(1, s->al, s->th, s->spin, 4);
     colour_3d(0x000000);
-    plpoin3(1, al + n - 1, th + n - 1, spin + n - 1, 17);
+    plpoin3(1, s->al + n - 1, s->th + n - 1, s->spin + n - 1, 17);
     plssym(0.0, 1.0);
     plwidth(1.0);
     plschr(0.0, 1.0);
+}
 
-    /* one legend for both sides, in the strip under the 3D panel */
+/* One legend for both sides, in the strip under the 3D panel; the top's numbers
+ * under it; the title (the verdict and the scenario) over the page. */
+static void draw_key_and_title(const tippe_scenario *sc, const tippe_dynamics_result *res)
+{
+    const double vx0 = 0.56, vx1 = 0.98;
     tippe_plot_panel(vx0, vx1, 0.095, 0.225, 0, 1, 0, 1);
     const tippe_plot_key keys[] = {
         {TIPPE_PLOT_KEY_LINE, "simulation (3D: open circle start, dot end)", COL_TRAJ, 1, 2.0,
@@ -235,6 +256,7 @@ int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynam
          TIPPE_PLOT_SOLID},
     };
     tippe_plot_legend(keys, 3, "tl", 1, 0.7);
+    const tippe_top *top = &sc->model.top;
     char note[400];
     tippe_theory_class cls;
     tippe_theory_classify(top->A / top->C, top->eps / top->R, &cls);
@@ -246,9 +268,34 @@ int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynam
     snprintf(note, sizeof note, "#gm = %.3g s/m, J#d0#u = %.4g kg m#u3#d/s", sc->model.mu,
              res->J0);
     tippe_plot_text(0.76, 0.017, 0.0, 0.5, 0.75, 0x000000, note);
+    char esc[300], title[600];
+    tippe_plot_escape(sc->name, esc, sizeof esc);
+    if (res->verdict == TIPPE_VERDICT_UNDECIDED)
+        snprintf(title, sizeof title, "undecided at t = %.4g s: %s", res->t_verdict, esc);
+    else
+        snprintf(title, sizeof title, "%s (decided at t = %.4g s): %s",
+                 tippe_verdict_name(res->verdict), res->t_verdict, esc);
     /* last: the title helper restores the current panel, so one must exist */
     tippe_plot_page_title(title, fmin(1.1, 110.0 / (double)strlen(title)));
+}
 
-    free(t);
+int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynamics_result *res,
+                   const tippe_dynamics_sample *smp, int n, tippe_error *err)
+{
+    if (n < 2)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: fewer than 2 samples to plot", path);
+    sim_series s;
+    if (series_fill(&s, sc, res, smp, n))
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
+    tippe_plot *p = NULL;
+    int rc = tippe_plot_open(path, PAGE_W, PAGE_H, &p, err);
+    if (rc) {
+        free(s.t);
+        return rc;
+    }
+    draw_series(&s, res);
+    draw_path_3d(&s, sc, res->J0);
+    draw_key_and_title(sc, res);
+    free(s.t);
     return tippe_plot_close(p, err);
 }

@@ -105,150 +105,151 @@ int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
     return tippe_sweep_plot_zones_banded(file, path, r, NULL, title, err);
 }
 
-int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path,
-                                  const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
-                                  const char *title, tippe_error *err)
+/* The zone plot's frame: the path's A/C - 1 and +-e/R sampled along Z2, the
+ * y window, and the panel's scale. */
+typedef struct {
+    double z[NS], km1[NS], ep[NS];
+    double ymin, ymax, xspan, px_per_mm;
+    double curve[3][NS]; /* room for the boundary curves */
+    int ok[3][NS];
+} zone_frame;
+
+static void frame_sample(const tippe_sweep_path *path, const tippe_sweep_result *r,
+                         zone_frame *f)
 {
-    if (!r || r->n_zones < 1 || !path)
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: nothing to plot", file);
-    double *z = malloc(6 * NS * sizeof *z);
-    int *ok = malloc(3 * NS * sizeof *ok);
-    if (!z || !ok) {
-        free(z);
-        free(ok);
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", file);
-    }
-    double *km1 = z + NS, *ep = z + 2 * NS, *em = z + 3 * NS, *e2 = z + 4 * NS, *bk = z + 5 * NS;
-    int *okb = ok, *okl = ok + NS, *oku = ok + 2 * NS;
-    double ymin = INFINITY, ymax = -INFINITY;
+    f->ymin = INFINITY;
+    f->ymax = -INFINITY;
     for (int i = 0; i < NS; i++) {
-        z[i] = r->from_mm + (r->to_mm - r->from_mm) * i / (NS - 1);
+        f->z[i] = r->from_mm + (r->to_mm - r->from_mm) * i / (NS - 1);
         double k, es;
-        path->eval(z[i], path->params, &k, &es);
-        double e = fabs(es);
-        km1[i] = k - 1.0;
-        ep[i] = e;
-        em[i] = -e;
-        e2[i] = -e * e;
-        ymin = fmin(ymin, fmin(km1[i], -e));
-        ymax = fmax(ymax, fmax(km1[i], e));
+        path->eval(f->z[i], path->params, &k, &es);
+        f->km1[i] = k - 1.0;
+        f->ep[i] = fabs(es);
+        f->ymin = fmin(f->ymin, fmin(f->km1[i], -f->ep[i]));
+        f->ymax = fmax(f->ymax, fmax(f->km1[i], f->ep[i]));
     }
-    double pad = 0.08 * (ymax - ymin);
+    double pad = 0.08 * (f->ymax - f->ymin);
     if (!(pad > 0))
         pad = 0.01;
-    ymin -= pad;
-    ymax += 2.2 * pad; /* room for the zone labels */
+    f->ymin -= pad;
+    f->ymax += 2.2 * pad; /* room for the zone labels */
+    f->xspan = r->to_mm - r->from_mm;
+}
 
-    tippe_plot *p;
-    int st = tippe_plot_open(file, 1100, 660, &p, err);
-    if (st != TIPPE_OK) {
-        free(z);
-        free(ok);
-        return st;
-    }
-    double vx0 = 0.09, vx1 = 0.70, vy0 = 0.11, vy1 = 0.88;
-    tippe_plot_panel(vx0, vx1, vy0, vy1, r->from_mm, r->to_mm, ymin, ymax);
-    double xspan = r->to_mm - r->from_mm, px_per_mm = (vx1 - vx0) * 1100 / xspan;
-
-    int present[6] = {0};
+/* Each zone shaded in its group's colour, and hatching beyond the physical
+ * travel; present[g] set for the groups shown. 1 if any hatching. */
+static int draw_zone_shading(const tippe_sweep_result *r, const zone_frame *f, int present[6])
+{
     for (int i = 0; i < r->n_zones; i++) {
         const tippe_sweep_zone *zn = &r->zones[i];
         present[zn->group] = 1;
-        tippe_plot_rect(zn->z2_from_mm, zn->z2_to_mm, ymin, ymax, tippe_plot_pale(group_rgb(zn->group), SHADE),
-                        1.0);
+        tippe_plot_rect(zn->z2_from_mm, zn->z2_to_mm, f->ymin, f->ymax,
+                        tippe_plot_pale(group_rgb(zn->group), SHADE), 1.0);
     }
     int beyond = 0;
-    if (r->has_travel) {
-        if (r->travel_from_mm > r->from_mm) {
-            tippe_plot_hatch(r->from_mm, fmin(r->travel_from_mm, r->to_mm), ymin, ymax, C_TRAVEL);
-            beyond = 1;
-        }
-        if (r->travel_to_mm < r->to_mm) {
-            tippe_plot_hatch(fmax(r->travel_to_mm, r->from_mm), r->to_mm, ymin, ymax, C_TRAVEL);
-            beyond = 1;
-        }
+    if (r->has_travel && r->travel_from_mm > r->from_mm) {
+        tippe_plot_hatch(r->from_mm, fmin(r->travel_from_mm, r->to_mm), f->ymin, f->ymax,
+                         C_TRAVEL);
+        beyond = 1;
     }
-    /* The tolerance bands, shaded once where several overlap (stacked shades
-     * would hide the zone beneath); each band is also drawn as an error bar
-     * below the zone names, so that overlapping bands stay apart. */
-    int banded = 0;
-    double *lo = b && b->n > 0 ? malloc(2 * (size_t)b->n * sizeof *lo) : NULL;
-    if (lo) {
-        double *hi = lo + b->n;
-        int nb = 0;
-        for (int i = 0; i < b->n; i++) {
-            double w = b->bands[i].band_mm, x = b->bands[i].z2_mm;
-            if (!(w > 0))
-                continue;
-            w = isfinite(w) ? w : xspan;
-            lo[nb] = fmax(r->from_mm, x - w);
-            hi[nb++] = fmin(r->to_mm, x + w);
-        }
-        banded = nb > 0;
-        /* bands come in order of Z2 and have similar widths; merge by sweep */
-        for (int i = 0; i < nb;) {
-            double a = lo[i], e = hi[i];
-            int j = i + 1;
-            while (j < nb && lo[j] <= e) {
-                a = fmin(a, lo[j]);
-                e = fmax(e, hi[j]);
-                j++;
-            }
-            tippe_plot_rect(a, e, ymin, ymax, C_BAND, BAND_ALPHA);
-            i = j;
-        }
-        free(lo);
+    if (r->has_travel && r->travel_to_mm < r->to_mm) {
+        tippe_plot_hatch(fmax(r->travel_to_mm, r->from_mm), r->to_mm, f->ymin, f->ymax, C_TRAVEL);
+        beyond = 1;
     }
-    tippe_plot_grid();
-    double zero[2] = {0.0, 0.0}, xr[2] = {r->from_mm, r->to_mm};
-    tippe_plot_line(2, xr, zero, 0x888888u, 0.8, TIPPE_PLOT_SOLID);
+    return beyond;
+}
 
-    /* Zone ends: a thin line and the Z2 value along it, skipping values that
-     * would overprint the previous one. */
+/* The tolerance bands, shaded once where several overlap (stacked shades would
+ * hide the zone beneath). 1 if any band was drawn. */
+static int draw_band_shading(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
+                             const zone_frame *f)
+{
+    double *lo = b && b->n > 0 ? malloc(2 * (size_t)b->n * sizeof *lo) : NULL;
+    if (!lo)
+        return 0;
+    double *hi = lo + b->n;
+    int nb = 0;
+    for (int i = 0; i < b->n; i++) {
+        double w = b->bands[i].band_mm, x = b->bands[i].z2_mm;
+        if (!(w > 0))
+            continue;
+        w = isfinite(w) ? w : f->xspan;
+        lo[nb] = fmax(r->from_mm, x - w);
+        hi[nb++] = fmin(r->to_mm, x + w);
+    }
+    /* bands come in order of Z2 and have similar widths; merge by sweep */
+    for (int i = 0; i < nb;) {
+        double a = lo[i], e = hi[i];
+        int j = i + 1;
+        while (j < nb && lo[j] <= e) {
+            a = fmin(a, lo[j]);
+            e = fmax(e, hi[j]);
+            j++;
+        }
+        tippe_plot_rect(a, e, f->ymin, f->ymax, C_BAND, BAND_ALPHA);
+        i = j;
+    }
+    free(lo);
+    return nb > 0;
+}
+
+/* Zone ends: a thin line and the Z2 value along it, skipping values that would
+ * overprint the previous one. */
+static void draw_zone_ends(const tippe_sweep_result *r, const zone_frame *f)
+{
     double last_px = -1e9;
     for (int i = 0; i + 1 < r->n_zones; i++) {
         double x = r->zones[i].z2_to_mm;
-        double lx[2] = {x, x}, ly[2] = {ymin, ymax};
+        double lx[2] = {x, x}, ly[2] = {f->ymin, f->ymax};
         tippe_plot_line(2, lx, ly, 0x606060u, 0.6, TIPPE_PLOT_SOLID);
-        double px = (x - r->from_mm) * px_per_mm;
-        if (px - last_px > 16.0 && px > 12.0 && (r->to_mm - x) * px_per_mm > 12.0) {
+        double px = (x - r->from_mm) * f->px_per_mm;
+        if (px - last_px > 16.0 && px > 12.0 && (r->to_mm - x) * f->px_per_mm > 12.0) {
             char buf[32];
             fmt_mm(buf, sizeof buf, x);
-            tippe_plot_text(x - 0.004 * xspan, ymin + 0.03 * (ymax - ymin), 90.0, 0.0, 0.75,
-                            0x303030u, buf);
+            tippe_plot_text(x - 0.004 * f->xspan, f->ymin + 0.03 * (f->ymax - f->ymin), 90.0, 0.0,
+                            0.75, 0x303030u, buf);
             last_px = px;
         }
     }
+}
 
-    /* b = +1 (only in group II) and b = -1 (two branches for small e). */
+/* The group boundaries of the classification along the path: b = +1 (only in
+ * group II), b = -1 (two branches for small e), +-e/R and -(e/R)^2; then the
+ * path's A/C - 1 over them. */
+static void draw_boundary_curves(zone_frame *f)
+{
+    double(*y)[NS] = f->curve;
+    int(*ok)[NS] = f->ok;
     for (int i = 0; i < NS; i++) {
         double kb[2];
-        int n = k_where_b(ep[i], 1, kb);
-        okb[i] = n >= 1;
-        bk[i] = n >= 1 ? kb[n - 1] - 1.0 : 0.0;
+        int n = k_where_b(f->ep[i], 1, kb);
+        ok[0][i] = n >= 1;
+        y[0][i] = n >= 1 ? kb[n - 1] - 1.0 : 0.0;
+        n = k_where_b(f->ep[i], -1, kb);
+        ok[1][i] = n >= 1;
+        ok[2][i] = n == 2;
+        y[1][i] = n >= 1 ? kb[0] - 1.0 : 0.0;
+        y[2][i] = n == 2 ? kb[1] - 1.0 : 0.0;
     }
-    line_where(NS, z, bk, okb, C_BPLUS, 1.6, TIPPE_PLOT_DASHED);
-    double *bl = malloc(2 * NS * sizeof *bl);
-    if (bl) {
-        double *bu = bl + NS;
-        for (int i = 0; i < NS; i++) {
-            double kb[2];
-            int n = k_where_b(ep[i], -1, kb);
-            okl[i] = n >= 1;
-            oku[i] = n == 2;
-            bl[i] = n >= 1 ? kb[0] - 1.0 : 0.0;
-            bu[i] = n == 2 ? kb[1] - 1.0 : 0.0;
-        }
-        line_where(NS, z, bl, okl, C_BMINUS, 1.6, TIPPE_PLOT_DASHED);
-        line_where(NS, z, bu, oku, C_BMINUS, 1.6, TIPPE_PLOT_DASHED);
-        free(bl);
+    line_where(NS, f->z, y[0], ok[0], C_BPLUS, 1.6, TIPPE_PLOT_DASHED);
+    line_where(NS, f->z, y[1], ok[1], C_BMINUS, 1.6, TIPPE_PLOT_DASHED);
+    line_where(NS, f->z, y[2], ok[2], C_BMINUS, 1.6, TIPPE_PLOT_DASHED);
+    for (int i = 0; i < NS; i++) {
+        y[0][i] = -f->ep[i];
+        y[1][i] = -f->ep[i] * f->ep[i];
     }
-    tippe_plot_line(NS, z, ep, C_E, 1.6, TIPPE_PLOT_SOLID);
-    tippe_plot_line(NS, z, em, C_E, 1.6, TIPPE_PLOT_SOLID);
-    tippe_plot_line(NS, z, e2, C_E2, 1.6, TIPPE_PLOT_SOLID);
-    tippe_plot_line(NS, z, km1, C_PATH, 2.6, TIPPE_PLOT_SOLID);
+    tippe_plot_line(NS, f->z, f->ep, C_E, 1.6, TIPPE_PLOT_SOLID);
+    tippe_plot_line(NS, f->z, y[0], C_E, 1.6, TIPPE_PLOT_SOLID);
+    tippe_plot_line(NS, f->z, y[1], C_E2, 1.6, TIPPE_PLOT_SOLID);
+    tippe_plot_line(NS, f->z, f->km1, C_PATH, 2.6, TIPPE_PLOT_SOLID);
+}
 
-    /* Touches and balanced points, on the A/C - 1 curve. */
+/* Touches and balanced points on the A/C - 1 curve, the physical travel's ends,
+ * the zone names along the top where they fit. */
+static void draw_marks(const tippe_sweep_path *path, const tippe_sweep_result *r,
+                       const zone_frame *f)
+{
+    const double h = f->ymax - f->ymin;
     for (int i = 0; i < r->n_events; i++) {
         const tippe_sweep_event *ev = &r->events[i];
         if (!ev->touch && ev->boundary != TIPPE_SWEEP_BALANCED)
@@ -257,33 +258,36 @@ int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path
         path->eval(x, path->params, &k, &es);
         double y = k - 1.0;
         tippe_plot_points(1, &x, &y, 4, 1.3, 0x000000u);
-        tippe_plot_text(x, y + 0.035 * (ymax - ymin), 0.0, 0.5, 0.7, 0x000000u,
+        tippe_plot_text(x, y + 0.035 * h, 0.0, 0.5, 0.7, 0x000000u,
                         ev->touch ? "touch" : "balanced");
     }
-
-    if (r->has_travel) {
-        double ends[2] = {r->travel_from_mm, r->travel_to_mm};
-        for (int i = 0; i < 2; i++) {
-            if (ends[i] <= r->from_mm || ends[i] >= r->to_mm)
-                continue;
-            double lx[2] = {ends[i], ends[i]}, ly[2] = {ymin, ymax};
-            tippe_plot_line(2, lx, ly, 0x000000u, 2.0, TIPPE_PLOT_DASHED);
-        }
+    double ends[2] = {r->travel_from_mm, r->travel_to_mm};
+    for (int i = 0; r->has_travel && i < 2; i++) {
+        if (ends[i] <= r->from_mm || ends[i] >= r->to_mm)
+            continue;
+        double lx[2] = {ends[i], ends[i]}, ly[2] = {f->ymin, f->ymax};
+        tippe_plot_line(2, lx, ly, 0x000000u, 2.0, TIPPE_PLOT_DASHED);
     }
-    /* Zone names along the top, where they fit. */
     for (int i = 0; i < r->n_zones; i++) {
         const tippe_sweep_zone *zn = &r->zones[i];
-        if ((zn->z2_to_mm - zn->z2_from_mm) * px_per_mm < 34.0)
+        if ((zn->z2_to_mm - zn->z2_from_mm) * f->px_per_mm < 34.0)
             continue;
-        tippe_plot_text(0.5 * (zn->z2_from_mm + zn->z2_to_mm), ymax - 0.06 * (ymax - ymin), 0.0,
-                        0.5, 1.1, 0x000000u, tippe_group_name(zn->group));
+        tippe_plot_text(0.5 * (zn->z2_from_mm + zn->z2_to_mm), f->ymax - 0.06 * h, 0.0, 0.5, 1.1,
+                        0x000000u, tippe_group_name(zn->group));
     }
+}
 
-    for (int i = 0; banded && i < b->n; i++) {
+/* Each tolerance band also as an error bar below the zone names, so that
+ * overlapping bands stay apart. */
+static void draw_band_bars(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
+                           const zone_frame *f)
+{
+    const double h = f->ymax - f->ymin;
+    for (int i = 0; i < b->n; i++) {
         double w = b->bands[i].band_mm, x = b->bands[i].z2_mm;
         if (!(w > 0) || !isfinite(w))
             continue;
-        double y = ymax - (0.14 + 0.035 * (i % 3)) * (ymax - ymin), dy = 0.012 * (ymax - ymin);
+        double y = f->ymax - (0.14 + 0.035 * (i % 3)) * h, dy = 0.012 * h;
         double bx[2] = {fmax(r->from_mm, x - w), fmin(r->to_mm, x + w)}, by[2] = {y, y};
         tippe_plot_line(2, bx, by, C_BAND, 1.4, TIPPE_PLOT_SOLID);
         for (int e = 0; e < 2; e++) {
@@ -291,13 +295,10 @@ int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path
             tippe_plot_line(2, tx, ty, C_BAND, 1.4, TIPPE_PLOT_SOLID);
         }
     }
-    tippe_plot_axes("Z#d2#u: height of the moving weight's midpoint above the centre (mm)",
-                    "A/C − 1", "groups of Theorem 5.1 along the travel");
-    if (title) {
-        char esc[400];
-        tippe_plot_page_title(tippe_plot_escape(title, esc, sizeof esc), 1.1);
-    }
+}
 
+static void draw_zone_legend(const int present[6], int banded, int beyond)
+{
     tippe_plot_key keys[20];
     int nk = 0;
     keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_LINE, "A/C − 1", C_PATH, 1, 2.6, 1};
@@ -310,7 +311,8 @@ int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path
     for (int g = 0; g < 6; g++)
         if (present[g])
             keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_BOX, group_text[g],
-                                          tippe_plot_pale(group_rgb((tippe_group)g), SHADE), 1.0, 0, 0};
+                                          tippe_plot_pale(group_rgb((tippe_group)g), SHADE), 1.0,
+                                          0, 0};
     if (banded)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_BOX, "boundary ± tolerance band",
                                       C_BAND, BAND_ALPHA, 0, 0};
@@ -321,8 +323,47 @@ int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path
                                       2.0, TIPPE_PLOT_DASHED};
     }
     tippe_plot_legend(keys, nk, "outside", 1, 0.8);
-    free(z);
-    free(ok);
+}
+
+int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path,
+                                  const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
+                                  const char *title, tippe_error *err)
+{
+    if (!r || r->n_zones < 1 || !path)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: nothing to plot", file);
+    zone_frame *f = malloc(sizeof *f);
+    if (!f)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", file);
+    frame_sample(path, r, f);
+    tippe_plot *p;
+    int st = tippe_plot_open(file, 1100, 660, &p, err);
+    if (st != TIPPE_OK) {
+        free(f);
+        return st;
+    }
+    const double vx0 = 0.09, vx1 = 0.70, vy0 = 0.11, vy1 = 0.88;
+    tippe_plot_panel(vx0, vx1, vy0, vy1, r->from_mm, r->to_mm, f->ymin, f->ymax);
+    f->px_per_mm = (vx1 - vx0) * 1100 / f->xspan;
+
+    int present[6] = {0};
+    const int beyond = draw_zone_shading(r, f, present);
+    const int banded = draw_band_shading(r, b, f);
+    tippe_plot_grid();
+    double zero[2] = {0.0, 0.0}, xr[2] = {r->from_mm, r->to_mm};
+    tippe_plot_line(2, xr, zero, 0x888888u, 0.8, TIPPE_PLOT_SOLID);
+    draw_zone_ends(r, f);
+    draw_boundary_curves(f);
+    draw_marks(path, r, f);
+    if (banded)
+        draw_band_bars(r, b, f);
+    tippe_plot_axes("Z#d2#u: height of the moving weight's midpoint above the centre (mm)",
+                    "A/C − 1", "groups of Theorem 5.1 along the travel");
+    if (title) {
+        char esc[400];
+        tippe_plot_page_title(tippe_plot_escape(title, esc, sizeof esc), 1.1);
+    }
+    draw_zone_legend(present, banded, beyond);
+    free(f);
     return tippe_plot_close(p, err);
 }
 

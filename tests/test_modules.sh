@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
 # The command loads PLplot, GEOS, lib3MF and cairo only when a command needs them
 # (src/modules/module.h): not linked, loaded with their module on first use, and a
-# missing module is an error that names it. Usage: test_modules.sh TIPPE
+# missing module is an error that names it; NLopt is opened by the optimiser itself.
+# Usage: test_modules.sh TIPPE
 source "$(dirname "$0")/lib.sh"
 setup "$@"
 bin=$(dirname "$tippe")
-heavy='plplot|geos|3MF|cairo'
+heavy='plplot|geos|3MF|cairo|nlopt'
 
 # --- linked: none of the heavy libraries; each module links its own -----------
 needed() { readelf -d "$1" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p'; }
 check "readelf lists what tippe needs" test -n "$(needed "$tippe")"
-check "tippe links none of PLplot, GEOS, lib3MF, cairo" \
+check "tippe links none of PLplot, GEOS, lib3MF, cairo, NLopt" \
     bash -c "! grep -Eq '$heavy' <<<'$(needed "$tippe")'"
 for m in plot:plplot profile:geos_c export:3MF animate:cairo; do
     check "tippe-${m%%:*}.so sits next to tippe and links lib${m#*:}" \
@@ -35,6 +36,9 @@ check "sweep --plot loads no lib3MF" bash -c "! grep -q 3MF '$tmp/plot.libs'"
 check "eval runs" loaded eval designs/m12-setscrew.json --z2 15 >"$tmp/eval.libs"
 check "eval loads GEOS for the printed bodies, not lib3MF or PLplot" \
     bash -c "grep -q libgeos_c '$tmp/eval.libs' && ! grep -Eq '3MF|plplot' '$tmp/eval.libs'"
+check "optimise runs" loaded optimise tests/data/optimise-small.json -o "$tmp/best.json" \
+    >"$tmp/opt.libs"
+check "optimise opens NLopt" grep -q libnlopt "$tmp/opt.libs"
 
 # --- missing or broken module: exit 1, the module named, no output file --------
 mkdir -p "$tmp/alone"

@@ -181,47 +181,52 @@ static cJSON *to_json(const tippe_design *d, const tippe_export_request *q,
     return o;
 }
 
-int tippe_cli_export(int argc, char **argv)
+typedef struct {
+    tippe_export_request q;
+    const char *dir, *formats, *path;
+    double z2_mm;
+    int json;
+    tippe_cli_sets sets;
+} export_args;
+
+/* Options and the design file: 0, TIPPE_CLI_HELP, or 2 after a usage error. */
+static int export_parse(export_args *a, int argc, char **argv)
 {
-    tippe_export_request q = {.profile = tippe_profile_defaults()};
-    const char *dir = NULL, *formats = "stl,3mf,scad,svg,png";
-    double z2_mm = NAN;
-    int json = 0;
-    tippe_cli_sets sets = {.n = 0};
+    tippe_export_request *q = &a->q;
     tippe_cli_opt opts[] = {
-        {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &dir,
+        {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &a->dir,
          .arg = "DIR", .required = 1,
          .help = "output directory (created if missing; its parent must exist)"},
-        {.name = "format", .kind = TIPPE_CLI_STRING, .value = &formats, .arg = "LIST",
+        {.name = "format", .kind = TIPPE_CLI_STRING, .value = &a->formats, .arg = "LIST",
          .def = "stl,3mf,scad,svg,png",
          .help = "comma-separated: stl (binary STL per body, DIR/STEM-BODY.stl),\n"
                  "3mf (all bodies, DIR/STEM.3mf), scad (OpenSCAD source, DIR/STEM.scad),\n"
                  "svg, png, pdf (section drawing, DIR/STEM-section.EXT);\n"
                  "STEM is the design file's name without .json"},
-        {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &z2_mm, .arg = "MM", .unit = "mm",
+        {.name = "z2", .kind = TIPPE_CLI_DOUBLE, .value = &a->z2_mm, .arg = "MM", .unit = "mm",
          .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
          .def = "middle of the travel",
          .help = "the moving weight's place in the drawing and the OpenSCAD file"},
-        {.name = "chord-mm", .kind = TIPPE_CLI_DOUBLE, .value = &q.profile.chord_mm,
+        {.name = "chord-mm", .kind = TIPPE_CLI_DOUBLE, .value = &q->profile.chord_mm,
          .arg = "MM", .unit = "mm", .min = 0.001, .max = 1, .def = "0.01",
          .help = "largest distance from the mesh to the true surface; half goes to the\n"
                  "profile's arcs, half to the steps around the axis"},
-        {.name = "clearance-mm", .kind = TIPPE_CLI_DOUBLE, .value = &q.profile.clearance_mm,
+        {.name = "clearance-mm", .kind = TIPPE_CLI_DOUBLE, .value = &q->profile.clearance_mm,
          .arg = "MM", .unit = "mm", .min = 0, .max = 2, .def = "0.2",
          .help = "radial clearance of holes that take hardware; printed only: the mass\n"
                  "model (eval, sweep) keeps the design's hole"},
-        {.name = "min-wall-mm", .kind = TIPPE_CLI_DOUBLE, .value = &q.profile.min_wall_mm,
+        {.name = "min-wall-mm", .kind = TIPPE_CLI_DOUBLE, .value = &q->profile.min_wall_mm,
          .arg = "MM", .unit = "mm", .min = 0, .max = 10, .def = "0.9",
          .help = "warn about printed walls thinner than this (two 0.45 mm perimeters)"},
-        {.name = "split", .kind = TIPPE_CLI_FLAG, .value = &q.profile.split,
+        {.name = "split", .kind = TIPPE_CLI_FLAG, .value = &q->profile.split,
          .help = "cut each body at a plane across the axis into two halves, each\n"
                  "written standing on its flat cut face (no supports needed)"},
-        {.name = "split-z", .kind = TIPPE_CLI_DOUBLE, .value = &q.profile.split_z_mm,
+        {.name = "split-z", .kind = TIPPE_CLI_DOUBLE, .value = &q->profile.split_z_mm,
          .arg = "MM", .unit = "mm", .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
          .def = "0", .help = "height of the cut plane above the sphere's centre (with --split)"},
-        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &json,
+        {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
          .help = "print the report as one JSON object"},
-        {.name = "set", .kind = TIPPE_CLI_SET, .value = &sets, .arg = "FIELD=VALUE",
+        {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
          .help = "change a field of the design before it is checked (repeatable)"},
         {NULL},
     };
@@ -241,73 +246,90 @@ int tippe_cli_export(int argc, char **argv)
         .max_args = 1,
         .args_name = "design file",
     };
-    const char *path = NULL;
     int n_args = 0;
-    int rc = tippe_cli_parse(&spec, argc, argv, &path, &n_args);
+    int rc = tippe_cli_parse(&spec, argc, argv, &a->path, &n_args);
     if (rc)
-        return rc == TIPPE_CLI_HELP ? 0 : rc;
-    if (tippe_cli_find_opt(&spec, "split-z")->seen && !q.profile.split)
+        return rc;
+    if (tippe_cli_find_opt(&spec, "split-z")->seen && !q->profile.split)
         return tippe_cli_usage_error(VERB, "--split-z needs --split");
-    if (parse_formats(formats, &q.formats))
+    if (parse_formats(a->formats, &q->formats))
         return 2;
-    q.dir = dir;
+    q->dir = a->dir;
+    return 0;
+}
 
+/* Every output path is checked before anything is written: 0, or the exit status.
+ * *made: the output directory was created for this run. */
+static int export_check_outputs(const tippe_design *d, const export_args *a, int *made)
+{
     tippe_error err = {0};
-    tippe_design *d = NULL;
-    rc = tippe_design_load(path, sets.item, sets.n, &d, &err);
-    if (rc)
-        return tippe_cli_fail(VERB, &err, rc);
-    double t0, t1;
-    tippe_design_travel_mm(d, &t0, &t1);
-    q.z2_mm = isnan(z2_mm) ? 0.5 * (t0 + t1) : z2_mm;
-    tippe_top top;
-    if ((rc = tippe_design_top(d, q.z2_mm, &top, &err))) {
-        tippe_design_free(d);
-        return tippe_cli_fail(VERB, &err, rc);
-    }
-    char note[200];
-    zone_note(d, q.z2_mm, note, sizeof note);
-    q.title_note = note;
-
-    /* Every output path is checked before anything is written. */
     char(*paths)[4096] = malloc(TIPPE_EXPORT_MAX_FILES * sizeof *paths);
-    int np = paths ? tippe_export_plan(d, &q, paths, TIPPE_EXPORT_MAX_FILES, &err) : -1;
+    if (!paths)
+        return fprintf(stderr, "tippe %s: out of memory\n", VERB), 1;
+    int np = tippe_export_plan(d, &a->q, paths, TIPPE_EXPORT_MAX_FILES, &err);
     if (np < 0) {
         free(paths);
-        tippe_design_free(d);
-        if (!paths)
-            return fprintf(stderr, "tippe %s: out of memory\n", VERB), 1;
         return tippe_cli_fail(VERB, &err, err.code ? err.code : TIPPE_EINPUT);
     }
-    int made = 0;
-    rc = make_dir(dir, &made);
+    int rc = make_dir(a->dir, made);
     for (int k = 0; !rc && k < np; k++)
         rc = tippe_cli_check_output(VERB, "-o", paths[k], 0);
     free(paths);
-    if (rc) {
-        tippe_design_free(d);
-        return rc;
-    }
+    return rc;
+}
 
+/* Meshes, files and the report: 0, or the exit status. */
+static int export_write(const tippe_design *d, const export_args *a, int made)
+{
+    tippe_error err = {0};
     tippe_export_result r;
-    rc = tippe_export_run(d, &q, &r, &err);
+    int rc = tippe_export_run(d, &a->q, &r, &err);
     for (int k = 0; k < r.profiles.n_warnings; k++)
         fprintf(stderr, "tippe %s: warning: %s\n", VERB, r.profiles.warning[k]);
     if (rc) {
         tippe_export_result_free(&r);
-        tippe_design_free(d);
         /* the command removes this run's files afterwards; rmdir only takes an
          * empty directory made for them (one with finished files stays) */
         int status = tippe_cli_fail(VERB, &err, rc);
         if (made)
-            rmdir(dir);
+            rmdir(a->dir);
         return status;
     }
-    if (json)
-        rc = tippe_cli_print_json(VERB, to_json(d, &q, &r));
+    if (a->json)
+        rc = tippe_cli_print_json(VERB, to_json(d, &a->q, &r));
     else
-        print_text(d, &q, &r);
+        print_text(d, &a->q, &r);
     tippe_export_result_free(&r);
+    return rc;
+}
+
+int tippe_cli_export(int argc, char **argv)
+{
+    export_args a = {.q = {.profile = tippe_profile_defaults()},
+                     .formats = "stl,3mf,scad,svg,png",
+                     .z2_mm = NAN};
+    int rc = export_parse(&a, argc, argv);
+    if (rc)
+        return rc == TIPPE_CLI_HELP ? 0 : rc;
+    tippe_error err = {0};
+    tippe_design *d = NULL;
+    if ((rc = tippe_design_load(a.path, a.sets.item, a.sets.n, &d, &err)))
+        return tippe_cli_fail(VERB, &err, rc);
+    double t0, t1;
+    tippe_design_travel_mm(d, &t0, &t1);
+    a.q.z2_mm = isnan(a.z2_mm) ? 0.5 * (t0 + t1) : a.z2_mm;
+    tippe_top top;
+    char note[200];
+    int made = 0;
+    if ((rc = tippe_design_top(d, a.q.z2_mm, &top, &err))) {
+        rc = tippe_cli_fail(VERB, &err, rc);
+    } else {
+        zone_note(d, a.q.z2_mm, note, sizeof note);
+        a.q.title_note = note;
+        rc = export_check_outputs(d, &a, &made);
+        if (!rc)
+            rc = export_write(d, &a, made);
+    }
     tippe_design_free(d);
     return rc;
 }

@@ -39,11 +39,16 @@ void *tippe_module_function(tippe_module *m, const char *symbol, tippe_error *er
  * (for a stub that frees: what a module never made needs no freeing). */
 void *tippe_module_function_if_open(tippe_module *m, const char *symbol);
 
+/* The module's function fn (a typed pointer), or NULL with err set. */
+#define TIPPE_MODULE_FIND(m, fn, err) ((__typeof__(&fn))tippe_module_function(m, #fn, err))
+
 /* The body of a stub that returns a tippe status: calls the module's fn with
- * the stub's arguments, or returns TIPPE_ECOMPUTE with err set. */
+ * the stub's arguments, or returns TIPPE_ECOMPUTE with err set. A stub whose
+ * function fills an output, or returns something else, keeps its function's
+ * contract on failure itself (zeroed output, -1). */
 #define TIPPE_MODULE_CALL(m, fn, err, ...)                                                       \
     do {                                                                                         \
-        __typeof__(&fn) real_ = (__typeof__(&fn))tippe_module_function(m, #fn, err);             \
+        __typeof__(&fn) real_ = TIPPE_MODULE_FIND(m, fn, err);                                   \
         return real_ ? real_(__VA_ARGS__) : TIPPE_ECOMPUTE;                                      \
     } while (0)
 
