@@ -19,8 +19,13 @@ SciPy's DOP853 on the same equations, at EQUAL ERROR (not only equal rtol).
   the reference; cost: process_time of solve_ivp alone (Python's start-up and
   imports are not counted, which favours SciPy), median of 3 (1 above 1 s).
 - Start-up: the same process to t_end = 1 ms, for the share of the process that
-  is not integration.
+  is not integration, and /bin/true, the cost of any process on this machine.
 - Then, for each error level, the cheapest run of each tool that reaches it.
+
+    /usr/bin/python3 tools/bench/equal_error.py --scipy-once RTOL T
+
+solves once with DOP853 at RTOL from 0 to T and exits (RTOL 0: imports only), for
+instruction counts under valgrind: the difference of the two is SciPy's share.
 """
 import json
 import math
@@ -79,6 +84,12 @@ def err_of(theta, n, y_ref, W):
 def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
+    if sys.argv[1] == "--scipy-once":
+        rtol, T = float(sys.argv[2]), float(sys.argv[3])
+        if rtol > 0:
+            y0, W, scale = launch_state()
+            print(scipy_solve(y0, scale, T, rtol)[1], "RHS evaluations")
+        return
     exe = sys.argv[1]
     reps = int(sys.argv[2]) if len(sys.argv) > 2 else 9
     y0, W, scale = launch_state()
@@ -86,8 +97,13 @@ def main():
     cpu = {run: [] for run in TIPPE_RUNS}
     last = {}
     startup = []  # the same process with t_end 1 ms: start-up, reading, theory, output
+    empty = []  # a process that does nothing: the operating system's share
     for _ in range(reps):
         startup.append(tippe_run(exe, "rk8pd", 1e-9, ("--t-end", "0.001"))[0])
+        r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        subprocess.run(["/bin/true"], check=True)
+        r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        empty.append((r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime))
         for st, e in TIPPE_RUNS:
             c, d = tippe_run(exe, st, 10.0 ** -e)
             cpu[(st, e)].append(c)
@@ -119,7 +135,8 @@ def main():
     for r in rows:
         print(f"{r[0]:6s} {r[1]:12s} {r[2]:10.4f} {r[3]:9.2e} {1e3 * r[4]:9.2f} {r[5]:10d}")
     s0 = statistics.median(startup)
-    print(f"\nthe same process to t_end = 1 ms (start-up, input, theory, output): {1e3 * s0:.2f} ms CPU")
+    print(f"\nthe same process to t_end = 1 ms (start-up, input, theory, output): {1e3 * s0:.2f} ms CPU;"
+          f" /bin/true: {1e3 * statistics.median(empty):.2f} ms CPU")
     print("\ncheapest run reaching each error (tippe: whole process; SciPy: solve_ivp only)")
     for lvl in LEVELS:
         best = {}
