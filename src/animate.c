@@ -363,7 +363,7 @@ static int verdict_lines(const tippe_film *f, char *l1, char *l2, size_t size)
         snprintf(l1, size, "verdict: leaves the table at t = %.4g s (model ends)", r->t_verdict);
         return 1;
     case TIPPE_VERDICT_BOUNDED:
-        snprintf(l1, size, "verdict: bounded (mu = 0), \xce\xb8 stays in %.1f\xc2\xb0 .. %.1f\xc2\xb0",
+        snprintf(l1, size, "verdict: bounded, \xce\xb8 stays in %.1f\xc2\xb0 .. %.1f\xc2\xb0",
                  r->theta_lo_rad * deg, r->theta_hi_rad * deg);
         return 1;
     default:

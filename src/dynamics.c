@@ -655,6 +655,15 @@ static int run_emit(run_state *rs, tippe_error *err)
     return TIPPE_OK;
 }
 
+/* Whether the motion must end at a steady state (section 4, Proposition 4.2): it
+ * needs friction (mu > 0) and an eccentric sphere (eps > 0). With mu = 0 nothing
+ * dissipates; with eps = 0 the ball can roll without slipping for ever, its axis
+ * turning, and rolling dissipates nothing. Then only confinement is proved. */
+static int run_dissipates_to_rest(const run_state *rs)
+{
+    return rs->c.mu > 0.0 && rs->vc.top.eps > 0.0;
+}
+
 /* The verdict of a trapped well and the steady state at its minimum for J0. */
 static void run_set_trapped(run_state *rs, const verdict_trap *tr, double margin, double Rn_bound,
                             tippe_dynamics_result *res)
@@ -673,13 +682,13 @@ static void run_set_trapped(run_state *rs, const verdict_trap *tr, double margin
     res->margin_J = margin;
     res->Rn_bound_N = Rn_bound;
     res->phi_dot_final_rad_s = 0.0;
-    if (!tr->trapped && rs->c.mu > 0.0) {
-        /* unresolvable: one of the well's steady states, not provably which */
-        res->how = TIPPE_DECIDED_FLAT_WELL;
+    if (!run_dissipates_to_rest(rs)) {
+        res->verdict = TIPPE_VERDICT_BOUNDED;
         res->spin_final_rad_s = rs->smp.spin;
         res->phi_dot_final_rad_s = NAN;
-    } else if (rs->c.mu == 0.0) {
-        res->verdict = TIPPE_VERDICT_BOUNDED;
+    } else if (!tr->trapped) {
+        /* unresolvable: one of the well's steady states, not provably which */
+        res->how = TIPPE_DECIDED_FLAT_WELL;
         res->spin_final_rad_s = rs->smp.spin;
         res->phi_dot_final_rad_s = NAN;
     } else if (th == 0.0) {
@@ -705,7 +714,7 @@ static void run_set_trapped(run_state *rs, const verdict_trap *tr, double margin
 /* The energy test at every accepted step (a comparison with a constant of the
  * well), and the contact bound when the energy excess over the well's minimum has
  * halved since its last failure (it only gets easier as E falls). 1 if decided:
- * trapped; bounded (mu = 0, confined: E never changes); or stopped early in a
+ * trapped; bounded (mu = 0 or eps = 0, confined: E never rises); or stopped early in a
  * well that can never be resolved (undecided, flat_well). */
 static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
 {
@@ -716,7 +725,8 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
                         s->slip_speed == 0.0;
     verdict_trap tr;
     verdict_energy_test(&rs->vc, s->theta, s->E, margin, at_rest ? s->theta : NAN, &tr);
-    const int decidable = rs->c.mu == 0.0 ? tr.confined : (tr.trapped || tr.unresolvable);
+    const int decidable =
+        run_dissipates_to_rest(rs) ? (tr.trapped || tr.unresolvable) : tr.confined;
     if (!decidable)
         return 0;
     const double excess = rs->smp.E - rs->vc.wells.well[tr.well].V_min;

@@ -339,7 +339,7 @@ int tippe_launch_tally_records(const tippe_launch_record *r, long n, tippe_launc
             continue;
         if (r[i].verdict == TIPPE_VERDICT_TIP && isfinite(r[i].t_flip_s))
             t[m_flip++] = r[i].t_flip_s;
-        if (r[i].how != TIPPE_DECIDED_TRAPPED)
+        if (r[i].how != TIPPE_DECIDED_TRAPPED || r[i].verdict == TIPPE_VERDICT_BOUNDED)
             continue;
         out->trapped++;
         if (isinf(r[i].barrier_gap_J))

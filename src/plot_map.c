@@ -16,14 +16,14 @@ static const unsigned verdict_rgb[TIPPE_LAUNCH_N_VERDICTS] = {
     0x2e9a46u, /* hang: green */
     0x8e2ac0u, /* lost_contact: purple */
     0x707070u, /* undecided: grey */
-    0xb08a2eu, /* bounded (mu = 0): ochre */
+    0xb08a2eu, /* bounded: ochre */
 };
 #define C_NMINUS 0xffd21fu /* yellow */
 #define C_NSTAR 0x25d0e8u  /* cyan */
 
 static const char *const verdict_key[TIPPE_LAUNCH_N_VERDICTS] = {
     "no_tip (stays upright)", "tip (flips to #gh = #gp)", "hang (intermediate #gh)",
-    "lost_contact (lifts off)", "undecided by t_end", "bounded (mu = 0)",
+    "lost_contact (lifts off)", "undecided by t_end", "bounded (mu or eps = 0)",
 };
 
 static double luminance(unsigned rgb)

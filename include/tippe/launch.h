@@ -167,8 +167,9 @@ typedef struct {
      * time at which theta passed pi/2 (NAN if none). */
     long flips;
     double median_t_flip_s;
-    /* Trapped decisions: how many, how many of them in a well with no barrier, and
-     * the smallest barrier gap / margin of the others (INFINITY if none). */
+    /* Trapped decisions (no_tip, tip, hang): how many, how many of them in a well
+     * with no barrier, and the smallest barrier gap / margin of the others
+     * (INFINITY if none). */
     long trapped, trapped_no_barrier;
     double min_gap_over_margin;
 } tippe_launch_tally;

@@ -278,7 +278,7 @@ typedef struct {
     "Integrates one launch (the paper's section 3 model with viscous sliding friction)\n" \
     "until its verdict is proved, it loses contact or it reaches t_end, and compares it\n" \
     "with Theorem 5.1's prediction for the launch's Jellett invariant. Verdicts: no_tip,\n" \
-    "tip, hang, lost_contact, undecided, bounded (mu = 0). The launch is a scenario file\n" \
+    "tip, hang, lost_contact, undecided, bounded (mu or eps = 0). The launch is a scenario file\n" \
     "(docs/dynamics.md), or a design with --z2 and the launch options below: without\n"   \
     "them, tippe launch's central hand launch (tilt 0.0674 rad, steady precession, spin\n" \
     "15 rev/s, no sliding, mu " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) " s/m)."

@@ -12,7 +12,8 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
 {
     const double th = r->theta_final_rad;
     if (r->verdict == TIPPE_VERDICT_BOUNDED) {
-        printf("%sbounded (mu = 0, energy conserved): theta stays in [%.6g, %.6g] rad "
+        printf("%sbounded (mu = 0 or eps = 0: no rest state is forced): theta stays in "
+               "[%.6g, %.6g] rad "
                "([%.2f, %.2f] deg) about the well's minimum %.6g rad\n",
                prefix, r->theta_lo_rad, r->theta_hi_rad, r->theta_lo_rad * 180 / M_PI,
                r->theta_hi_rad * 180 / M_PI, th);
