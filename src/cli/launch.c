@@ -23,6 +23,13 @@
     "95% Wilson confidence intervals, beside Theorem 5.1's prediction for each launch's\n"  \
     "Jellett invariant and the fraction of launches that agree with it."
 
+/* A finite number in format fmt, or nothing (an empty CSV field). */
+static void csv_number(FILE *f, const char *fmt, double v)
+{
+    if (isfinite(v))
+        fprintf(f, fmt, v);
+}
+
 /* Rounds the last bits away: "%.10g" etc. keep CSV deterministic and short. */
 static int write_launch_csv(const char *path, const tippe_launch_record *r, long n,
                             tippe_error *err)
@@ -34,7 +41,8 @@ static int write_launch_csv(const char *path, const tippe_launch_record *r, long
     FILE *f = rf.f;
     fprintf(f, "index,draw,spin_rad_s,tilt_rad,theta_dot_rad_s,phi_dot_rad_s,U_m_s,"
                "V_m_s,verdict,t_s,theta_final_rad,spin_final_rad_s,J0_kg_m3_s,jellett_rel_drift,"
-               "rhs_evals,theory,theory_hang_theta_rad,agrees\n");
+               "rhs_evals,theory,theory_hang_theta_rad,agrees,decided_by,barrier_gap_J,margin_J,"
+               "t_flip_s\n");
     for (long i = 0; i < n; i++) {
         const tippe_launch_record *x = &r[i];
         fprintf(f, "%ld,%ld,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%s,%.10g,%.10g,%.10g,%.10g,"
@@ -43,9 +51,16 @@ static int write_launch_csv(const char *path, const tippe_launch_record *r, long
                 x->ic.theta_dot, x->ic.phi_dot, x->ic.U, x->ic.V, tippe_verdict_name(x->verdict),
                 x->t_s, x->theta_final_rad, x->spin_final_rad_s, x->J0, x->jellett_rel_drift,
                 x->rhs_evals, x->theory_ok ? tippe_launch_predicted_name(x->predicted) : "none");
-        if (isfinite(x->hang_theta_rad))
-            fprintf(f, "%.10g", x->hang_theta_rad);
-        fprintf(f, ",%s\n", x->agrees > 0 ? "yes" : x->agrees == 0 ? "no" : "");
+        csv_number(f, "%.10g", x->hang_theta_rad);
+        fprintf(f, ",%s,%s,", x->agrees > 0 ? "yes" : x->agrees == 0 ? "no" : "",
+                tippe_decision_name(x->how));
+        /* empty where not applicable: an infinite gap (a well with no barrier) too */
+        csv_number(f, "%.4g", x->barrier_gap_J);
+        fputc(',', f);
+        csv_number(f, "%.4g", x->margin_J);
+        fputc(',', f);
+        csv_number(f, "%.10g", x->t_flip_s);
+        fputc('\n', f);
     }
     return tippe_report_commit(&rf, err);
 }
@@ -117,7 +132,8 @@ static int launch_parse(hands_args *a, int argc, char **argv)
          .help = "spin drawn uniformly in FROM .. TO (a unit on TO applies to FROM)"},
         {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
          .help = "one row per launch: initial state, verdict, t_s, theta_final,\n"
-                 "Jellett drift, theory's prediction (- for stdout)"},
+                 "Jellett drift, theory's prediction, how it was decided (barrier gap,\n"
+                 "margin) and the flip time (- for stdout)"},
         {NULL},
     };
     hands_verb v = {
