@@ -3,30 +3,19 @@
 #include "module.h"
 #include "tippe/animate.h"
 
-#include <string.h>
-
 static tippe_module animate =
     TIPPE_MODULE("animate", "cairo: apt-get install libcairo2-dev");
 
 int tippe_film_make(const tippe_animate_launch *launch, const tippe_animate_options *opt,
                     tippe_film *film, tippe_error *err)
 {
-    __typeof__(&tippe_film_make) real = TIPPE_MODULE_FIND(&animate, tippe_film_make, err);
-    if (real)
-        return real(launch, opt, film, err);
-    memset(film, 0, sizeof *film); /* as the module's own failures leave it */
-    return TIPPE_ECOMPUTE;
+    TIPPE_MODULE_FILL(&animate, tippe_film_make, err, film, launch, opt, film, err);
 }
 
 int tippe_film_make_still(const tippe_animate_launch *launch, const tippe_animate_options *opt,
                           double t_s, tippe_film *film, tippe_error *err)
 {
-    __typeof__(&tippe_film_make_still) real =
-        TIPPE_MODULE_FIND(&animate, tippe_film_make_still, err);
-    if (real)
-        return real(launch, opt, t_s, film, err);
-    memset(film, 0, sizeof *film); /* as the module's own failures leave it */
-    return TIPPE_ECOMPUTE;
+    TIPPE_MODULE_FILL(&animate, tippe_film_make_still, err, film, launch, opt, t_s, film, err);
 }
 
 void tippe_film_free(tippe_film *film)

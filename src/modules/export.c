@@ -3,8 +3,6 @@
 #include "module.h"
 #include "tippe/export.h"
 
-#include <string.h>
-
 static tippe_module export_module =
     TIPPE_MODULE("export", "GEOS, lib3MF and cairo: apt-get install libgeos-dev lib3mf-dev "
                            "libcairo2-dev");
@@ -12,18 +10,15 @@ static tippe_module export_module =
 int tippe_export_plan(const tippe_design *d, const tippe_export_request *q, char (*paths)[4096],
                       int max, tippe_error *err)
 {
-    __typeof__(&tippe_export_plan) real = TIPPE_MODULE_FIND(&export_module, tippe_export_plan, err);
+    __typeof__(&tippe_export_plan) real =
+        TIPPE_MODULE_FIND(&export_module, tippe_export_plan, err);
     return real ? real(d, q, paths, max, err) : -1; /* a count, or -1 on failure */
 }
 
 int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
                      tippe_export_result *out, tippe_error *err)
 {
-    __typeof__(&tippe_export_run) real = TIPPE_MODULE_FIND(&export_module, tippe_export_run, err);
-    if (real)
-        return real(d, q, out, err);
-    memset(out, 0, sizeof *out); /* as the module's own failures leave it */
-    return TIPPE_ECOMPUTE;
+    TIPPE_MODULE_FILL(&export_module, tippe_export_run, err, out, d, q, out, err);
 }
 
 void tippe_export_result_free(tippe_export_result *r)

@@ -18,6 +18,7 @@
 
 #include <limits.h>
 #include <pthread.h>
+#include <string.h>
 
 typedef struct {
     const char *name;  /* "plot": the file tippe-plot.so */
@@ -43,13 +44,22 @@ void *tippe_module_function_if_open(tippe_module *m, const char *symbol);
 #define TIPPE_MODULE_FIND(m, fn, err) ((__typeof__(&fn))tippe_module_function(m, #fn, err))
 
 /* The body of a stub that returns a tippe status: calls the module's fn with
- * the stub's arguments, or returns TIPPE_ECOMPUTE with err set. A stub whose
- * function fills an output, or returns something else, keeps its function's
- * contract on failure itself (zeroed output, -1). */
+ * the stub's arguments, or returns TIPPE_ECOMPUTE with err set. */
 #define TIPPE_MODULE_CALL(m, fn, err, ...)                                                       \
     do {                                                                                         \
         __typeof__(&fn) real_ = TIPPE_MODULE_FIND(m, fn, err);                                   \
         return real_ ? real_(__VA_ARGS__) : TIPPE_ECOMPUTE;                                      \
+    } while (0)
+
+/* The same for a function that fills *out: without its module, *out is zeroed,
+ * as the module's own failures leave it (the caller may read or free it). */
+#define TIPPE_MODULE_FILL(m, fn, err, out, ...)                                                  \
+    do {                                                                                         \
+        __typeof__(&fn) real_ = TIPPE_MODULE_FIND(m, fn, err);                                   \
+        if (real_)                                                                               \
+            return real_(__VA_ARGS__);                                                           \
+        memset(out, 0, sizeof *out);                                                             \
+        return TIPPE_ECOMPUTE;                                                                   \
     } while (0)
 
 /* The body of a stub that frees: calls the module's fn if the module is open. */

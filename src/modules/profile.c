@@ -3,19 +3,13 @@
 #include "module.h"
 #include "tippe/profile.h"
 
-#include <string.h>
-
 static tippe_module profile =
     TIPPE_MODULE("profile", "GEOS: apt-get install libgeos-dev");
 
 int tippe_profile_build(const tippe_design *d, const tippe_profile_options *opt,
                         tippe_profile_set *out, tippe_error *err)
 {
-    __typeof__(&tippe_profile_build) real = TIPPE_MODULE_FIND(&profile, tippe_profile_build, err);
-    if (real)
-        return real(d, opt, out, err);
-    memset(out, 0, sizeof *out); /* as the module's own failures leave it */
-    return TIPPE_ECOMPUTE;
+    TIPPE_MODULE_FILL(&profile, tippe_profile_build, err, out, d, opt, out, err);
 }
 
 void tippe_profile_set_free(tippe_profile_set *s)
