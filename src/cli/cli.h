@@ -185,7 +185,8 @@ void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
  * reason (a directory, a path through a file, /proc, no permission, or the
  * same file as an earlier output of this run). "-" is standard output. Every
  * verb calls it for every output before any work, so that bad usage leaves
- * nothing and costs nothing. */
+ * nothing and costs nothing. A plot is also refused (2) when the command's
+ * plotting module (src/modules/) does not load: said before the work, not after. */
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot);
 /* Records the verb's input files (tippe_cli_parse does it for the positional
  * arguments): tippe_cli_check_output refuses an output that is one of them. */

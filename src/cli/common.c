@@ -2,6 +2,7 @@
  * that every verb words its usage errors, reads numbers and --set options and
  * checks its output files the same way. */
 #include "cli.h"
+#include "../modules/module.h"
 
 #include "tippe/design.h"
 #include "tippe/json.h"
@@ -224,6 +225,9 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
             checked[n_checked++].option = option;
         }
     }
+    /* The plotting module is loaded now: if it is missing, say so before the work. */
+    if (plot && tippe_module_plot_ready(&err))
+        return tippe_cli_fail(verb, &err, TIPPE_EINPUT);
     return 0;
 }
 
