@@ -29,7 +29,8 @@ check "simulate runs" loaded simulate designs/scenarios/fig12-tip.json >"$tmp/si
 check "simulate loads GSL (the loader's trace works)" grep -q libgsl "$tmp/sim.libs"
 check "simulate loads no module and no heavy library" \
     bash -c "! grep -Eq 'tippe-|$heavy' '$tmp/sim.libs'"
-check "sweep --plot runs" loaded sweep designs/m12-setscrew.json --plot "$tmp/z.png" >"$tmp/plot.libs"
+check "sweep --plot runs" loaded sweep designs/m12-setscrew.json --plot "$tmp/z.png" \
+    >"$tmp/plot.libs"
 check "sweep --plot loads the plot module and PLplot" \
     bash -c "grep -q 'tippe-plot.so' '$tmp/plot.libs' && grep -q libplplot '$tmp/plot.libs'"
 check "sweep --plot loads no lib3MF" bash -c "! grep -q 3MF '$tmp/plot.libs'"
@@ -53,7 +54,8 @@ big_map="map designs/m12-setscrew.json --z2 0:20:41 --spin 2:30rev/s:41 -n 1000"
 for case in "plot:2:sweep designs/m12-setscrew.json --plot $tmp/alone/z.png" \
             "plot:2:$big_map --plot $tmp/alone/m.png" \
             "export:1:export designs/shell-band.json -o $tmp/alone/print" \
-            "animate:1:animate designs/scenarios/film-IIb-hang.json --frame 12.9 -o $tmp/alone/s.png"; do
+            "animate:1:animate designs/scenarios/film-IIb-hang.json --frame 12.9 -o \
+$tmp/alone/s.png"; do
     m=${case%%:*}
     rest=${case#*:}
     want=${rest%%:*}
@@ -64,8 +66,8 @@ for case in "plot:2:sweep designs/m12-setscrew.json --plot $tmp/alone/z.png" \
     check "without tippe-$m.so, ${args%% *} exits $want at once (got $st)" test $st -eq "$want"
     check "... naming tippe-$m.so" grep -q "cannot load $tmp/alone/tippe-$m.so" "$tmp/err"
 done
-check "... and leaves no output behind" \
-    bash -c "! ls '$tmp/alone/z.png' '$tmp/alone/m.png' '$tmp/alone/print' '$tmp/alone/s.png' 2>/dev/null | grep -q ."
+outputs=("$tmp/alone/z.png" "$tmp/alone/m.png" "$tmp/alone/print" "$tmp/alone/s.png")
+check "... and leaves no output behind" bash -c '! ls "$@" 2>/dev/null | grep -q .' _ "${outputs[@]}"
 "$tippe_alone" eval designs/m12-setscrew.json --z2 15 >"$tmp/eval.txt"
 check "without tippe-profile.so eval still gives the physics (exit 0)" test $? -eq 0
 check "... and says why the printed bodies are missing" \
@@ -74,6 +76,7 @@ echo "not a module" >"$tmp/alone/tippe-plot.so" # fault injection
 "$tippe_alone" sweep designs/m12-setscrew.json --plot "$tmp/alone/z.png" >/dev/null 2>"$tmp/err"
 st=$?
 check "a broken tippe-plot.so: exit 2 (got $st)" test $st -eq 2
-check "... naming it, with the loader's reason" grep -q "cannot load .*tippe-plot.so.*: ." "$tmp/err"
+check "... naming it, with the loader's reason" \
+    grep -q "cannot load .*tippe-plot.so.*: ." "$tmp/err"
 
 finish
