@@ -683,9 +683,9 @@ static void run_set_trapped(run_state *rs, const verdict_trap *tr, double margin
     res->Rn_bound_N = Rn_bound;
     res->phi_dot_final_rad_s = 0.0;
     if (!run_dissipates_to_rest(rs)) {
+        /* a range, not an end state */
         res->verdict = TIPPE_VERDICT_BOUNDED;
-        res->spin_final_rad_s = rs->smp.spin;
-        res->phi_dot_final_rad_s = NAN;
+        res->theta_final_rad = res->spin_final_rad_s = res->phi_dot_final_rad_s = NAN;
     } else if (!tr->trapped) {
         /* unresolvable: one of the well's steady states, not provably which */
         res->how = TIPPE_DECIDED_FLAT_WELL;
