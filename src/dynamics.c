@@ -68,6 +68,7 @@ const char *tippe_decision_name(tippe_decision d)
     case TIPPE_DECIDED_TRAPPED: return "trapped";
     case TIPPE_DECIDED_LOST_CONTACT: return "lost_contact";
     case TIPPE_DECIDED_FLAT_WELL: return "flat_well";
+    case TIPPE_DECIDED_BUDGET: return "budget";
     }
     return "?";
 }
@@ -907,7 +908,9 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
     }
 
     res->last = rs.smp;
-    if (res->how == TIPPE_DECIDED_T_END) {
+    if (res->how == TIPPE_DECIDED_T_END && res->budget_exhausted)
+        res->how = TIPPE_DECIDED_BUDGET;
+    if (res->how == TIPPE_DECIDED_T_END || res->how == TIPPE_DECIDED_BUDGET) {
         res->t_verdict = rs.t;
         res->final = rs.smp;
         res->theta_final_rad = rs.smp.theta;

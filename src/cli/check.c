@@ -163,7 +163,7 @@ static void check_text(const hands_args *a, const check_result *r)
            ic->spin, ic->spin / (2 * M_PI), ic->theta, ic->theta * 180 / M_PI, ic->phi_dot);
     hands_print_model(&a->o);
     print_verdict_line(rec);
-    if (rec->how == TIPPE_DECIDED_T_END) {
+    if (rec->how == TIPPE_DECIDED_T_END || rec->how == TIPPE_DECIDED_BUDGET) {
         printf("           (t_end or the step budget came first; exactly on an unstable steady "
                "state, as with --tilt 0, nothing ever decides)\n");
     } else {
