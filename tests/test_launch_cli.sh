@@ -59,7 +59,7 @@ assert [int(r["index"]) for r in rows] == [0, 1, 2, 3]
 assert all(r["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided") for r in rows)
 # a trapped verdict says how and with what margin; a tip followed to its flip says when
 for r in rows:
-    assert r["decided_by"] in ("trapped", "lost_contact", "t_end", "flat_well"), r["decided_by"]
+    assert r["decided_by"] in ("trapped", "lost_contact", "t_end", "flat_well", "budget"), r["decided_by"]
     if r["decided_by"] == "trapped":
         assert float(r["margin_J"]) > 0
         assert r["barrier_gap_J"] == "" or float(r["barrier_gap_J"]) > float(r["margin_J"])
