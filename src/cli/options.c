@@ -347,6 +347,8 @@ int tippe_cli_parse(tippe_cli_spec *spec, int argc, char **argv, const char **ar
     for (int i = 0; i < *n_args; i++)
         args[i] = argv[optind + i];
     tippe_cli_note_inputs(args, *n_args);
+    const tippe_cli_opt *json = tippe_cli_find_opt(spec, "json");
+    tippe_cli_note_json(json && json->seen);
     return 0;
 }
 
