@@ -191,6 +191,10 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
 /* Records the verb's input files (tippe_cli_parse does it for the positional
  * arguments): tippe_cli_check_output refuses an output that is one of them. */
 void tippe_cli_note_inputs(const char *const *paths, int n);
+/* Records whether --json prints to standard output (tippe_cli_parse does it):
+ * tippe_cli_check_output then refuses an output named "-", as it refuses a
+ * second one. */
+void tippe_cli_note_json(int json);
 
 /* Runs verb v (argv[0] is its name) the way both front ends do: signals stop
  * it cleanly (tippe_cli_signals_install), its output files form one set that

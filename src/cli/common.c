@@ -197,8 +197,22 @@ static const char *input_named_by(const char *path)
     return NULL;
 }
 
+/* Who writes to standard output besides the text: --json, or an output named "-". */
+static const char *stdout_owner;
+
+void tippe_cli_note_json(int json)
+{
+    stdout_owner = json ? "--json" : NULL;
+}
+
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot)
 {
+    if (!strcmp(path, "-")) {
+        if (stdout_owner)
+            return tippe_cli_usage_error(verb, "%s -: standard output already carries %s; "
+                                         "give %s a file name", option, stdout_owner, option);
+        stdout_owner = option;
+    }
     const char *input = input_named_by(path);
     if (input)
         return tippe_cli_usage_error(verb, "%s %s is the input file '%s': it would be "
