@@ -19,9 +19,10 @@
     "(docs/launch.md), and integrates each launch (the paper's section 3 model with\n"      \
     "viscous sliding friction) until its verdict is proved (an energy barrier and a\n"     \
     "contact bound, docs/dynamics.md), it leaves the table or it reaches t_end.\n"        \
-    "Prints how many launches end in no_tip, tip, hang, lost_contact and undecided, with\n" \
-    "95% Wilson confidence intervals, beside Theorem 5.1's prediction for each launch's\n"  \
-    "Jellett invariant and the fraction of launches that agree with it."
+    "Prints how many launches end in no_tip, tip, hang, lost_contact, undecided and\n"     \
+    "bounded (mu = 0 or eps = 0: confined, no end state), with 95% Wilson confidence\n"   \
+    "intervals, beside Theorem 5.1's prediction for each launch's Jellett invariant and\n" \
+    "the fraction of launches that agree with it."
 
 /* A finite number in format fmt, or nothing (an empty CSV field). */
 static void csv_number(FILE *f, const char *fmt, double v)
