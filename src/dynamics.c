@@ -68,6 +68,7 @@ const char *tippe_decision_name(tippe_decision d)
     case TIPPE_DECIDED_TRAPPED: return "trapped";
     case TIPPE_DECIDED_LOST_CONTACT: return "lost_contact";
     case TIPPE_DECIDED_FLAT_WELL: return "flat_well";
+    case TIPPE_DECIDED_BUDGET: return "budget";
     }
     return "?";
 }
@@ -683,9 +684,9 @@ static void run_set_trapped(run_state *rs, const verdict_trap *tr, double margin
     res->Rn_bound_N = Rn_bound;
     res->phi_dot_final_rad_s = 0.0;
     if (!run_dissipates_to_rest(rs)) {
+        /* a range, not an end state */
         res->verdict = TIPPE_VERDICT_BOUNDED;
-        res->spin_final_rad_s = rs->smp.spin;
-        res->phi_dot_final_rad_s = NAN;
+        res->theta_final_rad = res->spin_final_rad_s = res->phi_dot_final_rad_s = NAN;
     } else if (!tr->trapped) {
         /* unresolvable: one of the well's steady states, not provably which */
         res->how = TIPPE_DECIDED_FLAT_WELL;
@@ -907,7 +908,9 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
     }
 
     res->last = rs.smp;
-    if (res->how == TIPPE_DECIDED_T_END) {
+    if (res->how == TIPPE_DECIDED_T_END && res->budget_exhausted)
+        res->how = TIPPE_DECIDED_BUDGET;
+    if (res->how == TIPPE_DECIDED_T_END || res->how == TIPPE_DECIDED_BUDGET) {
         res->t_verdict = rs.t;
         res->final = rs.smp;
         res->theta_final_rad = rs.smp.theta;

@@ -202,6 +202,7 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->t_s = rec->theta_final_rad = rec->spin_final_rad_s = NAN;
     rec->how = TIPPE_DECIDED_T_END;
     rec->barrier_gap_J = rec->margin_J = rec->t_flip_s = NAN;
+    rec->theta_lo_rad = rec->theta_hi_rad = rec->Rn_bound_N = NAN;
     rec->J0 = rec->jellett_rel_drift = NAN;
     rec->rhs_evals = 0;
 
@@ -224,6 +225,9 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->spin_final_rad_s = res.spin_final_rad_s;
     rec->barrier_gap_J = res.barrier_gap_J;
     rec->margin_J = res.margin_J;
+    rec->theta_lo_rad = res.theta_lo_rad;
+    rec->theta_hi_rad = res.theta_hi_rad;
+    rec->Rn_bound_N = res.Rn_bound_N;
     rec->t_flip_s = res.t_flip;
     rec->J0 = res.J0;
     rec->jellett_rel_drift = res.jellett_rel_drift;
@@ -353,12 +357,16 @@ int tippe_launch_tally_records(const tippe_launch_record *r, long n, tippe_launc
         long m = 0;
         for (long i = 0; i < n; i++)
             if ((int)r[i].verdict == v && r[i].status == TIPPE_OK) {
-                theta[m] = r[i].theta_final_rad;
                 t[m] = r[i].t_s;
                 m++;
             }
-        out->median_theta_rad[v] = median_of(theta, m);
         out->median_t_s[v] = median_of(t, m);
+        m = 0; /* a bounded launch has no end angle (NAN) */
+        for (long i = 0; i < n; i++)
+            if ((int)r[i].verdict == v && r[i].status == TIPPE_OK &&
+                isfinite(r[i].theta_final_rad))
+                theta[m++] = r[i].theta_final_rad;
+        out->median_theta_rad[v] = median_of(theta, m);
     }
     free(theta);
     free(t);

@@ -59,7 +59,7 @@ assert [int(r["index"]) for r in rows] == [0, 1, 2, 3]
 assert all(r["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided") for r in rows)
 # a trapped verdict says how and with what margin; a tip followed to its flip says when
 for r in rows:
-    assert r["decided_by"] in ("trapped", "lost_contact", "t_end", "flat_well"), r["decided_by"]
+    assert r["decided_by"] in ("trapped", "lost_contact", "t_end", "flat_well", "budget"), r["decided_by"]
     if r["decided_by"] == "trapped":
         assert float(r["margin_J"]) > 0
         assert r["barrier_gap_J"] == "" or float(r["barrier_gap_J"]) > float(r["margin_J"])
@@ -129,6 +129,10 @@ refused() { # refused DESCRIPTION PATTERN ARGS...: exit 2, stderr matches PATTER
 refused "Z2 outside the travel" "outside the design's travel" \
     launch "$m12" --z2 30 -n 2 --csv "$tmp/out.csv"
 refused "no --z2" "--z2 MM is required" launch "$m12" -n 2 --csv "$tmp/out.csv"
+refused "CSV and JSON both on stdout" "standard output already carries --json" \
+    launch "$m12" --z2 10 -n 2 --csv - --json
+refused "two outputs on stdout" "standard output already carries --csv" \
+    map "$m12" --z2 10:15:2 --spin 5:20rev/s:2 -n 2 --csv - --plot -
 refused "zero launches" "-n '0'" launch "$m12" --z2 10 -n 0 --csv "$tmp/out.csv"
 refused "unknown option" "unknown option '--spin-rpm'" launch "$m12" --z2 10 --spin-rpm 5
 refused "map-only option on launch" "unknown option '--plot'" \

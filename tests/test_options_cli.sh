@@ -24,6 +24,15 @@ expect_fail "z2 NaN" 2 "--z2 'nan'" -- eval "$d" --z2 nan
 expect_fail "spin with a misspelt unit" 2 "--spin '20revs'" "or suffix rev/s, rpm" -- \
     simulate "$d" --z2 12 --spin 20revs
 expect_fail "missing value" 2 "--z2 needs a value" -- eval "$d" --z2
+# a bound as the help prints it (10 digits: 3.141592654 > pi) is the bound itself
+sc=designs/scenarios/fig12-tip.json
+check "--theta 3.141592654, the printed upper bound, is pi" \
+    json_ok <("$tippe" simulate "$sc" --theta 3.141592654 --t-end 1 --json) \
+    "o['initial']['theta_rad'] == 3.141592653589793"
+check "--theta 180deg is pi" \
+    json_ok <("$tippe" simulate "$sc" --theta 180deg --t-end 1 --json) \
+    "o['initial']['theta_rad'] == 3.141592653589793"
+expect_fail "beyond the printed bound" 2 "--theta '3.1416'" -- simulate "$sc" --theta 3.1416
 expect_fail "required option" 2 "--z2 MM is required" -- eval "$d"
 expect_fail "flag with a value" 2 "--json=1 takes no value" -- eval "$d" --z2 5 --json=1
 expect_fail "unknown option" 2 "unknown option '--frobnicate'" -- eval "$d" --z2 5 --frobnicate

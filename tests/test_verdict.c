@@ -262,6 +262,25 @@ static void test_centred_ball(void)
     CHECK(q.last.theta > 1e-2, "centred ball: theta %g at 3000 s", q.last.theta);
 }
 
+/* A run stopped by its step budget says so (budget), not t_end. */
+static void test_budget(void)
+{
+    tippe_dynamics_model m = {{1.0, 1.0, 0.3, 0.92, 1.0, 0}, 1.0, 0.04};
+    tippe_dynamics_initial ic = steady(&m, 0.01, 3.0);
+    tippe_dynamics_options o;
+    tippe_dynamics_options_default(&o);
+    o.t_end = 10000.0;
+    o.max_steps = 100; /* the flip takes ~4400 steps at the default accuracy */
+    tippe_dynamics_result r;
+    tippe_error e;
+    CHECK(tippe_dynamics_run(&m, &ic, &o, &r, &e) == TIPPE_OK, "budget: %s", e.msg);
+    CHECK(r.verdict == TIPPE_VERDICT_UNDECIDED && r.budget_exhausted &&
+              r.how == TIPPE_DECIDED_BUDGET && !strcmp(tippe_decision_name(r.how), "budget") &&
+              r.t_verdict < o.t_end,
+          "budget: %s (%s) at t = %g", tippe_verdict_name(r.verdict),
+          tippe_decision_name(r.how), r.t_verdict);
+}
+
 int main(void)
 {
     test_strong_friction();
@@ -269,6 +288,7 @@ int main(void)
     test_falls();
     test_unstable_poles();
     test_centred_ball();
+    test_budget();
     test_sweep();
     return check_summary("test_verdict");
 }

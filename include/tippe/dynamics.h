@@ -41,15 +41,16 @@ const char *tippe_verdict_name(tippe_verdict v);
 
 /* How a verdict was reached. */
 typedef enum {
-    TIPPE_DECIDED_T_END,        /* not decided: t_end or the step budget */
+    TIPPE_DECIDED_T_END,        /* not decided: t_end reached */
     TIPPE_DECIDED_TRAPPED,      /* energy below the well's barrier, contact bound > 0 */
     TIPPE_DECIDED_LOST_CONTACT, /* Rn crossed 0 (located by bisection) */
-    TIPPE_DECIDED_FLAT_WELL     /* undecided for ever at this accuracy: confined to a well
+    TIPPE_DECIDED_FLAT_WELL,    /* undecided for ever at this accuracy: confined to a well
                                    that is flat, or whose barrier above its minimum is
                                    within the energy margin (which never shrinks) */
+    TIPPE_DECIDED_BUDGET        /* not decided: the step budget ran out before t_end */
 } tippe_decision;
 
-/* "t_end", "trapped", "lost_contact", "flat_well". */
+/* "t_end", "trapped", "lost_contact", "flat_well", "budget". */
 const char *tippe_decision_name(tippe_decision d);
 
 typedef struct {

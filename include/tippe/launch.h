@@ -102,6 +102,9 @@ typedef struct {
     double theta_final_rad;  /* the end state (tippe_dynamics_result.theta_final_rad) */
     double spin_final_rad_s; /* its spin */
     double barrier_gap_J, margin_J; /* of a trapped decision (NAN otherwise) */
+    /* trapped or bounded: theta stays in [theta_lo_rad, theta_hi_rad] with Rn above
+     * Rn_bound_N (NAN otherwise); a bounded launch has no end state (NAN) */
+    double theta_lo_rad, theta_hi_rad, Rn_bound_N;
     double t_flip_s;         /* s, theta first passed pi/2 (NAN: not, or not followed) */
     double J0;               /* kg m^3/s, Jellett invariant at launch (eq 3.20) */
     double jellett_rel_drift;

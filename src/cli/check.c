@@ -65,20 +65,31 @@ static cJSON *theory_json(const hands_args *a, const check_result *r)
 }
 
 /* How the verdict was reached (docs/dynamics.md, "Proved verdicts"). */
+static void add_number_or_null(cJSON *o, const char *key, double v)
+{
+    if (isfinite(v))
+        cJSON_AddNumberToObject(o, key, v);
+    else
+        cJSON_AddNullToObject(o, key);
+}
+
+/* How the verdict was reached, with null where a field does not apply. */
 static void add_decision_json(cJSON *o, const tippe_launch_record *rec)
 {
     cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(rec->how));
-    if (rec->how == TIPPE_DECIDED_TRAPPED) {
-        cJSON_AddNumberToObject(o, "margin_J", rec->margin_J);
-        if (isfinite(rec->barrier_gap_J))
-            cJSON_AddNumberToObject(o, "barrier_gap_J", rec->barrier_gap_J);
-        else
-            cJSON_AddNullToObject(o, "barrier_gap_J");
+    add_number_or_null(o, "margin_J", rec->margin_J);
+    add_number_or_null(o, "barrier_gap_J", rec->barrier_gap_J);
+    if (isfinite(rec->theta_lo_rad)) {
+        cJSON *range = cJSON_AddArrayToObject(o, "theta_range_rad");
+        if (range) {
+            cJSON_AddItemToArray(range, cJSON_CreateNumber(rec->theta_lo_rad));
+            cJSON_AddItemToArray(range, cJSON_CreateNumber(rec->theta_hi_rad));
+        }
+    } else {
+        cJSON_AddNullToObject(o, "theta_range_rad");
     }
-    if (isfinite(rec->t_flip_s))
-        cJSON_AddNumberToObject(o, "t_flip_s", rec->t_flip_s);
-    else
-        cJSON_AddNullToObject(o, "t_flip_s");
+    add_number_or_null(o, "Rn_bound_N", rec->Rn_bound_N);
+    add_number_or_null(o, "t_flip_s", rec->t_flip_s);
 }
 
 static int check_json(const hands_args *a, const check_result *r)
@@ -103,14 +114,40 @@ static int check_json(const hands_args *a, const check_result *r)
         cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(rec->verdict));
         cJSON_AddNumberToObject(o, "t_s", rec->t_s);
         add_decision_json(o, rec);
-        cJSON_AddNumberToObject(o, "theta_final_rad", rec->theta_final_rad);
-        cJSON_AddNumberToObject(o, "spin_final_rad_s", rec->spin_final_rad_s);
+        add_number_or_null(o, "theta_final_rad", rec->theta_final_rad);
+        add_number_or_null(o, "spin_final_rad_s", rec->spin_final_rad_s);
         cJSON_AddNumberToObject(o, "J0_kg_m3_s", rec->J0);
         cJSON_AddNumberToObject(o, "jellett_rel_drift", rec->jellett_rel_drift);
         cJSON_AddItemToObject(o, "options", hands_json_options(&a->o, 1));
         cJSON_AddItemToObject(o, "theory", theory_json(a, r));
     }
     return tippe_cli_print_json(a->verb, o);
+}
+
+/* What the launch does: an end state, a range (bounded), the lift-off, or the
+ * state where the run stopped without a proof. */
+static void print_verdict_line(const tippe_launch_record *rec)
+{
+    const double th = rec->theta_final_rad, deg = 180 / M_PI;
+    switch (rec->verdict) {
+    case TIPPE_VERDICT_BOUNDED:
+        printf("\nverdict    bounded (mu = 0 or eps = 0: no rest state is forced): theta stays "
+               "for ever in [%.4f, %.4f] rad ([%.1f, %.1f] deg)\n",
+               rec->theta_lo_rad, rec->theta_hi_rad, rec->theta_lo_rad * deg,
+               rec->theta_hi_rad * deg);
+        break;
+    case TIPPE_VERDICT_UNDECIDED:
+        printf("\nverdict    undecided: not proved by t = %.4g s; theta there %.4f rad "
+               "(%.1f deg)\n", rec->t_s, th, th * deg);
+        break;
+    case TIPPE_VERDICT_LOST_CONTACT:
+        printf("\nverdict    lost_contact: leaves the table at theta %.4f rad (%.1f deg), "
+               "spin %.4g rad/s\n", th, th * deg, rec->spin_final_rad_s);
+        break;
+    default:
+        printf("\nverdict    %s: ends at theta %.4f rad (%.1f deg), spin %.4g rad/s\n",
+               tippe_verdict_name(rec->verdict), th, th * deg, rec->spin_final_rad_s);
+    }
 }
 
 static void check_text(const hands_args *a, const check_result *r)
@@ -125,16 +162,23 @@ static void check_text(const hands_args *a, const check_result *r)
            "precession %.4g rad/s, no sliding\n",
            ic->spin, ic->spin / (2 * M_PI), ic->theta, ic->theta * 180 / M_PI, ic->phi_dot);
     hands_print_model(&a->o);
-    printf("\nverdict    %s: ends at theta %.4f rad (%.1f deg), spin %.4g rad/s\n",
-           tippe_verdict_name(rec->verdict), rec->theta_final_rad,
-           rec->theta_final_rad * 180 / M_PI, rec->spin_final_rad_s);
-    printf("           decided by %s at t = %.4g s", tippe_decision_name(rec->how), rec->t_s);
-    if (rec->how == TIPPE_DECIDED_TRAPPED && isinf(rec->barrier_gap_J))
-        printf(" (a well with no barrier; energy margin %.3g J)", rec->margin_J);
-    else if (rec->how == TIPPE_DECIDED_TRAPPED)
-        printf(" (energy %.3g J below the well's barrier, margin %.3g J)", rec->barrier_gap_J,
-               rec->margin_J);
-    printf("\n");
+    print_verdict_line(rec);
+    if (rec->how == TIPPE_DECIDED_T_END || rec->how == TIPPE_DECIDED_BUDGET) {
+        printf("           (t_end or the step budget came first; exactly on an unstable steady "
+               "state, as with --tilt 0, nothing ever decides)\n");
+    } else {
+        printf("           decided by %s at t = %.4g s", tippe_decision_name(rec->how), rec->t_s);
+        if (rec->verdict == TIPPE_VERDICT_BOUNDED)
+            printf(" (energy below the well's escape level, margin %.3g J)", rec->margin_J);
+        else if (rec->how == TIPPE_DECIDED_TRAPPED && isinf(rec->barrier_gap_J))
+            printf(" (a well with no barrier; energy margin %.3g J)", rec->margin_J);
+        else if (rec->how == TIPPE_DECIDED_TRAPPED)
+            printf(" (energy %.3g J below the well's barrier, margin %.3g J)",
+                   rec->barrier_gap_J, rec->margin_J);
+        if (isfinite(rec->Rn_bound_N))
+            printf("; Rn >= %.3g N for ever", rec->Rn_bound_N);
+        printf("\n");
+    }
     if (isfinite(rec->t_flip_s))
         printf("flip       theta passed 90 deg at t = %.4g s of model time (mu = %g s/m)\n",
                rec->t_flip_s, a->o.mu);

@@ -185,11 +185,16 @@ void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
  * reason (a directory, a path through a file, /proc, no permission, or the
  * same file as an earlier output of this run). "-" is standard output. Every
  * verb calls it for every output before any work, so that bad usage leaves
- * nothing and costs nothing. */
+ * nothing and costs nothing. A plot is also refused (2) when the command's
+ * plotting module (src/modules/) does not load: said before the work, not after. */
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot);
 /* Records the verb's input files (tippe_cli_parse does it for the positional
  * arguments): tippe_cli_check_output refuses an output that is one of them. */
 void tippe_cli_note_inputs(const char *const *paths, int n);
+/* Records whether --json prints to standard output (tippe_cli_parse does it):
+ * tippe_cli_check_output then refuses an output named "-", as it refuses a
+ * second one. */
+void tippe_cli_note_json(int json);
 
 /* Runs verb v (argv[0] is its name) the way both front ends do: signals stop
  * it cleanly (tippe_cli_signals_install), its output files form one set that

@@ -2,6 +2,7 @@
  * that every verb words its usage errors, reads numbers and --set options and
  * checks its output files the same way. */
 #include "cli.h"
+#include "../modules/module.h"
 
 #include "tippe/design.h"
 #include "tippe/json.h"
@@ -196,8 +197,22 @@ static const char *input_named_by(const char *path)
     return NULL;
 }
 
+/* Who writes to standard output besides the text: --json, or an output named "-". */
+static const char *stdout_owner;
+
+void tippe_cli_note_json(int json)
+{
+    stdout_owner = json ? "--json" : NULL;
+}
+
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot)
 {
+    if (!strcmp(path, "-")) {
+        if (stdout_owner)
+            return tippe_cli_usage_error(verb, "%s -: standard output already carries %s; "
+                                         "give %s a file name", option, stdout_owner, option);
+        stdout_owner = option;
+    }
     const char *input = input_named_by(path);
     if (input)
         return tippe_cli_usage_error(verb, "%s %s is the input file '%s': it would be "
@@ -224,6 +239,9 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
             checked[n_checked++].option = option;
         }
     }
+    /* The plotting module is loaded now: if it is missing, say so before the work. */
+    if (plot && tippe_module_plot_ready(&err))
+        return tippe_cli_fail(verb, &err, TIPPE_EINPUT);
     return 0;
 }
 

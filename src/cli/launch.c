@@ -19,9 +19,10 @@
     "(docs/launch.md), and integrates each launch (the paper's section 3 model with\n"      \
     "viscous sliding friction) until its verdict is proved (an energy barrier and a\n"     \
     "contact bound, docs/dynamics.md), it leaves the table or it reaches t_end.\n"        \
-    "Prints how many launches end in no_tip, tip, hang, lost_contact and undecided, with\n" \
-    "95% Wilson confidence intervals, beside Theorem 5.1's prediction for each launch's\n"  \
-    "Jellett invariant and the fraction of launches that agree with it."
+    "Prints how many launches end in no_tip, tip, hang, lost_contact, undecided and\n"     \
+    "bounded (mu = 0 or eps = 0: confined, no end state), with 95% Wilson confidence\n"   \
+    "intervals, beside Theorem 5.1's prediction for each launch's Jellett invariant and\n" \
+    "the fraction of launches that agree with it."
 
 /* A finite number in format fmt, or nothing (an empty CSV field). */
 static void csv_number(FILE *f, const char *fmt, double v)
@@ -45,12 +46,15 @@ static int write_launch_csv(const char *path, const tippe_launch_record *r, long
                "t_flip_s\n");
     for (long i = 0; i < n; i++) {
         const tippe_launch_record *x = &r[i];
-        fprintf(f, "%ld,%ld,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%s,%.10g,%.10g,%.10g,%.10g,"
-                   "%.3g,%ld,%s,",
-                x->index, x->draw, x->ic.spin, x->ic.theta,
-                x->ic.theta_dot, x->ic.phi_dot, x->ic.U, x->ic.V, tippe_verdict_name(x->verdict),
-                x->t_s, x->theta_final_rad, x->spin_final_rad_s, x->J0, x->jellett_rel_drift,
-                x->rhs_evals, x->theory_ok ? tippe_launch_predicted_name(x->predicted) : "none");
+        fprintf(f, "%ld,%ld,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%s,%.10g,", x->index, x->draw,
+                x->ic.spin, x->ic.theta, x->ic.theta_dot, x->ic.phi_dot, x->ic.U, x->ic.V,
+                tippe_verdict_name(x->verdict), x->t_s);
+        /* empty for a bounded launch: a range, no end state */
+        csv_number(f, "%.10g", x->theta_final_rad);
+        fputc(',', f);
+        csv_number(f, "%.10g", x->spin_final_rad_s);
+        fprintf(f, ",%.10g,%.3g,%ld,%s,", x->J0, x->jellett_rel_drift, x->rhs_evals,
+                x->theory_ok ? tippe_launch_predicted_name(x->predicted) : "none");
         csv_number(f, "%.10g", x->hang_theta_rad);
         fprintf(f, ",%s,%s,", x->agrees > 0 ? "yes" : x->agrees == 0 ? "no" : "",
                 tippe_decision_name(x->how));
@@ -74,9 +78,11 @@ static void print_counts_table(const tippe_launch_tally *t)
         tippe_launch_wilson(t->counts[v], t->n, TIPPE_LAUNCH_Z95, &lo, &hi);
         printf("%-14s %6ld  %5.3f   [%5.3f, %5.3f]", hands_verdict_names[v], t->counts[v],
                t->n ? (double)t->counts[v] / (double)t->n : 0.0, lo, hi);
-        if (t->counts[v])
+        if (t->counts[v] && isfinite(t->median_theta_rad[v]))
             printf("    %7.4f rad %6.1f deg  %8.1f s\n", t->median_theta_rad[v],
                    t->median_theta_rad[v] * 180 / M_PI, t->median_t_s[v]);
+        else if (t->counts[v]) /* bounded: a range, no end angle */
+            printf("    %-19s  %8.1f s\n", "(a range)", t->median_t_s[v]);
         else
             printf("\n");
     }

@@ -140,6 +140,18 @@ static int bad_value(const tippe_cli_spec *spec, const tippe_cli_opt *o, const c
     return tippe_cli_usage_error(spec->verb, "%s '%s': expected %s", label, text, allowed);
 }
 
+/* A bound is printed with 10 significant digits (e.g. pi as 3.141592654, above
+ * pi): a value beyond a bound by no more than that rounding (or a unit
+ * conversion's last bit, as 180deg) is taken as the bound itself. */
+static double snap_to_bounds(const tippe_cli_opt *o, double x)
+{
+    if (x > o->max && x <= o->max + 5e-10 * fabs(o->max))
+        return o->max;
+    if (x < o->min && x >= o->min - 5e-10 * fabs(o->min))
+        return o->min;
+    return x;
+}
+
 static int in_range(const tippe_cli_opt *o, double x)
 {
     return x >= o->min && x <= o->max;
@@ -178,6 +190,8 @@ static int parse_range(const tippe_cli_spec *spec, const tippe_cli_opt *o, const
         return bad_value(spec, o, text, NULL);
     if (!c1)
         to = from;
+    from = snap_to_bounds(o, from);
+    to = snap_to_bounds(o, to);
     if (!in_range(o, from) || !in_range(o, to))
         return bad_value(spec, o, text, NULL);
     if (from > to || (steps > 1 && from == to) || (steps == 1 && c2 && from != to))
@@ -206,7 +220,7 @@ static int store(const tippe_cli_spec *spec, tippe_cli_opt *o, const char *text)
         *(const char **)o->value = text;
         return 0;
     case TIPPE_CLI_DOUBLE:
-        if (!tippe_cli_parse_unit(text, o->unit, &x) || !in_range(o, x))
+        if (!tippe_cli_parse_unit(text, o->unit, &x) || !in_range(o, x = snap_to_bounds(o, x)))
             return bad_value(spec, o, text, NULL);
         if (o->field) {
             snprintf(num, sizeof num, "%.17g", x);
@@ -347,6 +361,8 @@ int tippe_cli_parse(tippe_cli_spec *spec, int argc, char **argv, const char **ar
     for (int i = 0; i < *n_args; i++)
         args[i] = argv[optind + i];
     tippe_cli_note_inputs(args, *n_args);
+    const tippe_cli_opt *json = tippe_cli_find_opt(spec, "json");
+    tippe_cli_note_json(json && json->seen);
     return 0;
 }
 

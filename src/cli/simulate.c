@@ -58,7 +58,8 @@ static int write_csv(const char *path, const samples *b, tippe_error *err)
 }
 
 /* Theory's stable final states for the launch's J, and whether the simulated
- * outcome is one of them (-1: not comparable, i.e. lost contact or undecided). */
+ * outcome is one of them (-1: not comparable, i.e. lost contact, undecided or
+ * bounded). */
 typedef struct {
     int ok;
     char error[sizeof ((tippe_error *)0)->msg];
@@ -80,7 +81,8 @@ static void check_theory(const tippe_scenario *sc, const tippe_dynamics_result *
         return;
     }
     tc->ok = 1;
-    if (r->verdict == TIPPE_VERDICT_LOST_CONTACT || r->verdict == TIPPE_VERDICT_UNDECIDED) {
+    if (r->verdict == TIPPE_VERDICT_LOST_CONTACT || r->verdict == TIPPE_VERDICT_UNDECIDED ||
+        r->verdict == TIPPE_VERDICT_BOUNDED) {
         tc->agrees = -1;
         return;
     }

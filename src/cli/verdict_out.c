@@ -12,11 +12,10 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
 {
     const double th = r->theta_final_rad;
     if (r->verdict == TIPPE_VERDICT_BOUNDED) {
-        printf("%sbounded (mu = 0 or eps = 0: no rest state is forced): theta stays in "
-               "[%.6g, %.6g] rad "
-               "([%.2f, %.2f] deg) about the well's minimum %.6g rad\n",
+        printf("%sbounded (mu = 0 or eps = 0: no rest state is forced): theta stays for ever "
+               "in [%.6g, %.6g] rad ([%.2f, %.2f] deg)\n",
                prefix, r->theta_lo_rad, r->theta_hi_rad, r->theta_lo_rad * 180 / M_PI,
-               r->theta_hi_rad * 180 / M_PI, th);
+               r->theta_hi_rad * 180 / M_PI);
     } else if (r->how == TIPPE_DECIDED_FLAT_WELL) {
         printf("%sundecided (flat_well): confined to theta in [%.6g, %.6g] rad, a well whose "
                "steady states lie closer in energy than the margin; theory's minimum %.10f rad\n",
@@ -31,7 +30,9 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
                r->phi_dot_final_rad_s);
     }
     printf("%*sproved at t = %.6g s (trapped): ", (int)strlen(prefix), "", r->t_verdict);
-    if (isinf(r->barrier_gap_J))
+    if (r->verdict == TIPPE_VERDICT_BOUNDED)
+        printf("energy below the well's escape level"); /* E never rises */
+    else if (isinf(r->barrier_gap_J))
         printf("the well has no barrier (no interior maximum of V)");
     else
         printf("energy %.3g J below the well's barrier", r->barrier_gap_J);

@@ -40,6 +40,10 @@ void *tippe_module_function(tippe_module *m, const char *symbol, tippe_error *er
  * (for a stub that frees: what a module never made needs no freeing). */
 void *tippe_module_function_if_open(tippe_module *m, const char *symbol);
 
+/* TIPPE_OK if the plotting module loads, else TIPPE_ECOMPUTE with err set: the
+ * command checks it with a plot's output path, before any work. */
+int tippe_module_plot_ready(tippe_error *err);
+
 /* The module's function fn (a typed pointer), or NULL with err set. */
 #define TIPPE_MODULE_FIND(m, fn, err) ((__typeof__(&fn))tippe_module_function(m, #fn, err))
 

@@ -9,6 +9,11 @@
 static tippe_module plot =
     TIPPE_MODULE("plot", "PLplot: apt-get install libplplot-dev plplot-driver-cairo");
 
+int tippe_module_plot_ready(tippe_error *err)
+{
+    return tippe_module_function(&plot, "tippe_plot_sim", err) ? TIPPE_OK : TIPPE_ECOMPUTE;
+}
+
 int tippe_launch_plot_map(const char *file, const tippe_launch_map *map, const tippe_design *d,
                           double g, const char *title, tippe_error *err)
 {
