@@ -4,6 +4,7 @@
 #include "tippe/scene.h"
 
 #include <cairo.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -271,8 +272,16 @@ int tippe_film_make_still(const tippe_animate_launch *launch, const tippe_animat
         keep_ctx k = {f, 0};
         if (keep(&s, &k))
             return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
-        f->result.verdict = TIPPE_VERDICT_UNDECIDED;
-        f->result.J0 = s.J;
+        /* what is proved at the launch itself (often the verdict, docs/dynamics.md):
+         * a run whose t_end is the next double after 0 takes at most one tiny step */
+        tippe_dynamics_options o;
+        tippe_dynamics_options_default(&o);
+        o.t_end = DBL_MIN;
+        o.accuracy = launch->accuracy;
+        if ((rc = tippe_dynamics_run(&launch->model, &launch->initial, &o, &f->result, err)))
+            return rc;
+        if (f->result.t_verdict <= DBL_MIN) /* not proved at once: report t = 0, not 2e-308 */
+            f->result.t_verdict = f->result.last.t = f->result.final.t = 0.0;
         f->samples_per_frame = 1;
         return TIPPE_OK;
     }

@@ -37,9 +37,14 @@ static void range(const double *v, int n, double *lo, double *hi)
         *lo = 0;
         *hi = 1;
     }
-    double pad = 0.05 * (*hi - *lo);
+    /* at least 1% of the magnitude: a nearly constant series (a spin that changes in
+     * its 10th digit) reads as constant, with distinct tick labels */
+    const double mid = 0.5 * (*lo + *hi), half = fmax(0.5 * (*hi - *lo), 0.01 * fabs(mid));
+    *lo = mid - half;
+    *hi = mid + half;
+    double pad = 0.1 * half;
     if (pad == 0)
-        pad = fmax(1e-3, 0.05 * fabs(*hi));
+        pad = 1e-3;
     *lo -= pad;
     *hi += pad;
 }
@@ -134,15 +139,16 @@ static int series_fill(sim_series *s, const tippe_scenario *sc, const tippe_dyna
 }
 
 /* theta, spin and log10 |V_Q| against time, stacked on the left. */
-static void draw_series(const sim_series *s, const tippe_dynamics_result *res)
+static void draw_series(sim_series *s, const tippe_dynamics_result *res)
 {
     const int n = s->n;
     const double t_lo = s->t[0], t_hi = s->t[n - 1] > s->t[0] ? s->t[n - 1] : s->t[0] + 1;
     const double lx0 = 0.085, lx1 = 0.465;
     const tippe_theory_prediction *pred = &s->pred;
 
-    /* theta against time, on the full [0, pi] so that tip and no tip read at a glance */
-    tippe_plot_panel(lx0, lx1, 0.66, 0.90, t_lo, t_hi, 0.0, M_PI);
+    /* theta against time, on the full [0, pi] so that tip and no tip read at a glance,
+     * with a little room so that a top at 0 or pi is not hidden by the frame */
+    tippe_plot_panel(lx0, lx1, 0.66, 0.90, t_lo, t_hi, -0.06, M_PI + 0.06);
     series_axes(t_hi - t_lo, M_PI, 0, NULL, "nutation #gh (rad)");
     for (int i = 0; s->have_pred && i < pred->n; i++)
         hline(t_lo, t_hi, pred->state[i].theta_rad, COL_THEORY);
@@ -163,7 +169,11 @@ static void draw_series(const sim_series *s, const tippe_dynamics_result *res)
     tippe_plot_line(n, s->t, s->spin, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);
 
     range(s->lslip, n, &lo, &hi);
-    lo = fmax(lo, hi - 14.0); /* below 1e-14 of the largest speed is rounding */
+    if (lo < hi - 14.0) { /* below 1e-14 of the largest speed is rounding: drawn on the floor */
+        lo = hi - 14.0;
+        for (int i = 0; i < n; i++)
+            s->lslip[i] = fmax(s->lslip[i], lo);
+    }
     tippe_plot_panel(lx0, lx1, 0.12, 0.36, t_lo, t_hi, lo, hi);
     series_axes(t_hi - t_lo, hi - lo, 1, "time t (s)", "log#d10#u sliding speed |V#dQ#u| (m/s)");
     tippe_plot_line(n, s->t, s->lslip, COL_TRAJ, 1.5, TIPPE_PLOT_SOLID);

@@ -227,7 +227,11 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
         fprintf(out, "time      t = 0 .. %.6g s of the launch; 1 s of film = %.4g s\n",
                (f->n_frames - 1) * f->frame_dt, f->speed);
     }
-    if (r->verdict != TIPPE_VERDICT_UNDECIDED)
+    if (r->verdict == TIPPE_VERDICT_BOUNDED)
+        fprintf(out, "verdict   bounded, decided (%s) at t = %.6g s: theta stays in "
+                "[%.4g, %.4g] rad (no end state)\n",
+                tippe_decision_name(r->how), r->t_verdict, r->theta_lo_rad, r->theta_hi_rad);
+    else if (r->verdict != TIPPE_VERDICT_UNDECIDED)
         fprintf(out, "verdict   %s, decided (%s) at t = %.6g s; end state theta %.4g rad\n",
                 tippe_verdict_name(r->verdict), tippe_decision_name(r->how), r->t_verdict,
                 r->theta_final_rad);

@@ -142,6 +142,11 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                f->spin, f->phi_dot, f->slip_speed);
         break;
     }
+    if (r->last.t > r->t_verdict) /* --full, --csv or --plot: the run went on to t_end */
+        printf("          at the end of the run, t = %.6g s: theta %.6g rad (%.2f deg), spin %.6g "
+               "rad/s, contact speed %.3g m/s\n",
+               r->last.t, r->last.theta, r->last.theta * 180 / M_PI, r->last.spin,
+               r->last.slip_speed);
     if (!isnan(r->t_flip))
         printf("flip      theta passed 90 deg at t = %.6g s (model time)\n", r->t_flip);
     if (r->budget_exhausted)
@@ -226,6 +231,12 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
     cJSON_AddNumberToObject(o, "t_s", r->t_verdict);
     json_sample_fields(o, &r->final);
     tippe_cli_json_verdict_proof(o, r);
+    /* the state where the run stopped: past the decision with --full, --csv, --plot */
+    cJSON *end = cJSON_AddObjectToObject(o, "end_of_run");
+    if (end) {
+        cJSON_AddNumberToObject(end, "t_s", r->last.t);
+        json_sample_fields(end, &r->last);
+    }
     cJSON_AddNumberToObject(o, "J0_kg_m3_s", r->J0);
     cJSON_AddNumberToObject(o, "E0_J", r->E0);
     cJSON_AddNumberToObject(o, "t_end_s", sc->t_end);
