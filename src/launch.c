@@ -254,6 +254,40 @@ int tippe_launch_one(const tippe_top *top, const tippe_launch_options *o, uint64
     return tippe_launch_run_initial(top, o, &ic, rec, err);
 }
 
+/* Before any integration: a draw whose launch state already has no determined
+ * contact force (the denominator of eq 3.19 <= 0, strong friction times a fast
+ * slide) would fail its launch only after the others had run for minutes. Each
+ * check is one evaluation of the state. TIPPE_EINPUT naming the first such draw. */
+static int check_launch_states(const tippe_launch_plan *plan, const tippe_launch_options *o,
+                               uint64_t seed, long from, long to, tippe_error *err)
+{
+    long bad = -1;
+#pragma omp parallel for schedule(static)
+    for (long index = from; index < to; index++) {
+        const int group = (int)(index / plan->per_group);
+        const long draw = index % plan->per_group;
+        tippe_dynamics_initial ic;
+        tippe_dynamics_model m;
+        tippe_dynamics_sample s;
+        tippe_error e;
+        model_of(&plan->tops[group], o, &m);
+        if (tippe_launch_draw(&plan->tops[group], o, seed, (uint64_t)draw,
+                              plan->spin_rad_s ? plan->spin_rad_s[group] : NAN, &ic, &e) ||
+            tippe_dynamics_evaluate(&m, &ic, &s, &e) == TIPPE_OK)
+            continue;
+#pragma omp critical(tippe_launch_bad)
+        if (bad < 0 || index < bad)
+            bad = index;
+    }
+    if (bad < 0)
+        return TIPPE_OK;
+    return tippe_error_set(err, TIPPE_EINPUT,
+                           "launch %ld (draw %ld): the contact force is undetermined at launch "
+                           "(denominator of eq 3.19 <= 0: mu = %g s/m is too strong for its "
+                           "sliding speed); lower mu or the sliding (--slide)",
+                           bad, bad % plan->per_group, o->mu);
+}
+
 long tippe_launch_plan_total(const tippe_launch_plan *plan)
 {
     return (long)plan->n_groups * plan->per_group;
@@ -270,7 +304,7 @@ int tippe_launch_run(const tippe_launch_plan *plan, const tippe_launch_options *
         return tippe_error_set(err, TIPPE_EINPUT, "launches %ld .. %ld outside the plan (0 .. %ld)",
                                from, to, tippe_launch_plan_total(plan));
     int rc = tippe_launch_options_check(o, err);
-    if (rc)
+    if (rc || (rc = check_launch_states(plan, o, seed, from, to, err)))
         return rc;
 
     const long n = to - from;

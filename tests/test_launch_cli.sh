@@ -129,6 +129,9 @@ refused() { # refused DESCRIPTION PATTERN ARGS...: exit 2, stderr matches PATTER
 refused "Z2 outside the travel" "outside the design's travel" \
     launch "$m12" --z2 30 -n 2 --csv "$tmp/out.csv"
 refused "no --z2" "--z2 MM is required" launch "$m12" -n 2 --csv "$tmp/out.csv"
+# before any integration (the other launches would take minutes at this mu)
+refused "a draw whose contact force is undetermined" "contact force is undetermined at launch" \
+    launch "$m12" --z2 15 -n 10 --mu 1e3 --csv "$tmp/out.csv"
 refused "CSV and JSON both on stdout" "standard output already carries --json" \
     launch "$m12" --z2 10 -n 2 --csv - --json
 refused "two outputs on stdout" "standard output already carries --csv" \
