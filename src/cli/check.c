@@ -65,31 +65,15 @@ static cJSON *theory_json(const hands_args *a, const check_result *r)
 }
 
 /* How the verdict was reached (docs/dynamics.md, "Proved verdicts"). */
-static void add_number_or_null(cJSON *o, const char *key, double v)
-{
-    if (isfinite(v))
-        cJSON_AddNumberToObject(o, key, v);
-    else
-        cJSON_AddNullToObject(o, key);
-}
-
 /* How the verdict was reached, with null where a field does not apply. */
 static void add_decision_json(cJSON *o, const tippe_launch_record *rec)
 {
     cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(rec->how));
-    add_number_or_null(o, "margin_J", rec->margin_J);
-    add_number_or_null(o, "barrier_gap_J", rec->barrier_gap_J);
-    if (isfinite(rec->theta_lo_rad)) {
-        cJSON *range = cJSON_AddArrayToObject(o, "theta_range_rad");
-        if (range) {
-            cJSON_AddItemToArray(range, cJSON_CreateNumber(rec->theta_lo_rad));
-            cJSON_AddItemToArray(range, cJSON_CreateNumber(rec->theta_hi_rad));
-        }
-    } else {
-        cJSON_AddNullToObject(o, "theta_range_rad");
-    }
-    add_number_or_null(o, "Rn_bound_N", rec->Rn_bound_N);
-    add_number_or_null(o, "t_flip_s", rec->t_flip_s);
+    tippe_cli_json_number_or_null(o, "margin_J", rec->margin_J);
+    tippe_cli_json_number_or_null(o, "barrier_gap_J", rec->barrier_gap_J);
+    tippe_cli_json_range(o, "theta_range_rad", rec->theta_lo_rad, rec->theta_hi_rad);
+    tippe_cli_json_number_or_null(o, "Rn_bound_N", rec->Rn_bound_N);
+    tippe_cli_json_number_or_null(o, "t_flip_s", rec->t_flip_s);
 }
 
 static int check_json(const hands_args *a, const check_result *r)
@@ -114,8 +98,8 @@ static int check_json(const hands_args *a, const check_result *r)
         cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(rec->verdict));
         cJSON_AddNumberToObject(o, "t_s", rec->t_s);
         add_decision_json(o, rec);
-        add_number_or_null(o, "theta_final_rad", rec->theta_final_rad);
-        add_number_or_null(o, "spin_final_rad_s", rec->spin_final_rad_s);
+        tippe_cli_json_number_or_null(o, "theta_final_rad", rec->theta_final_rad);
+        tippe_cli_json_number_or_null(o, "spin_final_rad_s", rec->spin_final_rad_s);
         cJSON_AddNumberToObject(o, "J0_kg_m3_s", rec->J0);
         cJSON_AddNumberToObject(o, "jellett_rel_drift", rec->jellett_rel_drift);
         cJSON_AddItemToObject(o, "options", hands_json_options(&a->o, 1));

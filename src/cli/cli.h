@@ -246,6 +246,10 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
  * spin_final_rad_s, phi_dot_final_rad_s, theta_range_rad, barrier_gap_J,
  * margin_J, Rn_bound_N, t_flip_s (null where not applicable). */
 void tippe_cli_json_verdict_proof(struct cJSON *o, const tippe_dynamics_result *r);
+/* v, or null where it is not finite (not applicable). */
+void tippe_cli_json_number_or_null(struct cJSON *o, const char *key, double v);
+/* [lo, hi], or null where either is not finite. */
+void tippe_cli_json_range(struct cJSON *o, const char *key, double lo, double hi);
 
 /* ---- one launch, from a scenario file or a design (tippe simulate, animate) ---- */
 

@@ -40,7 +40,7 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
            r->Rn_bound_N, r->theta_lo_rad, r->theta_hi_rad);
 }
 
-static void add_number_or_null(cJSON *o, const char *key, double v)
+void tippe_cli_json_number_or_null(cJSON *o, const char *key, double v)
 {
     if (isfinite(v))
         cJSON_AddNumberToObject(o, key, v);
@@ -48,25 +48,33 @@ static void add_number_or_null(cJSON *o, const char *key, double v)
         cJSON_AddNullToObject(o, key);
 }
 
+void tippe_cli_json_range(cJSON *o, const char *key, double lo, double hi)
+{
+    if (!isfinite(lo) || !isfinite(hi)) {
+        cJSON_AddNullToObject(o, key);
+        return;
+    }
+    cJSON *range = cJSON_AddArrayToObject(o, key);
+    if (range) {
+        cJSON_AddItemToArray(range, cJSON_CreateNumber(lo));
+        cJSON_AddItemToArray(range, cJSON_CreateNumber(hi));
+    }
+}
+
 void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
 {
     cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(r->how));
-    add_number_or_null(o, "decision_t_s", r->t_verdict);
-    add_number_or_null(o, "theta_final_rad", r->theta_final_rad);
-    add_number_or_null(o, "spin_final_rad_s", r->spin_final_rad_s);
-    add_number_or_null(o, "phi_dot_final_rad_s", r->phi_dot_final_rad_s);
-    if (r->how == TIPPE_DECIDED_TRAPPED) {
-        cJSON *range = cJSON_AddArrayToObject(o, "theta_range_rad");
-        if (range) {
-            cJSON_AddItemToArray(range, cJSON_CreateNumber(r->theta_lo_rad));
-            cJSON_AddItemToArray(range, cJSON_CreateNumber(r->theta_hi_rad));
-        }
-    } else {
+    tippe_cli_json_number_or_null(o, "decision_t_s", r->t_verdict);
+    tippe_cli_json_number_or_null(o, "theta_final_rad", r->theta_final_rad);
+    tippe_cli_json_number_or_null(o, "spin_final_rad_s", r->spin_final_rad_s);
+    tippe_cli_json_number_or_null(o, "phi_dot_final_rad_s", r->phi_dot_final_rad_s);
+    if (r->how == TIPPE_DECIDED_TRAPPED)
+        tippe_cli_json_range(o, "theta_range_rad", r->theta_lo_rad, r->theta_hi_rad);
+    else
         cJSON_AddNullToObject(o, "theta_range_rad");
-    }
     /* an infinite gap (a single well) is null, with barrier false */
-    add_number_or_null(o, "barrier_gap_J", r->barrier_gap_J);
-    add_number_or_null(o, "margin_J", r->margin_J);
-    add_number_or_null(o, "Rn_bound_N", r->Rn_bound_N);
-    add_number_or_null(o, "t_flip_s", r->t_flip);
+    tippe_cli_json_number_or_null(o, "barrier_gap_J", r->barrier_gap_J);
+    tippe_cli_json_number_or_null(o, "margin_J", r->margin_J);
+    tippe_cli_json_number_or_null(o, "Rn_bound_N", r->Rn_bound_N);
+    tippe_cli_json_number_or_null(o, "t_flip_s", r->t_flip);
 }
