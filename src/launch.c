@@ -254,26 +254,35 @@ int tippe_launch_one(const tippe_top *top, const tippe_launch_options *o, uint64
     return tippe_launch_run_initial(top, o, &ic, rec, err);
 }
 
-/* Before any integration: a draw whose launch state already has no determined
- * contact force (the denominator of eq 3.19 <= 0, strong friction times a fast
- * slide) would fail its launch only after the others had run for minutes. Each
- * check is one evaluation of the state. TIPPE_EINPUT naming the first such draw. */
-static int check_launch_states(const tippe_launch_plan *plan, const tippe_launch_options *o,
-                               uint64_t seed, long from, long to, tippe_error *err)
+/* Draws every launch of [from, to) into its record (index, draw, initial state)
+ * before any integration, and checks its contact: a draw whose launch state has no
+ * determined contact force (the denominator of eq 3.19 <= 0, strong friction times
+ * a fast slide) would fail only after the other launches had run for minutes.
+ * TIPPE_EINPUT naming the first such draw; a failed draw is left in its record's
+ * status. */
+static int draw_launches(const tippe_launch_plan *plan, const tippe_launch_options *o,
+                         uint64_t seed, long from, long to, tippe_launch_record *out,
+                         tippe_error *err)
 {
     long bad = -1;
 #pragma omp parallel for schedule(static)
-    for (long index = from; index < to; index++) {
+    for (long i = 0; i < to - from; i++) {
+        const long index = from + i;
         const int group = (int)(index / plan->per_group);
-        const long draw = index % plan->per_group;
-        tippe_dynamics_initial ic;
+        tippe_launch_record *rec = &out[i];
+        memset(rec, 0, sizeof *rec);
+        rec->index = index;
+        rec->draw = index % plan->per_group;
+        rec->verdict = TIPPE_VERDICT_UNDECIDED;
+        rec->agrees = -1;
         tippe_dynamics_model m;
         tippe_dynamics_sample s;
         tippe_error e;
         model_of(&plan->tops[group], o, &m);
-        if (tippe_launch_draw(&plan->tops[group], o, seed, (uint64_t)draw,
-                              plan->spin_rad_s ? plan->spin_rad_s[group] : NAN, &ic, &e) ||
-            tippe_dynamics_evaluate(&m, &ic, &s, &e) == TIPPE_OK)
+        rec->status = tippe_launch_draw(&plan->tops[group], o, seed, (uint64_t)rec->draw,
+                                        plan->spin_rad_s ? plan->spin_rad_s[group] : NAN,
+                                        &rec->ic, &e);
+        if (rec->status || tippe_dynamics_evaluate(&m, &rec->ic, &s, &e) == TIPPE_OK)
             continue;
 #pragma omp critical(tippe_launch_bad)
         if (bad < 0 || index < bad)
@@ -304,7 +313,7 @@ int tippe_launch_run(const tippe_launch_plan *plan, const tippe_launch_options *
         return tippe_error_set(err, TIPPE_EINPUT, "launches %ld .. %ld outside the plan (0 .. %ld)",
                                from, to, tippe_launch_plan_total(plan));
     int rc = tippe_launch_options_check(o, err);
-    if (rc || (rc = check_launch_states(plan, o, seed, from, to, err)))
+    if (rc || (rc = draw_launches(plan, o, seed, from, to, out, err)))
         return rc;
 
     const long n = to - from;
@@ -312,13 +321,11 @@ int tippe_launch_run(const tippe_launch_plan *plan, const tippe_launch_options *
      * the progress counter (its own critical section). */
 #pragma omp parallel for schedule(dynamic, 1)
     for (long i = 0; i < n; i++) {
-        const long index = from + i;
-        const int group = (int)(index / plan->per_group);
-        const long draw = index % plan->per_group;
-        const double spin = plan->spin_rad_s ? plan->spin_rad_s[group] : NAN;
+        const tippe_dynamics_initial ic = out[i].ic;
         tippe_error e;
-        tippe_launch_one(&plan->tops[group], o, seed, (uint64_t)draw, spin, &out[i], &e);
-        out[i].index = index;
+        if (out[i].status == TIPPE_OK)
+            tippe_launch_run_initial(&plan->tops[out[i].index / plan->per_group], o, &ic,
+                                     &out[i], &e);
         tippe_progress_add(prog, 1);
     }
 
