@@ -25,10 +25,22 @@ tippe_json_reader *tippe_json_reader_new(const char *file, tippe_error *err,
     return r;
 }
 
+static tippe_json_read_check read_check;
+
+void tippe_json_set_read_check(tippe_json_read_check check)
+{
+    read_check = check;
+}
+
 static int read_text(const char *path, int max_mib, const char *what, char **out,
                      tippe_error *err)
 {
     size_t max_bytes = (size_t)max_mib << 20;
+    if (read_check) {
+        int rc = read_check(path, what, err);
+        if (rc)
+            return rc;
+    }
     FILE *f = fopen(path, "rb");
     if (!f)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot open: %s", path, strerror(errno));

@@ -12,6 +12,7 @@
 #include <cjson/cJSON.h>
 
 #include <errno.h>
+#include <pthread.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -197,6 +198,77 @@ static const char *input_named_by(const char *path)
     return NULL;
 }
 
+/* Every file the run has read or is about to read through tippe/json.h (a
+ * design's materials table, a spec's catalogue and base design, a scenario's
+ * design), and the existing files the outputs name: an output is refused when
+ * it is one of them, whichever the run meets first. Reads may come from
+ * several threads (an optimiser's candidates), hence the lock. */
+enum { MAX_READ = 64 };
+static struct {
+    char path[512];
+    char what[64];
+    dev_t dev;
+    ino_t ino;
+} read_files[MAX_READ];
+static int n_read;
+static struct {
+    const char *option, *path;
+    dev_t dev;
+    ino_t ino;
+} out_ids[MAX_OUTPUTS];
+static int n_out_ids;
+static pthread_mutex_t read_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static int refuse_read_output(const char *path, const char *what, tippe_error *err)
+{
+    struct stat st;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode))
+        return TIPPE_OK; /* reading it fails with its own message */
+    int rc = TIPPE_OK;
+    pthread_mutex_lock(&read_lock);
+    for (int i = 0; i < n_out_ids; i++)
+        if (out_ids[i].dev == st.st_dev && out_ids[i].ino == st.st_ino) {
+            rc = tippe_error_set(err, TIPPE_EINPUT,
+                                 "%s %s is the %s file '%s' that this run reads: it would be "
+                                 "replaced; choose another output name",
+                                 out_ids[i].option, out_ids[i].path, what, path);
+            break;
+        }
+    int known = 0;
+    for (int i = 0; i < n_read && !known; i++)
+        known = read_files[i].dev == st.st_dev && read_files[i].ino == st.st_ino;
+    if (!rc && !known && n_read < MAX_READ) {
+        snprintf(read_files[n_read].path, sizeof read_files[n_read].path, "%s", path);
+        snprintf(read_files[n_read].what, sizeof read_files[n_read].what, "%s", what);
+        read_files[n_read].dev = st.st_dev;
+        read_files[n_read++].ino = st.st_ino;
+    }
+    pthread_mutex_unlock(&read_lock);
+    return rc;
+}
+
+/* Notes that option writes path, and returns the read file path already is
+ * (an index of read_files), or -1. */
+static int note_output_id(const char *option, const char *path)
+{
+    struct stat st;
+    if (!strcmp(path, "-") || stat(path, &st) != 0 || !S_ISREG(st.st_mode))
+        return -1;
+    pthread_mutex_lock(&read_lock);
+    int found = -1;
+    for (int i = 0; i < n_read && found < 0; i++)
+        if (read_files[i].dev == st.st_dev && read_files[i].ino == st.st_ino)
+            found = i;
+    if (n_out_ids < MAX_OUTPUTS) {
+        out_ids[n_out_ids].option = option;
+        out_ids[n_out_ids].path = path;
+        out_ids[n_out_ids].dev = st.st_dev;
+        out_ids[n_out_ids++].ino = st.st_ino;
+    }
+    pthread_mutex_unlock(&read_lock);
+    return found;
+}
+
 /* Who writes to standard output besides the text: --json, or an output named "-". */
 static const char *stdout_owner;
 
@@ -218,6 +290,11 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
         return tippe_cli_usage_error(verb, "%s %s is the input file '%s': it would be "
                                      "replaced; choose another output name",
                                      option, path, input);
+    const int read = note_output_id(option, path);
+    if (read >= 0)
+        return tippe_cli_usage_error(verb, "%s %s is the %s file '%s' that this run reads: it "
+                                     "would be replaced; choose another output name", option,
+                                     path, read_files[read].what, read_files[read].path);
     if (plot && !tippe_plot_device(path))
         return tippe_cli_usage_error(
             verb, "%s %s: unsupported plot format (use a .png, .svg or .pdf file name)", option,
@@ -249,6 +326,7 @@ int tippe_cli_run(const tippe_cli_verb *v, int argc, char **argv)
 {
     tippe_cli_signals_install(v->name);
     tippe_report_set_begin();
+    tippe_json_set_read_check(refuse_read_output);
     int status = v->run(argc, argv);
     /* Stdout is an output like the others: a full disk or a closed pipe there
      * is a failure, and the files of a failed run are not committed. */
