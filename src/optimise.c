@@ -23,6 +23,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #define MAX_CHOOSE 4
 #define MAX_TIE 8
@@ -58,6 +59,7 @@ typedef struct {
     char path[TIPPE_OPT_PATH_LEN], follows[TIPPE_OPT_PATH_LEN];
     double plus_mm, times;
     int vary_index;   /* follows a vary parameter, or -1 */
+    int tie_index;    /* follows another tie's field (a chain), or -1 */
     double base_value; /* the followed field in the base design (NAN if absent) */
 } tie_t;
 
@@ -394,9 +396,42 @@ static int parse_tie(tippe_json_reader *c, const cJSON *tie, const cJSON *design
             set_by_choice |= !strcmp(s->choose[k].path, follows) ||
                              (!strncmp(s->choose[k].path, follows, n) && follows[n] == '.');
         }
-        if (t->vary_index < 0 && !set_by_choice && isnan(t->base_value))
+        for (int k = 0; k < s->n_choose; k++)
+            for (int o = 0; o < s->choose[k].n; o++)
+                for (int j = 0; j < s->choose[k].opt[o].n_set; j++) {
+                    const char *set = s->choose[k].opt[o].set[j];
+                    size_t n = strlen(t->path);
+                    if (!strncmp(set, t->path, n) && set[n] == '=')
+                        return tippe_json_fail(c, p, "is also set by the choice '%s': a field "
+                                                     "either is chosen or follows", set);
+                }
+        int follows_tie = 0;
+        for (const cJSON *w = tie->child; w; w = w->next)
+            follows_tie |= w != v && !strcmp(w->string, follows);
+        if (t->vary_index < 0 && !set_by_choice && !follows_tie && isnan(t->base_value))
             return tippe_json_fail(c, p, "follows '%s', which is neither varied, nor chosen, "
-                                         "nor a number in the base design", follows);
+                                         "nor tied, nor a number in the base design", follows);
+    }
+    /* A tie may follow another tie's field (a chain): its value is computed
+     * from the other's, whatever their order in the file. A cycle has no
+     * value and is refused. */
+    for (int k = 0; k < s->n_tie; k++) {
+        s->tie[k].tie_index = -1;
+        for (int j = 0; j < s->n_tie; j++)
+            if (j != k && !strcmp(s->tie[j].path, s->tie[k].follows))
+                s->tie[k].tie_index = j;
+        if (!strcmp(s->tie[k].path, s->tie[k].follows))
+            return tippe_json_fail(c, "tie", "'%s' follows itself", s->tie[k].path);
+    }
+    for (int k = 0; k < s->n_tie; k++) {
+        int j = k;
+        for (int steps = 0; steps <= s->n_tie && j >= 0; steps++) {
+            j = s->tie[j].tie_index;
+            if (j == k)
+                return tippe_json_fail(c, "tie", "'%s' is in a cycle of ties (each follows "
+                                                 "the next, back to itself): no value "
+                                                 "satisfies it", s->tie[k].path);
+        }
     }
     return TIPPE_OK;
 }
@@ -428,14 +463,14 @@ static int parse_constraints(tippe_json_reader *c, const cJSON *con, tippe_opt_s
     if (!(s->eps_max_min_mm >= 0 && s->eps_max_min_mm < 1e3))
         return tippe_json_fail(c, "constraints.eps_max_min_mm", "must be in [0, 1000) mm, got %g",
                                s->eps_max_min_mm);
-    if (!(s->spin_max_rev_s > 0 && s->spin_max_rev_s <= 1e4))
+    if (!(s->spin_max_rev_s > 0 && s->spin_max_rev_s <= 1e4) && !isinf(s->spin_max_rev_s))
         return tippe_json_fail(c, "constraints.spin_max_rev_s",
                                "must be in (0, 10000] rev/s, got %g", s->spin_max_rev_s);
     if (s->min_wall_mm != -1.0 && !(s->min_wall_mm >= 0 && s->min_wall_mm <= 100))
         return tippe_json_fail(c, "constraints.min_wall_mm", "must be in [0, 100] mm, got %g",
                                s->min_wall_mm);
-    if (!(s->max_weight_g > 0))
-        return tippe_json_fail(c, "constraints.max_weight_g", "must be positive, got %g g",
+    if (!(s->max_weight_g > 0 && s->max_weight_g <= 1e6) && !isinf(s->max_weight_g))
+        return tippe_json_fail(c, "constraints.max_weight_g", "must be in (0, 1e6] g, got %g",
                                s->max_weight_g);
     return TIPPE_OK;
 }
@@ -494,8 +529,60 @@ static int parse_search(tippe_json_reader *c, const cJSON *root, tippe_opt_spec 
 }
 
 /* Every override path must exist in the design: applied once at the middle. */
+/* A choice of materials names only materials of the base design's table
+ * (exactly: names are case-sensitive), so that a misspelt option is refused
+ * here rather than reported as a candidate that "does not fit". */
+static int check_materials(tippe_json_reader *c, const tippe_opt_spec *s)
+{
+    tippe_materials *tab = NULL;
+    for (int k = 0; k < s->n_choose; k++) {
+        const choose_t *ch = &s->choose[k];
+        size_t n = strlen(ch->path);
+        if (n < 8 || strcmp(ch->path + n - 8, "material") ||
+            (n > 8 && ch->path[n - 9] != '.'))
+            continue;
+        if (!tab) {
+            char file[1024];
+            tippe_error e = {0};
+            if (tippe_design_materials_file(s->design_path, file, sizeof file, &e) ||
+                tippe_materials_load(file, &tab, &e)) {
+                tippe_materials_free(tab);
+                return tippe_json_fail(c, "choose", "%s", e.msg);
+            }
+        }
+        for (int o = 0; o < ch->n; o++) {
+            const char *want = ch->opt[o].label, *near = NULL;
+            int found = 0;
+            for (int i = 0; i < tippe_materials_count(tab) && !found; i++) {
+                tippe_material m;
+                tippe_materials_get(tab, i, &m);
+                found = !strcmp(m.name, want);
+                if (!strcasecmp(m.name, want))
+                    near = m.name;
+            }
+            if (!found) {
+                char p[300];
+                snprintf(p, sizeof p, "choose.%s[%d]", ch->path, o);
+                int rc = near ? tippe_json_fail(c, p, "unknown material '%s' (did you mean "
+                                                      "'%s'? names are case-sensitive)",
+                                                want, near)
+                              : tippe_json_fail(c, p, "unknown material '%s': not in the "
+                                                      "materials table ('tippe materials %s' "
+                                                      "lists its names)", want, s->design_path);
+                tippe_materials_free(tab);
+                return rc;
+            }
+        }
+    }
+    tippe_materials_free(tab);
+    return TIPPE_OK;
+}
+
 static int check_paths(tippe_json_reader *c, tippe_opt_spec *s)
 {
+    int rc = check_materials(c, s);
+    if (rc)
+        return rc;
     double x[TIPPE_OPT_MAX_VARY];
     for (int k = 0; k < s->n_vary; k++)
         x[k] = 0.5 * (s->vary[k].lo + s->vary[k].hi);
@@ -507,7 +594,7 @@ static int check_paths(tippe_json_reader *c, tippe_opt_spec *s)
             ov[i] = buf[i];
         cJSON *root = NULL;
         tippe_error e = {0};
-        int rc = tippe_design_source_apply(s->src, ov, n, &root, &e);
+        rc = tippe_design_source_apply(s->src, ov, n, &root, &e);
         cJSON_Delete(root);
         if (rc)
             return tippe_json_fail(c, NULL, "%s", e.msg);
@@ -668,6 +755,16 @@ static double tie_source(const tippe_opt_spec *s, const tie_t *t, const int *idx
     return t->base_value;
 }
 
+/* Tie k's value: along a chain, each link's value from the one it follows
+ * (the spec load refused cycles, so the chain ends within n_tie links). */
+static double tie_value(const tippe_opt_spec *s, int k, const int *idx, const double *x)
+{
+    const tie_t *t = &s->tie[k];
+    double from = t->tie_index >= 0 ? tie_value(s, t->tie_index, idx, x)
+                                    : tie_source(s, t, idx, x);
+    return t->times * from + t->plus_mm;
+}
+
 int tippe_opt_overrides(const tippe_opt_spec *s, int choice, const double *x, char (*buf)[256],
                         int cap)
 {
@@ -690,9 +787,7 @@ int tippe_opt_overrides(const tippe_opt_spec *s, int choice, const double *x, ch
     for (int k = 0; k < s->n_tie; k++) {
         if (n == cap)
             return -1;
-        const tie_t *t = &s->tie[k];
-        snprintf(buf[n++], 256, "%s=%.17g", t->path,
-                 t->times * tie_source(s, t, idx, x) + t->plus_mm);
+        snprintf(buf[n++], 256, "%s=%.17g", s->tie[k].path, tie_value(s, k, idx, x));
     }
     return n;
 }

@@ -137,4 +137,57 @@ expect_fail "an output in a missing directory" 2 "-o" "$tmp/no/dir/best.json" \
     -- optimise "$spec" -o "$tmp/no/dir/best.json"
 expect_fail "a plot with an unknown extension" 2 "--plot" -- optimise "$spec" --plot "$tmp/x.gif"
 expect_fail "no spec" 2 "no spec" -- optimise
+# --- issue 19.2: unknown options refused; no feasible design exits 1 writing nothing;
+# tie chains resolved, cycles refused
+base="$PWD/designs/drilled-ball-blind.json"
+cat >"$tmp/brass.json" <<EOF
+{"design": "$base", "vary": {"parts.hole.z_mm": [0, 25]},
+ "choose": {"parts.screw.material": ["iron", "Brass"]}}
+EOF
+expect_fail "a material in the wrong case" 2 "brass.json" "choose.parts.screw.material[1]" \
+    "unknown material 'Brass'" "did you mean 'brass'" -- optimise "$tmp/brass.json" -o "$tmp/never.json"
+sed 's/"iron", "Brass"/"unobtainium"/' "$tmp/brass.json" >"$tmp/unob.json"
+expect_fail "a material that is not in the table" 2 "unob.json" "unknown material 'unobtainium'" \
+    -- optimise "$tmp/unob.json" -o "$tmp/never.json"
+cat >"$tmp/heavy.json" <<EOF
+{"design": "$base", "vary": {"parts.hole.z_mm": [0, 25]}, "constraints": {"max_weight_g": 0.001},
+ "search": {"evaluations": 30, "polish_evaluations": 5}}
+EOF
+"$tippe" optimise "$tmp/heavy.json" -o "$tmp/never.json" --csv "$tmp/never.csv" \
+    --plot "$tmp/never.png" >"$tmp/out" 2>"$tmp/err"
+check "no feasible design: exit 1" test $? -eq 1
+check "no feasible design: said, and the table shows why" \
+    bash -c "grep -q 'no feasible design' '$tmp/err' && grep -q 'too heavy' '$tmp/out'"
+check "no feasible design: nothing written" \
+    bash -c "! ls '$tmp'/never.* 2>/dev/null | grep -q ."
+# A chain: the screw's radius follows its height, the hole's radius the screw's
+# (declared first, so the chain must be resolved, not read in file order).
+cat >"$tmp/chain.json" <<EOF
+{"design": "$base", "vary": {"parts.hole.z_mm": [0, 25], "parts.screw.height_mm": [8, 14]},
+ "tie": {"parts.hole.radius_mm": {"follows": "parts.screw.radius_mm", "plus_mm": 0.2},
+         "parts.screw.radius_mm": {"follows": "parts.screw.height_mm", "times": 0.35}},
+ "search": {"evaluations": 40, "polish_evaluations": 10}}
+EOF
+"$tippe" optimise "$tmp/chain.json" -o "$tmp/chain-best.json" >/dev/null 2>"$tmp/err"
+check "a tie chain optimises" test $? -eq 0
+check "the written best keeps both ties (hole = screw + 0.2 = 0.35 height + 0.2, 1e-9 mm)" \
+    python3 - "$tmp/chain-best.json" <<'EOF'
+import json, sys
+p = {x["name"]: x for x in json.load(open(sys.argv[1]))["parts"]}
+h, s = p["hole"]["radius_mm"], p["screw"]
+assert abs(s["radius_mm"] - 0.35 * s["height_mm"]) < 1e-9, (s,)
+assert abs(h - (s["radius_mm"] + 0.2)) < 1e-9, (h, s)
+EOF
+cat >"$tmp/cycle.json" <<EOF
+{"design": "$base", "vary": {"parts.hole.z_mm": [0, 25]},
+ "tie": {"parts.hole.radius_mm": "parts.screw.radius_mm",
+         "parts.screw.radius_mm": "parts.hole.radius_mm"}}
+EOF
+expect_fail "a cycle of ties" 2 "cycle.json" "cycle of ties" -- optimise "$tmp/cycle.json"
+cat >"$tmp/tie-chosen.json" <<EOF
+{"design": "$base", "vary": {"parts.hole.z_mm": [0, 25]},
+ "choose": {"parts.hole.radius_mm": [5, 6]}, "tie": {"parts.hole.radius_mm": "parts.screw.radius_mm"}}
+EOF
+expect_fail "a tied field that is also chosen" 2 "tie.parts.hole.radius_mm" "also set by the choice" \
+    -- optimise "$tmp/tie-chosen.json"
 finish

@@ -63,7 +63,8 @@ static int parse_args(int argc, char **argv, optimise_args *a)
                  "tolerance bands of the zone ends.",
         .after = "A progress bar is shown on stderr when it is a terminal. The spec format and\n"
                  "the shipped specs: docs/optimise.md. Exit status: 0 ok, 2 bad usage or spec\n"
-                 "(nothing written), 1 search failed.",
+                 "(nothing written), 1 search failed or no candidate met the constraints\n"
+                 "(the table shows each choice's status; nothing written).",
         .opts = opts,
         .min_args = 1,
         .max_args = 1,
@@ -288,6 +289,21 @@ int tippe_cli_optimise(int argc, char **argv)
     rc = tippe_opt_run(s, &o, &r, &err);
     double seconds = tippe_cli_now_s() - t0;
     tippe_progress_finish(&bar);
+    /* No candidate met the constraints: the table says why (each choice's
+     * status), but no file is written, since none would be a design to make. */
+    const int feasible = rc || r.choices[r.best_choice].best.status == TIPPE_OPT_OK;
+    if (!feasible) {
+        if (a.json)
+            rc = tippe_cli_print_json(VERB, result_json(s, &r, seconds, NULL));
+        else
+            print_table(s, &r, seconds);
+        fprintf(stderr, "tippe %s: no feasible design: every candidate of the %ld evaluated "
+                        "breaks a constraint or does not fit (status column); nothing written\n",
+                VERB, r.total_evals);
+        tippe_opt_result_free(&r);
+        tippe_opt_spec_free(s);
+        return 1;
+    }
     if (!rc && a.csv)
         rc = write_csv(a.csv, s, &r, &err);
     if (!rc && a.plot)
