@@ -45,6 +45,18 @@
 #define TRAVEL_SLACK_MM 1e-9
 /* Beyond any coordinate in a design, mm: stands for an unbounded interval. */
 #define BIG_MM 1e12
+/* The densest solid: osmium, 22.587 g/cm^3 at 20 C (J. W. Arblaster, "Densities
+ * of osmium and iridium", Platinum Metals Review 33 (1989) 14-16; the CRC
+ * Handbook of Chemistry and Physics gives 22.59). Anything denser was typed in
+ * another unit (kg/m^3 for g/cm^3: 7850 for steel). */
+#define DENSITY_MAX_G_CM3 22.6
+/* Sphere radii of a tippe top: a 2 mm bead to a 2 m ball. Outside, the number
+ * was typed in another unit (metres: 0.025; um: 25000). */
+#define RADIUS_MIN_MM 1.0
+#define RADIUS_MAX_MM 1000.0
+/* A part length below 10 um is finer than anything printed or machined: a
+ * warning (probably metres); smaller lengths still load, for limit studies. */
+#define LENGTH_HINT_MM 0.01
 /* Intervals per r: a part gives at most 2, each void removes at most 2 more. */
 #define MAX_IV (4 + 4 * MAX_PARTS)
 
@@ -86,6 +98,11 @@ struct tippe_design {
     double radius_mm;
     double travel_mm[2], contact_mm[2];
     char contact_limit[2][256];
+    /* Z2 where every part stays within the sphere (from > to: nowhere); the
+     * sampled radii it and tippe_design_protrusion_at use (NULL: no layout) */
+    double sphere_only_mm[2];
+    double *rs;
+    int nr;
     int n_parts;
     part *parts;
     tippe_moments fixed, moving; /* SI; moving at Z2 = 0 */
@@ -118,6 +135,51 @@ static int field_length(const tippe_json_reader *c, const cJSON *obj, const char
         return tippe_json_fail(c, p, "must be %s (a length in mm), got %g",
                                allow_zero ? ">= 0" : "positive", *out);
     return TIPPE_OK;
+}
+
+/* A density above the densest solid's: refused, with the number it would be
+ * if it was typed in kg/m^3. */
+static int check_density(const tippe_json_reader *c, const char *path, double v)
+{
+    if (v <= DENSITY_MAX_G_CM3)
+        return TIPPE_OK;
+    char hint[160] = "";
+    if (v * 1e-3 <= DENSITY_MAX_G_CM3)
+        snprintf(hint, sizeof hint, "; did you mean kg/m^3? %g kg/m^3 is %g g/cm^3", v,
+                 v * 1e-3);
+    return tippe_json_fail(c, path,
+                           "%g g/cm^3 is denser than any solid (osmium, the densest, is "
+                           "22.59 g/cm^3)%s",
+                           v, hint);
+}
+
+/* "0.025 m is 25 mm" / "25000 um is 25 mm": what a length would be in mm if it
+ * was typed in metres (small) or micrometres (large), when that fits in
+ * [lo_mm, hi_mm] (and, from micrometres, is at least 1 mm: a 60 mm rod too long
+ * for its ball is not 60 um); else "". */
+static void unit_hint(double v_mm, double lo_mm, double hi_mm, char *buf, size_t cap)
+{
+    buf[0] = '\0';
+    if (v_mm < lo_mm && v_mm * 1e3 >= lo_mm && v_mm * 1e3 <= hi_mm)
+        snprintf(buf, cap, "; did you mean metres? %g m is %g mm", v_mm, v_mm * 1e3);
+    else if (v_mm > hi_mm && v_mm * 1e-3 >= fmax(lo_mm, 1.0) && v_mm * 1e-3 <= hi_mm)
+        snprintf(buf, cap, "; did you mean micrometres? %g um is %g mm", v_mm, v_mm * 1e-3);
+}
+
+/* The sphere's radius, checked before anything that depends on it, so that a
+ * radius in the wrong unit is said as such (not as a travel or a part that no
+ * longer fits). */
+static int check_sphere_radius(const tippe_json_reader *c, double R)
+{
+    if (R >= RADIUS_MIN_MM && R <= RADIUS_MAX_MM)
+        return TIPPE_OK;
+    char hint[160];
+    unit_hint(R, RADIUS_MIN_MM, RADIUS_MAX_MM, hint, sizeof hint);
+    return tippe_json_fail(c, "radius_mm",
+                           "%g mm is %s than any tippe top (a sphere radius is %g .. %g mm; "
+                           "lengths in a design are in mm)%s",
+                           R, R < RADIUS_MIN_MM ? "smaller" : "larger", RADIUS_MIN_MM,
+                           RADIUS_MAX_MM, hint);
 }
 
 /* ---------------------------------------------------------------- schema */
@@ -426,6 +488,11 @@ static int parse_part_material(const tippe_json_reader *c, const cJSON *obj, con
             tippe_json_path(path, sizeof path, pre, "density_g_cm3");
             return tippe_json_fail(c, path, "must be positive, got %g g/cm^3", p->density_g_cm3);
         }
+        if (has_dens) {
+            tippe_json_path(path, sizeof path, pre, "density_g_cm3");
+            if ((rc = check_density(c, path, p->density_g_cm3)))
+                return rc;
+        }
         if (has_mat && !p->material[0]) {
             tippe_json_path(path, sizeof path, pre, "material");
             return tippe_json_fail(c, path, "must not be empty");
@@ -607,11 +674,13 @@ static int load_materials(const char *mat_file, cJSON **out, tippe_error *err)
             (rc = tippe_json_string(mc, m, m->string, "notes", 0, NULL, 0, NULL)))
             goto done;
         char p[256];
+        tippe_json_path(p, sizeof p, m->string, "density_g_cm3");
         if (dens <= 0) {
-            tippe_json_path(p, sizeof p, m->string, "density_g_cm3");
             rc = tippe_json_fail(mc, p, "must be positive, got %g g/cm^3", dens);
             goto done;
         }
+        if ((rc = check_density(mc, p, dens)))
+            goto done;
         if (!cJSON_GetObjectItemCaseSensitive(m, "source")->valuestring[0]) {
             tippe_json_path(p, sizeof p, m->string, "source");
             rc = tippe_json_fail(mc, p, "must say where the density comes from");
@@ -1159,6 +1228,38 @@ static int check_travel(const layout *L)
     return TIPPE_OK;
 }
 
+/* The Z2 interval in which every part's material stays within the sphere (the
+ * model's contact is the sphere only): at each sampled r, a moving interval
+ * [lo, hi] (at Z2 = 0) stays inside the chord [-h, h] for shifts in
+ * [-h - lo, h - hi]; material where the sphere has no chord, or fixed material
+ * outside it, leaves no such Z2. Material is eroded and the sphere grown by
+ * TOL_MM, as for every contact: flush is inside. */
+static void find_sphere_only(tippe_design *d, const double *rs, int nr)
+{
+    double lo = -BIG_MM, hi = BIG_MM;
+    ivset a;
+    for (int i = 0; i < d->n_parts; i++) {
+        const part *p = &d->parts[i];
+        if (p->is_void)
+            continue;
+        for (int k = 0; k < nr; k++) {
+            material_ivs(d, i, rs[k], 0, &a);
+            double h = chord(d->radius_mm + TOL_MM, rs[k]);
+            for (int u = 0; u < a.n; u++) {
+                if (h > 0 && p->moving) {
+                    lo = fmax(lo, -h - a.lo[u]);
+                    hi = fmin(hi, h - a.hi[u]);
+                } else if (h <= 0 || a.lo[u] < -h || a.hi[u] > h) {
+                    lo = BIG_MM;
+                    hi = -BIG_MM;
+                }
+            }
+        }
+    }
+    d->sphere_only_mm[0] = lo;
+    d->sphere_only_mm[1] = hi;
+}
+
 /* Everything about where parts are, once the parts are parsed and resolved. */
 static int check_layout(const tippe_json_reader *c, tippe_design *d)
 {
@@ -1174,7 +1275,11 @@ static int check_layout(const tippe_json_reader *c, tippe_design *d)
         rc = find_physical_travel(&L);
     if (!rc)
         rc = check_travel(&L);
-    free(rs);
+    if (!rc)
+        find_sphere_only(d, rs, L.nr);
+    free(d->rs);
+    d->rs = rs; /* for tippe_design_protrusion_at */
+    d->nr = L.nr;
     return rc;
 }
 
@@ -1264,7 +1369,8 @@ static int parse_header(const tippe_json_reader *c, const cJSON *root, const cha
     if ((rc = tippe_json_check_keys(c, root, "", "a design", top_keys, NULL)) ||
         (rc = tippe_json_string(c, root, "", "name", 1, name, sizeof name, NULL)) ||
         (rc = tippe_json_string(c, root, "", "notes", 0, NULL, 0, NULL)) ||
-        (rc = field_length(c, root, "", "radius_mm", 1, 0, &d->radius_mm, NULL)))
+        (rc = field_length(c, root, "", "radius_mm", 1, 0, &d->radius_mm, NULL)) ||
+        (rc = check_sphere_radius(c, d->radius_mm)))
         return rc;
     if (!(d->name = dup_string(name)) || !(d->path = dup_string(path)))
         return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
@@ -1438,6 +1544,80 @@ static int resolve_parts(const tippe_json_reader *c, tippe_design *d)
     return TIPPE_OK;
 }
 
+typedef struct {
+    const char *key;
+    double value, extent; /* the field, and the part's size it makes */
+    int axial;
+} size_field;
+
+/* No part is longer than the sphere's diameter in any direction, nor centred
+ * beyond it: such a part cannot fit in the ball, and the top would rest on it
+ * rather than on its sphere (the model's only contact). A clipped part is cut
+ * to a ball no larger than the sphere, so only its fields are bounded. */
+static int check_sizes(const tippe_json_reader *c, const tippe_design *d)
+{
+    const double D = 2 * d->radius_mm;
+    char path[64], hint[160];
+    for (int i = 0; i < d->n_parts; i++) {
+        const part *p = &d->parts[i];
+        size_field f[4];
+        int n = 0;
+        switch (p->shape) {
+        case SHAPE_BALL:
+        case SHAPE_SHELL:
+            f[n++] = (size_field){"radius_mm", p->radius_mm, 2 * p->radius_mm, 0};
+            break;
+        case SHAPE_CYLINDER:
+        case SHAPE_TUBE:
+            f[n++] = (size_field){"radius_mm", p->radius_mm, 2 * p->radius_mm, 0};
+            if (p->has_height)
+                f[n++] = (size_field){"height_mm", p->height_mm, p->height_mm, 1};
+            break;
+        case SHAPE_TORUS:
+        default:
+            f[n++] = (size_field){"axial_semi_mm", p->axial_semi_mm, 2 * p->axial_semi_mm, 1};
+            if (p->clip) {
+                f[n++] = (size_field){"centre_radius_mm", p->centre_radius_mm,
+                                        p->centre_radius_mm, 0};
+                f[n++] = (size_field){"radial_semi_mm", p->radial_semi_mm, p->radial_semi_mm,
+                                        0};
+            } else {
+                f[n++] = (size_field){"centre_radius_mm", p->centre_radius_mm,
+                                        2 * (p->centre_radius_mm + p->radial_semi_mm), 0};
+            }
+            break;
+        }
+        for (int k = 0; k < n; k++) {
+            if (!(f[k].extent > D + TOL_MM))
+                continue;
+            snprintf(path, sizeof path, "parts[%d].%s", i, f[k].key);
+            unit_hint(f[k].value, LENGTH_HINT_MM, D * f[k].value / f[k].extent, hint,
+                      sizeof hint);
+            if (f[k].extent == f[k].value || !isfinite(f[k].extent))
+                return tippe_json_fail(c, path,
+                                       "%g mm is more than the sphere's diameter (%g mm): "
+                                       "part '%s' cannot fit in the ball, and the top would "
+                                       "rest on it rather than on its sphere%s",
+                                       f[k].value, D, p->name, hint);
+            return tippe_json_fail(c, path,
+                                   "%g mm makes part '%s' %g mm %s, more than the sphere's "
+                                   "diameter (%g mm): it cannot fit in the ball, and the top "
+                                   "would rest on it rather than on its sphere%s",
+                                   f[k].value, p->name, f[k].extent,
+                                   f[k].axial ? "long" : "across", D, hint);
+        }
+        if (fabs(p->z_mm) > D) {
+            snprintf(path, sizeof path, "parts[%d].z_mm", i);
+            return tippe_json_fail(c, path,
+                                   "%g mm puts part '%s' farther from %s than the sphere's "
+                                   "diameter (%g mm)",
+                                   p->z_mm, p->name, p->moving ? "Z2" : "the sphere's centre",
+                                   D);
+        }
+    }
+    return TIPPE_OK;
+}
+
 /* The print model's description of p's own region (SI). */
 static tippe_solid print_solid(const part *p)
 {
@@ -1566,10 +1746,13 @@ static int build(tippe_json_reader *c, cJSON *root, const char *path, tippe_desi
 {
     char mat_rel[512];
     int has_mat_file = 0, rc;
+    d->sphere_only_mm[0] = -BIG_MM; /* no layout (a derived design): no limit known */
+    d->sphere_only_mm[1] = BIG_MM;
     if ((rc = parse_header(c, root, path, d, mat_rel, sizeof mat_rel, &has_mat_file)) ||
         (rc = parse_parts(c, root, d)) ||
         (rc = resolve_materials(c, path, mat_rel, has_mat_file, d)) ||
-        (rc = resolve_parts(c, d)) || (check && (rc = check_layout(c, d))) ||
+        (rc = resolve_parts(c, d)) || (check && (rc = check_sizes(c, d))) ||
+        (check && (rc = check_layout(c, d))) ||
         (rc = sum_moments(c, d)))
         return rc;
     if (!check) /* a derived design (a field moved by a tolerance) needs no tolerances */
@@ -1645,31 +1828,116 @@ int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_e
     return rc;
 }
 
-/* Probable unit mistakes: a sphere smaller than 1 mm (its radius typed in
- * metres), a density above any solid's (osmium, 22.6 g/cm^3: typed in kg/m^3). */
-#define WARN_RADIUS_MIN_MM 1.0
-#define WARN_DENSITY_MAX_G_CM3 25.0
+/* Part i's length fields below LENGTH_HINT_MM, one at a time (*k counts them
+ * across parts): the key, or NULL past the last. */
+static const char *small_length(const part *p, int which, double *value)
+{
+    const struct {
+        const char *key;
+        double v;
+        int on;
+    } f[] = {
+        {"radius_mm", p->radius_mm, p->shape != SHAPE_TORUS},
+        {"inner_radius_mm", p->inner_radius_mm,
+         (p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE) && p->inner_radius_mm > 0},
+        {"thickness_mm", p->thickness_mm, p->shape == SHAPE_SHELL},
+        {"height_mm", p->height_mm,
+         (p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE) && p->has_height},
+        {"centre_radius_mm", p->centre_radius_mm, p->shape == SHAPE_TORUS},
+        {"radial_semi_mm", p->radial_semi_mm, p->shape == SHAPE_TORUS},
+        {"axial_semi_mm", p->axial_semi_mm, p->shape == SHAPE_TORUS},
+    };
+    for (size_t j = 0; j < sizeof f / sizeof f[0]; j++)
+        if (f[j].on && f[j].v < LENGTH_HINT_MM && which-- == 0) {
+            *value = f[j].v;
+            return f[j].key;
+        }
+    return NULL;
+}
 
 int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size)
 {
     int k = 0;
-    if (d->radius_mm < WARN_RADIUS_MIN_MM && k++ == i) {
-        snprintf(buf, size, "radius_mm: %g mm is smaller than any tippe top; if it was meant in "
-                            "metres, that is %g mm (lengths in a design are in mm)",
-                 d->radius_mm, 1e3 * d->radius_mm);
-        return 1;
-    }
     for (int j = 0; j < d->n_parts; j++) {
         const part *p = &d->parts[j];
-        if (p->is_void || !(p->density_g_cm3 > WARN_DENSITY_MAX_G_CM3) || k++ != i)
-            continue;
-        snprintf(buf, size, "parts[%d] ('%s'%s%s): density %g g/cm^3 is above any solid's "
-                            "(osmium 22.6); if it was meant in kg/m^3, that is %g g/cm^3",
-                 j, p->name, p->material[0] ? ", material " : "", p->material, p->density_g_cm3,
-                 1e-3 * p->density_g_cm3);
-        return 1;
+        double v;
+        const char *key;
+        for (int w = 0; (key = small_length(p, w, &v)) != NULL; w++) {
+            if (k++ != i)
+                continue;
+            char hint[160];
+            unit_hint(v, LENGTH_HINT_MM, 2 * d->radius_mm, hint, sizeof hint);
+            snprintf(buf, size,
+                     "parts[%d].%s: %g mm (part '%s') is finer than anything printed or "
+                     "machined (lengths in a design are in mm)%s",
+                     j, key, v, p->name, hint);
+            return 1;
+        }
     }
     return 0;
+}
+
+void tippe_design_protrusion_text(const tippe_design_protrusion *p, char *buf, size_t size)
+{
+    snprintf(buf, size,
+             "part '%s' stands out of the sphere by %.3f mm near the %cz pole: the top rests "
+             "on it, not on its sphere, for theta %.1f .. %.1f deg",
+             p->part, p->protrusion_mm, p->pole > 0 ? '+' : '-', p->theta_from_rad * 180 / M_PI,
+             p->theta_to_rad * 180 / M_PI);
+}
+
+void tippe_design_sphere_only_mm(const tippe_design *d, double *from_mm, double *to_mm)
+{
+    *from_mm = d->sphere_only_mm[0];
+    *to_mm = d->sphere_only_mm[1];
+}
+
+int tippe_design_protrusion_at(const tippe_design *d, double z2_mm, tippe_design_protrusion *out)
+{
+    memset(out, 0, sizeof *out);
+    const double *so = d->sphere_only_mm;
+    if (!d->rs || !isfinite(z2_mm) ||
+        (z2_mm >= so[0] - TRAVEL_SLACK_MM && z2_mm <= so[1] + TRAVEL_SLACK_MM))
+        return 0;
+    const double R = d->radius_mm;
+    double worst = 0, worst_z = 0, a_lo = INFINITY, a_hi = -INFINITY;
+    int worst_i = -1;
+    ivset a;
+    for (int i = 0; i < d->n_parts; i++) {
+        const part *p = &d->parts[i];
+        if (p->is_void)
+            continue;
+        for (int k = 0; k < d->nr; k++) {
+            const double r = d->rs[k];
+            material_ivs(d, i, r, p->moving ? z2_mm : 0, &a);
+            for (int u = 0; u < 2 * a.n; u++) {
+                /* p . n = r sin(alpha) + z cos(alpha) is linear in z: at each r an
+                 * interval's end is the material farthest along any direction */
+                const double z = u % 2 ? a.hi[u / 2] : a.lo[u / 2], rho = hypot(r, z);
+                if (!(rho > R + TOL_MM))
+                    continue;
+                const double beta = atan2(r, z), w = acos(R / rho);
+                a_lo = fmin(a_lo, fmax(0.0, beta - w));
+                a_hi = fmax(a_hi, fmin(M_PI, beta + w));
+                if (rho - R > worst) {
+                    worst = rho - R;
+                    worst_z = z;
+                    worst_i = i;
+                }
+            }
+        }
+    }
+    if (worst_i < 0)
+        return 0;
+    out->protrusion_mm = worst;
+    snprintf(out->part, sizeof out->part, "%s", d->parts[worst_i].name);
+    out->pole = worst_z >= 0 ? 1 : -1;
+    /* theta = 0 rests on the centre of mass's side: the -z pole when it is below */
+    tippe_top t;
+    tippe_design_top_any(d, z2_mm, &t);
+    out->theta_from_rad = t.com_side < 0 ? M_PI - a_hi : a_lo;
+    out->theta_to_rad = t.com_side < 0 ? M_PI - a_lo : a_hi;
+    return 1;
 }
 
 void tippe_design_free(tippe_design *d)
@@ -1680,6 +1948,7 @@ void tippe_design_free(tippe_design *d)
         free(d->overrides[i]);
     free(d->overrides);
     free(d->tolerances);
+    free(d->rs);
     free(d->path);
     free(d->name);
     free(d->parts);

@@ -111,8 +111,12 @@ mutate travel_order 'd["travel_mm"] = [10, 0]'
 expect_fail "travel reversed" 2 "travel_mm: from (10 mm) must be less than" -- eval "$tmp/travel_order.json" --z2 1
 
 # --- layout -----------------------------------------------------------------------
-mutate protrude 'd["parts"][1].pop("clip"); d["parts"][1]["height_mm"] = 60'
+# a rod of the sphere's diameter: its rim (r = 3 mm, z = 25 mm) is outside the sphere
+mutate protrude 'd["parts"][1].pop("clip"); d["parts"][1]["height_mm"] = 50'
 expect_fail "part sticks out" 2 "parts[1]: part 'rod' sticks out of the sphere" -- eval "$tmp/protrude.json" --z2 1
+# issue 19.6: a part longer than the ball is refused, even one that may protrude
+mutate toolong 'd["parts"][1].pop("clip"); d["parts"][1]["height_mm"] = 60; d["parts"][1]["may_protrude"] = True'
+expect_fail "part longer than the diameter" 2 "parts[1].height_mm: 60 mm is more than the sphere's diameter (50 mm)" -- eval "$tmp/toolong.json" --z2 1
 mutate overlap 'd["parts"][2]["inner_radius_mm"] = 2'
 expect_fail "parts overlap" 2 "part 'weight' overlaps part 'rod'" -- eval "$tmp/overlap.json" --z2 1
 mutate overlap_fixed 'd["parts"].append({"name": "lump", "shape": "ball", "radius_mm": 4, "z_mm": -20, "material": "ABS"})'

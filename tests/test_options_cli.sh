@@ -113,9 +113,10 @@ assert s['verdict'] == c['verdict'], (s['verdict'], c['verdict'])" "$tmp/sim.jso
 expect_fail "simulate: design without --z2" 2 "--z2 MM is required with a design file" -- \
     simulate "$m12" --spin 20rev/s
 
-# --- defect 6: probable unit mistakes in a design are warned about, naming the unit --
-# The M12 design with every length in metres (each *_mm number x 1e-3): it loads
-# (a self-consistent tiny top) but its radius of 0.025 "mm" was meant in metres.
+# --- defect 6, issue 19.7: unit mistakes are named, with the unit they were probably in --
+# The M12 design with every length in metres (each *_mm number x 1e-3): a radius of
+# 0.025 "mm" was meant in metres. It is refused at the radius, before the travel or
+# the parts that no longer fit are looked at (the travel message misled).
 python3 - "$tmp/metres.json" "$(pwd)/designs/materials.json" <<'PY'
 import json, sys
 d = json.load(open("designs/m12-setscrew.json"))
@@ -129,14 +130,41 @@ s = scale(d)
 s["materials"] = sys.argv[2]
 json.dump(s, open(sys.argv[1], "w"))
 PY
-"$tippe" eval "$tmp/metres.json" --z2 0.005 >"$tmp/out" 2>"$tmp/err"
-check "a design in metres still evaluates" test $? -eq 0
-check "a design in metres: warned, with the likely unit" \
-    grep -q "warning: .*radius_mm: 0.025 mm is smaller than any tippe top; if it was meant in metres, that is 25 mm" "$tmp/err"
-"$tippe" sweep "$m12" --set parts.screw.density_g_cm3=7850 >"$tmp/out" 2>"$tmp/err"
-check "a density of 7850 g/cm^3: warned as probably kg/m^3 (7.85 g/cm^3)" \
-    grep -q "warning: .*parts\[2\] ('screw').*density 7850 g/cm^3.*kg/m^3, that is 7.85 g/cm^3" "$tmp/err"
-"$tippe" sweep "$m12" >"$tmp/out" 2>"$tmp/err"
-check "the shipped design: no warning" test ! -s "$tmp/err"
+expect_fail "a design in metres: refused at radius_mm, with the likely unit" 2 \
+    "radius_mm: 0.025 mm is smaller than any tippe top" "did you mean metres? 0.025 m is 25 mm" -- \
+    eval "$tmp/metres.json" --z2 0.005
+expect_fail "radius_mm=0.025 alone: the unit, not the travel" 2 \
+    "radius_mm: 0.025 mm is smaller than any tippe top" "did you mean metres? 0.025 m is 25 mm" -- \
+    eval "$m12" --z2 1 --set radius_mm=0.025
+"$tippe" eval "$m12" --z2 1 --set radius_mm=0.025 >/dev/null 2>"$tmp/err"
+check "radius_mm=0.025: no word of the travel" sh -c "! grep -q travel '$tmp/err'"
+expect_fail "radius_mm=25000: did you mean um" 2 \
+    "radius_mm: 25000 mm is larger than any tippe top" "did you mean micrometres? 25000 um is 25 mm" -- \
+    eval "$m12" --z2 1 --set radius_mm=25000
+"$tippe" eval "$m12" --z2 1 --set parts.screw.radius_mm=0.0055 >/dev/null 2>"$tmp/err"
+check "a screw radius of 0.0055 mm: warned, did you mean metres (5.5 mm)" \
+    grep -q "warning: .*parts\[2\].radius_mm: 0.0055 mm (part 'screw').*did you mean metres? 0.0055 m is 5.5 mm" "$tmp/err"
+expect_fail "a density of 7850 g/cm^3 is an error (kg/m^3? 7.85 g/cm^3)" 2 \
+    "parts[2].density_g_cm3: 7850 g/cm^3 is denser than any solid (osmium" \
+    "did you mean kg/m^3? 7850 kg/m^3 is 7.85 g/cm^3" -- \
+    sweep "$m12" --set parts.screw.density_g_cm3=7850
+expect_fail "22.7 g/cm^3, just above osmium, is an error" 2 "parts[2].density_g_cm3: 22.7 g/cm^3 is denser" -- \
+    eval "$m12" --z2 1 --set parts.screw.density_g_cm3=22.7
+"$tippe" eval "$m12" --z2 1 --set parts.screw.density_g_cm3=22.5 >/dev/null 2>&1
+check "22.5 g/cm^3 (iridium, osmium) is accepted" test $? -eq 0
+python3 -c '
+import json, sys
+t = json.load(open("designs/materials.json")); t["steel"]["density_g_cm3"] = 7850
+json.dump(t, open(sys.argv[1], "w"))' "$tmp/materials-kg.json"
+expect_fail "a table density in kg/m^3: names the table and the material" 2 \
+    "materials-kg.json: steel.density_g_cm3: 7850 g/cm^3 is denser than any solid" -- \
+    materials "$tmp/materials-kg.json"
+for f in radius_mm parts.screw.radius_mm parts.screw.height_mm parts.screw.z_mm \
+         parts.screw.density_g_cm3 parts.hole.radius_mm; do
+    expect_fail "1e308 for $f names the field" 2 "(set by --set $f=1e308)" -- \
+        eval "$m12" --z2 1 --set "$f=1e308"
+done
+"$tippe" sweep designs/shell-band.json >"$tmp/out" 2>"$tmp/err"
+check "a shipped design: no warning" test ! -s "$tmp/err"
 
 finish

@@ -48,6 +48,38 @@ void tippe_design_travel_mm(const tippe_design *d, double *from_mm, double *to_m
  * the sphere. Its ends are where moving parts touch fixed ones (or the sphere). */
 void tippe_design_contact_travel_mm(const tippe_design *d, double *from_mm, double *to_mm);
 
+/* The model (the paper's) lets the top touch the table only with its sphere.
+ * Where some material stands out of the sphere (a setscrew screwed out past the
+ * surface, a fixed part with may_protrude), the top rests on that part instead
+ * whenever the contact point comes near it, and the model does not apply.
+ * This is the Z2 interval in which every part stays within the sphere (up to
+ * the 1e-6 mm contact tolerance); from > to when there is none (a fixed part
+ * stands out at every Z2). A design loaded by tippe_design_derive has no
+ * layout: its interval is unbounded. */
+void tippe_design_sphere_only_mm(const tippe_design *d, double *from_mm, double *to_mm);
+
+/* Where the top's material stands out of the sphere at Z2. */
+typedef struct {
+    double protrusion_mm; /* farthest distance beyond the sphere's surface; 0: none */
+    char part[64];        /* the part standing out farthest ("" if none) */
+    int pole;             /* +1 or -1: the z side of that point (the pole it is near) */
+    /* The tilts theta (the paper's: 0 = resting on the centre of mass's side,
+     * pi = inverted) for which the top rests on standing-out material rather
+     * than on its sphere: the direction of the table, at polar angle alpha
+     * from the +z pole, meets material at distance rho > R and polar angle beta
+     * when |alpha - beta| < acos(R / rho). The hull over all such points, rad. */
+    double theta_from_rad, theta_to_rad;
+} tippe_design_protrusion;
+
+/* Fills *out for the moving weight at z2_mm (any Z2, not only the travel);
+ * returns 1 if some material stands out of the sphere (the model does not
+ * apply: see tippe_design_sphere_only_mm), 0 if not (*out zeroed). */
+int tippe_design_protrusion_at(const tippe_design *d, double z2_mm, tippe_design_protrusion *out);
+
+/* "part 'screw' stands out of the sphere by 0.598 mm near the +z pole: the top
+ * rests on it, not on its sphere, for theta 0 .. 24.8 deg", for reports. */
+void tippe_design_protrusion_text(const tippe_design_protrusion *p, char *buf, size_t size);
+
 /* What limits the physical travel at each end, e.g. "part 'weight' touches part
  * 'shell'"; for messages. */
 const char *tippe_design_contact_limit(const tippe_design *d, int upper);
@@ -136,9 +168,10 @@ int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, i
 int tippe_design_forms_sphere(const tippe_design *d, int i);
 
 /* Warning i (0, 1, ...) about a probable unit mistake in a design that loaded:
- * a sphere radius below 1 mm (metres typed for mm), a part's density above
- * 25 g/cm^3 (kg/m^3 typed for g/cm^3). Writes the message (naming the field
- * and the likely unit) into buf and returns 1, or returns 0 past the last. */
+ * a part length below 0.01 mm (metres typed for mm: the message says what it
+ * would be). Writes the message (naming the field) into buf and returns 1, or
+ * returns 0 past the last. (A sphere radius outside 1 .. 1000 mm and a density
+ * above osmium's are errors at load, with the likely unit.) */
 int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size);
 
 /* The solid of part i, for exporters that rebuild its shape (mm). Fields that
