@@ -169,6 +169,7 @@ static int read_explicit_top(tippe_json_reader *c, const cJSON *top, tippe_scena
     t->com_side = t->eps > 0 ? -1 : 0;
     s->design_path[0] = '\0';
     s->z2_mm = NAN;
+    memset(&s->protrusion, 0, sizeof s->protrusion);
     return TIPPE_OK;
 }
 
@@ -227,6 +228,7 @@ static int read_design_top(tippe_json_reader *c, const cJSON *top, const cJSON *
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.design", "%s", derr.msg)
                                   : tippe_error_set(c->err, rc, "%s", derr.msg);
     rc = tippe_design_top(d, s->z2_mm, &s->model.top, &derr);
+    tippe_design_protrusion_at(d, s->z2_mm, &s->protrusion);
     tippe_design_free(d);
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.z2_mm", "%s", derr.msg)

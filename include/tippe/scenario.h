@@ -14,6 +14,7 @@
 #ifndef TIPPE_SCENARIO_H
 #define TIPPE_SCENARIO_H
 
+#include "tippe/design.h"
 #include "tippe/dynamics.h"
 #include "tippe/error.h"
 
@@ -24,6 +25,9 @@ typedef struct {
     char name[256];
     char design_path[1024]; /* resolved path, "" for an explicit top */
     double z2_mm;           /* NAN for an explicit top */
+    /* a design's material standing out of its sphere at z2_mm (the model does
+     * not apply there: tippe_design_protrusion_at); zero for an explicit top */
+    tippe_design_protrusion protrusion;
     tippe_dynamics_model model;
     tippe_dynamics_initial initial; /* phi_dot resolved from its rule */
     int phi_dot_rule;               /* TIPPE_PHI_DOT_GIVEN or a tippe_precession_rule */

@@ -96,6 +96,9 @@ static int check_json(const hands_args *a, const check_result *r)
             cJSON_AddNumberToObject(ini, "V_m_s", ic->V);
         }
         cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(rec->verdict));
+        tippe_design_protrusion pr;
+        tippe_design_protrusion_at(r->d, a->z2_mm, &pr);
+        tippe_cli_json_model_validity(o, &pr);
         cJSON_AddNumberToObject(o, "t_s", rec->t_s);
         add_decision_json(o, rec);
         tippe_cli_json_number_or_null(o, "theta_final_rad", rec->theta_final_rad);
@@ -163,6 +166,9 @@ static void check_text(const hands_args *a, const check_result *r)
             printf("; Rn >= %.3g N for ever", rec->Rn_bound_N);
         printf("\n");
     }
+    tippe_design_protrusion pr;
+    tippe_design_protrusion_at(r->d, a->z2_mm, &pr);
+    tippe_cli_print_model_validity(&pr, a->z2_mm, "contact    ", "the verdict above is");
     if (isfinite(rec->t_flip_s))
         printf("flip       theta passed 90 deg at t = %.4g s of model time (mu = %g s/m)\n",
                rec->t_flip_s, a->o.mu);

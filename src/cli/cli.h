@@ -246,6 +246,16 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
  * spin_final_rad_s, phi_dot_final_rad_s, theta_range_rad, barrier_gap_J,
  * margin_J, Rn_bound_N, t_flip_s (null where not applicable). */
 void tippe_cli_json_verdict_proof(struct cJSON *o, const tippe_dynamics_result *r);
+/* Where the design's material stands out of its sphere at the Z2 of a result
+ * (tippe_design_protrusion_at), the top rests on it and the model (contact on
+ * the sphere only) does not apply: prints "PREFIXINVALID at Z2 = ... mm: part
+ * ... stands out ..., so WHAT no prediction" (what: "the verdict above is") and returns
+ * 1; prints nothing and returns 0 where the model applies. */
+int tippe_cli_print_model_validity(const tippe_design_protrusion *p, double z2_mm,
+                                   const char *prefix, const char *what);
+/* The same as JSON fields of o: "model_valid" (true/false) and "protrusion"
+ * (null, or {part, protrusion_mm, pole ("+z"/"-z"), theta_range_rad}). */
+void tippe_cli_json_model_validity(struct cJSON *o, const tippe_design_protrusion *p);
 /* v, or null where it is not finite (not applicable). */
 void tippe_cli_json_number_or_null(struct cJSON *o, const char *key, double v);
 /* [lo, hi], or null where either is not finite. */

@@ -46,6 +46,9 @@ static void print_table(const tippe_design *d, double z2_mm, const tippe_top *t,
         printf("group    %s, subgroup %s of Theorem 5.1%s%s (tippe classify tells more)\n",
                tippe_group_family(cls.group), tippe_group_name(cls.group),
                cls.boundary ? ", on the boundary " : "", cls.boundary ? cls.boundary : "");
+    tippe_design_protrusion pr;
+    tippe_design_protrusion_at(d, z2_mm, &pr);
+    tippe_cli_print_model_validity(&pr, z2_mm, "contact  ", "the group above is");
     printf("\n%-12s %-9s %-7s %-12s %9s %12s\n", "part", "shape", "role", "material",
            "g/cm^3", "mass g");
     int n = tippe_design_n_parts(d);
@@ -131,6 +134,9 @@ static cJSON *to_json(const tippe_design *d, double z2_mm, const tippe_top *t)
         if (!ok)
             break;
     }
+    tippe_design_protrusion pr;
+    tippe_design_protrusion_at(d, z2_mm, &pr);
+    tippe_cli_json_model_validity(o, &pr);
     if (!ok || !parts || tippe_cli_printed_parts_json(o, d)) {
         cJSON_Delete(o);
         return NULL;

@@ -174,6 +174,9 @@ static void launch_json(const hands_args *a, const tippe_design *d, const tippe_
         tippe_cli_json_sets(o, &a->sets);
         cJSON_AddNumberToObject(o, "z2_mm", a->z2_mm);
         cJSON_AddNumberToObject(o, "seed", (double)a->seed);
+        tippe_design_protrusion pr;
+        tippe_design_protrusion_at(d, a->z2_mm, &pr);
+        tippe_cli_json_model_validity(o, &pr);
         cJSON_AddItemToObject(o, "theory", hands_json_theory(top, a->o.g, z, t));
         cJSON_AddItemToObject(o, "distribution", hands_json_options(&a->o, 0));
         cJSON_AddNumberToObject(o, "max_jellett_rel_drift", t->max_jellett_rel_drift);
@@ -193,6 +196,9 @@ static void launch_text(const hands_args *a, const tippe_design *d, const tippe_
     hands_print_distribution(&a->o, 0);
     hands_print_model(&a->o);
     print_counts_table(t);
+    tippe_design_protrusion pr;
+    tippe_design_protrusion_at(d, a->z2_mm, &pr);
+    tippe_cli_print_model_validity(&pr, a->z2_mm, "contact    ", "the outcomes above are");
     print_theory_summary(t);
     printf("accuracy   largest Jellett drift %.2g; %.3g RHS evaluations; %.2f s on %d "
            "thread%s x %d rank%s (%.1f launches/s)\n",

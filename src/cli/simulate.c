@@ -142,6 +142,7 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                f->spin, f->phi_dot, f->slip_speed);
         break;
     }
+    tippe_cli_print_model_validity(&sc->protrusion, sc->z2_mm, "contact   ", "the verdict above is");
     if (r->last.t > r->t_verdict) /* --full, --csv or --plot: the run went on to t_end */
         printf("          at the end of the run, t = %.6g s: theta %.6g rad (%.2f deg), spin %.6g "
                "rad/s, contact speed %.3g m/s\n",
@@ -228,6 +229,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
         cJSON_AddNumberToObject(ini, "V_m_s", sc->initial.V);
     }
     cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(r->verdict));
+    tippe_cli_json_model_validity(o, &sc->protrusion);
     cJSON_AddNumberToObject(o, "t_s", r->t_verdict);
     json_sample_fields(o, &r->final);
     tippe_cli_json_verdict_proof(o, r);

@@ -78,3 +78,33 @@ void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
     tippe_cli_json_number_or_null(o, "Rn_bound_N", r->Rn_bound_N);
     tippe_cli_json_number_or_null(o, "t_flip_s", r->t_flip);
 }
+
+int tippe_cli_print_model_validity(const tippe_design_protrusion *p, double z2_mm,
+                                   const char *prefix, const char *what)
+{
+    if (!(p->protrusion_mm > 0))
+        return 0;
+    char text[512];
+    tippe_design_protrusion_text(p, text, sizeof text);
+    printf("%sINVALID at Z2 = %g mm: %s; the model lets the top touch the table with its "
+           "sphere only, so %s no prediction\n",
+           prefix, z2_mm, text, what);
+    return 1;
+}
+
+void tippe_cli_json_model_validity(cJSON *o, const tippe_design_protrusion *p)
+{
+    const int out = p->protrusion_mm > 0;
+    cJSON_AddBoolToObject(o, "model_valid", !out);
+    if (!out) {
+        cJSON_AddNullToObject(o, "protrusion");
+        return;
+    }
+    cJSON *po = cJSON_AddObjectToObject(o, "protrusion");
+    if (!po)
+        return;
+    cJSON_AddStringToObject(po, "part", p->part);
+    cJSON_AddNumberToObject(po, "protrusion_mm", p->protrusion_mm);
+    cJSON_AddStringToObject(po, "pole", p->pole > 0 ? "+z" : "-z");
+    tippe_cli_json_range(po, "theta_range_rad", p->theta_from_rad, p->theta_to_rad);
+}
