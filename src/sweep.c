@@ -481,9 +481,35 @@ int tippe_sweep_design(const tippe_design *d, double from_mm, double to_mm,
         snprintf(msg, sizeof msg, "%s", err ? err->msg : "");
         return tippe_error_set(err, st, "%s: %s", tippe_design_name(d), msg);
     }
+    tippe_design_sphere_only_mm(d, &out->sphere_only_from_mm, &out->sphere_only_to_mm);
+    out->has_sphere_only = 1;
     double pf, pt;
     tippe_design_contact_travel_mm(d, &pf, &pt);
     return tippe_sweep_mark_travel(out, pf, pt, err);
+}
+
+int tippe_sweep_zone_model_invalid(const tippe_sweep_result *r, const tippe_sweep_zone *z,
+                                   double from[2], double to[2])
+{
+    if (!r->has_sphere_only)
+        return 0;
+    const double a = r->sphere_only_from_mm, b = r->sphere_only_to_mm;
+    const double f = z->z2_from_mm, t = z->z2_to_mm;
+    if (a > b || t <= a || f >= b) { /* no sphere-only Z2 in the zone */
+        from[0] = f;
+        to[0] = t;
+        return 1;
+    }
+    int n = 0;
+    if (f < a) {
+        from[n] = f;
+        to[n++] = a;
+    }
+    if (t > b) {
+        from[n] = b;
+        to[n++] = t;
+    }
+    return n;
 }
 
 static const char *const family_names[3] = {"I", "II", "III"};
@@ -645,6 +671,33 @@ int tippe_sweep_event_ends_zone(const tippe_sweep_result *r, const tippe_sweep_e
     return ends_a_zone(r, ev);
 }
 
+/* Where the sweep leaves the Z2 in which every part stays inside the sphere:
+ * what stands out there (the model lets the top touch the table with its
+ * sphere only). */
+static void print_sphere_only(FILE *out, const tippe_sweep_result *r, const tippe_design *d)
+{
+    if (!r->has_sphere_only)
+        return;
+    const double a = r->sphere_only_from_mm, b = r->sphere_only_to_mm;
+    if (a <= b && r->from_mm >= a && r->to_mm <= b)
+        return;
+    if (a > b)
+        fprintf(out, "contact  material stands out of the sphere at every Z2");
+    else
+        fprintf(out, "contact  every part stays inside the sphere only for Z2 = %.3f .. %.3f mm",
+                clean(a), clean(b));
+    fprintf(out, ": beyond, the top rests on what stands out and the model\n"
+                 "         (contact on the sphere only) does not apply: zones there are "
+                 "marked MODEL INVALID\n");
+    tippe_design_protrusion p;
+    const double z = a > b ? r->to_mm : r->to_mm > b ? r->to_mm : r->from_mm;
+    if (d && tippe_design_protrusion_at(d, z, &p)) {
+        char text[512];
+        tippe_design_protrusion_text(&p, text, sizeof text);
+        fprintf(out, "         at Z2 = %.3f mm %s\n", clean(z), text);
+    }
+}
+
 static const char *side_down(int com_side)
 {
     return com_side > 0 ? "+z side down" : com_side < 0 ? "-z side down" : "balanced";
@@ -662,7 +715,9 @@ void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe
                     clean(r->travel_to_mm));
         fprintf(out, "\n");
     }
-    fprintf(out, "sweep    Z2 = %.3f .. %.3f mm\n\n", clean(r->from_mm), clean(r->to_mm));
+    fprintf(out, "sweep    Z2 = %.3f .. %.3f mm\n", clean(r->from_mm), clean(r->to_mm));
+    print_sphere_only(out, r, d);
+    fprintf(out, "\n");
     fprintf(out, "%-5s %10s %10s %11s  %-22s %s\n", "zone", "from (mm)", "to (mm)",
             "width (mm)", "ends on", "notes");
     int mixed = mixed_sides(r);
@@ -683,6 +738,17 @@ void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe
             size_t len = strlen(notes);
             snprintf(notes + len, sizeof notes - len, "%s%s", len ? "; " : "",
                      side_down(z->com_side));
+        }
+        double bad_from[2], bad_to[2];
+        int n_bad = tippe_sweep_zone_model_invalid(r, z, bad_from, bad_to);
+        for (int k = 0; k < n_bad; k++) {
+            size_t len = strlen(notes);
+            if (bad_from[k] == z->z2_from_mm && bad_to[k] == z->z2_to_mm)
+                snprintf(notes + len, sizeof notes - len, "%sMODEL INVALID (part out of the "
+                         "sphere)", len ? "; " : "");
+            else
+                snprintf(notes + len, sizeof notes - len, "%sMODEL INVALID %.3f .. %.3f mm",
+                         len ? "; " : "", clean(bad_from[k]), clean(bad_to[k]));
         }
         fprintf(out, "%-5s %10.3f %10.3f %11.3f  %-22s %s\n", tippe_group_name(z->group),
                 clean(z->z2_from_mm), clean(z->z2_to_mm), z->z2_to_mm - z->z2_from_mm, ends,
@@ -750,6 +816,18 @@ static void add_ends_on(cJSON *zo, unsigned boundaries, int *ok)
             add_obj(ends, cJSON_CreateString(boundary_names[b]), NULL, ok);
 }
 
+/* "model_invalid_mm": the pieces of the zone where a part stands out of the
+ * sphere, [[from, to], ...] (empty where the model applies throughout). */
+static void add_model_invalid(cJSON *zo, const tippe_sweep_result *r, const tippe_sweep_zone *z,
+                              int *ok)
+{
+    cJSON *list = add_obj(zo, cJSON_CreateArray(), "model_invalid_mm", ok);
+    double f[2], t[2];
+    int n = tippe_sweep_zone_model_invalid(r, z, f, t);
+    for (int k = 0; list && k < n; k++)
+        add_pair(list, NULL, f[k], t[k], ok);
+}
+
 cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
 {
     cJSON *o = cJSON_CreateObject();
@@ -766,6 +844,11 @@ cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
     add_pair(o, "sweep_mm", r->from_mm, r->to_mm, &ok);
     if (r->has_travel)
         add_pair(o, "physical_travel_mm", r->travel_from_mm, r->travel_to_mm, &ok);
+    if (r->has_sphere_only && r->sphere_only_from_mm <= r->sphere_only_to_mm)
+        add_pair(o, "sphere_only_mm", r->sphere_only_from_mm,
+                 r->sphere_only_to_mm, &ok);
+    else if (r->has_sphere_only)
+        add_obj(o, cJSON_CreateNull(), "sphere_only_mm", &ok);
     /* "zones": one entry per run of one zone label (I, IIa, IIb, IIc, III: the
      * paper's zones, Ia and Ib joined as I) and one side of the balanced point,
      * however the run was split (Ia|Ib, the ends of the physical travel).
@@ -805,6 +888,9 @@ cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
             add_obj(zo, cJSON_CreateNull(), "reachable_mm", &ok);
         add_obj(zo, cJSON_CreateNumber(first->com_side), "com_side", &ok);
         add_ends_on(zo, last->to_boundaries, &ok);
+        tippe_sweep_zone run = *first;
+        run.z2_to_mm = last->z2_to_mm;
+        add_model_invalid(zo, r, &run, &ok);
         i = j;
     }
     cJSON *intervals = add_obj(o, cJSON_CreateArray(), "intervals", &ok);
@@ -821,6 +907,7 @@ cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
         add_obj(zo, cJSON_CreateBool(z->within_travel), "within_travel", &ok);
         add_obj(zo, cJSON_CreateNumber(z->com_side), "com_side", &ok);
         add_ends_on(zo, z->to_boundaries, &ok);
+        add_model_invalid(zo, r, z, &ok);
     }
     cJSON *touches = add_obj(o, cJSON_CreateArray(), "touches", &ok);
     cJSON *crossings = add_obj(o, cJSON_CreateArray(), "crossings", &ok);

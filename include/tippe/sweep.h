@@ -88,7 +88,18 @@ typedef struct {
     /* Set by tippe_sweep_mark_travel (has_travel = 0 before). */
     int has_travel;
     double travel_from_mm, travel_to_mm;
+    /* Set by tippe_sweep_design (has_sphere_only = 0 before): the Z2 interval in
+     * which every part stays within the sphere (tippe_design_sphere_only_mm;
+     * from > to: none). Beyond it the top rests on the part standing out and
+     * the model does not apply: the reports mark the zones there. */
+    int has_sphere_only;
+    double sphere_only_from_mm, sphere_only_to_mm;
 } tippe_sweep_result;
+
+/* The parts of zone z outside r's sphere-only interval, where the model does
+ * not apply: up to two [from, to] pieces into from[], to[]; returns how many. */
+int tippe_sweep_zone_model_invalid(const tippe_sweep_result *r, const tippe_sweep_zone *z,
+                                   double from[2], double to[2]);
 
 typedef struct {
     int n_scan;        /* scan intervals for bracketing (default 2000) */

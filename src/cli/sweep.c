@@ -38,7 +38,8 @@ static void print_vary_table(const tippe_design *d, const tippe_sweep_vary_resul
            v->values[v->n - 1], v->n);
     int w = (int)strlen(field) > 10 ? (int)strlen(field) : 10;
     printf("%*s  %-6s %-16s %s\n", w, field, "3-in-1", "narrowest (mm)",
-           "zones: group from..to mm (* beyond physical travel)");
+           "zones: group from..to mm (* beyond physical travel, ! a part stands out of "
+           "the sphere: model invalid)");
     for (int i = 0; i < v->n; i++) {
         const tippe_sweep_result *r = &v->results[i];
         tippe_sweep_summary s;
@@ -49,9 +50,11 @@ static void print_vary_table(const tippe_design *d, const tippe_sweep_vary_resul
         printf("%*.6g  %-6s %-16s", w, v->values[i], s.three_in_one ? "yes" : "no", narrow);
         for (int j = 0; j < r->n_zones; j++) {
             const tippe_sweep_zone *z = &r->zones[j];
-            printf("%s%s %.3f..%.3f%s", j ? " | " : "", tippe_group_name(z->group),
+            double bf[2], bt[2];
+            printf("%s%s %.3f..%.3f%s%s", j ? " | " : "", tippe_group_name(z->group),
                    fabs(z->z2_from_mm) < 5e-4 ? 0.0 : z->z2_from_mm,
-                   fabs(z->z2_to_mm) < 5e-4 ? 0.0 : z->z2_to_mm, z->within_travel ? "" : "*");
+                   fabs(z->z2_to_mm) < 5e-4 ? 0.0 : z->z2_to_mm, z->within_travel ? "" : "*",
+                   tippe_sweep_zone_model_invalid(r, z, bf, bt) ? "!" : "");
         }
         printf("\n");
     }
