@@ -410,6 +410,111 @@ static void check_materials(void)
     remove(des);
 }
 
+/* Issue 19.6: where the screw stands out of the sphere the top rests on it and
+ * the model (contact on the sphere only) does not apply. The M12 screw
+ * (radius a = 5.5, height h = 15, R = 25) has its rim at (a, Z2 + h/2): it
+ * leaves the sphere at Z2 = sqrt(R^2 - a^2) - h/2 = 16.8875 mm, and at Z2 its
+ * rim stands rho - R out, rho = hypot(a, Z2 + h/2). The table direction at
+ * polar angle alpha meets the rim while rho cos(alpha - beta) > R, beta =
+ * atan(a / (Z2 + h/2)): up to beta + acos(R / rho). The design samples r (rim
+ * radius exactly, 2e-6 mm either side) and erodes by 1e-6 mm: 1e-5 mm and 1e-4
+ * rad cover that, and a wrong formula (the face instead of the rim, the wrong
+ * pole) is off by 0.5 mm or 0.2 rad. */
+static void check_protrusion(void)
+{
+    const double R = 25, a = 5.5, h = 15;
+    tippe_design *d = load("designs/m12-setscrew.json", NULL, 0);
+    if (!d)
+        return;
+    double lo, hi;
+    tippe_design_sphere_only_mm(d, &lo, &hi);
+    const double edge = sqrt(R * R - a * a) - h / 2;
+    CHECK(fabs(hi - edge) < 1e-5 && fabs(lo + edge) < 1e-5, "sphere only %.9g .. %.9g, want +-%.9g",
+          lo, hi, edge);
+    tippe_design_protrusion p;
+    CHECK(tippe_design_protrusion_at(d, 16.8, &p) == 0 && p.protrusion_mm == 0 && !p.part[0],
+          "Z2 = 16.8 mm: inside, yet %g mm out", p.protrusion_mm);
+    const double z2s[] = {17.5, 20, -17.5};
+    for (int k = 0; k < 3; k++) {
+        const double z2 = z2s[k], top = fabs(z2) + h / 2, rho = hypot(a, top);
+        const double theta_hi = atan(a / top) + acos(R / rho);
+        CHECK(tippe_design_protrusion_at(d, z2, &p) == 1, "Z2 = %g: no protrusion", z2);
+        CHECK(fabs(p.protrusion_mm - (rho - R)) < 1e-5, "Z2 = %g: %.9g mm out, want %.9g", z2,
+              p.protrusion_mm, rho - R);
+        CHECK(!strcmp(p.part, "screw") && p.pole == (z2 > 0 ? 1 : -1), "Z2 = %g: '%s' pole %d",
+              z2, p.part, p.pole);
+        /* the centre of mass is on the screw's side: theta = 0 rests on it (at
+         * Z2 = 17.5 mm the face is flush with the pole: the band starts there
+         * to within the erosion, acos(1 - 1e-6 / R) < 1e-3 rad) */
+        CHECK(p.theta_from_rad < 1e-3 && fabs(p.theta_to_rad - theta_hi) < 1e-4,
+              "Z2 = %g: theta %.6f .. %.6f, want 0 .. %.6f", z2, p.theta_from_rad,
+              p.theta_to_rad, theta_hi);
+    }
+    tippe_design_free(d);
+    /* A screw lighter than the ABS it replaces: the centre of mass goes to -z,
+     * theta = 0 rests on the -z pole and the screw is met only turned over */
+    const char *dir = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";
+    char light[512];
+    snprintf(light, sizeof light, "%s/tippe-test-light-%d.json", dir, (int)getpid());
+    FILE *f = fopen(light, "w");
+    if (f) {
+        /* a blind hole in the +z half, the screw lighter than the ABS it replaces */
+        fprintf(f, "{\"name\": \"light\", \"radius_mm\": 25, \"travel_mm\": [8, 20], "
+                   "\"parts\": [{\"name\": \"body\", \"shape\": \"ball\", \"density_g_cm3\": 1.08},"
+                   "{\"name\": \"hole\", \"shape\": \"cylinder\", \"radius_mm\": 5.5, "
+                   "\"height_mm\": 25, \"z_mm\": 12.5, \"clip\": \"sphere\", \"void\": true, "
+                   "\"cut_from\": \"body\"}, {\"name\": \"screw\", \"shape\": \"cylinder\", "
+                   "\"radius_mm\": 5.5, \"height_mm\": 15, \"density_g_cm3\": 0.1, "
+                   "\"moving\": true, \"may_protrude\": true}]}");
+        fclose(f);
+    }
+    if ((d = load(light, NULL, 0))) {
+        const double top = 20 + h / 2, rho = hypot(a, top);
+        const double theta_hi = atan(a / top) + acos(R / rho);
+        tippe_top t;
+        tippe_design_top_any(d, 20, &t);
+        CHECK(t.com_side < 0, "light screw: com_side %d", t.com_side);
+        CHECK(tippe_design_protrusion_at(d, 20, &p) == 1 && p.pole == 1 &&
+                  fabs(p.theta_to_rad - M_PI) < 1e-12 &&
+                  fabs(p.theta_from_rad - (M_PI - theta_hi)) < 1e-4,
+              "light screw: pole %d theta %.6f .. %.6f, want %.6f .. pi", p.pole,
+              p.theta_from_rad, p.theta_to_rad, M_PI - theta_hi);
+        tippe_design_free(d);
+    }
+    remove(light);
+    /* The M3 design's travel ends just inside (sqrt(R^2 - 1.5^2) - 1.5 = 23.455 mm) */
+    if ((d = load("designs/m3-setscrew.json", NULL, 0))) {
+        CHECK(tippe_design_protrusion_at(d, 23.4, &p) == 0, "m3 at 23.4 mm: %g mm out",
+              p.protrusion_mm);
+        tippe_design_free(d);
+    }
+    /* Parts longer than the ball, or absurd numbers, are refused naming the field. */
+    const struct {
+        const char *set, *want;
+    } bad[] = {
+        {"parts.screw.height_mm=50.1", "parts[2].height_mm: 50.1 mm is more than the sphere's "
+                                       "diameter (50 mm)"},
+        {"parts.screw.radius_mm=1e308", "parts[2].radius_mm: 1e+308 mm"},
+        {"parts.screw.z_mm=1e308", "parts[2].z_mm: 1e+308 mm"},
+        {"radius_mm=1e308", "radius_mm: 1e+308 mm is larger than any tippe top"},
+        {"radius_mm=0.025", "radius_mm: 0.025 mm is smaller than any tippe top"},
+        {"parts.screw.density_g_cm3=22.7", "parts[2].density_g_cm3: 22.7 g/cm^3 is denser"},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        tippe_error err = {0};
+        tippe_design *x = NULL;
+        const char *sets[] = {bad[k].set};
+        int rc = tippe_design_load("designs/m12-setscrew.json", sets, 1, &x, &err);
+        CHECK(rc == TIPPE_EINPUT && !x && strstr(err.msg, bad[k].want), "%s: rc %d '%s'",
+              bad[k].set, rc, err.msg);
+        tippe_design_free(x);
+    }
+    /* the screw exactly as long as the ball still loads (flush at both poles) */
+    const char *flush[] = {"parts.screw.height_mm=50", "travel_mm=[0,0.1]"};
+    if ((d = load("designs/m12-setscrew.json", flush, 2)))
+        tippe_design_free(d);
+}
+
 int main(void)
 {
     const double m12_z2[] = {0, 2.5, 8, 12.5, 17.5, 20};
@@ -427,5 +532,6 @@ int main(void)
         check_invariants(all[i]);
     check_overrides();
     check_materials();
+    check_protrusion();
     return check_summary("test_design");
 }

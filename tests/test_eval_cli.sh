@@ -150,4 +150,48 @@ assert (e['group'], e['subgroup']) == (c['group'], c['subgroup']), (e['subgroup'
     check "eval --z2 $z text names the subgroup" grep -q "subgroup $(python3 -c "import json; print(json.load(open('$tmp/c.json'))['subgroup'])")" "$tmp/g.txt"
 done
 
+# --- issue 19.6: a Z2 where the screw stands out of the sphere is marked -----------
+# The M12 screw's rim (r = 5.5 mm, z = Z2 + 7.5 mm) leaves the R = 25 mm sphere at
+# Z2 = sqrt(25^2 - 5.5^2) - 7.5 = 16.8875 mm; at Z2 = 18 it stands out by
+# hypot(5.5, 25.5) - 25 = 1.0864 mm (the design samples the rim's radius: 1e-5 mm).
+m12=designs/m12-setscrew.json
+"$tippe" eval $m12 --z2 18 --json >"$tmp/p18.json" 2>/dev/null
+check "eval --z2 18: model_valid false, the screw 1.0864 mm out near +z" python3 -c "
+import json, math, sys
+d = json.load(open(sys.argv[1])); p = d['protrusion']
+assert d['model_valid'] is False and p['part'] == 'screw' and p['pole'] == '+z', d
+assert abs(p['protrusion_mm'] - (math.hypot(5.5, 25.5) - 25)) < 1e-5, p
+assert p['theta_range_rad'][0] < 1e-3, p   # theta = 0 (resting on the +z side) is on it
+" "$tmp/p18.json"
+"$tippe" eval $m12 --z2 18 >"$tmp/p18.txt" 2>&1
+check "eval --z2 18 text: contact INVALID, naming the part" \
+    grep -q "^contact  INVALID at Z2 = 18 mm: part 'screw' stands out of the sphere by 1.086 mm near the +z pole" "$tmp/p18.txt"
+"$tippe" eval $m12 --z2 16.8 --json >"$tmp/p16.json" 2>/dev/null
+check "eval --z2 16.8: the screw is inside, model_valid true" python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1])); assert d['model_valid'] is True and d['protrusion'] is None, d
+" "$tmp/p16.json"
+"$tippe" eval $m12 --z2 16.8 >"$tmp/p16.txt" 2>&1
+check "eval --z2 16.8 text: no contact line" sh -c "! grep -q '^contact' '$tmp/p16.txt'"
+quick=(--accuracy fast --t-end 5)
+"$tippe" check $m12 --z2 18 "${quick[@]}" --json >"$tmp/c18.json" 2>/dev/null
+check "check --z2 18: the verdict is marked model_valid false" python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1])); assert d['model_valid'] is False and d['protrusion']['part'] == 'screw', d
+" "$tmp/c18.json"
+"$tippe" check $m12 --z2 18 "${quick[@]}" >"$tmp/c18.txt" 2>&1
+check "check --z2 18 text: contact INVALID after the verdict" \
+    grep -q "^contact    INVALID at Z2 = 18 mm: .*so the verdict above is no prediction" "$tmp/c18.txt"
+"$tippe" check $m12 --z2 12 "${quick[@]}" --json >"$tmp/c12.json" 2>/dev/null
+check "check --z2 12: model_valid true" python3 -c "
+import json, sys; assert json.load(open(sys.argv[1]))['model_valid'] is True" "$tmp/c12.json"
+"$tippe" simulate $m12 --z2 19 "${quick[@]}" --json >"$tmp/s19.json" 2>/dev/null
+check "simulate DESIGN --z2 19: model_valid false" python3 -c "
+import json, sys; d = json.load(open(sys.argv[1])); assert d['model_valid'] is False, d" "$tmp/s19.json"
+"$tippe" simulate $m12 --z2 19 "${quick[@]}" >"$tmp/s19.txt" 2>&1
+check "simulate DESIGN --z2 19 text: contact INVALID" grep -q "^contact   INVALID at Z2 = 19 mm" "$tmp/s19.txt"
+"$tippe" launch $m12 --z2 19 -n 2 "${quick[@]}" --json >"$tmp/l19.json" 2>/dev/null
+check "launch --z2 19: model_valid false" python3 -c "
+import json, sys; d = json.load(open(sys.argv[1])); assert d['model_valid'] is False, d" "$tmp/l19.json"
+
 finish

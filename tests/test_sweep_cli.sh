@@ -120,4 +120,35 @@ for verb in sweep compare; do
     check "$verb --help shows usage" grep -q "^usage: tippe $verb" "$tmp/.help"
 done
 
+# --- issue 19.6: zones where the screw stands out of the sphere are marked --------
+# The M12 screw's rim leaves the sphere at Z2 = sqrt(25^2 - 5.5^2) - 7.5 = 16.8875 mm
+# (tests/test_design.c checks the value to 1e-5 mm); the stated travel ends at 20.
+"$tippe" sweep "$m12" --json >"$tmp/m12p.json"
+check "sweep --json: sphere_only_mm and the zones beyond it marked" python3 -c '
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+edge = math.sqrt(25**2 - 5.5**2) - 7.5
+so = d["sphere_only_mm"]
+assert abs(so[1] - edge) < 1e-5 and abs(so[0] + edge) < 1e-5, so
+for key in ("zones", "intervals"):
+    for z in d[key]:
+        bad = z["model_invalid_mm"]
+        if z["z2_to_mm"] <= edge:
+            assert bad == [], z
+        else:
+            assert len(bad) == 1 and abs(bad[0][0] - max(edge, z["z2_from_mm"])) < 1e-5, z
+            assert bad[0][1] == z["z2_to_mm"], z
+assert any(z["model_invalid_mm"] for z in d["zones"])
+' "$tmp/m12p.json"
+out=$("$tippe" sweep "$m12")
+check "sweep table: the zone beyond 16.887 mm says MODEL INVALID" grep -q "MODEL INVALID 16.887 .. 20.000 mm" <<<"$out"
+check "sweep table: says what stands out" grep -q "part 'screw' stands out of the sphere" <<<"$out"
+"$tippe" sweep designs/m3-setscrew.json >"$tmp/m3p.txt"
+check "sweep of the M3 design (inside the sphere): nothing marked" sh -c "! grep -q 'INVALID' '$tmp/m3p.txt'"
+"$tippe" sweep designs/m3-setscrew.json --json >"$tmp/m3p.json"
+check "sweep --json of the M3 design: no zone marked" python3 -c '
+import json, sys; d = json.load(open(sys.argv[1])); assert all(z["model_invalid_mm"] == [] for z in d["zones"]), d' "$tmp/m3p.json"
+out=$("$tippe" sweep "$m12" --vary parts.screw.height_mm=10:20:3)
+check "sweep --vary marks the zones beyond with !" grep -q "III 16.360..20.000!" <<<"$out"
+
 finish
