@@ -36,6 +36,14 @@ static void cell(const char *s)
 
 static double clean(double x) { return fabs(x) < 5e-4 ? 0.0 : x; }
 
+/* "!" for a zone where some part stands out of the sphere (the model does not
+ * apply there: docs/design-format.md). */
+static const char *invalid_mark(const tippe_sweep_result *r, const tippe_sweep_zone *z)
+{
+    double f[2], t[2];
+    return tippe_sweep_zone_model_invalid(r, z, f, t) ? "!" : "";
+}
+
 static void print_wide(int n, tippe_design **d, tippe_sweep_result *r,
                                const tippe_sweep_bands_result *b)
 {
@@ -63,10 +71,10 @@ static void print_wide(int n, tippe_design **d, tippe_sweep_result *r,
             buf[0] = '\0';
             if (j < r[i].n_zones) {
                 const tippe_sweep_zone *z = &r[i].zones[j];
-                snprintf(buf, sizeof buf, "%-4s %8.3f %8.3f %8.3f %8.3f%s",
+                snprintf(buf, sizeof buf, "%-4s %8.3f %8.3f %8.3f %8.3f%s%s",
                          tippe_group_name(z->group), clean(z->z2_from_mm), clean(z->z2_to_mm),
                          z->z2_to_mm - z->z2_from_mm, tippe_sweep_zone_robust_mm(&r[i], &b[i], j),
-                         z->within_travel ? "" : "*");
+                         z->within_travel ? "" : "*", invalid_mark(&r[i], z));
             }
             cell(buf);
         }
@@ -98,7 +106,8 @@ static void print_wide(int n, tippe_design **d, tippe_sweep_result *r,
         cell(buf);
     }
     printf("\n(mm; robust: less the tolerance bands of the zone's ends, see tippe sweep)");
-    printf("\n* beyond the physical travel (a moving part would pass through a fixed one)\n");
+    printf("\n* beyond the physical travel (a moving part would pass through a fixed one)");
+    printf("\n! a part stands out of the sphere in (part of) the zone: the model does not apply\n");
 }
 
 /* The stacked table (fits 100 columns): one block of zones per design, then
@@ -116,9 +125,10 @@ static void print_stacked(int n, tippe_design **d, tippe_sweep_result *r,
         printf("    zone    from (mm)    to (mm)  width (mm)  robust (mm)\n");
         for (int j = 0; j < r[i].n_zones; j++) {
             const tippe_sweep_zone *z = &r[i].zones[j];
-            printf("    %-4s %12.3f %10.3f %11.3f %12.3f%s\n", tippe_group_name(z->group),
+            printf("    %-4s %12.3f %10.3f %11.3f %12.3f%s%s\n", tippe_group_name(z->group),
                    clean(z->z2_from_mm), clean(z->z2_to_mm), z->z2_to_mm - z->z2_from_mm,
-                   tippe_sweep_zone_robust_mm(&r[i], &b[i], j), z->within_travel ? "" : "  *");
+                   tippe_sweep_zone_robust_mm(&r[i], &b[i], j), z->within_travel ? "" : "  *",
+                   invalid_mark(&r[i], z)[0] ? "  !" : "");
         }
         printf("\n");
     }
@@ -138,8 +148,9 @@ static void print_stacked(int n, tippe_design **d, tippe_sweep_result *r,
                narrow);
     }
     printf("\n(robust: less the tolerance bands of the zone's ends, see tippe sweep; * beyond "
-           "the physical\ntravel, where a moving part would pass through a fixed one; --wide "
-           "puts the designs side by side)\n");
+           "the physical\ntravel, where a moving part would pass through a fixed one; ! a part "
+           "stands out of the\nsphere in (part of) the zone, where the model does not apply; "
+           "--wide puts the designs side by side)\n");
 }
 
 static int write_csv(const char *path, int n, tippe_design **d, const tippe_sweep_result *r,
