@@ -157,4 +157,14 @@ refused "map without --spin" "--spin FROM:TO:STEPS" map "$m12" --z2 10:15:2 --pl
 refused "check spin" "--spin 'fast'" check "$m12" --z2 10 --spin fast
 refused "no design" "no design file" check --z2 10
 
+# --- issue 19.6: map columns where the screw stands out of the sphere are marked ---
+# (the M12 screw's rim leaves the sphere at Z2 = 16.8875 mm: 14 and 16 inside, 18 and 20 out)
+"$tippe" map "$m12" --z2 14:20:4 --spin 5:20rev/s:2 -n 1 "${quick[@]}" --json >"$tmp/mapp.json"
+check "map --json: model_valid per cell, false beyond 16.8875 mm" python3 -c '
+import json, sys
+o = json.load(open(sys.argv[1]))
+assert all(c["model_valid"] == (c["z2_mm"] < 16.8875) for c in o["cells"]), o["cells"]' "$tmp/mapp.json"
+"$tippe" map "$m12" --z2 14:20:4 --spin 5:20rev/s:2 -n 1 "${quick[@]}" >"$tmp/mapp.txt"
+check "map text: the Z2 columns beyond marked !" grep -q "14.00  16.00 18.00! 20.00!" "$tmp/mapp.txt"
+
 finish

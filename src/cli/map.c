@@ -50,13 +50,16 @@ static int write_map_csv(const char *path, const tippe_launch_map *m, const tipp
     return tippe_report_commit(&rf, err);
 }
 
-static void print_map_table(const tippe_launch_map *m)
+static void print_map_table(const tippe_launch_map *m, const unsigned char *invalid)
 {
     printf("\nmost frequent outcome and its share in %% (N no_tip, T tip, H hang, L lost_contact, "
            "U undecided, B bounded)\n");
     printf("spin rev/s |");
-    for (int i = 0; i < m->n_z2; i++)
-        printf(" %6.2f", m->z2_mm[i]);
+    int any_invalid = 0;
+    for (int i = 0; i < m->n_z2; i++) {
+        printf(invalid[i] ? " %5.2f!" : " %6.2f", m->z2_mm[i]);
+        any_invalid |= invalid[i];
+    }
     printf("   <- Z2 (mm)\n-----------+");
     for (int i = 0; i < m->n_z2; i++)
         printf("-------");
@@ -70,6 +73,9 @@ static void print_map_table(const tippe_launch_map *m)
         }
         printf("\n");
     }
+    if (any_invalid)
+        printf("! at this Z2 a part stands out of the sphere: the top rests on it and the model "
+               "(contact on\n  the sphere only) does not apply; the column is no prediction\n");
 }
 
 /* Most launches one map may ask for: their records take ~150 bytes each
@@ -140,6 +146,9 @@ typedef struct {
     tippe_top *tops, *cell_tops;
     tippe_launch_record *rec;
     tippe_launch_tally *cells;
+    /* 1 where a part stands out of the sphere at z2[i]: the top rests on it
+     * and the model does not apply (docs/design-format.md) */
+    unsigned char *model_invalid;
 } map_grid;
 
 static void grid_free(map_grid *g)
@@ -151,6 +160,7 @@ static void grid_free(map_grid *g)
     free(g->cell_tops);
     free(g->cells);
     free(g->rec);
+    free(g->model_invalid);
 }
 
 static int grid_make(const hands_args *a, const tippe_design *d, map_grid *g)
@@ -166,8 +176,9 @@ static int grid_make(const hands_args *a, const tippe_design *d, map_grid *g)
     g->cell_spin_rad_s = malloc((size_t)g->n_cells * sizeof *g->cell_spin_rad_s);
     g->cells = calloc((size_t)g->n_cells, sizeof *g->cells);
     g->rec = calloc((size_t)g->total, sizeof *g->rec);
+    g->model_invalid = calloc((size_t)g->zn, 1);
     if (!g->z2 || !g->spin_rev_s || !g->tops || !g->cell_tops || !g->cell_spin_rad_s ||
-        !g->cells || !g->rec) {
+        !g->cells || !g->rec || !g->model_invalid) {
         fprintf(stderr, "tippe map: out of memory for %ld launches\n", g->total);
         return 1;
     }
@@ -178,6 +189,8 @@ static int grid_make(const hands_args *a, const tippe_design *d, map_grid *g)
         int rc = tippe_design_top(d, g->z2[i], &g->tops[i], &err);
         if (rc)
             return tippe_cli_fail(a->verb, &err, rc);
+        tippe_design_protrusion pr;
+        g->model_invalid[i] = (unsigned char)tippe_design_protrusion_at(d, g->z2[i], &pr);
     }
     for (int j = 0; j < g->sn; j++)
         g->spin_rev_s[j] =
@@ -232,6 +245,7 @@ static cJSON *cells_json(const map_grid *g)
             cJSON_AddStringToObject(co, "subgroup", tippe_group_name(cls.group));
             cJSON_AddNumberToObject(co, "agree", (double)c->agree);
             cJSON_AddNumberToObject(co, "comparable", (double)c->comparable);
+            cJSON_AddBoolToObject(co, "model_valid", !g->model_invalid[i]);
             cJSON_AddItemToArray(arr, co);
         }
     return arr;
@@ -270,7 +284,7 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
            g->spin_rev_s[0], g->spin_rev_s[g->sn - 1], g->sn, a->n, a->seed);
     hands_print_distribution(&a->o, 1);
     hands_print_model(&a->o);
-    print_map_table(m);
+    print_map_table(m, g->model_invalid);
     tippe_launch_tally all;
     tippe_error err;
     if (tippe_launch_tally_records(g->rec, g->total, &all, &err) == TIPPE_OK) {
