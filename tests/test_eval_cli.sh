@@ -190,6 +190,9 @@ check "simulate DESIGN --z2 19: model_valid false" python3 -c "
 import json, sys; d = json.load(open(sys.argv[1])); assert d['model_valid'] is False, d" "$tmp/s19.json"
 "$tippe" simulate $m12 --z2 19 "${quick[@]}" >"$tmp/s19.txt" 2>&1
 check "simulate DESIGN --z2 19 text: contact INVALID" grep -q "^contact   INVALID at Z2 = 19 mm" "$tmp/s19.txt"
+"$tippe" classify $m12 --z2 18 --json >"$tmp/k18.json" 2>/dev/null
+check "classify DESIGN --z2 18: model_valid false" python3 -c "
+import json, sys; d = json.load(open(sys.argv[1])); assert d['model_valid'] is False, d" "$tmp/k18.json"
 "$tippe" launch $m12 --z2 19 -n 2 "${quick[@]}" --json >"$tmp/l19.json" 2>/dev/null
 check "launch --z2 19: model_valid false" python3 -c "
 import json, sys; d = json.load(open(sys.argv[1])); assert d['model_valid'] is False, d" "$tmp/l19.json"

@@ -127,6 +127,7 @@ typedef struct {
     double z2_mm;
     int has_z2, json;
     tippe_cli_sets sets;
+    tippe_design_protrusion protrusion; /* a design's, at z2_mm */
 } classify_args;
 
 static int classify_parse(classify_args *a, int argc, char **argv)
@@ -225,6 +226,8 @@ static int design_numbers(classify_args *a, tippe_top *top)
         tippe_cli_design_warnings(VERB, d);
     if (!rc)
         rc = tippe_design_top(d, a->z2_mm, top, &err);
+    if (!rc)
+        tippe_design_protrusion_at(d, a->z2_mm, &a->protrusion);
     tippe_design_free(d);
     if (rc)
         return tippe_cli_fail(VERB, &err, rc);
@@ -266,6 +269,7 @@ int tippe_cli_classify(int argc, char **argv)
             cJSON_AddStringToObject(o, "file", a.design);
             cJSON_AddNumberToObject(o, "z2_mm", a.z2_mm);
             tippe_cli_json_sets(o, &a.sets);
+            tippe_cli_json_model_validity(o, &a.protrusion);
         }
         return tippe_cli_print_json(VERB, o);
     }
@@ -275,5 +279,8 @@ int tippe_cli_classify(int argc, char **argv)
                tippe_cli_sets_text(&a.sets, sets, sizeof sets));
     }
     print_text(&cls, &th, v, have_top);
+    if (a.design)
+        tippe_cli_print_model_validity(&a.protrusion, a.z2_mm, "contact   ",
+                                       "the group above is");
     return 0;
 }
