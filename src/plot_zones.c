@@ -17,6 +17,7 @@
 #define C_BPLUS 0x8e2ac0u
 #define C_BMINUS 0x9a6a1eu
 #define C_TRAVEL 0x555555u
+#define C_INVALID 0xC00000u /* a part stands out of the sphere: the model does not apply */
 #define C_BAND 0x202020u
 #define BAND_ALPHA 0.30
 
@@ -134,6 +135,33 @@ static void frame_sample(const tippe_sweep_path *path, const tippe_sweep_result 
     f->ymin -= pad;
     f->ymax += 2.2 * pad; /* room for the zone labels */
     f->xspan = r->to_mm - r->from_mm;
+}
+
+/* Red hatching where a part stands out of the sphere (outside the sphere-only
+ * interval) within the physical travel (beyond it is hatched already): the top
+ * rests on the part there and the model does not apply. 1 if any. */
+static int draw_invalid_hatch(const tippe_sweep_result *r, const zone_frame *f)
+{
+    if (!r->has_sphere_only)
+        return 0;
+    double lo = r->from_mm, hi = r->to_mm;
+    if (r->has_travel) {
+        lo = fmax(lo, r->travel_from_mm);
+        hi = fmin(hi, r->travel_to_mm);
+    }
+    const double a = r->sphere_only_from_mm, b = r->sphere_only_to_mm;
+    double x0[2] = {lo, fmax(b, lo)}, x1[2] = {fmin(a, hi), hi};
+    if (a > b) {
+        x1[0] = hi;
+        x0[1] = hi;
+    }
+    int any = 0;
+    for (int k = 0; k < 2; k++)
+        if (x1[k] > x0[k]) {
+            tippe_plot_hatch(x0[k], x1[k], f->ymin, f->ymax, C_INVALID);
+            any = 1;
+        }
+    return any;
 }
 
 /* Each zone shaded in its group's colour, and hatching beyond the physical
@@ -297,7 +325,7 @@ static void draw_band_bars(const tippe_sweep_result *r, const tippe_sweep_bands_
     }
 }
 
-static void draw_zone_legend(const int present[6], int banded, int beyond)
+static void draw_zone_legend(const int present[6], int banded, int beyond, int invalid)
 {
     tippe_plot_key keys[20];
     int nk = 0;
@@ -322,6 +350,9 @@ static void draw_zone_legend(const int present[6], int banded, int beyond)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_LINE, "physical travel ends", 0x000000u, 1,
                                       2.0, TIPPE_PLOT_DASHED};
     }
+    if (invalid)
+        keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "part out: model invalid",
+                                      C_INVALID, 1.0, 0, 0};
     tippe_plot_legend(keys, nk, "outside", 1, 0.8);
 }
 
@@ -347,6 +378,7 @@ int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path
 
     int present[6] = {0};
     const int beyond = draw_zone_shading(r, f, present);
+    const int invalid = draw_invalid_hatch(r, f);
     const int banded = draw_band_shading(r, b, f);
     tippe_plot_grid();
     double zero[2] = {0.0, 0.0}, xr[2] = {r->from_mm, r->to_mm};
@@ -362,7 +394,7 @@ int tippe_sweep_plot_zones_banded(const char *file, const tippe_sweep_path *path
         char esc[400];
         tippe_plot_page_title(tippe_plot_escape(title, esc, sizeof esc), 1.1);
     }
-    draw_zone_legend(present, banded, beyond);
+    draw_zone_legend(present, banded, beyond, invalid);
     free(f);
     return tippe_plot_close(p, err);
 }

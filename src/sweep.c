@@ -679,7 +679,12 @@ static void print_sphere_only(FILE *out, const tippe_sweep_result *r, const tipp
     if (!r->has_sphere_only)
         return;
     const double a = r->sphere_only_from_mm, b = r->sphere_only_to_mm;
-    if (a <= b && r->from_mm >= a && r->to_mm <= b)
+    double lo = r->from_mm, hi = r->to_mm; /* the sweep within the physical travel */
+    if (r->has_travel) {
+        lo = GSL_MAX(lo, r->travel_from_mm);
+        hi = GSL_MIN(hi, r->travel_to_mm);
+    }
+    if (a <= b && lo >= a && hi <= b)
         return;
     if (a > b)
         fprintf(out, "contact  material stands out of the sphere at every Z2");
@@ -690,7 +695,7 @@ static void print_sphere_only(FILE *out, const tippe_sweep_result *r, const tipp
                  "         (contact on the sphere only) does not apply: zones there are "
                  "marked MODEL INVALID\n");
     tippe_design_protrusion p;
-    const double z = a > b ? r->to_mm : r->to_mm > b ? r->to_mm : r->from_mm;
+    const double z = a > b || hi > b ? hi : lo;
     if (d && tippe_design_protrusion_at(d, z, &p)) {
         char text[512];
         tippe_design_protrusion_text(&p, text, sizeof text);
@@ -740,7 +745,8 @@ void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe
                      side_down(z->com_side));
         }
         double bad_from[2], bad_to[2];
-        int n_bad = tippe_sweep_zone_model_invalid(r, z, bad_from, bad_to);
+        /* beyond the physical travel the top cannot be set: said already */
+        int n_bad = z->within_travel ? tippe_sweep_zone_model_invalid(r, z, bad_from, bad_to) : 0;
         for (int k = 0; k < n_bad; k++) {
             size_t len = strlen(notes);
             if (bad_from[k] == z->z2_from_mm && bad_to[k] == z->z2_to_mm)

@@ -41,7 +41,7 @@ static double clean(double x) { return fabs(x) < 5e-4 ? 0.0 : x; }
 static const char *invalid_mark(const tippe_sweep_result *r, const tippe_sweep_zone *z)
 {
     double f[2], t[2];
-    return tippe_sweep_zone_model_invalid(r, z, f, t) ? "!" : "";
+    return z->within_travel && tippe_sweep_zone_model_invalid(r, z, f, t) ? "!" : "";
 }
 
 static void print_wide(int n, tippe_design **d, tippe_sweep_result *r,

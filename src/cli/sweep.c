@@ -54,7 +54,7 @@ static void print_vary_table(const tippe_design *d, const tippe_sweep_vary_resul
             printf("%s%s %.3f..%.3f%s%s", j ? " | " : "", tippe_group_name(z->group),
                    fabs(z->z2_from_mm) < 5e-4 ? 0.0 : z->z2_from_mm,
                    fabs(z->z2_to_mm) < 5e-4 ? 0.0 : z->z2_to_mm, z->within_travel ? "" : "*",
-                   tippe_sweep_zone_model_invalid(r, z, bf, bt) ? "!" : "");
+                   z->within_travel && tippe_sweep_zone_model_invalid(r, z, bf, bt) ? "!" : "");
         }
         printf("\n");
     }
