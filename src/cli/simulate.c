@@ -142,7 +142,8 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                f->spin, f->phi_dot, f->slip_speed);
         break;
     }
-    tippe_cli_print_model_validity(&sc->protrusion, sc->z2_mm, "contact   ", "the verdict above is");
+    tippe_cli_print_model_validity(&sc->protrusion, sc->z2_mm, "contact   ",
+                                   "the verdict above is");
     if (r->last.t > r->t_verdict) /* --full, --csv or --plot: the run went on to t_end */
         printf("          at the end of the run, t = %.6g s: theta %.6g rad (%.2f deg), spin %.6g "
                "rad/s, contact speed %.3g m/s\n",
