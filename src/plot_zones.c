@@ -164,6 +164,22 @@ static int draw_invalid_hatch(const tippe_sweep_result *r, const zone_frame *f)
     return any;
 }
 
+/* Red hatching over the part of zone zn where a part stands out of the sphere,
+ * across [a, b] of the other axis (Z2 along x when z2_on_x, else along y). */
+static int hatch_invalid_zone(const tippe_sweep_result *r, const tippe_sweep_zone *zn, double a,
+                              double b, int z2_on_x)
+{
+    double f[2], t[2];
+    int n = tippe_sweep_zone_model_invalid(r, zn, f, t);
+    for (int k = 0; k < n; k++) {
+        if (z2_on_x)
+            tippe_plot_hatch(f[k], t[k], a, b, C_INVALID);
+        else
+            tippe_plot_hatch(a, b, f[k], t[k], C_INVALID);
+    }
+    return n > 0;
+}
+
 /* Each zone shaded in its group's colour, and hatching beyond the physical
  * travel; present[g] set for the groups shown. 1 if any hatching. */
 static int draw_zone_shading(const tippe_sweep_result *r, const zone_frame *f, int present[6])
@@ -711,7 +727,7 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
     if (st != TIPPE_OK)
         return st;
     tippe_plot_panel(0.09, 0.70, 0.11, 0.88, xa, xb, zmin, zmax);
-    int present[6] = {0}, beyond = 0;
+    int present[6] = {0}, beyond = 0, invalid = 0;
     for (int i = 0; i < v->n; i++) {
         const tippe_sweep_result *r = &v->results[i];
         double c0 = v->values[i] - 0.5 * fabs(dv), c1 = v->values[i] + 0.5 * fabs(dv);
@@ -723,6 +739,8 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
             if (!zn->within_travel) {
                 tippe_plot_hatch(c0, c1, zn->z2_from_mm, zn->z2_to_mm, C_TRAVEL);
                 beyond = 1;
+            } else {
+                invalid |= hatch_invalid_zone(r, zn, c0, c1, 0);
             }
         }
     }
@@ -767,6 +785,9 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
     if (beyond)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "beyond physical travel", C_TRAVEL,
                                       1.0, 0, 0};
+    if (invalid)
+        keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "part out: model invalid",
+                                      C_INVALID, 1.0, 0, 0};
     int travel_shown = 0;
     for (int i = 0; i < v->n; i++) {
         double a = v->results[i].travel_from_mm, b = v->results[i].travel_to_mm;
@@ -784,7 +805,7 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
 /* One design's bar: its zones along Z2 between y0 and y1, hatched beyond the
  * physical travel, each zone named where it is wide enough to hold the name. */
 static void compare_bar(const tippe_sweep_result *r, double y0, double y1, double span,
-                        int *present, int *beyond)
+                        int *present, int *beyond, int *invalid)
 {
     for (int j = 0; j < r->n_zones; j++) {
         const tippe_sweep_zone *zn = &r->zones[j];
@@ -794,6 +815,8 @@ static void compare_bar(const tippe_sweep_result *r, double y0, double y1, doubl
         if (!zn->within_travel) {
             tippe_plot_hatch(zn->z2_from_mm, zn->z2_to_mm, y0, y1, C_TRAVEL);
             *beyond = 1;
+        } else {
+            *invalid |= hatch_invalid_zone(r, zn, y0, y1, 1);
         }
         if (zn->z2_to_mm - zn->z2_from_mm > 0.06 * span)
             tippe_plot_text(0.5 * (zn->z2_from_mm + zn->z2_to_mm), 0.5 * (y0 + y1) - 0.08, 0.0,
@@ -821,11 +844,11 @@ int tippe_sweep_plot_compare(const char *file, const tippe_sweep_result *r,
     if (st != TIPPE_OK)
         return st;
     tippe_plot_panel(0.27, 0.70, 0.16 + 0.3 / (n + 2), 0.86, zmin, zmax, 0.0, (double)n);
-    int present[6] = {0}, beyond = 0;
+    int present[6] = {0}, beyond = 0, invalid = 0;
     char esc[300];
     for (int i = 0; i < n; i++) {
         double y1 = n - i - 0.15, y0 = n - i - 0.85; /* the first design on top */
-        compare_bar(&r[i], y0, y1, zmax - zmin, present, &beyond);
+        compare_bar(&r[i], y0, y1, zmax - zmin, present, &beyond, &invalid);
         tippe_plot_margin_text("lv", 0.8, (n - i - 0.5) / n, 1.0, 0.8, 0x000000u,
                                tippe_plot_escape(labels[i], esc, sizeof esc));
     }
@@ -842,6 +865,9 @@ int tippe_sweep_plot_compare(const char *file, const tippe_sweep_result *r,
     if (beyond)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "beyond physical travel", C_TRAVEL,
                                       1.0, 0, 0};
+    if (invalid)
+        keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "part out: model invalid",
+                                      C_INVALID, 1.0, 0, 0};
     tippe_plot_legend(keys, nk, "outside", 1, 0.8);
     return tippe_plot_close(p, err);
 }
