@@ -183,7 +183,9 @@ void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
  * written, found by really creating (and removing) a temporary next to it
  * (tippe/report.h): 0, or 2 after a usage error naming option, path and
  * reason (a directory, a path through a file, /proc, no permission, or the
- * same file as an earlier output of this run). "-" is standard output. Every
+ * same file as an earlier output of this run). "-" is standard output, and
+ * from then on the verb's text (printf) goes to stderr, so that a piped file
+ * is only the file. Every
  * verb calls it for every output before any work, so that bad usage leaves
  * nothing and costs nothing. A plot is also refused (2) when the command's
  * plotting module (src/modules/) does not load: said before the work, not after. */

@@ -7,6 +7,7 @@
 
 #include <cjson/cJSON.h>
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -250,6 +251,13 @@ static int write_best(const char *path, const tippe_opt_spec *s, const tippe_opt
     cJSON *d = tippe_opt_design_json(s, &b->best, path, how, err);
     if (!d)
         return err->code ? err->code : TIPPE_ECOMPUTE;
+    /* On standard output the file may land anywhere: its materials table by
+     * its absolute path (it came relative to the current directory). */
+    const cJSON *m = cJSON_GetObjectItemCaseSensitive(d, "materials");
+    char abs_mat[PATH_MAX];
+    if (!strcmp(path, "-") && cJSON_IsString(m) && m->valuestring[0] != '/' &&
+        realpath(m->valuestring, abs_mat))
+        cJSON_ReplaceItemInObjectCaseSensitive(d, "materials", cJSON_CreateString(abs_mat));
     char *text = cJSON_Print(d);
     cJSON_Delete(d);
     if (!text)
