@@ -38,13 +38,10 @@ static int parse_args(int argc, char **argv, optimise_args *a)
         {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
          .help = "every evaluated candidate (choice, parameters, zones in mm,\n"
                  "constraint values, status, score)"},
-        {.name = "seed", .kind = TIPPE_CLI_LONG, .value = &a->seed, .arg = "S", .min = 0,
-         .max = 2147483647.0, .def = "1",
-         .help = "seed of the stochastic algorithms (CRS2, MLSL, ISRES); DIRECT-L,\n"
-                 "COBYLA and BOBYQA draw no random numbers"},
-        {.name = "threads", .kind = TIPPE_CLI_LONG, .value = &a->threads, .arg = "N", .min = 1,
-         .max = 1024, .def = "all cores",
-         .help = "OpenMP threads for the choices; the answer does not depend on it"},
+        TIPPE_CLI_SEED_OPT(&a->seed, "seed of the stochastic algorithms (CRS2, MLSL, ISRES); "
+                                     "DIRECT-L,\nCOBYLA and BOBYQA draw no random numbers"),
+        TIPPE_CLI_THREADS_OPT(&a->threads, "OpenMP threads for the choices; the answer does "
+                                           "not depend on it"),
         {NULL},
     };
     tippe_cli_spec spec = {
