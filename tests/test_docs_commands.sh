@@ -4,8 +4,10 @@
 # build/..., tools/..., mpirun, mkdir, for, time, export, cmake, a=...) is run
 # in a scratch directory where `build` is the tested tippe's directory,
 # `designs` and `tools` are the repository's, and `docs/`, `out/` are empty
-# scratch folders, so that every output lands in scratch. A failure names the
-# file, the line and the command, with the end of its stderr.
+# scratch folders, so that every output lands in scratch; an output anywhere but
+# under out/ or docs/img/ is a failure (examples must not litter the
+# repository). A failure names the file, the line and the command, with the end
+# of its stderr.
 #
 # Not run (said in the log): commands that build the project, run this suite
 # or the benchmarks (cmake, tools/quickstart.sh, tools/run-tests.sh,
@@ -137,4 +139,9 @@ $(tail -n 5 "$tmp/err" | sed 's/^/    /')"
 done
 [ -s "$tmp/skipped" ] && sed 's/^/  /' "$tmp/skipped"
 check "found command blocks to run" test "$passed" -gt 0
+# Examples write under out/ (ignored by git), or regenerate docs/img/; nothing
+# lands in the repository's root or elsewhere in it (issue 19.12).
+stray=$(cd "$tmp/run" && { ls -A | grep -vxE 'build|designs|tools|out|docs'
+    ls -A docs | grep -vx img | sed 's|^|docs/|'; })
+check "the examples wrote only under out/ and docs/img/, not: $(echo $stray)" test -z "$stray"
 finish
