@@ -183,7 +183,10 @@ static int av_fail(encoder *e, const char *what, int averr)
 static int write_cb(void *opaque, uint8_t *buf, int size)
 {
     FILE *f = opaque;
-    return fwrite(buf, 1, (size_t)size, f) == (size_t)size ? size : AVERROR(EIO);
+    errno = 0;
+    if (fwrite(buf, 1, (size_t)size, f) == (size_t)size)
+        return size;
+    return AVERROR(errno ? errno : EIO); /* the reason, e.g. no space left */
 }
 
 static int64_t seek_cb(void *opaque, int64_t offset, int whence)
