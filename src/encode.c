@@ -183,7 +183,10 @@ static int av_fail(encoder *e, const char *what, int averr)
 static int write_cb(void *opaque, uint8_t *buf, int size)
 {
     FILE *f = opaque;
-    return fwrite(buf, 1, (size_t)size, f) == (size_t)size ? size : AVERROR(EIO);
+    errno = 0;
+    if (fwrite(buf, 1, (size_t)size, f) == (size_t)size)
+        return size;
+    return AVERROR(errno ? errno : EIO); /* the reason, e.g. no space left */
 }
 
 static int64_t seek_cb(void *opaque, int64_t offset, int whence)
@@ -550,7 +553,7 @@ int tippe_encode_film(FILE *out, const tippe_encode_options *o, tippe_frame_fn d
     if (rc)
         return rc;
     encoder e = {.out = out, .o = o, .draw = draw, .ctx = ctx, .prog = prog, .err = err};
-    int seekable = 0;
+    int seekable = 0, header = 0;
     AVDictionary *mux_opts = NULL;
     if (!(rc = open_muxer(&e, &seekable)))
         rc = open_codec(&e);
@@ -561,13 +564,17 @@ int tippe_encode_film(FILE *out, const tippe_encode_options *o, tippe_frame_fn d
         int arc = ff.avformat_write_header(e.fmt, &mux_opts);
         if (arc < 0)
             rc = av_fail(&e, "writing", arc);
+        header = arc >= 0;
     }
     ff.av_dict_free(&mux_opts);
     if (!rc)
         rc = o->format == TIPPE_FILM_GIF ? encode_gif(&e) : encode_yuv(&e);
-    if (!rc) {
+    /* After a written header the trailer is due even when a write failed: it
+     * frees what the muxer holds (the GIF muxer keeps the last packet until
+     * then), and avformat_free_context does not. */
+    if (header) {
         int arc = ff.av_write_trailer(e.fmt);
-        if (arc < 0)
+        if (!rc && arc < 0)
             rc = av_fail(&e, "writing", arc);
     }
     if (e.fmt && e.fmt->pb) {

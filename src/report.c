@@ -278,15 +278,19 @@ static int open_common(tippe_report_file *rf, const char *path, const char *what
         rc = may_write(rf, &old, err);
     if (rc)
         return rc;
-    if (rf->mode == TIPPE_REPORT_STDOUT) {
-        rf->f = stream ? stdout : NULL;
-        return TIPPE_OK;
-    }
     int fd = -1;
+    /* "-" is descriptor 1, not the C stream stdout: a program that writes its
+     * data to "-" may send its own text elsewhere by pointing stdout there. */
+    if (rf->mode == TIPPE_REPORT_STDOUT && stream &&
+        (fd = fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3)) < 0)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write %s: %s", path, what,
+                               strerror(errno));
+    if (rf->mode == TIPPE_REPORT_STDOUT && !stream)
+        return TIPPE_OK;
     if (rf->mode == TIPPE_REPORT_REPLACE) {
         if ((rc = make_temp(rf, exists ? &old : NULL, err, &fd)) != 0)
             return rc;
-    } else {
+    } else if (rf->mode == TIPPE_REPORT_DIRECT) {
         if (stream && (fd = open(rf->target, O_WRONLY | O_NOCTTY | O_CLOEXEC)) < 0)
             return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write %s: %s", path, what,
                                    strerror(errno));
@@ -345,14 +349,8 @@ static int close_stream(tippe_report_file *rf)
     if (!rf->f)
         return 0;
     int e = 0;
-    if (rf->mode == TIPPE_REPORT_STDOUT) {
-        errno = 0;
-        if (fflush(stdout) != 0 || ferror(stdout))
-            e = errno ? errno : EIO;
-    } else {
-        if (fclose(rf->f) != 0 || rf->io_errno)
-            e = rf->io_errno ? rf->io_errno : EIO;
-    }
+    if (fclose(rf->f) != 0 || rf->io_errno)
+        e = rf->io_errno ? rf->io_errno : EIO;
     rf->f = NULL;
     return e;
 }

@@ -12,6 +12,17 @@ c=designs/shell-rod-nylon.json
 check "compare exits 0" test $? -eq 0
 check "compare's table fits 100 columns" bash -c '! awk "length > 100" "$1" | grep -q .' _ "$tmp/t.txt"
 "$tippe" compare "$a" "$b" "$c" --wide >"$tmp/w.txt"
+# Issue 19.11: the families a design has, one space between them, whichever are
+# missing (shell-band has only group III: "no (III)", once printed "no ( III)").
+"$tippe" compare "$a" designs/shell-band.json >"$tmp/f.txt"
+check "compare: 'yes (I II III)' for M12, 'no (III)' for the band" python3 - "$tmp/f.txt" <<'PY'
+import re, sys
+rows = [l for l in open(sys.argv[1]) if re.match(r"\[\d", l)][-2:]
+assert "yes (I II III)" in rows[0] and "no (III)" in rows[1], rows
+PY
+"$tippe" compare "$b" designs/shell-band.json --wide >"$tmp/fw.txt"
+check "compare --wide: '3-in-1: no (I II)' and '3-in-1: no (III)'" \
+    bash -c 'grep -q "3-in-1: no (I II) " "$1" && grep -q "3-in-1: no (III) *$" "$1"' _ "$tmp/fw.txt"
 check "--wide puts the designs side by side (3 x 44 columns)" \
     bash -c 'awk "length > 100" "$1" | grep -q .' _ "$tmp/w.txt"
 

@@ -4,13 +4,20 @@
 # build/..., tools/..., mpirun, mkdir, for, time, export, cmake, a=...) is run
 # in a scratch directory where `build` is the tested tippe's directory,
 # `designs` and `tools` are the repository's, and `docs/`, `out/` are empty
-# scratch folders, so that every output lands in scratch. A failure names the
-# file, the line and the command, with the end of its stderr.
+# scratch folders, so that every output lands in scratch; an output anywhere but
+# under out/ or docs/img/ is a failure (examples must not litter the
+# repository). A failure names the file, the line and the command, with the end
+# of its stderr.
 #
 # Not run (said in the log): commands that build the project, run this suite
 # or the benchmarks (cmake, tools/quickstart.sh, tools/run-tests.sh,
-# tools/bench/run.sh), mpirun without Open MPI or tippe-mpi, and any block
-# right after the line <!-- docs-test: skip REASON --> in the Markdown.
+# tools/bench/run.sh), any block right after the line
+# <!-- docs-test: skip REASON --> in the Markdown, and a command that needs an
+# optional tool which is missing here: openscad (not installed by default,
+# tools/deps.sh), mpirun, or build/tippe-mpi (built only when Open MPI was found;
+# any mpirun command needs it, since tippe hands over to it). Such a command is
+# recognised wherever the tool stands as a program: first, after `time` or
+# VAR=value, or after a pipe, ;, && or ||.
 #
 # Usage: test_docs_commands.sh TIPPE [FILE.md ...] (default: README.md docs/*.md)
 source "$(dirname "$0")/lib.sh"
@@ -27,9 +34,13 @@ ln -s "$repo/designs" "$tmp/run/designs"
 ln -s "$repo/tools" "$tmp/run/tools"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
-if ! command -v mpirun >/dev/null || [ ! -x "$bindir/tippe-mpi" ]; then
-    export NO_MPI=1
-fi
+# The optional tools that are missing here, for the Markdown reader below.
+missing=()
+for tool in openscad mpirun; do
+    command -v "$tool" >/dev/null 2>&1 || missing+=("$tool")
+done
+[ -x "$bindir/tippe-mpi" ] || missing+=(tippe-mpi)
+export DOCS_MISSING="${missing[*]}"
 
 # The blocks as runnable scripts: one file per block, each command preceded by
 # a marker naming its file and line (read back to say which command failed).
@@ -39,6 +50,18 @@ out, files = sys.argv[1], sys.argv[2:]
 os.makedirs(out)
 COMMAND = re.compile(r"^(build/|tools/|mpirun |mkdir |for |time |export |cmake |[a-z_]+=)")
 SKIP = re.compile(r"^(cmake |tools/quickstart\.sh|tools/run-tests\.sh|tools/bench/run\.sh)")
+MISSING = set(os.environ.get("DOCS_MISSING", "").split())
+# a program's place: the start, after `time` or VAR=value, or after | ; & ( {
+PROGRAM = r"(?:^|[|;&({]\s*)(?:(?:time|env|nice)\s+|[A-Za-z_][A-Za-z0-9_]*=\S*\s+)*"
+NEEDS = {"openscad": re.compile(PROGRAM + r"openscad\b"),
+         "mpirun": re.compile(PROGRAM + r"(?:mpirun|mpiexec)\b")}
+
+def needs(cmd):
+    """The optional tools cmd runs (tippe-mpi with any mpirun: tippe hands over)."""
+    tools = {t for t, r in NEEDS.items() if r.search(cmd)}
+    if "mpirun" in tools or re.search(r"(?:^|[\s/])build/tippe-mpi\b", cmd):
+        tools.add("tippe-mpi")
+    return tools
 
 def shell_quote(text):
     return "'" + text.replace("'", "'\\''") + "'"
@@ -91,8 +114,9 @@ for path in files:
                 where = "%s:%d" % (path, line)
                 why = skip or ("builds the project, runs the suite or the benchmarks"
                                if SKIP.match(cmd) else None)
-                if not why and cmd.startswith("mpirun") and os.environ.get("NO_MPI"):
-                    why = "no Open MPI (mpirun or tippe-mpi missing)"
+                absent = sorted(needs(cmd) & MISSING)
+                if not why and absent:
+                    why = "needs %s, not installed or not built here" % " and ".join(absent)
                 if why:
                     f.write("echo %s >&4\n" % shell_quote("SKIPPED %s: %s (%s)" % (where, cmd, why)))
                     continue
@@ -115,4 +139,9 @@ $(tail -n 5 "$tmp/err" | sed 's/^/    /')"
 done
 [ -s "$tmp/skipped" ] && sed 's/^/  /' "$tmp/skipped"
 check "found command blocks to run" test "$passed" -gt 0
+# Examples write under out/ (ignored by git), or regenerate docs/img/; nothing
+# lands in the repository's root or elsewhere in it (issue 19.12).
+stray=$(cd "$tmp/run" && { ls -A | grep -vxE 'build|designs|tools|out|docs'
+    ls -A docs | grep -vx img | sed 's|^|docs/|'; })
+check "the examples wrote only under out/ and docs/img/, not: $(echo $stray)" test -z "$stray"
 finish

@@ -87,6 +87,29 @@ check "--csv - exits 0" test $? -eq 0
 check "--csv - writes the CSV to stdout" grep -qxF "$(head -1 "$d/ref.csv")" "$d/stdout.txt"
 check "--csv - writes every row" test "$(grep -c '^[0-9]' "$d/stdout.txt")" -ge "$(($(wc -l <"$d/ref.csv") - 1))"
 check "no file named '-' appears" test ! -e "$d/-"
+# Issue 19.11: with an output on stdout, stdout is that file alone and the text
+# report goes to stderr; a parser reading the pipe gets exactly the file.
+"$tippe" simulate "$sc" --csv - 2>"$d/stdout.err" | cat >"$d/piped.csv"
+check "--csv - | cat: the bytes --csv FILE writes, nothing else" cmp -s "$d/piped.csv" "$d/ref.csv"
+check "--csv -: the text report is on stderr" grep -q "^verdict" "$d/stdout.err"
+"$tippe" launch designs/m12-setscrew.json --z2 15 -n 3 --accuracy fast --t-end 20 --csv - \
+    2>/dev/null | python3 -c '
+import csv, sys
+rows = list(csv.reader(sys.stdin))
+assert len(rows) == 4 and all(len(r) == len(rows[0]) for r in rows), rows' 2>/dev/null
+check "launch --csv - | a CSV parser: a header and 3 rows of equal width" test $? -eq 0
+"$tippe" optimise tests/data/optimise-small.json -o - 2>/dev/null >"$d/best-piped.json"
+check "optimise -o - | json.load: a design with parts" json_ok "$d/best-piped.json" "len(o['parts']) > 0"
+"$tippe" eval "$d/best-piped.json" --z2 0 >/dev/null 2>&1
+check "the piped best design loads in tippe eval" test $? -eq 0
+"$tippe" simulate "$sc" --csv - >/dev/full 2>"$d/full.err"
+check "--csv - into a full disk: exit 1" test $? -eq 1
+check "--csv - into a full disk: says so" grep -q "No space left on device" "$d/full.err"
+(cd "$d" && "$tippe_abs" export "$OLDPWD/designs/m12-setscrew.json" -o - >"$d/export.out" \
+    2>"$d/export.err")
+check "export -o -: refused with exit 2" test $? -eq 2
+check "export -o -: the message says a directory is needed" grep -q "give a directory" "$d/export.err"
+check "export -o -: no directory named '-'" test ! -e "$d/-"
 
 # --- defect 2: a failed write is an error, and the old file survives -----------
 "$tippe" sweep "$m3" >/dev/full 2>"$d/err"

@@ -6,6 +6,7 @@
 source "$(dirname "$0")/lib.sh"
 setup "$@"
 d=designs/m3-setscrew.json
+m12=designs/m12-setscrew.json
 
 # --opt=value and --opt value give the same report; 2cm is 20 mm.
 "$tippe" eval "$d" --z2 20 --json >"$tmp/a.json" 2>&1
@@ -36,8 +37,25 @@ expect_fail "beyond the printed bound" 2 "--theta '3.1416'" -- simulate "$sc" --
 expect_fail "required option" 2 "--z2 MM is required" -- eval "$d"
 expect_fail "flag with a value" 2 "--json=1 takes no value" -- eval "$d" --z2 5 --json=1
 expect_fail "unknown option" 2 "unknown option '--frobnicate'" -- eval "$d" --z2 5 --frobnicate
-# a unique prefix is the option (getopt_long), a prefix of two is refused naming both
-check "--js is --json" json_ok <("$tippe" eval "$d" --z2 20 --js) "o['z2_mm'] == 20"
+# Issue 19.10: an option is its whole name, never a prefix (getopt_long's default,
+# which took --z for --z2 and --out for --output); the message names the option meant.
+expect_fail "--js is not --json" 2 "unknown option '--js' (did you mean --json?)" -- \
+    eval "$d" --z2 20 --js
+expect_fail "--z=5 is not --z2" 2 "unknown option '--z' (did you mean --z2?)" -- eval "$d" --z=5
+expect_fail "--z 5 is not --z2" 2 "unknown option '--z' (did you mean --z2?)" -- eval "$d" --z 5
+expect_fail "--out is not --output" 2 "unknown option '--out' (did you mean --output?)" -- \
+    optimise tests/data/optimise-small.json --out "$tmp/never.json"
+check "--out: nothing written" test ! -e "$tmp/never.json"
+expect_fail "--he is not --help" 2 "unknown option '--he'" -- eval "$d" --he
+expect_fail "a prefix of several: all named" 2 "unknown option '--t' (did you mean one of" \
+    "--tilt" "--t-end" -- launch "$m12" --z2 15 --t 5
+expect_fail "--progres is not --progress" 2 "did you mean --progress?" -- \
+    launch "$m12" --z2 15 -n 1 --progres
+check "--z2=20 (whole name, joined value) still works" \
+    json_ok <("$tippe" eval "$d" --z2=20 --json) "o['z2_mm'] == 20"
+# a separate value that looks like an option is the value (here a bad --set)
+expect_fail "--set --json: the value of --set" 2 "--set --json: expected FIELD=VALUE" -- \
+    eval "$d" --z2 20 --set --json
 expect_fail "two design files" 2 "at most 1 design file" -- eval "$d" "$d" --z2 5
 expect_fail "no design file" 2 "no design file given" -- eval --z2 5
 

@@ -11,7 +11,8 @@
  *     temporary sits next to that file and the link is kept);
  *   - a character device, a FIFO (/dev/null, /dev/stdout, a named pipe):
  *     straight through, since such a file cannot be replaced;
- *   - "-": standard output, straight through (never closed here).
+ *   - "-": standard output, straight through: file descriptor 1 through a
+ *     duplicate of it (closed at commit), whatever the C stream stdout is.
  * A directory, a path through a regular file or one that cannot be created is
  * refused (TIPPE_EINPUT) with the reason; tippe_report_check() finds that out
  * before any work by really creating (and removing) a temporary.

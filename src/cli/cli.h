@@ -54,8 +54,8 @@ int tippe_cli_mpi_reexec(int argc, char **argv);
 /* ---- the option parser every verb uses (src/cli/options.c) ----
  *
  * A verb describes its options in one table; the same table drives the
- * parsing (getopt_long: "--opt=value" and "--opt value", "-n 5") and the
- * generated --help. Numbers are checked against their allowed range, and a
+ * parsing (getopt_long: "--opt=value" and "--opt value", "-n 5"; a long
+ * option by its whole name only, never a prefix) and the generated --help. Numbers are checked against their allowed range, and a
  * number whose unit is one of the unit families below may carry a unit
  * suffix, converted to the option's unit:
  *   rad/s (spin and other angular rates): 125rad/s, 20rev/s, 1200rpm
@@ -110,6 +110,23 @@ enum { TIPPE_CLI_HELP = -1 };
 
 /* Largest |Z2| any verb accepts, mm: a top a metre across is not a tippe top. */
 #define TIPPE_CLI_Z2_MAX_MM 1000.0
+
+/* Options several verbs read, defined once so that each verb takes the same
+ * range and says the same in --help (issue 19.10). */
+/* Largest launch spin any verb accepts, rad/s (1592 rev/s: ten times what a
+ * hand or a launcher gives a tippe top). */
+#define TIPPE_CLI_SPIN_MAX_RAD_S 1e4
+/* Largest --seed: seeds go into JSON as numbers, exact up to 2^53. */
+#define TIPPE_CLI_SEED_MAX 9007199254740991.0
+#define TIPPE_CLI_THREADS_MAX 4096
+/* --seed S into the long *P; HELP says what it seeds. */
+#define TIPPE_CLI_SEED_OPT(P, HELP)                                                              \
+    {.name = "seed", .kind = TIPPE_CLI_LONG, .value = (P), .arg = "S", .min = 0,                \
+     .max = TIPPE_CLI_SEED_MAX, .def = "1", .help = (HELP)}
+/* --threads N into the long *P (0 when not given: OMP_NUM_THREADS or all cores). */
+#define TIPPE_CLI_THREADS_OPT(P, HELP)                                                           \
+    {.name = "threads", .kind = TIPPE_CLI_LONG, .value = (P), .arg = "N", .min = 1,             \
+     .max = TIPPE_CLI_THREADS_MAX, .def = "OMP_NUM_THREADS or all cores", .help = (HELP)}
 
 /* Parses argv[1 .. argc-1] (argv[0] is the verb) into the options' values and
  * the positional arguments into args[0 .. *n_args-1] (room for max_args).
@@ -183,7 +200,9 @@ void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
  * written, found by really creating (and removing) a temporary next to it
  * (tippe/report.h): 0, or 2 after a usage error naming option, path and
  * reason (a directory, a path through a file, /proc, no permission, or the
- * same file as an earlier output of this run). "-" is standard output. Every
+ * same file as an earlier output of this run). "-" is standard output, and
+ * from then on the verb's text (printf) goes to stderr, so that a piped file
+ * is only the file. Every
  * verb calls it for every output before any work, so that bad usage leaves
  * nothing and costs nothing. A plot is also refused (2) when the command's
  * plotting module (src/modules/) does not load: said before the work, not after. */
@@ -283,9 +302,10 @@ typedef struct {
      .help = "the moving weight's position: required with a design; with a scenario\n"           \
              "whose top is a design, its top.z2_mm"},                                             \
     {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "initial.spin",      \
-     .arg = "RATE", .unit = "rad/s", .min = -TIPPE_CLI_RATE_MAX_RAD_S,                            \
-     .max = TIPPE_CLI_RATE_MAX_RAD_S,                                                              \
-     .help = "spin about the symmetry axis (initial.spin; design: 15rev/s)"},                     \
+     .arg = "RATE", .unit = "rad/s", .min = -TIPPE_CLI_SPIN_MAX_RAD_S,                            \
+     .max = TIPPE_CLI_SPIN_MAX_RAD_S,                                                              \
+     .help = "spin about the symmetry axis (initial.spin; design: 15rev/s);\n"                   \
+             "negative: the other way round, a mirror image of the same launch"},                 \
     {.name = "theta", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "initial.theta",    \
      .unit = "rad", .min = 0, .max = M_PI, .help = "tilt (initial.theta; design: 0.0674)"},       \
     {.name = "theta-dot", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over,                          \

@@ -284,6 +284,11 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
             return tippe_cli_usage_error(verb, "%s -: standard output already carries %s; "
                                          "give %s a file name", option, stdout_owner, option);
         stdout_owner = option;
+        /* The data owns descriptor 1 (tippe/report.h writes "-" there); the
+         * text report goes to stderr so that the piped file stays clean.
+         * glibc's stdout is an ordinary variable that may be set. */
+        fflush(stdout);
+        stdout = stderr;
     }
     const char *input = input_named_by(path);
     if (input)

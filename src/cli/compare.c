@@ -44,6 +44,22 @@ static const char *invalid_mark(const tippe_sweep_result *r, const tippe_sweep_z
     return z->within_travel && tippe_sweep_zone_model_invalid(r, z, f, t) ? "!" : "";
 }
 
+/* "yes (I II III)", "no (III)": whether the design has all three families and
+ * which it has, one space between them. Returns buf. */
+static const char *three_in_one_text(const tippe_sweep_summary *s, char *buf, size_t size)
+{
+    const char *fam[3] = {s->has_I ? "I" : NULL, s->has_II ? "II" : NULL,
+                          s->has_III ? "III" : NULL};
+    size_t len = (size_t)snprintf(buf, size, "%s (", s->three_in_one ? "yes" : "no");
+    int any = 0;
+    for (int k = 0; k < 3 && len < size; k++)
+        if (fam[k])
+            len += (size_t)snprintf(buf + len, size - len, "%s%s", any++ ? " " : "", fam[k]);
+    if (len < size)
+        snprintf(buf + len, size - len, "%s)", any ? "" : "none");
+    return buf;
+}
+
 static void print_wide(int n, tippe_design **d, tippe_sweep_result *r,
                                const tippe_sweep_bands_result *b)
 {
@@ -83,8 +99,8 @@ static void print_wide(int n, tippe_design **d, tippe_sweep_result *r,
     for (int i = 0; i < n; i++) {
         tippe_sweep_summary s;
         tippe_sweep_summarise(&r[i], &s);
-        snprintf(buf, sizeof buf, "3-in-1: %s (%s%s%s)", s.three_in_one ? "yes" : "no",
-                 s.has_I ? "I " : "", s.has_II ? "II " : "", s.has_III ? "III" : "");
+        char fam[16];
+        snprintf(buf, sizeof buf, "3-in-1: %s", three_in_one_text(&s, fam, sizeof fam));
         cell(buf);
     }
     printf("\n");
@@ -140,8 +156,7 @@ static void print_stacked(int n, tippe_design **d, tippe_sweep_result *r,
         double rob[3], narrow;
         tippe_sweep_robust_widths(&r[i], &b[i], rob, &narrow);
         char groups[32], nar[40];
-        snprintf(groups, sizeof groups, "%s (%s%s%s)", s.three_in_one ? "yes" : "no",
-                 s.has_I ? "I" : "", s.has_II ? " II" : "", s.has_III ? " III" : "");
+        three_in_one_text(&s, groups, sizeof groups);
         snprintf(nar, sizeof nar, s.narrowest_family ? "%.3f (%s)" : "-", s.narrowest_zone_mm,
                  s.narrowest_family);
         printf("[%-2d] %-40.40s %-15s %-18s %.3f\n", i + 1, tippe_design_name(d[i]), groups, nar,

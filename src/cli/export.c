@@ -254,6 +254,9 @@ static int export_parse(export_args *a, int argc, char **argv)
         return tippe_cli_usage_error(VERB, "--split-z needs --split");
     if (parse_formats(a->formats, &q->formats))
         return 2;
+    if (!strcmp(a->dir, "-")) /* several files cannot share standard output */
+        return tippe_cli_usage_error(VERB, "-o -: export writes several files into a "
+                                     "directory, not to standard output; give a directory");
     q->dir = a->dir;
     return 0;
 }

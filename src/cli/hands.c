@@ -14,9 +14,6 @@
 const char *const hands_verdict_names[TIPPE_LAUNCH_N_VERDICTS] = {
     "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded"};
 
-/* Largest --seed: seeds go into JSON as numbers, exact up to 2^53. */
-#define SEED_MAX 9007199254740991.0
-
 enum { MAX_HAND_OPTS = 40 };
 
 /* The options every hand-launch verb reads: the model and the integrator. */
@@ -25,8 +22,12 @@ static int model_options(hands_args *a, tippe_cli_opt *t)
     tippe_launch_options *o = &a->o;
     tippe_cli_opt m[] = {
         {.name = "tilt", .kind = TIPPE_CLI_DOUBLE, .value = &o->tilt_sd_rad, .arg = "SD",
-         .unit = "rad", .min = 0, .max = 0.7, .def = "0.1",
-         .help = "tilt at launch: half-normal with scale SD (at most half of --tilt-max)"},
+         .unit = "rad", .min = 0, .max = 0.7, .def = "0.1, or --tilt-max/2 if less",
+         .help = "tilt at launch: half-normal with scale SD, at most --tilt-max/2"},
+        /* with --tilt in every verb that has it: SD <= MAX / 2 (see tilt_defaults) */
+        {.name = "tilt-max", .kind = TIPPE_CLI_DOUBLE, .value = &o->tilt_max_rad, .arg = "MAX",
+         .unit = "rad", .min = 1e-3, .max = 1.4, .def = "1, or 2 x --tilt if more",
+         .help = "largest tilt at launch: larger draws are drawn again"},
         {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu, .unit = "s/m", .min = 0,
          .max = 1e6, .def = "2.3",
          .help = "viscous sliding friction (eq 3.12); the default is a table's Coulomb\ncoefficient over a typical slip speed (docs/launch.md)"},
@@ -56,21 +57,15 @@ static int distribution_options(hands_args *a, tippe_cli_opt *t)
 {
     tippe_launch_options *o = &a->o;
     tippe_cli_opt m[] = {
-        {.name = "seed", .kind = TIPPE_CLI_LONG, .value = &a->seed, .arg = "S", .min = 0,
-         .max = SEED_MAX, .def = "1",
-         .help = "random seed: the same seed gives the same launches and counts on\n"
-                 "any number of threads or ranks"},
-        {.name = "tilt-max", .kind = TIPPE_CLI_DOUBLE, .value = &o->tilt_max_rad, .arg = "MAX",
-         .unit = "rad", .min = 1e-3, .max = 1.4, .def = "1",
-         .help = "tilts above MAX are drawn again"},
+        TIPPE_CLI_SEED_OPT(&a->seed, "random seed: the same seed gives the same launches and "
+                                     "counts on\nany number of threads or ranks"),
         {.name = "precession-rel", .kind = TIPPE_CLI_DOUBLE, .value = &o->precession_sd_rel,
          .arg = "SD", .min = 0, .max = 1, .def = "0.1",
          .help = "precession = steady rate x (1 + SD N(0,1))"},
         {.name = "slide", .kind = TIPPE_CLI_DOUBLE, .value = &o->slide_sd_m_s, .arg = "SD",
          .unit = "m/s", .min = 0, .max = 10, .def = "0.05",
          .help = "sliding speed: half-normal with scale SD, random direction"},
-        {.name = "threads", .kind = TIPPE_CLI_LONG, .value = &a->threads, .arg = "N", .min = 1,
-         .max = 4096, .help = "OpenMP threads (default: OMP_NUM_THREADS or all cores)"},
+        TIPPE_CLI_THREADS_OPT(&a->threads, "OpenMP threads; the counts do not depend on it"),
     };
     const int n = (int)(sizeof m / sizeof m[0]);
     memcpy(t, m, sizeof m);
@@ -104,6 +99,21 @@ static int apply_accuracy(hands_args *a, const tippe_cli_spec *spec)
     return 0;
 }
 
+/* --tilt SD and --tilt-max MAX go together (SD <= MAX / 2, so that redrawing
+ * above MAX ends quickly): the one given sets the other's default, so that
+ * each is accepted alone over the whole range its --help shows. */
+static void tilt_defaults(tippe_cli_spec *spec, tippe_launch_options *o)
+{
+    const tippe_cli_opt *sd = tippe_cli_find_opt(spec, "tilt");
+    const tippe_cli_opt *max = tippe_cli_find_opt(spec, "tilt-max");
+    if (!sd || !max || o->tilt_sd_rad <= 0.5 * o->tilt_max_rad)
+        return;
+    if (sd->seen && !max->seen)
+        o->tilt_max_rad = 2 * o->tilt_sd_rad;
+    else if (max->seen && !sd->seen)
+        o->tilt_sd_rad = 0.5 * o->tilt_max_rad;
+}
+
 int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
 {
     tippe_cli_opt opts[MAX_HAND_OPTS];
@@ -123,7 +133,14 @@ int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
     int rc = tippe_cli_parse(&v->spec, argc, argv, &a->design, &(int){0});
     if (!rc)
         rc = apply_accuracy(a, &v->spec);
+    if (!rc)
+        tilt_defaults(&v->spec, &a->o);
     tippe_error e;
+    if (!rc && a->o.tilt_sd_rad > 0.5 * a->o.tilt_max_rad)
+        rc = tippe_cli_usage_error(a->verb, "--tilt %g: at most half of --tilt-max (%g rad), "
+                                   "%g; give --tilt-max %g or more", a->o.tilt_sd_rad,
+                                   a->o.tilt_max_rad, 0.5 * a->o.tilt_max_rad,
+                                   2 * a->o.tilt_sd_rad);
     if (!rc && tippe_launch_options_check(&a->o, &e))
         rc = tippe_cli_usage_error(a->verb, "%s", e.msg);
     if (!rc && a->threads > 0)

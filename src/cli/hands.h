@@ -16,9 +16,8 @@
 
 struct cJSON;
 
-/* Largest launch spin any verb accepts, rad/s (1592 rev/s: ten times what a
- * hand or a launcher gives a tippe top). */
-#define HANDS_SPIN_MAX_RAD_S 1e4
+/* Largest launch spin (cli.h; a hand launch's spin is its size, >= 0). */
+#define HANDS_SPIN_MAX_RAD_S TIPPE_CLI_SPIN_MAX_RAD_S
 
 /* The options of a hand-launch verb, filled by hands_parse. */
 typedef struct {

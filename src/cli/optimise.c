@@ -7,6 +7,7 @@
 
 #include <cjson/cJSON.h>
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -37,13 +38,10 @@ static int parse_args(int argc, char **argv, optimise_args *a)
         {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
          .help = "every evaluated candidate (choice, parameters, zones in mm,\n"
                  "constraint values, status, score)"},
-        {.name = "seed", .kind = TIPPE_CLI_LONG, .value = &a->seed, .arg = "S", .min = 0,
-         .max = 2147483647.0, .def = "1",
-         .help = "seed of the stochastic algorithms (CRS2, MLSL, ISRES); DIRECT-L,\n"
-                 "COBYLA and BOBYQA draw no random numbers"},
-        {.name = "threads", .kind = TIPPE_CLI_LONG, .value = &a->threads, .arg = "N", .min = 1,
-         .max = 1024, .def = "all cores",
-         .help = "OpenMP threads for the choices; the answer does not depend on it"},
+        TIPPE_CLI_SEED_OPT(&a->seed, "seed of the stochastic algorithms (CRS2, MLSL, ISRES); "
+                                     "DIRECT-L,\nCOBYLA and BOBYQA draw no random numbers"),
+        TIPPE_CLI_THREADS_OPT(&a->threads, "OpenMP threads for the choices; the answer does "
+                                           "not depend on it"),
         {NULL},
     };
     tippe_cli_spec spec = {
@@ -250,6 +248,13 @@ static int write_best(const char *path, const tippe_opt_spec *s, const tippe_opt
     cJSON *d = tippe_opt_design_json(s, &b->best, path, how, err);
     if (!d)
         return err->code ? err->code : TIPPE_ECOMPUTE;
+    /* On standard output the file may land anywhere: its materials table by
+     * its absolute path (it came relative to the current directory). */
+    const cJSON *m = cJSON_GetObjectItemCaseSensitive(d, "materials");
+    char abs_mat[PATH_MAX];
+    if (!strcmp(path, "-") && cJSON_IsString(m) && m->valuestring[0] != '/' &&
+        realpath(m->valuestring, abs_mat))
+        cJSON_ReplaceItemInObjectCaseSensitive(d, "materials", cJSON_CreateString(abs_mat));
     char *text = cJSON_Print(d);
     cJSON_Delete(d);
     if (!text)

@@ -299,9 +299,30 @@ static int getopt_error(const tippe_cli_spec *spec, int c, char **argv)
         if (!strncmp(o->name, arg + 2, len) && strlen(which) + strlen(o->name) + 8 < sizeof which)
             n += snprintf(which + strlen(which), sizeof which - strlen(which), "%s--%s",
                           n ? ", " : "", o->name) > 0;
-    if (n > 1)
-        return tippe_cli_usage_error(spec->verb, "ambiguous option '%s' (%s)", arg, which);
+    if (n > 1) /* a prefix of several: no prefix is an option (inexact_long_name) */
+        return tippe_cli_usage_error(spec->verb, "unknown option '%.*s' (did you mean one of "
+                                     "%s?)", (int)len + 2, arg, which);
     return tippe_cli_usage_error(spec->verb, "unknown option '%s'", arg);
+}
+
+/* getopt_long takes any unique prefix of a long name (--z for --z2): a typing
+ * slip then runs with a value meant for another option, and a new option can
+ * silently change what a prefix means. Only the whole name is taken. After
+ * getopt_long returned the option called name: 0 if it was typed whole, or 2
+ * after the usage error. The text is the last argument read, or the one before
+ * when the value came separately ("--z2 5"). */
+static int inexact_long_name(const tippe_cli_spec *spec, const char *name, char **argv)
+{
+    const char *arg = argv[optind - 1];
+    if (optarg && optarg == argv[optind - 1] && optind >= 2)
+        arg = argv[optind - 2];
+    if (strncmp(arg, "--", 2))
+        return 0;
+    const size_t len = strcspn(arg + 2, "=");
+    if (len == strlen(name) && !strncmp(arg + 2, name, len))
+        return 0;
+    return tippe_cli_usage_error(spec->verb, "unknown option '%.*s' (did you mean --%s?)",
+                                 (int)len + 2, arg, name);
 }
 
 /* Positional arguments and required options: 0, or 2 after a usage error. */
@@ -336,8 +357,11 @@ int tippe_cli_parse(tippe_cli_spec *spec, int argc, char **argv, const char **ar
         return tippe_cli_usage_error(spec->verb, "internal error: too many options");
     optind = 0; /* glibc: start afresh (a process may parse more than once) */
     opterr = 0;
-    int c;
-    while ((c = getopt_long(argc, argv, shorts, lo, NULL)) != -1) {
+    int c, li = -1;
+    while ((c = getopt_long(argc, argv, shorts, lo, &li)) != -1) {
+        if (li >= 0 && inexact_long_name(spec, lo[li].name, argv))
+            return 2;
+        li = -1;
         if (c == 'h') {
             if (!spec->quiet_help)
                 tippe_cli_help(spec, stdout);
