@@ -92,6 +92,7 @@ uint64_t tippe_launch_mix(uint64_t seed, uint64_t draw)
 
 static void model_of(const tippe_top *top, const tippe_launch_options *o, tippe_dynamics_model *m)
 {
+    memset(m, 0, sizeof *m);
     m->top = *top;
     m->g = o->g;
     m->mu = o->mu;

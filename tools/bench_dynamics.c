@@ -43,11 +43,11 @@ int main(int argc, char **argv)
     if (repeats < 1)
         repeats = 1;
     launch launches[] = {
-        {"fig12 hang (n 1.5)", {{1, 1, 0.3, 0.92, 1, 0}, 1, 0.04}, {0.01, 0, 0, 1.5, 0, 0},
+        {"fig12 hang (n 1.5)", {.top = {1, 1, 0.3, 0.92, 1, 0}, .g = 1, .mu = 0.04}, {0.01, 0, 0, 1.5, 0, 0},
          TIPPE_PRECESSION_STEADY, 10000},
-        {"fig14 hang (n 0.7)", {{1, 1, 0.5, 0.55, 1, 0}, 1, 0.04},
+        {"fig14 hang (n 0.7)", {.top = {1, 1, 0.5, 0.55, 1, 0}, .g = 1, .mu = 0.04},
          {M_PI - 0.01, 0, 0, 0.7, 0, 0}, TIPPE_PRECESSION_S3, 10000},
-        {"film IIb flip", {{0.006, 0.015, 0.0075, 0.82e-6, 0.7e-6, -1}, 9.81, 0.3},
+        {"film IIb flip", {.top = {0.006, 0.015, 0.0075, 0.82e-6, 0.7e-6, -1}, .g = 9.81, .mu = 0.3},
          {0.01, 0, 0, 250, 0, 0}, TIPPE_PRECESSION_STEADY, 90},
     };
     const int n_launch = (int)(sizeof launches / sizeof launches[0]);
