@@ -535,9 +535,9 @@ static int check_inputs(const tippe_dynamics_model *model, const tippe_dynamics_
         model->law != TIPPE_FRICTION_COULOMB_CREEP)
         return tippe_error_set(err, TIPPE_EINPUT, "unknown friction law %d", (int)model->law);
     if (model->law != TIPPE_FRICTION_VISCOUS) {
-        if (!(model->mu_c >= 0 && model->mu_c <= 10))
+        if (!(model->mu_c >= 0 && model->mu_c <= 1e6))
             return tippe_error_set(err, TIPPE_EINPUT,
-                                   "Coulomb friction coefficient mu_c = %g must be in [0, 10]",
+                                   "Coulomb friction coefficient mu_c = %g must be in [0, 1e6]",
                                    model->mu_c);
         if (!(model->slip_scale_m_s >= 0 && model->slip_scale_m_s <= 1e3))
             return tippe_error_set(err, TIPPE_EINPUT,
