@@ -27,9 +27,19 @@ static int model_options(hands_args *a, tippe_cli_opt *t)
         {.name = "tilt", .kind = TIPPE_CLI_DOUBLE, .value = &o->tilt_sd_rad, .arg = "SD",
          .unit = "rad", .min = 0, .max = 0.7, .def = "0.1",
          .help = "tilt at launch: half-normal with scale SD (at most half of --tilt-max)"},
+        {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &a->friction, .arg = "LAW",
+         .def = "coulomb",
+         .help = "friction law: coulomb (sliding |F| = mu_c Rn, sticking and rolling\n"
+                 "without slipping), viscous (eq 3.12, the paper's) or coulomb-creep\n"
+                 "(regularised, no sticking); docs/dynamics.md"},
+        {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu_c, .arg = "X", .min = 0,
+         .max = 10, .def = TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C),
+         .help = "Coulomb friction coefficient: a printed PLA or nylon ball on a\n"
+                 "tabletop (docs/launch.md)"},
         {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu, .unit = "s/m", .min = 0,
          .max = 1e6, .def = "2.3",
-         .help = "viscous sliding friction (eq 3.12); the default is a table's Coulomb\ncoefficient over a typical slip speed (docs/launch.md)"},
+         .help = "viscous sliding friction (eq 3.12), for --friction viscous (given alone,\n"
+                 "it selects it): a table's Coulomb coefficient over a typical slip speed"},
         {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &o->g, .unit = "m/s^2", .min = 0.01,
          .max = 1000, .def = "9.81", .help = "gravity"},
         {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &o->t_end, .unit = "s",
@@ -104,6 +114,35 @@ static int apply_accuracy(hands_args *a, const tippe_cli_spec *spec)
     return 0;
 }
 
+/* --friction, --mu-c and --mu into a->o: --mu alone selects the viscous law (it is
+ * its coefficient); a coefficient of the other law is a usage error. */
+static int apply_friction(hands_args *a, const tippe_cli_spec *spec)
+{
+    tippe_launch_options *o = &a->o;
+    const tippe_cli_opt *mu = tippe_cli_find_opt((tippe_cli_spec *)spec, "mu");
+    const tippe_cli_opt *mu_c = tippe_cli_find_opt((tippe_cli_spec *)spec, "mu-c");
+    const int mu_seen = mu && mu->seen, mu_c_seen = mu_c && mu_c->seen;
+    if (a->friction) {
+        const int law = tippe_friction_law_parse(a->friction);
+        if (law < 0)
+            return tippe_cli_usage_error(a->verb,
+                                         "--friction '%s': expected coulomb, viscous or "
+                                         "coulomb-creep",
+                                         a->friction);
+        o->law = (tippe_friction_law)law;
+    } else if (mu_seen && !mu_c_seen) {
+        o->law = TIPPE_FRICTION_VISCOUS;
+    }
+    if (o->law == TIPPE_FRICTION_VISCOUS && mu_c_seen)
+        return tippe_cli_usage_error(a->verb, "--mu-c is the Coulomb coefficient: with the "
+                                              "viscous law give --mu (s/m)");
+    if (o->law != TIPPE_FRICTION_VISCOUS && mu_seen)
+        return tippe_cli_usage_error(a->verb, "--mu (s/m) is the viscous coefficient: with "
+                                              "the %s law give --mu-c",
+                                     tippe_friction_law_name(o->law));
+    return 0;
+}
+
 int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
 {
     tippe_cli_opt opts[MAX_HAND_OPTS];
@@ -123,6 +162,8 @@ int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
     int rc = tippe_cli_parse(&v->spec, argc, argv, &a->design, &(int){0});
     if (!rc)
         rc = apply_accuracy(a, &v->spec);
+    if (!rc)
+        rc = apply_friction(a, &v->spec);
     tippe_error e;
     if (!rc && tippe_launch_options_check(&a->o, &e))
         rc = tippe_cli_usage_error(a->verb, "%s", e.msg);
@@ -206,9 +247,13 @@ void hands_print_distribution(const tippe_launch_options *o, int fixed_spin)
 
 void hands_print_model(const tippe_launch_options *o)
 {
-    printf("model      mu %g s/m (viscous sliding, eq 3.12), g %g m/s^2, t_end %g s, accuracy %s "
-           "(%s, rtol %g), verdict level\n",
-           o->mu, o->g, o->t_end, o->accuracy_name, o->accuracy.stepper, o->accuracy.rtol);
+    tippe_dynamics_model m;
+    char fr[160];
+    tippe_cli_launch_friction(o, &m);
+    printf("model      friction %s, g %g m/s^2, t_end %g s, accuracy %s (%s, rtol %g), verdict "
+           "level\n",
+           tippe_cli_friction_text(&m, fr, sizeof fr), o->g, o->t_end, o->accuracy_name,
+           o->accuracy.stepper, o->accuracy.rtol);
 }
 
 cJSON *hands_json_options(const tippe_launch_options *o, int fixed_spin)
@@ -224,7 +269,9 @@ cJSON *hands_json_options(const tippe_launch_options *o, int fixed_spin)
     cJSON_AddNumberToObject(d, "tilt_max_rad", o->tilt_max_rad);
     cJSON_AddNumberToObject(d, "precession_rel_sd", o->precession_sd_rel);
     cJSON_AddNumberToObject(d, "slide_half_normal_scale_m_s", o->slide_sd_m_s);
-    cJSON_AddNumberToObject(d, "mu_s_m", o->mu);
+    tippe_dynamics_model m;
+    tippe_cli_launch_friction(o, &m);
+    tippe_cli_json_friction(d, &m);
     cJSON_AddNumberToObject(d, "g_m_s2", o->g);
     cJSON_AddNumberToObject(d, "t_end_s", o->t_end);
     tippe_cli_json_accuracy(d, o->accuracy_name, &o->accuracy);
