@@ -56,10 +56,12 @@ for key in ("spin_rad_s", "tilt_rad", "phi_dot_rad_s", "verdict", "t_s", "theta_
             "jellett_rel_drift", "theory", "agrees"):
     assert key in rows[0], key
 assert [int(r["index"]) for r in rows] == [0, 1, 2, 3]
-assert all(r["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided") for r in rows)
+assert all(r["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided", "bounded")
+           for r in rows)
 # a trapped verdict says how and with what margin; a tip followed to its flip says when
 for r in rows:
-    assert r["decided_by"] in ("trapped", "lost_contact", "t_end", "flat_well", "budget"), r["decided_by"]
+    assert r["decided_by"] in ("trapped", "lost_contact", "t_end", "flat_well", "budget",
+                               "rolling"), r["decided_by"]
     if r["decided_by"] == "trapped":
         assert float(r["margin_J"]) > 0
         assert r["barrier_gap_J"] == "" or float(r["barrier_gap_J"]) > float(r["margin_J"])
