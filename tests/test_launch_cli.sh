@@ -158,5 +158,21 @@ refused "map Z2 beyond the travel" "outside the design's travel" \
 refused "map without --spin" "--spin FROM:TO:STEPS" map "$m12" --z2 10:15:2 --plot "$tmp/out.png"
 refused "check spin" "--spin 'fast'" check "$m12" --z2 10 --spin fast
 refused "no design" "no design file" check --z2 10
+refused "unknown friction law" "--friction 'dry'" check "$m12" --z2 10 --friction dry
+refused "Coulomb coefficient with the viscous law" "--mu-c is the Coulomb coefficient" \
+    launch "$m12" --z2 10 --friction viscous --mu-c 0.3 --csv "$tmp/out.csv"
+refused "viscous coefficient with the Coulomb law" "--mu (s/m) is the viscous coefficient" \
+    launch "$m12" --z2 10 --friction coulomb --mu 2 --csv "$tmp/out.csv"
+
+# --- friction (issue 21): Coulomb by default, --mu alone selects viscous ----------
+"$tippe" check "$m12" --z2 15 --json >"$tmp/c.json"
+check "check: Coulomb mu_c 0.3 by default" json_ok "$tmp/c.json" \
+    'o["options"]["friction"]["law"] == "coulomb" and o["options"]["friction"]["mu"] == 0.3'
+"$tippe" check "$m12" --z2 15 --mu 2.3 --json >"$tmp/c.json"
+check "check: --mu alone is the viscous law" json_ok "$tmp/c.json" \
+    'o["options"]["friction"] == {"law": "viscous", "mu_s_m": 2.3}'
+"$tippe" check "$m12" --z2 15 --friction coulomb --mu-c 0.5 --json >"$tmp/c.json"
+check "check: --mu-c sets the Coulomb coefficient" json_ok "$tmp/c.json" \
+    'o["options"]["friction"]["mu"] == 0.5'
 
 finish
