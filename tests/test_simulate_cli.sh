@@ -155,7 +155,7 @@ expect_fail "missing file" 2 "nowhere.json" "cannot open" -- simulate "$tmp/nowh
 # --- friction (issue 21): the block, the old "mu", overrides, design default ----
 mutate "$tmp/fr.json" 'del d["mu"]; d["friction"] = {"law": "coulomb", "mu": 0.3}'
 "$tippe" simulate "$tmp/fr.json" --json >"$tmp/fr.out" 2>"$tmp/err" &&
-    json_ok "$tmp/fr.out" 'o["friction"] == {"law": "coulomb", "mu": 0.3, "slip_scale_m_s": 1e-4} and o["mu_s_m"] is None' &&
+    json_ok "$tmp/fr.out" 'o["friction"] == {"law": "coulomb", "mu": 0.3, "slip_scale_m_s": 1e-5} and o["mu_s_m"] is None' &&
     ok || bad "coulomb friction block: $(cat "$tmp/err")"
 "$tippe" simulate "$base" --json >"$tmp/fr.out" 2>"$tmp/err" &&
     json_ok "$tmp/fr.out" 'o["friction"] == {"law": "viscous", "mu_s_m": 0.04} and o["mu_s_m"] == 0.04' &&

@@ -69,7 +69,7 @@ typedef enum {
     TIPPE_FRICTION_VISCOUS = 0, /* Rf = -mu Rn V_Q (eq 3.12), mu in s/m */
     TIPPE_FRICTION_COULOMB = 1, /* sliding: Rf = -mu_c Rn V_Q / sqrt(|V_Q|^2 + v_s^2)
                                    (Coulomb's |Rf| = mu_c Rn against the slip for
-                                   |V_Q| >> v_s); sticking once |V_Q| < v_s and rolling
+                                   |V_Q| >> v_s); sticking once |V_Q| < 30 v_s and rolling
                                    needs |Rf| <= mu_c Rn, until it needs more */
     TIPPE_FRICTION_COULOMB_CREEP = 2 /* the regularised sliding law alone, no sticking:
                                    below v_s the contact creeps (|Rf| < mu_c Rn) and
@@ -85,7 +85,7 @@ int tippe_friction_law_parse(const char *name);
 /* The regularisation speed v_s of the Coulomb law when the model leaves it 0, m/s:
  * the sliding law's width and the slip below which sticking is tried.
  * docs/dynamics.md measures the reported times against smaller v_s. */
-#define TIPPE_COULOMB_SLIP_SCALE_M_S 1e-4
+#define TIPPE_COULOMB_SLIP_SCALE_M_S 1e-5
 
 typedef struct {
     tippe_top top;

@@ -308,7 +308,7 @@ typedef struct {
      .help = "Coulomb friction coefficient (friction.mu; design: " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C) ")"}, \
     {.name = "slip-scale", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over,                         \
      .field = "friction.slip_scale_m_s", .arg = "V", .unit = "m/s", .min = 1e-9, .max = 1,      \
-     .help = "Coulomb's regularisation speed v_s (docs/dynamics.md; default 1e-4)"},             \
+     .help = "Coulomb's regularisation speed v_s (docs/dynamics.md; default 1e-5)"},             \
     {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "mu", .unit = "s/m",   \
      .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12: sets the viscous law\n(design with --friction viscous: " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) ")"}, \
     {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "g", .unit = "m/s^2",   \

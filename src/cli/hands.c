@@ -17,7 +17,7 @@ const char *const hands_verdict_names[TIPPE_LAUNCH_N_VERDICTS] = {
 /* Largest --seed: seeds go into JSON as numbers, exact up to 2^53. */
 #define SEED_MAX 9007199254740991.0
 
-enum { MAX_HAND_OPTS = 40 };
+enum { MAX_HAND_OPTS = 48 };
 
 /* The options every hand-launch verb reads: the model and the integrator. */
 static int model_options(hands_args *a, tippe_cli_opt *t)
@@ -36,6 +36,11 @@ static int model_options(hands_args *a, tippe_cli_opt *t)
          .max = 10, .def = TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C),
          .help = "Coulomb friction coefficient: a printed PLA or nylon ball on a\n"
                  "tabletop (docs/launch.md)"},
+        {.name = "slip-scale", .kind = TIPPE_CLI_DOUBLE, .value = &o->slip_scale_m_s,
+         .arg = "V", .unit = "m/s", .min = 1e-9, .max = 1,
+         .def = TIPPE_CLI_STR(TIPPE_COULOMB_SLIP_SCALE_M_S),
+         .help = "Coulomb's regularisation speed v_s: sliding below it is smoothed,\n"
+                 "and sticking is tried below 30 v_s (docs/dynamics.md)"},
         {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu, .unit = "s/m", .min = 0,
          .max = 1e6, .def = "2.3",
          .help = "viscous sliding friction (eq 3.12), for --friction viscous (given alone,\n"
