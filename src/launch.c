@@ -408,6 +408,8 @@ int tippe_launch_tally_records(const tippe_launch_record *r, long n, tippe_launc
             continue;
         if (r[i].verdict == TIPPE_VERDICT_TIP && isfinite(r[i].t_flip_s))
             t[m_flip++] = r[i].t_flip_s;
+        if (r[i].how == TIPPE_DECIDED_ROLLING)
+            out->rolling++;
         if (r[i].how != TIPPE_DECIDED_TRAPPED || r[i].verdict == TIPPE_VERDICT_BOUNDED)
             continue;
         out->trapped++;

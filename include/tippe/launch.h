@@ -185,6 +185,7 @@ typedef struct {
      * with no barrier, and the smallest barrier gap / margin of the others
      * (INFINITY if none). */
     long trapped, trapped_no_barrier;
+    long rolling; /* decided rolling for ever (Coulomb friction with sticking) */
     double min_gap_over_margin;
 } tippe_launch_tally;
 

@@ -305,6 +305,7 @@ cJSON *hands_json_tally(const tippe_launch_tally *t)
         cJSON_AddNullToObject(o, "median_t_flip_s");
     cJSON_AddNumberToObject(o, "trapped", (double)t->trapped);
     cJSON_AddNumberToObject(o, "trapped_no_barrier", (double)t->trapped_no_barrier);
+    cJSON_AddNumberToObject(o, "rolling", (double)t->rolling);
     if (isfinite(t->min_gap_over_margin))
         cJSON_AddNumberToObject(o, "min_gap_over_margin", t->min_gap_over_margin);
     else

@@ -119,6 +119,10 @@ static void print_theory_summary(const tippe_launch_tally *t)
             printf("; smallest barrier gap %.3g times its margin", t->min_gap_over_margin);
         printf("\n");
     }
+    if (t->rolling)
+        printf("rolling    %ld launches stick and roll without slipping for ever (Coulomb "
+               "friction: nothing dissipates; docs/dynamics.md)\n",
+               t->rolling);
     if (t->flips)
         printf("flip       %ld tips followed to theta = 90 deg: median model time %.3g s\n",
                t->flips, t->median_t_flip_s);

@@ -150,6 +150,11 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                r->last.slip_speed);
     if (!isnan(r->t_flip))
         printf("flip      theta passed 90 deg at t = %.6g s (model time)\n", r->t_flip);
+    if (sc->model.law == TIPPE_FRICTION_COULOMB)
+        printf("contact   stuck %ld time%s and broke loose %ld time%s; rolled without slipping "
+               "for %.6g s of the %.6g s integrated\n",
+               r->stick_events, r->stick_events == 1 ? "" : "s", r->slip_events,
+               r->slip_events == 1 ? "" : "s", r->rolling_time_s, r->last.t);
     if (r->budget_exhausted)
         printf("budget    exhausted: the integration stopped at its step budget (%ld accepted "
                "steps) at t = %.6g s, before t_end = %.6g s\n",
