@@ -5,10 +5,12 @@
  * "Coulomb friction", gives the figures these reproduce. */
 #include "check.h"
 #include "tippe/dynamics.h"
+#include "tippe/launch.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -314,6 +316,47 @@ static void test_spin_and_convergence(void)
     CHECK(b.t_flip / a.t_flip < 1.0, "viscous: flip(400)/flip(200) = %g", b.t_flip / a.t_flip);
 }
 
+/* Every rolling decision among 40 hand launches of the M12 ball (tippe_launch_draw, seed 1)
+ * holds when integrated on to 10 s: no break-away, theta within the claimed range. */
+static void test_rolling_claims(void)
+{
+    tippe_launch_options lo;
+    tippe_launch_options_default(&lo);
+    const tippe_dynamics_model md = m12(TIPPE_FRICTION_COULOMB, 0.0);
+    int n_rolling = 0;
+    for (int draw = 0; draw < 40; draw++) {
+        tippe_dynamics_initial ic;
+        tippe_error e;
+        if (tippe_launch_draw(&md.top, &lo, 1, (uint64_t)draw, NAN, &ic, &e)) {
+            CHECK(0, "draw %d: %s", draw, e.msg);
+            continue;
+        }
+        tippe_dynamics_result r;
+        CHECK(run(&md, &ic, 600.0, 0, &r) == TIPPE_OK, "draw %d", draw);
+        if (r.how != TIPPE_DECIDED_ROLLING)
+            continue;
+        n_rolling++;
+        buf b = {0, 0, NULL};
+        tippe_dynamics_result r2;
+        CHECK(run_samples(&md, &ic, 10.0, 0.0, &b, &r2) == TIPPE_OK, "draw %d on", draw);
+        double th_lo = INFINITY, th_hi = -INFINITY;
+        for (int i = 0; i < b.n; i++)
+            if (b.s[i].t > r.t_verdict) {
+                th_lo = fmin(th_lo, b.s[i].theta);
+                th_hi = fmax(th_hi, b.s[i].theta);
+            }
+        /* the claim is for the exact rolling motion; steps sample theta: 1e-6 rad slack */
+        CHECK(r2.slip_events == 0 && th_lo >= r.theta_lo_rad - 1e-6 &&
+                  th_hi <= r.theta_hi_rad + 1e-6,
+              "draw %d: %ld slips; theta [%.6f, %.6f] against the claimed [%.6f, %.6f]", draw,
+              r2.slip_events, th_lo, th_hi, r.theta_lo_rad, r.theta_hi_rad);
+        free(b.s);
+    }
+    printf("  rolling claims: %d of 40 hand launches decided rolling, each held to 10 s\n",
+           n_rolling);
+    CHECK(n_rolling >= 10, "%d rolling decisions", n_rolling);
+}
+
 static void test_names_and_input(void)
 {
     CHECK(tippe_friction_law_parse("coulomb") == TIPPE_FRICTION_COULOMB, "parse");
@@ -343,5 +386,6 @@ int main(void)
     test_stick_limit();
     test_cohen();
     test_spin_and_convergence();
+    test_rolling_claims();
     return check_summary("test_coulomb");
 }
