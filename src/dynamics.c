@@ -823,7 +823,8 @@ static int run_emit(run_state *rs, tippe_error *err)
 }
 
 /* Whether the motion must end at a steady state (section 4, Proposition 4.2): it
- * needs friction (mu > 0) and an eccentric sphere (eps > 0). With mu = 0 nothing
+ * needs friction (mu > 0, or mu_c > 0) and an eccentric sphere (eps > 0); with
+ * Coulomb sticking the end state is still not proved (end_state_proved = 0). With mu = 0 nothing
  * dissipates; with eps = 0 the ball can roll without slipping for ever, its axis
  * turning, and rolling dissipates nothing. Then only confinement is proved. */
 static int run_dissipates_to_rest(const run_state *rs)

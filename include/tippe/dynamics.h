@@ -34,10 +34,10 @@ typedef enum {
     TIPPE_VERDICT_HANG,         /* trapped in a well whose minimum is 0 < theta < pi */
     TIPPE_VERDICT_LOST_CONTACT, /* Rn reached 0: the top leaves the table */
     TIPPE_VERDICT_UNDECIDED,    /* t_end (or the step budget) reached first */
-    TIPPE_VERDICT_BOUNDED       /* mu = 0 (nothing dissipates) or eps = 0 (rolling
-                                   dissipates nothing): no rest state is forced, but
-                                   theta stays for ever in [theta_lo_rad, theta_hi_rad]
-                                   of one well */
+    TIPPE_VERDICT_BOUNDED       /* mu = 0 (nothing dissipates), eps = 0 (rolling
+                                   dissipates nothing), or (Coulomb) rolling for ever
+                                   across pi/2: no rest state is forced, but theta stays
+                                   for ever in [theta_lo_rad, theta_hi_rad] */
 } tippe_verdict;
 
 /* "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded". */
