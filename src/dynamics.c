@@ -20,8 +20,11 @@
  * orientation quaternion and the position of the centre of mass on the table. */
 enum { IK = 0, IW = 3, IV = 6, ID = 8, IQ = 9, IX = 13 };
 enum { DIM_VERDICT = 9, DIM_TRAJECTORY = 15 };
-/* Sticking is tried below this many v_s of slip (run_try_stick). */
+/* Sticking is tried below this many v_s of slip, and needs the rolling force inside
+ * the cone by this fraction of mu_c m g (run_try_stick; the rolling decision asks the
+ * same room over a whole period). */
 #define STICK_SLIP_FACTOR 30.0
+#define STICK_MARGIN 1e-3
 
 /* The accuracy presets, chosen from the work-precision benchmark
  * (tools/bench/run.sh, docs/performance.md): without a step cap rk8pd is on the
@@ -958,8 +961,10 @@ static void run_try_stick(run_state *rs, tippe_dynamics_result *res)
         return;
     c->stick = 1;
     contact o;
+    /* inside the cone by STICK_MARGIN mu_c m g: where the contact just broke loose (the
+     * force on the cone's edge) it slides on rather than sticking again at once */
     if (contact_eval(c, rs->y, &o) || !(o.Rn > 0.0) ||
-        hypot(o.F[0], o.F[1]) > c->mu_c * o.Rn) {
+        !(event_value(c, &o, EVENT_SLIP) > STICK_MARGIN * c->mu_c * c->m * c->g)) {
         c->stick = 0; /* rolling needs more than the cone gives: it keeps sliding */
         return;
     }
@@ -1016,7 +1021,7 @@ static int run_try_rolling(run_state *rs, tippe_dynamics_result *res)
     rs->theta_prev_step = s->theta;
     if (!minimum)
         return 0;
-    if (rs->roll_phase == 2 && rs->roll_gmin > 1e-3 * c->mu_c * c->m * c->g) {
+    if (rs->roll_phase == 2 && rs->roll_gmin > STICK_MARGIN * c->mu_c * c->m * c->g) {
         const double lo = fmax(0.0, rs->roll_lo - 0.5 * rs->roll_dtheta);
         const double hi = fmin(M_PI, rs->roll_hi + 0.5 * rs->roll_dtheta);
         res->how = TIPPE_DECIDED_ROLLING;
