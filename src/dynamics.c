@@ -745,7 +745,7 @@ typedef struct {
     /* Rolling: 1 waiting for a minimum of theta, 2 following a period from it; the
      * period's theta range (widened by half the largest step in theta), its least
      * margin mu_c Rn - |F| and least Rn. */
-    int roll_phase;
+    int roll_phase, roll_seen_max;
     double roll_prev_thd, roll_lo, roll_hi, roll_dtheta, roll_gmin, roll_Rn_min;
     contact ct;
     tippe_dynamics_sample smp;
@@ -1009,6 +1009,10 @@ static int run_try_rolling(run_state *rs, tippe_dynamics_result *res)
     }
     const tippe_dynamics_sample *s = &rs->smp;
     const int minimum = rs->roll_prev_thd < 0.0 && s->theta_dot >= 0.0;
+    /* a period passes a maximum of theta too: a sign change of theta_dot at a minimum
+     * that noise repeats within a step or two is not a period */
+    if (rs->roll_prev_thd > 0.0 && s->theta_dot <= 0.0)
+        rs->roll_seen_max = 1;
     rs->roll_prev_thd = s->theta_dot;
     if (rs->roll_phase == 2) {
         const double g = fmin(event_value(c, &rs->ct, EVENT_SLIP), c->min_stage_stick);
@@ -1021,7 +1025,8 @@ static int run_try_rolling(run_state *rs, tippe_dynamics_result *res)
     rs->theta_prev_step = s->theta;
     if (!minimum)
         return 0;
-    if (rs->roll_phase == 2 && rs->roll_gmin > STICK_MARGIN * c->mu_c * c->m * c->g) {
+    if (rs->roll_phase == 2 && rs->roll_seen_max &&
+        rs->roll_gmin > STICK_MARGIN * c->mu_c * c->m * c->g) {
         const double lo = fmax(0.0, rs->roll_lo - 0.5 * rs->roll_dtheta);
         const double hi = fmin(M_PI, rs->roll_hi + 0.5 * rs->roll_dtheta);
         res->how = TIPPE_DECIDED_ROLLING;
@@ -1040,6 +1045,7 @@ static int run_try_rolling(run_state *rs, tippe_dynamics_result *res)
         return 1;
     }
     rs->roll_phase = 2;
+    rs->roll_seen_max = 0;
     rs->roll_lo = rs->roll_hi = s->theta;
     rs->roll_dtheta = 0.0;
     rs->roll_gmin = rs->roll_Rn_min = INFINITY;
