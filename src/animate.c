@@ -362,7 +362,10 @@ static int verdict_lines(const tippe_film *f, char *l1, char *l2, size_t size)
         else
             snprintf(l1, size, "verdict: %s, proved at t = %.4g s",
                      r->verdict == TIPPE_VERDICT_TIP ? "tip" : "no tip", r->t_verdict);
-        if (isfinite(r->barrier_gap_J))
+        if (r->how == TIPPE_DECIDED_ROLLING)
+            snprintf(l2, size, "rolls without slipping for ever, \xce\xb8 in %.1f\xc2\xb0 .. %.1f\xc2\xb0",
+                     r->theta_lo_rad * deg, r->theta_hi_rad * deg);
+        else if (isfinite(r->barrier_gap_J))
             snprintf(l2, size, "energy below barrier by %.2g J (margin %.2g J)",
                      r->barrier_gap_J, r->margin_J);
         else
@@ -372,8 +375,9 @@ static int verdict_lines(const tippe_film *f, char *l1, char *l2, size_t size)
         snprintf(l1, size, "verdict: leaves the table at t = %.4g s (model ends)", r->t_verdict);
         return 1;
     case TIPPE_VERDICT_BOUNDED:
-        snprintf(l1, size, "verdict: bounded, \xce\xb8 stays in %.1f\xc2\xb0 .. %.1f\xc2\xb0",
-                 r->theta_lo_rad * deg, r->theta_hi_rad * deg);
+        snprintf(l1, size, "verdict: bounded, \xce\xb8 stays in %.1f\xc2\xb0 .. %.1f\xc2\xb0%s",
+                 r->theta_lo_rad * deg, r->theta_hi_rad * deg,
+                 r->how == TIPPE_DECIDED_ROLLING ? " (rolling)" : "");
         return 1;
     default:
         snprintf(l1, size, "verdict: not proved by t = %.4g s", r->last.t);
@@ -387,7 +391,7 @@ static int paint(painter *p, int idx, int last_frame, unsigned char *pixels, int
     const tippe_film *f = p->f;
     const tippe_dynamics_sample *s = &f->samples[idx];
     const double deg = 180 / M_PI;
-    char l0[96], l1[128], l2[96], l3[160], l4[160];
+    char l0[96], l1[128], l2[128], l3[160], l4[160];
     snprintf(l0, sizeof l0, "t = %.4g s   (1 s of film = %.3g s)", s->t, f->speed);
     snprintf(l1, sizeof l1, "\xce\xb8 = %.1f\xc2\xb0   spin n = %.4g rad/s (%.3g rev/s)",
              s->theta * deg, s->spin, s->spin / (2 * M_PI));

@@ -20,6 +20,11 @@
  * orientation quaternion and the position of the centre of mass on the table. */
 enum { IK = 0, IW = 3, IV = 6, ID = 8, IQ = 9, IX = 13 };
 enum { DIM_VERDICT = 9, DIM_TRAJECTORY = 15 };
+/* Sticking is tried below this many v_s of slip, and needs the rolling force inside
+ * the cone by this fraction of mu_c m g (run_try_stick; the rolling decision asks the
+ * same room over a whole period). */
+#define STICK_SLIP_FACTOR 30.0
+#define STICK_MARGIN 1e-3
 
 /* The accuracy presets, chosen from the work-precision benchmark
  * (tools/bench/run.sh, docs/performance.md): without a step cap rk8pd is on the
@@ -70,8 +75,35 @@ const char *tippe_decision_name(tippe_decision d)
     case TIPPE_DECIDED_LOST_CONTACT: return "lost_contact";
     case TIPPE_DECIDED_FLAT_WELL: return "flat_well";
     case TIPPE_DECIDED_BUDGET: return "budget";
+    case TIPPE_DECIDED_ROLLING: return "rolling";
     }
     return "?";
+}
+
+const char *tippe_friction_law_name(tippe_friction_law law)
+{
+    switch (law) {
+    case TIPPE_FRICTION_VISCOUS: return "viscous";
+    case TIPPE_FRICTION_COULOMB: return "coulomb";
+    case TIPPE_FRICTION_COULOMB_CREEP: return "coulomb-creep";
+    }
+    return "?";
+}
+
+int tippe_friction_law_parse(const char *name)
+{
+    if (!strcmp(name, "viscous"))
+        return TIPPE_FRICTION_VISCOUS;
+    if (!strcmp(name, "coulomb"))
+        return TIPPE_FRICTION_COULOMB;
+    if (!strcmp(name, "coulomb-creep"))
+        return TIPPE_FRICTION_COULOMB_CREEP;
+    return -1;
+}
+
+int tippe_dynamics_frictionless(const tippe_dynamics_model *model)
+{
+    return model->law == TIPPE_FRICTION_VISCOUS ? !(model->mu > 0.0) : !(model->mu_c > 0.0);
 }
 
 int tippe_dynamics_n_presets(void) { return N_PRESETS; }
@@ -152,6 +184,11 @@ int tippe_dynamics_precession(const tippe_dynamics_model *model, double theta, d
 
 typedef struct {
     double m, R, eps, A, C, g, mu;
+    int coulomb;          /* friction law: 0 viscous (mu), 1 Coulomb (regularised slip) */
+    int stick_law;        /* Coulomb with the event-driven stick (rolling) phase */
+    int stick;            /* current phase: 1 rolling without slipping (V_Q = 0) */
+    double mu_c, vs, vs2; /* Coulomb coefficient, its slip scale v_s and v_s^2 */
+    double min_stage_stick; /* smallest mu_c Rn - |F| met by a stage since reset (rolling) */
     /* Constants of the right-hand side, once per run rather than per call. */
     double one_minus_A_over_C, C_minus_A_over_A, inv_A;
     size_t dim;
@@ -164,6 +201,9 @@ typedef struct {
 typedef struct {
     double k[3], w[3], v[3], q[3], VQ[3];
     double n, Rn, den, power;
+    double mu_eff;  /* s/m: mu (viscous) or mu_c / sqrt(|V_Q|^2 + v_s^2) (Coulomb) */
+    double F[2];    /* N, horizontal friction force */
+    double K[3][3]; /* contact compliance (Delassus) matrix, rolling phase only */
     double wdot[3];
 } contact;
 
@@ -180,6 +220,53 @@ static void cross3(const double a[3], const double b[3], double out[3])
     out[0] = r0;
     out[1] = r1;
     out[2] = r2;
+}
+
+/* The angular acceleration that a torque tau about the centre of mass adds:
+ * A omega' = tau - (1 - A/C)(tau.k) k (the lab form of eq 3.13, L = A omega + (C - A) n k). */
+static void inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3])
+{
+    const double tk = dot3(tau, k);
+    for (int i = 0; i < 3; i++)
+        out[i] = (tau[i] - c->one_minus_A_over_C * tk * k[i]) * c->inv_A;
+}
+
+/* K P: the change of the contact point's velocity V_Q = v + omega x q that a
+ * force (or impulse) P at the contact makes, P/m + (I^-1 (q x P)) x q. K is
+ * symmetric positive definite (the contact's Delassus matrix). */
+static void compliance(const dyn_ctx *c, const double k[3], const double q[3], double K[3][3])
+{
+    for (int j = 0; j < 3; j++) {
+        double e[3] = {0.0, 0.0, 0.0}, qe[3], w[3], wq[3];
+        e[j] = 1.0;
+        cross3(q, e, qe);
+        inv_inertia(c, k, qe, w);
+        cross3(w, q, wq);
+        for (int i = 0; i < 3; i++)
+            K[i][j] = wq[i] + (i == j ? 1.0 / c->m : 0.0);
+    }
+}
+
+/* x = K^-1 b by Cramer's rule (3 x 3, K positive definite: det > 0). */
+static int solve3(const double K[3][3], const double b[3], double x[3])
+{
+    const double c0 = K[1][1] * K[2][2] - K[1][2] * K[2][1];
+    const double c1 = K[1][2] * K[2][0] - K[1][0] * K[2][2];
+    const double c2 = K[1][0] * K[2][1] - K[1][1] * K[2][0];
+    const double det = K[0][0] * c0 + K[0][1] * c1 + K[0][2] * c2;
+    if (!(det > 0.0))
+        return 1;
+    double M[3][3];
+    for (int j = 0; j < 3; j++) {
+        memcpy(M, K, sizeof M);
+        for (int i = 0; i < 3; i++)
+            M[i][j] = b[i];
+        x[j] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
+                M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+                M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
+               det;
+    }
+    return 0;
 }
 
 /* Everything the right-hand side needs from a state: the contact velocity, the
@@ -211,8 +298,46 @@ static int contact_eval(const dyn_ctx *c, const double *y, contact *o)
     o->VQ[0] = o->v[0] + wq[0]; /* eq 3.7 */
     o->VQ[1] = o->v[1] + wq[1];
     o->VQ[2] = 0.0; /* vanishes identically by the constraint (eq 3.11) */
-    /* F = Rn (e3 - mu V_Q) (eq 3.12): force and torque are linear in Rn. */
-    const double f[3] = {-c->mu * o->VQ[0], -c->mu * o->VQ[1], 1.0};
+    if (c->stick) {
+        /* Rolling without slipping: the contact force Fc = (F, Rn) keeps the contact
+         * point at rest, d/dt V_Q = 0 with q' = eps omega x k:
+         *   Fc/m - g e3 + (I^-1 (q x Fc) + a0) x q + eps omega x (omega x k) = 0,
+         * i.e. K Fc = g e3 - a0 x q - eps omega x (omega x k), a0 the gyroscopic
+         * part of omega'. Its z row is eq 3.17; K is positive definite, so Fc is
+         * always determined (no Painleve case while rolling). */
+        double a0[3], a0q[3], wwk[3], b[3], Fc[3], tau[3], wt[3];
+        const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
+        for (int i = 0; i < 3; i++)
+            a0[i] = minus_CmA_A_n * wk[i];
+        cross3(a0, o->q, a0q);
+        cross3(w, wk, wwk);
+        for (int i = 0; i < 3; i++)
+            b[i] = -a0q[i] - c->eps * wwk[i];
+        b[2] += c->g;
+        compliance(c, k, o->q, o->K);
+        if (solve3(o->K, b, Fc))
+            return 1;
+        cross3(o->q, Fc, tau);
+        inv_inertia(c, k, tau, wt);
+        for (int i = 0; i < 3; i++)
+            o->wdot[i] = wt[i] + a0[i];
+        o->Rn = Fc[2];
+        o->F[0] = Fc[0];
+        o->F[1] = Fc[1];
+        o->den = 1.0;
+        o->mu_eff = 0.0;
+        /* exact rolling dissipates nothing: any change of E while rolling is
+         * integration error, and shows in the energy balance |E + D - E0| */
+        o->power = 0.0;
+        return 0;
+    }
+    const double slip2 = o->VQ[0] * o->VQ[0] + o->VQ[1] * o->VQ[1];
+    /* Both laws are F = -mu_eff Rn V_Q with mu_eff fixed by the state alone (V_Q does
+     * not depend on Rn): viscous mu (eq 3.12), or regularised Coulomb
+     * mu_c / sqrt(|V_Q|^2 + v_s^2), so |F| -> mu_c Rn for |V_Q| >> v_s. */
+    o->mu_eff = c->coulomb ? c->mu_c / sqrt(slip2 + c->vs2) : c->mu;
+    /* F = Rn (e3 - mu_eff V_Q): force and torque are linear in Rn. */
+    const double f[3] = {-o->mu_eff * o->VQ[0], -o->mu_eff * o->VQ[1], 1.0};
     double tau[3];
     cross3(o->q, f, tau); /* torque per unit Rn about the CoM (eq 3.13) */
     const double tk = dot3(tau, k);
@@ -237,7 +362,9 @@ static int contact_eval(const dyn_ctx *c, const double *y, contact *o)
     o->Rn = c->m * (c->g - c->eps * (a0k[2] + wwk[2])) / o->den;
     for (int i = 0; i < 3; i++)
         o->wdot[i] = o->Rn * a1[i] + a0[i];
-    o->power = c->mu * o->Rn * (o->VQ[0] * o->VQ[0] + o->VQ[1] * o->VQ[1]); /* eq 4.1 */
+    o->F[0] = -o->mu_eff * o->Rn * o->VQ[0];
+    o->F[1] = -o->mu_eff * o->Rn * o->VQ[1];
+    o->power = o->mu_eff * o->Rn * slip2; /* eq 4.1; Coulomb: mu_c Rn |V_Q| for |V_Q| >> v_s */
     return 0;
 }
 
@@ -256,12 +383,17 @@ static int rhs(double t, const double y[], double f[], void *params)
     }
     if (o.Rn < c->min_stage_Rn)
         c->min_stage_Rn = o.Rn;
+    if (c->stick) {
+        const double g = c->mu_c * o.Rn - hypot(o.F[0], o.F[1]);
+        if (g < c->min_stage_stick)
+            c->min_stage_stick = g;
+    }
     /* dk/dt = omega x k with the unnormalised k: the exact flow keeps |k|. */
     cross3(o.w, y + IK, f + IK);
     for (int i = 0; i < 3; i++)
         f[IW + i] = o.wdot[i];
-    f[IV] = -c->mu * o.Rn * o.VQ[0] / c->m; /* eq 3.14 horizontal */
-    f[IV + 1] = -c->mu * o.Rn * o.VQ[1] / c->m;
+    f[IV] = o.F[0] / c->m; /* eq 3.14 horizontal */
+    f[IV + 1] = o.F[1] / c->m;
     f[ID] = o.power;
     if (c->dim == DIM_TRAJECTORY) {
         /* q' = (0, omega) q / 2 for a lab-frame angular velocity. */
@@ -404,6 +536,20 @@ static int check_inputs(const tippe_dynamics_model *model, const tippe_dynamics_
         return tippe_error_set(err, TIPPE_EINPUT, "g = %g m/s^2 must be positive", model->g);
     if (!(model->mu >= 0 && isfinite(model->mu)))
         return tippe_error_set(err, TIPPE_EINPUT, "mu = %g s/m must be >= 0", model->mu);
+    if (model->law != TIPPE_FRICTION_VISCOUS && model->law != TIPPE_FRICTION_COULOMB &&
+        model->law != TIPPE_FRICTION_COULOMB_CREEP)
+        return tippe_error_set(err, TIPPE_EINPUT, "unknown friction law %d", (int)model->law);
+    if (model->law != TIPPE_FRICTION_VISCOUS) {
+        if (!(model->mu_c >= 0 && model->mu_c <= 1e6))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "Coulomb friction coefficient mu_c = %g must be in [0, 1e6]",
+                                   model->mu_c);
+        if (!(model->slip_scale_m_s >= 0 && model->slip_scale_m_s <= 1e3))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "Coulomb slip scale v_s = %g m/s must be in [0, 1e3] "
+                                   "(0: the default %g m/s)",
+                                   model->slip_scale_m_s, TIPPE_COULOMB_SLIP_SCALE_M_S);
+    }
     if (!(ic->theta >= 0 && ic->theta <= M_PI))
         return tippe_error_set(err, TIPPE_EINPUT, "initial theta = %g rad must be in [0, pi]",
                                ic->theta);
@@ -439,6 +585,13 @@ static void ctx_init(dyn_ctx *c, const tippe_dynamics_model *model, size_t dim)
     c->C = model->top.C;
     c->g = model->g;
     c->mu = model->mu;
+    c->coulomb = model->law == TIPPE_FRICTION_COULOMB ||
+                 model->law == TIPPE_FRICTION_COULOMB_CREEP;
+    c->stick_law = model->law == TIPPE_FRICTION_COULOMB && model->mu_c > 0.0;
+    c->mu_c = model->mu_c;
+    c->vs = model->slip_scale_m_s > 0.0 ? model->slip_scale_m_s : TIPPE_COULOMB_SLIP_SCALE_M_S;
+    c->vs2 = c->vs * c->vs;
+    c->min_stage_stick = INFINITY;
     c->one_minus_A_over_C = 1.0 - c->A / c->C;
     c->C_minus_A_over_A = (c->C - c->A) / c->A;
     c->inv_A = 1.0 / c->A;
@@ -490,10 +643,19 @@ int tippe_dynamics_evaluate(const tippe_dynamics_model *model, const tippe_dynam
     return TIPPE_OK;
 }
 
-/* Normal force after a trial step of length h from (t0, y0) with a high-order
- * one-step method: the function that the lost-contact bisection brackets. */
+/* The events located by bisection: lift-off (Rn = 0) and, while rolling, the end
+ * of sticking (|F| = mu_c Rn, the edge of Coulomb's friction cone). */
+enum { EVENT_LIFT_OFF = 0, EVENT_SLIP = 1 };
+
+static double event_value(const dyn_ctx *c, const contact *o, int event)
+{
+    return event == EVENT_SLIP ? c->mu_c * o->Rn - hypot(o->F[0], o->F[1]) : o->Rn;
+}
+
+/* The event's function (Rn, or mu_c Rn - |F|) after a trial step of length h from
+ * (t0, y0) with a high-order one-step method: what the bisection brackets. */
 static int Rn_after(dyn_ctx *c, gsl_odeiv2_step *bs, const gsl_odeiv2_system *sys, double t0,
-                    const double *y0, double h, double *y, double *Rn)
+                    const double *y0, double h, int event, double *y, double *Rn)
 {
     double yerr[DIM_TRAJECTORY];
     memcpy(y, y0, c->dim * sizeof *y);
@@ -506,7 +668,7 @@ static int Rn_after(dyn_ctx *c, gsl_odeiv2_step *bs, const gsl_odeiv2_system *sy
     contact o;
     if (contact_eval(c, y, &o))
         return GSL_EBADFUNC;
-    *Rn = o.Rn;
+    *Rn = event_value(c, &o, event);
     return GSL_SUCCESS;
 }
 
@@ -518,7 +680,7 @@ static int Rn_after(dyn_ctx *c, gsl_odeiv2_step *bs, const gsl_odeiv2_system *sy
  * the state with Rn >= 0 at the crossing and *h_cross its offset from t0.
  * Returns 1 if a crossing was found, 0 if none, < 0 on failure. */
 static int locate_lift_off(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0, const double *y0,
-                           double H, int end_negative, double *y, double *h_cross)
+                           double H, int end_negative, int event, double *y, double *h_cross)
 {
     gsl_odeiv2_step *bs = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, c->dim);
     if (!bs)
@@ -529,7 +691,7 @@ static int locate_lift_off(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0, 
         const int n_scan = 16;
         for (int i = 1; i <= n_scan; i++) {
             double hh = H * i / n_scan;
-            if (Rn_after(c, bs, sys, t0, y0, hh, ytmp, &Rn) != GSL_SUCCESS) {
+            if (Rn_after(c, bs, sys, t0, y0, hh, event, ytmp, &Rn) != GSL_SUCCESS) {
                 status = -1;
                 break;
             }
@@ -544,7 +706,7 @@ static int locate_lift_off(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0, 
     if (found && status == 0) {
         for (int it = 0; it < 200 && hi - lo > 1e-13 * H; it++) {
             double mid = 0.5 * (lo + hi);
-            if (Rn_after(c, bs, sys, t0, y0, mid, ytmp, &Rn) != GSL_SUCCESS) {
+            if (Rn_after(c, bs, sys, t0, y0, mid, event, ytmp, &Rn) != GSL_SUCCESS) {
                 status = -1;
                 break;
             }
@@ -553,7 +715,7 @@ static int locate_lift_off(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0, 
             else
                 lo = mid;
         }
-        if (status == 0 && Rn_after(c, bs, sys, t0, y0, lo, y, &Rn) != GSL_SUCCESS)
+        if (status == 0 && Rn_after(c, bs, sys, t0, y0, lo, event, y, &Rn) != GSL_SUCCESS)
             status = -1;
         *h_cross = lo;
     }
@@ -572,6 +734,7 @@ typedef struct {
     gsl_odeiv2_driver *drv;
     double y[DIM_TRAJECTORY], y_prev[DIM_TRAJECTORY];
     double t, t_prev, theta_prev, theta_launch, h;
+    double theta_prev_step;         /* theta at the previous accepted step (rolling) */
     double phi, psi;                /* continued Euler angles (trajectory level) */
     long i_sample;                  /* index of the next sample time */
     int at_sample;                  /* the last step landed on a sample time */
@@ -579,6 +742,11 @@ typedef struct {
     double energy_abs_err, J_abs_err; /* running maxima of |E + D - E0|, |J - J0| */
     verdict_ctx vc;
     double contact_retry_excess;    /* try the contact bound when E - V_min is below this */
+    /* Rolling: 1 waiting for a minimum of theta, 2 following a period from it; the
+     * period's theta range (widened by half the largest step in theta), its least
+     * margin mu_c Rn - |F| and least Rn. */
+    int roll_phase, roll_seen_max;
+    double roll_prev_thd, roll_lo, roll_hi, roll_dtheta, roll_gmin, roll_Rn_min;
     contact ct;
     tippe_dynamics_sample smp;
 } run_state;
@@ -658,12 +826,13 @@ static int run_emit(run_state *rs, tippe_error *err)
 }
 
 /* Whether the motion must end at a steady state (section 4, Proposition 4.2): it
- * needs friction (mu > 0) and an eccentric sphere (eps > 0). With mu = 0 nothing
+ * needs friction (mu > 0, or mu_c > 0) and an eccentric sphere (eps > 0); with
+ * Coulomb sticking the end state is still not proved (end_state_proved = 0). With mu = 0 nothing
  * dissipates; with eps = 0 the ball can roll without slipping for ever, its axis
  * turning, and rolling dissipates nothing. Then only confinement is proved. */
 static int run_dissipates_to_rest(const run_state *rs)
 {
-    return rs->c.mu > 0.0 && rs->vc.top.eps > 0.0;
+    return rs->vc.dissipative && rs->vc.top.eps > 0.0;
 }
 
 /* The verdict of a trapped well and the steady state at its minimum for J0. */
@@ -684,6 +853,7 @@ static void run_set_trapped(run_state *rs, const verdict_trap *tr, double margin
     res->margin_J = margin;
     res->Rn_bound_N = Rn_bound;
     res->phi_dot_final_rad_s = 0.0;
+    res->rolling = rs->c.stick;
     if (!run_dissipates_to_rest(rs)) {
         /* a range, not an end state */
         res->verdict = TIPPE_VERDICT_BOUNDED;
@@ -736,8 +906,15 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
         return 0;
     verdict_trap_range(&rs->vc, rs->smp.E, margin, &tr);
     const double Rn_bound = verdict_contact_bound(&rs->vc, rs->smp.E + margin, tr.lo, tr.hi);
+    /* With sticking the top can roll for ever anywhere in [lo, hi] (nothing dissipates
+     * while it rolls), so only the range is proved: tip needs all of it above pi/2,
+     * no_tip all of it below. */
+    const double th_min = rs->vc.wells.well[tr.well].theta_min_rad;
+    const int side_ok = !rs->c.stick_law || !tr.trapped ||
+                        (th_min == M_PI ? tr.lo > 0.5 * M_PI
+                                        : th_min == 0.0 ? tr.hi < 0.5 * M_PI : 1);
     /* a twentieth of m g: room for the variation of the bound between its nodes */
-    if (!(Rn_bound > 0.05 * rs->c.m * rs->c.g)) {
+    if (!(Rn_bound > 0.05 * rs->c.m * rs->c.g) || !side_ok) {
         rs->contact_retry_excess = 0.5 * excess;
         return 0;
     }
@@ -768,6 +945,113 @@ static void run_monitor(run_state *rs, tippe_dynamics_result *res)
     rs->theta_prev = s->theta;
 }
 
+/* Coulomb's stick (Leine and Glocker 2003): once the slip is below 30 v_s and the force
+ * that rolling without slipping needs lies inside the friction cone (|F| <= mu_c Rn,
+ * Rn > 0), the contact sticks. The slip left (< 30 v_s) is removed by the contact
+ * impulse P = -K^-1 V_Q that brings it to 0 (a perfectly inelastic tangential
+ * impact): the energy falls by V_Q.K^-1 V_Q / 2 >= 0, booked as dissipated (D). The
+ * run then integrates the rolling equations until |F| reaches mu_c Rn. */
+static void run_try_stick(run_state *rs, tippe_dynamics_result *res)
+{
+    dyn_ctx *c = &rs->c;
+    /* The regularised law leaves a creeping slip v_s r / sqrt(1 - r^2) where exact
+     * Coulomb friction would stick (r = |F| / mu_c Rn < 1): 30 v_s catches r < 0.9994. */
+    const double slip2 = rs->ct.VQ[0] * rs->ct.VQ[0] + rs->ct.VQ[1] * rs->ct.VQ[1];
+    if (!c->stick_law || c->stick || !(slip2 < STICK_SLIP_FACTOR * STICK_SLIP_FACTOR * c->vs2))
+        return;
+    c->stick = 1;
+    contact o;
+    /* inside the cone by STICK_MARGIN mu_c m g: where the contact just broke loose (the
+     * force on the cone's edge) it slides on rather than sticking again at once */
+    if (contact_eval(c, rs->y, &o) || !(o.Rn > 0.0) ||
+        !(event_value(c, &o, EVENT_SLIP) > STICK_MARGIN * c->mu_c * c->m * c->g)) {
+        c->stick = 0; /* rolling needs more than the cone gives: it keeps sliding */
+        return;
+    }
+    const double V[3] = {o.VQ[0], o.VQ[1], 0.0};
+    double P[3], qP[3], dw[3];
+    if (solve3(o.K, V, P)) {
+        c->stick = 0;
+        return;
+    }
+    for (int i = 0; i < 3; i++)
+        P[i] = -P[i];
+    cross3(o.q, P, qP);
+    inv_inertia(c, o.k, qP, dw);
+    rs->y[IV] += P[0] / c->m;
+    rs->y[IV + 1] += P[1] / c->m;
+    for (int i = 0; i < 3; i++)
+        rs->y[IW + i] += dw[i];
+    rs->y[ID] -= 0.5 * dot3(V, P);
+    gsl_odeiv2_driver_reset(rs->drv);
+    contact_eval(c, rs->y, &rs->ct);
+    res->stick_events++;
+    run_fill_sample(rs);
+    rs->roll_phase = 1;
+    rs->roll_prev_thd = rs->smp.theta_dot;
+}
+
+/* Whether a rolling top rolls for ever. A sphere with an axisymmetric mass
+ * distribution rolling without slipping on a plane is integrable (Routh 1884: E,
+ * Jellett's J and Routh's integral), and the force the contact needs depends only
+ * on the reduced state, which is periodic in the nutation: theta swings between
+ * two minima of the same value. So if over one period, from one minimum of theta
+ * to the next, the force stayed inside the cone with room to spare (1e-3 mu_c m g,
+ * for the error of the integration and of sampling the period at the steps), it
+ * does so for ever. Then theta stays within the period's range: no_tip below pi/2,
+ * tip above, else bounded. 1 if decided. */
+static int run_try_rolling(run_state *rs, tippe_dynamics_result *res)
+{
+    dyn_ctx *c = &rs->c;
+    if (!c->stick) {
+        rs->roll_phase = 0;
+        return 0;
+    }
+    const tippe_dynamics_sample *s = &rs->smp;
+    const int minimum = rs->roll_prev_thd < 0.0 && s->theta_dot >= 0.0;
+    /* a period passes a maximum of theta too: a sign change of theta_dot at a minimum
+     * that noise repeats within a step or two is not a period */
+    if (rs->roll_prev_thd > 0.0 && s->theta_dot <= 0.0)
+        rs->roll_seen_max = 1;
+    rs->roll_prev_thd = s->theta_dot;
+    if (rs->roll_phase == 2) {
+        const double g = fmin(event_value(c, &rs->ct, EVENT_SLIP), c->min_stage_stick);
+        rs->roll_gmin = fmin(rs->roll_gmin, g);
+        rs->roll_Rn_min = fmin(rs->roll_Rn_min, fmin(s->Rn, c->min_stage_Rn));
+        rs->roll_dtheta = fmax(rs->roll_dtheta, fabs(s->theta - rs->theta_prev_step));
+        rs->roll_lo = fmin(rs->roll_lo, s->theta);
+        rs->roll_hi = fmax(rs->roll_hi, s->theta);
+    }
+    rs->theta_prev_step = s->theta;
+    if (!minimum)
+        return 0;
+    if (rs->roll_phase == 2 && rs->roll_seen_max &&
+        rs->roll_gmin > STICK_MARGIN * c->mu_c * c->m * c->g) {
+        const double lo = fmax(0.0, rs->roll_lo - 0.5 * rs->roll_dtheta);
+        const double hi = fmin(M_PI, rs->roll_hi + 0.5 * rs->roll_dtheta);
+        res->how = TIPPE_DECIDED_ROLLING;
+        res->verdict = hi < 0.5 * M_PI   ? TIPPE_VERDICT_NO_TIP
+                       : lo > 0.5 * M_PI ? TIPPE_VERDICT_TIP
+                                         : TIPPE_VERDICT_BOUNDED;
+        res->t_verdict = rs->t;
+        res->final = *s;
+        res->theta_final_rad = s->theta;
+        res->spin_final_rad_s = s->spin;
+        res->phi_dot_final_rad_s = s->phi_dot;
+        res->theta_lo_rad = lo;
+        res->theta_hi_rad = hi;
+        res->Rn_bound_N = rs->roll_Rn_min;
+        res->rolling = 1;
+        return 1;
+    }
+    rs->roll_phase = 2;
+    rs->roll_seen_max = 0;
+    rs->roll_lo = rs->roll_hi = s->theta;
+    rs->roll_dtheta = 0.0;
+    rs->roll_gmin = rs->roll_Rn_min = INFINITY;
+    return 0;
+}
+
 /* One accepted step towards the next sample time or t_end. Returns 1 if the top
  * lost contact in it (the state is then the lift-off), 0 if not, or an error. */
 static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
@@ -780,16 +1064,19 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
     rs->t_prev = rs->t;
     memcpy(rs->y_prev, rs->y, c->dim * sizeof *rs->y);
     c->min_stage_Rn = INFINITY;
+    c->min_stage_stick = INFINITY;
     c->bad_contact = 0;
+    const int was_stuck = c->stick;
     int s = gsl_odeiv2_evolve_apply(rs->drv->e, rs->drv->c, rs->drv->s, &rs->sys, &rs->t,
                                     t_target, &rs->h, rs->y);
     if (s != GSL_SUCCESS) {
         if (c->bad_contact)
             return -tippe_error_set(err, TIPPE_ECOMPUTE,
                                     "at t = %g s the contact force became undetermined "
-                                    "(denominator of eq 3.19 <= 0: friction mu = %g s/m "
+                                    "(denominator of eq 3.19 <= 0: friction %s %g%s "
                                     "too strong for the model)",
-                                    rs->t, c->mu);
+                                    rs->t, c->coulomb ? "mu_c" : "mu",
+                                    c->coulomb ? c->mu_c : c->mu, c->coulomb ? "" : " s/m");
         return -tippe_error_set(err, TIPPE_ECOMPUTE,
                                 "integrator (%s, rtol %g) failed at t = %g s: %s",
                                 opt->accuracy.stepper, opt->accuracy.rtol, rs->t,
@@ -803,12 +1090,37 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
         return -tippe_error_set(err, TIPPE_ECOMPUTE,
                                 "at t = %g s the contact force became undetermined "
                                 "(denominator of eq 3.19 <= 0)", rs->t);
+    if (was_stuck)
+        res->rolling_time_s += rs->t - rs->t_prev;
     int lost = 0;
-    if (rs->ct.Rn < 0.0 || c->min_stage_Rn < 0.0) {
+    const double stick_end = was_stuck ? event_value(c, &rs->ct, EVENT_SLIP) : INFINITY;
+    if (was_stuck && (stick_end < 0.0 || c->min_stage_stick < 0.0)) {
+        /* The rolling force left the friction cone in this step (its edge comes
+         * before Rn = 0): find where, and slide from there. */
+        double hc = 0.0, ycross[DIM_TRAJECTORY];
+        int f = locate_lift_off(c, &rs->sys, rs->t_prev, rs->y_prev, rs->t - rs->t_prev,
+                                stick_end < 0.0, EVENT_SLIP, ycross, &hc);
+        if (f < 0)
+            return -tippe_error_set(err, TIPPE_ECOMPUTE,
+                                    "failed to locate the end of rolling near t = %g s", rs->t);
+        if (f == 1) {
+            res->rolling_time_s -= rs->t - rs->t_prev - hc;
+            rs->t = rs->t_prev + hc;
+            memcpy(rs->y, ycross, c->dim * sizeof *rs->y);
+            c->stick = 0;
+            res->slip_events++;
+            gsl_odeiv2_driver_reset(rs->drv);
+            contact_eval(c, rs->y, &rs->ct);
+            if (rs->traj && opt->sample_dt > 0.0 && rs->at_sample) {
+                rs->at_sample = 0; /* stopped short of the sample time */
+                rs->i_sample--;
+            }
+        }
+    } else if (rs->ct.Rn < 0.0 || c->min_stage_Rn < 0.0) {
         /* Never accept a state with Rn < 0: find where it reached 0. */
         double hc = 0.0, ycross[DIM_TRAJECTORY];
         int f = locate_lift_off(c, &rs->sys, rs->t_prev, rs->y_prev, rs->t - rs->t_prev,
-                                rs->ct.Rn < 0.0, ycross, &hc);
+                                rs->ct.Rn < 0.0, EVENT_LIFT_OFF, ycross, &hc);
         if (f < 0)
             return -tippe_error_set(err, TIPPE_ECOMPUTE,
                                     "failed to locate the lift-off near t = %g s", rs->t);
@@ -821,6 +1133,8 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
     }
     run_fill_sample(rs);
     run_monitor(rs, res);
+    if (!lost)
+        run_try_stick(rs, res);
     return lost;
 }
 
@@ -874,6 +1188,8 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
     }
     rs.i_sample = 1;
     run_fill_sample(&rs);
+    res->end_state_proved = !rs.c.stick_law;
+    run_try_stick(&rs, res);
     rs.theta_prev = rs.theta_launch = rs.smp.theta;
     res->min_Rn = rs.ct.Rn;
     res->final = rs.smp;
@@ -904,7 +1220,7 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
         }
         if (lost)
             break;
-        if (res->how == TIPPE_DECIDED_T_END)
+        if (res->how == TIPPE_DECIDED_T_END && !run_try_rolling(&rs, res))
             run_try_decide(&rs, res);
     }
 
@@ -917,6 +1233,7 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
         res->theta_final_rad = rs.smp.theta;
         res->spin_final_rad_s = rs.smp.spin;
         res->phi_dot_final_rad_s = rs.smp.phi_dot;
+        res->rolling = rs.c.stick;
     }
     res->jellett_rel_drift = rs.J_abs_err / rs.J_scale;
     res->energy_rel_error = rs.energy_abs_err / res->E0;

@@ -9,7 +9,7 @@ int tippe_dynamics_euler_rhs(const tippe_dynamics_model *model, const double y[T
                              double dydt[TIPPE_EULER_DIM], double *Rn_out)
 {
     const double m = model->top.m, R = model->top.R, eps = model->top.eps;
-    const double A = model->top.A, C = model->top.C, g = model->g, mu = model->mu;
+    const double A = model->top.A, C = model->top.C, g = model->g;
     const double theta = y[0], beta = y[1], alpha = y[2], n = y[3], U = y[4], V = y[5];
     const double s = sin(theta), c = cos(theta);
     if (s == 0.0)
@@ -21,6 +21,13 @@ int tippe_dynamics_euler_rhs(const tippe_dynamics_model *model, const double y[T
     /* eq 3.9: contact-point velocity in the frame (e1, e2, e3) */
     const double VQx = U - beta * h;
     const double VQy = V + s * (alpha * eps + R * (n - alpha * c));
+    /* Coulomb while sliding: F = -mu_c Rn V_Q / sqrt(|V_Q|^2 + v_s^2), i.e. eq 3.12
+     * with a coefficient fixed by the slip alone, so Rn stays linear (eq 3.19). */
+    const double vs = model->slip_scale_m_s > 0.0 ? model->slip_scale_m_s
+                                                  : TIPPE_COULOMB_SLIP_SCALE_M_S;
+    const double mu = model->law != TIPPE_FRICTION_VISCOUS
+                          ? model->mu_c / sqrt(VQx * VQx + VQy * VQy + vs * vs)
+                          : model->mu;
 
     /* eq 3.15 (second) without the normal force: the gyroscopic term. */
     const double P = -alpha * s * (C * n - A * alpha * c);

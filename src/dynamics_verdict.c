@@ -1,7 +1,8 @@
 /* The proved verdict: energy trapping in a well of the effective potential and a
  * contact bound over the trapped set (docs/dynamics.md, "Proved verdicts").
  *
- * With mu > 0 and contact, E never increases (eq 4.1) and J is conserved (eq 3.21);
+ * With friction (viscous mu > 0, or Coulomb mu_c > 0: both are F = -mu_eff Rn V_Q with
+ * mu_eff > 0) and contact, E never increases (eq 4.1) and J is conserved (eq 3.21);
  * E >= V(theta; J) (tippe/theory.h). So if E + margin is below every other critical
  * value of V in the current well, theta stays in the well and the only steady state
  * the motion can approach is the well's minimum (the states where dissipation stops
@@ -18,6 +19,11 @@ int verdict_init(verdict_ctx *v, const tippe_dynamics_model *model, double J, ti
     v->top = model->top;
     v->g = model->g;
     v->mu = model->mu;
+    v->coulomb = model->law != TIPPE_FRICTION_VISCOUS;
+    v->mu_c = model->mu_c;
+    v->vs = model->slip_scale_m_s > 0.0 ? model->slip_scale_m_s : TIPPE_COULOMB_SLIP_SCALE_M_S;
+    v->dissipative = !tippe_dynamics_frictionless(model);
+    v->stick = model->law == TIPPE_FRICTION_COULOMB;
     v->J = J;
     int rc = tippe_theory_find_wells(&v->top, v->g, J, &v->wells, err);
     if (rc)
@@ -119,7 +125,16 @@ static double bound_at(const verdict_ctx *v, double theta, double E_max)
     const double h = t->R - eps * x;
     const double VQX_max = sqrt(2.0 * dK * (1.0 / m + h * h / Ieff)); /* Cauchy-Schwarz */
     const double base = 1.0 + m * eps * eps * s * s / t->A;
-    const double fr = m * eps * s * v->mu * h * VQX_max / t->A;
+    /* |F_X| / Rn: viscous mu |V_QX|; sliding Coulomb mu_c |V_QX| / sqrt(|V_Q|^2 + v_s^2)
+     * <= mu_c x / sqrt(x^2 + v_s^2) at x = VQX_max (increasing in x); rolling, any
+     * force in the cone, so mu_c. Eq 3.19's denominator holds for any friction force
+     * (only F_X enters the torque about e2). */
+    double mu_VQX = v->mu * VQX_max;
+    if (v->stick)
+        mu_VQX = v->mu_c;
+    else if (v->coulomb)
+        mu_VQX = v->mu_c * VQX_max / sqrt(VQX_max * VQX_max + v->vs * v->vs);
+    const double fr = m * eps * s * h * mu_VQX / t->A;
     if (!(N > 0.0) || !(base - fr > 0.0))
         return -INFINITY;
     return m * N / (base + fr);

@@ -9,6 +9,11 @@
 typedef struct {
     tippe_top top;
     double g, mu, J;
+    int coulomb;      /* friction law: regularised Coulomb (mu_c, v_s) instead of mu */
+    double mu_c, vs;  /* Coulomb coefficient, regularisation speed (m/s) */
+    int dissipative;  /* friction is nonzero: E falls while the contact slides */
+    int stick;        /* Coulomb with sticking: while rolling the friction is anything
+                         inside the cone |F| <= mu_c Rn */
     tippe_theory_wells wells;
     double D_min;  /* kg m^2, least of D(theta) = A R^2 sin^2 + C (R cos - eps)^2 */
 } verdict_ctx;

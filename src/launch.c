@@ -29,6 +29,10 @@ void tippe_launch_options_default(tippe_launch_options *o)
     /* docs/launch.md: a tabletop's Coulomb coefficient (~0.3) over the median contact
      * slip speed before a hand-spun M12 ball flips (~0.13 m/s, measured). */
     o->mu = TIPPE_LAUNCH_DEFAULT_MU_S_M;
+    /* issue 21: a real table's friction is Coulomb's (docs/launch.md) */
+    o->law = TIPPE_FRICTION_COULOMB;
+    o->mu_c = TIPPE_LAUNCH_DEFAULT_MU_C;
+    o->slip_scale_m_s = 0.0;
     o->g = TIPPE_DEFAULT_G_M_S2;
     o->t_end = 600.0;
     o->until_flip = 1;
@@ -61,6 +65,17 @@ int tippe_launch_options_check(const tippe_launch_options *o, tippe_error *err)
                                o->slide_sd_m_s);
     if (!(o->mu >= 0 && isfinite(o->mu)))
         return tippe_error_set(err, TIPPE_EINPUT, "mu = %g s/m must be >= 0", o->mu);
+    if (o->law != TIPPE_FRICTION_VISCOUS && o->law != TIPPE_FRICTION_COULOMB &&
+        o->law != TIPPE_FRICTION_COULOMB_CREEP)
+        return tippe_error_set(err, TIPPE_EINPUT, "unknown friction law %d", (int)o->law);
+    if (!(o->mu_c >= 0 && o->mu_c <= 10))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "Coulomb friction coefficient mu_c = %g must be in [0, 10]",
+                               o->mu_c);
+    if (!(o->slip_scale_m_s >= 0 && o->slip_scale_m_s <= 1))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "Coulomb slip scale %g m/s must be in [0, 1] (0: the default)",
+                               o->slip_scale_m_s);
     if (!(o->g > 0 && isfinite(o->g)))
         return tippe_error_set(err, TIPPE_EINPUT, "g = %g m/s^2 must be positive", o->g);
     if (!(o->t_end > 0 && isfinite(o->t_end)))
@@ -92,9 +107,13 @@ uint64_t tippe_launch_mix(uint64_t seed, uint64_t draw)
 
 static void model_of(const tippe_top *top, const tippe_launch_options *o, tippe_dynamics_model *m)
 {
+    memset(m, 0, sizeof *m);
     m->top = *top;
     m->g = o->g;
     m->mu = o->mu;
+    m->law = o->law;
+    m->mu_c = o->mu_c;
+    m->slip_scale_m_s = o->slip_scale_m_s;
 }
 
 /* The steady precession (theta_dot = 0 at launch, eq 3.15 with Rn = m g) for
@@ -229,6 +248,8 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->theta_hi_rad = res.theta_hi_rad;
     rec->Rn_bound_N = res.Rn_bound_N;
     rec->t_flip_s = res.t_flip;
+    rec->rolling = res.rolling;
+    rec->end_state_proved = res.end_state_proved;
     rec->J0 = res.J0;
     rec->jellett_rel_drift = res.jellett_rel_drift;
     rec->rhs_evals = res.rhs_evals;
@@ -292,9 +313,12 @@ static int draw_launches(const tippe_launch_plan *plan, const tippe_launch_optio
         return TIPPE_OK;
     return tippe_error_set(err, TIPPE_EINPUT,
                            "launch %ld (draw %ld): the contact force is undetermined at launch "
-                           "(denominator of eq 3.19 <= 0: mu = %g s/m is too strong for its "
-                           "sliding speed); lower mu or the sliding (--slide)",
-                           bad, bad % plan->per_group, o->mu);
+                           "(denominator of eq 3.19 <= 0: friction %s %g%s is too strong for "
+                           "its sliding speed); lower it or the sliding (--slide)",
+                           bad, bad % plan->per_group,
+                           o->law == TIPPE_FRICTION_VISCOUS ? "mu" : "mu_c",
+                           o->law == TIPPE_FRICTION_VISCOUS ? o->mu : o->mu_c,
+                           o->law == TIPPE_FRICTION_VISCOUS ? " s/m" : "");
 }
 
 long tippe_launch_plan_total(const tippe_launch_plan *plan)
@@ -384,6 +408,8 @@ int tippe_launch_tally_records(const tippe_launch_record *r, long n, tippe_launc
             continue;
         if (r[i].verdict == TIPPE_VERDICT_TIP && isfinite(r[i].t_flip_s))
             t[m_flip++] = r[i].t_flip_s;
+        if (r[i].how == TIPPE_DECIDED_ROLLING)
+            out->rolling++;
         if (r[i].how != TIPPE_DECIDED_TRAPPED || r[i].verdict == TIPPE_VERDICT_BOUNDED)
             continue;
         out->trapped++;

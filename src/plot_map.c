@@ -23,7 +23,7 @@ static const unsigned verdict_rgb[TIPPE_LAUNCH_N_VERDICTS] = {
 
 static const char *const verdict_key[TIPPE_LAUNCH_N_VERDICTS] = {
     "no_tip (stays upright)", "tip (flips to #gh = #gp)", "hang (intermediate #gh)",
-    "lost_contact (lifts off)", "undecided by t_end", "bounded (mu or eps = 0)",
+    "lost_contact (lifts off)", "undecided by t_end", "bounded (no rest state)",
 };
 
 static double luminance(unsigned rgb)

@@ -18,8 +18,9 @@
 /* The longest FIELD an override may name. */
 #define MAX_FIELD_LEN 127
 
-static const char *const top_level_keys[] = {"name", "notes", "top", "g", "mu",
+static const char *const top_level_keys[] = {"name", "notes", "top", "g", "mu", "friction",
                                               "initial", "t_end", "accuracy", NULL};
+static const char *const friction_keys[] = {"law", "mu_s_m", "mu", "slip_scale_m_s", NULL};
 static const char *const top_explicit_keys[] = {"m", "R", "eps", "A", "C", NULL};
 static const char *const top_design_keys[] = {"design", "z2_mm", "set", NULL};
 static const char *const top_all_keys[] = {"m", "R", "eps", "A", "C", "design", "z2_mm",
@@ -30,7 +31,68 @@ static const char *const accuracy_keys[] = {"stepper", "rtol", NULL};
 
 /* ---- overrides ---- */
 
+/* The friction is described once: a later override replaces what the file (or an
+ * earlier override) said. "mu" (viscous, s/m) drops a friction block; a field of
+ * the block turns a top-level mu into {"law": "viscous", "mu_s_m": mu} first; and
+ * a new friction.law drops the other law's coefficients. */
+static int friction_before(cJSON *root, const char *field)
+{
+    if (!strcmp(field, "mu")) {
+        cJSON_DeleteItemFromObjectCaseSensitive(root, "friction");
+        return TIPPE_OK;
+    }
+    if (strncmp(field, "friction.", 9) != 0)
+        return TIPPE_OK;
+    cJSON *mu = cJSON_GetObjectItemCaseSensitive(root, "mu");
+    if (!mu || cJSON_GetObjectItemCaseSensitive(root, "friction"))
+        return TIPPE_OK;
+    cJSON *f = cJSON_CreateObject();
+    cJSON *m = cJSON_DetachItemViaPointer(root, mu);
+    if (!f || !cJSON_AddStringToObject(f, "law", "viscous")) {
+        cJSON_Delete(f);
+        cJSON_Delete(m);
+        return TIPPE_ECOMPUTE;
+    }
+    cJSON_AddItemToObject(f, "mu_s_m", m);
+    cJSON_AddItemToObject(root, "friction", f);
+    return TIPPE_OK;
+}
+
+static void friction_after(cJSON *root, const char *field)
+{
+    if (strcmp(field, "friction.law") != 0)
+        return;
+    cJSON *f = cJSON_GetObjectItemCaseSensitive(root, "friction");
+    const cJSON *law = cJSON_GetObjectItemCaseSensitive(f, "law");
+    if (!cJSON_IsString(law))
+        return;
+    if (!strcmp(law->valuestring, "viscous")) {
+        cJSON_DeleteItemFromObjectCaseSensitive(f, "mu");
+        cJSON_DeleteItemFromObjectCaseSensitive(f, "slip_scale_m_s");
+    } else {
+        cJSON_DeleteItemFromObjectCaseSensitive(f, "mu_s_m");
+    }
+}
+
+static int apply_override_raw(tippe_json_reader *c, cJSON *root, const char *text);
+
 static int apply_override(tippe_json_reader *c, cJSON *root, const char *text)
+{
+    const char *eq = strchr(text, '=');
+    char field[MAX_FIELD_LEN + 1] = "";
+    if (eq && (size_t)(eq - text) <= MAX_FIELD_LEN) {
+        memcpy(field, text, (size_t)(eq - text));
+        field[eq - text] = '\0';
+    }
+    if (friction_before(root, field))
+        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+    int rc = apply_override_raw(c, root, text);
+    if (!rc)
+        friction_after(root, field);
+    return rc;
+}
+
+static int apply_override_raw(tippe_json_reader *c, cJSON *root, const char *text)
 {
     const char *eq = strchr(text, '=');
     if (!eq || eq == text)
@@ -124,6 +186,9 @@ static void dirname_of(const char *path, char *dir, size_t cap)
 #define T_END_MAX_S 1e8
 #define G_MAX_M_S2 1e6
 #define MU_MAX_S_M 1e9
+#define MU_C_MAX 10
+#define SLIP_SCALE_MIN_M_S 1e-9
+#define SLIP_SCALE_MAX_M_S 1
 
 /* TIPPE_OK if lo <= x <= hi, else the message naming path and the range. */
 static int check_range(tippe_json_reader *c, const char *path, double x, double lo, double hi,
@@ -256,6 +321,81 @@ static int read_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s)
                                "give either a design (design, z2_mm) or the explicit top "
                                "(m, R, eps, A, C), not both");
     return design ? read_design_top(c, top, design, s) : read_explicit_top(c, top, s);
+}
+
+/* The friction: the top-level "mu" (viscous, s/m: the paper's eq 3.12, as every
+ * scenario before issue 21 gave it), or a block {"law": "viscous", "mu_s_m": X} or
+ * {"law": "coulomb" | "coulomb-creep", "mu": X, "slip_scale_m_s": V}. Without a law
+ * the coefficient names it; a missing coefficient is the launch default. */
+static int read_friction(tippe_json_reader *c, const cJSON *root, tippe_scenario *s)
+{
+    tippe_dynamics_model *m = &s->model;
+    const cJSON *mu = cJSON_GetObjectItemCaseSensitive(root, "mu");
+    const cJSON *f = cJSON_GetObjectItemCaseSensitive(root, "friction");
+    int rc;
+    m->law = TIPPE_FRICTION_VISCOUS;
+    m->mu_c = 0.0;
+    m->slip_scale_m_s = 0.0;
+    if (mu && f)
+        return tippe_json_fail(c, "friction",
+                               "give either \"mu\" (viscous, s/m) or a \"friction\" block, "
+                               "not both");
+    if (!mu && !f)
+        return tippe_json_fail(c, "friction",
+                               "missing: give {\"law\": \"coulomb\", \"mu\": 0.3} or "
+                               "{\"law\": \"viscous\", \"mu_s_m\": S_M} (or \"mu\": S_M)");
+    if (mu) {
+        if ((rc = tippe_json_number(c, root, "", "mu", 1, &m->mu, NULL)))
+            return rc;
+        if (!(m->mu >= 0))
+            return tippe_json_fail(c, "mu", "friction coefficient must be >= 0 s/m, got %g",
+                                   m->mu);
+        return check_range(c, "mu", m->mu, 0, MU_MAX_S_M, "s/m");
+    }
+    if (!cJSON_IsObject(f))
+        return tippe_json_wrong_type(c, "friction", "an object", f);
+    if ((rc = tippe_json_check_keys(c, f, "friction", NULL, friction_keys, NULL)))
+        return rc;
+    const cJSON *law = cJSON_GetObjectItemCaseSensitive(f, "law");
+    const int has_viscous = cJSON_GetObjectItemCaseSensitive(f, "mu_s_m") != NULL;
+    int l = has_viscous ? TIPPE_FRICTION_VISCOUS : TIPPE_FRICTION_COULOMB;
+    if (law) {
+        if (!cJSON_IsString(law))
+            return tippe_json_wrong_type(c, "friction.law", "a law name", law);
+        l = tippe_friction_law_parse(law->valuestring);
+        if (l < 0)
+            return tippe_json_fail(c, "friction.law",
+                                   "unknown law '%s' (viscous, coulomb, coulomb-creep)",
+                                   law->valuestring);
+    }
+    m->law = (tippe_friction_law)l;
+    if (l == TIPPE_FRICTION_VISCOUS) {
+        if (cJSON_GetObjectItemCaseSensitive(f, "mu"))
+            return tippe_json_fail(c, "friction.mu",
+                                   "is the Coulomb coefficient: the viscous law takes mu_s_m "
+                                   "(s/m)");
+        if (cJSON_GetObjectItemCaseSensitive(f, "slip_scale_m_s"))
+            return tippe_json_fail(c, "friction.slip_scale_m_s",
+                                   "belongs to the Coulomb laws, not the viscous one");
+        m->mu = TIPPE_LAUNCH_DEFAULT_MU_S_M;
+        if ((rc = tippe_json_number(c, f, "friction", "mu_s_m", 0, &m->mu, NULL)))
+            return rc;
+        return check_range(c, "friction.mu_s_m", m->mu, 0, MU_MAX_S_M, "s/m");
+    }
+    if (has_viscous)
+        return tippe_json_fail(c, "friction.mu_s_m",
+                               "is the viscous coefficient (s/m): the %s law takes mu",
+                               tippe_friction_law_name(m->law));
+    m->mu = 0.0;
+    m->mu_c = TIPPE_LAUNCH_DEFAULT_MU_C;
+    m->slip_scale_m_s = TIPPE_COULOMB_SLIP_SCALE_M_S;
+    if ((rc = tippe_json_number(c, f, "friction", "mu", 0, &m->mu_c, NULL)) ||
+        (rc = check_range(c, "friction.mu", m->mu_c, 0, MU_C_MAX, "(dimensionless)")) ||
+        (rc = tippe_json_number(c, f, "friction", "slip_scale_m_s", 0, &m->slip_scale_m_s,
+                                NULL)))
+        return rc;
+    return check_range(c, "friction.slip_scale_m_s", m->slip_scale_m_s, SLIP_SCALE_MIN_M_S,
+                       SLIP_SCALE_MAX_M_S, "m/s");
 }
 
 static int read_accuracy(tippe_json_reader *c, const cJSON *acc, tippe_scenario *s)
@@ -426,12 +566,7 @@ static int scenario_from_root(tippe_json_reader *c, cJSON *root, const char *pat
         return tippe_json_fail(c, "g", "must be > 0 m/s^2, got %g", out->model.g);
     if ((rc = check_range(c, "g", out->model.g, 0, G_MAX_M_S2, "m/s^2")))
         return rc;
-    if ((rc = tippe_json_number(c, root, "", "mu", 1, &out->model.mu, NULL)))
-        return rc;
-    if (!(out->model.mu >= 0))
-        return tippe_json_fail(c, "mu", "friction coefficient must be >= 0 s/m, got %g",
-                               out->model.mu);
-    if ((rc = check_range(c, "mu", out->model.mu, 0, MU_MAX_S_M, "s/m")))
+    if ((rc = read_friction(c, root, out)))
         return rc;
     if ((rc = tippe_json_number(c, root, "", "t_end", 1, &out->t_end, NULL)))
         return rc;
@@ -495,7 +630,15 @@ static cJSON *design_root(const char *design_path, double z2_mm, const char *con
     for (int i = 0; i < n_sets; i++)
         cJSON_AddItemToArray(set, cJSON_CreateString(sets[i]));
     cJSON_AddNumberToObject(root, "g", o.g);
-    cJSON_AddNumberToObject(root, "mu", o.mu);
+    if (o.law == TIPPE_FRICTION_VISCOUS) {
+        cJSON_AddNumberToObject(root, "mu", o.mu);
+    } else {
+        cJSON *f = cJSON_AddObjectToObject(root, "friction");
+        if (f) {
+            cJSON_AddStringToObject(f, "law", tippe_friction_law_name(o.law));
+            cJSON_AddNumberToObject(f, "mu", o.mu_c);
+        }
+    }
     cJSON_AddNumberToObject(root, "t_end", o.t_end);
     cJSON_AddStringToObject(root, "accuracy", o.accuracy_name);
     cJSON_AddNumberToObject(ini, "theta", TIPPE_LAUNCH_HALF_NORMAL_MEDIAN * o.tilt_sd_rad);

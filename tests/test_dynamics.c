@@ -15,14 +15,14 @@
 /* Figure 12's top (group IIb): m = g = 1, eps/R = 0.3, A/C = 0.92, R = C = 1. */
 static tippe_dynamics_model fig12(double mu)
 {
-    tippe_dynamics_model m = {{1.0, 1.0, 0.3, 0.92, 1.0, 0}, 1.0, mu};
+    tippe_dynamics_model m = {.top = {1.0, 1.0, 0.3, 0.92, 1.0, 0}, .g = 1.0, .mu = mu};
     return m;
 }
 
 /* Figure 14's top (group IIa): eps/R = 0.5, A/C = 0.55. */
 static tippe_dynamics_model fig14(double mu)
 {
-    tippe_dynamics_model m = {{1.0, 1.0, 0.5, 0.55, 1.0, 0}, 1.0, mu};
+    tippe_dynamics_model m = {.top = {1.0, 1.0, 0.5, 0.55, 1.0, 0}, .g = 1.0, .mu = mu};
     return m;
 }
 
@@ -415,7 +415,7 @@ static void test_groups_I_III(void)
 {
     tippe_error e;
     /* group III (A/C > 1 + eps/R): rises from near theta = 0 but cannot invert */
-    tippe_dynamics_model m3 = {{1.0, 1.0, 0.3, 1.5, 1.0, 0}, 1.0, 0.04};
+    tippe_dynamics_model m3 = {.top = {1.0, 1.0, 0.3, 1.5, 1.0, 0}, .g = 1.0, .mu = 0.04};
     tippe_theory_class cls;
     tippe_theory_classify(1.5, 0.3, &cls);
     CHECK(cls.group == TIPPE_GROUP_III && cls.has_theta_c, "group III");
@@ -429,7 +429,7 @@ static void test_groups_I_III(void)
     CHECK(agrees(&m3, &r, 1e-8), "group III disagrees"); /* as Fig 12 */
 
     /* group I (A/C < 1 - eps/R): theta = 0 is stable at any spin */
-    tippe_dynamics_model m1 = {{1.0, 1.0, 0.3, 0.6, 1.0, 0}, 1.0, 0.04};
+    tippe_dynamics_model m1 = {.top = {1.0, 1.0, 0.3, 0.6, 1.0, 0}, .g = 1.0, .mu = 0.04};
     tippe_dynamics_initial ic1 = {0.1, 0, 0, 10.0, 0, 0};
     tippe_dynamics_precession(&m1, ic1.theta, ic1.spin, TIPPE_PRECESSION_STEADY, &ic1.phi_dot, &e);
     CHECK(run(&m1, &ic1, 20000.0, "balanced", &r) == TIPPE_OK, "run");

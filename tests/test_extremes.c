@@ -19,7 +19,7 @@
 /* Figure 12's top (m = g = 1, R = C = 1, eps/R = 0.3, A/C = 0.92). */
 static tippe_dynamics_model fig12(double mu)
 {
-    tippe_dynamics_model m = {{1.0, 1.0, 0.3, 0.92, 1.0, 0}, 1.0, mu};
+    tippe_dynamics_model m = {.top = {1.0, 1.0, 0.3, 0.92, 1.0, 0}, .g = 1.0, .mu = mu};
     return m;
 }
 
@@ -225,7 +225,7 @@ static void test_vertical(void)
 /* The section 7.2 top at 1e4 rad/s, 40 times its hand spin. */
 static void test_high_spin(void)
 {
-    tippe_dynamics_model m = {{0.006, 0.015, 0.0075, 0.82e-6, 0.7e-6, 0}, 9.81, 0.3};
+    tippe_dynamics_model m = {.top = {0.006, 0.015, 0.0075, 0.82e-6, 0.7e-6, 0}, .g = 9.81, .mu = 0.3};
     tippe_dynamics_initial ic = steady(&m, 0.1, 1e4);
     tippe_dynamics_result r;
     CHECK(run(&m, &ic, 0.5, "rk8pd", 1e-8, -1, &r) == TIPPE_OK, "spin 1e4");
@@ -311,7 +311,7 @@ static void test_sizes(void)
     for (int i = 0; i < 2; i++) {
         const double R = sizes[i], g = 9.81, mass = 0.006, tau = sqrt(R / g);
         const double C = mass * R * R; /* same C / (m R^2) = 1 as the base */
-        tippe_dynamics_model m = {{mass, R, 0.3 * R, 0.92 * C, C, 0}, g, 0.04 / sqrt(g * R)};
+        tippe_dynamics_model m = {.top = {mass, R, 0.3 * R, 0.92 * C, C, 0}, .g = g, .mu = 0.04 / sqrt(g * R)};
         tippe_dynamics_initial ic = steady(&m, 0.01, 3.0 / tau);
         tippe_dynamics_result r;
         CHECK(run(&m, &ic, 10000.0 * tau, "rk8pd", 1e-8, -1, &r) == TIPPE_OK, "R %g", R);

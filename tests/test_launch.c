@@ -123,7 +123,7 @@ static void test_draws(void)
     double s_spin = 0, s_tilt = 0, s_u = 0, s_v = 0, s_r = 0, s_r2 = 0, s_slide = 0;
     double max_tilt = 0;
     int bad = 0;
-    tippe_dynamics_model m = {top, o.g, o.mu};
+    tippe_dynamics_model m = {.top = top, .g = o.g, .mu = o.mu};
     for (int i = 0; i < N; i++) {
         tippe_dynamics_initial ic;
         if (tippe_launch_draw(&top, &o, 7, (uint64_t)i, NAN, &ic, &e)) {
@@ -201,7 +201,7 @@ static void test_central(void)
     CHECK(tippe_launch_central(&top, &o, 90.0, &ic, &e) == TIPPE_OK, "%s", e.msg);
     CHECK(fabs(ic.theta - 0.6744897501960817 * o.tilt_sd_rad) < 1e-15, "tilt %g", ic.theta);
     CHECK(ic.U == 0 && ic.V == 0 && ic.theta_dot == 0 && ic.spin == 90.0, "not central");
-    tippe_dynamics_model m = {top, o.g, o.mu};
+    tippe_dynamics_model m = {.top = top, .g = o.g, .mu = o.mu};
     double y[TIPPE_EULER_DIM] = {ic.theta, 0, ic.phi_dot, ic.spin, 0, 0, 0, 0}, dy[8], Rn;
     CHECK(tippe_dynamics_euler_rhs(&m, y, dy, &Rn) == TIPPE_OK, "euler rhs failed");
     /* Scale of the terms that cancel in A theta_ddot: C n phi_dot sin(theta). */

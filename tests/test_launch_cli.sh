@@ -56,10 +56,12 @@ for key in ("spin_rad_s", "tilt_rad", "phi_dot_rad_s", "verdict", "t_s", "theta_
             "jellett_rel_drift", "theory", "agrees"):
     assert key in rows[0], key
 assert [int(r["index"]) for r in rows] == [0, 1, 2, 3]
-assert all(r["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided") for r in rows)
+assert all(r["verdict"] in ("no_tip", "tip", "hang", "lost_contact", "undecided", "bounded")
+           for r in rows)
 # a trapped verdict says how and with what margin; a tip followed to its flip says when
 for r in rows:
-    assert r["decided_by"] in ("trapped", "lost_contact", "t_end", "flat_well", "budget"), r["decided_by"]
+    assert r["decided_by"] in ("trapped", "lost_contact", "t_end", "flat_well", "budget",
+                               "rolling"), r["decided_by"]
     if r["decided_by"] == "trapped":
         assert float(r["margin_J"]) > 0
         assert r["barrier_gap_J"] == "" or float(r["barrier_gap_J"]) > float(r["margin_J"])
@@ -156,6 +158,22 @@ refused "map Z2 beyond the travel" "outside the design's travel" \
 refused "map without --spin" "--spin FROM:TO:STEPS" map "$m12" --z2 10:15:2 --plot "$tmp/out.png"
 refused "check spin" "--spin 'fast'" check "$m12" --z2 10 --spin fast
 refused "no design" "no design file" check --z2 10
+refused "unknown friction law" "--friction 'dry'" check "$m12" --z2 10 --friction dry
+refused "Coulomb coefficient with the viscous law" "--mu-c is the Coulomb coefficient" \
+    launch "$m12" --z2 10 --friction viscous --mu-c 0.3 --csv "$tmp/out.csv"
+refused "viscous coefficient with the Coulomb law" "--mu (s/m) is the viscous coefficient" \
+    launch "$m12" --z2 10 --friction coulomb --mu 2 --csv "$tmp/out.csv"
+
+# --- friction (issue 21): Coulomb by default, --mu alone selects viscous ----------
+"$tippe" check "$m12" --z2 15 --json >"$tmp/c.json"
+check "check: Coulomb mu_c 0.3 by default" json_ok "$tmp/c.json" \
+    'o["options"]["friction"]["law"] == "coulomb" and o["options"]["friction"]["mu"] == 0.3'
+"$tippe" check "$m12" --z2 15 --mu 2.3 --json >"$tmp/c.json"
+check "check: --mu alone is the viscous law" json_ok "$tmp/c.json" \
+    'o["options"]["friction"] == {"law": "viscous", "mu_s_m": 2.3}'
+"$tippe" check "$m12" --z2 15 --friction coulomb --mu-c 0.5 --json >"$tmp/c.json"
+check "check: --mu-c sets the Coulomb coefficient" json_ok "$tmp/c.json" \
+    'o["options"]["friction"]["mu"] == 0.5'
 
 # --- issue 19.6: map columns where the screw stands out of the sphere are marked ---
 # (the M12 screw's rim leaves the sphere at Z2 = 16.8875 mm: 14 and 16 inside, 18 and 20 out)

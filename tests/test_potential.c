@@ -45,7 +45,7 @@ static void test_energy_bound(void)
     double worst_eq = 0.0;
     for (int t = 0; t < N_TOPS; t++) {
         const tippe_top *top = &tops[t].top;
-        tippe_dynamics_model m = {*top, 9.81, 0.1};
+        tippe_dynamics_model m = {.top = *top, .g = 9.81, .mu = 0.1};
         const double W = sqrt(9.81 / top->R);
         for (int i = 0; i < 400; i++) {
             tippe_dynamics_initial ic = {gsl_rng_uniform(r) * M_PI,

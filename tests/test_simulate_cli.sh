@@ -152,6 +152,40 @@ expect_fail "bad --spin" 2 "--spin 'abc': expected a number of rad/s" -- simulat
 expect_fail "bad override value" 2 "initial.spin" "command line" "initial.spin=abc" -- simulate "$base" --set initial.spin=abc
 expect_fail "missing file" 2 "nowhere.json" "cannot open" -- simulate "$tmp/nowhere.json"
 
+# --- friction (issue 21): the block, the old "mu", overrides, design default ----
+mutate "$tmp/fr.json" 'del d["mu"]; d["friction"] = {"law": "coulomb", "mu": 0.3}'
+"$tippe" simulate "$tmp/fr.json" --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"] == {"law": "coulomb", "mu": 0.3, "slip_scale_m_s": 1e-5} and o["mu_s_m"] is None' &&
+    ok || bad "coulomb friction block: $(cat "$tmp/err")"
+"$tippe" simulate "$base" --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"] == {"law": "viscous", "mu_s_m": 0.04} and o["mu_s_m"] == 0.04' &&
+    ok || bad "the old top-level mu is viscous"
+"$tippe" simulate "$base" --friction coulomb --mu-c 0.2 --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"]["law"] == "coulomb" and o["friction"]["mu"] == 0.2' &&
+    ok || bad "--friction coulomb on an old scenario: $(cat "$tmp/err")"
+"$tippe" simulate "$tmp/fr.json" --mu 0.05 --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"] == {"law": "viscous", "mu_s_m": 0.05}' &&
+    ok || bad "--mu replaces a Coulomb block: $(cat "$tmp/err")"
+"$tippe" simulate designs/m12-setscrew.json --z2 15 --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"]["law"] == "coulomb" and o["friction"]["mu"] == 0.3 and o["decided_by"] == "rolling"' &&
+    ok || bad "a design launch is Coulomb by default: $(cat "$tmp/err")"
+"$tippe" simulate designs/m12-setscrew.json --z2 15 --friction viscous --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"] == {"law": "viscous", "mu_s_m": 2.3} and o["verdict"] == "hang"' &&
+    ok || bad "--friction viscous on a design: $(cat "$tmp/err")"
+mutate "$tmp/x.json" 'd["friction"] = {"law": "coulomb"}'
+expect_fail "mu and friction" 2 "x.json: friction:" "not both" -- simulate "$tmp/x.json"
+mutate "$tmp/x.json" 'del d["mu"]'
+expect_fail "no friction" 2 "x.json: friction:" "missing" -- simulate "$tmp/x.json"
+mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"law": "dry"}'
+expect_fail "unknown law" 2 "friction.law" "dry" -- simulate "$tmp/x.json"
+mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"law": "viscous", "mu": 0.3}'
+expect_fail "Coulomb coefficient under the viscous law" 2 "friction.mu" "mu_s_m" -- simulate "$tmp/x.json"
+mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"law": "coulomb", "mu": 11}'
+expect_fail "mu_c out of range" 2 "friction.mu" "0 .. 10" -- simulate "$tmp/x.json"
+mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"law": "coulomb", "mu_c": 0.3}'
+expect_fail "unknown friction key" 2 "friction.mu_c" "unknown key" -- simulate "$tmp/x.json"
+expect_fail "bad --friction" 2 "friction.law" "dry" -- simulate "$base" --friction dry
+
 # --- bad usage -----------------------------------------------------------------
 expect_fail "no scenario" 2 "no scenario or design file given" -- simulate
 expect_fail "unknown option" 2 "unknown option '--fast'" -- simulate "$base" --fast

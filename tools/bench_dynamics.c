@@ -16,6 +16,10 @@
 #include <stdlib.h>
 #include <time.h>
 
+/* designs/m12-setscrew.json at Z2 = 15 mm, and the central hand launch's tilt */
+#define M12_TOP {0.0768353146, 0.025, 0.00219013874, 1.9053487e-05, 1.77647865e-05, 1}
+#define M12_TILT 0.067448975019608171
+
 typedef struct {
     const char *name;
     tippe_dynamics_model model;
@@ -43,12 +47,23 @@ int main(int argc, char **argv)
     if (repeats < 1)
         repeats = 1;
     launch launches[] = {
-        {"fig12 hang (n 1.5)", {{1, 1, 0.3, 0.92, 1, 0}, 1, 0.04}, {0.01, 0, 0, 1.5, 0, 0},
+        {"fig12 hang (n 1.5)", {.top = {1, 1, 0.3, 0.92, 1, 0}, .g = 1, .mu = 0.04}, {0.01, 0, 0, 1.5, 0, 0},
          TIPPE_PRECESSION_STEADY, 10000},
-        {"fig14 hang (n 0.7)", {{1, 1, 0.5, 0.55, 1, 0}, 1, 0.04},
+        {"fig14 hang (n 0.7)", {.top = {1, 1, 0.5, 0.55, 1, 0}, .g = 1, .mu = 0.04},
          {M_PI - 0.01, 0, 0, 0.7, 0, 0}, TIPPE_PRECESSION_S3, 10000},
-        {"film IIb flip", {{0.006, 0.015, 0.0075, 0.82e-6, 0.7e-6, -1}, 9.81, 0.3},
+        {"film IIb flip", {.top = {0.006, 0.015, 0.0075, 0.82e-6, 0.7e-6, -1}, .g = 9.81, .mu = 0.3},
          {0.01, 0, 0, 250, 0, 0}, TIPPE_PRECESSION_STEADY, 90},
+        /* issue 21: the M12 ball (Z2 = 15 mm), central hand launch, viscous against
+         * Coulomb friction: at 15 rev/s (Coulomb: sticks and rolls) and 300 rad/s (slides
+         * over: its flip takes 3 times the viscous one's model time) */
+        {"M12 94 viscous", {.top = M12_TOP, .g = 9.81, .mu = 2.3}, {M12_TILT, 0, 0, 94.2477796, 0, 0},
+         TIPPE_PRECESSION_STEADY, 600},
+        {"M12 94 coulomb", {.top = M12_TOP, .g = 9.81, .law = TIPPE_FRICTION_COULOMB, .mu_c = 0.3},
+         {M12_TILT, 0, 0, 94.2477796, 0, 0}, TIPPE_PRECESSION_STEADY, 600},
+        {"M12 300 viscous", {.top = M12_TOP, .g = 9.81, .mu = 2.3}, {M12_TILT, 0, 0, 300, 0, 0},
+         TIPPE_PRECESSION_STEADY, 600},
+        {"M12 300 coulomb", {.top = M12_TOP, .g = 9.81, .law = TIPPE_FRICTION_COULOMB, .mu_c = 0.3},
+         {M12_TILT, 0, 0, 300, 0, 0}, TIPPE_PRECESSION_STEADY, 600},
     };
     const int n_launch = (int)(sizeof launches / sizeof launches[0]);
     printf("%-20s %-9s %-10s %8s %9s %9s %10s %9s %10s %10s %8s\n", "launch", "preset", "level",

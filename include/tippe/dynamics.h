@@ -2,7 +2,11 @@
  *
  * The model: a sphere (tippe_top) on a horizontal plane under gravity g, with
  * the normal force of the contact constraint (eq 3.17/3.19, any mass m) and
- * viscous sliding friction Rf = -mu Rn V_Q (eq 3.12, mu in s/m).
+ * friction: viscous Rf = -mu Rn V_Q (eq 3.12, mu in s/m), or Coulomb: sliding
+ * |Rf| = mu_c Rn against the slip (regularised below a stated slip speed v_s,
+ * Rf = -mu_c Rn V_Q / sqrt(|V_Q|^2 + v_s^2)) and sticking, rolling without
+ * slipping while the force that needs stays inside the cone |Rf| <= mu_c Rn
+ * (event-driven, as Leine and Glocker 2003; docs/dynamics.md, "Coulomb friction").
  *
  * The equations are integrated in a lab-frame form that is regular at
  * theta = 0 and pi: the state is the symmetry axis k (unit vector), the
@@ -30,10 +34,10 @@ typedef enum {
     TIPPE_VERDICT_HANG,         /* trapped in a well whose minimum is 0 < theta < pi */
     TIPPE_VERDICT_LOST_CONTACT, /* Rn reached 0: the top leaves the table */
     TIPPE_VERDICT_UNDECIDED,    /* t_end (or the step budget) reached first */
-    TIPPE_VERDICT_BOUNDED       /* mu = 0 (nothing dissipates) or eps = 0 (rolling
-                                   dissipates nothing): no rest state is forced, but
-                                   theta stays for ever in [theta_lo_rad, theta_hi_rad]
-                                   of one well */
+    TIPPE_VERDICT_BOUNDED       /* mu = 0 (nothing dissipates), eps = 0 (rolling
+                                   dissipates nothing), or (Coulomb) rolling for ever
+                                   across pi/2: no rest state is forced, but theta stays
+                                   for ever in [theta_lo_rad, theta_hi_rad] */
 } tippe_verdict;
 
 /* "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded". */
@@ -47,17 +51,54 @@ typedef enum {
     TIPPE_DECIDED_FLAT_WELL,    /* undecided for ever at this accuracy: confined to a well
                                    that is flat, or whose barrier above its minimum is
                                    within the energy margin (which never shrinks) */
-    TIPPE_DECIDED_BUDGET        /* not decided: the step budget ran out before t_end */
+    TIPPE_DECIDED_BUDGET,       /* not decided: the step budget ran out before t_end */
+    TIPPE_DECIDED_ROLLING       /* Coulomb friction: the top rolls without slipping, and
+                                   over one whole period of its nutation (the rolling
+                                   sphere is integrable: the motion repeats) the force
+                                   that rolling needs stayed inside the friction cone,
+                                   so it rolls for ever, theta within the period's range
+                                   (no_tip below pi/2, tip above, else bounded) */
 } tippe_decision;
 
-/* "t_end", "trapped", "lost_contact", "flat_well", "budget". */
+/* "t_end", "trapped", "lost_contact", "flat_well", "budget", "rolling". */
 const char *tippe_decision_name(tippe_decision d);
+
+/* The friction law. Zero (viscous) is the paper's, so a model initialised with
+ * only {top, g, mu} keeps eq 3.12. */
+typedef enum {
+    TIPPE_FRICTION_VISCOUS = 0, /* Rf = -mu Rn V_Q (eq 3.12), mu in s/m */
+    TIPPE_FRICTION_COULOMB = 1, /* sliding: Rf = -mu_c Rn V_Q / sqrt(|V_Q|^2 + v_s^2)
+                                   (Coulomb's |Rf| = mu_c Rn against the slip for
+                                   |V_Q| >> v_s); sticking once |V_Q| < 30 v_s and rolling
+                                   needs |Rf| <= mu_c Rn, until it needs more */
+    TIPPE_FRICTION_COULOMB_CREEP = 2 /* the regularised sliding law alone, no sticking:
+                                   below v_s the contact creeps (|Rf| < mu_c Rn) and
+                                   dissipates; kept to measure what the stick phase
+                                   changes (docs/dynamics.md) */
+} tippe_friction_law;
+
+/* "viscous", "coulomb", "coulomb-creep"; tippe_friction_law_parse returns -1 for an
+ * unknown name. */
+const char *tippe_friction_law_name(tippe_friction_law law);
+int tippe_friction_law_parse(const char *name);
+
+/* The regularisation speed v_s of the Coulomb law when the model leaves it 0, m/s:
+ * the sliding law's width and the slip below which sticking is tried.
+ * docs/dynamics.md measures the reported times against smaller v_s. */
+#define TIPPE_COULOMB_SLIP_SCALE_M_S 1e-5
 
 typedef struct {
     tippe_top top;
     double g;  /* m/s^2 */
     double mu; /* s/m, viscous sliding friction coefficient (eq 3.12), >= 0 */
+    tippe_friction_law law;  /* TIPPE_FRICTION_VISCOUS (0) uses mu, the others mu_c */
+    double mu_c;             /* Coulomb friction coefficient (dimensionless), >= 0 */
+    double slip_scale_m_s;   /* Coulomb's regularisation speed v_s, m/s (0: the default
+                                TIPPE_COULOMB_SLIP_SCALE_M_S) */
 } tippe_dynamics_model;
+
+/* Whether the model's friction is zero (no dissipation at all). */
+int tippe_dynamics_frictionless(const tippe_dynamics_model *model);
 
 /* A launch in the paper's variables (eq 3.4): nutation angle theta in [0, pi],
  * its rate, the precession rate phi_dot (alpha), the spin n = omega.k, and the
@@ -178,6 +219,15 @@ typedef struct {
     long steps, rejected_steps;
     int state_dim;               /* 9 at verdict level, 15 at trajectory level */
     int budget_exhausted;        /* 1 if the run stopped at max_steps before t_end */
+    /* Coulomb friction with sticking: how often the contact stuck (began rolling
+     * without slipping) and broke loose, the model time spent rolling, and whether
+     * it rolls at t_verdict. While rolling nothing dissipates, so a trapped verdict
+     * proves the well and the range [theta_lo_rad, theta_hi_rad] but not the end
+     * state: end_state_proved is 0 (1 for viscous and creeping friction). */
+    long stick_events, slip_events;
+    double rolling_time_s;
+    int rolling;
+    int end_state_proved;
 } tippe_dynamics_result;
 
 /* Integrates one launch. TIPPE_EINPUT for an invalid model, launch or option,

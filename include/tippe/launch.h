@@ -37,7 +37,10 @@ typedef struct {
     double precession_sd_rel; /* phi_dot = steady rate * (1 + sd * N(0, 1)) */
     double slide_sd_m_s;      /* sliding speed half-normal with this scale, m/s;
                                  direction uniform in [0, 2 pi) */
-    double mu;                /* s/m, viscous sliding friction (eq 3.12) */
+    tippe_friction_law law;   /* friction law (default Coulomb, with sticking) */
+    double mu;                /* s/m, viscous sliding friction (eq 3.12), law viscous */
+    double mu_c;              /* Coulomb coefficient, the Coulomb laws */
+    double slip_scale_m_s;    /* Coulomb's regularisation speed v_s (0: the default) */
     double g;                 /* m/s^2 */
     double t_end;             /* s, bound on each launch's simulated time */
     int until_flip;           /* 1: follow a tip to its flip (t_flip_s), 0: stop at the proof */
@@ -50,14 +53,19 @@ typedef struct {
  * (docs/launch.md derives it and gives the sources). */
 #define TIPPE_LAUNCH_DEFAULT_MU_S_M 2.3
 
+/* Coulomb friction of a printed (PLA or nylon) ball on a tabletop: 0.3, within the
+ * published 0.2-0.5 for plastic on wood or laminate (docs/launch.md gives the sources). */
+#define TIPPE_LAUNCH_DEFAULT_MU_C 0.3
+
 /* The median of a half-normal distribution of scale 1 (sqrt(2) erf^-1(1/2)):
  * a central launch's tilt is this times the tilt scale. */
 #define TIPPE_LAUNCH_HALF_NORMAL_MEDIAN 0.6744897501960817
 
 /* The documented defaults (docs/launch.md): spin 5..25 rev/s, tilt scale
  * 0.1 rad (redrawn above 1 rad), precession spread 0.1, sliding 0.05 m/s,
- * mu TIPPE_LAUNCH_DEFAULT_MU_S_M, g TIPPE_DEFAULT_G_M_S2, t_end 600 s, preset
- * "balanced", until_flip 1. */
+ * Coulomb friction mu_c TIPPE_LAUNCH_DEFAULT_MU_C with sticking (mu
+ * TIPPE_LAUNCH_DEFAULT_MU_S_M if the law is set to viscous), g TIPPE_DEFAULT_G_M_S2,
+ * t_end 600 s, preset "balanced", until_flip 1. */
 void tippe_launch_options_default(tippe_launch_options *o);
 
 /* TIPPE_EINPUT naming the first bad field. */
@@ -106,6 +114,9 @@ typedef struct {
      * Rn_bound_N (NAN otherwise); a bounded launch has no end state (NAN) */
     double theta_lo_rad, theta_hi_rad, Rn_bound_N;
     double t_flip_s;         /* s, theta first passed pi/2 (NAN: not, or not followed) */
+    int rolling;             /* Coulomb: rolling without slipping at the decision */
+    int end_state_proved;    /* 0 under Coulomb friction with sticking: a trapped verdict
+                                proves the well and range, not the rest state */
     double J0;               /* kg m^3/s, Jellett invariant at launch (eq 3.20) */
     double jellett_rel_drift;
     long rhs_evals;
@@ -174,6 +185,7 @@ typedef struct {
      * with no barrier, and the smallest barrier gap / margin of the others
      * (INFINITY if none). */
     long trapped, trapped_no_barrier;
+    long rolling; /* decided rolling for ever (Coulomb friction with sticking) */
     double min_gap_over_margin;
 } tippe_launch_tally;
 

@@ -4,7 +4,8 @@
  *   {"name": "...", "notes": "...",
  *    "top": {"m": kg, "R": m, "eps": m, "A": kg m^2, "C": kg m^2}
  *        or {"design": "path/to/design.json", "z2_mm": 10, "set": ["FIELD=VALUE", ...]},
- *    "g": 9.81, "mu": s/m,
+ *    "g": 9.81, "mu": s/m (viscous, eq 3.12) or "friction": {"law": "viscous", "mu_s_m": s/m}
+ *        | {"law": "coulomb" | "coulomb-creep", "mu": 0.3, "slip_scale_m_s": 1e-5},
  *    "initial": {"theta": rad, "theta_dot": rad/s, "phi_dot": rad/s | "steady" | "s1" |
  *                "s2" | "s3", "spin": rad/s, "U": m/s, "V": m/s},
  *    "t_end": s, "accuracy": "fast" | "balanced" | "precise" | {"stepper": "...", "rtol": ...}}
@@ -48,7 +49,8 @@ int tippe_scenario_load(const char *path, const char *const *overrides, int n_ov
  * without a scenario file: the design (with design_sets applied, as
  * tippe_design_load) and the defaults of tippe launch (docs/launch.md): tilt
  * TIPPE_LAUNCH_HALF_NORMAL_MEDIAN x 0.1 rad, steady precession, spin 15 rev/s,
- * no sliding, mu 0.1 s/m, g, t_end 600 s, preset "balanced"; then the
+ * no sliding, the launch options' friction (Coulomb mu_c 0.3 with sticking), g, t_end
+ * 600 s, preset "balanced"; then the
  * overrides as for tippe_scenario_load ("initial.spin=100"). Messages name the
  * design file. */
 int tippe_scenario_for_design(const char *design_path, double z2_mm,

@@ -231,6 +231,15 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
         fprintf(out, "verdict   bounded, decided (%s) at t = %.6g s: theta stays in "
                 "[%.4g, %.4g] rad (no end state)\n",
                 tippe_decision_name(r->how), r->t_verdict, r->theta_lo_rad, r->theta_hi_rad);
+    else if (r->how == TIPPE_DECIDED_ROLLING)
+        fprintf(out, "verdict   %s, decided (rolling) at t = %.6g s: rolls without slipping for "
+                "ever, theta in [%.4g, %.4g] rad\n",
+                tippe_verdict_name(r->verdict), r->t_verdict, r->theta_lo_rad, r->theta_hi_rad);
+    else if (r->verdict != TIPPE_VERDICT_UNDECIDED && !r->end_state_proved)
+        fprintf(out, "verdict   %s, decided (%s) at t = %.6g s; stays in the well of theta %.4g "
+                "rad (its rest state if it keeps sliding), theta in [%.4g, %.4g] rad\n",
+                tippe_verdict_name(r->verdict), tippe_decision_name(r->how), r->t_verdict,
+                r->theta_final_rad, r->theta_lo_rad, r->theta_hi_rad);
     else if (r->verdict != TIPPE_VERDICT_UNDECIDED)
         fprintf(out, "verdict   %s, decided (%s) at t = %.6g s; end state theta %.4g rad\n",
                 tippe_verdict_name(r->verdict), tippe_decision_name(r->how), r->t_verdict,

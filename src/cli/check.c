@@ -118,8 +118,8 @@ static void print_verdict_line(const tippe_launch_record *rec)
     const double th = rec->theta_final_rad, deg = 180 / M_PI;
     switch (rec->verdict) {
     case TIPPE_VERDICT_BOUNDED:
-        printf("\nverdict    bounded (mu = 0 or eps = 0: no rest state is forced): theta stays "
-               "for ever in [%.4f, %.4f] rad ([%.1f, %.1f] deg)\n",
+        printf("\nverdict    bounded (no rest state is forced: no friction, eps = 0, or rolling "
+               "without slipping): theta stays for ever in [%.4f, %.4f] rad ([%.1f, %.1f] deg)\n",
                rec->theta_lo_rad, rec->theta_hi_rad, rec->theta_lo_rad * deg,
                rec->theta_hi_rad * deg);
         break;
@@ -132,8 +132,20 @@ static void print_verdict_line(const tippe_launch_record *rec)
                "spin %.4g rad/s\n", th, th * deg, rec->spin_final_rad_s);
         break;
     default:
-        printf("\nverdict    %s: ends at theta %.4f rad (%.1f deg), spin %.4g rad/s\n",
-               tippe_verdict_name(rec->verdict), th, th * deg, rec->spin_final_rad_s);
+        if (rec->how == TIPPE_DECIDED_ROLLING)
+            printf("\nverdict    %s: rolls without slipping for ever, theta in [%.4f, %.4f] rad "
+                   "([%.1f, %.1f] deg)\n",
+                   tippe_verdict_name(rec->verdict), rec->theta_lo_rad, rec->theta_hi_rad,
+                   rec->theta_lo_rad * deg, rec->theta_hi_rad * deg);
+        else if (!rec->end_state_proved)
+            printf("\nverdict    %s: stays in the well of theta %.4f rad (%.1f deg), theta in "
+                   "[%.4f, %.4f] rad; it ends there if it keeps sliding (rolling without "
+                   "slipping dissipates nothing)\n",
+                   tippe_verdict_name(rec->verdict), th, th * deg, rec->theta_lo_rad,
+                   rec->theta_hi_rad);
+        else
+            printf("\nverdict    %s: ends at theta %.4f rad (%.1f deg), spin %.4g rad/s\n",
+                   tippe_verdict_name(rec->verdict), th, th * deg, rec->spin_final_rad_s);
     }
 }
 
@@ -170,8 +182,9 @@ static void check_text(const hands_args *a, const check_result *r)
     tippe_design_protrusion_at(r->d, a->z2_mm, &pr);
     tippe_cli_print_model_validity(&pr, a->z2_mm, "contact    ", "the verdict above is");
     if (isfinite(rec->t_flip_s))
-        printf("flip       theta passed 90 deg at t = %.4g s of model time (mu = %g s/m)\n",
-               rec->t_flip_s, a->o.mu);
+        printf("flip       theta passed 90 deg at t = %.4g s of model time (%s)\n",
+               rec->t_flip_s, a->o.law == TIPPE_FRICTION_VISCOUS ? "viscous friction"
+                                                                 : "Coulomb friction");
     tippe_theory_class cls;
     tippe_theory_classify(r->top.A / r->top.C, r->top.eps / r->top.R, &cls);
     const tippe_group g = r->zone.ok ? r->zone.group : cls.group;

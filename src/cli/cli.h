@@ -275,6 +275,15 @@ int tippe_cli_print_model_validity(const tippe_design_protrusion *p, double z2_m
 /* The same as JSON fields of o: "model_valid" (true/false) and "protrusion"
  * (null, or {part, protrusion_mm, pole ("+z"/"-z"), theta_range_rad}). */
 void tippe_cli_json_model_validity(struct cJSON *o, const tippe_design_protrusion *p);
+/* The friction law in words ("Coulomb mu_c 0.3 with sticking (sliding regularised
+ * below 0.0001 m/s)", "viscous mu 2.3 s/m (eq 3.12)") into buf; returns buf. */
+const char *tippe_cli_friction_text(const tippe_dynamics_model *m, char *buf, size_t size);
+/* Adds "friction": {"law", "mu_s_m" | "mu" and "slip_scale_m_s"} to o, and the
+ * older "mu_s_m" (the viscous coefficient; null under a Coulomb law). */
+void tippe_cli_json_friction(struct cJSON *o, const tippe_dynamics_model *m);
+/* The model of a launch's options (law, coefficients, g; no top). */
+void tippe_cli_launch_friction(const tippe_launch_options *o, tippe_dynamics_model *m);
+
 /* v, or null where it is not finite (not applicable). */
 void tippe_cli_json_number_or_null(struct cJSON *o, const char *key, double v);
 /* [lo, hi], or null where either is not finite. */
@@ -320,8 +329,18 @@ typedef struct {
      .help = "sliding velocity of the centre (initial.U; design: 0)"},                            \
     {.name = "V", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "initial.V",            \
      .unit = "m/s", .min = -100, .max = 100, .help = "its other component (initial.V; design: 0)"}, \
+    {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &(L)->over,                         \
+     .field = "friction.law", .arg = "LAW",                                                       \
+     .help = "friction law: coulomb (sliding |F| = mu_c Rn, sticking and rolling),\n"            \
+             "viscous (eq 3.12) or coulomb-creep (no sticking); design: coulomb"},               \
+    {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "friction.mu",      \
+     .arg = "X", .min = 0, .max = 10,                                                              \
+     .help = "Coulomb friction coefficient (friction.mu; design: " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C) ")"}, \
+    {.name = "slip-scale", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over,                         \
+     .field = "friction.slip_scale_m_s", .arg = "V", .unit = "m/s", .min = 1e-9, .max = 1,      \
+     .help = "Coulomb's regularisation speed v_s (docs/dynamics.md; default 1e-5)"},             \
     {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "mu", .unit = "s/m",   \
-     .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12 (design: " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) ")"}, \
+     .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12: sets the viscous law\n(design with --friction viscous: " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) ")"}, \
     {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "g", .unit = "m/s^2",   \
      .min = 0.01, .max = 1000, .help = "gravity (design: 9.81)"},                                 \
     {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "t_end",            \

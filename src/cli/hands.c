@@ -14,7 +14,7 @@
 const char *const hands_verdict_names[TIPPE_LAUNCH_N_VERDICTS] = {
     "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded"};
 
-enum { MAX_HAND_OPTS = 40 };
+enum { MAX_HAND_OPTS = 48 };
 
 /* The options every hand-launch verb reads: the model and the integrator. */
 static int model_options(hands_args *a, tippe_cli_opt *t)
@@ -28,9 +28,24 @@ static int model_options(hands_args *a, tippe_cli_opt *t)
         {.name = "tilt-max", .kind = TIPPE_CLI_DOUBLE, .value = &o->tilt_max_rad, .arg = "MAX",
          .unit = "rad", .min = 1e-3, .max = 1.4, .def = "1, or 2 x --tilt if more",
          .help = "largest tilt at launch: larger draws are drawn again"},
+        {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &a->friction, .arg = "LAW",
+         .def = "coulomb",
+         .help = "friction law: coulomb (sliding |F| = mu_c Rn, sticking and rolling\n"
+                 "without slipping), viscous (eq 3.12, the paper's) or coulomb-creep\n"
+                 "(regularised, no sticking); docs/dynamics.md"},
+        {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu_c, .arg = "X", .min = 0,
+         .max = 10, .def = TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C),
+         .help = "Coulomb friction coefficient: a printed PLA or nylon ball on a\n"
+                 "tabletop (docs/launch.md)"},
+        {.name = "slip-scale", .kind = TIPPE_CLI_DOUBLE, .value = &o->slip_scale_m_s,
+         .arg = "V", .unit = "m/s", .min = 1e-9, .max = 1,
+         .def = TIPPE_CLI_STR(TIPPE_COULOMB_SLIP_SCALE_M_S),
+         .help = "Coulomb's regularisation speed v_s: sliding below it is smoothed,\n"
+                 "and sticking is tried below 30 v_s (docs/dynamics.md)"},
         {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu, .unit = "s/m", .min = 0,
          .max = 1e6, .def = "2.3",
-         .help = "viscous sliding friction (eq 3.12); the default is a table's Coulomb\ncoefficient over a typical slip speed (docs/launch.md)"},
+         .help = "viscous sliding friction (eq 3.12), for --friction viscous (given alone,\n"
+                 "it selects it): a table's Coulomb coefficient over a typical slip speed"},
         {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &o->g, .unit = "m/s^2", .min = 0.01,
          .max = 1000, .def = "9.81", .help = "gravity"},
         {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &o->t_end, .unit = "s",
@@ -114,6 +129,35 @@ static void tilt_defaults(tippe_cli_spec *spec, tippe_launch_options *o)
         o->tilt_sd_rad = 0.5 * o->tilt_max_rad;
 }
 
+/* --friction, --mu-c and --mu into a->o: --mu alone selects the viscous law (it is
+ * its coefficient); a coefficient of the other law is a usage error. */
+static int apply_friction(hands_args *a, const tippe_cli_spec *spec)
+{
+    tippe_launch_options *o = &a->o;
+    const tippe_cli_opt *mu = tippe_cli_find_opt((tippe_cli_spec *)spec, "mu");
+    const tippe_cli_opt *mu_c = tippe_cli_find_opt((tippe_cli_spec *)spec, "mu-c");
+    const int mu_seen = mu && mu->seen, mu_c_seen = mu_c && mu_c->seen;
+    if (a->friction) {
+        const int law = tippe_friction_law_parse(a->friction);
+        if (law < 0)
+            return tippe_cli_usage_error(a->verb,
+                                         "--friction '%s': expected coulomb, viscous or "
+                                         "coulomb-creep",
+                                         a->friction);
+        o->law = (tippe_friction_law)law;
+    } else if (mu_seen && !mu_c_seen) {
+        o->law = TIPPE_FRICTION_VISCOUS;
+    }
+    if (o->law == TIPPE_FRICTION_VISCOUS && mu_c_seen)
+        return tippe_cli_usage_error(a->verb, "--mu-c is the Coulomb coefficient: with the "
+                                              "viscous law give --mu (s/m)");
+    if (o->law != TIPPE_FRICTION_VISCOUS && mu_seen)
+        return tippe_cli_usage_error(a->verb, "--mu (s/m) is the viscous coefficient: with "
+                                              "the %s law give --mu-c",
+                                     tippe_friction_law_name(o->law));
+    return 0;
+}
+
 int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
 {
     tippe_cli_opt opts[MAX_HAND_OPTS];
@@ -135,6 +179,8 @@ int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
         rc = apply_accuracy(a, &v->spec);
     if (!rc)
         tilt_defaults(&v->spec, &a->o);
+    if (!rc)
+        rc = apply_friction(a, &v->spec);
     tippe_error e;
     if (!rc && a->o.tilt_sd_rad > 0.5 * a->o.tilt_max_rad)
         rc = tippe_cli_usage_error(a->verb, "--tilt %g: at most half of --tilt-max (%g rad), "
@@ -223,9 +269,13 @@ void hands_print_distribution(const tippe_launch_options *o, int fixed_spin)
 
 void hands_print_model(const tippe_launch_options *o)
 {
-    printf("model      mu %g s/m (viscous sliding, eq 3.12), g %g m/s^2, t_end %g s, accuracy %s "
-           "(%s, rtol %g), verdict level\n",
-           o->mu, o->g, o->t_end, o->accuracy_name, o->accuracy.stepper, o->accuracy.rtol);
+    tippe_dynamics_model m;
+    char fr[160];
+    tippe_cli_launch_friction(o, &m);
+    printf("model      friction %s, g %g m/s^2, t_end %g s, accuracy %s (%s, rtol %g), verdict "
+           "level\n",
+           tippe_cli_friction_text(&m, fr, sizeof fr), o->g, o->t_end, o->accuracy_name,
+           o->accuracy.stepper, o->accuracy.rtol);
 }
 
 cJSON *hands_json_options(const tippe_launch_options *o, int fixed_spin)
@@ -241,7 +291,9 @@ cJSON *hands_json_options(const tippe_launch_options *o, int fixed_spin)
     cJSON_AddNumberToObject(d, "tilt_max_rad", o->tilt_max_rad);
     cJSON_AddNumberToObject(d, "precession_rel_sd", o->precession_sd_rel);
     cJSON_AddNumberToObject(d, "slide_half_normal_scale_m_s", o->slide_sd_m_s);
-    cJSON_AddNumberToObject(d, "mu_s_m", o->mu);
+    tippe_dynamics_model m;
+    tippe_cli_launch_friction(o, &m);
+    tippe_cli_json_friction(d, &m);
     cJSON_AddNumberToObject(d, "g_m_s2", o->g);
     cJSON_AddNumberToObject(d, "t_end_s", o->t_end);
     tippe_cli_json_accuracy(d, o->accuracy_name, &o->accuracy);
@@ -270,6 +322,7 @@ cJSON *hands_json_tally(const tippe_launch_tally *t)
         cJSON_AddNullToObject(o, "median_t_flip_s");
     cJSON_AddNumberToObject(o, "trapped", (double)t->trapped);
     cJSON_AddNumberToObject(o, "trapped_no_barrier", (double)t->trapped_no_barrier);
+    cJSON_AddNumberToObject(o, "rolling", (double)t->rolling);
     if (isfinite(t->min_gap_over_margin))
         cJSON_AddNumberToObject(o, "min_gap_over_margin", t->min_gap_over_margin);
     else

@@ -29,7 +29,7 @@ typedef struct {
                                 * check one value (from = to) */
     long n, threads, seed;
     int json;
-    const char *csv, *plot, *accuracy, *stepper;
+    const char *csv, *plot, *accuracy, *stepper, *friction;
     tippe_launch_options o;    /* the distributions and the model */
     tippe_cli_sets sets;       /* --set */
 } hands_args;

@@ -16,11 +16,11 @@
 #define LAUNCH_ABOUT                                                                       \
     "Launches the design's top N times by hand, as a person would: a spin, a small tilt,\n"  \
     "a precession near the steady one and a little sliding, each drawn at random\n"         \
-    "(docs/launch.md), and integrates each launch (the paper's section 3 model with\n"      \
-    "viscous sliding friction) until its verdict is proved (an energy barrier and a\n"     \
+    "(docs/launch.md), and integrates each launch (the paper's section 3 model, with\n"     \
+    "Coulomb friction by default) until its verdict is proved (an energy barrier and a\n" \
     "contact bound, docs/dynamics.md), it leaves the table or it reaches t_end.\n"        \
     "Prints how many launches end in no_tip, tip, hang, lost_contact, undecided and\n"     \
-    "bounded (mu = 0 or eps = 0: confined, no end state), with 95% Wilson confidence\n"   \
+    "bounded (no friction, eps = 0 or rolling: confined, no end state), with 95% Wilson confidence\n"   \
     "intervals, beside Theorem 5.1's prediction for each launch's Jellett invariant and\n" \
     "the fraction of launches that agree with it."
 
@@ -119,6 +119,10 @@ static void print_theory_summary(const tippe_launch_tally *t)
             printf("; smallest barrier gap %.3g times its margin", t->min_gap_over_margin);
         printf("\n");
     }
+    if (t->rolling)
+        printf("rolling    %ld launches stick and roll without slipping for ever (Coulomb "
+               "friction: nothing dissipates; docs/dynamics.md)\n",
+               t->rolling);
     if (t->flips)
         printf("flip       %ld tips followed to theta = 90 deg: median model time %.3g s\n",
                t->flips, t->median_t_flip_s);

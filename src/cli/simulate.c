@@ -109,8 +109,9 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
            t->R, t->eps, t->A, t->C);
     printf("          A/C %.6g, eps/R %.6g: group %s\n", t->A / t->C, t->eps / t->R,
            tippe_group_name(tc->cls.group));
-    printf("model     g %.6g m/s^2, mu %.6g s/m (viscous sliding friction, eq 3.12)\n",
-           sc->model.g, sc->model.mu);
+    char fr[160];
+    printf("model     g %.6g m/s^2, friction %s\n", sc->model.g,
+           tippe_cli_friction_text(&sc->model, fr, sizeof fr));
     printf("launch    theta %.6g rad, theta_dot %.6g rad/s, phi_dot %.6g rad/s (%s), spin %.6g "
            "rad/s, U %.6g m/s, V %.6g m/s\n",
            ic->theta, ic->theta_dot, ic->phi_dot,
@@ -151,6 +152,11 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                r->last.slip_speed);
     if (!isnan(r->t_flip))
         printf("flip      theta passed 90 deg at t = %.6g s (model time)\n", r->t_flip);
+    if (sc->model.law == TIPPE_FRICTION_COULOMB)
+        printf("contact   stuck %ld time%s and broke loose %ld time%s; rolled without slipping "
+               "for %.6g s of the %.6g s integrated\n",
+               r->stick_events, r->stick_events == 1 ? "" : "s", r->slip_events,
+               r->slip_events == 1 ? "" : "s", r->rolling_time_s, r->last.t);
     if (r->budget_exhausted)
         printf("budget    exhausted: the integration stopped at its step budget (%ld accepted "
                "steps) at t = %.6g s, before t_end = %.6g s\n",
@@ -217,7 +223,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
         cJSON_AddStringToObject(top, "group", tippe_group_name(tc->cls.group));
     }
     cJSON_AddNumberToObject(o, "g_m_s2", sc->model.g);
-    cJSON_AddNumberToObject(o, "mu_s_m", sc->model.mu);
+    tippe_cli_json_friction(o, &sc->model);
     cJSON *ini = cJSON_AddObjectToObject(o, "initial");
     if (ini) {
         cJSON_AddNumberToObject(ini, "theta_rad", sc->initial.theta);
@@ -291,13 +297,14 @@ typedef struct {
 } simulate_args;
 
 #define SIMULATE_ABOUT                                                                    \
-    "Integrates one launch (the paper's section 3 model with viscous sliding friction)\n" \
-    "until its verdict is proved, it loses contact or it reaches t_end, and compares it\n" \
-    "with Theorem 5.1's prediction for the launch's Jellett invariant. Verdicts: no_tip,\n" \
-    "tip, hang, lost_contact, undecided, bounded (mu or eps = 0). The launch is a scenario file\n" \
+    "Integrates one launch (the paper's section 3 model with the scenario's friction:\n" \
+    "viscous, eq 3.12, or Coulomb with sticking) until its verdict is proved, it loses\n" \
+    "contact or it reaches t_end, and compares it with Theorem 5.1's prediction for the\n" \
+    "launch's Jellett invariant. Verdicts: no_tip, tip, hang, lost_contact, undecided,\n" \
+    "bounded (no rest state is forced). The launch is a scenario file\n"                 \
     "(docs/dynamics.md), or a design with --z2 and the launch options below: without\n"   \
     "them, tippe launch's central hand launch (tilt 0.0674 rad, steady precession, spin\n" \
-    "15 rev/s, no sliding, mu " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) " s/m)."
+    "15 rev/s, no sliding, Coulomb friction mu_c " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C) ")."
 
 static int simulate_parse(simulate_args *a, int argc, char **argv)
 {

@@ -11,9 +11,20 @@
 void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *prefix)
 {
     const double th = r->theta_final_rad;
+    if (r->how == TIPPE_DECIDED_ROLLING) {
+        printf("%s%s: rolls without slipping for ever (nothing dissipates), theta in [%.6g, "
+               "%.6g] rad ([%.2f, %.2f] deg)\n",
+               prefix, tippe_verdict_name(r->verdict), r->theta_lo_rad, r->theta_hi_rad,
+               r->theta_lo_rad * 180 / M_PI, r->theta_hi_rad * 180 / M_PI);
+        printf("%*sproved at t = %.6g s (rolling): over one whole nutation period the force "
+               "rolling needs stayed inside the friction cone (the motion repeats); Rn >= %.4g "
+               "N\n",
+               (int)strlen(prefix), "", r->t_verdict, r->Rn_bound_N);
+        return;
+    }
     if (r->verdict == TIPPE_VERDICT_BOUNDED) {
-        printf("%sbounded (mu = 0 or eps = 0: no rest state is forced): theta stays for ever "
-               "in [%.6g, %.6g] rad ([%.2f, %.2f] deg)\n",
+        printf("%sbounded (no rest state is forced: no friction or eps = 0): theta stays for "
+               "ever in [%.6g, %.6g] rad ([%.2f, %.2f] deg)\n",
                prefix, r->theta_lo_rad, r->theta_hi_rad, r->theta_lo_rad * 180 / M_PI,
                r->theta_hi_rad * 180 / M_PI);
     } else if (r->how == TIPPE_DECIDED_FLAT_WELL) {
@@ -24,6 +35,11 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
                "may decide)\n",
                (int)strlen(prefix), "", r->t_verdict, r->margin_J);
         return;
+    } else if (!r->end_state_proved) {
+        printf("%s%s: stays in the well of theta %.10f rad (%.4f deg), the rest state it "
+               "reaches if it keeps sliding (rolling without slipping dissipates nothing and "
+               "can last anywhere in the range below)\n",
+               prefix, tippe_verdict_name(r->verdict), th, th * 180 / M_PI);
     } else {
         printf("%s%s: ends at theta %.10f rad (%.4f deg), spin %.6g rad/s, phi_dot %.6g rad/s\n",
                prefix, tippe_verdict_name(r->verdict), th, th * 180 / M_PI, r->spin_final_rad_s,
@@ -68,7 +84,7 @@ void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
     tippe_cli_json_number_or_null(o, "theta_final_rad", r->theta_final_rad);
     tippe_cli_json_number_or_null(o, "spin_final_rad_s", r->spin_final_rad_s);
     tippe_cli_json_number_or_null(o, "phi_dot_final_rad_s", r->phi_dot_final_rad_s);
-    if (r->how == TIPPE_DECIDED_TRAPPED)
+    if (r->how == TIPPE_DECIDED_TRAPPED || r->how == TIPPE_DECIDED_ROLLING)
         tippe_cli_json_range(o, "theta_range_rad", r->theta_lo_rad, r->theta_hi_rad);
     else
         cJSON_AddNullToObject(o, "theta_range_rad");
@@ -77,6 +93,59 @@ void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
     tippe_cli_json_number_or_null(o, "margin_J", r->margin_J);
     tippe_cli_json_number_or_null(o, "Rn_bound_N", r->Rn_bound_N);
     tippe_cli_json_number_or_null(o, "t_flip_s", r->t_flip);
+    cJSON_AddBoolToObject(o, "rolling", r->rolling);
+    cJSON_AddBoolToObject(o, "end_state_proved", r->end_state_proved);
+    cJSON_AddNumberToObject(o, "stick_events", (double)r->stick_events);
+    cJSON_AddNumberToObject(o, "slip_events", (double)r->slip_events);
+    cJSON_AddNumberToObject(o, "rolling_time_s", r->rolling_time_s);
+}
+
+const char *tippe_cli_friction_text(const tippe_dynamics_model *m, char *buf, size_t size)
+{
+    const double vs = m->slip_scale_m_s > 0 ? m->slip_scale_m_s : TIPPE_COULOMB_SLIP_SCALE_M_S;
+    switch (m->law) {
+    case TIPPE_FRICTION_COULOMB:
+        snprintf(buf, size, "Coulomb mu_c %g, sliding and sticking (sliding regularised below "
+                 "%g m/s)", m->mu_c, vs);
+        break;
+    case TIPPE_FRICTION_COULOMB_CREEP:
+        snprintf(buf, size, "Coulomb mu_c %g regularised below %g m/s, no sticking (creep)",
+                 m->mu_c, vs);
+        break;
+    default:
+        snprintf(buf, size, "viscous mu %g s/m (eq 3.12)", m->mu);
+    }
+    return buf;
+}
+
+void tippe_cli_json_friction(cJSON *o, const tippe_dynamics_model *m)
+{
+    if (m->law == TIPPE_FRICTION_VISCOUS)
+        cJSON_AddNumberToObject(o, "mu_s_m", m->mu);
+    else
+        cJSON_AddNullToObject(o, "mu_s_m");
+    cJSON *f = cJSON_AddObjectToObject(o, "friction");
+    if (!f)
+        return;
+    cJSON_AddStringToObject(f, "law", tippe_friction_law_name(m->law));
+    if (m->law == TIPPE_FRICTION_VISCOUS) {
+        cJSON_AddNumberToObject(f, "mu_s_m", m->mu);
+        return;
+    }
+    cJSON_AddNumberToObject(f, "mu", m->mu_c);
+    cJSON_AddNumberToObject(f, "slip_scale_m_s", m->slip_scale_m_s > 0
+                                                     ? m->slip_scale_m_s
+                                                     : TIPPE_COULOMB_SLIP_SCALE_M_S);
+}
+
+void tippe_cli_launch_friction(const tippe_launch_options *o, tippe_dynamics_model *m)
+{
+    memset(m, 0, sizeof *m);
+    m->g = o->g;
+    m->law = o->law;
+    m->mu = o->mu;
+    m->mu_c = o->mu_c;
+    m->slip_scale_m_s = o->slip_scale_m_s;
 }
 
 int tippe_cli_print_model_validity(const tippe_design_protrusion *p, double z2_mm,
