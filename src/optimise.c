@@ -848,7 +848,7 @@ static void robust_widths(const tippe_design *d, const tippe_sweep_result *r, ti
     if (tippe_sweep_bands(d, r, &b, &e) == TIPPE_OK) {
         double narrow = 0.0;
         tippe_sweep_robust_widths(r, &b, out->robust_zone_mm, &narrow);
-        out->robust_mm = out->objective_mm > 0 ? narrow : 0.0;
+        out->robust_mm = narrow;
         out->has_robust = 1;
     }
     tippe_sweep_bands_free(&b);
@@ -924,7 +924,7 @@ void tippe_opt_evaluate(const tippe_opt_spec *s, int choice, const double *x, in
         tippe_sweep_summarise(&r, &sum);
         for (int k = 0; k < 3; k++)
             out->zone_mm[k] = sum.widest_mm[k];
-        out->objective_mm = tippe_sweep_summary_three_zone_mm(&sum);
+        out->objective_mm = sum.narrowest_zone_mm;
         if (n_scan <= 0 && s->robust)
             robust_widths(d, &r, out);
         double f = 0.0, t = 0.0;
