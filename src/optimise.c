@@ -490,7 +490,9 @@ static int parse_search(tippe_json_reader *c, const cJSON *root, tippe_opt_spec 
     s->algorithm = ALG_DIRECT_L;
     s->polish = POLISH_COBYLA;
     s->evals = 1500;
-    s->polish_evals = 300;
+    /* COBYLA stops by itself when its steps fall below 1e-7 mm: the cap
+     * costs only where it is still climbing (the 6-parameter band family). */
+    s->polish_evals = 1000;
     const cJSON *se = cJSON_GetObjectItemCaseSensitive(root, "search");
     if (!se)
         return TIPPE_OK;
@@ -1245,8 +1247,15 @@ static void search_choice(job_t *j)
         if (!j->failed && s->polish != POLISH_NONE && s->polish_evals > 0 &&
             isfinite(j->best_score)) {
             memcpy(x, j->best_x, (size_t)s->n_vary * sizeof *x);
-            if (s->polish == POLISH_BOBYQA ? run_nlopt(j, NLOPT_LN_BOBYQA, s->polish_evals, x)
-                                           : run_polish(j, s->polish_evals, x))
+            /* From a feasible start, COBYLA follows the widths in the epigraph
+             * form; from an infeasible one (the global phase found nothing that
+             * meets the constraints) it can only reduce the violation, which the
+             * score measures: the epigraph form would spend its whole budget
+             * looking for a feasible point that the global phase did not find. */
+            if (s->polish == POLISH_BOBYQA || j->best_score < 0
+                    ? run_nlopt(j, s->polish == POLISH_BOBYQA ? NLOPT_LN_BOBYQA : NLOPT_LN_COBYLA,
+                                s->polish_evals, x)
+                    : run_polish(j, s->polish_evals, x))
                 j->failed = 1;
         }
     }
