@@ -551,16 +551,11 @@ void tippe_sweep_summarise(const tippe_sweep_result *r, tippe_sweep_summary *out
     out->has_II = has[1];
     out->has_III = has[2];
     out->three_in_one = has[0] && has[1] && has[2];
-    for (int k = 0; k < 3; k++)
-        if (has[k] && (!out->narrowest_family || out->widest_mm[k] < out->narrowest_zone_mm)) {
+    for (int k = 0; out->three_in_one && k < 3; k++)
+        if (!out->narrowest_family || out->widest_mm[k] < out->narrowest_zone_mm) {
             out->narrowest_zone_mm = out->widest_mm[k];
             out->narrowest_family = family_names[k];
         }
-}
-
-double tippe_sweep_summary_three_zone_mm(const tippe_sweep_summary *s)
-{
-    return s->three_in_one ? s->narrowest_zone_mm : 0.0;
 }
 
 void tippe_sweep_vary_free(tippe_sweep_vary_result *v)
@@ -778,13 +773,16 @@ void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe
     fprintf(out, "\n3-in-1   %s: groups reachable %s: %s%s%s%s\n", s.three_in_one ? "yes" : "no",
             where, s.has_I ? "I " : "", s.has_II ? "II " : "", s.has_III ? "III" : "",
             !s.has_I && !s.has_II && !s.has_III ? "none" : "");
-    if (s.narrowest_family) {
+    if (s.has_I || s.has_II || s.has_III) {
         fprintf(out, "zones    widest run of each group %s (subgroups together):", where);
         for (int k = 0; k < 3; k++)
             fprintf(out, " %s %.3f mm%s", family_names[k], s.widest_mm[k], k < 2 ? "," : "\n");
-        fprintf(out, "narrowest reachable zone: %.3f mm (group %s)\n", s.narrowest_zone_mm,
-                s.narrowest_family);
     }
+    if (s.three_in_one)
+        fprintf(out, "narrowest zone: %.3f mm (group %s)\n", s.narrowest_zone_mm,
+                s.narrowest_family);
+    else
+        fprintf(out, "narrowest zone: 0 mm (not 3-in-1)\n");
 }
 
 /* cJSON helpers that record failure instead of returning it at every call. */
@@ -930,8 +928,7 @@ cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
     tippe_sweep_summary s;
     tippe_sweep_summarise(r, &s);
     add_obj(o, cJSON_CreateBool(s.three_in_one), "three_in_one", &ok);
-    add_obj(o, s.narrowest_family ? cJSON_CreateNumber(s.narrowest_zone_mm) : cJSON_CreateNull(),
-            "narrowest_zone_mm", &ok);
+    add_obj(o, cJSON_CreateNumber(s.narrowest_zone_mm), "narrowest_zone_mm", &ok);
     add_obj(o, s.narrowest_family ? cJSON_CreateString(s.narrowest_family) : cJSON_CreateNull(),
             "narrowest_zone_family", &ok);
     cJSON *widths = add_obj(o, cJSON_CreateObject(), "zone_widths_mm", &ok);

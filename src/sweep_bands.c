@@ -253,13 +253,10 @@ void tippe_sweep_robust_widths(const tippe_sweep_result *r, const tippe_sweep_ba
         }
         i = j;
     }
-    int any = 0;
-    *narrowest_mm = 0;
-    for (int k = 0; k < 3; k++)
-        if (has[k] && (!any || robust_mm[k] < *narrowest_mm)) {
-            *narrowest_mm = robust_mm[k];
-            any = 1;
-        }
+    /* 0 unless 3-in-1, as tippe_sweep_summary's narrowest_zone_mm. */
+    *narrowest_mm = has[0] && has[1] && has[2]
+                        ? GSL_MIN(robust_mm[0], GSL_MIN(robust_mm[1], robust_mm[2]))
+                        : 0.0;
 }
 
 /* The tolerance that moves crossing k most, and by how much (mm). */
@@ -318,7 +315,7 @@ void tippe_sweep_print_bands(FILE *out, const tippe_design *d, const tippe_sweep
     double rob[3], narrow;
     tippe_sweep_robust_widths(r, b, rob, &narrow);
     fprintf(out, "robust   widest run of each group less its bands: I %.3f mm, II %.3f mm, "
-                 "III %.3f mm; narrowest reachable %.3f mm\n",
+                 "III %.3f mm; narrowest %.3f mm (0 unless 3-in-1)\n",
             rob[0], rob[1], rob[2], narrow);
 }
 

@@ -44,11 +44,11 @@ def row(label, path, sets):
     return "| %s | %s | %.2f | %s | %s | %s |" % (
         label, "%.2f" % body if body is not None else "solid", m, zones_text(r),
         "yes" if r["three_in_one"] else "no",
-        "%.2f (%s)" % (narrow, r.get("narrowest_zone_family")) if narrow is not None else "—")
+        "%.2f (%s)" % (narrow, r["narrowest_zone_family"]) if r["three_in_one"] else "0")
 
 
 def main(names):
-    print("| top | printed parts g | top g | zones along the stated travel: group Z2 from–to mm | 3-in-1 | narrowest reachable zone mm |")
+    print("| top | printed parts g | top g | zones along the stated travel: group Z2 from–to mm | 3-in-1 | narrowest zone mm (0 unless 3-in-1) |")
     print("|---|---|---|---|---|---|")
     for name in names:
         solid = "designs/%s.json" % name

@@ -149,15 +149,13 @@ typedef struct {
      * the balanced point (the top turned over is the same top: zone I is not
      * split there); runs at Z2 < 0 count like any other. 0 if not reachable. */
     double widest_mm[3];
-    /* The narrowest of those zones among the reachable groups; 0 and NULL if
-     * none is reachable. */
+    /* The narrowest of the three zones, 0 unless the top is 3-in-1: a top that
+     * lacks a group shows two behaviours at most, however wide their zones.
+     * The one measure of `sweep`, `compare` and the optimiser's objective.
+     * narrowest_family names its group ("I", "II", "III"), NULL unless 3-in-1. */
     double narrowest_zone_mm;
     const char *narrowest_family;
 } tippe_sweep_summary;
-
-/* The optimiser's objective: the narrowest of the three zones (0 unless the
- * top is 3-in-1), mm. */
-double tippe_sweep_summary_three_zone_mm(const tippe_sweep_summary *s);
 
 void tippe_sweep_summarise(const tippe_sweep_result *r, tippe_sweep_summary *out);
 

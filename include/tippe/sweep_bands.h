@@ -63,7 +63,7 @@ double tippe_sweep_zone_robust_mm(const tippe_sweep_result *r, const tippe_sweep
 
 /* Per group (index 0, 1, 2 for I, II, III), the largest robust width of its
  * runs within the physical travel (runs as tippe_sweep_summarise joins them),
- * and the narrowest of those over the reachable groups (0 if none): the robust
+ * and the narrowest of the three (0 unless all three are reachable): the robust
  * counterpart of tippe_sweep_summary's widest_mm and narrowest_zone_mm. */
 void tippe_sweep_robust_widths(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
                                double robust_mm[3], double *narrowest_mm);

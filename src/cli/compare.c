@@ -107,11 +107,11 @@ static void print_wide(int n, tippe_design **d, tippe_sweep_result *r,
     for (int i = 0; i < n; i++) {
         tippe_sweep_summary s;
         tippe_sweep_summarise(&r[i], &s);
-        if (s.narrowest_family)
+        if (s.three_in_one)
             snprintf(buf, sizeof buf, "narrowest: %.3f mm (%s)", s.narrowest_zone_mm,
                      s.narrowest_family);
         else
-            snprintf(buf, sizeof buf, "narrowest: -");
+            snprintf(buf, sizeof buf, "narrowest: 0 mm (not 3-in-1)");
         cell(buf);
     }
     printf("\n");
@@ -157,8 +157,10 @@ static void print_stacked(int n, tippe_design **d, tippe_sweep_result *r,
         tippe_sweep_robust_widths(&r[i], &b[i], rob, &narrow);
         char groups[32], nar[40];
         three_in_one_text(&s, groups, sizeof groups);
-        snprintf(nar, sizeof nar, s.narrowest_family ? "%.3f (%s)" : "-", s.narrowest_zone_mm,
-                 s.narrowest_family);
+        if (s.three_in_one)
+            snprintf(nar, sizeof nar, "%.3f (%s)", s.narrowest_zone_mm, s.narrowest_family);
+        else
+            snprintf(nar, sizeof nar, "0");
         printf("[%-2d] %-40.40s %-15s %-18s %.3f\n", i + 1, tippe_design_name(d[i]), groups, nar,
                narrow);
     }
@@ -258,7 +260,7 @@ static int compare_parse(compare_args *a, int argc, char **argv)
         .about = "The zones of several designs (each swept over its stated travel): group,\n"
                  "from .. to, width and robust width in mm (the width less the tolerance\n"
                  "bands at both ends, as tippe sweep reports them), then whether each is\n"
-                 "\"3-in-1\" and its narrowest reachable zone, as found and robust.",
+                 "\"3-in-1\" and its narrowest zone (0 unless 3-in-1), as found and robust.",
         .after = "Exit status: 0 ok, 2 bad usage or design, 1 computation failed.",
         .opts = opts,
         .min_args = 1,

@@ -44,8 +44,8 @@ static void print_vary_table(const tippe_design *d, const tippe_sweep_vary_resul
         const tippe_sweep_result *r = &v->results[i];
         tippe_sweep_summary s;
         tippe_sweep_summarise(r, &s);
-        char narrow[40] = "-";
-        if (s.narrowest_family)
+        char narrow[40] = "0";
+        if (s.three_in_one)
             snprintf(narrow, sizeof narrow, "%.3f (%s)", s.narrowest_zone_mm, s.narrowest_family);
         printf("%*.6g  %-6s %-16s", w, v->values[i], s.three_in_one ? "yes" : "no", narrow);
         for (int j = 0; j < r->n_zones; j++) {
@@ -139,7 +139,7 @@ static int sweep_parse(sweep_args *a, int argc, char **argv)
         .after = "The table lists each zone: its group, where it starts and ends (mm), its\n"
                  "width (mm), the boundary that ends it and notes; then whether the top is\n"
                  "\"3-in-1\" (groups I, II and III all reachable within the physical travel)\n"
-                 "and its narrowest reachable zone. Then the design's tolerances (its\n"
+                 "and its narrowest zone (0 unless 3-in-1). Then the design's tolerances (its\n"
                  "\"tolerances\" block and the defaults: printed dimensions +/-0.2 mm,\n"
                  "filament density +/-3 %, hardware mass +/-2 %), each zone boundary's band\n"
                  "(+/- mm, first order, independent tolerances in quadrature; docs/sweep.md)\n"
