@@ -512,6 +512,25 @@ int tippe_sweep_zone_model_invalid(const tippe_sweep_result *r, const tippe_swee
     return n;
 }
 
+int tippe_sweep_zone_usable(const tippe_sweep_result *r, const tippe_sweep_zone *z,
+                            double *from_mm, double *to_mm)
+{
+    double f = z->z2_from_mm, t = z->z2_to_mm;
+    if (!z->within_travel)
+        return 0;
+    /* Where a part stands out the top rests on it, not on its sphere: no zone of
+     * the paper's model is there to use (docs/design-format.md). */
+    if (r->has_sphere_only) {
+        f = GSL_MAX(f, r->sphere_only_from_mm);
+        t = GSL_MIN(t, r->sphere_only_to_mm);
+    }
+    if (!(t > f))
+        return 0;
+    *from_mm = f;
+    *to_mm = t;
+    return 1;
+}
+
 static const char *const family_names[3] = {"I", "II", "III"};
 
 static int family_index(const char *f)
@@ -533,7 +552,10 @@ void tippe_sweep_summarise(const tippe_sweep_result *r, tippe_sweep_summary *out
      * the balanced point does not end it. */
     for (int i = 0; i <= r->n_zones; i++) {
         const tippe_sweep_zone *z = i < r->n_zones ? &r->zones[i] : NULL;
-        int f = z && z->within_travel ? family_index(tippe_group_family(z->group)) : -1;
+        double from, to;
+        int f = z && tippe_sweep_zone_usable(r, z, &from, &to)
+                    ? family_index(tippe_group_family(z->group))
+                    : -1;
         if (fam >= 0 && f != fam) { /* a run of one family ends */
             out->widest_mm[fam] = GSL_MAX(out->widest_mm[fam], run);
             fam = -1;
@@ -544,7 +566,7 @@ void tippe_sweep_summarise(const tippe_sweep_result *r, tippe_sweep_summary *out
             fam = f;
             run = 0.0;
         }
-        run += z->z2_to_mm - z->z2_from_mm;
+        run += to - from;
         has[f] = 1;
     }
     out->has_I = has[0];
@@ -769,7 +791,12 @@ void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe
     }
     tippe_sweep_summary s;
     tippe_sweep_summarise(r, &s);
-    const char *where = r->has_travel ? "within the physical travel" : "in the sweep";
+    const int clipped = r->has_sphere_only &&
+                        (r->sphere_only_from_mm > r->from_mm || r->sphere_only_to_mm < r->to_mm);
+    const char *where = r->has_travel ? (clipped ? "within the physical travel where the model "
+                                                   "applies"
+                                                 : "within the physical travel")
+                                      : "in the sweep";
     fprintf(out, "\n3-in-1   %s: groups reachable %s: %s%s%s%s\n", s.three_in_one ? "yes" : "no",
             where, s.has_I ? "I " : "", s.has_II ? "II " : "", s.has_III ? "III" : "",
             !s.has_I && !s.has_II && !s.has_III ? "none" : "");

@@ -238,18 +238,21 @@ void tippe_sweep_robust_widths(const tippe_sweep_result *r, const tippe_sweep_ba
 {
     int has[3] = {0, 0, 0};
     robust_mm[0] = robust_mm[1] = robust_mm[2] = 0;
-    /* Runs as tippe_sweep_summarise makes them: adjacent zones within the
-     * travel of one family. */
+    /* Runs as tippe_sweep_summarise makes them: adjacent usable zones of one
+     * family (tippe_sweep_zone_usable). */
     for (int i = 0; i < r->n_zones;) {
-        const tippe_sweep_zone *z = &r->zones[i];
-        int f = z->within_travel ? family_of(z->group) : -1;
+        double from, to, f2, t2;
+        int f = tippe_sweep_zone_usable(r, &r->zones[i], &from, &to) ? family_of(r->zones[i].group)
+                                                                      : -1;
         int j = i + 1;
-        while (f >= 0 && j < r->n_zones && r->zones[j].within_travel &&
-               family_of(r->zones[j].group) == f)
+        while (f >= 0 && j < r->n_zones && tippe_sweep_zone_usable(r, &r->zones[j], &f2, &t2) &&
+               family_of(r->zones[j].group) == f) {
+            to = t2;
             j++;
+        }
         if (f >= 0) {
             has[f] = 1;
-            robust_mm[f] = GSL_MAX(robust_mm[f], robust(z->z2_from_mm, r->zones[j - 1].z2_to_mm, b));
+            robust_mm[f] = GSL_MAX(robust_mm[f], robust(from, to, b));
         }
         i = j;
     }

@@ -100,6 +100,11 @@ typedef struct {
  * not apply: up to two [from, to] pieces into from[], to[]; returns how many. */
 int tippe_sweep_zone_model_invalid(const tippe_sweep_result *r, const tippe_sweep_zone *z,
                                    double from[2], double to[2]);
+/* The part of zone z a maker can use: within the physical travel and the
+ * sphere-only interval (the sphere-only interval is one piece, so this is one
+ * piece too). Returns 1 and [*from_mm, *to_mm] where it is longer than 0. */
+int tippe_sweep_zone_usable(const tippe_sweep_result *r, const tippe_sweep_zone *z,
+                            double *from_mm, double *to_mm);
 
 typedef struct {
     int n_scan;        /* scan intervals for bracketing (default 2000) */
@@ -138,8 +143,9 @@ int tippe_sweep_design(const tippe_design *d, double from_mm, double to_mm,
                        const tippe_sweep_options *opt, tippe_sweep_result *out,
                        tippe_error *err);
 
-/* Main-group summary over the parts of the zones within the physical travel
- * (the whole range before tippe_sweep_mark_travel). */
+/* Main-group summary over the usable parts of the zones (tippe_sweep_zone_usable:
+ * within the physical travel, the whole range before tippe_sweep_mark_travel, and
+ * where no part stands out of the sphere). */
 typedef struct {
     int has_I, has_II, has_III;
     int three_in_one;             /* I, II and III all reachable */
