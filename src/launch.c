@@ -29,8 +29,10 @@ void tippe_launch_options_default(tippe_launch_options *o)
     /* docs/launch.md: a tabletop's Coulomb coefficient (~0.3) over the median contact
      * slip speed before a hand-spun M12 ball flips (~0.13 m/s, measured). */
     o->mu = TIPPE_LAUNCH_DEFAULT_MU_S_M;
-    /* issue 21: a real table's friction is Coulomb's (docs/launch.md) */
-    o->law = TIPPE_FRICTION_COULOMB;
+    /* The paper's viscous law (eq 3.12), not Coulomb's: the rigid point contact rolls
+     * for ever once it sticks, which contradicts the hand launches of Table 1
+     * (docs/dynamics.md, "Why design launches default to the viscous law"). */
+    o->law = TIPPE_FRICTION_VISCOUS;
     o->mu_c = TIPPE_LAUNCH_DEFAULT_MU_C;
     o->slip_scale_m_s = 0.0;
     o->g = TIPPE_DEFAULT_G_M_S2;

@@ -31,10 +31,21 @@ static const char *const accuracy_keys[] = {"stepper", "rtol", NULL};
 
 /* ---- overrides ---- */
 
+/* A friction block of the viscous law: "law": "viscous", or no law and "mu_s_m". */
+static int viscous_block(const cJSON *f)
+{
+    const cJSON *law = cJSON_GetObjectItemCaseSensitive(f, "law");
+    if (cJSON_IsString(law))
+        return !strcmp(law->valuestring, "viscous");
+    return cJSON_GetObjectItemCaseSensitive(f, "mu_s_m") != NULL;
+}
+
 /* The friction is described once: a later override replaces what the file (or an
- * earlier override) said. "mu" (viscous, s/m) drops a friction block; a field of
- * the block turns a top-level mu into {"law": "viscous", "mu_s_m": mu} first; and
- * a new friction.law drops the other law's coefficients. */
+ * earlier override) said. "mu" (viscous, s/m) drops a friction block, and a Coulomb
+ * field (friction.mu, friction.slip_scale_m_s) replaces a viscous friction by
+ * {"law": "coulomb"}: a coefficient names its law. Another field of the block turns
+ * a top-level mu into {"law": "viscous", "mu_s_m": mu} first; and a new friction.law
+ * drops the other law's coefficients. */
 static int friction_before(cJSON *root, const char *field)
 {
     if (!strcmp(field, "mu")) {
@@ -44,6 +55,14 @@ static int friction_before(cJSON *root, const char *field)
     if (strncmp(field, "friction.", 9) != 0)
         return TIPPE_OK;
     cJSON *mu = cJSON_GetObjectItemCaseSensitive(root, "mu");
+    cJSON *fr = cJSON_GetObjectItemCaseSensitive(root, "friction");
+    if ((!strcmp(field, "friction.mu") || !strcmp(field, "friction.slip_scale_m_s")) &&
+        (fr ? cJSON_IsObject(fr) && viscous_block(fr) : mu != NULL)) {
+        /* (a file with both mu and a block stays refused: "not both") */
+        cJSON_DeleteItemFromObjectCaseSensitive(root, fr ? "friction" : "mu");
+        cJSON *f = cJSON_AddObjectToObject(root, "friction");
+        return f && cJSON_AddStringToObject(f, "law", "coulomb") ? TIPPE_OK : TIPPE_ECOMPUTE;
+    }
     if (!mu || cJSON_GetObjectItemCaseSensitive(root, "friction"))
         return TIPPE_OK;
     cJSON *f = cJSON_CreateObject();

@@ -32,8 +32,8 @@ stopped() {
 }
 
 # --- during the work: map and launch (minutes of launches), killed after 1 s -----
-# Viscous friction: under the default Coulomb law the M3 ball's slow launches stick and
-# are decided rolling within a second, which would leave nothing to interrupt.
+# Viscous friction (the default, given explicitly): under the Coulomb law the M3 ball's slow
+# launches stick and are decided rolling within a second, which would leave nothing to interrupt.
 for sig in INT TERM; do
     [ "$sig" = INT ] && want=130 || want=143
     echo "old csv" >"$d/map.csv"

@@ -163,17 +163,35 @@ refused "Coulomb coefficient with the viscous law" "--mu-c is the Coulomb coeffi
     launch "$m12" --z2 10 --friction viscous --mu-c 0.3 --csv "$tmp/out.csv"
 refused "viscous coefficient with the Coulomb law" "--mu (s/m) is the viscous coefficient" \
     launch "$m12" --z2 10 --friction coulomb --mu 2 --csv "$tmp/out.csv"
+refused "coefficients of both laws" "name different laws" \
+    launch "$m12" --z2 10 --mu 2 --mu-c 0.3 --csv "$tmp/out.csv"
+refused "slip scale with the viscous law" "--slip-scale is the Coulomb" \
+    check "$m12" --z2 10 --friction viscous --slip-scale 1e-4
 
-# --- friction (issue 21): Coulomb by default, --mu alone selects viscous ----------
-"$tippe" check "$m12" --z2 15 --json >"$tmp/c.json"
-check "check: Coulomb mu_c 0.3 by default" json_ok "$tmp/c.json" \
-    'o["options"]["friction"]["law"] == "coulomb" and o["options"]["friction"]["mu"] == 0.3'
-"$tippe" check "$m12" --z2 15 --mu 2.3 --json >"$tmp/c.json"
-check "check: --mu alone is the viscous law" json_ok "$tmp/c.json" \
+# --- friction: the paper's viscous law by default (docs/dynamics.md, "Why design launches
+# default to the viscous law"); a coefficient alone selects its law ------------------
+"$tippe" check "$m12" --z2 10 --json >"$tmp/c.json"
+check "check: viscous mu 2.3 s/m by default" json_ok "$tmp/c.json" \
     'o["options"]["friction"] == {"law": "viscous", "mu_s_m": 2.3}'
-"$tippe" check "$m12" --z2 15 --friction coulomb --mu-c 0.5 --json >"$tmp/c.json"
-check "check: --mu-c sets the Coulomb coefficient" json_ok "$tmp/c.json" \
-    'o["options"]["friction"]["mu"] == 0.5'
+# Z2 = 10 mm is zone IIb at 15 rev/s > n* = 6.5 rev/s: a dissipating launch tips (Table 1's 5 of 5)
+check "check: the README launch tips under the default law" json_ok "$tmp/c.json" \
+    'o["verdict"] == "tip" and o["decided_by"] == "trapped"'
+"$tippe" check "$m12" --z2 10 --friction coulomb --json >"$tmp/c.json"
+# the central launch starts without slip: under Coulomb friction it sticks and rolls for ever
+check "check --friction coulomb: mu_c 0.3, the same launch rolls for ever" json_ok "$tmp/c.json" \
+    'o["options"]["friction"]["law"] == "coulomb" and o["options"]["friction"]["mu"] == 0.3 and o["verdict"] == "no_tip" and o["decided_by"] == "rolling"'
+"$tippe" check "$m12" --z2 15 --mu 2 --json >"$tmp/c.json"
+check "check: --mu alone is the viscous law" json_ok "$tmp/c.json" \
+    'o["options"]["friction"] == {"law": "viscous", "mu_s_m": 2}'
+"$tippe" check "$m12" --z2 15 --mu-c 0.5 --json >"$tmp/c.json"
+check "check: --mu-c alone selects the Coulomb law" json_ok "$tmp/c.json" \
+    'o["options"]["friction"]["law"] == "coulomb" and o["options"]["friction"]["mu"] == 0.5'
+"$tippe" launch "$m12" --z2 15 -n 4 --slip-scale 1e-4 --json >"$tmp/c.json"
+check "launch: --slip-scale alone selects the Coulomb law" json_ok "$tmp/c.json" \
+    'o["distribution"]["friction"] == {"law": "coulomb", "mu": 0.3, "slip_scale_m_s": 1e-4}'
+"$tippe" check "$m12" --z2 15 --friction coulomb-creep --mu-c 0.5 --t-end 0.01 --json >"$tmp/c.json"
+check "check: --friction coulomb-creep keeps its law with --mu-c" json_ok "$tmp/c.json" \
+    'o["options"]["friction"]["law"] == "coulomb-creep" and o["options"]["friction"]["mu"] == 0.5'
 
 # --- issue 19.6: map columns where the screw stands out of the sphere are marked ---
 # (the M12 screw's rim leaves the sphere at Z2 = 16.8875 mm: 14 and 16 inside, 18 and 20 out)

@@ -166,12 +166,26 @@ mutate "$tmp/fr.json" 'del d["mu"]; d["friction"] = {"law": "coulomb", "mu": 0.3
 "$tippe" simulate "$tmp/fr.json" --mu 0.05 --json >"$tmp/fr.out" 2>"$tmp/err" &&
     json_ok "$tmp/fr.out" 'o["friction"] == {"law": "viscous", "mu_s_m": 0.05}' &&
     ok || bad "--mu replaces a Coulomb block: $(cat "$tmp/err")"
+# the design's central launch (15 rev/s, below n* = 16.2 rev/s at Z2 = 15 mm) hangs under
+# the default viscous law; under Coulomb friction it starts without slip, sticks and rolls
 "$tippe" simulate designs/m12-setscrew.json --z2 15 --json >"$tmp/fr.out" 2>"$tmp/err" &&
-    json_ok "$tmp/fr.out" 'o["friction"]["law"] == "coulomb" and o["friction"]["mu"] == 0.3 and o["decided_by"] == "rolling"' &&
-    ok || bad "a design launch is Coulomb by default: $(cat "$tmp/err")"
-"$tippe" simulate designs/m12-setscrew.json --z2 15 --friction viscous --json >"$tmp/fr.out" 2>"$tmp/err" &&
     json_ok "$tmp/fr.out" 'o["friction"] == {"law": "viscous", "mu_s_m": 2.3} and o["verdict"] == "hang"' &&
-    ok || bad "--friction viscous on a design: $(cat "$tmp/err")"
+    ok || bad "a design launch is viscous 2.3 s/m by default: $(cat "$tmp/err")"
+"$tippe" simulate designs/m12-setscrew.json --z2 15 --friction coulomb --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"]["law"] == "coulomb" and o["friction"]["mu"] == 0.3 and o["decided_by"] == "rolling"' &&
+    ok || bad "--friction coulomb on a design: $(cat "$tmp/err")"
+"$tippe" simulate designs/m12-setscrew.json --z2 15 --mu-c 0.4 --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"]["law"] == "coulomb" and o["friction"]["mu"] == 0.4 and o["decided_by"] == "rolling"' &&
+    ok || bad "--mu-c alone selects Coulomb on a design: $(cat "$tmp/err")"
+"$tippe" simulate "$base" --mu-c 0.2 --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"]["law"] == "coulomb" and o["friction"]["mu"] == 0.2' &&
+    ok || bad "--mu-c alone selects Coulomb on a viscous scenario: $(cat "$tmp/err")"
+"$tippe" simulate "$base" --set friction.law=coulomb-creep --mu-c 0.2 --t-end 0.01 --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"]["law"] == "coulomb-creep" and o["friction"]["mu"] == 0.2' &&
+    ok || bad "--mu-c keeps a creep law: $(cat "$tmp/err")"
+expect_fail "--mu and --mu-c" 2 "name different laws" -- simulate designs/m12-setscrew.json --z2 15 --mu 2 --mu-c 0.3
+expect_fail "--friction viscous --mu-c" 2 "--mu-c is the Coulomb coefficient" -- simulate "$base" --friction viscous --mu-c 0.3
+expect_fail "--friction coulomb --mu" 2 "--mu (s/m) is the viscous coefficient" -- simulate "$base" --friction coulomb --mu 2
 mutate "$tmp/x.json" 'd["friction"] = {"law": "coulomb"}'
 expect_fail "mu and friction" 2 "x.json: friction:" "not both" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'del d["mu"]'

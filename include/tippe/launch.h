@@ -37,7 +37,7 @@ typedef struct {
     double precession_sd_rel; /* phi_dot = steady rate * (1 + sd * N(0, 1)) */
     double slide_sd_m_s;      /* sliding speed half-normal with this scale, m/s;
                                  direction uniform in [0, 2 pi) */
-    tippe_friction_law law;   /* friction law (default Coulomb, with sticking) */
+    tippe_friction_law law;   /* friction law (default viscous, eq 3.12) */
     double mu;                /* s/m, viscous sliding friction (eq 3.12), law viscous */
     double mu_c;              /* Coulomb coefficient, the Coulomb laws */
     double slip_scale_m_s;    /* Coulomb's regularisation speed v_s (0: the default) */
@@ -63,8 +63,8 @@ typedef struct {
 
 /* The documented defaults (docs/launch.md): spin 5..25 rev/s, tilt scale
  * 0.1 rad (redrawn above 1 rad), precession spread 0.1, sliding 0.05 m/s,
- * Coulomb friction mu_c TIPPE_LAUNCH_DEFAULT_MU_C with sticking (mu
- * TIPPE_LAUNCH_DEFAULT_MU_S_M if the law is set to viscous), g TIPPE_DEFAULT_G_M_S2,
+ * viscous friction mu TIPPE_LAUNCH_DEFAULT_MU_S_M (eq 3.12; mu_c TIPPE_LAUNCH_DEFAULT_MU_C
+ * if the law is set to Coulomb), g TIPPE_DEFAULT_G_M_S2,
  * t_end 600 s, preset "balanced", until_flip 1. */
 void tippe_launch_options_default(tippe_launch_options *o);
 

@@ -331,16 +331,16 @@ typedef struct {
      .unit = "m/s", .min = -100, .max = 100, .help = "its other component (initial.V; design: 0)"}, \
     {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &(L)->over,                         \
      .field = "friction.law", .arg = "LAW",                                                       \
-     .help = "friction law: coulomb (sliding |F| = mu_c Rn, sticking and rolling),\n"            \
-             "viscous (eq 3.12) or coulomb-creep (no sticking); design: coulomb"},               \
+     .help = "friction law: viscous (eq 3.12), coulomb (sliding |F| = mu_c Rn, sticking\n"       \
+             "and rolling) or coulomb-creep (no sticking); design: viscous"},                    \
     {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "friction.mu",      \
      .arg = "X", .min = 0, .max = 10,                                                              \
-     .help = "Coulomb friction coefficient (friction.mu; design: " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C) ")"}, \
+     .help = "Coulomb friction coefficient (friction.mu; given alone on a viscous\nlaw, it selects coulomb; default " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C) ")"}, \
     {.name = "slip-scale", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over,                         \
      .field = "friction.slip_scale_m_s", .arg = "V", .unit = "m/s", .min = 1e-9, .max = 1,      \
-     .help = "Coulomb's regularisation speed v_s (docs/dynamics.md; default 1e-5)"},             \
+     .help = "Coulomb's regularisation speed v_s (docs/dynamics.md; default 1e-5;\nselects coulomb as --mu-c does)"}, \
     {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "mu", .unit = "s/m",   \
-     .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12: sets the viscous law\n(design with --friction viscous: " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) ")"}, \
+     .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12: sets the viscous law\n(design: " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) ")"}, \
     {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "g", .unit = "m/s^2",   \
      .min = 0.01, .max = 1000, .help = "gravity (design: 9.81)"},                                 \
     {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "t_end",            \

@@ -423,10 +423,44 @@ static int add_phi_dot(const char *verb, tippe_cli_launch_args *l)
     return tippe_cli_sets_add(&l->over, "initial.phi_dot", num) ? 2 : 0;
 }
 
+/* --friction, --mu, --mu-c and --slip-scale name one law, as in tippe launch (a
+ * coefficient alone selects its law: the scenario's overrides do that). 0, or 2. */
+static int check_friction_opts(const char *verb, tippe_cli_spec *spec,
+                               const tippe_cli_launch_args *l)
+{
+    const tippe_cli_opt *fr = tippe_cli_find_opt(spec, "friction");
+    const tippe_cli_opt *mu = tippe_cli_find_opt(spec, "mu");
+    const tippe_cli_opt *mu_c = tippe_cli_find_opt(spec, "mu-c");
+    const tippe_cli_opt *vs = tippe_cli_find_opt(spec, "slip-scale");
+    const int mu_seen = mu && mu->seen, mu_c_seen = mu_c && mu_c->seen;
+    const int coulomb_seen = mu_c_seen || (vs && vs->seen);
+    const char *law = NULL; /* --friction's value: the last friction.law override */
+    if (fr && fr->seen)
+        for (int i = 0; i < l->over.n; i++)
+            if (!strncmp(l->over.item[i], "friction.law=", 13))
+                law = l->over.item[i] + 13;
+    if (!law && mu_seen && coulomb_seen)
+        return tippe_cli_usage_error(verb, "--mu (s/m, viscous) and --mu-c or --slip-scale "
+                                           "(Coulomb) name different laws: give one, or "
+                                           "--friction");
+    if (law && !strcmp(law, "viscous") && coulomb_seen)
+        return tippe_cli_usage_error(verb, "%s: with the viscous law give --mu (s/m)",
+                                     mu_c_seen ? "--mu-c is the Coulomb coefficient"
+                                               : "--slip-scale is the Coulomb law's "
+                                                 "regularisation");
+    if (law && strcmp(law, "viscous") != 0 && mu_seen)
+        return tippe_cli_usage_error(verb, "--mu (s/m) is the viscous coefficient: with the "
+                                           "%s law give --mu-c",
+                                     law);
+    return 0;
+}
+
 int tippe_cli_launch_finish(const char *verb, tippe_cli_spec *spec, const char *file,
                             tippe_cli_launch_args *l)
 {
     int rc;
+    if ((rc = check_friction_opts(verb, spec, l)) != 0)
+        return rc;
     if (l->phi_dot && (rc = add_phi_dot(verb, l)) != 0)
         return rc;
     const int has_z2 = tippe_cli_find_opt(spec, "z2")->seen;

@@ -29,23 +29,24 @@ static int model_options(hands_args *a, tippe_cli_opt *t)
          .unit = "rad", .min = 1e-3, .max = 1.4, .def = "1, or 2 x --tilt if more",
          .help = "largest tilt at launch: larger draws are drawn again"},
         {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &a->friction, .arg = "LAW",
-         .def = "coulomb",
-         .help = "friction law: coulomb (sliding |F| = mu_c Rn, sticking and rolling\n"
-                 "without slipping), viscous (eq 3.12, the paper's) or coulomb-creep\n"
+         .def = "viscous",
+         .help = "friction law: viscous (eq 3.12, the paper's), coulomb (sliding\n"
+                 "|F| = mu_c Rn, sticking and rolling without slipping) or coulomb-creep\n"
                  "(regularised, no sticking); docs/dynamics.md"},
         {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu_c, .arg = "X", .min = 0,
          .max = 10, .def = TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C),
-         .help = "Coulomb friction coefficient: a printed PLA or nylon ball on a\n"
-                 "tabletop (docs/launch.md)"},
+         .help = "Coulomb friction coefficient (given alone, it selects --friction\n"
+                 "coulomb): a printed PLA or nylon ball on a tabletop (docs/launch.md)"},
         {.name = "slip-scale", .kind = TIPPE_CLI_DOUBLE, .value = &o->slip_scale_m_s,
          .arg = "V", .unit = "m/s", .min = 1e-9, .max = 1,
          .def = TIPPE_CLI_STR(TIPPE_COULOMB_SLIP_SCALE_M_S),
-         .help = "Coulomb's regularisation speed v_s: sliding below it is smoothed,\n"
-                 "and sticking is tried below 30 v_s (docs/dynamics.md)"},
+         .help = "Coulomb's regularisation speed v_s (given alone, it selects --friction\n"
+                 "coulomb): sliding below it is smoothed, and sticking is tried below\n"
+                 "30 v_s (docs/dynamics.md)"},
         {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu, .unit = "s/m", .min = 0,
          .max = 1e6, .def = "2.3",
-         .help = "viscous sliding friction (eq 3.12), for --friction viscous (given alone,\n"
-                 "it selects it): a table's Coulomb coefficient over a typical slip speed"},
+         .help = "viscous sliding friction (eq 3.12), the default law's coefficient: a\n"
+                 "table's Coulomb coefficient over a typical slip speed (docs/launch.md)"},
         {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &o->g, .unit = "m/s^2", .min = 0.01,
          .max = 1000, .def = "9.81", .help = "gravity"},
         {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &o->t_end, .unit = "s",
@@ -129,28 +130,39 @@ static void tilt_defaults(tippe_cli_spec *spec, tippe_launch_options *o)
         o->tilt_sd_rad = 0.5 * o->tilt_max_rad;
 }
 
-/* --friction, --mu-c and --mu into a->o: --mu alone selects the viscous law (it is
- * its coefficient); a coefficient of the other law is a usage error. */
+/* --friction, --mu, --mu-c and --slip-scale into a->o: a coefficient given without
+ * --friction selects its law (--mu the viscous one, the default; --mu-c or --slip-scale
+ * Coulomb's); a coefficient of the other law is a usage error. */
 static int apply_friction(hands_args *a, const tippe_cli_spec *spec)
 {
     tippe_launch_options *o = &a->o;
     const tippe_cli_opt *mu = tippe_cli_find_opt((tippe_cli_spec *)spec, "mu");
     const tippe_cli_opt *mu_c = tippe_cli_find_opt((tippe_cli_spec *)spec, "mu-c");
-    const int mu_seen = mu && mu->seen, mu_c_seen = mu_c && mu_c->seen;
+    const tippe_cli_opt *vs = tippe_cli_find_opt((tippe_cli_spec *)spec, "slip-scale");
+    const int mu_seen = mu && mu->seen;
+    const int coulomb_seen = (mu_c && mu_c->seen) || (vs && vs->seen);
     if (a->friction) {
         const int law = tippe_friction_law_parse(a->friction);
         if (law < 0)
             return tippe_cli_usage_error(a->verb,
-                                         "--friction '%s': expected coulomb, viscous or "
+                                         "--friction '%s': expected viscous, coulomb or "
                                          "coulomb-creep",
                                          a->friction);
         o->law = (tippe_friction_law)law;
-    } else if (mu_seen && !mu_c_seen) {
+    } else if (mu_seen && coulomb_seen) {
+        return tippe_cli_usage_error(a->verb, "--mu (s/m, viscous) and --mu-c or --slip-scale "
+                                              "(Coulomb) name different laws: give one, or "
+                                              "--friction");
+    } else if (coulomb_seen) {
+        o->law = TIPPE_FRICTION_COULOMB;
+    } else if (mu_seen) {
         o->law = TIPPE_FRICTION_VISCOUS;
     }
-    if (o->law == TIPPE_FRICTION_VISCOUS && mu_c_seen)
-        return tippe_cli_usage_error(a->verb, "--mu-c is the Coulomb coefficient: with the "
-                                              "viscous law give --mu (s/m)");
+    if (o->law == TIPPE_FRICTION_VISCOUS && coulomb_seen)
+        return tippe_cli_usage_error(a->verb, "%s: with the viscous law give --mu (s/m)",
+                                     mu_c && mu_c->seen
+                                         ? "--mu-c is the Coulomb coefficient"
+                                         : "--slip-scale is the Coulomb law's regularisation");
     if (o->law != TIPPE_FRICTION_VISCOUS && mu_seen)
         return tippe_cli_usage_error(a->verb, "--mu (s/m) is the viscous coefficient: with "
                                               "the %s law give --mu-c",

@@ -16,8 +16,8 @@
 #define LAUNCH_ABOUT                                                                       \
     "Launches the design's top N times by hand, as a person would: a spin, a small tilt,\n"  \
     "a precession near the steady one and a little sliding, each drawn at random\n"         \
-    "(docs/launch.md), and integrates each launch (the paper's section 3 model, with\n"     \
-    "Coulomb friction by default) until its verdict is proved (an energy barrier and a\n" \
+    "(docs/launch.md), and integrates each launch (the paper's section 3 model, with its\n" \
+    "viscous friction by default) until its verdict is proved (an energy barrier and a\n" \
     "contact bound, docs/dynamics.md), it leaves the table or it reaches t_end.\n"        \
     "Prints how many launches end in no_tip, tip, hang, lost_contact, undecided and\n"     \
     "bounded (no friction, eps = 0 or rolling: confined, no end state), with 95% Wilson confidence\n"   \

@@ -304,7 +304,7 @@ typedef struct {
     "bounded (no rest state is forced). The launch is a scenario file\n"                 \
     "(docs/dynamics.md), or a design with --z2 and the launch options below: without\n"   \
     "them, tippe launch's central hand launch (tilt 0.0674 rad, steady precession, spin\n" \
-    "15 rev/s, no sliding, Coulomb friction mu_c " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C) ")."
+    "15 rev/s, no sliding, viscous friction mu " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) " s/m)."
 
 static int simulate_parse(simulate_args *a, int argc, char **argv)
 {
