@@ -173,8 +173,8 @@ typedef struct {
 static int material_index(material_list *m, const char *name, int printable)
 {
     for (int k = 0; k < m->n; k++)
-        if (!strcmp(m->name[k], name))
-            return k;
+        if (!strcmp(m->name[k], name) && m->printable[k] == printable)
+            return k; /* "(inline)" printed and "(inline)" hardware differ */
     if (m->n == 16)
         return 15;
     snprintf(m->name[m->n], sizeof m->name[0], "%s", name);
@@ -233,9 +233,11 @@ static void draw_parts(dlist *L, const tippe_design *d, const tippe_drawing_opti
             tippe_design_part_info p;
             tippe_design_part(d, i, &p);
             int is_void = !strcmp(p.role, "void"), moving = !strcmp(p.role, "moving");
-            int want = pass == 0   ? !is_void && !moving && p.printable
+            /* as export prints it (a print block with an inline density too) */
+            int filament = tippe_profile_part_filament(d, i);
+            int want = pass == 0   ? !is_void && !moving && filament
                        : pass == 1 ? is_void
-                       : pass == 2 ? !is_void && !moving && !p.printable
+                       : pass == 2 ? !is_void && !moving && !filament
                                    : !is_void && moving;
             if (!want)
                 continue;
@@ -250,8 +252,8 @@ static void draw_parts(dlist *L, const tippe_design *d, const tippe_drawing_opti
                 continue;
             }
             dz = moving ? o->z2_mm : 0;
-            int k = material_index(mats, p.material, p.printable);
-            style st = material_style(kind_index(mats, k), p.printable);
+            int k = material_index(mats, p.material, filament);
+            style st = material_style(kind_index(mats, k), filament);
             rgb fill = moving ? (rgb){1.0, 0.80, 0.55} : st.fill;
             part_polys(L, d, i, dz, o->chord_mm, fill, st.hatch_deg, st.cross, 1);
             if (moving) /* its own voids, if any */

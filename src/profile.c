@@ -204,21 +204,46 @@ static GEOSGeometry *solid_region(geos_ctx *g, const tippe_design_solid *s, doub
 
 /* --------------------------------------------------------- printability */
 
+/* Filament: a printable material, or a part with a print block (which the
+ * mass model prints, tippe/print.h, whether its density is a material's or
+ * given inline); a void: its part's. */
+static int part_is_filament(const tippe_design *d, int i, const tippe_design_part_info *p)
+{
+    if (p->printable)
+        return 1;
+    int k = i;
+    if (p->cut_from) {
+        for (k = 0; k < tippe_design_n_parts(d); k++) {
+            tippe_design_part_info q;
+            if (!tippe_design_part(d, k, &q) && !strcmp(q.name, p->cut_from))
+                break;
+        }
+    }
+    tippe_design_print_info pr;
+    return !tippe_design_part_print(d, k, &pr) && pr.printed;
+}
+
 int tippe_profile_part_printed(const tippe_design *d, int i)
 {
     tippe_design_part_info p;
     if (tippe_design_part(d, i, &p))
         return 0;
-    return !strcmp(p.role, "fixed") && p.printable;
+    return !strcmp(p.role, "fixed") && part_is_filament(d, i, &p);
 }
 
-/* Hardware: a non-void part that is not printable (a fixed rod, the weight). */
+int tippe_profile_part_filament(const tippe_design *d, int i)
+{
+    tippe_design_part_info p;
+    return !tippe_design_part(d, i, &p) && part_is_filament(d, i, &p);
+}
+
+/* Hardware: a non-void part that is not printed (a fixed rod, the weight). */
 static int part_is_hardware(const tippe_design *d, int i)
 {
     tippe_design_part_info p;
     if (tippe_design_part(d, i, &p) || !strcmp(p.role, "void"))
         return 0;
-    return !p.printable;
+    return !part_is_filament(d, i, &p);
 }
 
 /* ------------------------------------------------------- profile rings */
@@ -637,7 +662,7 @@ static int printed_region(geos_ctx *g, const tippe_design *d, const tippe_profil
             GEOSGeom_destroy_r(g->h, holes);
         return tippe_error_set(err, TIPPE_EINPUT,
                                "%s: parts: nothing to print: no fixed part is of a printable "
-                               "material (all are hardware or moving)",
+                               "material or has a print block (all are hardware or moving)",
                                tippe_design_path(d));
     }
     *printed = holes ? combine(g, solid, holes, OP_DIFF) : solid;

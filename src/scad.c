@@ -8,17 +8,44 @@
 #include <stdio.h>
 #include <string.h>
 
-/* A part name as an OpenSCAD identifier: letters, digits and '_'. */
+/* A part name as the tail of an OpenSCAD identifier, one to one: letters and
+ * digits kept, '_' doubled, any other byte as _XX (upper-case hex), after
+ * "part_". The parts' modules are part_<tail>() and their numbers
+ * part_<tail>_<field>:
+ * no two parts share a name, none is a built-in (cylinder, sphere) or one of
+ * the file's own modules (printed, hardware, weight), and a field name (lower
+ * case after a single '_') cannot be read as part of another part's tail. */
+/* Room for "part_" and a name of up to 255 bytes, each escaped to 3. */
+enum { ID_LEN = 5 + 3 * 255 + 1 };
+
 static void ident(const char *name, char *out, size_t size)
 {
-    size_t n = 0;
-    if (size < 3)
-        return;
-    if (!isalpha((unsigned char)name[0]))
-        out[n++] = 'p';
-    for (const char *c = name; *c && n + 1 < size; c++)
-        out[n++] = isalnum((unsigned char)*c) ? *c : '_';
+    static const char hex[] = "0123456789ABCDEF";
+    size_t n = (size_t)snprintf(out, size, "part_");
+    for (const unsigned char *c = (const unsigned char *)name; *c && n + 4 < size; c++) {
+        if (isalnum(*c) && *c < 0x80) {
+            out[n++] = (char)*c;
+        } else if (*c == '_') {
+            out[n++] = '_';
+            out[n++] = '_';
+        } else {
+            out[n++] = '_';
+            out[n++] = hex[*c >> 4];
+            out[n++] = hex[*c & 15];
+        }
+    }
     out[n] = '\0';
+}
+
+/* Text from the design (names, paths) inside a // comment: a control
+ * character would end the comment and let the rest run as code. */
+static void put_comment_text(FILE *f, const char *text)
+{
+    for (const unsigned char *c = (const unsigned char *)text; *c; c++)
+        if (*c < 0x20 || *c == 0x7f)
+            fprintf(f, "\\x%02X", *c);
+        else
+            fputc(*c, f);
 }
 
 static void put_var(FILE *f, const char *id, const char *field, double v, const char *comment)
@@ -33,10 +60,13 @@ static void part_variables(FILE *f, const tippe_design *d, int i, const tippe_pr
     tippe_design_part_info info;
     tippe_design_part_solid(d, i, &sd);
     tippe_design_part(d, i, &info);
-    char id[80];
+    char id[ID_LEN];
     ident(info.name, id, sizeof id);
-    fprintf(f, "// part '%s': %s, %s, %s\n", info.name, info.shape, info.role,
-            info.cut_from ? info.cut_from : info.material);
+    fputs("// part '", f);
+    put_comment_text(f, info.name);
+    fprintf(f, "': %s, %s, ", info.shape, info.role);
+    put_comment_text(f, info.cut_from ? info.cut_from : info.material);
+    fputc('\n', f);
     if (!strcmp(sd.shape, "ball")) {
         put_var(f, id, "radius_mm", sd.radius_mm, NULL);
     } else if (!strcmp(sd.shape, "shell")) {
@@ -68,7 +98,7 @@ static void part_module(FILE *f, const tippe_design *d, int i)
     tippe_design_part_info info;
     tippe_design_part_solid(d, i, &sd);
     tippe_design_part(d, i, &info);
-    char id[80], g[100];
+    char id[ID_LEN], g[ID_LEN + 16];
     ident(info.name, id, sizeof id);
     if (sd.is_void)
         snprintf(g, sizeof g, " + %s_grow_mm", id);
@@ -136,7 +166,7 @@ static int calls(FILE *f, const tippe_design *d, int which, const char *indent)
                                        : !sd.is_void && sd.moving;
         if (!take)
             continue;
-        char id[80];
+        char id[ID_LEN];
         ident(info.name, id, sizeof id);
         fprintf(f, "%s%s();\n", indent, id);
         n++;
@@ -155,20 +185,32 @@ int tippe_scad_write(const tippe_design *d, const tippe_profile_set *s,
     FILE *f = rf.f;
     double t0, t1;
     tippe_design_travel_mm(d, &t0, &t1);
+    fputs("// ", f);
+    put_comment_text(f, tippe_design_name(d));
+    fputs("\n// Written by tippe export from ", f);
+    put_comment_text(f, tippe_design_path(d));
     fprintf(f,
-            "// %s\n// Written by tippe export from %s. Units: mm.\n"
+            ". Units: mm.\n"
             "// Edit the numbers below and render again (F6). show = \"printed\" renders\n"
             "// only the printed bodies (what the STL files hold); \"all\" adds the\n"
-            "// hardware (grey) and the moving weight at z2_mm (orange).\n\n",
-            tippe_design_name(d), tippe_design_path(d));
-    fprintf(f, "show = \"all\"; // \"all\" or \"printed\"\n");
+            "// hardware (grey) and the moving weight at z2_mm (orange).\n");
+    if (opt->split)
+        fprintf(f, "// Exported with --split: each printed body is cut at split_z_mm into\n"
+                   "// two halves; \"all\" colours them apart, \"halves\" lays them out as\n"
+                   "// the STL files hold them (each standing on its flat cut face).\n");
+    fprintf(f, "\nshow = \"all\"; // %s\n",
+            opt->split ? "\"all\", \"printed\" or \"halves\"" : "\"all\" or \"printed\"");
     fprintf(f, "fn = %d; // facets around a circle, from --chord-mm %g\n", fn, opt->chord_mm);
     fprintf(f, "$fn = fn;\n");
     fprintf(f, "sphere_radius_mm = %.10g;\n", tippe_design_radius_mm(d));
     fprintf(f, "z2_mm = %.10g; // moving weight's midpoint above the centre (travel %g .. %g)\n",
             z2_mm, t0, t1);
-    fprintf(f, "clearance_mm = %.10g; // radial clearance of holes that take hardware\n\n",
+    fprintf(f, "clearance_mm = %.10g; // radial clearance of holes that take hardware\n",
             opt->clearance_mm);
+    if (opt->split)
+        fprintf(f, "split_z_mm = %.10g; // --split: height of the cut plane above the centre\n",
+                opt->split_z_mm);
+    fprintf(f, "\n");
     for (int i = 0; i < tippe_design_n_parts(d); i++)
         part_variables(f, d, i, s);
     fprintf(f, "\n");
@@ -182,11 +224,35 @@ int tippe_scad_write(const tippe_design *d, const tippe_profile_set *s,
     if (!calls(f, d, HARDWARE, "    "))
         fprintf(f, "    // none\n");
     fprintf(f, "}\n\nmodule weight() {\n    translate([0, 0, z2_mm]) {\n");
-    calls(f, d, MOVING, "        ");
+    if (!calls(f, d, MOVING, "        "))
+        fprintf(f, "        // none\n");
     fprintf(f, "    }\n}\n\n");
-    fprintf(f, "if (show == \"printed\") {\n    printed();\n} else {\n"
-               "    color(\"lightsteelblue\") printed();\n"
-               "    color(\"grey\") hardware();\n"
-               "    color(\"orange\") weight();\n}\n");
+    if (opt->split) {
+        /* a box larger than any body, below (side -1) or above (+1) the cut */
+        fprintf(f,
+                "module split_side(side) {\n"
+                "    big = 4 * sphere_radius_mm + 4 * abs(split_z_mm);\n"
+                "    translate([-big / 2, -big / 2, side > 0 ? split_z_mm : split_z_mm - big])\n"
+                "        cube([big, big, big]);\n}\n\n"
+                "module printed_lower() { intersection() { printed(); split_side(-1); } }\n"
+                "module printed_upper() { intersection() { printed(); split_side(1); } }\n\n");
+        fprintf(f, "if (show == \"printed\") {\n    printed();\n"
+                   "} else if (show == \"halves\") {\n"
+                   "    // as printed: the lower half upside down, both cut faces on z = 0\n"
+                   "    translate([-sphere_radius_mm - 2.5, 0, 0]) rotate([180, 0, 0])\n"
+                   "        translate([0, 0, -split_z_mm]) printed_lower();\n"
+                   "    translate([sphere_radius_mm + 2.5, 0, 0])\n"
+                   "        translate([0, 0, -split_z_mm]) printed_upper();\n"
+                   "} else {\n"
+                   "    color(\"lightsteelblue\") printed_lower();\n"
+                   "    color(\"lightskyblue\") printed_upper();\n"
+                   "    color(\"grey\") hardware();\n"
+                   "    color(\"orange\") weight();\n}\n");
+    } else {
+        fprintf(f, "if (show == \"printed\") {\n    printed();\n} else {\n"
+                   "    color(\"lightsteelblue\") printed();\n"
+                   "    color(\"grey\") hardware();\n"
+                   "    color(\"orange\") weight();\n}\n");
+    }
     return tippe_report_commit(&rf, err);
 }

@@ -76,8 +76,14 @@ typedef struct {
  * perimeters of a 0.4 mm nozzle), no split. */
 tippe_profile_options tippe_profile_defaults(void);
 
-/* Whether part i is printed (a fixed, non-void part of a printable material). */
+/* Whether part i is printed: a fixed, non-void part of a printable material
+ * or with a print block (an inline density_g_cm3 with a print block is
+ * filament too: the mass model prints it). */
 int tippe_profile_part_printed(const tippe_design *d, int i);
+
+/* Whether part i is filament (printed, or to be printed if it moves), by the
+ * rule above; a void: its part's. For drawings. */
+int tippe_profile_part_filament(const tippe_design *d, int i);
 
 /* Builds the printed bodies. TIPPE_EINPUT (message naming the design file) if
  * the design prints nothing, if a body is cut away entirely, or if an option is
