@@ -1,0 +1,759 @@
+/* Build sheet: robust settings in measurable units, spins, launch verdicts, BOM. */
+#include "tippe/build.h"
+
+#include "tippe/json.h"
+#include "tippe/profile.h"
+#include "tippe/sweep.h"
+#include "tippe/sweep_bands.h"
+#include "tippe/theory.h"
+#include "tippe/top.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ISO 261, coarse series (first choice sizes M1.6 .. M24). */
+static const tippe_build_thread iso261[] = {
+    {"M1.6", 1.6, 0.35}, {"M2", 2, 0.4},     {"M2.5", 2.5, 0.45}, {"M3", 3, 0.5},
+    {"M4", 4, 0.7},      {"M5", 5, 0.8},     {"M6", 6, 1.0},      {"M8", 8, 1.25},
+    {"M10", 10, 1.5},    {"M12", 12, 1.75},  {"M14", 14, 2.0},    {"M16", 16, 2.0},
+    {"M20", 20, 2.5},    {"M24", 24, 3.0},
+};
+enum { N_ISO = sizeof iso261 / sizeof iso261[0] };
+
+/* ISO 724: the pitch diameter of the basic profile, d2 = d - (3 sqrt(3) / 8) P. */
+static double pitch_diameter_mm(const tippe_build_thread *t)
+{
+    return t->d_mm - 0.649519052838329 * t->pitch_mm;
+}
+
+const tippe_build_thread *tippe_build_thread_by_diameter(double d_mm)
+{
+    for (int k = 0; k < N_ISO; k++)
+        if (fabs(iso261[k].d_mm - d_mm) < 1e-6)
+            return &iso261[k];
+    return NULL;
+}
+
+const tippe_build_thread *tippe_build_thread_by_pitch_diameter(double d2_mm)
+{
+    int best = 0;
+    for (int k = 1; k < N_ISO; k++)
+        if (fabs(pitch_diameter_mm(&iso261[k]) - d2_mm) <
+            fabs(pitch_diameter_mm(&iso261[best]) - d2_mm))
+            best = k;
+    return &iso261[best];
+}
+
+double tippe_build_tap_drill_mm(const tippe_build_thread *t) { return t->d_mm - t->pitch_mm; }
+
+static const char *const behaviours[3] = {"stays up", "flips", "hangs"};
+static const char *const families[3] = {"I", "II", "III"};
+
+const char *tippe_build_behaviour(int f) { return f >= 0 && f < 3 ? behaviours[f] : "?"; }
+const char *tippe_build_family(int f) { return f >= 0 && f < 3 ? families[f] : "?"; }
+
+tippe_verdict tippe_build_expected_verdict(int f)
+{
+    return f == 0 ? TIPPE_VERDICT_NO_TIP : f == 1 ? TIPPE_VERDICT_TIP : TIPPE_VERDICT_HANG;
+}
+
+void tippe_build_options_default(tippe_build_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->clearance_mm = tippe_profile_defaults().clearance_mm;
+    tippe_launch_options_default(&o->launch);
+}
+
+static int family_of(tippe_group g)
+{
+    const char *f = tippe_group_family(g);
+    return !strcmp(f, "I") ? 0 : !strcmp(f, "II") ? 1 : !strcmp(f, "III") ? 2 : -1;
+}
+
+/* ------------------------------------------------------------ ranges */
+
+/* The run of each family with the largest robust width (the nominal widest if
+ * none is robust), as tippe_sweep_robust_widths joins runs. */
+static void robust_runs(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
+                        tippe_build_setting set[3])
+{
+    for (int i = 0; i < r->n_zones;) {
+        const tippe_sweep_zone *z = &r->zones[i];
+        int f = z->within_travel ? family_of(z->group) : -1;
+        int j = i + 1;
+        while (f >= 0 && j < r->n_zones && r->zones[j].within_travel &&
+               family_of(r->zones[j].group) == f)
+            j++;
+        if (f >= 0) {
+            double from = z->z2_from_mm, to = r->zones[j - 1].z2_to_mm;
+            double bf = tippe_sweep_band_at(b, from), bt = tippe_sweep_band_at(b, to);
+            double w = to - from - bf - bt;
+            tippe_build_setting *s = &set[f];
+            double best_w = s->reachable ? s->robust_to_mm - s->robust_from_mm : -INFINITY;
+            int better = !s->reachable || (w > 0 && w > best_w) ||
+                         (!s->robust && w <= 0 && to - from > s->to_mm - s->from_mm);
+            if (better) {
+                s->reachable = 1;
+                s->robust = w > 0;
+                s->from_mm = from;
+                s->to_mm = to;
+                s->band_from_mm = bf;
+                s->band_to_mm = bt;
+                s->robust_from_mm = from + bf;
+                s->robust_to_mm = to - bt;
+            }
+        }
+        i = j;
+    }
+    for (int f = 0; f < 3; f++) {
+        tippe_build_setting *s = &set[f];
+        if (!s->reachable)
+            continue;
+        double a = s->robust ? s->robust_from_mm : s->from_mm;
+        double z = s->robust ? s->robust_to_mm : s->to_mm;
+        s->set_z2_mm = 0.5 * (a + z);
+        /* A run through the balanced point (eps = 0: a balanced ball with no
+         * side to rest on, e.g. a symmetric shell's Z2 = 0) is set in the
+         * middle of its longer side. */
+        for (int k = 0; k < r->n_events; k++) {
+            const tippe_sweep_event *e = &r->events[k];
+            if (e->boundary != TIPPE_SWEEP_BALANCED || e->z2_mm <= a || e->z2_mm >= z)
+                continue;
+            s->set_z2_mm = e->z2_mm - a > z - e->z2_mm ? 0.5 * (a + e->z2_mm)
+                                                       : 0.5 * (e->z2_mm + z);
+            break;
+        }
+    }
+}
+
+/* ------------------------------------------------------------ measuring */
+
+/* Extent of the moving group above and below Z2 (mm), its outer radius and
+ * the smallest bore of its tubes (0 if none). */
+static void weight_extent(const tippe_design *d, double *top, double *bottom, double *r_out,
+                          double *bore, char *name, size_t name_size)
+{
+    *top = -INFINITY;
+    *bottom = INFINITY;
+    *r_out = 0;
+    *bore = 0;
+    name[0] = '\0';
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_solid s;
+        tippe_design_part_info p;
+        if (tippe_design_part_solid(d, i, &s) || tippe_design_part(d, i, &p) || !s.moving ||
+            s.is_void)
+            continue;
+        double half = 0, r = 0;
+        if (!strcmp(s.shape, "cylinder") || !strcmp(s.shape, "tube")) {
+            half = s.height_mm / 2;
+            r = s.radius_mm;
+            if (s.inner_radius_mm > 0 && (*bore == 0 || s.inner_radius_mm < *bore))
+                *bore = s.inner_radius_mm;
+        } else if (!strcmp(s.shape, "torus")) {
+            half = s.axial_semi_mm;
+            r = s.centre_radius_mm + s.radial_semi_mm;
+        } else {
+            half = r = s.radius_mm;
+        }
+        *top = fmax(*top, s.z_mm + half);
+        *bottom = fmin(*bottom, s.z_mm - half);
+        *r_out = fmax(*r_out, r);
+        if (!name[0])
+            snprintf(name, name_size, "%s", p.name);
+    }
+}
+
+/* A hole that takes the weight: an axial cylinder void of a printed body, grown
+ * by the clearance, wide enough for it and open at one pole. */
+static int find_hole(const tippe_design *d, const tippe_profile_set *ps, double clearance_mm,
+                     double r_weight, tippe_build_sheet *out)
+{
+    double R = tippe_design_radius_mm(d);
+    for (int i = 0; ps && i < ps->n_parts; i++) {
+        tippe_design_solid s;
+        tippe_design_part_info p;
+        if (!ps->clearance_applied[i] || tippe_design_part_solid(d, i, &s) ||
+            tippe_design_part(d, i, &p) || s.moving || strcmp(s.shape, "cylinder") ||
+            s.radius_mm < r_weight - 1e-9 || s.radius_mm + clearance_mm >= R)
+            continue;
+        double a = s.radius_mm + clearance_mm;
+        double rim = sqrt(R * R - a * a); /* where the hole's wall meets the sphere */
+        double top = s.z_mm + s.height_mm / 2, bottom = s.z_mm - s.height_mm / 2;
+        int up = top >= rim - 1e-9, down = bottom <= -rim + 1e-9;
+        if (!up && !down)
+            continue;
+        out->measure = TIPPE_BUILD_MEASURE_HOLE;
+        out->reference_up = up;
+        out->reference_z_mm = up ? rim : -rim;
+        snprintf(out->reference, sizeof out->reference,
+                 "the rim of hole '%s' at the %s pole (printed diameter %.2f mm), where a "
+                 "caliper's depth rod rests",
+                 p.name, up ? "top (+z)" : "bottom (-z)", 2 * a);
+        return 1;
+    }
+    return 0;
+}
+
+/* A fixed rod the weight is threaded on: a hardware cylinder on the axis that
+ * fits its bore. */
+static int find_rod(const tippe_design *d, double bore, double *rod_r, tippe_build_sheet *out)
+{
+    for (int i = 0; bore > 0 && i < tippe_design_n_parts(d); i++) {
+        tippe_design_solid s;
+        tippe_design_part_info p;
+        tippe_design_print_info pr;
+        if (tippe_design_part_solid(d, i, &s) || tippe_design_part(d, i, &p) ||
+            tippe_design_part_print(d, i, &pr) || s.moving || s.is_void || p.printable ||
+            pr.printed || strcmp(s.shape, "cylinder") || s.inner_radius_mm > 0 ||
+            s.radius_mm > bore + 1e-6)
+            continue;
+        double top = s.z_mm + s.height_mm / 2;
+        if (s.clip_radius_mm > 0)
+            top = fmin(top, sqrt(s.clip_radius_mm * s.clip_radius_mm - s.radius_mm * s.radius_mm));
+        out->measure = TIPPE_BUILD_MEASURE_ROD;
+        out->reference_up = 1;
+        out->reference_z_mm = top;
+        *rod_r = s.radius_mm;
+        snprintf(out->reference, sizeof out->reference, "the top (+z) end of rod '%s'", p.name);
+        return 1;
+    }
+    return 0;
+}
+
+/* depth below the reference of the weight's measured end at Z2 (mm) */
+static double depth_at(const tippe_build_sheet *s, double z2_mm)
+{
+    if (s->measure == TIPPE_BUILD_MEASURE_NONE)
+        return NAN;
+    double end = z2_mm + s->weight_end_offset_mm;
+    return s->reference_up ? s->reference_z_mm - end : end - s->reference_z_mm;
+}
+
+/* --------------------------------------------------------- catalogue */
+
+/* The catalogue item with the screw's radius and height: 1 matched, 0 not,
+ * or a status < 0 with err set if the file does not read. */
+static int match_catalogue(const char *file, double r_mm, double h_mm, tippe_build_sheet *out,
+                           tippe_error *err)
+{
+    tippe_json_reader *c = tippe_json_reader_new(file, err, TIPPE_JSON_WORDS_FIELD, NULL);
+    if (!c)
+        return -TIPPE_ECOMPUTE;
+    cJSON *root = NULL;
+    int rc = tippe_json_load(c, 16, "catalogue", &root);
+    free(c);
+    if (rc)
+        return -rc;
+    int found = 0;
+    const cJSON *set;
+    cJSON_ArrayForEach(set, root)
+    {
+        const cJSON *items = cJSON_GetObjectItemCaseSensitive(set, "items");
+        const cJSON *it;
+        cJSON_ArrayForEach(it, items)
+        {
+            const cJSON *r = cJSON_GetObjectItemCaseSensitive(it, "radius_mm");
+            const cJSON *h = cJSON_GetObjectItemCaseSensitive(it, "height_mm");
+            const cJSON *n = cJSON_GetObjectItemCaseSensitive(it, "name");
+            const cJSON *d = cJSON_GetObjectItemCaseSensitive(it, "d_mm");
+            const cJSON *p = cJSON_GetObjectItemCaseSensitive(it, "pitch_mm");
+            const cJSON *th = cJSON_GetObjectItemCaseSensitive(it, "thread");
+            if (!cJSON_IsNumber(r) || !cJSON_IsNumber(h) || !cJSON_IsString(n) ||
+                !cJSON_IsNumber(d) || !cJSON_IsNumber(p) || fabs(r->valuedouble - r_mm) > 1e-6 ||
+                fabs(h->valuedouble - h_mm) > 1e-6)
+                continue;
+            const tippe_build_thread *iso = tippe_build_thread_by_diameter(d->valuedouble);
+            snprintf(out->thread_name, sizeof out->thread_name, "%s",
+                     iso ? iso->name : cJSON_IsString(th) ? th->valuestring : "M?");
+            out->thread.d_mm = d->valuedouble;
+            out->thread.pitch_mm = p->valuedouble; /* the catalogue's */
+            snprintf(out->catalogue_item, sizeof out->catalogue_item, "%s", n->valuestring);
+            const cJSON *t = cJSON_GetObjectItemCaseSensitive(set, "title");
+            snprintf(out->catalogue_title, sizeof out->catalogue_title, "%s",
+                     cJSON_IsString(t) ? t->valuestring : set->string);
+            found = 1;
+            break;
+        }
+        if (found)
+            break;
+    }
+    cJSON_Delete(root);
+    return found;
+}
+
+/* ------------------------------------------------------------- spins */
+
+/* The spin (rad/s) family f needs at Z2, from Theorem 5.1's thresholds; 0 for
+ * any spin, INFINITY where none suffices. */
+static int spin_needed(const tippe_design *d, int f, double z2_mm, double g, double *rad_s,
+                       const char **rule, tippe_error *err)
+{
+    tippe_top top;
+    tippe_theory_thresholds th;
+    int rc = tippe_design_top(d, z2_mm, &top, err);
+    if (!rc)
+        rc = tippe_theory_compute_thresholds(&top, g, &th, err);
+    if (rc)
+        return rc;
+    if (f == 0) {
+        *rad_s = 0;
+        *rule = "any spin: theta = 0 is stable at every spin (group I)";
+    } else if (f == 1) {
+        /* theta = 0 must be unstable (n0 > n-, A.14) and theta = pi stable for
+         * the launch's Jellett (n0 > n*, section 7.1) */
+        double n = th.has_n_minus ? th.n_minus_rad_s : 0;
+        if (th.has_n_star)
+            n = fmax(n, th.n_star_rad_s);
+        *rad_s = th.has_n_star ? n : INFINITY;
+        *rule = "above n* (theta = pi stable for the launch's Jellett) and n- (theta = 0 unstable)";
+    } else {
+        *rad_s = th.has_n_minus ? th.n_minus_rad_s : INFINITY;
+        *rule = "above n- (theta = 0 unstable; theta = pi never stable in group III)";
+    }
+    return TIPPE_OK;
+}
+
+static void spins_and_launch(const tippe_design *d, const tippe_build_options *o, int f,
+                             tippe_build_setting *s)
+{
+    const double rev = 2 * M_PI;
+    tippe_error e = {0};
+    double n_set = NAN, n_max = 0;
+    if (spin_needed(d, f, s->set_z2_mm, o->launch.g, &n_set, &s->spin_rule, &e))
+        n_set = NAN;
+    double a = s->robust ? s->robust_from_mm : s->from_mm;
+    double b = s->robust ? s->robust_to_mm : s->to_mm;
+    /* 21 points: the thresholds are smooth in Z2 and monotone over a zone's
+     * middle; their maximum is at an end or near it */
+    for (int k = 0; k <= 20; k++) {
+        double n = 0;
+        const char *rule;
+        if (spin_needed(d, f, a + (b - a) * k / 20.0, o->launch.g, &n, &rule, &e) == TIPPE_OK)
+            n_max = fmax(n_max, n);
+    }
+    s->spin_needed_rev_s = n_set / rev;
+    s->spin_needed_max_rev_s = n_max / rev;
+    /* The check's spin: the hand's middle spin for group I; else a quarter above
+     * what the set Z2 needs (a threshold is a bifurcation: exactly on it the
+     * outcome is marginal). */
+    double mid = 0.5 * (o->launch.spin_from_rev_s + o->launch.spin_to_rev_s);
+    s->spin_launch_rev_s = f == 0 ? mid : 1.25 * s->spin_needed_rev_s;
+    s->beyond_hand = !(s->spin_launch_rev_s <= o->launch.spin_to_rev_s);
+    s->verdict = TIPPE_VERDICT_UNDECIDED;
+    if (!isfinite(s->spin_launch_rev_s)) {
+        s->launch_status = TIPPE_EINPUT;
+        return;
+    }
+    tippe_top top;
+    tippe_dynamics_initial ic;
+    tippe_launch_record rec;
+    int rc = tippe_design_top(d, s->set_z2_mm, &top, &e);
+    if (!rc)
+        rc = tippe_launch_central(&top, &o->launch, s->spin_launch_rev_s * rev, &ic, &e);
+    if (!rc)
+        rc = tippe_launch_run_initial(&top, &o->launch, &ic, &rec, &e);
+    s->launch_status = rc;
+    if (!rc) {
+        s->verdict = rec.verdict;
+        s->launch_t_s = rec.t_s;
+        s->verdict_ok = rec.verdict == tippe_build_expected_verdict(f);
+    }
+}
+
+/* ----------------------------------------------------------------- BOM */
+
+static void bom(tippe_build_sheet *s, int qty, const char *what, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+static void bom(tippe_build_sheet *s, int qty, const char *what, const char *fmt, ...)
+{
+    if (s->n_bom >= TIPPE_BUILD_MAX_BOM)
+        return;
+    tippe_build_bom_line *l = &s->bom[s->n_bom++];
+    l->quantity = qty;
+    snprintf(l->what, sizeof l->what, "%s", what);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(l->detail, sizeof l->detail, fmt, ap);
+    va_end(ap);
+}
+
+static void note(tippe_build_sheet *s, const char *text)
+{
+    if (s->n_notes < 4)
+        snprintf(s->note[s->n_notes++], sizeof s->note[0], "%s", text);
+}
+
+static void bill(const tippe_design *d, const tippe_profile_set *ps, const tippe_build_options *o,
+                 tippe_build_sheet *s, double rod_r)
+{
+    char what[512];
+    for (int b = 0; ps && b < ps->n_bodies; b++) {
+        snprintf(what, sizeof what, "printed body '%s', %s", ps->body[b].name,
+                 ps->body[b].material);
+        bom(s, 1, what, "%.2f mm tall, %.2f mm across; printed with the axis vertical",
+            ps->body[b].z_max_mm - ps->body[b].z_min_mm, 2 * ps->body[b].r_max_mm);
+    }
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_solid sd;
+        tippe_design_part_info p;
+        tippe_design_print_info pr;
+        if (tippe_design_part_solid(d, i, &sd) || tippe_design_part(d, i, &p) ||
+            tippe_design_part_print(d, i, &pr) || sd.is_void || p.printable || pr.printed)
+            continue;
+        int cyl = !strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube");
+        if (sd.moving && s->catalogue_item[0]) {
+            snprintf(what, sizeof what, "set screw %s (%s), %s", s->catalogue_item,
+                     s->catalogue_title, p.material);
+            bom(s, 1, what, "thread %s x %.4g mm, length %.4g mm; the weight ('%s')",
+                s->thread_name, s->thread.pitch_mm, sd.height_mm, p.name);
+        } else if (sd.moving && s->measure == TIPPE_BUILD_MEASURE_HOLE && cyl) {
+            snprintf(what, sizeof what, "screw or slug '%s', %s", p.name, p.material);
+            bom(s, 1, what,
+                "diameter %.4g mm (modelled), length %.4g mm; no catalogue item matches: "
+                "nearest ISO 261 thread %s x %.4g mm",
+                2 * sd.radius_mm, sd.height_mm, s->thread_name, s->thread.pitch_mm);
+        } else if (sd.moving && cyl && sd.inner_radius_mm > 0) {
+            snprintf(what, sizeof what, "bead (weight) '%s', %s", p.name, p.material);
+            if (s->has_thread)
+                bom(s, 1, what,
+                    "outer diameter %.4g mm, height %.4g mm, bore tapped %s x %.4g mm "
+                    "(tap drill %.2f mm)",
+                    2 * sd.radius_mm, sd.height_mm, s->thread_name, s->thread.pitch_mm,
+                    s->tap_drill_mm);
+            else
+                bom(s, 1, what, "outer diameter %.4g mm, height %.4g mm, bore %.4g mm",
+                    2 * sd.radius_mm, sd.height_mm, 2 * sd.inner_radius_mm);
+        } else if (!sd.moving && cyl && sd.inner_radius_mm == 0) {
+            double len = sd.height_mm;
+            const char *ends = "cut square";
+            if (sd.clip_radius_mm > 0) {
+                double cap = sqrt(sd.clip_radius_mm * sd.clip_radius_mm -
+                                  sd.radius_mm * sd.radius_mm);
+                if (sd.z_mm + sd.height_mm / 2 > cap && sd.z_mm - sd.height_mm / 2 < -cap) {
+                    len = 2 * cap;
+                    ends = "cut square at this length, its end edges touching the clip ball "
+                           "(the model's rounded ends hold a little more metal)";
+                }
+            }
+            const tippe_build_thread *t = tippe_build_thread_by_diameter(2 * sd.radius_mm);
+            snprintf(what, sizeof what, "%s '%s', %s", t ? "threaded rod" : "rod", p.name,
+                     p.material);
+            if (t)
+                bom(s, 1, what, "%s x %.4g mm (ISO 261 coarse), length %.2f mm, %s", t->name,
+                    t->pitch_mm, len, ends);
+            else
+                bom(s, 1, what, "diameter %.4g mm, length %.2f mm, %s", 2 * sd.radius_mm, len,
+                    ends);
+            (void)rod_r;
+        } else {
+            snprintf(what, sizeof what, "part '%s', %s %s", p.name, p.material, sd.shape);
+            bom(s, 1, what, "%s", sd.moving ? "moving (the weight)" : "fixed hardware");
+        }
+    }
+    int split = 0;
+    for (int k = 0; ps && k < ps->n_warnings; k++)
+        split |= strstr(ps->warning[k], "--split") != NULL;
+    if (split)
+        bom(s, 1, "adhesive for the two printed halves",
+            "the body closes around its hardware: export with --split and join the halves "
+            "(solvent weld for ABS, cyanoacrylate for PLA or PETG)");
+    (void)o;
+}
+
+/* ------------------------------------------------------------ compute */
+
+int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
+                        tippe_build_sheet *out, tippe_error *err)
+{
+    memset(out, 0, sizeof *out);
+    snprintf(out->design_name, sizeof out->design_name, "%s", tippe_design_name(d));
+    snprintf(out->design_file, sizeof out->design_file, "%s", tippe_design_path(d));
+    out->radius_mm = tippe_design_radius_mm(d);
+    tippe_sweep_result r;
+    tippe_sweep_bands_result b = {0};
+    int rc = tippe_sweep_design(d, 0, 0, NULL, &r, err);
+    if (!rc)
+        rc = tippe_sweep_bands(d, &r, &b, err);
+    if (rc) {
+        tippe_sweep_bands_free(&b);
+        tippe_sweep_result_free(&r);
+        return rc;
+    }
+    out->travel_from_mm = r.travel_from_mm;
+    out->travel_to_mm = r.travel_to_mm;
+    robust_runs(&r, &b, out->set);
+    out->three_in_one = out->set[0].reachable && out->set[1].reachable && out->set[2].reachable;
+    tippe_sweep_bands_free(&b);
+    tippe_sweep_result_free(&r);
+
+    /* where the weight is measured from */
+    double top, bottom, r_weight, bore, rod_r = 0;
+    weight_extent(d, &top, &bottom, &r_weight, &bore, out->weight_name, sizeof out->weight_name);
+    tippe_profile_options po = tippe_profile_defaults();
+    po.clearance_mm = o->clearance_mm;
+    tippe_profile_set ps;
+    tippe_error perr = {0};
+    int have_ps = tippe_profile_build(d, &po, &ps, &perr) == TIPPE_OK;
+    if (isfinite(top) && !find_hole(d, have_ps ? &ps : NULL, o->clearance_mm, r_weight, out))
+        find_rod(d, bore, &rod_r, out);
+    out->weight_end_offset_mm = out->reference_up ? top : bottom;
+
+    /* the thread the weight turns on */
+    if (out->measure == TIPPE_BUILD_MEASURE_HOLE) {
+        int m = 0;
+        double h = top - bottom;
+        if (o->catalogue && (m = match_catalogue(o->catalogue, r_weight, h, out, err)) < 0) {
+            if (have_ps)
+                tippe_profile_set_free(&ps);
+            return -m;
+        }
+        if (!m) {
+            /* the screw is modelled as a cylinder of its pitch diameter (the
+             * catalogue's convention) */
+            out->thread = *tippe_build_thread_by_pitch_diameter(2 * r_weight);
+            out->thread_assumed = 1;
+        }
+        out->has_thread = 1;
+    } else if (out->measure == TIPPE_BUILD_MEASURE_ROD) {
+        const tippe_build_thread *t = tippe_build_thread_by_diameter(2 * rod_r);
+        if (t) {
+            out->thread = *t;
+            out->has_thread = 1;
+        }
+    }
+    if (out->has_thread) {
+        out->tap_drill_mm = tippe_build_tap_drill_mm(&out->thread);
+        if (out->thread.name)
+            snprintf(out->thread_name, sizeof out->thread_name, "%s", out->thread.name);
+        out->thread.name = NULL; /* the sheet's copy is thread_name */
+    }
+
+    for (int f = 0; f < 3; f++) {
+        tippe_build_setting *s = &out->set[f];
+        if (!s->reachable)
+            continue;
+        double a = s->robust ? s->robust_from_mm : s->from_mm;
+        double bb = s->robust ? s->robust_to_mm : s->to_mm;
+        s->depth_from_mm = depth_at(out, a);
+        s->depth_set_mm = depth_at(out, s->set_z2_mm);
+        s->depth_to_mm = depth_at(out, bb);
+        double p = out->has_thread ? out->thread.pitch_mm : NAN;
+        s->turns_from = s->depth_from_mm / p;
+        s->turns_set = s->depth_set_mm / p;
+        s->turns_to = s->depth_to_mm / p;
+        spins_and_launch(d, o, f, s);
+    }
+    bill(d, have_ps ? &ps : NULL, o, out, rod_r);
+    if (have_ps)
+        tippe_profile_set_free(&ps);
+    if (out->measure == TIPPE_BUILD_MEASURE_HOLE)
+        note(out, "Depth is measured from the rim of the hole to the screw's end; a negative "
+                  "depth means the screw stands out of the ball. Turns are counted from the "
+                  "screw's end flush with the rim.");
+    else if (out->measure == TIPPE_BUILD_MEASURE_ROD)
+        note(out, "Depth is measured along the rod from its top end down to the bead's top "
+                  "face, before the shell is closed. Turns are counted from the bead's top "
+                  "face flush with the rod's end.");
+    else
+        note(out, "No hole or rod on the axis holds the weight: set it by Z2 directly "
+                  "(its midpoint's height above the sphere's centre).");
+    return TIPPE_OK;
+}
+
+/* ------------------------------------------------------------ reports */
+
+static cJSON *num(double x) { return isfinite(x) ? cJSON_CreateNumber(x) : cJSON_CreateNull(); }
+
+static const char *measure_name(tippe_build_measure m)
+{
+    return m == TIPPE_BUILD_MEASURE_HOLE ? "hole" : m == TIPPE_BUILD_MEASURE_ROD ? "rod" : "none";
+}
+
+cJSON *tippe_build_json(const tippe_build_sheet *s)
+{
+    cJSON *o = cJSON_CreateObject();
+    if (!o)
+        return NULL;
+    cJSON_AddStringToObject(o, "design", s->design_name);
+    cJSON_AddStringToObject(o, "file", s->design_file);
+    cJSON_AddNumberToObject(o, "radius_mm", s->radius_mm);
+    cJSON *t = cJSON_AddArrayToObject(o, "physical_travel_mm");
+    cJSON_AddItemToArray(t, num(s->travel_from_mm));
+    cJSON_AddItemToArray(t, num(s->travel_to_mm));
+    cJSON_AddBoolToObject(o, "three_in_one", s->three_in_one);
+    cJSON *m = cJSON_AddObjectToObject(o, "measure");
+    if (m) {
+        cJSON_AddStringToObject(m, "kind", measure_name(s->measure));
+        cJSON_AddStringToObject(m, "reference", s->reference);
+        cJSON_AddItemToObject(m, "reference_z_mm",
+                              num(s->measure ? s->reference_z_mm : NAN));
+        cJSON_AddStringToObject(m, "weight", s->weight_name);
+        cJSON_AddNumberToObject(m, "weight_end_above_z2_mm", s->weight_end_offset_mm);
+    }
+    cJSON *th = cJSON_AddObjectToObject(o, "thread");
+    if (th && s->has_thread) {
+        cJSON_AddStringToObject(th, "name", s->thread_name);
+        cJSON_AddNumberToObject(th, "d_mm", s->thread.d_mm);
+        cJSON_AddNumberToObject(th, "pitch_mm", s->thread.pitch_mm);
+        cJSON_AddNumberToObject(th, "tap_drill_mm", s->tap_drill_mm);
+        cJSON_AddStringToObject(th, "tap_drill_rule", "d - P (ISO 2306 for ISO 261 threads)");
+        if (s->catalogue_item[0]) {
+            cJSON_AddStringToObject(th, "catalogue_item", s->catalogue_item);
+            cJSON_AddStringToObject(th, "catalogue", s->catalogue_title);
+        } else {
+            cJSON_AddNullToObject(th, "catalogue_item");
+        }
+        cJSON_AddBoolToObject(th, "assumed", s->thread_assumed);
+    }
+    cJSON *arr = cJSON_AddArrayToObject(o, "settings");
+    for (int f = 0; arr && f < 3; f++) {
+        const tippe_build_setting *x = &s->set[f];
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(arr, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        cJSON_AddStringToObject(j, "behaviour", behaviours[f]);
+        cJSON_AddStringToObject(j, "group", families[f]);
+        cJSON_AddBoolToObject(j, "reachable", x->reachable);
+        if (!x->reachable)
+            continue;
+        cJSON_AddBoolToObject(j, "robust", x->robust);
+        cJSON_AddNumberToObject(j, "z2_from_mm", x->from_mm);
+        cJSON_AddNumberToObject(j, "z2_to_mm", x->to_mm);
+        cJSON_AddNumberToObject(j, "band_from_mm", x->band_from_mm);
+        cJSON_AddNumberToObject(j, "band_to_mm", x->band_to_mm);
+        cJSON_AddNumberToObject(j, "robust_from_mm", x->robust_from_mm);
+        cJSON_AddNumberToObject(j, "robust_to_mm", x->robust_to_mm);
+        cJSON_AddNumberToObject(j, "robust_width_mm",
+                                x->robust ? x->robust_to_mm - x->robust_from_mm : 0);
+        cJSON_AddNumberToObject(j, "set_z2_mm", x->set_z2_mm);
+        cJSON_AddItemToObject(j, "depth_from_mm", num(x->depth_from_mm));
+        cJSON_AddItemToObject(j, "depth_set_mm", num(x->depth_set_mm));
+        cJSON_AddItemToObject(j, "depth_to_mm", num(x->depth_to_mm));
+        cJSON_AddItemToObject(j, "turns_from", num(x->turns_from));
+        cJSON_AddItemToObject(j, "turns_set", num(x->turns_set));
+        cJSON_AddItemToObject(j, "turns_to", num(x->turns_to));
+        cJSON_AddItemToObject(j, "spin_needed_rev_s", num(x->spin_needed_rev_s));
+        cJSON_AddItemToObject(j, "spin_needed_max_rev_s", num(x->spin_needed_max_rev_s));
+        cJSON_AddStringToObject(j, "spin_rule", x->spin_rule ? x->spin_rule : "");
+        cJSON_AddItemToObject(j, "launch_spin_rev_s", num(x->spin_launch_rev_s));
+        cJSON_AddBoolToObject(j, "beyond_hand_spin", x->beyond_hand);
+        if (x->launch_status == TIPPE_OK) {
+            cJSON_AddStringToObject(j, "launch_verdict", tippe_verdict_name(x->verdict));
+            cJSON_AddBoolToObject(j, "launch_as_expected", x->verdict_ok);
+            cJSON_AddNumberToObject(j, "launch_decided_s", x->launch_t_s);
+        } else {
+            cJSON_AddNullToObject(j, "launch_verdict");
+            cJSON_AddBoolToObject(j, "launch_as_expected", 0);
+        }
+    }
+    cJSON *b = cJSON_AddArrayToObject(o, "bill_of_materials");
+    for (int k = 0; b && k < s->n_bom; k++) {
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(b, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        cJSON_AddNumberToObject(j, "quantity", s->bom[k].quantity);
+        cJSON_AddStringToObject(j, "item", s->bom[k].what);
+        cJSON_AddStringToObject(j, "detail", s->bom[k].detail);
+    }
+    cJSON *n = cJSON_AddArrayToObject(o, "notes");
+    for (int k = 0; n && k < s->n_notes; k++)
+        cJSON_AddItemToArray(n, cJSON_CreateString(s->note[k]));
+    return o;
+}
+
+/* "12.34 mm" or "-" */
+static const char *mm(double v, char *buf, size_t size)
+{
+    if (isfinite(v))
+        snprintf(buf, size, "%.2f mm", v);
+    else
+        snprintf(buf, size, "-");
+    return buf;
+}
+
+static const char *turns(double v, char *buf, size_t size)
+{
+    if (isfinite(v))
+        snprintf(buf, size, "%.1f", v);
+    else
+        snprintf(buf, size, "-");
+    return buf;
+}
+
+void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
+{
+    char a[32], b[32], c[32], d[32], e[32], g[32];
+    fprintf(f, "# Build sheet: %s\n\nDesign file `%s`; sphere radius %g mm; the weight's "
+               "physical travel Z2 = %.2f .. %.2f mm.\n\n",
+            s->design_name, s->design_file, s->radius_mm, s->travel_from_mm, s->travel_to_mm);
+    fprintf(f, "## Settings\n\n");
+    if (s->measure != TIPPE_BUILD_MEASURE_NONE)
+        fprintf(f, "Measure from %s.\n\n", s->reference);
+    fprintf(f, "| behaviour | group | robust Z2 range | set Z2 | depth (range) | depth to set | "
+               "turns to set | spin needed | launch check |\n"
+               "|---|---|---|---|---|---|---|---|---|\n");
+    for (int k = 0; k < 3; k++) {
+        const tippe_build_setting *x = &s->set[k];
+        if (!x->reachable) {
+            fprintf(f, "| %s | %s | not reachable within the travel | | | | | | |\n",
+                    behaviours[k], families[k]);
+            continue;
+        }
+        char range[80], spin[96], check[120];
+        if (x->robust)
+            snprintf(range, sizeof range, "%.2f .. %.2f mm", x->robust_from_mm, x->robust_to_mm);
+        else
+            snprintf(range, sizeof range, "none robust (zone %.2f .. %.2f mm)", x->from_mm,
+                     x->to_mm);
+        if (k == 0)
+            snprintf(spin, sizeof spin, "any");
+        else if (isfinite(x->spin_needed_max_rev_s))
+            snprintf(spin, sizeof spin, "above %.1f rev/s (%.1f at the range's worst end)",
+                     x->spin_needed_rev_s, x->spin_needed_max_rev_s);
+        else
+            snprintf(spin, sizeof spin, "no spin suffices");
+        if (x->launch_status == TIPPE_OK)
+            snprintf(check, sizeof check, "%s at %.1f rev/s%s%s", tippe_verdict_name(x->verdict),
+                     x->spin_launch_rev_s, x->verdict_ok ? " (as expected)" : " (NOT as expected)",
+                     x->beyond_hand ? "; beyond a hand spin" : "");
+        else
+            snprintf(check, sizeof check, "not run");
+        double lo = fmin(x->depth_from_mm, x->depth_to_mm);
+        double hi = fmax(x->depth_from_mm, x->depth_to_mm);
+        fprintf(f, "| %s | %s | %s | %.2f mm | %s .. %s | %s | %s | %s | %s |\n", behaviours[k],
+                families[k], range, x->set_z2_mm, mm(lo, a, sizeof a),
+                mm(hi, b, sizeof b), mm(x->depth_set_mm, c, sizeof c),
+                turns(x->turns_set, d, sizeof d), spin, check);
+    }
+    (void)e;
+    (void)g;
+    fprintf(f, "\n%s 3-in-1: %s.\n", s->three_in_one ? "It is" : "It is not",
+            s->three_in_one ? "all three behaviours are reachable within the travel"
+                            : "not every behaviour is reachable within the travel");
+    if (s->has_thread) {
+        fprintf(f, "\nThread: %s x %g mm", s->thread_name, s->thread.pitch_mm);
+        if (s->catalogue_item[0])
+            fprintf(f, " (catalogue item %s, %s)", s->catalogue_item, s->catalogue_title);
+        else if (s->thread_assumed)
+            fprintf(f, " (assumed: no catalogue item matches the weight; the ISO 261 size whose "
+                       "pitch diameter is nearest its modelled diameter)");
+        fprintf(f, "; tap drill %.2f mm (d - P, ISO 2306).\n", s->tap_drill_mm);
+    }
+    fprintf(f, "\n## Bill of materials\n\n| qty | item | detail |\n|---|---|---|\n");
+    for (int k = 0; k < s->n_bom; k++)
+        fprintf(f, "| %d | %s | %s |\n", s->bom[k].quantity, s->bom[k].what, s->bom[k].detail);
+    if (s->n_notes) {
+        fprintf(f, "\n## Notes\n\n");
+        for (int k = 0; k < s->n_notes; k++)
+            fprintf(f, "- %s\n", s->note[k]);
+    }
+}

@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# tippe build: every shipped design builds; the sheet's settings agree with
+# the verbs they come from (sweep's robust widths, classify's thresholds,
+# check's verdict at the same Z2 and spin); depths and turns are the design's
+# geometry computed here from the design file alone; tap drills are ISO 261's
+# pitch subtracted from the nominal diameter; refusals.
+# Usage: test_build_cli.sh TIPPE
+source "$(dirname "$0")/lib.sh"
+setup "$@"
+
+# --- every shipped design builds, the sheet's files are written --------------
+for f in designs/*.json; do
+    python3 -c 'import json,sys; sys.exit(0 if "parts" in json.load(open(sys.argv[1])) else 1)' "$f" || continue
+    stem=$(basename "$f" .json)
+    if "$tippe" build "$f" -o "$tmp/$stem" --json >"$tmp/$stem.json" 2>"$tmp/$stem.err"; then
+        ok
+    else
+        bad "$stem: build failed: $(cat "$tmp/$stem.err")"
+        continue
+    fi
+    check "$stem: sheet JSON, Markdown and the export's files written" \
+        test -s "$tmp/$stem/$stem-build.json" -a -s "$tmp/$stem/$stem-build.md" -a -s "$tmp/$stem/$stem.3mf"
+    # every reachable setting's launch was run and ended as its behaviour says
+    # (the central launch at 1.25 x the threshold spin)
+    check "$stem: every reachable setting's launch check ends as its behaviour" \
+        json_ok "$tmp/$stem.json" 'all(s["launch_as_expected"] for s in o["settings"] if s["reachable"])'
+done
+
+# --- the settings against sweep, classify and check ---------------------------
+d=designs/drilled-ball-catalogue-best.json
+s=$tmp/drilled-ball-catalogue-best.json
+"$tippe" sweep "$d" --json >"$tmp/sweep.json"
+python3 - "$s" "$tmp/sweep.json" <<'EOF' && ok || bad "robust widths differ from tippe sweep's"
+import json, sys
+b = json.load(open(sys.argv[1])); w = json.load(open(sys.argv[2]))["robust_zone_widths_mm"]
+for st in b["settings"]:
+    # the same runs and bands: equal to rounding
+    assert abs(st["robust_width_mm"] - w[st["group"]]) < 1e-9, (st["group"], st["robust_width_mm"], w)
+    assert st["robust_from_mm"] <= st["set_z2_mm"] <= st["robust_to_mm"]
+EOF
+for g in 0 1 2; do
+    read -r z spin verdict need < <(python3 -c "import json,sys; s=json.load(open(sys.argv[1]))['settings'][$g]; print(s['set_z2_mm'], s['launch_spin_rev_s'], s['launch_verdict'], s['spin_needed_rev_s'])" "$s")
+    "$tippe" check "$d" --z2 "$z" --spin "${spin}rev/s" --json >"$tmp/check$g.json"
+    check "group $g: tippe check at Z2 $z, $spin rev/s gives the sheet's verdict $verdict" \
+        json_ok "$tmp/check$g.json" "o['verdict'] == '$verdict'"
+    "$tippe" classify "$d" --z2 "$z" --json >"$tmp/cls$g.json"
+    # flips: n* (above n-); hangs: n-; stays up: any spin
+    check "group $g: spin needed $need rev/s is classify's threshold" \
+        json_ok "$tmp/cls$g.json" "abs((0 if $g == 0 else max(o['n_star_rad_s'], o['n_minus_rad_s'] or 0) if $g == 1 else o['n_minus_rad_s']) / (2 * math.pi) - $need) < 1e-9 * max(1, $need)"
+done
+
+# --- depths and turns from the design file and the catalogue alone ------------
+python3 - "$s" "$d" designs/catalogue.json <<'EOF' && ok || bad "depths or turns differ from the geometry"
+import json, math, sys
+b = json.load(open(sys.argv[1])); d = json.load(open(sys.argv[2])); cat = json.load(open(sys.argv[3]))
+parts = {p["name"]: p for p in d["parts"]}
+R, a, c = d["radius_mm"], parts["hole"]["radius_mm"], 0.2   # export's default clearance
+h = parts["screw"]["height_mm"]
+rim = math.sqrt(R * R - (a + c) ** 2)         # where the caliper rests
+item = [i for i in cat["iso4026"]["items"] if abs(i["radius_mm"] - parts["screw"]["radius_mm"]) < 1e-6 and i["height_mm"] == h]
+assert len(item) == 1 and b["thread"]["catalogue_item"] == item[0]["name"] == "M10x12"
+P = item[0]["pitch_mm"]
+for st in b["settings"]:
+    for k, z in (("set", st["set_z2_mm"]), ("from", st["robust_from_mm"]), ("to", st["robust_to_mm"])):
+        depth = rim - (z + h / 2)              # the screw's top end below the rim
+        assert abs(st["depth_%s_mm" % k] - depth) < 1e-9, (k, st["depth_%s_mm" % k], depth)
+        assert abs(st["turns_%s" % k] - depth / P) < 1e-9
+EOF
+
+# --- tap drills: ISO 261 coarse pitch, drill = d - P -------------------------
+iso261='{"M2": 0.4, "M3": 0.5, "M4": 0.7, "M5": 0.8, "M6": 1.0, "M8": 1.25, "M10": 1.5, "M12": 1.75}'
+for f in "$tmp"/*.json; do
+    case $f in */sweep.json | */check*.json | */cls*.json) continue ;; esac
+    json_ok "$f" '"name" not in o["thread"]' && continue
+    check "$(basename "$f"): tap drill is d - P of ISO 261" \
+        json_ok "$f" "(lambda t: abs(t['pitch_mm'] - $iso261[t['name']]) < 1e-12 and abs(t['tap_drill_mm'] - (t['d_mm'] - t['pitch_mm'])) < 1e-12 and abs(t['d_mm'] - float(t['name'][1:])) < 1e-12)(o['thread'])"
+done
+
+# --- a shell design: the bead on a threaded rod, measured from the rod's end ----
+python3 - "$tmp/shell-band.json" designs/shell-band.json <<'EOF' && ok || bad "shell-band: bead depth on the rod"
+import json, math, sys
+b = json.load(open(sys.argv[1])); d = json.load(open(sys.argv[2]))
+p = {x["name"]: x for x in d["parts"]}
+cav = d["radius_mm"] - p["shell"]["thickness_mm"]
+rod_top = math.sqrt(cav ** 2 - p["rod"]["radius_mm"] ** 2)   # the rod clipped to the cavity
+assert b["measure"]["kind"] == "rod" and b["thread"]["name"] == "M6"
+st = b["settings"][2]
+assert abs(st["depth_set_mm"] - (rod_top - (st["set_z2_mm"] + p["weight"]["height_mm"] / 2))) < 1e-9
+bom = " ".join(x["item"] + " " + x["detail"] for x in b["bill_of_materials"])
+assert "threaded rod 'rod'" in bom and "M6 x 1" in bom and "%.2f" % (2 * rod_top) in bom, bom
+EOF
+
+# --- refusals -------------------------------------------------------------------
+expect_fail "no output directory" 2 "--output DIR is required" -- build "$d"
+touch "$tmp/afile"
+expect_fail "output is a file" 2 "not a directory" -- build "$d" -o "$tmp/afile"
+expect_fail "unreadable catalogue" 2 "nothere.json" -- build "$d" -o "$tmp/x" --catalogue "$tmp/nothere.json"
+"$tippe" build --help >"$tmp/help" && grep -q "clearance-mm MM" "$tmp/help" && ok || bad "--help"
+finish
