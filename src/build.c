@@ -190,6 +190,7 @@ static int find_hole(const tippe_design *d, const tippe_profile_set *ps, double 
         out->measure = TIPPE_BUILD_MEASURE_HOLE;
         out->reference_up = up;
         out->reference_z_mm = up ? rim : -rim;
+        out->hole_diameter_mm = 2 * a;
         snprintf(out->reference, sizeof out->reference,
                  "the rim of hole '%s' at the %s pole (printed diameter %.2f mm), where a "
                  "caliper's depth rod rests",
@@ -458,11 +459,103 @@ static void bill(const tippe_design *d, const tippe_profile_set *ps, const tippe
     int split = 0;
     for (int k = 0; ps && k < ps->n_warnings; k++)
         split |= strstr(ps->warning[k], "--split") != NULL;
+    s->needs_split = split;
     if (split)
         bom(s, 1, "adhesive for the two printed halves",
-            "the body closes around its hardware: export with --split and join the halves "
-            "(solvent weld for ABS, cyanoacrylate for PLA or PETG)");
+            "the body closes around its hardware, so it is printed in halves (--split): join "
+            "them (solvent weld for ABS, cyanoacrylate for PLA or PETG)");
     (void)o;
+}
+
+int tippe_build_needs_split(const tippe_design *d, double clearance_mm)
+{
+    tippe_profile_options po = tippe_profile_defaults();
+    po.clearance_mm = clearance_mm;
+    tippe_profile_set ps;
+    tippe_error e = {0};
+    if (tippe_profile_build(d, &po, &ps, &e))
+        return 0;
+    int split = 0;
+    for (int k = 0; k < ps.n_warnings; k++)
+        split |= strstr(ps.warning[k], "--split") != NULL;
+    tippe_profile_set_free(&ps);
+    return split;
+}
+
+static void print_settings(const tippe_design *d, const tippe_profile_set *ps,
+                           tippe_build_sheet *s)
+{
+    for (int i = 0; ps && i < tippe_design_n_parts(d) && s->n_print < 4; i++) {
+        tippe_design_part_info p;
+        tippe_design_print_info pr;
+        tippe_design_solid sd;
+        if (tippe_design_part(d, i, &p) || tippe_design_part_print(d, i, &pr) ||
+            tippe_design_part_solid(d, i, &sd) || sd.is_void || sd.moving ||
+            !(p.printable || pr.printed))
+            continue;
+        int k = s->n_print++;
+        snprintf(s->print[k].part, sizeof s->print[k].part, "%s", p.name);
+        snprintf(s->print[k].material, sizeof s->print[k].material, "%s", p.material);
+        s->print[k].has_block = pr.printed;
+        s->print[k].settings = pr.printed ? pr.settings : tippe_print_defaults();
+        s->print[k].infill = pr.printed ? pr.infill : 1.0;
+        s->print[k].calibrated = pr.calibrated;
+    }
+}
+
+static void step(tippe_build_sheet *s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void step(tippe_build_sheet *s, const char *fmt, ...)
+{
+    if (s->n_steps >= 10)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(s->step[s->n_steps++], sizeof s->step[0], fmt, ap);
+    va_end(ap);
+}
+
+/* The order a maker works in, from what the sheet found. */
+static void steps(tippe_build_sheet *s)
+{
+    const tippe_build_setting *first = NULL;
+    for (int f = 0; f < 3 && !first; f++)
+        if (s->set[f].reachable)
+            first = &s->set[f];
+    if (s->needs_split)
+        step(s, "Print the body in two halves (the -lower and -upper STL files, each standing "
+                "on its flat cut face at the equator: no supports) with the print settings.");
+    else
+        step(s, "Print the body with the print settings, its axis vertical (the mass model "
+                "assumes it), no supports inside the hole.");
+    if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
+        double bite = 0.5 * (s->thread.d_mm - s->hole_diameter_mm);
+        if (s->hole_diameter_mm > s->tap_drill_mm)
+            step(s, "Check the hole: printed diameter %.2f mm for the %s x %g screw, wider than "
+                    "its tap drill %.2f mm (the design's hole is the screw's pitch diameter, "
+                    "plus the clearance): the thread bites %.2f mm deep into the wall. If the "
+                    "screw turns loose, fix it with a drop of glue or use a heat-set insert.",
+                 s->hole_diameter_mm, s->thread_name, s->thread.pitch_mm, s->tap_drill_mm,
+                 bite > 0 ? bite : 0);
+        else
+            step(s, "Tap the hole %s x %g (printed diameter %.2f mm, tap drill %.2f mm).",
+                 s->thread_name, s->thread.pitch_mm, s->hole_diameter_mm, s->tap_drill_mm);
+        step(s, "Turn the screw in with a hex key until its end is flush with the rim, then "
+                "the turns of the table for the behaviour wanted (or measure the depth with a "
+                "caliper's depth rod resting on the rim).");
+    } else if (s->measure == TIPPE_BUILD_MEASURE_ROD) {
+        step(s, "Cut the rod to the length in the bill of materials, square.");
+        step(s, "Screw the bead onto the rod until its top face lies at the table's depth "
+                "below the rod's top end%s; fix it with a drop of threadlocker.",
+             first ? " for the behaviour wanted" : "");
+        step(s, "Lay the rod on the axis in the lower half, close with the upper half and "
+                "join them (adhesive in the bill of materials); the bead can no longer be "
+                "moved: build one top per behaviour, or choose the one you want first.");
+    } else {
+        step(s, "Place the weight at the set Z2 of the table (its midpoint above the sphere's "
+                "centre).");
+    }
+    step(s, "Spin the top on a hard, flat table at the spin of the table (a flick of the "
+            "fingers gives 5 to 25 rev/s) and watch it stay up, flip or hang.");
 }
 
 /* ------------------------------------------------------------ compute */
@@ -549,6 +642,8 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
         spins_and_launch(d, o, f, s);
     }
     bill(d, have_ps ? &ps : NULL, o, out, rod_r);
+    print_settings(d, have_ps ? &ps : NULL, out);
+    steps(out);
     if (have_ps)
         tippe_profile_set_free(&ps);
     if (out->measure == TIPPE_BUILD_MEASURE_HOLE)
@@ -664,6 +759,31 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         cJSON_AddStringToObject(j, "item", s->bom[k].what);
         cJSON_AddStringToObject(j, "detail", s->bom[k].detail);
     }
+    cJSON *pa = cJSON_AddArrayToObject(o, "print");
+    for (int k = 0; pa && k < s->n_print; k++) {
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(pa, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        const tippe_print_settings *p = &s->print[k].settings;
+        cJSON_AddStringToObject(j, "part", s->print[k].part);
+        cJSON_AddStringToObject(j, "material", s->print[k].material);
+        cJSON_AddBoolToObject(j, "print_block", s->print[k].has_block);
+        cJSON_AddNumberToObject(j, "perimeters", p->perimeters);
+        cJSON_AddNumberToObject(j, "line_width_mm", p->line_width_mm);
+        cJSON_AddNumberToObject(j, "top_bottom_layers", p->top_bottom_layers);
+        cJSON_AddNumberToObject(j, "layer_height_mm", p->layer_height_mm);
+        cJSON_AddNumberToObject(j, "infill", s->print[k].infill);
+        cJSON_AddBoolToObject(j, "calibrated", s->print[k].calibrated);
+        cJSON_AddStringToObject(j, "orientation",
+                                s->needs_split ? "axis vertical, halves on their cut faces"
+                                               : "axis vertical");
+    }
+    cJSON_AddBoolToObject(o, "split", s->needs_split);
+    cJSON *stp = cJSON_AddArrayToObject(o, "steps");
+    for (int k = 0; stp && k < s->n_steps; k++)
+        cJSON_AddItemToArray(stp, cJSON_CreateString(s->step[k]));
     cJSON *n = cJSON_AddArrayToObject(o, "notes");
     for (int k = 0; n && k < s->n_notes; k++)
         cJSON_AddItemToArray(n, cJSON_CreateString(s->note[k]));
@@ -751,6 +871,25 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     fprintf(f, "\n## Bill of materials\n\n| qty | item | detail |\n|---|---|---|\n");
     for (int k = 0; k < s->n_bom; k++)
         fprintf(f, "| %d | %s | %s |\n", s->bom[k].quantity, s->bom[k].what, s->bom[k].detail);
+    fprintf(f, "\n## Print settings\n\n| part | material | perimeters | top/bottom layers | "
+               "infill | orientation |\n|---|---|---|---|---|---|\n");
+    for (int k = 0; k < s->n_print; k++) {
+        const tippe_print_settings *p = &s->print[k].settings;
+        if (s->print[k].has_block)
+            fprintf(f, "| %s | %s | %d x %.2f mm | %d x %.2f mm | %.0f %%%s | axis vertical%s |\n",
+                    s->print[k].part, s->print[k].material, p->perimeters, p->line_width_mm,
+                    p->top_bottom_layers, p->layer_height_mm, 100 * s->print[k].infill,
+                    s->print[k].calibrated ? " (calibrated by weighing)" : "",
+                    s->needs_split ? ", halves on their cut faces" : "");
+        else
+            fprintf(f, "| %s | %s | as many as fill it | - | 100 %% (solid: the design has no "
+                       "print block) | axis vertical%s |\n",
+                    s->print[k].part, s->print[k].material,
+                    s->needs_split ? ", halves on their cut faces" : "");
+    }
+    fprintf(f, "\n## Steps\n\n");
+    for (int k = 0; k < s->n_steps; k++)
+        fprintf(f, "%d. %s\n", k + 1, s->step[k]);
     if (s->n_notes) {
         fprintf(f, "\n## Notes\n\n");
         for (int k = 0; k < s->n_notes; k++)

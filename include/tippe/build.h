@@ -23,6 +23,7 @@
 #include "tippe/dynamics.h"
 #include "tippe/error.h"
 #include "tippe/launch.h"
+#include "tippe/print.h"
 
 /* ISO 261 coarse-pitch metric threads (ISO 724 basic profile). */
 typedef struct {
@@ -95,6 +96,7 @@ typedef struct {
     tippe_build_measure measure;
     char reference[200];                 /* "the rim of hole 'hole' (printed 9.43 mm)" */
     double reference_z_mm;               /* its height above the centre */
+    double hole_diameter_mm;             /* the hole as printed (with clearance), or 0 */
     int reference_up;                    /* 1: the reference faces +z (depth = ref - top end) */
     double weight_end_offset_mm;         /* the measured end of the weight above Z2 */
     char weight_name[128];
@@ -110,7 +112,23 @@ typedef struct {
     tippe_build_bom_line bom[TIPPE_BUILD_MAX_BOM];
     char note[4][320];                   /* facts a maker should know */
     int n_notes;
+    /* how each printed part is printed (its print block, or solid) */
+    int n_print;
+    struct {
+        char part[64], material[64];
+        int has_block;                   /* 0: no print block: modelled solid (100 %) */
+        tippe_print_settings settings;
+        double infill;                   /* used by the model (calibrated or the slicer's) */
+        int calibrated;
+    } print[4];
+    int needs_split;                     /* the printed body closes around hardware */
+    int n_steps;
+    char step[10][400];                  /* assembly steps, in order */
 } tippe_build_sheet;
+
+/* Whether the design's printed body closes around its hardware, so that it
+ * must be printed in halves (tippe export --split). */
+int tippe_build_needs_split(const tippe_design *d, double clearance_mm);
 
 void tippe_build_options_default(tippe_build_options *o);
 

@@ -59,7 +59,8 @@ static int build_parse(build_args *a, int argc, char **argv)
                  "check's); the bill of materials with the catalogue screw and tap drills;\n"
                  "and the files tippe export writes.",
         .after = "Writes DIR/STEM-build.json and DIR/STEM-build.md (the sheet) and, unless\n"
-                 "--no-export, tippe export's files (STL, 3MF, OpenSCAD, section drawing).\n"
+                 "--no-export, tippe export's files (STL, 3MF, OpenSCAD, section drawing;\n"
+                 "split into halves when the printed body closes around its hardware).\n"
                  "Exit status: 0 ok, 2 bad usage or design, 1 a computation or a file\n"
                  "failed. See docs/build.md.",
         .opts = opts,
@@ -156,6 +157,8 @@ static int run(build_args *a, const tippe_design *d)
         a->q.profile.clearance_mm = a->o.clearance_mm;
         a->q.dir = a->dir;
         a->q.formats = TIPPE_EXPORT_ALL;
+        /* a body that closes around its hardware is printed in halves */
+        a->q.profile.split = tippe_build_needs_split(d, a->o.clearance_mm);
         double t0, t1;
         tippe_design_travel_mm(d, &t0, &t1);
         a->q.z2_mm = 0.5 * (t0 + t1);
