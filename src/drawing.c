@@ -803,6 +803,33 @@ static void dlist_free(dlist *L)
     free(L->it);
 }
 
+int tippe_drawing_render(const tippe_design *d, const tippe_drawing_options *o, void *cairo,
+                         double x, double y, double w, double h, tippe_error *err)
+{
+    cairo_t *cr = cairo;
+    dlist L = {0};
+    material_list mats = {0};
+    draw_parts(&L, d, o, &mats);
+    draw_marks_and_travel(&L, d, o);
+    draw_dimensions(&L, d, o);
+    draw_title_legend(&L, d, o, &mats);
+    layout(&L);
+    if (L.fail) {
+        dlist_free(&L);
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory while drawing");
+    }
+    double k = fmin(w / PAGE_W, h / PAGE_H);
+    cairo_save(cr);
+    cairo_rectangle(cr, x, y, w, h);
+    cairo_clip(cr);
+    cairo_translate(cr, x + (w - k * PAGE_W) / 2, y + (h - k * PAGE_H) / 2);
+    cairo_scale(cr, k, k);
+    render_cairo(&L, cr);
+    cairo_restore(cr);
+    dlist_free(&L);
+    return TIPPE_OK;
+}
+
 int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, const char *path,
                         tippe_error *err)
 {

@@ -90,6 +90,21 @@ bom = " ".join(x["item"] + " " + x["detail"] for x in b["bill_of_materials"])
 assert "threaded rod 'rod'" in bom and "M6 x 1" in bom and "%.2f" % (2 * rod_top) in bom, bom
 EOF
 
+# --- the one-page sheet: PDF of one page, SVG and PNG of the page's size -------
+sh=$tmp/drilled-ball-catalogue-best/drilled-ball-catalogue-best-sheet
+python3 - "$sh" <<'EOF' && ok || bad "the sheet's PDF, SVG or PNG"
+import re, struct, sys, xml.etree.ElementTree as ET
+b = sys.argv[1]
+pdf = open(b + ".pdf", "rb").read()
+assert pdf.startswith(b"%PDF-") and re.search(rb"/Count 1\b", pdf), "one page"
+box = re.search(rb"/MediaBox \[ ?0 0 ([0-9.]+) ([0-9.]+) ?\]", pdf)
+assert box and abs(float(box.group(1)) - 1191) < 1 and abs(float(box.group(2)) - 842) < 1  # A3 landscape
+svg = ET.parse(b + ".svg").getroot()
+assert svg.get("width").startswith("1191") and svg.get("height").startswith("842")
+png = open(b + ".png", "rb").read(24)
+assert png[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", png[16:24]) == (1905, 1347)
+EOF
+
 # --- refusals -------------------------------------------------------------------
 expect_fail "no output directory" 2 "--output DIR is required" -- build "$d"
 touch "$tmp/afile"

@@ -149,4 +149,11 @@ struct cJSON;
 struct cJSON *tippe_build_json(const tippe_build_sheet *s);
 void tippe_build_markdown(FILE *f, const tippe_build_sheet *s);
 
+/* The sheet on one page (A3 landscape): the section drawing with the weight
+ * at the flip's setting, the settings table, bill of materials, thread, print
+ * settings, notes and steps. The format follows path's extension: .pdf, .svg
+ * (cairo; text as glyphs) or .png (1906 x 1347 px). Written atomically. */
+int tippe_build_sheet_write(const tippe_design *d, const tippe_build_sheet *s, const char *path,
+                            tippe_error *err);
+
 #endif

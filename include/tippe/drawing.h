@@ -28,4 +28,10 @@ typedef struct {
 int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, const char *path,
                         tippe_error *err);
 
+/* The same drawing rendered into the box (x, y, w, h) of a cairo context
+ * (a cairo_t *, in its units), scaled to fit with its aspect kept: for a page
+ * that holds it beside other things (the build sheet, tippe/build.h). */
+int tippe_drawing_render(const tippe_design *d, const tippe_drawing_options *o, void *cairo,
+                         double x, double y, double w, double h, tippe_error *err);
+
 #endif

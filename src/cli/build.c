@@ -106,18 +106,24 @@ static void stem_of(const tippe_design *d, char *out, size_t size)
         *dot = '\0';
 }
 
-static void sheet_paths(const tippe_design *d, const char *dir, char *json, char *md)
+/* The sheet's files: JSON, Markdown, then the page as PDF, SVG and PNG. */
+enum { N_SHEET = 5 };
+static const char *const sheet_tails[N_SHEET] = {"-build.json", "-build.md", "-sheet.pdf",
+                                                 "-sheet.svg", "-sheet.png"};
+
+static void sheet_paths(const tippe_design *d, const char *dir, char (*out)[4096])
 {
     char stem[1024];
     stem_of(d, stem, sizeof stem);
     const char *sep = dir[0] && dir[strlen(dir) - 1] != '/' ? "/" : "";
-    snprintf(json, 4096, "%s%s%s-build.json", dir, sep, stem);
-    snprintf(md, 4096, "%s%s%s-build.md", dir, sep, stem);
+    for (int k = 0; k < N_SHEET; k++)
+        snprintf(out[k], 4096, "%s%s%s%s", dir, sep, stem, sheet_tails[k]);
 }
 
-static int write_sheet(const tippe_build_sheet *s, const char *json, const char *md,
-                       tippe_error *err)
+static int write_sheet(const tippe_design *d, const tippe_build_sheet *s,
+                       char (*paths)[4096], tippe_error *err)
 {
+    const char *json = paths[0], *md = paths[1];
     tippe_report_file rf;
     cJSON *o = tippe_build_json(s);
     char *text = o ? cJSON_Print(o) : NULL;
@@ -135,23 +141,23 @@ static int write_sheet(const tippe_build_sheet *s, const char *json, const char 
         tippe_build_markdown(rf.f, s);
         rc = tippe_report_commit(&rf, err);
     }
+    for (int k = 2; !rc && k < N_SHEET; k++)
+        rc = tippe_build_sheet_write(d, s, paths[k], err);
     return rc;
 }
 
 static int run(build_args *a, const tippe_design *d)
 {
     tippe_error err = {0};
-    char json[4096], md[4096], cat[4096];
+    char sheet[N_SHEET][4096], cat[4096];
     if (!a->catalogue)
         a->catalogue = default_catalogue(a->path, cat, sizeof cat);
     a->o.catalogue = a->catalogue;
-    sheet_paths(d, a->dir, json, md);
+    sheet_paths(d, a->dir, sheet);
     /* every output checked before any work */
     int rc = make_dir(a->dir);
-    if (!rc)
-        rc = tippe_cli_check_output(VERB, "-o", json, 0);
-    if (!rc)
-        rc = tippe_cli_check_output(VERB, "-o", md, 0);
+    for (int k = 0; !rc && k < N_SHEET; k++)
+        rc = tippe_cli_check_output(VERB, "-o", sheet[k], 0);
     char(*paths)[4096] = NULL;
     if (!rc && !a->no_export) {
         a->q.profile.clearance_mm = a->o.clearance_mm;
@@ -189,7 +195,7 @@ static int run(build_args *a, const tippe_design *d)
                 a->q.z2_mm = s->set[f].set_z2_mm;
         if (s->set[1].reachable)
             a->q.z2_mm = s->set[1].set_z2_mm;
-        rc = write_sheet(s, json, md, &err);
+        rc = write_sheet(d, s, sheet, &err);
     }
     tippe_export_result r = {0};
     if (!rc && !a->no_export)
@@ -204,15 +210,17 @@ static int run(build_args *a, const tippe_design *d)
         cJSON *o = tippe_build_json(s);
         cJSON *files = o ? cJSON_AddArrayToObject(o, "files") : NULL;
         if (files) {
-            cJSON_AddItemToArray(files, cJSON_CreateString(json));
-            cJSON_AddItemToArray(files, cJSON_CreateString(md));
+            for (int k = 0; k < N_SHEET; k++)
+                cJSON_AddItemToArray(files, cJSON_CreateString(sheet[k]));
             for (int k = 0; k < r.n_files; k++)
                 cJSON_AddItemToArray(files, cJSON_CreateString(r.file[k]));
         }
         rc = tippe_cli_print_json(VERB, o);
     } else {
         tippe_build_markdown(stdout, s);
-        printf("\nwrote      %s\nwrote      %s\n", json, md);
+        printf("\n");
+        for (int k = 0; k < N_SHEET; k++)
+            printf("wrote      %s\n", sheet[k]);
         for (int k = 0; k < r.n_files; k++)
             printf("wrote      %s\n", r.file[k]);
     }
