@@ -220,6 +220,7 @@ static int find_rod(const tippe_design *d, double bore, double *rod_r, tippe_bui
         out->reference_up = 1;
         out->reference_z_mm = top;
         *rod_r = s.radius_mm;
+        out->rod_diameter_mm = 2 * s.radius_mm;
         snprintf(out->reference, sizeof out->reference, "the top (+z) end of rod '%s'", p.name);
         return 1;
     }
@@ -540,12 +541,14 @@ static void steps(tippe_build_sheet *s)
             step(s, "Tap the hole %s x %g (printed diameter %.2f mm, tap drill %.2f mm).",
                  s->thread_name, s->thread.pitch_mm, s->hole_diameter_mm, s->tap_drill_mm);
         step(s, "Turn the screw in with a hex key until its end is flush with the rim, then "
-                "the turns of the table for the behaviour wanted (or measure the depth with a "
-                "caliper's depth rod resting on the rim).");
+                "the turns of the table for the behaviour wanted. Check the depth with the "
+                "printed gauge of that setting (-gauge-*.stl: pin in the hole, disc on the rim, "
+                "the screw's end just touching the pin) or a caliper's depth rod on the rim.");
     } else if (s->measure == TIPPE_BUILD_MEASURE_ROD) {
         step(s, "Cut the rod to the length in the bill of materials, square.");
         step(s, "Screw the bead onto the rod until its top face lies at the table's depth "
-                "below the rod's top end%s; fix it with a drop of threadlocker.",
+                "below the rod's top end%s: the printed sleeve gauge (-gauge-*.stl) standing on "
+                "the bead is then flush with the rod's end. Fix it with a drop of threadlocker.",
              first ? " for the behaviour wanted" : "");
         step(s, "Lay the rod on the axis in the lower half, close with the upper half and "
                 "join them (adhesive in the bill of materials); the bead can no longer be "
@@ -556,6 +559,16 @@ static void steps(tippe_build_sheet *s)
     }
     step(s, "Spin the top on a hard, flat table at the spin of the table (a flick of the "
             "fingers gives 5 to 25 rev/s) and watch it stay up, flip or hang.");
+}
+
+int tippe_build_gauge_applies(const tippe_build_sheet *s, int f, double *pin_mm)
+{
+    *pin_mm = NAN;
+    if (f < 0 || f > 2 || !s->set[f].reachable || s->measure == TIPPE_BUILD_MEASURE_NONE ||
+        !(s->set[f].depth_set_mm >= TIPPE_BUILD_GAUGE_MIN_MM))
+        return 0;
+    *pin_mm = s->set[f].depth_set_mm;
+    return 1;
 }
 
 /* ------------------------------------------------------------ compute */
@@ -642,6 +655,19 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
         spins_and_launch(d, o, f, s);
     }
     bill(d, have_ps ? &ps : NULL, o, out, rod_r);
+    int n_gauges = 0;
+    char which[64] = "";
+    for (int f = 0; f < 3; f++) {
+        double pin;
+        if (tippe_build_gauge_applies(out, f, &pin)) {
+            n_gauges++;
+            snprintf(which + strlen(which), sizeof which - strlen(which), "%s%s",
+                     which[0] ? ", " : "", behaviours[f]);
+        }
+    }
+    if (n_gauges)
+        bom(out, n_gauges, "depth gauges, printed (any filament)",
+            "-gauge-*.stl, one per setting (%s), printed flat side down", which);
     print_settings(d, have_ps ? &ps : NULL, out);
     steps(out);
     if (have_ps)

@@ -3,6 +3,7 @@
 #include "tippe/build.h"
 
 #include "tippe/drawing.h"
+#include "tippe/mesh.h"
 #include "tippe/profile.h"
 #include "tippe/report.h"
 #include "tippe/top.h"
@@ -362,4 +363,47 @@ int tippe_build_sheet_write(const tippe_design *d, const tippe_build_sheet *s, c
         return rc ? rc : tippe_error_set(err, TIPPE_ECOMPUTE, "%s: cairo could not write the build sheet", path);
     }
     return tippe_report_commit(&rf, err);
+}
+
+/* ------------------------------------------------------------ gauges */
+
+int tippe_build_gauge_write(const tippe_build_sheet *s, int f, const char *path,
+                            tippe_error *err)
+{
+    double pin;
+    if (!tippe_build_gauge_applies(s, f, &pin))
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: no gauge for the '%s' setting", path,
+                               tippe_build_behaviour(f));
+    tippe_profile_point pt[6];
+    int n;
+    double r_max;
+    const double t = TIPPE_BUILD_GAUGE_FLANGE_MM;
+    if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
+        /* printed flange down: the pin's end is pin mm from the flange's face */
+        double rp = 0.5 * s->hole_diameter_mm - 0.5, rf = 0.5 * s->hole_diameter_mm + 4;
+        tippe_profile_point p[6] = {{0, 0}, {rf, 0}, {rf, t}, {rp, t}, {rp, t + pin}, {0, t + pin}};
+        memcpy(pt, p, sizeof p);
+        n = 6;
+        r_max = rf;
+    } else {
+        double ri = 0.5 * s->rod_diameter_mm + 0.25, ro = ri + 2.5;
+        tippe_profile_point p[4] = {{ri, 0}, {ro, 0}, {ro, pin}, {ri, pin}};
+        memcpy(pt, p, sizeof p);
+        n = 4;
+        r_max = ro;
+    }
+    tippe_profile_ring ring = {.n = n, .pt = pt};
+    tippe_profile_body b = {.n_rings = 1, .ring = &ring, .r_max_mm = r_max, .cut_z_mm = NAN};
+    snprintf(b.name, sizeof b.name, "gauge-%s", tippe_build_behaviour(f));
+    tippe_mesh m;
+    tippe_mesh_audit a;
+    int rc = tippe_mesh_revolve(&b, tippe_profile_angle_steps(r_max, 0.005), &m, err);
+    if (!rc)
+        rc = tippe_mesh_check(&m, &a, err);
+    if (!rc && (a.open_edges || a.nonmanifold_edges || a.flipped_edges || a.degenerate_triangles))
+        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: the gauge's mesh is not closed", path);
+    if (!rc)
+        rc = tippe_mesh_write_stl(&m, path, b.name, err);
+    tippe_mesh_free(&m);
+    return rc;
 }

@@ -105,6 +105,36 @@ png = open(b + ".png", "rb").read(24)
 assert png[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", png[16:24]) == (1905, 1347)
 EOF
 
+# --- the depth gauges: pin (sleeve) length = the sheet's depth ----------------
+# numpy-stl reads the binary STL; float32 coordinates near 30 mm round by
+# ~2e-6 mm, so 1e-4 mm is ample, and far below a printer's 0.1 mm.
+for stem in drilled-ball-catalogue-best shell-band; do
+    python3 - "$tmp/$stem" "$stem" tests/export_check.py <<'EOF' && ok || bad "$stem: gauge lengths differ from the sheet's depths"
+import json, subprocess, sys
+d, stem, checker = sys.argv[1:]
+b = json.load(open(f"{d}/{stem}-build.json"))
+made = 0
+for st, tail in zip(b["settings"], ["stays-up", "flips", "hangs"]):
+    path = f"{d}/{stem}-gauge-{tail}.stl"
+    want = st.get("depth_set_mm")
+    if not st["reachable"] or want is None or want < 1.0:
+        continue
+    g = json.loads(subprocess.run(["/usr/bin/python3", checker, "stl", path], capture_output=True, text=True).stdout)
+    assert g["open_edges"] == 0 and g["inconsistent_edges"] == 0 and g["degenerate_facets"] == 0
+    assert abs(g["min"][2]) < 1e-9, "printed flat side down"
+    if b["measure"]["kind"] == "hole":
+        # the pin above the 2 mm disc; the disc 8 mm wider than the printed hole
+        pin = g["max"][2] - 2.0
+        hole = float(b["measure"]["reference"].split("printed diameter ")[1].split(" mm")[0])
+        assert abs((g["max"][0] - g["min"][0]) - (hole + 8)) < 0.02, (g["max"][0] - g["min"][0], hole)
+    else:
+        pin = g["max"][2]
+    assert abs(pin - want) < 1e-4, (tail, pin, want)
+    made += 1
+assert made >= 1
+EOF
+done
+
 # --- refusals -------------------------------------------------------------------
 expect_fail "no output directory" 2 "--output DIR is required" -- build "$d"
 touch "$tmp/afile"

@@ -97,6 +97,7 @@ typedef struct {
     char reference[200];                 /* "the rim of hole 'hole' (printed 9.43 mm)" */
     double reference_z_mm;               /* its height above the centre */
     double hole_diameter_mm;             /* the hole as printed (with clearance), or 0 */
+    double rod_diameter_mm;              /* the rod the weight is threaded on, or 0 */
     int reference_up;                    /* 1: the reference faces +z (depth = ref - top end) */
     double weight_end_offset_mm;         /* the measured end of the weight above Z2 */
     char weight_name[128];
@@ -148,6 +149,24 @@ tippe_verdict tippe_build_expected_verdict(int family);
 struct cJSON;
 struct cJSON *tippe_build_json(const tippe_build_sheet *s);
 void tippe_build_markdown(FILE *f, const tippe_build_sheet *s);
+
+/* Depth gauges, one per setting, printed flat side down:
+ * - a screw in a hole: a flat disc (GAUGE_FLANGE_MM thick, 8 mm wider than the
+ *   hole) with a pin on its face, pin_mm long (the setting's depth below the
+ *   rim) and 1 mm narrower than the printed hole: put the pin in the hole, the
+ *   disc on the rim, and turn the screw until it touches the pin's end;
+ * - a bead on a rod: a sleeve pin_mm long (the depth below the rod's end) that
+ *   slides over the rod (0.25 mm radial play): the bead is set when the sleeve,
+ *   standing on it, is flush with the rod's end.
+ * A gauge exists for a reachable setting whose depth is at least
+ * TIPPE_BUILD_GAUGE_MIN_MM (a screw standing out of the ball, or nearly flush,
+ * is measured with the caliper). */
+#define TIPPE_BUILD_GAUGE_MIN_MM 1.0
+#define TIPPE_BUILD_GAUGE_FLANGE_MM 2.0
+int tippe_build_gauge_applies(const tippe_build_sheet *s, int family, double *pin_mm);
+/* Writes setting family's gauge as binary STL (TIPPE_EINPUT if none applies). */
+int tippe_build_gauge_write(const tippe_build_sheet *s, int family, const char *path,
+                            tippe_error *err);
 
 /* The sheet on one page (A3 landscape): the section drawing with the weight
  * at the flip's setting, the settings table, bill of materials, thread, print

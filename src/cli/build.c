@@ -106,17 +106,19 @@ static void stem_of(const tippe_design *d, char *out, size_t size)
         *dot = '\0';
 }
 
-/* The sheet's files: JSON, Markdown, then the page as PDF, SVG and PNG. */
-enum { N_SHEET = 5 };
-static const char *const sheet_tails[N_SHEET] = {"-build.json", "-build.md", "-sheet.pdf",
-                                                 "-sheet.svg", "-sheet.png"};
+/* The sheet's files: JSON, Markdown, the page as PDF, SVG and PNG, then the
+ * depth gauges of the three settings (those that apply are written). */
+enum { N_SHEET = 5, N_OUT = 8 };
+static const char *const sheet_tails[N_OUT] = {
+    "-build.json", "-build.md", "-sheet.pdf", "-sheet.svg", "-sheet.png",
+    "-gauge-stays-up.stl", "-gauge-flips.stl", "-gauge-hangs.stl"};
 
 static void sheet_paths(const tippe_design *d, const char *dir, char (*out)[4096])
 {
     char stem[1024];
     stem_of(d, stem, sizeof stem);
     const char *sep = dir[0] && dir[strlen(dir) - 1] != '/' ? "/" : "";
-    for (int k = 0; k < N_SHEET; k++)
+    for (int k = 0; k < N_OUT; k++)
         snprintf(out[k], 4096, "%s%s%s%s", dir, sep, stem, sheet_tails[k]);
 }
 
@@ -143,20 +145,24 @@ static int write_sheet(const tippe_design *d, const tippe_build_sheet *s,
     }
     for (int k = 2; !rc && k < N_SHEET; k++)
         rc = tippe_build_sheet_write(d, s, paths[k], err);
+    double pin;
+    for (int f = 0; !rc && f < 3; f++)
+        if (tippe_build_gauge_applies(s, f, &pin))
+            rc = tippe_build_gauge_write(s, f, paths[N_SHEET + f], err);
     return rc;
 }
 
 static int run(build_args *a, const tippe_design *d)
 {
     tippe_error err = {0};
-    char sheet[N_SHEET][4096], cat[4096];
+    char sheet[N_OUT][4096], cat[4096];
     if (!a->catalogue)
         a->catalogue = default_catalogue(a->path, cat, sizeof cat);
     a->o.catalogue = a->catalogue;
     sheet_paths(d, a->dir, sheet);
     /* every output checked before any work */
     int rc = make_dir(a->dir);
-    for (int k = 0; !rc && k < N_SHEET; k++)
+    for (int k = 0; !rc && k < N_OUT; k++)
         rc = tippe_cli_check_output(VERB, "-o", sheet[k], 0);
     char(*paths)[4096] = NULL;
     if (!rc && !a->no_export) {
@@ -210,8 +216,10 @@ static int run(build_args *a, const tippe_design *d)
         cJSON *o = tippe_build_json(s);
         cJSON *files = o ? cJSON_AddArrayToObject(o, "files") : NULL;
         if (files) {
-            for (int k = 0; k < N_SHEET; k++)
-                cJSON_AddItemToArray(files, cJSON_CreateString(sheet[k]));
+            double pin;
+            for (int k = 0; k < N_OUT; k++)
+                if (k < N_SHEET || tippe_build_gauge_applies(s, k - N_SHEET, &pin))
+                    cJSON_AddItemToArray(files, cJSON_CreateString(sheet[k]));
             for (int k = 0; k < r.n_files; k++)
                 cJSON_AddItemToArray(files, cJSON_CreateString(r.file[k]));
         }
@@ -219,8 +227,10 @@ static int run(build_args *a, const tippe_design *d)
     } else {
         tippe_build_markdown(stdout, s);
         printf("\n");
-        for (int k = 0; k < N_SHEET; k++)
-            printf("wrote      %s\n", sheet[k]);
+        double pin;
+        for (int k = 0; k < N_OUT; k++)
+            if (k < N_SHEET || tippe_build_gauge_applies(s, k - N_SHEET, &pin))
+                printf("wrote      %s\n", sheet[k]);
         for (int k = 0; k < r.n_files; k++)
             printf("wrote      %s\n", r.file[k]);
     }

@@ -32,3 +32,9 @@ int tippe_build_sheet_write(const tippe_design *d, const tippe_build_sheet *s, c
 {
     TIPPE_MODULE_CALL(&export_module, tippe_build_sheet_write, err, d, s, path, err);
 }
+
+int tippe_build_gauge_write(const tippe_build_sheet *s, int family, const char *path,
+                            tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&export_module, tippe_build_gauge_write, err, s, family, path, err);
+}
