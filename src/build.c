@@ -571,6 +571,130 @@ int tippe_build_gauge_applies(const tippe_build_sheet *s, int f, double *pin_mm)
     return 1;
 }
 
+/* ------------------------------------------------------ 3-in-1 search */
+
+/* 1 if the design with field=value is 3-in-1 within its physical travel, 0 if
+ * not, -1 if it does not load (a layout the value breaks). */
+static int three_in_one_at(const tippe_design *d, const tippe_build_options *o,
+                           const char *field, double value)
+{
+    const char *ov[TIPPE_JSON_MAX_SETS];
+    int n = 0;
+    for (int k = 0; k < o->n_sets && n < TIPPE_JSON_MAX_SETS - 1; k++)
+        ov[n++] = o->sets[k];
+    char set[512];
+    snprintf(set, sizeof set, "%s=%.10g", field, value);
+    ov[n++] = set;
+    tippe_design *v = NULL;
+    tippe_error e = {0};
+    if (tippe_design_load(tippe_design_path(d), ov, n, &v, &e))
+        return -1;
+    tippe_sweep_result r;
+    int yes = -1;
+    if (tippe_sweep_design(v, 0, 0, NULL, &r, &e) == TIPPE_OK) {
+        tippe_sweep_summary sm;
+        tippe_sweep_summarise(&r, &sm);
+        yes = sm.three_in_one;
+    }
+    tippe_sweep_result_free(&r);
+    tippe_design_free(v);
+    return yes;
+}
+
+/* Scans field over [lo, hi]; the 3-in-1 value nearest now, its edge bisected.
+ * 1 found (advice filled), 0 none. */
+static int search(const tippe_design *d, const tippe_build_options *o, const char *field,
+                  double now, double lo, double hi, tippe_build_sheet *s)
+{
+    enum { N = 24 };
+    int yes[N + 1];
+    double x[N + 1];
+    for (int i = 0; i <= N; i++) {
+        x[i] = lo + (hi - lo) * i / N;
+        yes[i] = three_in_one_at(d, o, field, x[i]);
+    }
+    int best = -1;
+    for (int i = 0; i <= N; i++)
+        if (yes[i] == 1 && (best < 0 || fabs(x[i] - now) < fabs(x[best] - now)))
+            best = i;
+    if (best < 0 || s->n_advice >= 6)
+        return 0;
+    /* the neighbour towards now that is not 3-in-1: bisect between them */
+    int towards = x[best] > now ? best - 1 : best + 1;
+    double edge = x[best];
+    int at_least = x[best] > now;
+    if (towards >= 0 && towards <= N && yes[towards] != 1) {
+        double a = x[towards], b = x[best]; /* a: not, b: yes */
+        while (fabs(b - a) > 1e-3 * (hi - lo)) {
+            double m = 0.5 * (a + b);
+            if (three_in_one_at(d, o, field, m) == 1)
+                b = m;
+            else
+                a = m;
+        }
+        edge = b;
+    }
+    int k = s->n_advice++;
+    snprintf(s->advice[k].field, sizeof s->advice[k].field, "%s", field);
+    s->advice[k].now = now;
+    s->advice[k].value = edge;
+    s->advice[k].at_least = at_least;
+    return 1;
+}
+
+static void advise(const tippe_design *d, const tippe_build_options *o, tippe_build_sheet *s)
+{
+    char field[200];
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_part_info p;
+        tippe_design_print_info pr;
+        tippe_design_solid sd;
+        if (tippe_design_part(d, i, &p) || tippe_design_part_print(d, i, &pr) ||
+            tippe_design_part_solid(d, i, &sd))
+            continue;
+        int k = s->n_advice;
+        if (pr.printed && !pr.calibrated) {
+            snprintf(field, sizeof field, "parts.%s.print.infill", p.name);
+            if (search(d, o, field, pr.infill, 0, 1, s))
+                snprintf(s->advice[k].text, sizeof s->advice[k].text,
+                         "3-in-1 at %s %.1f %% infill of '%s' (the slicer's %.0f %%): weigh the "
+                         "print (a print's real infill often differs from the slicer's) and give "
+                         "measured_mass_g, or print at that infill",
+                         s->advice[k].at_least ? "or above" : "or below",
+                         100 * s->advice[k].value, p.name, 100 * pr.infill);
+        } else if (pr.printed) {
+            snprintf(field, sizeof field, "parts.%s.print.measured_mass_g", p.name);
+            if (search(d, o, field, pr.measured_mass_kg * 1e3, pr.skin_mass_kg * 1e3,
+                       pr.solid_mass_kg * 1e3, s))
+                snprintf(s->advice[k].text, sizeof s->advice[k].text,
+                         "3-in-1 if '%s' weighs %s %.2f g (weighed %.2f g): print it at a %s "
+                         "infill",
+                         p.name, s->advice[k].at_least ? "at least" : "at most",
+                         s->advice[k].value, pr.measured_mass_kg * 1e3,
+                         s->advice[k].at_least ? "denser" : "sparser");
+        } else if (sd.moving && !sd.is_void) {
+            snprintf(field, sizeof field, "parts.%s.density_g_cm3", p.name);
+            if (search(d, o, field, p.density_g_cm3, 1, 22, s))
+                snprintf(s->advice[k].text, sizeof s->advice[k].text,
+                         "3-in-1 with a %s weight: density %s %.2f g/cm^3 for '%s' (now %.2f, "
+                         "%s)",
+                         s->advice[k].at_least ? "heavier" : "lighter",
+                         s->advice[k].at_least ? "at least" : "at most", s->advice[k].value,
+                         p.name, p.density_g_cm3, p.material);
+            k = s->n_advice;
+            if ((!strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube"))) {
+                snprintf(field, sizeof field, "parts.%s.height_mm", p.name);
+                if (search(d, o, field, sd.height_mm, 0.5 * sd.height_mm, 2 * sd.height_mm, s))
+                    snprintf(s->advice[k].text, sizeof s->advice[k].text,
+                             "3-in-1 with a %s weight: '%s' %s %.2f mm long (now %.4g mm)",
+                             s->advice[k].at_least ? "longer" : "shorter", p.name,
+                             s->advice[k].at_least ? "at least" : "at most",
+                             s->advice[k].value, sd.height_mm);
+            }
+        }
+    }
+}
+
 /* ------------------------------------------------------------ compute */
 
 int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
@@ -670,6 +794,8 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
             "-gauge-*.stl, one per setting (%s), printed flat side down", which);
     print_settings(d, have_ps ? &ps : NULL, out);
     steps(out);
+    if (!out->three_in_one)
+        advise(d, o, out);
     if (have_ps)
         tippe_profile_set_free(&ps);
     if (out->measure == TIPPE_BUILD_MEASURE_HOLE)
@@ -807,6 +933,19 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
                                                : "axis vertical");
     }
     cJSON_AddBoolToObject(o, "split", s->needs_split);
+    cJSON *adv = cJSON_AddArrayToObject(o, "to_make_it_three_in_one");
+    for (int k = 0; adv && k < s->n_advice; k++) {
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(adv, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        cJSON_AddStringToObject(j, "field", s->advice[k].field);
+        cJSON_AddNumberToObject(j, "now", s->advice[k].now);
+        cJSON_AddNumberToObject(j, "edge", s->advice[k].value);
+        cJSON_AddStringToObject(j, "side", s->advice[k].at_least ? "at_least" : "at_most");
+        cJSON_AddStringToObject(j, "advice", s->advice[k].text);
+    }
     cJSON *stp = cJSON_AddArrayToObject(o, "steps");
     for (int k = 0; stp && k < s->n_steps; k++)
         cJSON_AddItemToArray(stp, cJSON_CreateString(s->step[k]));
@@ -885,6 +1024,17 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     fprintf(f, "\n%s 3-in-1: %s.\n", s->three_in_one ? "It is" : "It is not",
             s->three_in_one ? "all three behaviours are reachable within the travel"
                             : "not every behaviour is reachable within the travel");
+    if (!s->three_in_one) {
+        fprintf(f, "\nWhat would make it 3-in-1 (one change at a time, found by sweeping the "
+                   "zones at each value; at the edge given the missing zone is just born, so go "
+                   "beyond it for a zone wide enough to set):\n\n");
+        for (int k = 0; k < s->n_advice; k++)
+            fprintf(f, "- %s (`--set %s=%.4g`).\n", s->advice[k].text, s->advice[k].field,
+                    s->advice[k].value);
+        if (!s->n_advice)
+            fprintf(f, "- no single change of the infill, the weight's density (1 .. 22 g/cm^3) "
+                       "or its length (half to double) makes it 3-in-1.\n");
+    }
     if (s->has_thread) {
         fprintf(f, "\nThread: %s x %g mm", s->thread_name, s->thread.pitch_mm);
         if (s->catalogue_item[0])

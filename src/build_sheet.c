@@ -304,6 +304,20 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
     y = print_table(cr, s, rx, y + 6, rw) + 14;
     for (int k = 0; k < s->n_notes; k++)
         y = wrapped(cr, s->note[k], rx, y, rw, 9, 0) + 2;
+    if (!s->three_in_one) {
+        y += 10;
+        heading(cr, "What would make it 3-in-1 (found by the model)", rx, y);
+        y += 16;
+        for (int k = 0; k < s->n_advice; k++) {
+            snprintf(t, sizeof t, "- %s (--set %s=%.4g).", s->advice[k].text, s->advice[k].field,
+                     s->advice[k].value);
+            y = wrapped(cr, t, rx, y, rw, 9.5, 0) + 2;
+        }
+        if (!s->n_advice)
+            y = wrapped(cr, "No single change of the infill, the weight's density (1 .. 22 "
+                            "g/cm^3) or its length (half to double) makes it 3-in-1.",
+                        rx, y, rw, 9.5, 0);
+    }
 
     /* below: the settings, then the steps */
     y = fmax(y, top_y + 433) + 20;

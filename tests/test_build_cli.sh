@@ -90,6 +90,20 @@ bom = " ".join(x["item"] + " " + x["detail"] for x in b["bill_of_materials"])
 assert "threaded rod 'rod'" in bom and "M6 x 1" in bom and "%.2f" % (2 * rod_top) in bom, bom
 EOF
 
+# --- not 3-in-1: the edge the sheet gives is where tippe sweep says 3-in-1 starts
+m=$tmp/m12-setscrew-printed.json
+check "m12-setscrew-printed is not 3-in-1 and the sheet says what would make it so" \
+    json_ok "$m" 'not o["three_in_one"] and any(a["field"] == "parts.body.print.infill" for a in o["to_make_it_three_in_one"])'
+read -r edge side < <(python3 -c "import json,sys; a=[a for a in json.load(open(sys.argv[1]))['to_make_it_three_in_one'] if a['field'] == 'parts.body.print.infill'][0]; print(a['edge'], a['side'])" "$m")
+# bisected to 1e-3 of the range 0 .. 1: 0.002 on either side decides
+for dv in -0.002 0.002; do
+    v=$(python3 -c "print($edge + $dv)")
+    "$tippe" sweep designs/m12-setscrew-printed.json --set parts.body.print.infill=$v --json >"$tmp/sw.json"
+    want=$(python3 -c "print(($dv > 0) == ('$side' == 'at_least'))")
+    check "infill $v: tippe sweep's three_in_one is $want (edge $edge, $side)" \
+        json_ok "$tmp/sw.json" "o['three_in_one'] == $want"
+done
+
 # --- the one-page sheet: PDF of one page, SVG and PNG of the page's size -------
 sh=$tmp/drilled-ball-catalogue-best/drilled-ball-catalogue-best-sheet
 python3 - "$sh" <<'EOF' && ok || bad "the sheet's PDF, SVG or PNG"

@@ -81,6 +81,8 @@ typedef struct {
 enum { TIPPE_BUILD_MAX_BOM = 16 };
 
 typedef struct {
+    const char *const *sets; /* the design's overrides (as loaded), for the 3-in-1 search */
+    int n_sets;
     double clearance_mm;     /* export's radial clearance of holes for hardware */
     const char *catalogue;   /* hardware catalogue file; NULL: none */
     tippe_launch_options launch;
@@ -123,6 +125,16 @@ typedef struct {
         int calibrated;
     } print[4];
     int needs_split;                     /* the printed body closes around hardware */
+    /* Not 3-in-1: single changes that make it so, found by the model (each
+     * field scanned over its range with the zones swept at every value, the
+     * nearest edge of the 3-in-1 values bisected to 1e-3 of the range). */
+    int n_advice;
+    struct {
+        char field[160];
+        double now, value;   /* the design's value and the edge found */
+        int at_least;        /* 1: 3-in-1 at value and above (towards it), 0: at and below */
+        char text[400];
+    } advice[6];
     int n_steps;
     char step[10][400];                  /* assembly steps, in order */
 } tippe_build_sheet;

@@ -159,6 +159,8 @@ static int run(build_args *a, const tippe_design *d)
     if (!a->catalogue)
         a->catalogue = default_catalogue(a->path, cat, sizeof cat);
     a->o.catalogue = a->catalogue;
+    a->o.sets = a->sets.item;
+    a->o.n_sets = a->sets.n;
     sheet_paths(d, a->dir, sheet);
     /* every output checked before any work */
     int rc = make_dir(a->dir);
