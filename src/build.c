@@ -462,6 +462,10 @@ static void bill(const tippe_design *d, const tippe_profile_set *ps, const tippe
         split |= strstr(ps->warning[k], "--split") != NULL;
     s->needs_split = split;
     if (split)
+        bom(s, 1, "joint ring, printed (the body's filament)",
+            "-joint-ring.stl: fills the 2 mm grooves of both halves' cut faces to align them "
+            "(tippe export --split --joint)");
+    if (split)
         bom(s, 1, "adhesive for the two printed halves",
             "the body closes around its hardware, so it is printed in halves (--split): join "
             "them (solvent weld for ABS, cyanoacrylate for PLA or PETG)");
@@ -550,9 +554,10 @@ static void steps(tippe_build_sheet *s)
                 "below the rod's top end%s: the printed sleeve gauge (-gauge-*.stl) standing on "
                 "the bead is then flush with the rod's end. Fix it with a drop of threadlocker.",
              first ? " for the behaviour wanted" : "");
-        step(s, "Lay the rod on the axis in the lower half, close with the upper half and "
-                "join them (adhesive in the bill of materials); the bead can no longer be "
-                "moved: build one top per behaviour, or choose the one you want first.");
+        step(s, "Put the joint ring in the groove of the lower half's cut face, lay the rod on "
+                "the axis, close with the upper half (its groove over the ring) and join them "
+                "(adhesive in the bill of materials); the bead can no longer be moved: build "
+                "one top per behaviour, or choose the one you want first.");
     } else {
         step(s, "Place the weight at the set Z2 of the table (its midpoint above the sphere's "
                 "centre).");

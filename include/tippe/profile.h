@@ -57,7 +57,15 @@ typedef struct {
     double min_wall_mm;  /* thinner walls get a warning (two perimeters) */
     int split;           /* cut each body at split_z_mm into two */
     double split_z_mm;
+    int joint;           /* with split: a groove in both halves' cut faces and a
+                            ring that fills them (body "joint-ring"), see below */
 } tippe_profile_options;
+
+/* The joint ring of split halves: its grooves are this deep in each half, mm;
+ * a wall narrower than twice TIPPE_PROFILE_JOINT_MIN_MM (plus the clearance)
+ * at the cut gets none. */
+#define TIPPE_PROFILE_JOINT_DEPTH_MM 2.0
+#define TIPPE_PROFILE_JOINT_MIN_MM 1.0
 
 enum { TIPPE_PROFILE_MAX_WARNINGS = 16 };
 
