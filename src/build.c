@@ -191,6 +191,7 @@ static int find_hole(const tippe_design *d, const tippe_profile_set *ps, double 
         out->reference_up = up;
         out->reference_z_mm = up ? rim : -rim;
         out->hole_diameter_mm = 2 * a;
+        out->hole_part = i;
         snprintf(out->reference, sizeof out->reference,
                  "the rim of hole '%s' at the %s pole (printed diameter %.2f mm), where a "
                  "caliper's depth rod rests",
@@ -534,15 +535,16 @@ static void steps(tippe_build_sheet *s)
                 "assumes it), no supports inside the hole.");
     if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
         double bite = 0.5 * (s->thread.d_mm - s->hole_diameter_mm);
-        if (s->hole_diameter_mm > s->tap_drill_mm)
+        if (s->hole_diameter_mm > s->tap_drill_mm + 1e-9)
             step(s, "Check the hole: printed diameter %.2f mm for the %s x %g screw, wider than "
-                    "its tap drill %.2f mm (the design's hole is the screw's pitch diameter, "
-                    "plus the clearance): the thread bites %.2f mm deep into the wall. If the "
-                    "screw turns loose, fix it with a drop of glue or use a heat-set insert.",
+                    "its tap drill %.2f mm (a sliding fit: the design's hole, the screw's pitch "
+                    "diameter, plus the clearance): the thread bites %.2f mm deep into the wall. "
+                    "If the screw turns loose, fix it with a drop of glue.",
                  s->hole_diameter_mm, s->thread_name, s->thread.pitch_mm, s->tap_drill_mm,
                  bite > 0 ? bite : 0);
         else
-            step(s, "Tap the hole %s x %g (printed diameter %.2f mm, tap drill %.2f mm).",
+            step(s, "Tap the hole %s x %g: it is printed at the tap drill, %.2f mm across (d - "
+                    "P; drill it to %.2f mm first if the print came out narrower).",
                  s->thread_name, s->thread.pitch_mm, s->hole_diameter_mm, s->tap_drill_mm);
         step(s, "Turn the screw in with a hex key until its end is flush with the rim, then "
                 "the turns of the table for the behaviour wanted. Check the depth with the "
@@ -706,6 +708,7 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                         tippe_build_sheet *out, tippe_error *err)
 {
     memset(out, 0, sizeof *out);
+    out->hole_part = -1;
     snprintf(out->design_name, sizeof out->design_name, "%s", tippe_design_name(d));
     snprintf(out->design_file, sizeof out->design_file, "%s", tippe_design_path(d));
     out->radius_mm = tippe_design_radius_mm(d);
@@ -763,6 +766,19 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     }
     if (out->has_thread) {
         out->tap_drill_mm = tippe_build_tap_drill_mm(&out->thread);
+        if (out->measure == TIPPE_BUILD_MEASURE_HOLE && o->hole_fit == TIPPE_BUILD_HOLE_TAP) {
+            /* printed at the tap drill: its rim, where depths start, moves out */
+            double R = out->radius_mm, a = out->tap_drill_mm / 2, rim = sqrt(R * R - a * a);
+            out->hole_tapped = 1;
+            out->hole_diameter_mm = out->tap_drill_mm;
+            out->reference_z_mm = out->reference_up ? rim : -rim;
+            tippe_design_part_info hp;
+            tippe_design_part(d, out->hole_part, &hp);
+            snprintf(out->reference, sizeof out->reference,
+                     "the rim of hole '%s' at the %s pole (printed %.2f mm across, the tap drill), "
+                     "where a caliper's depth rod rests",
+                     hp.name, out->reference_up ? "top (+z)" : "bottom (-z)", 2 * a);
+        }
         if (out->thread.name)
             snprintf(out->thread_name, sizeof out->thread_name, "%s", out->thread.name);
         out->thread.name = NULL; /* the sheet's copy is thread_name */
@@ -845,6 +861,10 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         cJSON_AddItemToObject(m, "reference_z_mm",
                               num(s->measure ? s->reference_z_mm : NAN));
         cJSON_AddStringToObject(m, "weight", s->weight_name);
+        if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
+            cJSON_AddNumberToObject(m, "hole_printed_diameter_mm", s->hole_diameter_mm);
+            cJSON_AddStringToObject(m, "hole_fit", s->hole_tapped ? "tap" : "slide");
+        }
         cJSON_AddNumberToObject(m, "weight_end_above_z2_mm", s->weight_end_offset_mm);
     }
     cJSON *th = cJSON_AddObjectToObject(o, "thread");

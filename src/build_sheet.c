@@ -255,6 +255,8 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
     tippe_top top;
     tippe_design_top_any(d, z2, &top);
     tippe_profile_options po = tippe_profile_defaults();
+    char fit_note[64];
+    snprintf(fit_note, sizeof fit_note, "%s x %g tap drill", s->thread_name, s->thread.pitch_mm);
     tippe_profile_set ps;
     tippe_error pe = {0};
     int have_ps = tippe_profile_build(d, &po, &ps, &pe) == TIPPE_OK;
@@ -267,7 +269,10 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
                                .note = note,
                                .clearance_mm = po.clearance_mm,
                                .clearance_applied = have_ps ? ps.clearance_applied : NULL,
-                               .chord_mm = 0.05};
+                               .chord_mm = 0.05,
+                               .fit_part = s->hole_part,
+                               .fit_diameter_mm = s->hole_tapped ? s->hole_diameter_mm : 0,
+                               .fit_note = fit_note};
     double top_y = M + 52;
     int rc = tippe_drawing_render(d, &o, cr, M, top_y, 520, 433, err);
     if (have_ps)

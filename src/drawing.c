@@ -328,7 +328,11 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
         const char *name = part_name(d, i);
         double dz = s.moving ? o->z2_mm : 0;
         char extra[80] = "";
-        if (s.is_void && o->clearance_applied && o->clearance_applied[i])
+        if (s.is_void && o->clearance_applied && o->clearance_applied[i] &&
+            o->fit_diameter_mm > 0 && i == o->fit_part)
+            snprintf(extra, sizeof extra, " (printed %.4g: %s)", o->fit_diameter_mm,
+                     o->fit_note ? o->fit_note : "for its thread");
+        else if (s.is_void && o->clearance_applied && o->clearance_applied[i])
             snprintf(extra, sizeof extra, " (printed %.4g: +%.4g clearance)",
                      2 * (s.radius_mm + o->clearance_mm), o->clearance_mm);
         if (!strcmp(s.shape, "cylinder") || !strcmp(s.shape, "tube")) {

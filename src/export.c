@@ -120,7 +120,10 @@ static int write_drawings(const tippe_design *d, const tippe_export_request *q,
                                .note = q->title_note,
                                .clearance_mm = q->profile.clearance_mm,
                                .clearance_applied = s->clearance_applied,
-                               .chord_mm = q->profile.chord_mm};
+                               .chord_mm = q->profile.chord_mm,
+                               .fit_part = q->profile.fit_part,
+                               .fit_diameter_mm = q->profile.fit_diameter_mm,
+                               .fit_note = q->fit_note};
     for (int k = first; k < n; k++) {
         int rc = tippe_drawing_write(d, &o, paths[k], err);
         if (rc)
@@ -154,15 +157,19 @@ static void slicer_settings(const tippe_design *d, const tippe_profile_options *
     x->line_width_mm = ps.line_width_mm;
     x->layer_height_mm = ps.layer_height_mm;
     x->infill = infill;
+    char fit[120] = "";
+    if (po->fit_diameter_mm > 0)
+        snprintf(fit, sizeof fit, ", except the screw's, printed %.2f mm across for its thread",
+                 po->fit_diameter_mm);
     snprintf(desc, size,
              "Print with the axis vertical%s: %d perimeters of %.2f mm, %d top/bottom layers of "
-             "%.2f mm, %.4g %% infill (%s). Holes for hardware have %.2f mm radial clearance.",
+             "%.2f mm, %.4g %% infill (%s). Holes for hardware have %.2f mm radial clearance%s.",
              po->split ? ", each half on its flat cut face" : "", ps.perimeters,
              ps.line_width_mm, ps.top_bottom_layers, ps.layer_height_mm, 100 * infill,
              !block       ? "solid: the design has no print block"
              : calibrated ? "calibrated from the weighed part"
                           : "the design's slicer setting",
-             po->clearance_mm);
+             po->clearance_mm, fit);
 }
 
 static double now_s(void)

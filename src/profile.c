@@ -616,6 +616,9 @@ static int check_options(const tippe_design *d, const tippe_profile_options *o, 
     if (!(o->min_wall_mm >= 0 && o->min_wall_mm <= 10))
         return tippe_error_set(err, TIPPE_EINPUT, "minimum wall %g mm is outside 0 .. 10 mm",
                                o->min_wall_mm);
+    if (o->fit_diameter_mm > 0 && !(o->fit_diameter_mm < 2 * R))
+        return tippe_error_set(err, TIPPE_EINPUT, "a hole printed %g mm across does not fit the "
+                               "sphere", o->fit_diameter_mm);
     if (o->split && !(fabs(o->split_z_mm) < R))
         return tippe_error_set(err, TIPPE_EINPUT,
                                "split plane z = %g mm is outside the sphere (|z| < %g mm)",
@@ -640,6 +643,8 @@ static int printed_region(geos_ctx *g, const tippe_design *d, const tippe_profil
         if (!cut && !tippe_profile_part_printed(d, i))
             continue;
         double grow = s->clearance_applied[i] ? o->clearance_mm : 0;
+        if (o->fit_diameter_mm > 0 && i == o->fit_part && s->clearance_applied[i])
+            grow = o->fit_diameter_mm / 2 - sd.radius_mm; /* printed for its thread */
         GEOSGeometry *p = solid_region(g, &sd, grow, 0, sag);
         if (!p) {
             if (solid)

@@ -54,7 +54,8 @@ static void put_var(FILE *f, const char *id, const char *field, double v, const 
 }
 
 /* The part's numbers, as variables named <part>_<field>. */
-static void part_variables(FILE *f, const tippe_design *d, int i, const tippe_profile_set *s)
+static void part_variables(FILE *f, const tippe_design *d, int i, const tippe_profile_set *s,
+                           const tippe_profile_options *opt)
 {
     tippe_design_solid sd;
     tippe_design_part_info info;
@@ -86,7 +87,10 @@ static void part_variables(FILE *f, const tippe_design *d, int i, const tippe_pr
         put_var(f, id, "clip_radius_mm", sd.clip_radius_mm, "intersected with this ball");
     if (sd.clip_inner_mm > 0)
         put_var(f, id, "clip_inner_mm", sd.clip_inner_mm, "less this ball (the shell's wall)");
-    if (sd.is_void)
+    if (sd.is_void && s->clearance_applied[i] && opt->fit_diameter_mm > 0 && i == opt->fit_part)
+        fprintf(f, "%s_grow_mm = %.10g; // printed %.10g mm across for its thread (tap drill)\n",
+                id, opt->fit_diameter_mm / 2 - sd.radius_mm, opt->fit_diameter_mm);
+    else if (sd.is_void)
         fprintf(f, "%s_grow_mm = %s; // radial clearance (hole that takes hardware)\n", id,
                 s->clearance_applied[i] ? "clearance_mm" : "0");
 }
@@ -212,7 +216,7 @@ int tippe_scad_write(const tippe_design *d, const tippe_profile_set *s,
                 opt->split_z_mm);
     fprintf(f, "\n");
     for (int i = 0; i < tippe_design_n_parts(d); i++)
-        part_variables(f, d, i, s);
+        part_variables(f, d, i, s, opt);
     fprintf(f, "\n");
     for (int i = 0; i < tippe_design_n_parts(d); i++)
         part_module(f, d, i);

@@ -50,27 +50,43 @@ for g in 0 1 2; do
 done
 
 # --- depths and turns from the design file and the catalogue alone ------------
-python3 - "$s" "$d" designs/catalogue.json <<'EOF' && ok || bad "depths or turns differ from the geometry"
+# default: the hole printed at the tap drill d - P (its rim moves out); --hole
+# slide: the design's hole plus export's 0.2 mm clearance
+"$tippe" build "$d" -o "$tmp/slide" --hole slide --no-export --json >"$tmp/slide.json"
+for fit in tap slide; do
+    f=$s
+    [ $fit = slide ] && f=$tmp/slide.json
+    python3 - "$f" "$d" designs/catalogue.json $fit <<'EOF' && ok || bad "$fit: depths or turns differ from the geometry"
 import json, math, sys
 b = json.load(open(sys.argv[1])); d = json.load(open(sys.argv[2])); cat = json.load(open(sys.argv[3]))
+fit = sys.argv[4]
 parts = {p["name"]: p for p in d["parts"]}
-R, a, c = d["radius_mm"], parts["hole"]["radius_mm"], 0.2   # export's default clearance
+R, a, c = d["radius_mm"], parts["hole"]["radius_mm"], 0.2
 h = parts["screw"]["height_mm"]
-rim = math.sqrt(R * R - (a + c) ** 2)         # where the caliper rests
 item = [i for i in cat["iso4026"]["items"] if abs(i["radius_mm"] - parts["screw"]["radius_mm"]) < 1e-6 and i["height_mm"] == h]
 assert len(item) == 1 and b["thread"]["catalogue_item"] == item[0]["name"] == "M10x12"
 P = item[0]["pitch_mm"]
+hole = item[0]["d_mm"] - P if fit == "tap" else 2 * (a + c)
+assert b["measure"]["hole_fit"] == fit and abs(b["measure"]["hole_printed_diameter_mm"] - hole) < 1e-12
+rim = math.sqrt(R * R - (hole / 2) ** 2)      # where the caliper rests
 for st in b["settings"]:
     for k, z in (("set", st["set_z2_mm"]), ("from", st["robust_from_mm"]), ("to", st["robust_to_mm"])):
         depth = rim - (z + h / 2)              # the screw's top end below the rim
         assert abs(st["depth_%s_mm" % k] - depth) < 1e-9, (k, st["depth_%s_mm" % k], depth)
         assert abs(st["turns_%s" % k] - depth / P) < 1e-9
 EOF
+done
+# the exported body's hole is the tap drill: its rim is the body's top, within the chord (0.01 mm)
+/usr/bin/python3 tests/export_check.py stl "$tmp/drilled-ball-catalogue-best/drilled-ball-catalogue-best-body.stl" >"$tmp/body.json" 2>/dev/null
+check "the exported hole is printed at the M10 tap drill 8.5 mm (rim at sqrt(25^2 - 4.25^2))" \
+    json_ok "$tmp/body.json" 'abs(o["max"][2] - math.sqrt(625 - 4.25 ** 2)) < 0.01'
+check "the OpenSCAD file prints it at the tap drill too" \
+    grep -q "^part_hole_grow_mm = -0.2629; // printed 8.5 mm across" "$tmp/drilled-ball-catalogue-best/drilled-ball-catalogue-best.scad"
 
 # --- tap drills: ISO 261 coarse pitch, drill = d - P -------------------------
 iso261='{"M2": 0.4, "M3": 0.5, "M4": 0.7, "M5": 0.8, "M6": 1.0, "M8": 1.25, "M10": 1.5, "M12": 1.75}'
 for f in "$tmp"/*.json; do
-    case $f in */sweep.json | */check*.json | */cls*.json) continue ;; esac
+    case $f in */sweep.json | */sw.json | */body.json | */check*.json | */cls*.json) continue ;; esac
     json_ok "$f" '"name" not in o["thread"]' && continue
     check "$(basename "$f"): tap drill is d - P of ISO 261" \
         json_ok "$f" "(lambda t: abs(t['pitch_mm'] - $iso261[t['name']]) < 1e-12 and abs(t['tap_drill_mm'] - (t['d_mm'] - t['pitch_mm'])) < 1e-12 and abs(t['d_mm'] - float(t['name'][1:])) < 1e-12)(o['thread'])"
@@ -139,8 +155,8 @@ for st, tail in zip(b["settings"], ["stays-up", "flips", "hangs"]):
     if b["measure"]["kind"] == "hole":
         # the pin above the 2 mm disc; the disc 8 mm wider than the printed hole
         pin = g["max"][2] - 2.0
-        hole = float(b["measure"]["reference"].split("printed diameter ")[1].split(" mm")[0])
-        assert abs((g["max"][0] - g["min"][0]) - (hole + 8)) < 0.02, (g["max"][0] - g["min"][0], hole)
+        hole = b["measure"]["hole_printed_diameter_mm"]
+        assert abs((g["max"][0] - g["min"][0]) - (hole + 8)) < 1e-4, (g["max"][0] - g["min"][0], hole)
     else:
         pin = g["max"][2]
     assert abs(pin - want) < 1e-4, (tail, pin, want)
@@ -153,6 +169,7 @@ done
 expect_fail "no output directory" 2 "--output DIR is required" -- build "$d"
 touch "$tmp/afile"
 expect_fail "output is a file" 2 "not a directory" -- build "$d" -o "$tmp/afile"
+expect_fail "unknown hole fit" 2 "--hole press: not a fit" -- build "$d" -o "$tmp/x" --hole press
 expect_fail "unreadable catalogue" 2 "nothere.json" -- build "$d" -o "$tmp/x" --catalogue "$tmp/nothere.json"
 "$tippe" build --help >"$tmp/help" && grep -q "clearance-mm MM" "$tmp/help" && ok || bad "--help"
 finish

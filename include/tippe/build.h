@@ -80,7 +80,14 @@ typedef struct {
 
 enum { TIPPE_BUILD_MAX_BOM = 16 };
 
+/* How the hole that takes the screw is printed. */
+typedef enum {
+    TIPPE_BUILD_HOLE_TAP,   /* at the thread's tap drill, to be tapped (the default) */
+    TIPPE_BUILD_HOLE_SLIDE  /* the design's hole plus the clearance: a sliding fit */
+} tippe_build_hole_fit;
+
 typedef struct {
+    tippe_build_hole_fit hole_fit;
     const char *const *sets; /* the design's overrides (as loaded), for the 3-in-1 search */
     int n_sets;
     double clearance_mm;     /* export's radial clearance of holes for hardware */
@@ -98,7 +105,9 @@ typedef struct {
     tippe_build_measure measure;
     char reference[200];                 /* "the rim of hole 'hole' (printed 9.43 mm)" */
     double reference_z_mm;               /* its height above the centre */
-    double hole_diameter_mm;             /* the hole as printed (with clearance), or 0 */
+    double hole_diameter_mm;             /* the hole as printed, or 0 */
+    int hole_part;                       /* its part index (a void), or -1 */
+    int hole_tapped;                     /* printed at the tap drill (hole_fit TAP) */
     double rod_diameter_mm;              /* the rod the weight is threaded on, or 0 */
     int reference_up;                    /* 1: the reference faces +z (depth = ref - top end) */
     double weight_end_offset_mm;         /* the measured end of the weight above Z2 */

@@ -23,6 +23,11 @@ typedef struct {
     double clearance_mm;        /* grown holes are drawn grown, and say so */
     const int *clearance_applied; /* per part, or NULL */
     double chord_mm;            /* outline accuracy */
+    /* a hole printed for its thread (tippe_profile_options.fit_*): its printed
+     * diameter and why ("M10 x 1.5 tap drill"); fit_diameter_mm 0: none */
+    int fit_part;
+    double fit_diameter_mm;
+    const char *fit_note;
 } tippe_drawing_options;
 
 int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, const char *path,

@@ -59,6 +59,11 @@ typedef struct {
     double split_z_mm;
     int joint;           /* with split: a groove in both halves' cut faces and a
                             ring that fills them (body "joint-ring"), see below */
+    /* A hole printed for its thread rather than for a sliding fit: void part
+     * fit_part (one that takes hardware) is printed at fit_diameter_mm (e.g. a
+     * tap drill) instead of its own diameter plus the clearance; 0: off. */
+    int fit_part;
+    double fit_diameter_mm;
 } tippe_profile_options;
 
 /* The joint ring of split halves: its grooves are this deep in each half, mm;

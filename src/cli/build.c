@@ -20,7 +20,7 @@
 static const char *const VERB = "build";
 
 typedef struct {
-    const char *dir, *path, *catalogue;
+    const char *dir, *path, *catalogue, *hole;
     int json, no_export;
     tippe_build_options o;
     tippe_export_request q;
@@ -39,6 +39,9 @@ static int build_parse(build_args *a, int argc, char **argv)
         {.name = "clearance-mm", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.clearance_mm,
          .arg = "MM", .unit = "mm", .min = 0, .max = 2, .def = "0.2",
          .help = "radial clearance of holes that take hardware (as tippe export)"},
+        {.name = "hole", .kind = TIPPE_CLI_STRING, .value = &a->hole, .arg = "FIT", .def = "tap",
+         .help = "the screw's hole: tap (printed at the thread's tap drill, d - P, and\n"
+                 "tapped) or slide (the design's hole plus the clearance)"},
         {.name = "no-export", .kind = TIPPE_CLI_FLAG, .value = &a->no_export,
          .help = "write the sheet only, not the files to print"},
         {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
@@ -69,7 +72,16 @@ static int build_parse(build_args *a, int argc, char **argv)
         .args_name = "design file",
     };
     int n = 0;
-    return tippe_cli_parse(&spec, argc, argv, &a->path, &n);
+    int rc = tippe_cli_parse(&spec, argc, argv, &a->path, &n);
+    if (rc)
+        return rc;
+    if (!a->hole || !strcmp(a->hole, "tap"))
+        a->o.hole_fit = TIPPE_BUILD_HOLE_TAP;
+    else if (!strcmp(a->hole, "slide"))
+        a->o.hole_fit = TIPPE_BUILD_HOLE_SLIDE;
+    else
+        return tippe_cli_usage_error(VERB, "--hole %s: not a fit (tap or slide)", a->hole);
+    return 0;
 }
 
 /* Creates dir if it is missing (one level): 0, or 2 after a usage error. */
@@ -155,7 +167,7 @@ static int write_sheet(const tippe_design *d, const tippe_build_sheet *s,
 static int run(build_args *a, const tippe_design *d)
 {
     tippe_error err = {0};
-    char sheet[N_OUT][4096], cat[4096];
+    char sheet[N_OUT][4096], cat[4096], fit_note[64];
     if (!a->catalogue)
         a->catalogue = default_catalogue(a->path, cat, sizeof cat);
     a->o.catalogue = a->catalogue;
@@ -205,6 +217,13 @@ static int run(build_args *a, const tippe_design *d)
         if (s->set[1].reachable)
             a->q.z2_mm = s->set[1].set_z2_mm;
         rc = write_sheet(d, s, sheet, &err);
+        if (s->hole_tapped) {
+            a->q.profile.fit_part = s->hole_part;
+            a->q.profile.fit_diameter_mm = s->hole_diameter_mm;
+            snprintf(fit_note, sizeof fit_note, "%s x %g tap drill", s->thread_name,
+                     s->thread.pitch_mm);
+            a->q.fit_note = fit_note;
+        }
     }
     tippe_export_result r = {0};
     if (!rc && !a->no_export)
