@@ -702,6 +702,42 @@ static void advise(const tippe_design *d, const tippe_build_options *o, tippe_bu
     }
 }
 
+/* The print model's mass of the hole's part with the hole as printed, against
+ * the mass model's hole: what a scale reading of the print lacks (or has too
+ * much) for calibrating the design (measured_mass_g describes the design's
+ * part). The derived design is geometry only (tippe_design_derive), so a hole
+ * narrower than the screw (a tap drill) is allowed. */
+static double hole_model_radius(const tippe_design *d, int i)
+{
+    tippe_design_solid hs;
+    return tippe_design_part_solid(d, i, &hs) ? NAN : hs.radius_mm;
+}
+
+static void weigh_offset(const tippe_design *d, tippe_build_sheet *s)
+{
+    tippe_design_solid hs;
+    tippe_design_part_info hp, pp;
+    tippe_design_print_info before, after;
+    if (s->measure != TIPPE_BUILD_MEASURE_HOLE || s->hole_part < 0 ||
+        tippe_design_part_solid(d, s->hole_part, &hs) || hs.parent < 0 ||
+        tippe_design_part(d, s->hole_part, &hp) || tippe_design_part(d, hs.parent, &pp) ||
+        tippe_design_part_print(d, hs.parent, &before) || !before.printed)
+        return;
+    char set[300];
+    snprintf(set, sizeof set, "parts.%s.radius_mm=%.10g", hp.name, s->hole_diameter_mm / 2);
+    const char *extra[1] = {set};
+    tippe_design *v = NULL;
+    tippe_error e = {0};
+    if (tippe_design_derive(d, extra, 1, &v, &e) == TIPPE_OK &&
+        tippe_design_part_print(v, hs.parent, &after) == TIPPE_OK && after.printed) {
+        /* at the same infill: a calibrated design's infill is the one solved */
+        double m_model = before.skin_mass_kg + before.infill * (before.solid_mass_kg - before.skin_mass_kg);
+        double m_print = after.skin_mass_kg + before.infill * (after.solid_mass_kg - after.skin_mass_kg);
+        s->weigh_offset_g = (m_model - m_print) * 1e3;
+    }
+    tippe_design_free(v);
+}
+
 /* ------------------------------------------------------------ compute */
 
 int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
@@ -709,6 +745,7 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
 {
     memset(out, 0, sizeof *out);
     out->hole_part = -1;
+    out->weigh_offset_g = NAN;
     snprintf(out->design_name, sizeof out->design_name, "%s", tippe_design_name(d));
     snprintf(out->design_file, sizeof out->design_file, "%s", tippe_design_path(d));
     out->radius_mm = tippe_design_radius_mm(d);
@@ -784,6 +821,7 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
         out->thread.name = NULL; /* the sheet's copy is thread_name */
     }
 
+    weigh_offset(d, out);
     for (int f = 0; f < 3; f++) {
         tippe_build_setting *s = &out->set[f];
         if (!s->reachable)
@@ -830,6 +868,16 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     else
         note(out, "No hole or rod on the axis holds the weight: set it by Z2 directly "
                   "(its midpoint's height above the sphere's centre).");
+    if (isfinite(out->weigh_offset_g)) {
+        char t[320];
+        snprintf(t, sizeof t,
+                 "Weighing to calibrate the infill: the hole is printed %.2f mm across, the mass "
+                 "model's is %.2f mm, so add %+.3f g (the print model's difference, same infill) "
+                 "to the scale's reading of the bare print before giving it as measured_mass_g.",
+                 out->hole_diameter_mm, 2 * hole_model_radius(d, out->hole_part),
+                 out->weigh_offset_g);
+        note(out, t);
+    }
     return TIPPE_OK;
 }
 
@@ -864,6 +912,7 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
             cJSON_AddNumberToObject(m, "hole_printed_diameter_mm", s->hole_diameter_mm);
             cJSON_AddStringToObject(m, "hole_fit", s->hole_tapped ? "tap" : "slide");
+            cJSON_AddItemToObject(m, "weigh_offset_g", num(s->weigh_offset_g));
         }
         cJSON_AddNumberToObject(m, "weight_end_above_z2_mm", s->weight_end_offset_mm);
     }

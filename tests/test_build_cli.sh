@@ -120,6 +120,19 @@ for dv in -0.002 0.002; do
         json_ok "$tmp/sw.json" "o['three_in_one'] == $want"
 done
 
+# --- weighing: the offset between the print's hole and the model's, by eval ----
+"$tippe" build designs/m12-setscrew-printed.json -o "$tmp/w" --hole slide --no-export --json >"$tmp/w.json"
+"$tippe" eval designs/m12-setscrew-printed.json --z2 5 --json >"$tmp/e0.json"
+"$tippe" eval designs/m12-setscrew-printed.json --z2 5 --set parts.hole.radius_mm=5.7 --json >"$tmp/e1.json"
+python3 - "$tmp/w.json" "$tmp/e0.json" "$tmp/e1.json" <<'EOF' && ok || bad "weigh offset differs from eval's printed masses"
+import json, sys
+w, e0, e1 = (json.load(open(f)) for f in sys.argv[1:])
+# the hole as printed with --hole slide: 5.5 mm + 0.2 mm clearance
+want = (e0["printed_parts"][0]["printed_mass_kg"] - e1["printed_parts"][0]["printed_mass_kg"]) * 1e3
+got = w["measure"]["weigh_offset_g"]
+assert abs(got - want) < 1e-9, (got, want)
+EOF
+
 # --- the one-page sheet: PDF of one page, SVG and PNG of the page's size -------
 sh=$tmp/drilled-ball-catalogue-best/drilled-ball-catalogue-best-sheet
 python3 - "$sh" <<'EOF' && ok || bad "the sheet's PDF, SVG or PNG"

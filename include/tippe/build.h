@@ -108,6 +108,11 @@ typedef struct {
     double hole_diameter_mm;             /* the hole as printed, or 0 */
     int hole_part;                       /* its part index (a void), or -1 */
     int hole_tapped;                     /* printed at the tap drill (hole_fit TAP) */
+    /* Weighing the print to calibrate its infill: the print model's mass of the
+     * printed part with the hole as the mass model has it, less the same with
+     * the hole as printed (same infill): add it to the scale's reading before
+     * giving measured_mass_g. NAN when not applicable (no print block, no hole). */
+    double weigh_offset_g;
     double rod_diameter_mm;              /* the rod the weight is threaded on, or 0 */
     int reference_up;                    /* 1: the reference faces +z (depth = ref - top end) */
     double weight_end_offset_mm;         /* the measured end of the weight above Z2 */
