@@ -411,6 +411,12 @@ static void draw_marks_and_travel(dlist *L, const tippe_design *d, const tippe_d
         m->mark_style = 1;
         m->stroke = RED;
     }
+    if (o->has_cut) {
+        /* the cut plane of the halves, across the whole sphere */
+        line(L, -R - 3, o->cut_z_mm, R + 3, o->cut_z_mm, RED, 1.2, 1, 0, 0);
+        text(L, R + 3.5, o->cut_z_mm - 0.6, 0, 13, RED,
+             o->joint ? "cut (--split): 2 mm grooves + joint ring" : "cut plane (--split)");
+    }
     double eps = fabs(o->com_z_mm);
     text(L, -1.6, o->com_z_mm + 1.0, 2, 14, RED, "G");
     line(L, 0, o->com_z_mm, 0.3 * R, -0.4 * R, RED, 0.7, 0, 0, 0);

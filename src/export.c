@@ -123,7 +123,10 @@ static int write_drawings(const tippe_design *d, const tippe_export_request *q,
                                .chord_mm = q->profile.chord_mm,
                                .fit_part = q->profile.fit_part,
                                .fit_diameter_mm = q->profile.fit_diameter_mm,
-                               .fit_note = q->fit_note};
+                               .fit_note = q->fit_note,
+                               .has_cut = q->profile.split,
+                               .joint = q->profile.joint,
+                               .cut_z_mm = q->profile.split_z_mm};
     for (int k = first; k < n; k++) {
         int rc = tippe_drawing_write(d, &o, paths[k], err);
         if (rc)

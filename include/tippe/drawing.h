@@ -28,6 +28,10 @@ typedef struct {
     int fit_part;
     double fit_diameter_mm;
     const char *fit_note;
+    /* printed in halves: the cut plane at cut_z_mm is drawn (and the joint's
+     * grooves named when joint) */
+    int has_cut, joint;
+    double cut_z_mm;
 } tippe_drawing_options;
 
 int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, const char *path,
