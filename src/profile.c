@@ -734,6 +734,11 @@ static int joint(geos_ctx *g, const tippe_design *d, const tippe_profile_options
         double r_in = fmax(ra - fmin(0.5, 0.5 * (ra - prev_rb)), 0);
         if (ra < 1e-9)
             r_in = 0; /* a wall that reaches the axis: the ring is a disc */
+        if (s->n_grooves < 8) {
+            s->groove_r_in_mm[s->n_grooves] = r_in;
+            s->groove_r_wall_mm[s->n_grooves] = ra;
+            s->groove_r_mid_mm[s->n_grooves++] = mid;
+        }
         *lo = combine(g, *lo, rect(g, r_in, mid, zc - h, zc), OP_DIFF);
         *hi = combine(g, *hi, rect(g, r_in, mid, zc, zc + h), OP_DIFF);
         GEOSGeometry *r = rect(g, ra, mid - c, 0, 2 * h - c);

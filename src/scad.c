@@ -238,8 +238,32 @@ int tippe_scad_write(const tippe_design *d, const tippe_profile_set *s,
                 "    big = 4 * sphere_radius_mm + 4 * abs(split_z_mm);\n"
                 "    translate([-big / 2, -big / 2, side > 0 ? split_z_mm : split_z_mm - big])\n"
                 "        cube([big, big, big]);\n}\n\n"
-                "module printed_lower() { intersection() { printed(); split_side(-1); } }\n"
-                "module printed_upper() { intersection() { printed(); split_side(1); } }\n\n");
+                "module printed_lower() { difference() { intersection() { printed(); "
+                "split_side(-1); } grooves(); } }\n"
+                "module printed_upper() { difference() { intersection() { printed(); "
+                "split_side(1); } grooves(); } }\n\n");
+        /* --joint: the grooves on both sides of the cut and the ring in them
+         * (tippe/profile.h); none without it */
+        fprintf(f, "joint_depth_mm = %.10g; // groove depth in each half (--joint)\n",
+                opt->joint ? TIPPE_PROFILE_JOINT_DEPTH_MM : 0.0);
+        fprintf(f, "module grooves() {\n");
+        for (int k = 0; opt->joint && k < s->n_grooves; k++)
+            fprintf(f,
+                    "    translate([0, 0, split_z_mm - joint_depth_mm]) difference() {\n"
+                    "        cylinder(h = 2 * joint_depth_mm, r = %.10g);\n"
+                    "        translate([0, 0, -1]) cylinder(h = 2 * joint_depth_mm + 2, r = %.10g);\n"
+                    "    }\n",
+                    s->groove_r_mid_mm[k], s->groove_r_in_mm[k]);
+        fprintf(f, "}\nmodule joint_ring() { // printed flat, as the STL holds it\n");
+        for (int k = 0; opt->joint && k < s->n_grooves; k++)
+            fprintf(f,
+                    "    difference() {\n"
+                    "        cylinder(h = 2 * joint_depth_mm - clearance_mm, r = %.10g - "
+                    "clearance_mm);\n"
+                    "        translate([0, 0, -1]) cylinder(h = 2 * joint_depth_mm + 2, r = %.10g);\n"
+                    "    }\n",
+                    s->groove_r_mid_mm[k], s->groove_r_wall_mm[k]);
+        fprintf(f, "}\n\n");
         fprintf(f, "if (show == \"printed\") {\n    printed();\n"
                    "} else if (show == \"halves\") {\n"
                    "    // as printed: the lower half upside down, both cut faces on z = 0\n"
@@ -247,6 +271,7 @@ int tippe_scad_write(const tippe_design *d, const tippe_profile_set *s,
                    "        translate([0, 0, -split_z_mm]) printed_lower();\n"
                    "    translate([sphere_radius_mm + 2.5, 0, 0])\n"
                    "        translate([0, 0, -split_z_mm]) printed_upper();\n"
+                   "    translate([0, 2 * sphere_radius_mm + 5, 0]) joint_ring();\n"
                    "} else {\n"
                    "    color(\"lightsteelblue\") printed_lower();\n"
                    "    color(\"lightskyblue\") printed_upper();\n"

@@ -78,6 +78,22 @@ for stem in m12-setscrew shell-band; do
         "$py" -c "import sys; a, b = float(sys.argv[1]), float(sys.argv[2]); sys.exit(0 if a > 0 and abs(a - b) < 1e-5 * a else 1)" "$whole" "$halves"
 done
 
+# --- --joint in the source: the halves lose the grooves, the ring fills them --
+# All in OpenSCAD's own 16-gons (area 8 r^2 sin(pi/8)), exact in CGAL: the
+# halves laid out with the ring = the printed body - the grooves (2 h deep, the
+# hole's 16-gon r 5.7 to the wall's middle m) + the ring (2 h - c high, r 5.7 to m - c).
+"$tippe" export designs/m12-setscrew.json -o "$tmp/joint" --format scad --split --joint >/dev/null 2>&1
+render "$tmp/joint/m12-setscrew.scad" halves "$tmp/joint-halves.stl" && ok || bad "--joint: show=halves does not render"
+p=$(vol "$tmp/m12-setscrew-split-printed.stl") j=$(vol "$tmp/joint-halves.stl")
+check "--joint: halves + ring $j mm^3 = printed $p mm^3 - grooves + ring (16-gons)" \
+    "$py" -c "
+import math, sys
+p, j = map(float, sys.argv[1:])
+A = lambda r: 8 * r * r * math.sin(math.pi / 8)
+a, m, h, c = 5.7, (5.7 + 25) / 2, 2.0, 0.2
+want = p - 2 * h * (A(m) - A(a)) + (2 * h - c) * (A(m - c) - A(a))
+sys.exit(0 if abs(j - want) < 1e-5 * p else 1)" "$p" "$j"
+
 # --- names that clashed or injected ------------------------------------------
 # shell-band's parts renamed: an OpenSCAD built-in, the file's own module
 # names, two names that differ only in punctuation (both kept apart), and a

@@ -83,6 +83,11 @@ typedef struct {
     int n_warnings;
     char warning[TIPPE_PROFILE_MAX_WARNINGS][320];
     double thinnest_wall_mm; /* thinnest wall found below min_wall_mm, else NAN */
+    /* The joint's grooves (split with joint): each removes r in [r_in, r_mid]
+     * to TIPPE_PROFILE_JOINT_DEPTH_MM on both sides of the cut; its ring is
+     * r in [r_wall, r_mid - clearance], 2 depth - clearance high. */
+    int n_grooves;
+    double groove_r_in_mm[8], groove_r_wall_mm[8], groove_r_mid_mm[8];
 } tippe_profile_set;
 
 /* Defaults: chord 0.01 mm, clearance 0.2 mm, min wall 0.9 mm (two 0.45 mm
