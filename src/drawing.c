@@ -173,8 +173,8 @@ typedef struct {
 static int material_index(material_list *m, const char *name, int printable)
 {
     for (int k = 0; k < m->n; k++)
-        if (!strcmp(m->name[k], name))
-            return k;
+        if (!strcmp(m->name[k], name) && m->printable[k] == printable)
+            return k; /* "(inline)" printed and "(inline)" hardware differ */
     if (m->n == 16)
         return 15;
     snprintf(m->name[m->n], sizeof m->name[0], "%s", name);
@@ -233,9 +233,11 @@ static void draw_parts(dlist *L, const tippe_design *d, const tippe_drawing_opti
             tippe_design_part_info p;
             tippe_design_part(d, i, &p);
             int is_void = !strcmp(p.role, "void"), moving = !strcmp(p.role, "moving");
-            int want = pass == 0   ? !is_void && !moving && p.printable
+            /* as export prints it (a print block with an inline density too) */
+            int filament = tippe_profile_part_filament(d, i);
+            int want = pass == 0   ? !is_void && !moving && filament
                        : pass == 1 ? is_void
-                       : pass == 2 ? !is_void && !moving && !p.printable
+                       : pass == 2 ? !is_void && !moving && !filament
                                    : !is_void && moving;
             if (!want)
                 continue;
@@ -250,8 +252,8 @@ static void draw_parts(dlist *L, const tippe_design *d, const tippe_drawing_opti
                 continue;
             }
             dz = moving ? o->z2_mm : 0;
-            int k = material_index(mats, p.material, p.printable);
-            style st = material_style(kind_index(mats, k), p.printable);
+            int k = material_index(mats, p.material, filament);
+            style st = material_style(kind_index(mats, k), filament);
             rgb fill = moving ? (rgb){1.0, 0.80, 0.55} : st.fill;
             part_polys(L, d, i, dz, o->chord_mm, fill, st.hatch_deg, st.cross, 1);
             if (moving) /* its own voids, if any */
@@ -326,7 +328,11 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
         const char *name = part_name(d, i);
         double dz = s.moving ? o->z2_mm : 0;
         char extra[80] = "";
-        if (s.is_void && o->clearance_applied && o->clearance_applied[i])
+        if (s.is_void && o->clearance_applied && o->clearance_applied[i] &&
+            o->fit_diameter_mm > 0 && i == o->fit_part)
+            snprintf(extra, sizeof extra, " (printed %.4g: %s)", o->fit_diameter_mm,
+                     o->fit_note ? o->fit_note : "for its thread");
+        else if (s.is_void && o->clearance_applied && o->clearance_applied[i])
             snprintf(extra, sizeof extra, " (printed %.4g: +%.4g clearance)",
                      2 * (s.radius_mm + o->clearance_mm), o->clearance_mm);
         if (!strcmp(s.shape, "cylinder") || !strcmp(s.shape, "tube")) {
@@ -404,6 +410,12 @@ static void draw_marks_and_travel(dlist *L, const tippe_design *d, const tippe_d
         m->xy[1] = o->com_z_mm;
         m->mark_style = 1;
         m->stroke = RED;
+    }
+    if (o->has_cut) {
+        /* the cut plane of the halves, across the whole sphere */
+        line(L, -R - 3, o->cut_z_mm, R + 3, o->cut_z_mm, RED, 1.2, 1, 0, 0);
+        text(L, R + 3.5, o->cut_z_mm - 0.6, 0, 13, RED,
+             o->joint ? "cut (--split): 2 mm grooves + joint ring" : "cut plane (--split)");
     }
     double eps = fabs(o->com_z_mm);
     text(L, -1.6, o->com_z_mm + 1.0, 2, 14, RED, "G");
@@ -799,6 +811,33 @@ static void dlist_free(dlist *L)
     for (int i = 0; i < L->n; i++)
         free(L->it[i].xy);
     free(L->it);
+}
+
+int tippe_drawing_render(const tippe_design *d, const tippe_drawing_options *o, void *cairo,
+                         double x, double y, double w, double h, tippe_error *err)
+{
+    cairo_t *cr = cairo;
+    dlist L = {0};
+    material_list mats = {0};
+    draw_parts(&L, d, o, &mats);
+    draw_marks_and_travel(&L, d, o);
+    draw_dimensions(&L, d, o);
+    draw_title_legend(&L, d, o, &mats);
+    layout(&L);
+    if (L.fail) {
+        dlist_free(&L);
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory while drawing");
+    }
+    double k = fmin(w / PAGE_W, h / PAGE_H);
+    cairo_save(cr);
+    cairo_rectangle(cr, x, y, w, h);
+    cairo_clip(cr);
+    cairo_translate(cr, x + (w - k * PAGE_W) / 2, y + (h - k * PAGE_H) / 2);
+    cairo_scale(cr, k, k);
+    render_cairo(&L, cr);
+    cairo_restore(cr);
+    dlist_free(&L);
+    return TIPPE_OK;
 }
 
 int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, const char *path,

@@ -120,13 +120,59 @@ static int write_drawings(const tippe_design *d, const tippe_export_request *q,
                                .note = q->title_note,
                                .clearance_mm = q->profile.clearance_mm,
                                .clearance_applied = s->clearance_applied,
-                               .chord_mm = q->profile.chord_mm};
+                               .chord_mm = q->profile.chord_mm,
+                               .fit_part = q->profile.fit_part,
+                               .fit_diameter_mm = q->profile.fit_diameter_mm,
+                               .fit_note = q->fit_note,
+                               .has_cut = q->profile.split,
+                               .joint = q->profile.joint,
+                               .cut_z_mm = q->profile.split_z_mm};
     for (int k = first; k < n; k++) {
         int rc = tippe_drawing_write(d, &o, paths[k], err);
         if (rc)
             return rc;
     }
     return TIPPE_OK;
+}
+
+/* The slicer settings the mass model assumed: the first printed part's print
+ * block with its infill as the model uses it (calibrated by weighing when the
+ * design says so); a design without one is modelled solid (100 %). */
+static void slicer_settings(const tippe_design *d, const tippe_profile_options *po,
+                            tippe_mesh_3mf_extra *x, char *desc, size_t size)
+{
+    memset(x, 0, sizeof *x);
+    tippe_print_settings ps = tippe_print_defaults();
+    double infill = 1.0;
+    int calibrated = 0, block = 0;
+    for (int i = 0; i < tippe_design_n_parts(d) && !block; i++) {
+        tippe_design_print_info pr;
+        if (!tippe_design_part_print(d, i, &pr) && pr.printed) {
+            ps = pr.settings;
+            infill = pr.infill;
+            calibrated = pr.calibrated;
+            block = 1;
+        }
+    }
+    x->has_print = 1;
+    x->perimeters = ps.perimeters;
+    x->top_bottom_layers = ps.top_bottom_layers;
+    x->line_width_mm = ps.line_width_mm;
+    x->layer_height_mm = ps.layer_height_mm;
+    x->infill = infill;
+    char fit[120] = "";
+    if (po->fit_diameter_mm > 0)
+        snprintf(fit, sizeof fit, ", except the screw's, printed %.2f mm across for its thread",
+                 po->fit_diameter_mm);
+    snprintf(desc, size,
+             "Print with the axis vertical%s: %d perimeters of %.2f mm, %d top/bottom layers of "
+             "%.2f mm, %.4g %% infill (%s). Holes for hardware have %.2f mm radial clearance%s.",
+             po->split ? ", each half on its flat cut face" : "", ps.perimeters,
+             ps.line_width_mm, ps.top_bottom_layers, ps.layer_height_mm, 100 * infill,
+             !block       ? "solid: the design has no print block"
+             : calibrated ? "calibrated from the weighed part"
+                          : "the design's slicer setting",
+             po->clearance_mm, fit);
 }
 
 static double now_s(void)
@@ -172,8 +218,17 @@ int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
             names[b] = s->body[b].name;
             dx[b] = b ? dx[b - 1] + s->body[b - 1].r_max_mm + s->body[b].r_max_mm + 5 : 0;
         }
-        if (!rc)
-            rc = tippe_mesh_write_3mf(meshes, names, dx, nb, paths[k++], err);
+        tippe_mesh_3mf_extra x;
+        char desc[600];
+        const char *keys[3] = {"Title", "Application", "Description"};
+        const char *vals[3] = {tippe_design_name(d), "tippe " TIPPE_VERSION, desc};
+        if (!rc) {
+            slicer_settings(d, &q->profile, &x, desc, sizeof desc);
+            x.n_meta = 3;
+            x.meta_keys = keys;
+            x.meta_values = vals;
+            rc = tippe_mesh_write_3mf_extra(meshes, names, dx, nb, &x, paths[k++], err);
+        }
         free(names);
         free(dx);
     }

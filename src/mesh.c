@@ -276,8 +276,14 @@ int lib3mf_object_setnameutf8(void *object, const char *name);
 int lib3mf_model_addbuilditem(void *model, void *object, lib3mf_transform *tr, void **item);
 int lib3mf_model_querywriter(void *model, const char *writer_class, void **writer);
 int lib3mf_writer_writetofileutf8(void *writer, const char *file);
+int lib3mf_resource_getresourceid(void *resource, unsigned *id);
+int lib3mf_model_addmetadatautf8(void *model, const char *key, const char *value);
+int lib3mf_model_addattachmentutf8(void *model, char *uri, char *relationship, void **attachment);
+int lib3mf_attachment_readfrombuffer(void *attachment, unsigned char *buffer,
+                                     unsigned long long size);
 
-static int add_3mf_object(void *model, const tippe_mesh *m, const char *name, double dx)
+static int add_3mf_object(void *model, const tippe_mesh *m, const char *name, double dx,
+                          unsigned *id)
 {
     void *obj = NULL, *item = NULL;
     lib3mf_vertex *v = malloc((size_t)m->n_vertices * sizeof *v);
@@ -290,7 +296,8 @@ static int add_3mf_object(void *model, const tippe_mesh *m, const char *name, do
              lib3mf_meshobject_setgeometry(obj, v, (unsigned)m->n_vertices,
                                            (lib3mf_triangle *)m->tri,
                                            (unsigned)m->n_triangles) == 0 &&
-             lib3mf_object_setnameutf8(obj, name) == 0;
+             lib3mf_object_setnameutf8(obj, name) == 0 &&
+             lib3mf_resource_getresourceid(obj, id) == 0;
     lib3mf_transform tr = {{{1, 0, 0, (float)dx}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
     ok = ok && lib3mf_model_addbuilditem(model, obj, &tr, &item) == 0;
     if (item)
@@ -301,8 +308,67 @@ static int add_3mf_object(void *model, const tippe_mesh *m, const char *name, do
     return ok;
 }
 
+/* A string as an XML attribute value. */
+static void xml_attr(FILE *f, const char *s)
+{
+    for (; *s; s++)
+        switch (*s) {
+        case '&': fputs("&amp;", f); break;
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '"': fputs("&quot;", f); break;
+        default:
+            if ((unsigned char)*s >= 0x20)
+                fputc(*s, f);
+        }
+}
+
+/* PrusaSlicer's per-object configuration (its 3MF reader applies each
+ * object's keys over the print profile): Metadata/Slic3r_PE_model.config. */
+static char *slicer_config(const tippe_mesh *meshes, const char *const *names, const unsigned *id,
+                           int n, const tippe_mesh_3mf_extra *x, size_t *size)
+{
+    char *buf = NULL;
+    FILE *f = open_memstream(&buf, size);
+    if (!f)
+        return NULL;
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<config>\n");
+    for (int k = 0; k < n; k++) {
+        fprintf(f, " <object id=\"%u\" instances_count=\"1\">\n", id[k]);
+        fputs("  <metadata type=\"object\" key=\"name\" value=\"", f);
+        xml_attr(f, names[k]);
+        fputs("\"/>\n", f);
+        fprintf(f,
+                "  <metadata type=\"object\" key=\"perimeters\" value=\"%d\"/>\n"
+                "  <metadata type=\"object\" key=\"top_solid_layers\" value=\"%d\"/>\n"
+                "  <metadata type=\"object\" key=\"bottom_solid_layers\" value=\"%d\"/>\n"
+                "  <metadata type=\"object\" key=\"fill_density\" value=\"%.4g%%\"/>\n"
+                "  <metadata type=\"object\" key=\"layer_height\" value=\"%.4g\"/>\n"
+                "  <metadata type=\"object\" key=\"perimeter_extrusion_width\" value=\"%.4g\"/>\n",
+                x->perimeters, x->top_bottom_layers, x->top_bottom_layers, 100 * x->infill,
+                x->layer_height_mm, x->line_width_mm);
+        fprintf(f, "  <volume firstid=\"0\" lastid=\"%ld\">\n", (long)meshes[k].n_triangles - 1);
+        fputs("   <metadata type=\"volume\" key=\"name\" value=\"", f);
+        xml_attr(f, names[k]);
+        fputs("\"/>\n  </volume>\n </object>\n", f);
+    }
+    fprintf(f, "</config>\n");
+    if (fclose(f) != 0) {
+        free(buf);
+        return NULL;
+    }
+    return buf;
+}
+
 int tippe_mesh_write_3mf(const tippe_mesh *meshes, const char *const *names,
                          const double *offset_x_mm, int n, const char *path, tippe_error *err)
+{
+    return tippe_mesh_write_3mf_extra(meshes, names, offset_x_mm, n, NULL, path, err);
+}
+
+int tippe_mesh_write_3mf_extra(const tippe_mesh *meshes, const char *const *names,
+                               const double *offset_x_mm, int n, const tippe_mesh_3mf_extra *x,
+                               const char *path, tippe_error *err)
 {
     _Static_assert(sizeof(lib3mf_triangle) == 3 * sizeof(unsigned), "triangle layout");
     tippe_report_file rf;
@@ -311,9 +377,25 @@ int tippe_mesh_write_3mf(const tippe_mesh *meshes, const char *const *names,
     if (rc)
         return rc;
     void *model = NULL, *writer = NULL;
-    int ok = lib3mf_createmodel(&model) == 0;
+    unsigned *id = calloc((size_t)(n > 0 ? n : 1), sizeof *id);
+    int ok = id && lib3mf_createmodel(&model) == 0;
     for (int k = 0; ok && k < n; k++)
-        ok = add_3mf_object(model, &meshes[k], names[k], offset_x_mm[k]);
+        ok = add_3mf_object(model, &meshes[k], names[k], offset_x_mm[k], &id[k]);
+    for (int k = 0; ok && x && k < x->n_meta; k++)
+        ok = lib3mf_model_addmetadatautf8(model, x->meta_keys[k], x->meta_values[k]) == 0;
+    if (ok && x && x->has_print) {
+        size_t size = 0;
+        char *cfg = slicer_config(meshes, names, id, n, x, &size);
+        void *att = NULL;
+        char uri[] = "/Metadata/Slic3r_PE_model.config";
+        char rel[] = "http://schemas.slic3r.org/3mf/2017/06/model-config";
+        ok = cfg && lib3mf_model_addattachmentutf8(model, uri, rel, &att) == 0 &&
+             lib3mf_attachment_readfrombuffer(att, (unsigned char *)cfg, size) == 0;
+        if (att)
+            lib3mf_release(att);
+        free(cfg);
+    }
+    free(id);
     ok = ok && lib3mf_model_querywriter(model, "3mf", &writer) == 0 &&
          lib3mf_writer_writetofileutf8(writer, rf.write_path) == 0;
     if (writer)

@@ -204,21 +204,46 @@ static GEOSGeometry *solid_region(geos_ctx *g, const tippe_design_solid *s, doub
 
 /* --------------------------------------------------------- printability */
 
+/* Filament: a printable material, or a part with a print block (which the
+ * mass model prints, tippe/print.h, whether its density is a material's or
+ * given inline); a void: its part's. */
+static int part_is_filament(const tippe_design *d, int i, const tippe_design_part_info *p)
+{
+    if (p->printable)
+        return 1;
+    int k = i;
+    if (p->cut_from) {
+        for (k = 0; k < tippe_design_n_parts(d); k++) {
+            tippe_design_part_info q;
+            if (!tippe_design_part(d, k, &q) && !strcmp(q.name, p->cut_from))
+                break;
+        }
+    }
+    tippe_design_print_info pr;
+    return !tippe_design_part_print(d, k, &pr) && pr.printed;
+}
+
 int tippe_profile_part_printed(const tippe_design *d, int i)
 {
     tippe_design_part_info p;
     if (tippe_design_part(d, i, &p))
         return 0;
-    return !strcmp(p.role, "fixed") && p.printable;
+    return !strcmp(p.role, "fixed") && part_is_filament(d, i, &p);
 }
 
-/* Hardware: a non-void part that is not printable (a fixed rod, the weight). */
+int tippe_profile_part_filament(const tippe_design *d, int i)
+{
+    tippe_design_part_info p;
+    return !tippe_design_part(d, i, &p) && part_is_filament(d, i, &p);
+}
+
+/* Hardware: a non-void part that is not printed (a fixed rod, the weight). */
 static int part_is_hardware(const tippe_design *d, int i)
 {
     tippe_design_part_info p;
     if (tippe_design_part(d, i, &p) || !strcmp(p.role, "void"))
         return 0;
-    return !p.printable;
+    return !part_is_filament(d, i, &p);
 }
 
 /* ------------------------------------------------------- profile rings */
@@ -591,6 +616,9 @@ static int check_options(const tippe_design *d, const tippe_profile_options *o, 
     if (!(o->min_wall_mm >= 0 && o->min_wall_mm <= 10))
         return tippe_error_set(err, TIPPE_EINPUT, "minimum wall %g mm is outside 0 .. 10 mm",
                                o->min_wall_mm);
+    if (o->fit_diameter_mm > 0 && !(o->fit_diameter_mm < 2 * R))
+        return tippe_error_set(err, TIPPE_EINPUT, "a hole printed %g mm across does not fit the "
+                               "sphere", o->fit_diameter_mm);
     if (o->split && !(fabs(o->split_z_mm) < R))
         return tippe_error_set(err, TIPPE_EINPUT,
                                "split plane z = %g mm is outside the sphere (|z| < %g mm)",
@@ -615,6 +643,8 @@ static int printed_region(geos_ctx *g, const tippe_design *d, const tippe_profil
         if (!cut && !tippe_profile_part_printed(d, i))
             continue;
         double grow = s->clearance_applied[i] ? o->clearance_mm : 0;
+        if (o->fit_diameter_mm > 0 && i == o->fit_part && s->clearance_applied[i])
+            grow = o->fit_diameter_mm / 2 - sd.radius_mm; /* printed for its thread */
         GEOSGeometry *p = solid_region(g, &sd, grow, 0, sag);
         if (!p) {
             if (solid)
@@ -637,7 +667,7 @@ static int printed_region(geos_ctx *g, const tippe_design *d, const tippe_profil
             GEOSGeom_destroy_r(g->h, holes);
         return tippe_error_set(err, TIPPE_EINPUT,
                                "%s: parts: nothing to print: no fixed part is of a printable "
-                               "material (all are hardware or moving)",
+                               "material or has a print block (all are hardware or moving)",
                                tippe_design_path(d));
     }
     *printed = holes ? combine(g, solid, holes, OP_DIFF) : solid;
@@ -651,6 +681,78 @@ static int printed_region(geos_ctx *g, const tippe_design *d, const tippe_profil
                                "there is no solid to print",
                                tippe_design_path(d));
     *exact_mm3 = vol;
+    return TIPPE_OK;
+}
+
+/* The joint of split halves (o->joint): where the printed region crosses the
+ * cut plane, each stretch of wall [ra, rb] at least 2 TIPPE_PROFILE_JOINT_MIN_MM
+ * wide gets a groove of its inner half, TIPPE_PROFILE_JOINT_DEPTH_MM deep, in
+ * both halves, and a separate printed ring fills the two grooves with
+ * clearance_mm of play (radial on its outer side, and in its height), so that
+ * the halves align on it. Both halves keep their flat cut face for printing;
+ * the ring prints flat too. Grooves reach 0.5 mm (at most half the gap to the
+ * next stretch) beyond the wall's inner edge, so that a curved inner surface
+ * leaves no sliver. The halves then hold a little less than the whole (the
+ * play): the mass model keeps the design's solid. */
+static int joint(geos_ctx *g, const tippe_design *d, const tippe_profile_options *o,
+                 const GEOSGeometry *printed, GEOSGeometry **lo, GEOSGeometry **hi,
+                 GEOSGeometry **ring, tippe_profile_set *s, tippe_error *err)
+{
+    double R = tippe_design_radius_mm(d), zc = o->split_z_mm, h = TIPPE_PROFILE_JOINT_DEPTH_MM;
+    double c = o->clearance_mm;
+    GEOSGeometry *cross = combine(g, GEOSGeom_clone_r(g->h, printed),
+                                  rect(g, 0, 3 * R, zc - 1e-4, zc + 1e-4), OP_INTER);
+    if (!cross)
+        return fail(g, err, d, "finding the wall at the cut plane");
+    int n = GEOSGetNumGeometries_r(g->h, cross), made = 0, thin = 0;
+    double prev_rb = 0;
+    /* stretches in order of r (GEOS gives the pieces of an intersection unordered) */
+    double ra_list[64], rb_list[64];
+    int m = 0;
+    for (int k = 0; k < n && m < 64; k++) {
+        const GEOSGeometry *piece = GEOSGetGeometryN_r(g->h, cross, k);
+        double a = 0, b = 0;
+        if (GEOSGeom_getXMin_r(g->h, piece, &a) && GEOSGeom_getXMax_r(g->h, piece, &b) && b > a) {
+            int j = m++;
+            while (j > 0 && ra_list[j - 1] > a) {
+                ra_list[j] = ra_list[j - 1];
+                rb_list[j] = rb_list[j - 1];
+                j--;
+            }
+            ra_list[j] = a;
+            rb_list[j] = b;
+        }
+    }
+    GEOSGeom_destroy_r(g->h, cross);
+    for (int k = 0; k < m && *lo && *hi; k++) {
+        double ra = ra_list[k], rb = rb_list[k], mid = 0.5 * (ra + rb);
+        if (rb - ra < 2 * TIPPE_PROFILE_JOINT_MIN_MM + c) {
+            thin = 1;
+            prev_rb = rb;
+            continue;
+        }
+        double r_in = fmax(ra - fmin(0.5, 0.5 * (ra - prev_rb)), 0);
+        if (ra < 1e-9)
+            r_in = 0; /* a wall that reaches the axis: the ring is a disc */
+        if (s->n_grooves < 8) {
+            s->groove_r_in_mm[s->n_grooves] = r_in;
+            s->groove_r_wall_mm[s->n_grooves] = ra;
+            s->groove_r_mid_mm[s->n_grooves++] = mid;
+        }
+        *lo = combine(g, *lo, rect(g, r_in, mid, zc - h, zc), OP_DIFF);
+        *hi = combine(g, *hi, rect(g, r_in, mid, zc, zc + h), OP_DIFF);
+        GEOSGeometry *r = rect(g, ra, mid - c, 0, 2 * h - c);
+        *ring = *ring ? combine(g, *ring, r, OP_UNION) : r;
+        made++;
+        prev_rb = rb;
+    }
+    if (thin)
+        warn(s, "%s: a wall at the cut plane is narrower than %.1f mm: no joint ring there",
+             tippe_design_path(d), 2 * TIPPE_PROFILE_JOINT_MIN_MM + c);
+    if (!made)
+        warn(s, "%s: no wall at the cut plane is wide enough for a joint ring: the halves "
+                "are written without one",
+             tippe_design_path(d));
     return TIPPE_OK;
 }
 
@@ -700,10 +802,27 @@ int tippe_profile_build(const tippe_design *d, const tippe_profile_options *o,
                                    rect(&g, 0, 3 * R, zc, 3 * R), OP_INTER);
         if (!lo || !hi)
             rc = fail(&g, err, d, "cutting at the split plane");
+        GEOSGeometry *ring = NULL;
+        if (!rc && o->joint && (rc = joint(&g, d, o, printed, &lo, &hi, &ring, s, err)) == 0 &&
+            (!lo || !hi))
+            rc = fail(&g, err, d, "cutting the joint's groove");
         if (!rc)
             rc = add_bodies(&g, d, lo, part_geom, NAN, "lower", 1, zc, s, err);
         if (!rc)
             rc = add_bodies(&g, d, hi, part_geom, NAN, "upper", 0, zc, s, err);
+        if (!rc && ring) {
+            int first = s->n_bodies;
+            rc = add_bodies(&g, d, ring, part_geom, NAN, "", 0, NAN, s, err);
+            for (int b = first; !rc && b < s->n_bodies; b++) {
+                snprintf(s->body[b].name, sizeof s->body[b].name, "joint-ring%s",
+                         s->n_bodies - first > 1 ? "s" : "");
+                if (s->n_bodies - first > 1)
+                    snprintf(s->body[b].name + strlen(s->body[b].name),
+                             sizeof s->body[b].name - strlen(s->body[b].name), "-%d", b - first + 1);
+            }
+        }
+        if (ring)
+            GEOSGeom_destroy_r(g.h, ring);
         if (lo)
             GEOSGeom_destroy_r(g.h, lo);
         if (hi)

@@ -23,9 +23,24 @@ typedef struct {
     double clearance_mm;        /* grown holes are drawn grown, and say so */
     const int *clearance_applied; /* per part, or NULL */
     double chord_mm;            /* outline accuracy */
+    /* a hole printed for its thread (tippe_profile_options.fit_*): its printed
+     * diameter and why ("M10 x 1.5 tap drill"); fit_diameter_mm 0: none */
+    int fit_part;
+    double fit_diameter_mm;
+    const char *fit_note;
+    /* printed in halves: the cut plane at cut_z_mm is drawn (and the joint's
+     * grooves named when joint) */
+    int has_cut, joint;
+    double cut_z_mm;
 } tippe_drawing_options;
 
 int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, const char *path,
                         tippe_error *err);
+
+/* The same drawing rendered into the box (x, y, w, h) of a cairo context
+ * (a cairo_t *, in its units), scaled to fit with its aspect kept: for a page
+ * that holds it beside other things (the build sheet, tippe/build.h). */
+int tippe_drawing_render(const tippe_design *d, const tippe_drawing_options *o, void *cairo,
+                         double x, double y, double w, double h, tippe_error *err);
 
 #endif

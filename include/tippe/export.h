@@ -33,6 +33,8 @@ typedef struct {
     unsigned formats; /* TIPPE_EXPORT_* bits */
     const char *dir;  /* output directory */
     const char *title_note; /* second title line of the drawing (the zone), or NULL */
+    const char *fit_note;   /* why profile.fit_part is printed at fit_diameter_mm ("M10 x 1.5
+                               tap drill"), for the drawing; NULL: "for its thread" */
 } tippe_export_request;
 
 enum { TIPPE_EXPORT_MAX_FILES = 64 };

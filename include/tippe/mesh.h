@@ -48,6 +48,24 @@ int tippe_mesh_write_stl(const tippe_mesh *m, const char *path, const char *soli
 int tippe_mesh_write_3mf(const tippe_mesh *meshes, const char *const *names,
                          const double *offset_x_mm, int n, const char *path, tippe_error *err);
 
+/* What a 3MF file carries besides its meshes: the model's metadata (3MF core
+ * names: "Title", "Application", "Description", ...) and, for slicers, the
+ * per-object print settings in PrusaSlicer's format (the part
+ * /Metadata/Slic3r_PE_model.config; ids are the objects' resource ids 1, 2,
+ * ... in the order given). */
+typedef struct {
+    int n_meta;
+    const char *const *meta_keys, *const *meta_values;
+    int has_print;          /* 0: no slicer settings written */
+    int perimeters, top_bottom_layers;
+    double line_width_mm, layer_height_mm, infill; /* infill: 0 .. 1 */
+} tippe_mesh_3mf_extra;
+
+/* tippe_mesh_write_3mf with the extras (x may be NULL). */
+int tippe_mesh_write_3mf_extra(const tippe_mesh *meshes, const char *const *names,
+                               const double *offset_x_mm, int n, const tippe_mesh_3mf_extra *x,
+                               const char *path, tippe_error *err);
+
 void tippe_mesh_free(tippe_mesh *m);
 
 #endif

@@ -57,7 +57,20 @@ typedef struct {
     double min_wall_mm;  /* thinner walls get a warning (two perimeters) */
     int split;           /* cut each body at split_z_mm into two */
     double split_z_mm;
+    int joint;           /* with split: a groove in both halves' cut faces and a
+                            ring that fills them (body "joint-ring"), see below */
+    /* A hole printed for its thread rather than for a sliding fit: void part
+     * fit_part (one that takes hardware) is printed at fit_diameter_mm (e.g. a
+     * tap drill) instead of its own diameter plus the clearance; 0: off. */
+    int fit_part;
+    double fit_diameter_mm;
 } tippe_profile_options;
+
+/* The joint ring of split halves: its grooves are this deep in each half, mm;
+ * a wall narrower than twice TIPPE_PROFILE_JOINT_MIN_MM (plus the clearance)
+ * at the cut gets none. */
+#define TIPPE_PROFILE_JOINT_DEPTH_MM 2.0
+#define TIPPE_PROFILE_JOINT_MIN_MM 1.0
 
 enum { TIPPE_PROFILE_MAX_WARNINGS = 16 };
 
@@ -70,14 +83,25 @@ typedef struct {
     int n_warnings;
     char warning[TIPPE_PROFILE_MAX_WARNINGS][320];
     double thinnest_wall_mm; /* thinnest wall found below min_wall_mm, else NAN */
+    /* The joint's grooves (split with joint): each removes r in [r_in, r_mid]
+     * to TIPPE_PROFILE_JOINT_DEPTH_MM on both sides of the cut; its ring is
+     * r in [r_wall, r_mid - clearance], 2 depth - clearance high. */
+    int n_grooves;
+    double groove_r_in_mm[8], groove_r_wall_mm[8], groove_r_mid_mm[8];
 } tippe_profile_set;
 
 /* Defaults: chord 0.01 mm, clearance 0.2 mm, min wall 0.9 mm (two 0.45 mm
  * perimeters of a 0.4 mm nozzle), no split. */
 tippe_profile_options tippe_profile_defaults(void);
 
-/* Whether part i is printed (a fixed, non-void part of a printable material). */
+/* Whether part i is printed: a fixed, non-void part of a printable material
+ * or with a print block (an inline density_g_cm3 with a print block is
+ * filament too: the mass model prints it). */
 int tippe_profile_part_printed(const tippe_design *d, int i);
+
+/* Whether part i is filament (printed, or to be printed if it moves), by the
+ * rule above; a void: its part's. For drawings. */
+int tippe_profile_part_filament(const tippe_design *d, int i);
 
 /* Builds the printed bodies. TIPPE_EINPUT (message naming the design file) if
  * the design prints nothing, if a body is cut away entirely, or if an option is

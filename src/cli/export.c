@@ -224,6 +224,10 @@ static int export_parse(export_args *a, int argc, char **argv)
         {.name = "split-z", .kind = TIPPE_CLI_DOUBLE, .value = &q->profile.split_z_mm,
          .arg = "MM", .unit = "mm", .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
          .def = "0", .help = "height of the cut plane above the sphere's centre (with --split)"},
+        {.name = "joint", .kind = TIPPE_CLI_FLAG, .value = &q->profile.joint,
+         .help = "with --split: a groove 2 mm deep in both cut faces (the inner half of\n"
+                 "each wall) and a printed ring that fills both, to align and join the\n"
+                 "halves (body joint-ring; --clearance-mm of play)"},
         {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
          .help = "print the report as one JSON object"},
         {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
@@ -233,7 +237,7 @@ static int export_parse(export_args *a, int argc, char **argv)
     tippe_cli_spec spec = {
         .verb = VERB,
         .synopsis = "DESIGN.json -o DIR [--z2 MM] [--format LIST] [--chord-mm MM]\n"
-                    "       [--clearance-mm MM] [--split [--split-z MM]] [--json]",
+                    "       [--clearance-mm MM] [--split [--split-z MM] [--joint]] [--json]",
         .about = "Writes what a maker prints from: every fixed part of a printable material,\n"
                  "less the voids cut from it, as one solid per printed body; the OpenSCAD\n"
                  "source of the whole top and its dimensioned section drawing.",
@@ -252,6 +256,8 @@ static int export_parse(export_args *a, int argc, char **argv)
         return rc;
     if (tippe_cli_find_opt(&spec, "split-z")->seen && !q->profile.split)
         return tippe_cli_usage_error(VERB, "--split-z needs --split");
+    if (q->profile.joint && !q->profile.split)
+        return tippe_cli_usage_error(VERB, "--joint needs --split");
     if (parse_formats(a->formats, &q->formats))
         return 2;
     if (!strcmp(a->dir, "-")) /* several files cannot share standard output */

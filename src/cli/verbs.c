@@ -29,6 +29,8 @@ const tippe_cli_verb tippe_cli_verbs[] = {
     {"animate", tippe_cli_animate, "a film (MP4, WebM, GIF) or a picture of one launch", 0},
     {"export", tippe_cli_export, "printed bodies as STL and 3MF, OpenSCAD source, section drawing",
      0},
+    {"build", tippe_cli_build, "build sheet: settings to measure, spins, bill of materials, files",
+     0},
 };
 const int tippe_cli_n_verbs = (int)(sizeof tippe_cli_verbs / sizeof tippe_cli_verbs[0]);
 

@@ -1,6 +1,7 @@
 /* Stubs of the files of printed bodies (src/export.c with mesh.c, drawing.c,
  * scad.c and profile.c: lib3MF, cairo, GEOS) for the tippe command: see module.h. */
 #include "module.h"
+#include "tippe/build.h"
 #include "tippe/export.h"
 
 static tippe_module export_module =
@@ -24,4 +25,16 @@ int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
 void tippe_export_result_free(tippe_export_result *r)
 {
     TIPPE_MODULE_FREE(&export_module, tippe_export_result_free, r);
+}
+
+int tippe_build_sheet_write(const tippe_design *d, const tippe_build_sheet *s, const char *path,
+                            tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&export_module, tippe_build_sheet_write, err, d, s, path, err);
+}
+
+int tippe_build_gauge_write(const tippe_build_sheet *s, int family, const char *path,
+                            tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&export_module, tippe_build_gauge_write, err, s, family, path, err);
 }

@@ -1,0 +1,204 @@
+/* tippe/build.h: from a design's zones to what a maker sets, buys and prints.
+ *
+ * For each behaviour the zones offer (stays up: group I; flips: group II;
+ * hangs: group III) the build sheet takes the widest run of Z2 within the
+ * physical travel (tippe/sweep.h) and shrinks it by the tolerance bands at
+ * its ends (tippe/sweep_bands.h): the robust range, where the behaviour holds
+ * whatever the tolerances do (to first order). It converts Z2 into what one
+ * measures: the depth of the weight's end below the rim of the hole it is
+ * screwed into (a caliper's depth rod rests on the rim), or below the top end
+ * of the rod it is screwed onto, and the turns of its thread from flush (the
+ * pitch from the hardware catalogue, else ISO 261's coarse pitch). It gives
+ * the spin needed there from Theorem 5.1's thresholds (tippe/theory.h) and
+ * runs one central hand launch (tippe/launch.h, the check verb's) at a spin
+ * above it, whose verdict is reported beside the behaviour it should give.
+ *
+ * Units: mm, rev/s in the sheet (the maker's); the library's SI inside. */
+#ifndef TIPPE_BUILD_H
+#define TIPPE_BUILD_H
+
+#include <stdio.h>
+
+#include "tippe/design.h"
+#include "tippe/dynamics.h"
+#include "tippe/error.h"
+#include "tippe/launch.h"
+#include "tippe/print.h"
+
+/* ISO 261 coarse-pitch metric threads (ISO 724 basic profile). */
+typedef struct {
+    const char *name;   /* "M10" */
+    double d_mm;        /* nominal (major) diameter */
+    double pitch_mm;    /* coarse pitch, ISO 261 */
+} tippe_build_thread;
+
+/* The ISO 261 coarse thread of nominal diameter d_mm (within 1e-6 mm), or NULL. */
+const tippe_build_thread *tippe_build_thread_by_diameter(double d_mm);
+/* The one whose pitch diameter d2 = d - 0.649519 P (ISO 724) is nearest d2_mm. */
+const tippe_build_thread *tippe_build_thread_by_pitch_diameter(double d2_mm);
+/* Tap drill for a full-form internal thread: d - P (ISO 2306's rule for
+ * metric threads, about 77 % thread engagement). */
+double tippe_build_tap_drill_mm(const tippe_build_thread *t);
+
+/* How the weight's place is measured. */
+typedef enum {
+    TIPPE_BUILD_MEASURE_NONE, /* no hole or rod on the axis found: Z2 only */
+    TIPPE_BUILD_MEASURE_HOLE, /* weight's end below the rim of a hole in a printed body */
+    TIPPE_BUILD_MEASURE_ROD   /* weight's end below the top end of a fixed rod */
+} tippe_build_measure;
+
+typedef struct {
+    int reachable;                 /* the group has a run within the physical travel */
+    int robust;                    /* its robust width is > 0 */
+    double from_mm, to_mm;         /* the widest run (nominal) */
+    double band_from_mm, band_to_mm; /* tolerance band at each end (0 at the travel's end) */
+    double robust_from_mm, robust_to_mm; /* the run less its bands */
+    double set_z2_mm;              /* the middle of the robust range (of the run if none) */
+    /* depths (mm, positive below the reference) at robust_from, set, robust_to;
+     * NAN without a reference */
+    double depth_from_mm, depth_set_mm, depth_to_mm;
+    double turns_from, turns_set, turns_to; /* depth / pitch; NAN without a pitch */
+    /* spin the behaviour needs (rev/s): at set_z2 and the largest over the robust
+     * range (0: any spin, group I) */
+    double spin_needed_rev_s, spin_needed_max_rev_s;
+    const char *spin_rule;         /* "any spin (theta = 0 stable)", "n0 > n*", "n0 > n-" */
+    double spin_launch_rev_s;      /* the check's spin: 1.25 x spin_needed_rev_s (group I:
+                                      the middle of the hand's range) */
+    int beyond_hand;               /* spin_launch above the hand's range (launch options) */
+    tippe_verdict verdict;         /* of the central launch at set_z2 */
+    int launch_status;             /* TIPPE_OK or the dynamics' error */
+    int verdict_ok;                /* the verdict is the behaviour's */
+    double launch_t_s;             /* when it was decided */
+} tippe_build_setting;
+
+/* One line of the bill of materials. */
+typedef struct {
+    char what[256];    /* "set screw M10x12, ISO 4026 (DIN 913), brass" */
+    char detail[320];  /* dimensions, hole, thread */
+    int quantity;
+} tippe_build_bom_line;
+
+enum { TIPPE_BUILD_MAX_BOM = 16 };
+
+/* How the hole that takes the screw is printed. */
+typedef enum {
+    TIPPE_BUILD_HOLE_TAP,   /* at the thread's tap drill, to be tapped (the default) */
+    TIPPE_BUILD_HOLE_SLIDE  /* the design's hole plus the clearance: a sliding fit */
+} tippe_build_hole_fit;
+
+typedef struct {
+    tippe_build_hole_fit hole_fit;
+    const char *const *sets; /* the design's overrides (as loaded), for the 3-in-1 search */
+    int n_sets;
+    double clearance_mm;     /* export's radial clearance of holes for hardware */
+    const char *catalogue;   /* hardware catalogue file; NULL: none */
+    tippe_launch_options launch;
+} tippe_build_options;
+
+typedef struct {
+    char design_name[256], design_file[1024];
+    double radius_mm;
+    double travel_from_mm, travel_to_mm; /* physical travel */
+    int three_in_one;
+    tippe_build_setting set[3];          /* I stays up, II flips, III hangs */
+    /* measuring */
+    tippe_build_measure measure;
+    char reference[200];                 /* "the rim of hole 'hole' (printed 9.43 mm)" */
+    double reference_z_mm;               /* its height above the centre */
+    double hole_diameter_mm;             /* the hole as printed, or 0 */
+    int hole_part;                       /* its part index (a void), or -1 */
+    int hole_tapped;                     /* printed at the tap drill (hole_fit TAP) */
+    /* Weighing the print to calibrate its infill: the print model's mass of the
+     * printed part with the hole as the mass model has it, less the same with
+     * the hole as printed (same infill): add it to the scale's reading before
+     * giving measured_mass_g. NAN when not applicable (no print block, no hole). */
+    double weigh_offset_g;
+    double rod_diameter_mm;              /* the rod the weight is threaded on, or 0 */
+    int reference_up;                    /* 1: the reference faces +z (depth = ref - top end) */
+    double weight_end_offset_mm;         /* the measured end of the weight above Z2 */
+    char weight_name[128];
+    /* the weight's thread */
+    int has_thread;
+    tippe_build_thread thread;           /* d_mm, pitch_mm (name: NULL, see thread_name) */
+    char thread_name[16];                /* "M10" */
+    char catalogue_item[64];             /* "M10x12" when matched, else "" */
+    char catalogue_title[160];
+    double tap_drill_mm;
+    int thread_assumed;                  /* 1: no catalogue match, the nearest ISO size */
+    int n_bom;
+    tippe_build_bom_line bom[TIPPE_BUILD_MAX_BOM];
+    char note[4][320];                   /* facts a maker should know */
+    int n_notes;
+    /* how each printed part is printed (its print block, or solid) */
+    int n_print;
+    struct {
+        char part[64], material[64];
+        int has_block;                   /* 0: no print block: modelled solid (100 %) */
+        tippe_print_settings settings;
+        double infill;                   /* used by the model (calibrated or the slicer's) */
+        int calibrated;
+    } print[4];
+    int needs_split;                     /* the printed body closes around hardware */
+    /* Not 3-in-1: single changes that make it so, found by the model (each
+     * field scanned over its range with the zones swept at every value, the
+     * nearest edge of the 3-in-1 values bisected to 1e-3 of the range). */
+    int n_advice;
+    struct {
+        char field[160];
+        double now, value;   /* the design's value and the edge found */
+        int at_least;        /* 1: 3-in-1 at value and above (towards it), 0: at and below */
+        char text[400];
+    } advice[6];
+    int n_steps;
+    char step[10][400];                  /* assembly steps, in order */
+} tippe_build_sheet;
+
+/* Whether the design's printed body closes around its hardware, so that it
+ * must be printed in halves (tippe export --split). */
+int tippe_build_needs_split(const tippe_design *d, double clearance_mm);
+
+void tippe_build_options_default(tippe_build_options *o);
+
+/* Everything above. TIPPE_EINPUT for a design that cannot be swept or a
+ * catalogue that does not read; a launch that fails is recorded in its
+ * setting (launch_status), not returned. */
+int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
+                        tippe_build_sheet *out, tippe_error *err);
+
+/* "stays up", "flips", "hangs" for 0, 1, 2; the group's name "I", "II", "III". */
+const char *tippe_build_behaviour(int family);
+const char *tippe_build_family(int family);
+/* The verdict the behaviour's launch should end in. */
+tippe_verdict tippe_build_expected_verdict(int family);
+
+/* Reports: the sheet as a cJSON object, and as Markdown a maker reads. */
+struct cJSON;
+struct cJSON *tippe_build_json(const tippe_build_sheet *s);
+void tippe_build_markdown(FILE *f, const tippe_build_sheet *s);
+
+/* Depth gauges, one per setting, printed flat side down:
+ * - a screw in a hole: a flat disc (GAUGE_FLANGE_MM thick, 8 mm wider than the
+ *   hole) with a pin on its face, pin_mm long (the setting's depth below the
+ *   rim) and 1 mm narrower than the printed hole: put the pin in the hole, the
+ *   disc on the rim, and turn the screw until it touches the pin's end;
+ * - a bead on a rod: a sleeve pin_mm long (the depth below the rod's end) that
+ *   slides over the rod (0.25 mm radial play): the bead is set when the sleeve,
+ *   standing on it, is flush with the rod's end.
+ * A gauge exists for a reachable setting whose depth is at least
+ * TIPPE_BUILD_GAUGE_MIN_MM (a screw standing out of the ball, or nearly flush,
+ * is measured with the caliper). */
+#define TIPPE_BUILD_GAUGE_MIN_MM 1.0
+#define TIPPE_BUILD_GAUGE_FLANGE_MM 2.0
+int tippe_build_gauge_applies(const tippe_build_sheet *s, int family, double *pin_mm);
+/* Writes setting family's gauge as binary STL (TIPPE_EINPUT if none applies). */
+int tippe_build_gauge_write(const tippe_build_sheet *s, int family, const char *path,
+                            tippe_error *err);
+
+/* The sheet on one page (A3 landscape): the section drawing with the weight
+ * at the flip's setting, the settings table, bill of materials, thread, print
+ * settings, notes and steps. The format follows path's extension: .pdf, .svg
+ * (cairo; text as glyphs) or .png (1906 x 1347 px). Written atomically. */
+int tippe_build_sheet_write(const tippe_design *d, const tippe_build_sheet *s, const char *path,
+                            tippe_error *err);
+
+#endif
