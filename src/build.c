@@ -50,6 +50,25 @@ const tippe_build_thread *tippe_build_thread_by_pitch_diameter(double d2_mm)
 
 double tippe_build_tap_drill_mm(const tippe_build_thread *t) { return t->d_mm - t->pitch_mm; }
 
+/* TIPPE_BUILD_INSERT_SOURCE's chart, non-flanged inserts, pilot hole -0/+0.1 mm. */
+static const tippe_build_insert inserts[] = {
+    {"M3", 4.0, 4.4}, {"M4", 5.6, 6.1}, {"M5", 6.4, 7.1}, {"M6", 8.0, 8.5},
+};
+
+const tippe_build_insert *tippe_build_insert_for(const char *thread)
+{
+    for (size_t k = 0; thread && k < sizeof inserts / sizeof inserts[0]; k++)
+        if (!strcmp(inserts[k].thread, thread))
+            return &inserts[k];
+    return NULL;
+}
+
+/* ISO 724: basic minor diameter of the internal thread, D1 = D - (5 sqrt(3) / 8) P. */
+static double minor_diameter_mm(const tippe_build_thread *t)
+{
+    return t->d_mm - 1.082531754730548 * t->pitch_mm;
+}
+
 static const char *const behaviours[3] = {"stays up", "flips", "hangs"};
 static const char *const families[3] = {"I", "II", "III"};
 
@@ -65,6 +84,7 @@ void tippe_build_options_default(tippe_build_options *o)
 {
     memset(o, 0, sizeof *o);
     o->clearance_mm = tippe_profile_defaults().clearance_mm;
+    o->hole_fit = TIPPE_BUILD_HOLE_DESIGN;
     tippe_launch_options_default(&o->launch);
 }
 
@@ -199,6 +219,101 @@ static int find_hole(const tippe_design *d, const tippe_profile_set *ps, double 
         return 1;
     }
     return 0;
+}
+
+/* A tap or insert fit belongs on the hole the weight's screw enters (hole,
+ * -1: none): any other hole with one is an error naming the field. */
+static int check_fits(const tippe_design *d, int hole, tippe_error *err)
+{
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        int fit = tippe_design_part_fit(d, i);
+        if (i == hole || fit == TIPPE_DESIGN_FIT_NONE || fit == TIPPE_DESIGN_FIT_SLIDE)
+            continue;
+        tippe_design_part_info p;
+        tippe_design_part(d, i, &p);
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%s: parts[%d].fit: \"%s\" on hole '%s', which no screw of the "
+                               "weight enters (a tap or insert fit is for the axial hole the "
+                               "weight is screwed into, open at a pole)",
+                               tippe_design_path(d), i,
+                               fit == TIPPE_DESIGN_FIT_TAP ? "tap" : "insert", p.name);
+    }
+    return TIPPE_OK;
+}
+
+/* The printed diameter of hole part for a tap or insert fit on thread t. */
+static int fit_diameter(const tippe_design *d, int part, tippe_build_hole_fit fit,
+                        int from_design, const tippe_build_thread *t, const char *tname,
+                        double *dia, char *note, size_t note_size,
+                        const tippe_build_insert **ins, tippe_error *err)
+{
+    *ins = NULL;
+    if (fit == TIPPE_BUILD_HOLE_TAP) {
+        *dia = tippe_build_tap_drill_mm(t);
+        snprintf(note, note_size, "%s x %g tap drill", tname, t->pitch_mm);
+        return TIPPE_OK;
+    }
+    *ins = tippe_build_insert_for(tname);
+    if (!*ins && !from_design)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%s: --hole insert: no heat-set insert for the screw's %s thread "
+                               "in the table (M3 .. M6, from %s); use tap or slide",
+                               tippe_design_path(d), tname, TIPPE_BUILD_INSERT_SOURCE);
+    if (!*ins)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%s: parts[%d].fit: \"insert\": no heat-set insert for the "
+                               "screw's %s thread in the table (M3 .. M6, from %s); use \"tap\" "
+                               "or \"slide\"",
+                               tippe_design_path(d), part, tname, TIPPE_BUILD_INSERT_SOURCE);
+    *dia = (*ins)->pilot_mm;
+    snprintf(note, note_size, "%s heat-set insert's hole", tname);
+    return TIPPE_OK;
+}
+
+int tippe_build_design_fit(const tippe_design *d, double clearance_mm, int *part,
+                           double *diameter_mm, char *note, size_t note_size, tippe_error *err)
+{
+    *part = -1;
+    *diameter_mm = 0;
+    if (note_size)
+        note[0] = '\0';
+    double top, bottom, r_weight, bore;
+    char name[128];
+    weight_extent(d, &top, &bottom, &r_weight, &bore, name, sizeof name);
+    tippe_profile_options po = tippe_profile_defaults();
+    po.clearance_mm = clearance_mm;
+    tippe_profile_set ps;
+    tippe_error perr = {0};
+    int have_ps = tippe_profile_build(d, &po, &ps, &perr) == TIPPE_OK;
+    tippe_build_sheet *s = calloc(1, sizeof *s);
+    if (!s) {
+        if (have_ps)
+            tippe_profile_set_free(&ps);
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    }
+    s->hole_part = -1;
+    s->radius_mm = tippe_design_radius_mm(d);
+    if (isfinite(top))
+        find_hole(d, have_ps ? &ps : NULL, clearance_mm, r_weight, s);
+    if (have_ps)
+        tippe_profile_set_free(&ps);
+    int hole = s->hole_part;
+    free(s);
+    int rc = check_fits(d, hole, err);
+    int fit = hole >= 0 ? tippe_design_part_fit(d, hole) : TIPPE_DESIGN_FIT_NONE;
+    if (rc || (fit != TIPPE_DESIGN_FIT_TAP && fit != TIPPE_DESIGN_FIT_INSERT))
+        return rc;
+    /* the screw is modelled as a cylinder of its pitch diameter (the
+     * catalogue's convention), as tippe_build_compute assumes without a
+     * catalogue match */
+    const tippe_build_thread *t = tippe_build_thread_by_pitch_diameter(2 * r_weight);
+    const tippe_build_insert *ins;
+    rc = fit_diameter(d, hole,
+                      fit == TIPPE_DESIGN_FIT_TAP ? TIPPE_BUILD_HOLE_TAP : TIPPE_BUILD_HOLE_INSERT,
+                      1, t, t->name, diameter_mm, note, note_size, &ins, err);
+    if (!rc)
+        *part = hole;
+    return rc;
 }
 
 /* A fixed rod the weight is threaded on: a hardware cylinder on the axis that
@@ -458,6 +573,12 @@ static void bill(const tippe_design *d, const tippe_profile_set *ps, const tippe
             bom(s, 1, what, "%s", sd.moving ? "moving (the weight)" : "fixed hardware");
         }
     }
+    if (s->hole_insert)
+        bom(s, 1, "heat-set threaded insert, brass, non-flanged",
+            "%s (for the %s x %g screw), outer diameter at most %.1f mm; pressed into the "
+            "hole's rim, printed %.1f mm across (its vendor's pilot hole: %s)",
+            s->insert.thread, s->thread_name, s->thread.pitch_mm, s->insert.outer_max_mm,
+            s->insert.pilot_mm, TIPPE_BUILD_INSERT_SOURCE);
     int split = 0;
     for (int k = 0; ps && k < ps->n_warnings; k++)
         split |= strstr(ps->warning[k], "--split") != NULL;
@@ -535,7 +656,12 @@ static void steps(tippe_build_sheet *s)
                 "assumes it), no supports inside the hole.");
     if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
         double bite = 0.5 * (s->thread.d_mm - s->hole_diameter_mm);
-        if (s->hole_diameter_mm > s->tap_drill_mm + 1e-9)
+        if (s->hole_insert)
+            step(s, "Press the %s heat-set insert into the hole at the rim with a soldering iron "
+                    "(its insert tip), straight along the axis, until its top is flush with the "
+                    "rim; let it cool. The hole is printed %.1f mm across for it.",
+                 s->insert.thread, s->hole_diameter_mm);
+        else if (s->hole_diameter_mm > s->tap_drill_mm + 1e-9)
             step(s, "Check the hole: printed diameter %.2f mm for the %s x %g screw, wider than "
                     "its tap drill %.2f mm (a sliding fit: the design's hole, the screw's pitch "
                     "diameter, plus the clearance): the thread bites %.2f mm deep into the wall. "
@@ -576,6 +702,15 @@ int tippe_build_gauge_applies(const tippe_build_sheet *s, int f, double *pin_mm)
         return 0;
     *pin_mm = s->set[f].depth_set_mm;
     return 1;
+}
+
+double tippe_build_gauge_pin_diameter_mm(const tippe_build_sheet *s)
+{
+    double d = s->hole_diameter_mm - 1;
+    /* an insert's bore is its thread: the pin passes its minor diameter (ISO 724) */
+    if (s->hole_insert && s->has_thread)
+        d = fmin(d, minor_diameter_mm(&s->thread) - 0.5);
+    return d;
 }
 
 /* ------------------------------------------------------ 3-in-1 search */
@@ -801,20 +936,49 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
             out->has_thread = 1;
         }
     }
+    /* how the screw's hole is printed: the option, else the design's fit, else tapped */
+    tippe_build_hole_fit fit = o->hole_fit;
+    if ((rc = check_fits(d, out->measure == TIPPE_BUILD_MEASURE_HOLE ? out->hole_part : -1,
+                         err))) {
+        if (have_ps)
+            tippe_profile_set_free(&ps);
+        return rc;
+    }
+    if (fit == TIPPE_BUILD_HOLE_DESIGN) {
+        int df = out->hole_part >= 0 ? tippe_design_part_fit(d, out->hole_part)
+                                     : TIPPE_DESIGN_FIT_NONE;
+        out->hole_fit_from_design = df != TIPPE_DESIGN_FIT_NONE;
+        fit = df == TIPPE_DESIGN_FIT_SLIDE    ? TIPPE_BUILD_HOLE_SLIDE
+              : df == TIPPE_DESIGN_FIT_INSERT ? TIPPE_BUILD_HOLE_INSERT
+                                              : TIPPE_BUILD_HOLE_TAP;
+    }
     if (out->has_thread) {
         out->tap_drill_mm = tippe_build_tap_drill_mm(&out->thread);
-        if (out->measure == TIPPE_BUILD_MEASURE_HOLE && o->hole_fit == TIPPE_BUILD_HOLE_TAP) {
-            /* printed at the tap drill: its rim, where depths start, moves out */
-            double R = out->radius_mm, a = out->tap_drill_mm / 2, rim = sqrt(R * R - a * a);
-            out->hole_tapped = 1;
-            out->hole_diameter_mm = out->tap_drill_mm;
+        if (out->measure == TIPPE_BUILD_MEASURE_HOLE && fit != TIPPE_BUILD_HOLE_SLIDE) {
+            /* printed for its thread: its rim, where depths start, moves */
+            const tippe_build_insert *ins;
+            double dia;
+            if ((rc = fit_diameter(d, out->hole_part, fit, o->hole_fit == TIPPE_BUILD_HOLE_DESIGN,
+                                   &out->thread, out->thread.name, &dia,
+                                   out->fit_note, sizeof out->fit_note, &ins, err))) {
+                if (have_ps)
+                    tippe_profile_set_free(&ps);
+                return rc;
+            }
+            double R = out->radius_mm, a = dia / 2, rim = sqrt(R * R - a * a);
+            out->hole_tapped = fit == TIPPE_BUILD_HOLE_TAP;
+            out->hole_insert = fit == TIPPE_BUILD_HOLE_INSERT;
+            if (ins)
+                out->insert = *ins;
+            out->hole_diameter_mm = dia;
             out->reference_z_mm = out->reference_up ? rim : -rim;
             tippe_design_part_info hp;
             tippe_design_part(d, out->hole_part, &hp);
             snprintf(out->reference, sizeof out->reference,
-                     "the rim of hole '%s' at the %s pole (printed %.2f mm across, the tap drill), "
+                     "the rim of hole '%s' at the %s pole (printed %.2f mm across, %s), "
                      "where a caliper's depth rod rests",
-                     hp.name, out->reference_up ? "top (+z)" : "bottom (-z)", 2 * a);
+                     hp.name, out->reference_up ? "top (+z)" : "bottom (-z)", 2 * a,
+                     ins ? "for the insert" : "the tap drill");
         }
         if (out->thread.name)
             snprintf(out->thread_name, sizeof out->thread_name, "%s", out->thread.name);
@@ -868,6 +1032,25 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     else
         note(out, "No hole or rod on the axis holds the weight: set it by Z2 directly "
                   "(its midpoint's height above the sphere's centre).");
+    if (out->hole_insert) {
+        /* below the insert the pilot hole is wider than the thread: the screw
+         * holds only while all of it is within the insert */
+        char t[320];
+        int n = snprintf(t, sizeof t, "The screw holds only within the insert (below it the "
+                                      "pilot hole is wider than the thread): its far end lies");
+        for (int f = 0, k = 0; f < 3; f++)
+            if (out->set[f].reachable && n > 0 && (size_t)n < sizeof t)
+                n += snprintf(t + n, sizeof t - (size_t)n, "%s %.1f mm (%s)", k++ ? "," : "",
+                              out->set[f].depth_set_mm + (top - bottom), behaviours[f]);
+        if (n > 0 && (size_t)n < sizeof t)
+            snprintf(t + n, sizeof t - (size_t)n,
+                     " below the rim: an insert shorter than that lets the screw fall; tap "
+                     "the hole instead.");
+        note(out, t);
+        note(out, "The insert's brass is not in the mass model (the zones are the design's): "
+                  "for a top whose zones hold with it, add the insert to the design as a fixed "
+                  "tube of its size and weight. Weigh the print before pressing the insert in.");
+    }
     if (isfinite(out->weigh_offset_g)) {
         char t[320];
         snprintf(t, sizeof t,
@@ -911,7 +1094,20 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         cJSON_AddStringToObject(m, "weight", s->weight_name);
         if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
             cJSON_AddNumberToObject(m, "hole_printed_diameter_mm", s->hole_diameter_mm);
-            cJSON_AddStringToObject(m, "hole_fit", s->hole_tapped ? "tap" : "slide");
+            cJSON_AddStringToObject(m, "hole_fit", s->hole_tapped   ? "tap"
+                                                   : s->hole_insert ? "insert"
+                                                                    : "slide");
+            cJSON_AddStringToObject(m, "hole_fit_from",
+                                    s->hole_fit_from_design ? "design" : "default or option");
+            if (s->hole_insert) {
+                cJSON *in = cJSON_AddObjectToObject(m, "insert");
+                if (in) {
+                    cJSON_AddStringToObject(in, "thread", s->insert.thread);
+                    cJSON_AddNumberToObject(in, "pilot_hole_mm", s->insert.pilot_mm);
+                    cJSON_AddNumberToObject(in, "outer_diameter_max_mm", s->insert.outer_max_mm);
+                    cJSON_AddStringToObject(in, "source", TIPPE_BUILD_INSERT_SOURCE);
+                }
+            }
             cJSON_AddItemToObject(m, "weigh_offset_g", num(s->weigh_offset_g));
         }
         cJSON_AddNumberToObject(m, "weight_end_above_z2_mm", s->weight_end_offset_mm);

@@ -255,8 +255,6 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
     tippe_top top;
     tippe_design_top_any(d, z2, &top);
     tippe_profile_options po = tippe_profile_defaults();
-    char fit_note[64];
-    snprintf(fit_note, sizeof fit_note, "%s x %g tap drill", s->thread_name, s->thread.pitch_mm);
     tippe_profile_set ps;
     tippe_error pe = {0};
     int have_ps = tippe_profile_build(d, &po, &ps, &pe) == TIPPE_OK;
@@ -271,8 +269,9 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
                                .clearance_applied = have_ps ? ps.clearance_applied : NULL,
                                .chord_mm = 0.05,
                                .fit_part = s->hole_part,
-                               .fit_diameter_mm = s->hole_tapped ? s->hole_diameter_mm : 0,
-                               .fit_note = fit_note,
+                               .fit_diameter_mm =
+                                   s->hole_tapped || s->hole_insert ? s->hole_diameter_mm : 0,
+                               .fit_note = s->fit_note,
                                .has_cut = s->needs_split,
                                .joint = s->needs_split,
                                .cut_z_mm = 0};
@@ -402,7 +401,8 @@ int tippe_build_gauge_write(const tippe_build_sheet *s, int f, const char *path,
     const double t = TIPPE_BUILD_GAUGE_FLANGE_MM;
     if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
         /* printed flange down: the pin's end is pin mm from the flange's face */
-        double rp = 0.5 * s->hole_diameter_mm - 0.5, rf = 0.5 * s->hole_diameter_mm + 4;
+        double rp = 0.5 * tippe_build_gauge_pin_diameter_mm(s),
+               rf = 0.5 * s->hole_diameter_mm + 4;
         tippe_profile_point p[6] = {{0, 0}, {rf, 0}, {rf, t}, {rp, t}, {rp, t + pin}, {0, t + pin}};
         memcpy(pt, p, sizeof p);
         n = 6;

@@ -91,6 +91,7 @@ typedef struct {
     double infill;          /* used: print.infill, or the calibrated one */
     double solid_mass_kg, skin_mass_kg, print_rel_error;
     double mass_kg;         /* signed contribution */
+    int fit;                /* a hole's "fit": TIPPE_DESIGN_FIT_* (NONE when not given) */
 } part;
 
 struct tippe_design {
@@ -189,9 +190,9 @@ static const char *const top_keys[] = {"name", "notes", "radius_mm", "travel_mm"
 static const char *const top_string_keys[] = {"name", "notes", "materials", NULL};
 static const char *const part_common_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from",
-    "clip", "moving", "may_protrude", "print", NULL};
+    "clip", "moving", "may_protrude", "print", "fit", NULL};
 static const char *const part_string_keys[] = {"name", "shape", "notes", "material",
-                                               "cut_from", "clip", NULL};
+                                               "cut_from", "clip", "fit", NULL};
 static const char *const ball_keys[] = {"radius_mm", NULL};
 static const char *const shell_keys[] = {"radius_mm", "thickness_mm", NULL};
 static const char *const cylinder_keys[] = {"radius_mm", "inner_radius_mm", "height_mm", NULL};
@@ -201,7 +202,7 @@ static const char *const *const shape_keys[N_SHAPES] = {ball_keys, shell_keys, c
                                                         cylinder_keys, torus_keys};
 static const char *const all_part_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from", "clip",
-    "moving", "may_protrude", "print", "radius_mm", "inner_radius_mm", "thickness_mm",
+    "moving", "may_protrude", "print", "fit", "radius_mm", "inner_radius_mm", "thickness_mm",
     "height_mm", "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
 static const char *const print_keys[] = {"perimeters", "line_width_mm", "top_bottom_layers",
                                          "layer_height_mm", "infill", "measured_mass_g",
@@ -443,6 +444,38 @@ static int parse_print(const tippe_json_reader *c, const cJSON *obj, const char 
     return TIPPE_OK;
 }
 
+/* How a hole is printed for the hardware it takes ("fit", docs/design-format.md):
+ * only a void has one; the printed diameter is decided where the thread is
+ * known (tippe/build.h). */
+static int parse_part_fit(const tippe_json_reader *c, const cJSON *obj, const char *pre, part *p)
+{
+    char fit[16] = "", path[64];
+    int has_fit = 0;
+    int rc = tippe_json_string(c, obj, pre, "fit", 0, fit, sizeof fit, &has_fit);
+    if (rc || !has_fit)
+        return rc;
+    tippe_json_path(path, sizeof path, pre, "fit");
+    if (!p->is_void)
+        return tippe_json_fail(c, path,
+                               "only a hole (a void) has a fit: it says how the hole is printed "
+                               "for the screw it takes");
+    if (!strcmp(fit, "tap"))
+        p->fit = TIPPE_DESIGN_FIT_TAP;
+    else if (!strcmp(fit, "insert"))
+        p->fit = TIPPE_DESIGN_FIT_INSERT;
+    else if (!strcmp(fit, "slide"))
+        p->fit = TIPPE_DESIGN_FIT_SLIDE;
+    else if (!strcmp(fit, "self_tap"))
+        return tippe_json_fail(c, path,
+                               "\"self_tap\" is not supported: no sourced hole diameter for a "
+                               "metric set screw cutting its own thread in a print (fits: tap, "
+                               "insert, slide)");
+    else
+        return tippe_json_fail(c, path,
+                               "must be \"tap\", \"insert\" or \"slide\", not '%s'", fit);
+    return TIPPE_OK;
+}
+
 /* What part p is made of and how it is cut: material or density, void and
  * cut_from, clip (has_moving, has_protrude: whether the file gave those). */
 static int parse_part_material(const tippe_json_reader *c, const cJSON *obj, const char *pre,
@@ -516,8 +549,7 @@ static int parse_part_material(const tippe_json_reader *c, const cJSON *obj, con
                                    "a moving part cannot be clipped (its shape would change as "
                                    "it moves)");
     }
-
-    return TIPPE_OK;
+    return parse_part_fit(c, obj, pre, p);
 }
 
 /* The dimensions of part p's shape. */
@@ -2041,6 +2073,11 @@ int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
     out->may_protrude = p->may_protrude;
     out->printable = p->printable;
     return TIPPE_OK;
+}
+
+int tippe_design_part_fit(const tippe_design *d, int i)
+{
+    return i < 0 || i >= d->n_parts ? TIPPE_DESIGN_FIT_NONE : d->parts[i].fit;
 }
 
 int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out)

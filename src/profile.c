@@ -515,9 +515,11 @@ static int trapped(geos_ctx *g, const GEOSGeometry *p, const GEOSGeometry *print
 }
 
 /* The first hardware part that cannot be slid in along the axis from either
- * end (a rod or weight inside a closed shell), or -1. */
+ * end (a rod or weight inside a closed shell), or -1. A hole printed for its
+ * thread (fit_diameter_mm > 0: a tap drill, narrower than the screw) takes the
+ * moving screw by being tapped, so the screw is tried at the hole's size. */
 static int hardware_enclosed(geos_ctx *g, const tippe_design *d, const GEOSGeometry *printed,
-                             double sag)
+                             double sag, double fit_diameter_mm)
 {
     double R = tippe_design_radius_mm(d), t0, t1;
     tippe_design_travel_mm(d, &t0, &t1);
@@ -525,6 +527,9 @@ static int hardware_enclosed(geos_ctx *g, const tippe_design *d, const GEOSGeome
         tippe_design_solid s;
         if (!part_is_hardware(d, i) || tippe_design_part_solid(d, i, &s))
             continue;
+        if (fit_diameter_mm > 0 && s.moving && !strcmp(s.shape, "cylinder") &&
+            s.inner_radius_mm == 0)
+            s.radius_mm = fmin(s.radius_mm, 0.5 * fit_diameter_mm - 1e-3);
         GEOSGeometry *p = solid_region(g, &s, 0, s.moving ? 0.5 * (t0 + t1) : 0, sag);
         int stuck = p && trapped(g, p, printed, 4 * R);
         if (p)
@@ -783,7 +788,8 @@ int tippe_profile_build(const tippe_design *d, const tippe_profile_options *o,
             warn(s, "%s: a printed wall is about %.2f mm thick, thinner than %.2f mm (two "
                     "perimeters): the slicer may drop or weaken it",
                  tippe_design_path(d), s->thinnest_wall_mm, o->min_wall_mm);
-        int stuck = o->split ? -1 : hardware_enclosed(&g, d, printed, o->chord_mm / 2);
+        int stuck = o->split ? -1 : hardware_enclosed(&g, d, printed, o->chord_mm / 2,
+                                                        o->fit_diameter_mm);
         if (stuck >= 0) {
             tippe_design_part_info p;
             tippe_design_part(d, stuck, &p);

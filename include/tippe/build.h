@@ -82,9 +82,36 @@ enum { TIPPE_BUILD_MAX_BOM = 16 };
 
 /* How the hole that takes the screw is printed. */
 typedef enum {
-    TIPPE_BUILD_HOLE_TAP,   /* at the thread's tap drill, to be tapped (the default) */
-    TIPPE_BUILD_HOLE_SLIDE  /* the design's hole plus the clearance: a sliding fit */
+    TIPPE_BUILD_HOLE_TAP,    /* at the thread's tap drill, to be tapped */
+    TIPPE_BUILD_HOLE_SLIDE,  /* the design's hole plus the clearance: a sliding fit */
+    TIPPE_BUILD_HOLE_INSERT, /* at a heat-set insert's pilot hole (tippe_build_insert_for) */
+    TIPPE_BUILD_HOLE_DESIGN  /* the hole's "fit" in the design file, else TAP (the default) */
 } tippe_build_hole_fit;
+
+/* A brass heat-set threaded insert for a metric thread: the pilot hole its
+ * vendor says to make in a thermoplastic part, and its largest outer diameter
+ * (non-flanged). Source: TIPPE_BUILD_INSERT_SOURCE; sizes M3 .. M6 only. */
+typedef struct {
+    const char *thread;   /* "M3" */
+    double pilot_mm;      /* hole diameter (tolerance -0 / +0.1 mm) */
+    double outer_max_mm;  /* the insert's knurl, at most */
+} tippe_build_insert;
+#define TIPPE_BUILD_INSERT_SOURCE                                                          \
+    "Accu Ltd, 'Threaded Heat-Set Insert Pilot Hole Size Charts for 3D Printing' "          \
+    "(accu.co.uk/p/488), heat-set inserts, non-flanged"
+/* The insert for thread (ISO name, "M3"), or NULL: the table has none. */
+const tippe_build_insert *tippe_build_insert_for(const char *thread);
+
+/* The screw's hole as the design's "fit" asks it printed (for tippe export,
+ * which has no --hole): *part the hole's part index and *diameter_mm its
+ * printed diameter when the fit is tap (the tap drill of the ISO 261 thread
+ * nearest the screw's modelled pitch diameter) or insert (the insert's pilot
+ * hole); *part = -1 when the design gives no fit or "slide" (the clearance
+ * applies). note: why, for the drawing ("M10 x 1.5 tap drill"). TIPPE_EINPUT,
+ * naming the file and the field, for a tap or insert fit on a hole that no
+ * screw of the weight enters, or an insert the table does not have. */
+int tippe_build_design_fit(const tippe_design *d, double clearance_mm, int *part,
+                           double *diameter_mm, char *note, size_t note_size, tippe_error *err);
 
 typedef struct {
     tippe_build_hole_fit hole_fit;
@@ -108,6 +135,11 @@ typedef struct {
     double hole_diameter_mm;             /* the hole as printed, or 0 */
     int hole_part;                       /* its part index (a void), or -1 */
     int hole_tapped;                     /* printed at the tap drill (hole_fit TAP) */
+    int hole_insert;                     /* printed for a heat-set insert (INSERT) */
+    int hole_fit_from_design;            /* the fit is the design file's "fit" */
+    tippe_build_insert insert;           /* with hole_insert */
+    char fit_note[64];                   /* why the hole is printed so ("M10 x 1.5 tap drill"),
+                                            with hole_tapped or hole_insert */
     /* Weighing the print to calibrate its infill: the print model's mass of the
      * printed part with the hole as the mass model has it, less the same with
      * the hole as printed (same infill): add it to the scale's reading before
@@ -179,7 +211,7 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s);
 /* Depth gauges, one per setting, printed flat side down:
  * - a screw in a hole: a flat disc (GAUGE_FLANGE_MM thick, 8 mm wider than the
  *   hole) with a pin on its face, pin_mm long (the setting's depth below the
- *   rim) and 1 mm narrower than the printed hole: put the pin in the hole, the
+ *   rim) and of tippe_build_gauge_pin_diameter_mm: put the pin in the hole, the
  *   disc on the rim, and turn the screw until it touches the pin's end;
  * - a bead on a rod: a sleeve pin_mm long (the depth below the rod's end) that
  *   slides over the rod (0.25 mm radial play): the bead is set when the sleeve,
@@ -190,6 +222,9 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s);
 #define TIPPE_BUILD_GAUGE_MIN_MM 1.0
 #define TIPPE_BUILD_GAUGE_FLANGE_MM 2.0
 int tippe_build_gauge_applies(const tippe_build_sheet *s, int family, double *pin_mm);
+/* A hole gauge's pin diameter: 1 mm narrower than the printed hole, and with a
+ * heat-set insert 0.5 mm narrower than its thread's minor diameter (ISO 724). */
+double tippe_build_gauge_pin_diameter_mm(const tippe_build_sheet *s);
 /* Writes setting family's gauge as binary STL (TIPPE_EINPUT if none applies). */
 int tippe_build_gauge_write(const tippe_build_sheet *s, int family, const char *path,
                             tippe_error *err);

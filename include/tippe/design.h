@@ -114,6 +114,17 @@ int tippe_design_n_parts(const tippe_design *d);
 /* Fills *out for part i (0-based, file order); TIPPE_EINPUT if i is out of range. */
 int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out);
 
+/* A hole's "fit" (docs/design-format.md): how it is printed for the screw it
+ * takes. NONE when the file gives none (each verb keeps its default). */
+enum {
+    TIPPE_DESIGN_FIT_NONE = 0,
+    TIPPE_DESIGN_FIT_TAP,    /* at the thread's tap drill, to be tapped */
+    TIPPE_DESIGN_FIT_INSERT, /* at a heat-set insert's pilot hole */
+    TIPPE_DESIGN_FIT_SLIDE   /* the design's hole plus the export clearance */
+};
+/* Part i's fit (NONE for i out of range). */
+int tippe_design_part_fit(const tippe_design *d, int i);
+
 /* How part i is printed (docs/design-format.md, "Printed parts"). A part
  * without a print block is solid: printed = 0 and the rest is zero. */
 typedef struct {

@@ -39,9 +39,11 @@ static int build_parse(build_args *a, int argc, char **argv)
         {.name = "clearance-mm", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.clearance_mm,
          .arg = "MM", .unit = "mm", .min = 0, .max = 2, .def = "0.2",
          .help = "radial clearance of holes that take hardware (as tippe export)"},
-        {.name = "hole", .kind = TIPPE_CLI_STRING, .value = &a->hole, .arg = "FIT", .def = "tap",
-         .help = "the screw's hole: tap (printed at the thread's tap drill, d - P, and\n"
-                 "tapped) or slide (the design's hole plus the clearance)"},
+        {.name = "hole", .kind = TIPPE_CLI_STRING, .value = &a->hole, .arg = "FIT",
+         .def = "the hole's \"fit\" in the design, else tap",
+         .help = "the screw's hole, overriding the design's fit: tap (printed at the\n"
+                 "thread's tap drill, d - P, and tapped), insert (at a heat-set insert's\n"
+                 "pilot hole, M3 .. M6) or slide (the design's hole plus the clearance)"},
         {.name = "no-export", .kind = TIPPE_CLI_FLAG, .value = &a->no_export,
          .help = "write the sheet only, not the files to print"},
         {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
@@ -52,8 +54,8 @@ static int build_parse(build_args *a, int argc, char **argv)
     };
     tippe_cli_spec spec = {
         .verb = VERB,
-        .synopsis = "DESIGN.json -o DIR [--catalogue FILE] [--clearance-mm MM] [--no-export]\n"
-                    "       [--json] [--set FIELD=VALUE]",
+        .synopsis = "DESIGN.json -o DIR [--catalogue FILE] [--clearance-mm MM] [--hole FIT]\n"
+                    "       [--no-export] [--json] [--set FIELD=VALUE]",
         .about = "What a maker follows, from the design's numbers: for each behaviour (stays\n"
                  "up, flips, hangs) the robust range of Z2 (the widest zone within the travel\n"
                  "less its tolerance bands) as the depth of the weight's end below the rim of\n"
@@ -75,12 +77,17 @@ static int build_parse(build_args *a, int argc, char **argv)
     int rc = tippe_cli_parse(&spec, argc, argv, &a->path, &n);
     if (rc)
         return rc;
-    if (!a->hole || !strcmp(a->hole, "tap"))
+    if (!a->hole)
+        a->o.hole_fit = TIPPE_BUILD_HOLE_DESIGN;
+    else if (!strcmp(a->hole, "tap"))
         a->o.hole_fit = TIPPE_BUILD_HOLE_TAP;
+    else if (!strcmp(a->hole, "insert"))
+        a->o.hole_fit = TIPPE_BUILD_HOLE_INSERT;
     else if (!strcmp(a->hole, "slide"))
         a->o.hole_fit = TIPPE_BUILD_HOLE_SLIDE;
     else
-        return tippe_cli_usage_error(VERB, "--hole %s: not a fit (tap or slide)", a->hole);
+        return tippe_cli_usage_error(VERB, "--hole %s: not a fit (tap, insert or slide)",
+                                     a->hole);
     return 0;
 }
 
@@ -217,11 +224,10 @@ static int run(build_args *a, const tippe_design *d)
         if (s->set[1].reachable)
             a->q.z2_mm = s->set[1].set_z2_mm;
         rc = write_sheet(d, s, sheet, &err);
-        if (s->hole_tapped) {
+        if (s->hole_tapped || s->hole_insert) {
             a->q.profile.fit_part = s->hole_part;
             a->q.profile.fit_diameter_mm = s->hole_diameter_mm;
-            snprintf(fit_note, sizeof fit_note, "%s x %g tap drill", s->thread_name,
-                     s->thread.pitch_mm);
+            snprintf(fit_note, sizeof fit_note, "%s", s->fit_note);
             a->q.fit_note = fit_note;
         }
     }

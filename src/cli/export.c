@@ -1,6 +1,7 @@
 /* tippe export: printed bodies as STL and 3MF, OpenSCAD source, section drawing. */
 #include "cli.h"
 
+#include "tippe/build.h"
 #include "tippe/design.h"
 #include "tippe/export.h"
 #include "tippe/theory.h"
@@ -92,7 +93,15 @@ static void print_text(const tippe_design *d, const tippe_export_request *q,
     printf("chord      %.4g mm (mesh within it of the true surface)\n", q->profile.chord_mm);
     int grown = 0;
     for (int i = 0; i < r->profiles.n_parts; i++)
-        if (r->profiles.clearance_applied[i]) {
+        if (r->profiles.clearance_applied[i] && q->profile.fit_diameter_mm > 0 &&
+            i == q->profile.fit_part) {
+            tippe_design_part_info p;
+            tippe_design_part(d, i, &p);
+            printf("fit        hole '%s' printed %.4g mm across: %s (the design's fit); "
+                   "printed only, not in the mass model\n",
+                   p.name, q->profile.fit_diameter_mm, q->fit_note);
+            grown = 1;
+        } else if (r->profiles.clearance_applied[i]) {
             tippe_design_part_info p;
             tippe_design_part(d, i, &p);
             printf("clearance  %.4g mm radial on hole '%s' (takes hardware); printed only, "
@@ -138,6 +147,18 @@ static cJSON *to_json(const tippe_design *d, const tippe_export_request *q,
     cJSON_AddNumberToObject(o, "z2_mm", q->z2_mm);
     cJSON_AddNumberToObject(o, "chord_mm", q->profile.chord_mm);
     cJSON_AddNumberToObject(o, "clearance_mm", q->profile.clearance_mm);
+    if (q->profile.fit_diameter_mm > 0) {
+        tippe_design_part_info p;
+        tippe_design_part(d, q->profile.fit_part, &p);
+        cJSON *fit = cJSON_AddObjectToObject(o, "hole_fit");
+        if (fit) {
+            cJSON_AddStringToObject(fit, "hole", p.name);
+            cJSON_AddNumberToObject(fit, "printed_diameter_mm", q->profile.fit_diameter_mm);
+            cJSON_AddStringToObject(fit, "why", q->fit_note);
+        }
+    } else {
+        cJSON_AddNullToObject(o, "hole_fit");
+    }
     cJSON_AddBoolToObject(o, "clearance_in_mass_model", 0);
     cJSON *holes = cJSON_AddArrayToObject(o, "holes_with_clearance");
     for (int i = 0; holes && i < r->profiles.n_parts; i++)
@@ -243,8 +264,11 @@ static int export_parse(export_args *a, int argc, char **argv)
                  "source of the whole top and its dimensioned section drawing.",
         .after = "Each mesh is checked before it is written (closed, manifold, outward, no\n"
                  "degenerate facet); the report gives its volume beside the exact volume of the\n"
-                 "body. Exit status: 0 ok, 2 bad usage or design (or nothing printable), 1 a\n"
-                 "file could not be written. See docs/export.md.",
+                 "body. A hole whose design gives \"fit\": \"tap\" or \"insert\" is printed at\n"
+                 "the screw's tap drill or the heat-set insert's pilot hole instead of with\n"
+                 "the clearance (docs/design-format.md). Exit status: 0 ok, 2 bad usage or\n"
+                 "design (or nothing printable), 1 a file could not be written. See\n"
+                 "docs/export.md.",
         .opts = opts,
         .min_args = 1,
         .max_args = 1,
@@ -328,9 +352,21 @@ int tippe_cli_export(int argc, char **argv)
     tippe_design_travel_mm(d, &t0, &t1);
     a.q.z2_mm = isnan(a.z2_mm) ? 0.5 * (t0 + t1) : a.z2_mm;
     tippe_top top;
-    char note[200];
-    int made = 0;
-    if ((rc = tippe_design_top(d, a.q.z2_mm, &top, &err))) {
+    char note[200], fit_note[64];
+    int made = 0, fit_part;
+    double fit_mm;
+    /* the screw's hole as the design's fit asks (tap drill or insert pilot hole) */
+    if ((rc = tippe_build_design_fit(d, a.q.profile.clearance_mm, &fit_part, &fit_mm, fit_note,
+                                     sizeof fit_note, &err))) {
+        rc = tippe_cli_fail(VERB, &err, rc);
+    } else if (fit_part >= 0) {
+        a.q.profile.fit_part = fit_part;
+        a.q.profile.fit_diameter_mm = fit_mm;
+        a.q.fit_note = fit_note;
+    }
+    if (rc) {
+        /* reported */
+    } else if ((rc = tippe_design_top(d, a.q.z2_mm, &top, &err))) {
         rc = tippe_cli_fail(VERB, &err, rc);
     } else {
         zone_note(d, a.q.z2_mm, note, sizeof note);
