@@ -318,7 +318,8 @@ int tippe_build_design_fit(const tippe_design *d, double clearance_mm, int *part
 
 /* A fixed rod the weight is threaded on: a hardware cylinder on the axis that
  * fits its bore. */
-static int find_rod(const tippe_design *d, double bore, double *rod_r, tippe_build_sheet *out)
+static int find_rod(const tippe_design *d, double bore, double *rod_r, int *rod_part,
+                    tippe_build_sheet *out)
 {
     for (int i = 0; bore > 0 && i < tippe_design_n_parts(d); i++) {
         tippe_design_solid s;
@@ -336,6 +337,7 @@ static int find_rod(const tippe_design *d, double bore, double *rod_r, tippe_bui
         out->reference_up = 1;
         out->reference_z_mm = top;
         *rod_r = s.radius_mm;
+        *rod_part = i;
         out->rod_diameter_mm = 2 * s.radius_mm;
         snprintf(out->reference, sizeof out->reference, "the top (+z) end of rod '%s'", p.name);
         return 1;
@@ -549,7 +551,32 @@ static void bill(const tippe_design *d, const tippe_profile_set *ps, const tippe
         } else if (!sd.moving && cyl && sd.inner_radius_mm == 0) {
             double len = sd.height_mm;
             const char *ends = "cut square";
-            if (sd.clip_radius_mm > 0) {
+            int ns = 0;
+            double lo = 0, hi = 0;
+            for (int k = 0; ps && k < ps->n_sockets; k++)
+                if (ps->socket_part[k] == i) {
+                    ns++;
+                    lo = fmin(lo, ps->socket_floor_z_mm[k]);
+                    hi = fmax(hi, ps->socket_floor_z_mm[k]);
+                }
+            if (ns == 2) {
+                /* held on the axis by the shell's sockets (tippe/profile.h):
+                 * longer than the model's rod, whose ends the cavity clips */
+                len = hi - lo;
+                char t[320];
+                double extra_g = (M_PI * sd.radius_mm * sd.radius_mm * len * 1e-3 *
+                                      p.density_g_cm3 - p.mass_kg * 1e3);
+                snprintf(t, sizeof t,
+                         "The rod is cut %.2f mm long, its ends %.1f mm deep in the shell's "
+                         "sockets at the poles (they hold it on the axis): %+.3f g against the "
+                         "model's rod, whose ends the cavity clips; the sockets remove %.1f mm^3 "
+                         "of printed wall. Neither is in the mass model.",
+                         len, TIPPE_PROFILE_SOCKET_DEPTH_MM, extra_g,
+                         ps->socket_volume_mm3[0] + ps->socket_volume_mm3[1]);
+                note(s, t);
+                ends = "cut square; its ends sit in the shell's sockets at the poles";
+                s->rod_sockets = 1;
+            } else if (sd.clip_radius_mm > 0) {
                 double cap = sqrt(sd.clip_radius_mm * sd.clip_radius_mm -
                                   sd.radius_mm * sd.radius_mm);
                 if (sd.z_mm + sd.height_mm / 2 > cap && sd.z_mm - sd.height_mm / 2 < -cap) {
@@ -682,10 +709,13 @@ static void steps(tippe_build_sheet *s)
                 "below the rod's top end%s: the printed sleeve gauge (-gauge-*.stl) standing on "
                 "the bead is then flush with the rod's end. Fix it with a drop of threadlocker.",
              first ? " for the behaviour wanted" : "");
-        step(s, "Put the joint ring in the groove of the lower half's cut face, lay the rod on "
-                "the axis, close with the upper half (its groove over the ring) and join them "
+        step(s, "Put the joint ring in the groove of the lower half's cut face, stand the rod "
+                "on the axis%s, close with the upper half (its groove over the ring) and join them "
                 "(adhesive in the bill of materials); the bead can no longer be moved: build "
-                "one top per behaviour, or choose the one you want first.");
+                "one top per behaviour, or choose the one you want first.",
+             s->rod_sockets ? " with its lower end in the lower half's socket (the upper end "
+                              "goes into the upper half's)"
+                            : "");
     } else {
         step(s, "Place the weight at the set Z2 of the table (its midpoint above the sphere's "
                 "centre).");
@@ -906,11 +936,22 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     weight_extent(d, &top, &bottom, &r_weight, &bore, out->weight_name, sizeof out->weight_name);
     tippe_profile_options po = tippe_profile_defaults();
     po.clearance_mm = o->clearance_mm;
+    po.sockets = 1; /* a rod spanning a cavity gets them (tippe build exports them so) */
     tippe_profile_set ps;
     tippe_error perr = {0};
     int have_ps = tippe_profile_build(d, &po, &ps, &perr) == TIPPE_OK;
-    if (isfinite(top) && !find_hole(d, have_ps ? &ps : NULL, o->clearance_mm, r_weight, out))
-        find_rod(d, bore, &rod_r, out);
+    int rod_part = -1;
+    if (isfinite(top) && !find_hole(d, have_ps ? &ps : NULL, o->clearance_mm, r_weight, out) &&
+        find_rod(d, bore, &rod_r, &rod_part, out)) {
+        /* a rod held by sockets is cut longer: its top end is the upper socket's floor */
+        for (int k = 0; have_ps && k < ps.n_sockets; k++)
+            if (ps.socket_part[k] == rod_part && ps.socket_floor_z_mm[k] > 0) {
+                out->reference_z_mm = ps.socket_floor_z_mm[k];
+                snprintf(out->reference + strlen(out->reference),
+                         sizeof out->reference - strlen(out->reference),
+                         " (cut to sit in the shell's sockets)");
+            }
+    }
     out->weight_end_offset_mm = out->reference_up ? top : bottom;
 
     /* the thread the weight turns on */

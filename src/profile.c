@@ -631,6 +631,57 @@ static int check_options(const tippe_design *d, const tippe_profile_options *o, 
     return TIPPE_OK;
 }
 
+/* The sockets (tippe_profile_options.sockets) cut from *printed, their
+ * volumes taken from *vol: a pocket {r <= a, cavity surface <= |z| <= floor}
+ * keeps pi a^2 floor - (2 pi / 3) (Rc^3 - (Rc^2 - a^2)^(3/2)) of wall (the
+ * cavity's spherical cap under the pocket's floor, by the shell method). */
+static int cut_sockets(geos_ctx *g, const tippe_design *d, const tippe_profile_options *o,
+                       tippe_profile_set *s, GEOSGeometry **printed, double *vol)
+{
+    double R = tippe_design_radius_mm(d), depth = TIPPE_PROFILE_SOCKET_DEPTH_MM;
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_solid sd;
+        if (!part_is_hardware(d, i) || tippe_design_part_solid(d, i, &sd) || sd.moving ||
+            strcmp(sd.shape, "cylinder") || sd.inner_radius_mm > 0 || !(sd.clip_radius_mm > 0) ||
+            sd.clip_radius_mm > R - 1e-9 || sd.clip_inner_mm > 0)
+            continue;
+        double Rc = sd.clip_radius_mm, r = sd.radius_mm, a = r + o->clearance_mm;
+        if (a >= Rc)
+            continue;
+        double cap = sqrt(Rc * Rc - r * r), rim = sqrt(Rc * Rc - a * a), floor_z = rim + depth;
+        double wall = sqrt(R * R - a * a) - floor_z;
+        for (int e = 1; e >= -1; e -= 2) {
+            double end = sd.z_mm + e * sd.height_mm / 2;
+            if (e * end < cap - 1e-6 || s->n_sockets >= 2)
+                continue; /* the rod does not reach this pole */
+            if (floor_z < Rc || wall < o->min_wall_mm) {
+                tippe_design_part_info p;
+                tippe_design_part(d, i, &p);
+                warn(s, "%s: no socket for rod '%s' at the %s pole: the wall there is too thin "
+                        "(%.2f mm would be left under a %.1f mm deep pocket)",
+                     tippe_design_path(d), p.name, e > 0 ? "+z" : "-z", wall,
+                     depth);
+                continue;
+            }
+            GEOSGeometry *pocket = e > 0 ? rect(g, 0, a, rim - 1, floor_z)
+                                         : rect(g, 0, a, -floor_z, -rim + 1);
+            *printed = pocket ? combine(g, *printed, pocket, OP_DIFF) : NULL;
+            if (!*printed)
+                return 0;
+            double v = M_PI * a * a * floor_z -
+                       2 * M_PI / 3 * (Rc * Rc * Rc - pow(Rc * Rc - a * a, 1.5));
+            *vol -= v;
+            int k = s->n_sockets++;
+            s->socket_part[k] = i;
+            s->socket_r_mm[k] = a;
+            s->socket_rim_z_mm[k] = e * rim;
+            s->socket_floor_z_mm[k] = e * floor_z;
+            s->socket_volume_mm3[k] = v;
+        }
+    }
+    return 1;
+}
+
 /* The printed parts' union less the voids: *printed, with each printed part's
  * own region in part_geom (for naming) and the exact volume of the whole. */
 static int printed_region(geos_ctx *g, const tippe_design *d, const tippe_profile_options *o,
@@ -678,6 +729,8 @@ static int printed_region(geos_ctx *g, const tippe_design *d, const tippe_profil
     *printed = holes ? combine(g, solid, holes, OP_DIFF) : solid;
     if (!*printed)
         return fail(g, err, d, "cutting the voids from the printed parts");
+    if (o->sockets && !cut_sockets(g, d, o, s, printed, &vol))
+        return fail(g, err, d, "cutting the rod's sockets");
     double area = 0;
     GEOSArea_r(g->h, *printed, &area);
     if (area < TINY_AREA_MM2)

@@ -224,6 +224,13 @@ int tippe_scad_write(const tippe_design *d, const tippe_profile_set *s,
     calls(f, d, PRINTED, "            ");
     fprintf(f, "        }\n");
     calls(f, d, VOIDS, "        ");
+    /* the rod's sockets (--sockets), 1 mm into the wall beyond their rim */
+    for (int k = 0; k < s->n_sockets; k++) {
+        double rim = s->socket_rim_z_mm[k], fl = s->socket_floor_z_mm[k];
+        double z0 = fl > 0 ? rim - 1 : fl, z1 = fl > 0 ? fl : rim + 1;
+        fprintf(f, "        translate([0, 0, %.10g]) cylinder(h = %.10g, r = %.10g); // socket\n",
+                z0, z1 - z0, s->socket_r_mm[k]);
+    }
     fprintf(f, "    }\n}\n\nmodule hardware() {\n");
     if (!calls(f, d, HARDWARE, "    "))
         fprintf(f, "    // none\n");

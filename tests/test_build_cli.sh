@@ -93,12 +93,16 @@ for f in "$tmp"/*.json; do
 done
 
 # --- a shell design: the bead on a threaded rod, measured from the rod's end ----
+# (the rod held on the axis by sockets at the poles, tests/test_rod_sockets.sh)
 python3 - "$tmp/shell-band.json" designs/shell-band.json <<'EOF' && ok || bad "shell-band: bead depth on the rod"
 import json, math, sys
 b = json.load(open(sys.argv[1])); d = json.load(open(sys.argv[2]))
 p = {x["name"]: x for x in d["parts"]}
 cav = d["radius_mm"] - p["shell"]["thickness_mm"]
-rod_top = math.sqrt(cav ** 2 - p["rod"]["radius_mm"] ** 2)   # the rod clipped to the cavity
+# the rod is cut to sit 1 mm deep in the shell's sockets: their side (the rod's
+# radius + 0.2 mm clearance) meets the cavity at sqrt(cav^2 - a^2)
+a = p["rod"]["radius_mm"] + 0.2
+rod_top = math.sqrt(cav ** 2 - a ** 2) + 1.0
 assert b["measure"]["kind"] == "rod" and b["thread"]["name"] == "M6"
 st = b["settings"][2]
 assert abs(st["depth_set_mm"] - (rod_top - (st["set_z2_mm"] + p["weight"]["height_mm"] / 2))) < 1e-9

@@ -171,6 +171,8 @@ typedef struct {
         int calibrated;
     } print[4];
     int needs_split;                     /* the printed body closes around hardware */
+    int rod_sockets;                     /* the rod is held by sockets at both poles
+                                            (tippe_profile_options.sockets) */
     /* Not 3-in-1: single changes that make it so, found by the model (each
      * field scanned over its range with the zones swept at every value, the
      * nearest edge of the 3-in-1 values bisected to 1e-3 of the range). */

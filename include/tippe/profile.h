@@ -64,7 +64,17 @@ typedef struct {
      * tap drill) instead of its own diameter plus the clearance; 0: off. */
     int fit_part;
     double fit_diameter_mm;
+    /* Sockets for a rod that spans a shell's cavity (a fixed hardware cylinder
+     * clipped to the cavity, held by nothing else): at each pole the rod
+     * reaches, a pocket of the rod's radius plus clearance_mm, cut into the
+     * wall TIPPE_PROFILE_SOCKET_DEPTH_MM beyond where its side meets the
+     * cavity, so that the rod (cut square, that much longer at each end) is
+     * held on the axis: clipped to the cavity it could tilt about the centre.
+     * Printed only, like the clearance: the mass model keeps the design. */
+    int sockets;
 } tippe_profile_options;
+
+#define TIPPE_PROFILE_SOCKET_DEPTH_MM 1.0
 
 /* The joint ring of split halves: its grooves are this deep in each half, mm;
  * a wall narrower than twice TIPPE_PROFILE_JOINT_MIN_MM (plus the clearance)
@@ -88,6 +98,12 @@ typedef struct {
      * r in [r_wall, r_mid - clearance], 2 depth - clearance high. */
     int n_grooves;
     double groove_r_in_mm[8], groove_r_wall_mm[8], groove_r_mid_mm[8];
+    /* The sockets cut (options.sockets): rod part, pocket radius, the height
+     * where the pocket's side meets the cavity (rim) and of its flat floor,
+     * signed (negative at the -z pole); the printed volume each removes. */
+    int n_sockets;
+    int socket_part[2];
+    double socket_r_mm[2], socket_rim_z_mm[2], socket_floor_z_mm[2], socket_volume_mm3[2];
 } tippe_profile_set;
 
 /* Defaults: chord 0.01 mm, clearance 0.2 mm, min wall 0.9 mm (two 0.45 mm

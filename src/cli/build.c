@@ -193,6 +193,7 @@ static int run(build_args *a, const tippe_design *d)
         /* a body that closes around its hardware is printed in halves */
         a->q.profile.split = tippe_build_needs_split(d, a->o.clearance_mm);
         a->q.profile.joint = a->q.profile.split; /* and joined on a ring */
+        a->q.profile.sockets = a->q.profile.split; /* a rod spanning it held at the poles */
         double t0, t1;
         tippe_design_travel_mm(d, &t0, &t1);
         a->q.z2_mm = 0.5 * (t0 + t1);

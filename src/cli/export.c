@@ -111,6 +111,14 @@ static void print_text(const tippe_design *d, const tippe_export_request *q,
         }
     if (!grown)
         printf("clearance  none applied (no hole of a printed body takes hardware)\n");
+    for (int k = 0; k < r->profiles.n_sockets; k++) {
+        tippe_design_part_info p;
+        tippe_design_part(d, r->profiles.socket_part[k], &p);
+        printf("socket     for rod '%s' at z %+.3f .. %+.3f mm, %.4g mm across (printed only, "
+               "not in the mass model)\n",
+               p.name, r->profiles.socket_rim_z_mm[k], r->profiles.socket_floor_z_mm[k],
+               2 * r->profiles.socket_r_mm[k]);
+    }
     printf("\n%-18s %-10s %9s %8s %13s %13s %10s  %s\n", "body", "material", "triangles",
            "steps", "mesh mm^3", "exact mm^3", "rel.err", "bounding box mm (x, y, z)");
     for (int b = 0; b < r->n_bodies; b++) {
@@ -192,6 +200,21 @@ static cJSON *to_json(const tippe_design *d, const tippe_export_request *q,
         cJSON_AddNumberToObject(j, "open_edges", (double)e->audit.open_edges);
         cJSON_AddNumberToObject(j, "degenerate_facets", (double)e->audit.degenerate_triangles);
     }
+    cJSON *so = cJSON_AddArrayToObject(o, "sockets");
+    for (int k = 0; so && k < r->profiles.n_sockets; k++) {
+        tippe_design_part_info p;
+        tippe_design_part(d, r->profiles.socket_part[k], &p);
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(so, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        cJSON_AddStringToObject(j, "rod", p.name);
+        cJSON_AddNumberToObject(j, "diameter_mm", 2 * r->profiles.socket_r_mm[k]);
+        cJSON_AddNumberToObject(j, "rim_z_mm", r->profiles.socket_rim_z_mm[k]);
+        cJSON_AddNumberToObject(j, "floor_z_mm", r->profiles.socket_floor_z_mm[k]);
+        cJSON_AddNumberToObject(j, "volume_mm3", r->profiles.socket_volume_mm3[k]);
+    }
     cJSON *w = cJSON_AddArrayToObject(o, "warnings");
     for (int k = 0; w && k < r->profiles.n_warnings; k++)
         cJSON_AddItemToArray(w, cJSON_CreateString(r->profiles.warning[k]));
@@ -249,6 +272,10 @@ static int export_parse(export_args *a, int argc, char **argv)
          .help = "with --split: a groove 2 mm deep in both cut faces (the inner half of\n"
                  "each wall) and a printed ring that fills both, to align and join the\n"
                  "halves (body joint-ring; --clearance-mm of play)"},
+        {.name = "sockets", .kind = TIPPE_CLI_FLAG, .value = &q->profile.sockets,
+         .help = "with --split: a socket at each pole for a rod that spans the shell's\n"
+                 "cavity (a pocket of the rod's radius plus the clearance, 1 mm into the\n"
+                 "wall), so that the rod, cut that much longer, is held on the axis"},
         {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
          .help = "print the report as one JSON object"},
         {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
@@ -258,7 +285,7 @@ static int export_parse(export_args *a, int argc, char **argv)
     tippe_cli_spec spec = {
         .verb = VERB,
         .synopsis = "DESIGN.json -o DIR [--z2 MM] [--format LIST] [--chord-mm MM]\n"
-                    "       [--clearance-mm MM] [--split [--split-z MM] [--joint]] [--json]",
+                    "       [--clearance-mm MM] [--split [--split-z MM] [--joint] [--sockets]] [--json]",
         .about = "Writes what a maker prints from: every fixed part of a printable material,\n"
                  "less the voids cut from it, as one solid per printed body; the OpenSCAD\n"
                  "source of the whole top and its dimensioned section drawing.",
@@ -282,6 +309,9 @@ static int export_parse(export_args *a, int argc, char **argv)
         return tippe_cli_usage_error(VERB, "--split-z needs --split");
     if (q->profile.joint && !q->profile.split)
         return tippe_cli_usage_error(VERB, "--joint needs --split");
+    if (q->profile.sockets && !q->profile.split)
+        return tippe_cli_usage_error(VERB, "--sockets needs --split (the rod is put in "
+                                           "before the halves are joined)");
     if (parse_formats(a->formats, &q->formats))
         return 2;
     if (!strcmp(a->dir, "-")) /* several files cannot share standard output */
