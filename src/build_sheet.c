@@ -255,6 +255,7 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
     tippe_top top;
     tippe_design_top_any(d, z2, &top);
     tippe_profile_options po = tippe_profile_defaults();
+    po.sockets = s->needs_split; /* as tippe build exports it */
     tippe_profile_set ps;
     tippe_error pe = {0};
     int have_ps = tippe_profile_build(d, &po, &ps, &pe) == TIPPE_OK;
@@ -274,7 +275,14 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
                                .fit_note = s->fit_note,
                                .has_cut = s->needs_split,
                                .joint = s->needs_split,
-                               .cut_z_mm = 0};
+                               .cut_z_mm = 0,
+                               .n_sockets = have_ps ? ps.n_sockets : 0};
+    for (int k = 0; k < o.n_sockets; k++) {
+        o.socket_part[k] = ps.socket_part[k];
+        o.socket_r_mm[k] = ps.socket_r_mm[k];
+        o.socket_rim_z_mm[k] = ps.socket_rim_z_mm[k];
+        o.socket_floor_z_mm[k] = ps.socket_floor_z_mm[k];
+    }
     double top_y = M + 52;
     int rc = tippe_drawing_render(d, &o, cr, M, top_y, 520, 433, err);
     if (have_ps)

@@ -222,6 +222,22 @@ static void part_polys(dlist *L, const tippe_design *d, int i, double dz, double
     tippe_profile_rings_free(rings, n);
 }
 
+/* A filled rectangle |r| <= r_mm between heights z0 and z1. */
+static void box(dlist *L, double r_mm, double z0, double z1, rgb fill, double hatch, int cross)
+{
+    item *t = add(L, K_POLY, 4);
+    if (!t)
+        return;
+    double p[8] = {-r_mm, z0, r_mm, z0, r_mm, z1, -r_mm, z1};
+    memcpy(t->xy, p, sizeof p);
+    t->fill = fill;
+    t->filled = 1;
+    t->hatch_deg = hatch;
+    t->cross = cross;
+    t->stroke = BLACK;
+    t->width_px = 1.4;
+}
+
 static void draw_parts(dlist *L, const tippe_design *d, const tippe_drawing_options *o,
                        material_list *mats)
 {
@@ -256,6 +272,20 @@ static void draw_parts(dlist *L, const tippe_design *d, const tippe_drawing_opti
             style st = material_style(kind_index(mats, k), filament);
             rgb fill = moving ? (rgb){1.0, 0.80, 0.55} : st.fill;
             part_polys(L, d, i, dz, o->chord_mm, fill, st.hatch_deg, st.cross, 1);
+            if (pass == 0) /* the sockets cut into the wall, as voids are */
+                for (int q = 0; q < o->n_sockets; q++)
+                    box(L, o->socket_r_mm[q], o->socket_rim_z_mm[q], o->socket_floor_z_mm[q],
+                        WHITE, NAN, 0);
+            for (int q = 0; pass == 2 && q < o->n_sockets; q++) {
+                /* the rod as bought: cut square, reaching the socket's floor */
+                tippe_design_solid s;
+                tippe_design_part_solid(d, i, &s);
+                if (o->socket_part[q] != i)
+                    continue;
+                double rim = o->socket_rim_z_mm[q];
+                box(L, s.radius_mm, rim - (rim > 0 ? 1 : -1), o->socket_floor_z_mm[q], fill,
+                    st.hatch_deg, st.cross);
+            }
             if (moving) /* its own voids, if any */
                 for (int v = 0; v < n; v++) {
                     tippe_design_solid s;
@@ -291,16 +321,22 @@ static void diameter_dim(dlist *L, const char *name, double radius, double y_edg
 
 /* Vertical dimension on the right at x_line from y0 to y1, extension lines
  * from x_edge. */
-static void height_dim(dlist *L, const char *name, const char *field, double x_edge,
-                       double x_line, double y0, double y1)
+static void height_dim_at(dlist *L, const char *name, const char *field, double x_edge,
+                          double x_line, double y0, double y1, double y_label)
 {
     line(L, x_edge, y0, x_line + 1.5, y0, DIM, 0.7, 0, 0, 0);
     line(L, x_edge, y1, x_line + 1.5, y1, DIM, 0.7, 0, 0, 0);
     line(L, x_line, y0, x_line, y1, DIM, 1, 0, 1, 1);
     char what[100];
     snprintf(what, sizeof what, "%s.%s", name, field);
-    dim_text(L, x_line + 1.2, 0.5 * (y0 + y1) - 0.6, 0, what, y1 - y0, "%.4g", y1 - y0);
-    text(L, x_line + 1.2, 0.5 * (y0 + y1) - 3.2, 0, 12, DIM, "%s", name);
+    dim_text(L, x_line + 1.2, y_label - 0.6, 0, what, y1 - y0, "%.4g", y1 - y0);
+    text(L, x_line + 1.2, y_label - 3.2, 0, 12, DIM, "%s", name);
+}
+
+static void height_dim(dlist *L, const char *name, const char *field, double x_edge,
+                       double x_line, double y0, double y1)
+{
+    height_dim_at(L, name, field, x_edge, x_line, y0, y1, 0.5 * (y0 + y1));
 }
 
 /* Top z of a (possibly clipped) cylinder wall at radius r. */
@@ -338,7 +374,7 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
         if (!strcmp(s.shape, "cylinder") || !strcmp(s.shape, "tube")) {
             double y_line = R + 5 + 6.5 * top_k++;
             diameter_dim(L, name, s.radius_mm, wall_top(&s, s.radius_mm, dz), y_line, extra);
-            if (s.inner_radius_mm > 0 && !s.moving) {
+            if (s.inner_radius_mm > 0) { /* a tube's bore, a bead's too */
                 y_line = R + 5 + 6.5 * top_k++;
                 char what[100];
                 snprintf(what, sizeof what, "%s bore", name);
@@ -349,6 +385,36 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
                 double x_line = R + 6 + 12 * right_k++;
                 height_dim(L, name, "height_mm", s.radius_mm, x_line,
                            s.z_mm + dz - s.height_mm / 2, s.z_mm + dz + s.height_mm / 2);
+            } else if (!s.is_void && !s.moving && s.inner_radius_mm == 0 &&
+                       !tippe_profile_part_filament(d, i)) {
+                /* a rod the clip ends: its length as bought, cut square where its end
+                 * edges meet the clip ball, or at the sockets' floors */
+                double cap = sqrt(s.clip_radius_mm * s.clip_radius_mm - s.radius_mm * s.radius_mm);
+                double lo = fmax(s.z_mm - s.height_mm / 2, -cap), hi = fmin(s.z_mm + s.height_mm / 2, cap);
+                int held = 0;
+                for (int q = 0; q < o->n_sockets; q++)
+                    if (o->socket_part[q] == i) {
+                        held++;
+                        if (o->socket_floor_z_mm[q] > 0)
+                            hi = o->socket_floor_z_mm[q];
+                        else
+                            lo = o->socket_floor_z_mm[q];
+                        if (o->socket_floor_z_mm[q] > 0) {
+                            char what[100];
+                            snprintf(what, sizeof what, "%s.socket_diameter_mm", name);
+                            double ra = o->socket_r_mm[q];
+                            line(L, ra, o->socket_floor_z_mm[q], R * 0.45, R + 3, DIM, 0.8, 0, 1, 0);
+                            dim_text(L, R * 0.45 + 0.8, R + 2.6, 0, what, 2 * ra,
+                                     "socket \u2300%.4g, %.4g deep", 2 * ra,
+                                     o->socket_floor_z_mm[q] - o->socket_rim_z_mm[q]);
+                        }
+                    }
+                double x_line = R + 6 + 12 * right_k++;
+                /* the label below the middle, clear of a cut plane at the equator */
+                double yl = lo + 0.3 * (hi - lo);
+                height_dim_at(L, name, "length_mm", s.radius_mm, x_line, lo, hi, yl);
+                text(L, x_line + 1.2, yl - 6.4, 0, 12, DIM, "%s",
+                     held ? "cut square, in sockets" : "cut square");
             }
         } else if (!strcmp(s.shape, "shell") && !s.is_void) {
             double b = 40 * M_PI / 180, ri = s.radius_mm - s.thickness_mm;

@@ -126,7 +126,14 @@ static int write_drawings(const tippe_design *d, const tippe_export_request *q,
                                .fit_note = q->fit_note,
                                .has_cut = q->profile.split,
                                .joint = q->profile.joint,
-                               .cut_z_mm = q->profile.split_z_mm};
+                               .cut_z_mm = q->profile.split_z_mm,
+                               .n_sockets = s->n_sockets};
+    for (int k = 0; k < s->n_sockets; k++) {
+        o.socket_part[k] = s->socket_part[k];
+        o.socket_r_mm[k] = s->socket_r_mm[k];
+        o.socket_rim_z_mm[k] = s->socket_rim_z_mm[k];
+        o.socket_floor_z_mm[k] = s->socket_floor_z_mm[k];
+    }
     for (int k = first; k < n; k++) {
         int rc = tippe_drawing_write(d, &o, paths[k], err);
         if (rc)

@@ -70,6 +70,23 @@ assert any("socket" in s for s in b["steps"]) and any("sockets" in n for n in b[
 EOF
 check "build writes the halves with the sockets (the .scad cuts them)" \
     grep -q "// socket$" "$tmp/b/shell-rod-nylon-printed.scad"
+# the drawing dimensions what is bought and cut: the rod's length to the
+# sockets' floors, the socket, the bead's bore
+/usr/bin/python3 tests/export_check.py svg "$tmp/b/shell-rod-nylon-printed-section.svg" >"$tmp/svg.json"
+python3 - "$tmp/svg.json" $d <<'EOF' && ok || bad "the drawing's rod length, socket and bore"
+import json, math, sys
+s, d = (json.load(open(f)) for f in sys.argv[1:])
+p = {x["name"]: x for x in d["parts"]}
+Rc = d["radius_mm"] - p["shell"]["thickness_mm"]
+a = p["rod"]["radius_mm"] + 0.2
+floor = math.sqrt(Rc ** 2 - a ** 2) + 1.0
+got = {x["name"]: x["mm"] for x in s["dims"]}
+want = {"rod.length_mm": 2 * floor, "rod.socket_diameter_mm": 2 * a,
+        "weight bore.diameter_mm": 2 * p["weight"]["inner_radius_mm"]}
+for k, v in want.items():
+    # the SVG states values to 10 significant digits: 1e-6 mm is ample
+    assert k in got and abs(got[k] - v) < 1e-6, (k, got.get(k), v)
+EOF
 
 # --- the OpenSCAD source renders with them and its printed part loses volume --
 if command -v openscad >/dev/null && /usr/bin/python3 -c "import stl" 2>/dev/null; then

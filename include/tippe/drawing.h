@@ -32,6 +32,10 @@ typedef struct {
      * grooves named when joint) */
     int has_cut, joint;
     double cut_z_mm;
+    /* a rod's sockets (tippe_profile_set's): drawn cut into the wall, the rod
+     * drawn to their floors and its length dimensioned; n_sockets 0: none */
+    int n_sockets, socket_part[2];
+    double socket_r_mm[2], socket_rim_z_mm[2], socket_floor_z_mm[2];
 } tippe_drawing_options;
 
 int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, const char *path,
