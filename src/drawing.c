@@ -385,6 +385,28 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
                 double x_line = R + 6 + 12 * right_k++;
                 height_dim(L, name, "height_mm", s.radius_mm, x_line,
                            s.z_mm + dz - s.height_mm / 2, s.z_mm + dz + s.height_mm / 2);
+            } else if (s.is_void && !s.moving && s.clip_radius_mm > 0 && s.clip_inner_mm == 0) {
+                /* a blind hole: its depth from the rim as printed (where a depth rod
+                 * rests: the hole's wall, grown or printed for its thread, meets the
+                 * clip ball) down to its floor */
+                double ap = s.radius_mm;
+                if (o->clearance_applied && o->clearance_applied[i])
+                    ap = o->fit_diameter_mm > 0 && i == o->fit_part ? 0.5 * o->fit_diameter_mm
+                                                                   : s.radius_mm + o->clearance_mm;
+                double rc = s.clip_radius_mm;
+                if (ap < rc) {
+                    double rim = sqrt(rc * rc - ap * ap);
+                    double hi = s.z_mm + s.height_mm / 2, lo = s.z_mm - s.height_mm / 2;
+                    int up = hi >= rim - 1e-9, down = lo <= -rim + 1e-9;
+                    if (up != down) {
+                        double x_line = R + 6 + 12 * right_k++;
+                        double y0 = up ? lo : -rim, y1 = up ? rim : hi;
+                        height_dim_at(L, name, "depth_mm", ap, x_line, y0, y1,
+                                      y0 + 0.3 * (y1 - y0));
+                        text(L, x_line + 1.2, y0 + 0.3 * (y1 - y0) - 6.4, 0, 12, DIM,
+                             "deep from the rim");
+                    }
+                }
             } else if (!s.is_void && !s.moving && s.inner_radius_mm == 0 &&
                        !tippe_profile_part_filament(d, i)) {
                 /* a rod the clip ends: its length as bought, cut square where its end

@@ -86,6 +86,24 @@ check "--hole tap overrides the design's insert" \
 check "the design's slide: the clearance fit (11.4 mm)" \
     json_ok "$tmp/b12.json" 'o["measure"]["hole_fit"] == "slide" and o["measure"]["hole_fit_from"] == "design" and abs(o["measure"]["hole_printed_diameter_mm"] - 11.4) < 1e-12'
 
+# --- the drawing: a blind hole's depth from the rim as printed -----------------
+bb=designs/drilled-ball-blind-printed.json
+for row in "tap 5.125" "slide 5.7"; do
+    read -r fit a <<<"$row"
+    "$tippe" export $bb -o "$tmp/bb-$fit" --format svg --set parts.hole.fit=$fit >/dev/null
+    /usr/bin/python3 tests/export_check.py svg "$tmp/bb-$fit/drilled-ball-blind-printed-section.svg" >"$tmp/svg.json"
+    # rim sqrt(R^2 - a^2) down to the floor z - h/2; the SVG states 10 digits
+    python3 - "$tmp/svg.json" $bb "$a" <<'EOF' && ok || bad "blind hole, fit $fit: the drawing's depth"
+import json, math, sys
+s, d = (json.load(open(f)) for f in sys.argv[1:3])
+a = float(sys.argv[3])
+h = [p for p in d["parts"] if p["name"] == "hole"][0]
+want = math.sqrt(d["radius_mm"] ** 2 - a * a) - (h["z_mm"] - h["height_mm"] / 2)
+got = [x["mm"] for x in s["dims"] if x["name"] == "hole.depth_mm"]
+assert len(got) == 1 and abs(got[0] - want) < 1e-6, (got, want)
+EOF
+done
+
 # --- refusals -----------------------------------------------------------------
 expect_fail "fit on a part that is not a hole" 2 "$m12: parts[0].fit: only a hole" -- \
     export $m12 -o "$tmp/x" --set parts.body.fit=tap
