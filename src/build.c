@@ -88,47 +88,35 @@ void tippe_build_options_default(tippe_build_options *o)
     tippe_launch_options_default(&o->launch);
 }
 
-static int family_of(tippe_group g)
-{
-    const char *f = tippe_group_family(g);
-    return !strcmp(f, "I") ? 0 : !strcmp(f, "II") ? 1 : !strcmp(f, "III") ? 2 : -1;
-}
-
 /* ------------------------------------------------------------ ranges */
 
 /* The run of each family with the largest robust width (the nominal widest if
- * none is robust), as tippe_sweep_robust_widths joins runs. */
+ * none is robust): the runs tippe_sweep_summarise measures. */
 static void robust_runs(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
                         tippe_build_setting set[3])
 {
-    for (int i = 0; i < r->n_zones;) {
-        const tippe_sweep_zone *z = &r->zones[i];
-        int f = z->within_travel ? family_of(z->group) : -1;
-        int j = i + 1;
-        while (f >= 0 && j < r->n_zones && r->zones[j].within_travel &&
-               family_of(r->zones[j].group) == f)
-            j++;
-        if (f >= 0) {
-            double from = z->z2_from_mm, to = r->zones[j - 1].z2_to_mm;
-            double bf = tippe_sweep_band_at(b, from), bt = tippe_sweep_band_at(b, to);
-            double w = to - from - bf - bt;
-            tippe_build_setting *s = &set[f];
-            double best_w = s->reachable ? s->robust_to_mm - s->robust_from_mm : -INFINITY;
-            int better = !s->reachable || (w > 0 && w > best_w) ||
-                         (!s->robust && w <= 0 && to - from > s->to_mm - s->from_mm);
-            if (better) {
-                s->reachable = 1;
-                s->robust = w > 0;
-                s->from_mm = from;
-                s->to_mm = to;
-                s->band_from_mm = bf;
-                s->band_to_mm = bt;
-                s->robust_from_mm = from + bf;
-                s->robust_to_mm = to - bt;
-            }
+    tippe_sweep_family_run *runs = malloc((size_t)(r->n_zones > 0 ? r->n_zones : 1) * sizeof *runs);
+    int n = runs ? tippe_sweep_family_runs(r, runs, r->n_zones) : 0;
+    for (int k = 0; k < n; k++) {
+        const double from = runs[k].from_mm, to = runs[k].to_mm;
+        double bf = tippe_sweep_band_at(b, from), bt = tippe_sweep_band_at(b, to);
+        double w = to - from - bf - bt;
+        tippe_build_setting *s = &set[runs[k].family];
+        double best_w = s->reachable ? s->robust_to_mm - s->robust_from_mm : -INFINITY;
+        int better = !s->reachable || (w > 0 && w > best_w) ||
+                     (!s->robust && w <= 0 && to - from > s->to_mm - s->from_mm);
+        if (better) {
+            s->reachable = 1;
+            s->robust = w > 0;
+            s->from_mm = from;
+            s->to_mm = to;
+            s->band_from_mm = bf;
+            s->band_to_mm = bt;
+            s->robust_from_mm = from + bf;
+            s->robust_to_mm = to - bt;
         }
-        i = j;
     }
+    free(runs);
     for (int f = 0; f < 3; f++) {
         tippe_build_setting *s = &set[f];
         if (!s->reachable)

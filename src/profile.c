@@ -31,6 +31,8 @@
  * intersections would leave slivers ~1e-15 mm thick that close a through hole
  * or keep touching parts apart. */
 #define GRID_MM 1e-6
+/* Cracks narrower than twice this are closed (mm): see close_cracks. */
+#define CRACK_MM 1e-5
 /* A region smaller than this is nothing (mm^2). */
 #define TINY_AREA_MM2 1e-9
 
@@ -682,6 +684,29 @@ static int cut_sockets(geos_ctx *g, const tippe_design *d, const tippe_profile_o
     return 1;
 }
 
+/* Closes cracks narrower than 2 CRACK_MM in region (consumed): a dilation by
+ * CRACK_MM and an erosion by as much (mitred joins, so corners come back where
+ * they were), then r >= 0 again on the grid. Where a clipped part (a band cut
+ * to the cavity) meets the part it is fused to along a shared chord, the point
+ * where its clip crosses that chord is rounded to the grid off the chord, and
+ * the snap-rounded union may leave the two walls 1e-6 mm apart along a whole
+ * chord: a crack 0.5 mm deep into the body whose two facing walls the mesh
+ * keeps, far outside the chord tolerance from the true (fused) surface. */
+static GEOSGeometry *close_cracks(geos_ctx *g, GEOSGeometry *region, double R)
+{
+    if (!region)
+        return NULL;
+    GEOSGeometry *grown =
+        GEOSBufferWithStyle_r(g->h, region, CRACK_MM, 1, GEOSBUF_CAP_FLAT, GEOSBUF_JOIN_MITRE, 1e3);
+    GEOSGeom_destroy_r(g->h, region);
+    GEOSGeometry *back = grown ? GEOSBufferWithStyle_r(g->h, grown, -CRACK_MM, 1, GEOSBUF_CAP_FLAT,
+                                                       GEOSBUF_JOIN_MITRE, 1e3)
+                               : NULL;
+    if (grown)
+        GEOSGeom_destroy_r(g->h, grown);
+    return combine(g, back, rect(g, 0, 3 * R, -3 * R, 3 * R), OP_INTER);
+}
+
 /* The printed parts' union less the voids: *printed, with each printed part's
  * own region in part_geom (for naming) and the exact volume of the whole. */
 static int printed_region(geos_ctx *g, const tippe_design *d, const tippe_profile_options *o,
@@ -726,7 +751,8 @@ static int printed_region(geos_ctx *g, const tippe_design *d, const tippe_profil
                                "material or has a print block (all are hardware or moving)",
                                tippe_design_path(d));
     }
-    *printed = holes ? combine(g, solid, holes, OP_DIFF) : solid;
+    *printed = close_cracks(g, holes ? combine(g, solid, holes, OP_DIFF) : solid,
+                            tippe_design_radius_mm(d));
     if (!*printed)
         return fail(g, err, d, "cutting the voids from the printed parts");
     if (o->sockets && !cut_sockets(g, d, o, s, printed, &vol))

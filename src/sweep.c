@@ -533,42 +533,51 @@ int tippe_sweep_zone_usable(const tippe_sweep_result *r, const tippe_sweep_zone 
 
 static const char *const family_names[3] = {"I", "II", "III"};
 
-static int family_index(const char *f)
+static int family_index(tippe_group g)
 {
+    const char *f = tippe_group_family(g);
     for (int k = 0; k < 3; k++)
         if (!strcmp(f, family_names[k]))
             return k;
     return -1;
 }
 
+int tippe_sweep_family_runs(const tippe_sweep_result *r, tippe_sweep_family_run *runs, int max)
+{
+    int n = 0;
+    for (int i = 0; i < r->n_zones;) {
+        double from, to, f2, t2;
+        int fam = tippe_sweep_zone_usable(r, &r->zones[i], &from, &to)
+                      ? family_index(r->zones[i].group)
+                      : -1;
+        int j = i + 1;
+        while (fam >= 0 && j < r->n_zones && tippe_sweep_zone_usable(r, &r->zones[j], &f2, &t2) &&
+               family_index(r->zones[j].group) == fam) {
+            to = t2;
+            j++;
+        }
+        if (fam >= 0) {
+            if (runs && n < max)
+                runs[n] = (tippe_sweep_family_run){fam, from, to, i, j - 1};
+            n++;
+        }
+        i = j;
+    }
+    return n;
+}
+
 void tippe_sweep_summarise(const tippe_sweep_result *r, tippe_sweep_summary *out)
 {
     memset(out, 0, sizeof *out);
     int has[3] = {0, 0, 0};
-    double run = 0.0;
-    int fam = -1;
-    /* A run is a maximal sequence of adjacent zones within the travel whose
-     * groups are of one family (Theorem 5.1's I, II, III); the com_side split at
-     * the balanced point does not end it. */
-    for (int i = 0; i <= r->n_zones; i++) {
-        const tippe_sweep_zone *z = i < r->n_zones ? &r->zones[i] : NULL;
-        double from, to;
-        int f = z && tippe_sweep_zone_usable(r, z, &from, &to)
-                    ? family_index(tippe_group_family(z->group))
-                    : -1;
-        if (fam >= 0 && f != fam) { /* a run of one family ends */
-            out->widest_mm[fam] = GSL_MAX(out->widest_mm[fam], run);
-            fam = -1;
-        }
-        if (f < 0)
-            continue;
-        if (fam < 0) {
-            fam = f;
-            run = 0.0;
-        }
-        run += to - from;
-        has[f] = 1;
+    tippe_sweep_family_run *runs = malloc((size_t)(r->n_zones > 0 ? r->n_zones : 1) * sizeof *runs);
+    int n = runs ? tippe_sweep_family_runs(r, runs, r->n_zones) : 0;
+    for (int k = 0; k < n; k++) {
+        const tippe_sweep_family_run *u = &runs[k];
+        out->widest_mm[u->family] = GSL_MAX(out->widest_mm[u->family], u->to_mm - u->from_mm);
+        has[u->family] = 1;
     }
+    free(runs);
     out->has_I = has[0];
     out->has_II = has[1];
     out->has_III = has[2];

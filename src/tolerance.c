@@ -73,10 +73,29 @@ static void add_print_default(const tippe_design *d, int i, const char *name, to
     }
 }
 
-/* The defaults: printed dimensions +/-0.2 mm (parts of a printable material
- * and the voids cut from them, and the sphere's radius when a printed part
- * forms it); +/-3 % on each filament's density, one error per material (one
- * spool); +/-2 % on each bought part's mass, through its density. */
+/* Whether part i is printed filament: a printable material, or a print block
+ * with the density given inline (the mass model and the export print it, as
+ * tippe_profile_part_filament says); a void: its part's. */
+static int is_filament(const tippe_design *d, int i, const tippe_design_part_info *info)
+{
+    if (info->printable)
+        return 1;
+    int k = i;
+    if (info->cut_from) {
+        tippe_design_part_info q;
+        for (k = 0; k < tippe_design_n_parts(d); k++)
+            if (tippe_design_part(d, k, &q) == TIPPE_OK && !strcmp(q.name, info->cut_from))
+                break;
+    }
+    tippe_design_print_info pi;
+    return tippe_design_part_print(d, k, &pi) == TIPPE_OK && pi.printed;
+}
+
+/* The defaults: printed dimensions +/-0.2 mm (parts of filament and the voids
+ * cut from them, and the sphere's radius when a printed part forms it); +/-3 %
+ * on each filament's density, one error per material (one spool), or per part
+ * when its density is inline; +/-2 % on each bought part's mass, through its
+ * density. */
 static void add_defaults(const tippe_design *d, tol_list *l)
 {
     char field[TIPPE_TOLERANCE_FIELD_LEN];
@@ -85,7 +104,7 @@ static void add_defaults(const tippe_design *d, tol_list *l)
         if (tippe_design_part(d, i, &info) != TIPPE_OK)
             continue;
         int is_void = !strcmp(info.role, "void");
-        if (info.printable) {
+        if (is_filament(d, i, &info)) {
             if (tippe_design_forms_sphere(d, i))
                 put(l, "radius_mm", tippe_design_radius_mm(d), TIPPE_TOL_PRINTED_MM, 0, "mm",
                     "printed dimension");
@@ -101,7 +120,11 @@ static void add_defaults(const tippe_design *d, tol_list *l)
                     put(l, field, v, TIPPE_TOL_PRINTED_MM, 0, "mm", "printed dimension");
             }
             if (!is_void) {
-                snprintf(field, sizeof field, MATERIAL_PREFIX "%s." DENSITY_KEY, info.material);
+                if (info.printable)
+                    snprintf(field, sizeof field, MATERIAL_PREFIX "%s." DENSITY_KEY,
+                             info.material);
+                else
+                    snprintf(field, sizeof field, "parts.%s." DENSITY_KEY, info.name);
                 put(l, field, info.density_g_cm3,
                     info.density_g_cm3 * TIPPE_TOL_FILAMENT_DENSITY_PERCENT / 100,
                     TIPPE_TOL_FILAMENT_DENSITY_PERCENT, "g/cm^3", "filament density");

@@ -188,5 +188,16 @@ touch "$tmp/afile"
 expect_fail "output is a file" 2 "not a directory" -- build "$d" -o "$tmp/afile"
 expect_fail "unknown hole fit" 2 "--hole press: not a fit" -- build "$d" -o "$tmp/x" --hole press
 expect_fail "unreadable catalogue" 2 "nothere.json" -- build "$d" -o "$tmp/x" --catalogue "$tmp/nothere.json"
+# --- a setting never puts the weight where it stands out of the sphere: the M12
+# screw (r 5.5, h 15 mm) leaves the R 25 mm ball at Z2 = sqrt(25^2 - 5.5^2) - 7.5.
+"$tippe" build designs/m12-setscrew.json -o "$tmp/m12" --no-export --json >"$tmp/m12.json"
+check "m12: the hangs range ends where the screw's rim leaves the sphere (1e-5 mm: the edge is found to a few 1e-6 mm)" \
+    python3 - "$tmp/m12.json" <<'EOF'
+import json, math, sys
+st = json.load(open(sys.argv[1]))["settings"][2]
+edge = math.sqrt(25 ** 2 - 5.5 ** 2) - 7.5
+assert st["behaviour"] == "hangs" and abs(st["robust_to_mm"] - edge) < 1e-5, st
+assert st["robust_from_mm"] <= st["set_z2_mm"] <= edge and st["depth_to_mm"] > 0, st
+EOF
 "$tippe" build --help >"$tmp/help" && grep -q "clearance-mm MM" "$tmp/help" && ok || bad "--help"
 finish

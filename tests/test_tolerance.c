@@ -155,6 +155,42 @@ static void check_parsing(void)
               "weighed: the scale's reading, not the slicer's infill");
         tippe_design_free(d);
     }
+    /* The same body with its density inline and a print block is printed too
+     * (the mass model and the export print it): its dimensions, its infill and
+     * its filament's density get a printed part's tolerances, not the +/-2 %
+     * of a bought part's mass. */
+    const char *inline_printed[] = {"parts.body.density_g_cm3=1.08",
+                                    "parts.body.print={\"infill\": 0.4}"};
+    d = NULL;
+    CHECK(tippe_design_load(M12, inline_printed, 2, &d, &err) == TIPPE_OK, "%s", err.msg);
+    if (d) {
+        const tippe_tolerance *t;
+        CHECK(tippe_design_n_tolerances(d) == 5, "inline printed: %d tolerances",
+              tippe_design_n_tolerances(d));
+        CHECK((t = find_tol(d, "parts.body.print.infill")) && fabs(t->plus_minus - 0.1) < 1e-15 &&
+                  !strcmp(t->rule, "slicer infill"),
+              "inline printed: infill default");
+        CHECK((t = find_tol(d, "parts.body.density_g_cm3")) &&
+                  fabs(t->plus_minus - 0.03 * 1.08) < 1e-15 && !strcmp(t->rule, "filament density"),
+              "inline printed: filament density +/-3 %%, got %s",
+              t ? t->rule : "none");
+        CHECK((t = find_tol(d, "radius_mm")) && t->plus_minus == 0.2, "inline printed: radius");
+        CHECK((t = find_tol(d, "parts.hole.radius_mm")) && t->plus_minus == 0.2,
+              "inline printed: its hole is a printed dimension");
+        CHECK((t = find_tol(d, "parts.screw.density_g_cm3")) && !strcmp(t->rule, "hardware mass"),
+              "inline printed: the screw is still hardware");
+        tippe_design_free(d);
+    }
+    /* Without a print block an inline density is a bought part's. */
+    const char *inline_bought[] = {"parts.body.density_g_cm3=1.08"};
+    d = NULL;
+    CHECK(tippe_design_load(M12, inline_bought, 1, &d, &err) == TIPPE_OK, "%s", err.msg);
+    if (d) {
+        const tippe_tolerance *t = find_tol(d, "parts.body.density_g_cm3");
+        CHECK(t && !strcmp(t->rule, "hardware mass") && !find_tol(d, "parts.hole.radius_mm"),
+              "inline, no print block: hardware mass");
+        tippe_design_free(d);
+    }
     const char *layers[] = {"parts.body.print={\"infill\": 0.4}",
                             "tolerances={\"parts.body.print.perimeters\": 1}"};
     d = NULL;

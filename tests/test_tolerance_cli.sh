@@ -40,6 +40,23 @@ check "compare --json has robust widths" python3 -c "
 import json; o = json.load(open('$tmp/cmp.json'))
 assert 'robust_zone_widths_mm' in o['designs'][0]"
 
+# a printed body whose density is given inline is banded exactly as the same
+# body of the named material (ABSplus, 1.08 g/cm^3): same tolerances but for
+# the density's field name, same bands
+"$tippe" sweep "$m12" --set 'parts.body.print={"infill": 0.4}' --json >"$tmp/named.json"
+"$tippe" sweep "$m12" --set parts.body.density_g_cm3=1.08 --set 'parts.body.print={"infill": 0.4}' --json >"$tmp/inline.json"
+check "a printed body with an inline density gets a printed body's tolerances and bands" \
+    python3 - "$tmp/named.json" "$tmp/inline.json" <<'PY'
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+rules = lambda o: sorted((t["field"].replace("materials.ABSplus", "parts.body"), t["plus_minus"], t["rule"]) for t in o["tolerances"])
+assert rules(a) == rules(b), (rules(a), rules(b))
+assert len(a["bands"]) == len(b["bands"]) == 4
+for x, y in zip(a["bands"], b["bands"]):
+    # the same mass model (1e-12 relative in the moments): bands to 1e-9 mm
+    assert abs(x["band_mm"] - y["band_mm"]) < 1e-9, (x["band_mm"], y["band_mm"])
+PY
+
 # a bad block: exit 2, file and entry named, nothing on stdout
 json_edit "$m12" "$tmp/bad.json" 'd["tolerances"] = {"parts.bolt.height_mm": 0.1}; d["materials"] = "'"$(pwd)"'/designs/materials.json"'
 expect_fail "unknown part in tolerances" 2 "$tmp/bad.json" 'tolerances["parts.bolt.height_mm"]' \

@@ -143,6 +143,20 @@ int tippe_sweep_design(const tippe_design *d, double from_mm, double to_mm,
                        const tippe_sweep_options *opt, tippe_sweep_result *out,
                        tippe_error *err);
 
+/* A run: a maximal sequence of adjacent usable zones (tippe_sweep_zone_usable)
+ * whose groups are of one family of Theorem 5.1 (0 I, 1 II, 2 III); the com_side
+ * split at the balanced point does not end it. [from_mm, to_mm] is its usable
+ * extent; zones first_zone .. last_zone of r make it. */
+typedef struct {
+    int family;
+    double from_mm, to_mm;
+    int first_zone, last_zone;
+} tippe_sweep_family_run;
+
+/* The runs of r in order of Z2, at most max of them into runs (NULL: count
+ * only); returns how many there are. At most r->n_zones. */
+int tippe_sweep_family_runs(const tippe_sweep_result *r, tippe_sweep_family_run *runs, int max);
+
 /* Main-group summary over the usable parts of the zones (tippe_sweep_zone_usable:
  * within the physical travel, the whole range before tippe_sweep_mark_travel, and
  * where no part stands out of the sphere). */
