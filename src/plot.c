@@ -390,10 +390,28 @@ void tippe_plot_legend(const tippe_plot_key *keys, int n, const char *where, int
                (where[1] == 'l' ? PL_POSITION_LEFT : PL_POSITION_RIGHT);
     PLFLT lw, lh;
     int rows = (n + n_columns - 1) / n_columns;
-    pllegend(&lw, &lh, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, pos, outside ? 0.0 : 0.015,
-             outside ? 0.0 : 0.015, 0.06, SLOT_BG, SLOT_FG, 1, rows, n_columns, n, opt, 0.8,
-             text_scale, 1.8, 0.0, text_col, text, box_col, box_pat, box_scale, box_lw, line_col,
-             line_sty, line_w, NULL, NULL, NULL, NULL);
+    /* An outside legend wider than its strip (long keys on a narrow page) would
+     * lose its right edge: it is painted over and drawn again with smaller text
+     * until it fits (PLplot measures a legend only by drawing it). */
+    for (int attempt = 0; attempt < 8; attempt++) {
+        pllegend(&lw, &lh, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, pos,
+                 outside ? 0.0 : 0.015, outside ? 0.0 : 0.015, 0.06, SLOT_BG, SLOT_FG, 1, rows,
+                 n_columns, n, opt, 0.8, text_scale, 1.8, 0.0, text_col, text, box_col, box_pat,
+                 box_scale, box_lw, line_col, line_sty, line_w, NULL, NULL, NULL, NULL);
+        if (!outside || lw <= 1.0)
+            break;
+        double x0 = fmin(panel_vp[1] + 0.015, 0.98);
+        /* in page coordinates, the legend's frame line included */
+        double h = panel_vp[3] - panel_vp[2];
+        double y0 = panel_vp[3] - (lh + 0.01) * h, y1 = fmin(panel_vp[3] + 0.01, 1.0);
+        plvpor(0.0, 1.0, 0.0, 1.0);
+        plwind(0.0, 1.0, 0.0, 1.0);
+        PLFLT ex[4] = {x0 - 0.002, 1.0, 1.0, x0 - 0.002}, ey[4] = {y0, y0, y1, y1};
+        plcol0(SLOT_BG);
+        plfill(4, ex, ey);
+        plvpor(x0, 0.995, panel_vp[2], panel_vp[3]);
+        text_scale *= 0.97 / lw;
+    }
     if (outside)
         tippe_plot_panel(panel_vp[0], panel_vp[1], panel_vp[2], panel_vp[3], panel_win[0],
                          panel_win[1], panel_win[2], panel_win[3]);
