@@ -77,19 +77,23 @@ static int family_of(tippe_group g)
 /* ------------------------------------------------------------ ranges */
 
 /* The run of each family with the largest robust width (the nominal widest if
- * none is robust), as tippe_sweep_robust_widths joins runs. */
+ * none is robust), as tippe_sweep_robust_widths joins runs: only the usable
+ * part of each zone (tippe_sweep_zone_usable: within the physical travel and
+ * where no part stands out of the sphere, so the model applies). */
 static void robust_runs(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
                         tippe_build_setting set[3])
 {
     for (int i = 0; i < r->n_zones;) {
-        const tippe_sweep_zone *z = &r->zones[i];
-        int f = z->within_travel ? family_of(z->group) : -1;
+        double from, to, f2, t2;
+        int f = tippe_sweep_zone_usable(r, &r->zones[i], &from, &to) ? family_of(r->zones[i].group)
+                                                                      : -1;
         int j = i + 1;
-        while (f >= 0 && j < r->n_zones && r->zones[j].within_travel &&
-               family_of(r->zones[j].group) == f)
+        while (f >= 0 && j < r->n_zones && tippe_sweep_zone_usable(r, &r->zones[j], &f2, &t2) &&
+               family_of(r->zones[j].group) == f) {
+            to = t2;
             j++;
+        }
         if (f >= 0) {
-            double from = z->z2_from_mm, to = r->zones[j - 1].z2_to_mm;
             double bf = tippe_sweep_band_at(b, from), bt = tippe_sweep_band_at(b, to);
             double w = to - from - bf - bt;
             tippe_build_setting *s = &set[f];
@@ -1063,7 +1067,7 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     for (int k = 0; k < 3; k++) {
         const tippe_build_setting *x = &s->set[k];
         if (!x->reachable) {
-            fprintf(f, "| %s | %s | not reachable within the travel | | | | | | |\n",
+            fprintf(f, "| %s | %s | not reachable within the travel where the model applies | | | | | | |\n",
                     behaviours[k], families[k]);
             continue;
         }
@@ -1096,8 +1100,8 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     (void)e;
     (void)g;
     fprintf(f, "\n%s 3-in-1: %s.\n", s->three_in_one ? "It is" : "It is not",
-            s->three_in_one ? "all three behaviours are reachable within the travel"
-                            : "not every behaviour is reachable within the travel");
+            s->three_in_one ? "all three behaviours are reachable within the travel where the model applies"
+                            : "not every behaviour is reachable within the travel where the model applies");
     if (!s->three_in_one) {
         fprintf(f, "\nWhat would make it 3-in-1 (one change at a time, found by sweeping the "
                    "zones at each value; at the edge given the missing zone is just born, so go "

@@ -24,6 +24,21 @@ for f in designs/*.json; do
     # (the central launch at 1.25 x the threshold spin)
     check "$stem: every reachable setting's launch check ends as its behaviour" \
         json_ok "$tmp/$stem.json" 'all(s["launch_as_expected"] for s in o["settings"] if s["reachable"])'
+    # the settings are where tippe sweep's robust widths are: only where the model
+    # applies (no setting with a screw standing out of the ball, where the top
+    # rests on the screw), so every width is sweep's to rounding
+    "$tippe" sweep "$f" --json >"$tmp/$stem.sweep"
+    python3 - "$tmp/$stem.json" "$tmp/$stem.sweep" <<'EOF' && ok || bad "$stem: robust widths or ranges differ from tippe sweep's"
+import json, sys
+b = json.load(open(sys.argv[1])); sw = json.load(open(sys.argv[2]))
+w = sw["robust_zone_widths_mm"]; lo, hi = sw.get("sphere_only_mm") or (-1e300, 1e300)
+assert b["three_in_one"] == sw["three_in_one"]
+for st in b["settings"]:
+    if not st["reachable"]:
+        continue
+    assert abs(st["robust_width_mm"] - w[st["group"]]) < 1e-9, (st["group"], st["robust_width_mm"], w)
+    assert lo - 1e-9 <= st["z2_from_mm"] <= st["z2_to_mm"] <= hi + 1e-9, (st, lo, hi)
+EOF
 done
 
 # --- the settings against sweep, classify and check ---------------------------
