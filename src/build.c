@@ -374,6 +374,18 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
 
 /* ----------------------------------------------------------------- BOM */
 
+/* The design file's name without directory and .json: the stem tippe build and
+ * tippe export name their files with (tippe_export_stem's rule; that one lives in
+ * the export module), so the sheet can name the files it refers to. */
+static void file_stem(const tippe_build_sheet *s, char *out, size_t size)
+{
+    const char *base = strrchr(s->design_file, '/');
+    snprintf(out, size, "%s", base ? base + 1 : s->design_file);
+    char *dot = strrchr(out, '.');
+    if (dot && dot != out)
+        *dot = '\0';
+}
+
 static void bom(tippe_build_sheet *s, int qty, const char *what, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 static void bom(tippe_build_sheet *s, int qty, const char *what, const char *fmt, ...)
@@ -466,15 +478,29 @@ static void bill(const tippe_design *d, const tippe_profile_set *ps, const tippe
     for (int k = 0; ps && k < ps->n_warnings; k++)
         split |= strstr(ps->warning[k], "--split") != NULL;
     s->needs_split = split;
-    if (split)
+    if (split) {
+        /* tippe export makes the ring only where a wall at the cut is wide
+         * enough for its groove (a thin shell gets none): ask it */
+        tippe_profile_options po = tippe_profile_defaults();
+        po.clearance_mm = o->clearance_mm;
+        po.split = po.joint = 1;
+        tippe_profile_set js;
+        tippe_error e = {0};
+        if (tippe_profile_build(d, &po, &js, &e) == TIPPE_OK) {
+            s->joint_ring = js.n_grooves > 0;
+            tippe_profile_set_free(&js);
+        }
+    }
+    char stem[sizeof ((tippe_build_sheet *)0)->design_file];
+    file_stem(s, stem, sizeof stem);
+    if (s->joint_ring)
         bom(s, 1, "joint ring, printed (the body's filament)",
-            "-joint-ring.stl: fills the 2 mm grooves of both halves' cut faces to align them "
-            "(tippe export --split --joint)");
+            "%s-joint-ring.stl: fills the 2 mm grooves of both halves' cut faces to align them "
+            "(tippe export --split --joint)", stem);
     if (split)
         bom(s, 1, "adhesive for the two printed halves",
             "the body closes around its hardware, so it is printed in halves (--split): join "
             "them (solvent weld for ABS, cyanoacrylate for PLA or PETG)");
-    (void)o;
 }
 
 int tippe_build_needs_split(const tippe_design *d, double clearance_mm)
@@ -531,9 +557,12 @@ static void steps(tippe_build_sheet *s)
     for (int f = 0; f < 3 && !first; f++)
         if (s->set[f].reachable)
             first = &s->set[f];
+    char stem[sizeof ((tippe_build_sheet *)0)->design_file];
+    file_stem(s, stem, sizeof stem);
     if (s->needs_split)
-        step(s, "Print the body in two halves (the -lower and -upper STL files, each standing "
-                "on its flat cut face at the equator: no supports) with the print settings.");
+        step(s, "Print the body in two halves (%s-*-lower.stl and %s-*-upper.stl, each standing "
+                "on its flat cut face at the equator: no supports) with the print settings.",
+             stem, stem);
     else
         step(s, "Print the body with the print settings, its axis vertical (the mass model "
                 "assumes it), no supports inside the hole.");
@@ -552,18 +581,25 @@ static void steps(tippe_build_sheet *s)
                  s->thread_name, s->thread.pitch_mm, s->hole_diameter_mm, s->tap_drill_mm);
         step(s, "Turn the screw in with a hex key until its end is flush with the rim, then "
                 "the turns of the table for the behaviour wanted. Check the depth with the "
-                "printed gauge of that setting (-gauge-*.stl: pin in the hole, disc on the rim, "
-                "the screw's end just touching the pin) or a caliper's depth rod on the rim.");
+                "printed gauge of that setting (%s-gauge-*.stl: pin in the hole, disc on the rim, "
+                "the screw's end just touching the pin) or a caliper's depth rod on the rim.",
+             stem);
     } else if (s->measure == TIPPE_BUILD_MEASURE_ROD) {
         step(s, "Cut the rod to the length in the bill of materials, square.");
         step(s, "Screw the bead onto the rod until its top face lies at the table's depth "
-                "below the rod's top end%s: the printed sleeve gauge (-gauge-*.stl) standing on "
+                "below the rod's top end%s: the printed sleeve gauge (%s-gauge-*.stl) standing on "
                 "the bead is then flush with the rod's end. Fix it with a drop of threadlocker.",
-             first ? " for the behaviour wanted" : "");
-        step(s, "Put the joint ring in the groove of the lower half's cut face, lay the rod on "
-                "the axis, close with the upper half (its groove over the ring) and join them "
-                "(adhesive in the bill of materials); the bead can no longer be moved: build "
-                "one top per behaviour, or choose the one you want first.");
+             first ? " for the behaviour wanted" : "", stem);
+        if (s->joint_ring)
+            step(s, "Put the joint ring in the groove of the lower half's cut face, lay the rod "
+                    "on the axis, close with the upper half (its groove over the ring) and join "
+                    "them (adhesive in the bill of materials); the bead can no longer be moved: "
+                    "build one top per behaviour, or choose the one you want first.");
+        else
+            step(s, "Lay the rod on the axis of the lower half, close with the upper half and "
+                    "join them (adhesive in the bill of materials; the wall at the cut is too "
+                    "thin for a joint ring: align the halves by hand); the bead can no longer "
+                    "be moved: build one top per behaviour, or choose the one you want first.");
     } else {
         step(s, "Place the weight at the set Z2 of the table (its midpoint above the sphere's "
                 "centre).");
@@ -852,9 +888,11 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                      which[0] ? ", " : "", behaviours[f]);
         }
     }
+    char stem[sizeof ((tippe_build_sheet *)0)->design_file];
+    file_stem(out, stem, sizeof stem);
     if (n_gauges)
         bom(out, n_gauges, "depth gauges, printed (any filament)",
-            "-gauge-*.stl, one per setting (%s), printed flat side down", which);
+            "%s-gauge-*.stl, one per setting (%s), printed flat side down", stem, which);
     print_settings(d, have_ps ? &ps : NULL, out);
     steps(out);
     if (!out->three_in_one)
@@ -1011,6 +1049,7 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
                                                : "axis vertical");
     }
     cJSON_AddBoolToObject(o, "split", s->needs_split);
+    cJSON_AddBoolToObject(o, "joint_ring", s->joint_ring);
     cJSON *adv = cJSON_AddArrayToObject(o, "to_make_it_three_in_one");
     for (int k = 0; adv && k < s->n_advice; k++) {
         cJSON *j = cJSON_CreateObject();

@@ -274,7 +274,7 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
                                .fit_diameter_mm = s->hole_tapped ? s->hole_diameter_mm : 0,
                                .fit_note = fit_note,
                                .has_cut = s->needs_split,
-                               .joint = s->needs_split,
+                               .joint = s->joint_ring,
                                .cut_z_mm = 0};
     double top_y = M + 52;
     int rc = tippe_drawing_render(d, &o, cr, M, top_y, 520, 433, err);

@@ -24,6 +24,15 @@ for f in designs/*.json; do
     # (the central launch at 1.25 x the threshold spin)
     check "$stem: every reachable setting's launch check ends as its behaviour" \
         json_ok "$tmp/$stem.json" 'all(s["launch_as_expected"] for s in o["settings"] if s["reachable"])'
+    # every STL file the sheet names (bill of materials, steps) is one it wrote
+    python3 - "$tmp/$stem/$stem-build.md" "$tmp/$stem" <<'EOF' && ok || bad "$stem: the sheet names an STL file that was not written"
+import fnmatch, os, re, sys
+names = re.findall(r"[\w+*.-]+\.stl", open(sys.argv[1]).read())
+files = os.listdir(sys.argv[2])
+assert names, "no file named"
+for n in names:
+    assert any(fnmatch.fnmatch(f, n) for f in files), (n, files)
+EOF
     # the settings are where tippe sweep's robust widths are: only where the model
     # applies (no setting with a screw standing out of the ball, where the top
     # rests on the screw), so every width is sweep's to rounding

@@ -139,6 +139,9 @@ typedef struct {
         int calibrated;
     } print[4];
     int needs_split;                     /* the printed body closes around hardware */
+    int joint_ring;                      /* split, and a cut face is wide enough for tippe
+                                            export's joint ring (else the halves are glued
+                                            without one) */
     /* Not 3-in-1: single changes that make it so, found by the model (each
      * field scanned over its range with the zones swept at every value, the
      * nearest edge of the 3-in-1 values bisected to 1e-3 of the range). */
