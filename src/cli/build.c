@@ -52,20 +52,22 @@ static int build_parse(build_args *a, int argc, char **argv)
     };
     tippe_cli_spec spec = {
         .verb = VERB,
-        .synopsis = "DESIGN.json -o DIR [--catalogue FILE] [--clearance-mm MM] [--no-export]\n"
-                    "       [--json] [--set FIELD=VALUE]",
+        .synopsis = "DESIGN.json -o DIR [--catalogue FILE] [--clearance-mm MM] [--hole FIT]\n"
+                    "       [--no-export] [--json] [--set FIELD=VALUE]",
         .about = "What a maker follows, from the design's numbers: for each behaviour (stays\n"
                  "up, flips, hangs) the robust range of Z2 (the widest zone within the travel\n"
-                 "less its tolerance bands) as the depth of the weight's end below the rim of\n"
-                 "its hole (or the end of its rod) and the turns of its thread, the spin it\n"
-                 "needs (Theorem 5.1) and the verdict of one central hand launch there (tippe\n"
-                 "check's); the bill of materials with the catalogue screw and tap drills;\n"
-                 "and the files tippe export writes.",
-        .after = "Writes DIR/STEM-build.json and DIR/STEM-build.md (the sheet) and, unless\n"
-                 "--no-export, tippe export's files (STL, 3MF, OpenSCAD, section drawing;\n"
-                 "split into halves when the printed body closes around its hardware).\n"
-                 "Exit status: 0 ok, 2 bad usage or design, 1 a computation or a file\n"
-                 "failed. See docs/build.md.",
+                 "where the model applies, less its tolerance bands) as the depth of the\n"
+                 "weight's end below the rim of its hole (or the end of its rod) and the turns\n"
+                 "of its thread, the spin it needs (Theorem 5.1) and the verdict of one\n"
+                 "central hand launch there (tippe check's); the bill of materials with the\n"
+                 "catalogue screw and tap drills; and the files tippe export writes.",
+        .after = "Writes into DIR (STEM: the design file's name without .json) the sheet as\n"
+                 "STEM-build.json, STEM-build.md and one A3 page STEM-sheet.pdf, .svg, .png;\n"
+                 "a depth gauge STEM-gauge-stays-up.stl, -flips.stl, -hangs.stl per setting\n"
+                 "deeper than 1 mm; and, unless --no-export, tippe export's files (STL, 3MF,\n"
+                 "OpenSCAD, section drawing; split into halves when the printed body closes\n"
+                 "around its hardware). Exit status: 0 ok, 2 bad usage or design, 1 a\n"
+                 "computation or a file failed. See docs/build.md.",
         .opts = opts,
         .min_args = 1,
         .max_args = 1,
