@@ -208,5 +208,13 @@ touch "$tmp/afile"
 expect_fail "output is a file" 2 "not a directory" -- build "$d" -o "$tmp/afile"
 expect_fail "unknown hole fit" 2 "--hole press: not a fit" -- build "$d" -o "$tmp/x" --hole press
 expect_fail "unreadable catalogue" 2 "nothere.json" -- build "$d" -o "$tmp/x" --catalogue "$tmp/nothere.json"
+# the catalogue is read after the directory was made: a failed run removes it again
+check "a failed run leaves no output directory it made" test ! -e "$tmp/x"
+echo '{"iso4026": ' >"$tmp/badcat.json"
+expect_fail "catalogue not JSON" 2 "badcat.json" -- build "$d" -o "$tmp/y" --catalogue "$tmp/badcat.json"
+check "a failed run leaves no output directory it made (bad catalogue)" test ! -e "$tmp/y"
+mkdir "$tmp/keep"
+expect_fail "bad catalogue into an existing directory" 2 "badcat.json" -- build "$d" -o "$tmp/keep" --catalogue "$tmp/badcat.json"
+check "an existing output directory stays, empty" test -d "$tmp/keep" -a -z "$(ls -A "$tmp/keep")"
 "$tippe" build --help >"$tmp/help" && grep -q "clearance-mm MM" "$tmp/help" && ok || bad "--help"
 finish

@@ -86,18 +86,6 @@ static int build_parse(build_args *a, int argc, char **argv)
     return 0;
 }
 
-/* Creates dir if it is missing (one level): 0, or 2 after a usage error. */
-static int make_dir(const char *dir)
-{
-    struct stat st;
-    if (stat(dir, &st) == 0)
-        return S_ISDIR(st.st_mode) ? 0 : tippe_cli_usage_error(VERB, "-o %s: not a directory", dir);
-    if (mkdir(dir, 0777) != 0)
-        return tippe_cli_usage_error(VERB, "-o %s: cannot create the directory: %s", dir,
-                                     strerror(errno));
-    return 0;
-}
-
 /* The default catalogue: catalogue.json beside the design, if it exists. */
 static const char *default_catalogue(const char *design, char *buf, size_t size)
 {
@@ -177,7 +165,7 @@ static int run(build_args *a, const tippe_design *d)
     a->o.n_sets = a->sets.n;
     sheet_paths(d, a->dir, sheet);
     /* every output checked before any work */
-    int rc = make_dir(a->dir);
+    int rc = tippe_cli_make_output_dir(VERB, "-o", a->dir);
     for (int k = 0; !rc && k < N_OUT; k++)
         rc = tippe_cli_check_output(VERB, "-o", sheet[k], 0);
     char(*paths)[4096] = NULL;
