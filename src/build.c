@@ -68,12 +68,6 @@ void tippe_build_options_default(tippe_build_options *o)
     tippe_launch_options_default(&o->launch);
 }
 
-static int family_of(tippe_group g)
-{
-    const char *f = tippe_group_family(g);
-    return !strcmp(f, "I") ? 0 : !strcmp(f, "II") ? 1 : !strcmp(f, "III") ? 2 : -1;
-}
-
 /* ------------------------------------------------------------ ranges */
 
 /* The run of each family with the largest robust width (the nominal widest if
@@ -83,16 +77,9 @@ static int family_of(tippe_group g)
 static void robust_runs(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
                         tippe_build_setting set[3])
 {
-    for (int i = 0; i < r->n_zones;) {
-        double from, to, f2, t2;
-        int f = tippe_sweep_zone_usable(r, &r->zones[i], &from, &to) ? family_of(r->zones[i].group)
-                                                                      : -1;
-        int j = i + 1;
-        while (f >= 0 && j < r->n_zones && tippe_sweep_zone_usable(r, &r->zones[j], &f2, &t2) &&
-               family_of(r->zones[j].group) == f) {
-            to = t2;
-            j++;
-        }
+    for (int i = 0, f; i < r->n_zones;) {
+        double from, to;
+        i = tippe_sweep_family_run(r, i, &f, &from, &to);
         if (f >= 0) {
             double bf = tippe_sweep_band_at(b, from), bt = tippe_sweep_band_at(b, to);
             double w = to - from - bf - bt;
@@ -111,7 +98,6 @@ static void robust_runs(const tippe_sweep_result *r, const tippe_sweep_bands_res
                 s->robust_to_mm = to - bt;
             }
         }
-        i = j;
     }
     for (int f = 0; f < 3; f++) {
         tippe_build_setting *s = &set[f];

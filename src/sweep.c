@@ -541,33 +541,33 @@ static int family_index(const char *f)
     return -1;
 }
 
+int tippe_sweep_family_run(const tippe_sweep_result *r, int i, int *family, double *from_mm,
+                           double *to_mm)
+{
+    double f2, t2;
+    *family = tippe_sweep_zone_usable(r, &r->zones[i], from_mm, to_mm)
+                  ? family_index(tippe_group_family(r->zones[i].group))
+                  : -1;
+    int j = i + 1;
+    while (*family >= 0 && j < r->n_zones && tippe_sweep_zone_usable(r, &r->zones[j], &f2, &t2) &&
+           family_index(tippe_group_family(r->zones[j].group)) == *family) {
+        *to_mm = t2;
+        j++;
+    }
+    return j;
+}
+
 void tippe_sweep_summarise(const tippe_sweep_result *r, tippe_sweep_summary *out)
 {
     memset(out, 0, sizeof *out);
     int has[3] = {0, 0, 0};
-    double run = 0.0;
-    int fam = -1;
-    /* A run is a maximal sequence of adjacent zones within the travel whose
-     * groups are of one family (Theorem 5.1's I, II, III); the com_side split at
-     * the balanced point does not end it. */
-    for (int i = 0; i <= r->n_zones; i++) {
-        const tippe_sweep_zone *z = i < r->n_zones ? &r->zones[i] : NULL;
+    for (int i = 0, f; i < r->n_zones;) {
         double from, to;
-        int f = z && tippe_sweep_zone_usable(r, z, &from, &to)
-                    ? family_index(tippe_group_family(z->group))
-                    : -1;
-        if (fam >= 0 && f != fam) { /* a run of one family ends */
-            out->widest_mm[fam] = GSL_MAX(out->widest_mm[fam], run);
-            fam = -1;
+        i = tippe_sweep_family_run(r, i, &f, &from, &to);
+        if (f >= 0) {
+            out->widest_mm[f] = GSL_MAX(out->widest_mm[f], to - from);
+            has[f] = 1;
         }
-        if (f < 0)
-            continue;
-        if (fam < 0) {
-            fam = f;
-            run = 0.0;
-        }
-        run += to - from;
-        has[f] = 1;
     }
     out->has_I = has[0];
     out->has_II = has[1];

@@ -227,34 +227,19 @@ double tippe_sweep_zone_robust_mm(const tippe_sweep_result *r, const tippe_sweep
     return robust(r->zones[i].z2_from_mm, r->zones[i].z2_to_mm, b);
 }
 
-static int family_of(tippe_group g)
-{
-    const char *f = tippe_group_family(g);
-    return !strcmp(f, "I") ? 0 : !strcmp(f, "II") ? 1 : !strcmp(f, "III") ? 2 : -1;
-}
-
 void tippe_sweep_robust_widths(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
                                double robust_mm[3], double *narrowest_mm)
 {
     int has[3] = {0, 0, 0};
     robust_mm[0] = robust_mm[1] = robust_mm[2] = 0;
-    /* Runs as tippe_sweep_summarise makes them: adjacent usable zones of one
-     * family (tippe_sweep_zone_usable). */
-    for (int i = 0; i < r->n_zones;) {
-        double from, to, f2, t2;
-        int f = tippe_sweep_zone_usable(r, &r->zones[i], &from, &to) ? family_of(r->zones[i].group)
-                                                                      : -1;
-        int j = i + 1;
-        while (f >= 0 && j < r->n_zones && tippe_sweep_zone_usable(r, &r->zones[j], &f2, &t2) &&
-               family_of(r->zones[j].group) == f) {
-            to = t2;
-            j++;
-        }
+    /* Runs as tippe_sweep_summarise makes them (tippe_sweep_family_run). */
+    for (int i = 0, f; i < r->n_zones;) {
+        double from, to;
+        i = tippe_sweep_family_run(r, i, &f, &from, &to);
         if (f >= 0) {
             has[f] = 1;
             robust_mm[f] = GSL_MAX(robust_mm[f], robust(from, to, b));
         }
-        i = j;
     }
     /* 0 unless 3-in-1, as tippe_sweep_summary's narrowest_zone_mm. */
     *narrowest_mm = has[0] && has[1] && has[2]
