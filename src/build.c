@@ -1092,7 +1092,8 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     for (int k = 0; k < 3; k++) {
         const tippe_build_setting *x = &s->set[k];
         if (!x->reachable) {
-            fprintf(f, "| %s | %s | not reachable within the travel where the model applies | | | | | | |\n",
+            fprintf(f, "| %s | %s | not reachable within the travel where the model applies "
+                       "| | | | | | |\n",
                     behaviours[k], families[k]);
             continue;
         }
