@@ -202,6 +202,12 @@ assert made >= 1
 EOF
 done
 
+# the drawing's note says the screw's hole is printed at its tap drill, not with clearance
+check "section drawing: the tapped hole's note" \
+    grep -q "the screw's hole printed at its M10 x 1.5 tap drill" "$tmp/drilled-ball-catalogue-best/drilled-ball-catalogue-best-section.svg"
+check "section drawing: no clearance claimed for the tapped hole" \
+    sh -c '! grep -q "printed with radial clearance" "$1"' _ "$tmp/drilled-ball-catalogue-best/drilled-ball-catalogue-best-section.svg"
+
 # --- refusals -------------------------------------------------------------------
 expect_fail "no output directory" 2 "--output DIR is required" -- build "$d"
 touch "$tmp/afile"
