@@ -210,6 +210,11 @@ check "section drawing: no clearance claimed for the tapped hole" \
 
 # --- refusals -------------------------------------------------------------------
 expect_fail "no output directory" 2 "--output DIR is required" -- build "$d"
+# "-" is no directory (the verb writes several files): refused, and none named "-" made
+(cd "$tmp" && "$tippe" build "$OLDPWD/$d" -o - >/dev/null 2>"$tmp/dash.err"; echo $? >"$tmp/dash.rc")
+check "-o - refused with exit 2" grep -qx 2 "$tmp/dash.rc"
+check "-o - names standard output" grep -q "not to standard output" "$tmp/dash.err"
+check "-o - makes no directory named -" test ! -e "$tmp/-"
 touch "$tmp/afile"
 expect_fail "output is a file" 2 "not a directory" -- build "$d" -o "$tmp/afile"
 expect_fail "unknown hole fit" 2 "--hole press: not a fit" -- build "$d" -o "$tmp/x" --hole press

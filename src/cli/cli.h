@@ -210,7 +210,7 @@ void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot);
 /* The output directory of a verb that writes one (export, build): created if
  * missing (one level, its parent must exist): 0, or 2 after a usage error
- * naming option (a file, no parent, no permission). One made by this run is
+ * naming option ("-", a file, no parent, no permission). One made by this run is
  * removed again when the run fails (tippe_cli_run, after its files are
  * dropped), so a failed run leaves nothing. */
 int tippe_cli_make_output_dir(const char *verb, const char *option, const char *dir);

@@ -333,6 +333,9 @@ static char made_dir[4096];
 int tippe_cli_make_output_dir(const char *verb, const char *option, const char *dir)
 {
     struct stat st;
+    if (!strcmp(dir, "-")) /* several files cannot share standard output */
+        return tippe_cli_usage_error(verb, "%s -: %s writes several files into a directory, not "
+                                     "to standard output; give a directory", option, verb);
     if (stat(dir, &st) == 0)
         return S_ISDIR(st.st_mode) ? 0
                                    : tippe_cli_usage_error(verb, "%s %s: not a directory", option,
