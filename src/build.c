@@ -360,16 +360,19 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
 
 /* ----------------------------------------------------------------- BOM */
 
-/* The design file's name without directory and .json: the stem tippe build and
- * tippe export name their files with (tippe_export_stem's rule; that one lives in
- * the export module), so the sheet can name the files it refers to. */
-static void file_stem(const tippe_build_sheet *s, char *out, size_t size)
+void tippe_build_stem(const char *design_path, char *out, size_t size)
 {
-    const char *base = strrchr(s->design_file, '/');
-    snprintf(out, size, "%s", base ? base + 1 : s->design_file);
+    const char *base = strrchr(design_path, '/');
+    snprintf(out, size, "%s", base ? base + 1 : design_path);
     char *dot = strrchr(out, '.');
     if (dot && dot != out)
         *dot = '\0';
+}
+
+/* The sheet names the files it refers to as they are written. */
+static void file_stem(const tippe_build_sheet *s, char *out, size_t size)
+{
+    tippe_build_stem(s->design_file, out, size);
 }
 
 static void bom(tippe_build_sheet *s, int qty, const char *what, const char *fmt, ...)

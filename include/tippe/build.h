@@ -156,6 +156,11 @@ typedef struct {
     char step[10][400];                  /* assembly steps, in order */
 } tippe_build_sheet;
 
+/* The design file's name without directory and extension: the stem tippe build
+ * (and tippe export, tippe_export_stem, the same rule in the export module)
+ * names its files with. */
+void tippe_build_stem(const char *design_path, char *out, size_t size);
+
 /* Whether the design's printed body closes around its hardware, so that it
  * must be printed in halves (tippe export --split). */
 int tippe_build_needs_split(const tippe_design *d, double clearance_mm);

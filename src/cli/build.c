@@ -97,17 +97,6 @@ static const char *default_catalogue(const char *design, char *buf, size_t size)
     return access(buf, R_OK) == 0 ? buf : NULL;
 }
 
-/* The design file's name without directory and .json, as tippe export names
- * its files (tippe_export_stem, which lives in the export module). */
-static void stem_of(const tippe_design *d, char *out, size_t size)
-{
-    const char *path = tippe_design_path(d), *base = strrchr(path, '/');
-    snprintf(out, size, "%s", base ? base + 1 : path);
-    char *dot = strrchr(out, '.');
-    if (dot && dot != out)
-        *dot = '\0';
-}
-
 /* The sheet's files: JSON, Markdown, the page as PDF, SVG and PNG, then the
  * depth gauges of the three settings (those that apply are written). */
 enum { N_SHEET = 5, N_OUT = 8 };
@@ -118,7 +107,7 @@ static const char *const sheet_tails[N_OUT] = {
 static void sheet_paths(const tippe_design *d, const char *dir, char (*out)[4096])
 {
     char stem[1024];
-    stem_of(d, stem, sizeof stem);
+    tippe_build_stem(tippe_design_path(d), stem, sizeof stem);
     const char *sep = dir[0] && dir[strlen(dir) - 1] != '/' ? "/" : "";
     for (int k = 0; k < N_OUT; k++)
         snprintf(out[k], 4096, "%s%s%s%s", dir, sep, stem, sheet_tails[k]);
