@@ -215,6 +215,17 @@ expect_fail "no output directory" 2 "--output DIR is required" -- build "$d"
 check "-o - refused with exit 2" grep -qx 2 "$tmp/dash.rc"
 check "-o - names standard output" grep -q "not to standard output" "$tmp/dash.err"
 check "-o - makes no directory named -" test ! -e "$tmp/-"
+# a printed body named like a sheet file would overwrite it: refused, nothing written
+python3 - designs/m12-setscrew.json "$tmp/clash.json" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["parts"][0]["name"] = "gauge-flips"
+d["parts"][1]["cut_from"] = "gauge-flips"
+json.dump(d, open(sys.argv[2], "w"))
+EOF
+cp designs/materials.json "$tmp/materials.json"
+expect_fail "a body named like a sheet file" 2 "clash-gauge-flips.stl is also the sheet's" -- build "$tmp/clash.json" -o "$tmp/clash"
+check "a clash leaves no output directory" test ! -e "$tmp/clash"
 touch "$tmp/afile"
 expect_fail "output is a file" 2 "not a directory" -- build "$d" -o "$tmp/afile"
 expect_fail "unknown hole fit" 2 "--hole press: not a fit" -- build "$d" -o "$tmp/x" --hole press

@@ -174,8 +174,18 @@ static int run(build_args *a, const tippe_design *d)
         int np = tippe_export_plan(d, &a->q, paths, TIPPE_EXPORT_MAX_FILES, &err);
         if (np < 0)
             rc = tippe_cli_fail(VERB, &err, err.code ? err.code : TIPPE_EINPUT);
-        for (int k = 0; !rc && k < np; k++)
-            rc = tippe_cli_check_output(VERB, "-o", paths[k], 0);
+        for (int k = 0; !rc && k < np; k++) {
+            /* a printed body named like a sheet file ("gauge-flips") would
+             * overwrite it: both are -o, which tippe_cli_check_output does not
+             * compare with each other */
+            for (int j = 0; !rc && j < N_OUT; j++)
+                if (!strcmp(paths[k], sheet[j]))
+                    rc = tippe_cli_usage_error(VERB, "-o %s: tippe export's file %s is also "
+                                               "the sheet's (a printed body named like a sheet "
+                                               "file); rename the part", a->dir, paths[k]);
+            if (!rc)
+                rc = tippe_cli_check_output(VERB, "-o", paths[k], 0);
+        }
     }
     if (rc) {
         free(paths);
