@@ -91,32 +91,34 @@ void tippe_build_options_default(tippe_build_options *o)
 /* ------------------------------------------------------------ ranges */
 
 /* The run of each family with the largest robust width (the nominal widest if
- * none is robust): the runs tippe_sweep_summarise measures. */
+ * none is robust), as tippe_sweep_robust_widths joins runs: only the usable
+ * part of each zone (tippe_sweep_zone_usable: within the physical travel and
+ * where no part stands out of the sphere, so the model applies). */
 static void robust_runs(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
                         tippe_build_setting set[3])
 {
-    tippe_sweep_family_run *runs = malloc((size_t)(r->n_zones > 0 ? r->n_zones : 1) * sizeof *runs);
-    int n = runs ? tippe_sweep_family_runs(r, runs, r->n_zones) : 0;
-    for (int k = 0; k < n; k++) {
-        const double from = runs[k].from_mm, to = runs[k].to_mm;
-        double bf = tippe_sweep_band_at(b, from), bt = tippe_sweep_band_at(b, to);
-        double w = to - from - bf - bt;
-        tippe_build_setting *s = &set[runs[k].family];
-        double best_w = s->reachable ? s->robust_to_mm - s->robust_from_mm : -INFINITY;
-        int better = !s->reachable || (w > 0 && w > best_w) ||
-                     (!s->robust && w <= 0 && to - from > s->to_mm - s->from_mm);
-        if (better) {
-            s->reachable = 1;
-            s->robust = w > 0;
-            s->from_mm = from;
-            s->to_mm = to;
-            s->band_from_mm = bf;
-            s->band_to_mm = bt;
-            s->robust_from_mm = from + bf;
-            s->robust_to_mm = to - bt;
+    for (int i = 0, f; i < r->n_zones;) {
+        double from, to;
+        i = tippe_sweep_family_run(r, i, &f, &from, &to);
+        if (f >= 0) {
+            double bf = tippe_sweep_band_at(b, from), bt = tippe_sweep_band_at(b, to);
+            double w = to - from - bf - bt;
+            tippe_build_setting *s = &set[f];
+            double best_w = s->reachable ? s->robust_to_mm - s->robust_from_mm : -INFINITY;
+            int better = !s->reachable || (w > 0 && w > best_w) ||
+                         (!s->robust && w <= 0 && to - from > s->to_mm - s->from_mm);
+            if (better) {
+                s->reachable = 1;
+                s->robust = w > 0;
+                s->from_mm = from;
+                s->to_mm = to;
+                s->band_from_mm = bf;
+                s->band_to_mm = bt;
+                s->robust_from_mm = from + bf;
+                s->robust_to_mm = to - bt;
+            }
         }
     }
-    free(runs);
     for (int f = 0; f < 3; f++) {
         tippe_build_setting *s = &set[f];
         if (!s->reachable)
@@ -475,6 +477,21 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
 
 /* ----------------------------------------------------------------- BOM */
 
+void tippe_build_stem(const char *design_path, char *out, size_t size)
+{
+    const char *base = strrchr(design_path, '/');
+    snprintf(out, size, "%s", base ? base + 1 : design_path);
+    char *dot = strrchr(out, '.');
+    if (dot && dot != out)
+        *dot = '\0';
+}
+
+/* The sheet names the files it refers to as they are written. */
+static void file_stem(const tippe_build_sheet *s, char *out, size_t size)
+{
+    tippe_build_stem(s->design_file, out, size);
+}
+
 static void bom(tippe_build_sheet *s, int qty, const char *what, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 static void bom(tippe_build_sheet *s, int qty, const char *what, const char *fmt, ...)
@@ -598,15 +615,29 @@ static void bill(const tippe_design *d, const tippe_profile_set *ps, const tippe
     for (int k = 0; ps && k < ps->n_warnings; k++)
         split |= strstr(ps->warning[k], "--split") != NULL;
     s->needs_split = split;
-    if (split)
+    if (split) {
+        /* tippe export makes the ring only where a wall at the cut is wide
+         * enough for its groove (a thin shell gets none): ask it */
+        tippe_profile_options po = tippe_profile_defaults();
+        po.clearance_mm = o->clearance_mm;
+        po.split = po.joint = 1;
+        tippe_profile_set js;
+        tippe_error e = {0};
+        if (tippe_profile_build(d, &po, &js, &e) == TIPPE_OK) {
+            s->joint_ring = js.n_grooves > 0;
+            tippe_profile_set_free(&js);
+        }
+    }
+    char stem[sizeof ((tippe_build_sheet *)0)->design_file];
+    file_stem(s, stem, sizeof stem);
+    if (s->joint_ring)
         bom(s, 1, "joint ring, printed (the body's filament)",
-            "-joint-ring.stl: fills the 2 mm grooves of both halves' cut faces to align them "
-            "(tippe export --split --joint)");
+            "%s-joint-ring.stl: fills the 2 mm grooves of both halves' cut faces to align them "
+            "(tippe export --split --joint)", stem);
     if (split)
         bom(s, 1, "adhesive for the two printed halves",
             "the body closes around its hardware, so it is printed in halves (--split): join "
             "them (solvent weld for ABS, cyanoacrylate for PLA or PETG)");
-    (void)o;
 }
 
 int tippe_build_needs_split(const tippe_design *d, double clearance_mm)
@@ -663,9 +694,12 @@ static void steps(tippe_build_sheet *s)
     for (int f = 0; f < 3 && !first; f++)
         if (s->set[f].reachable)
             first = &s->set[f];
+    char stem[sizeof ((tippe_build_sheet *)0)->design_file];
+    file_stem(s, stem, sizeof stem);
     if (s->needs_split)
-        step(s, "Print the body in two halves (the -lower and -upper STL files, each standing "
-                "on its flat cut face at the equator: no supports) with the print settings.");
+        step(s, "Print the body in two halves (%s-*-lower.stl and %s-*-upper.stl, each standing "
+                "on its flat cut face at the equator: no supports) with the print settings.",
+             stem, stem);
     else
         step(s, "Print the body with the print settings, its axis vertical (the mass model "
                 "assumes it), no supports inside the hole.");
@@ -689,21 +723,31 @@ static void steps(tippe_build_sheet *s)
                  s->thread_name, s->thread.pitch_mm, s->hole_diameter_mm, s->tap_drill_mm);
         step(s, "Turn the screw in with a hex key until its end is flush with the rim, then "
                 "the turns of the table for the behaviour wanted. Check the depth with the "
-                "printed gauge of that setting (-gauge-*.stl: pin in the hole, disc on the rim, "
-                "the screw's end just touching the pin) or a caliper's depth rod on the rim.");
+                "printed gauge of that setting (%s-gauge-*.stl: pin in the hole, disc on the rim, "
+                "the screw's end just touching the pin) or a caliper's depth rod on the rim.",
+             stem);
     } else if (s->measure == TIPPE_BUILD_MEASURE_ROD) {
         step(s, "Cut the rod to the length in the bill of materials, square.");
         step(s, "Screw the bead onto the rod until its top face lies at the table's depth "
-                "below the rod's top end%s: the printed sleeve gauge (-gauge-*.stl) standing on "
+                "below the rod's top end%s: the printed sleeve gauge (%s-gauge-*.stl) standing on "
                 "the bead is then flush with the rod's end. Fix it with a drop of threadlocker.",
-             first ? " for the behaviour wanted" : "");
-        step(s, "Put the joint ring in the groove of the lower half's cut face, stand the rod "
-                "on the axis%s, close with the upper half (its groove over the ring) and join them "
-                "(adhesive in the bill of materials); the bead can no longer be moved: build "
-                "one top per behaviour, or choose the one you want first.",
-             s->rod_sockets ? " with its lower end in the lower half's socket (the upper end "
-                              "goes into the upper half's)"
-                            : "");
+             first ? " for the behaviour wanted" : "", stem);
+        const char *rod_in_sockets = s->rod_sockets
+                                         ? " with its lower end in the lower half's socket (the "
+                                           "upper end goes into the upper half's)"
+                                         : "";
+        if (s->joint_ring)
+            step(s, "Put the joint ring in the groove of the lower half's cut face, stand the rod "
+                    "on the axis%s, close with the upper half (its groove over the ring) and join "
+                    "them (adhesive in the bill of materials); the bead can no longer be moved: "
+                    "build one top per behaviour, or choose the one you want first.",
+                 rod_in_sockets);
+        else
+            step(s, "Stand the rod on the axis of the lower half%s, close with the upper half "
+                    "and join them (adhesive in the bill of materials; the wall at the cut is too "
+                    "thin for a joint ring: align the halves by hand); the bead can no longer "
+                    "be moved: build one top per behaviour, or choose the one you want first.",
+                 rod_in_sockets);
     } else {
         step(s, "Place the weight at the set Z2 of the table (its midpoint above the sphere's "
                 "centre).");
@@ -987,9 +1031,11 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
             /* printed for its thread: its rim, where depths start, moves */
             const tippe_build_insert *ins;
             double dia;
+            /* a catalogue screw's thread is named in thread_name only */
+            const char *tname = out->thread.name ? out->thread.name : out->thread_name;
             if ((rc = fit_diameter(d, out->hole_part, fit, o->hole_fit == TIPPE_BUILD_HOLE_DESIGN,
-                                   &out->thread, out->thread.name, &dia,
-                                   out->fit_note, sizeof out->fit_note, &ins, err))) {
+                                   &out->thread, tname, &dia, out->fit_note,
+                                   sizeof out->fit_note, &ins, err))) {
                 if (have_ps)
                     tippe_profile_set_free(&ps);
                 return rc;
@@ -1041,9 +1087,11 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                      which[0] ? ", " : "", behaviours[f]);
         }
     }
+    char stem[sizeof ((tippe_build_sheet *)0)->design_file];
+    file_stem(out, stem, sizeof stem);
     if (n_gauges)
         bom(out, n_gauges, "depth gauges, printed (any filament)",
-            "-gauge-*.stl, one per setting (%s), printed flat side down", which);
+            "%s-gauge-*.stl, one per setting (%s), printed flat side down", stem, which);
     print_settings(d, have_ps ? &ps : NULL, out);
     steps(out);
     if (!out->three_in_one)
@@ -1232,6 +1280,7 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
                                                : "axis vertical");
     }
     cJSON_AddBoolToObject(o, "split", s->needs_split);
+    cJSON_AddBoolToObject(o, "joint_ring", s->joint_ring);
     cJSON *adv = cJSON_AddArrayToObject(o, "to_make_it_three_in_one");
     for (int k = 0; adv && k < s->n_advice; k++) {
         cJSON *j = cJSON_CreateObject();
@@ -1288,7 +1337,8 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     for (int k = 0; k < 3; k++) {
         const tippe_build_setting *x = &s->set[k];
         if (!x->reachable) {
-            fprintf(f, "| %s | %s | not reachable within the travel | | | | | | |\n",
+            fprintf(f, "| %s | %s | not reachable within the travel where the model applies "
+                       "| | | | | | |\n",
                     behaviours[k], families[k]);
             continue;
         }
@@ -1321,8 +1371,8 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     (void)e;
     (void)g;
     fprintf(f, "\n%s 3-in-1: %s.\n", s->three_in_one ? "It is" : "It is not",
-            s->three_in_one ? "all three behaviours are reachable within the travel"
-                            : "not every behaviour is reachable within the travel");
+            s->three_in_one ? "all three behaviours are reachable within the travel where the model applies"
+                            : "not every behaviour is reachable within the travel where the model applies");
     if (!s->three_in_one) {
         fprintf(f, "\nWhat would make it 3-in-1 (one change at a time, found by sweeping the "
                    "zones at each value; at the edge given the missing zone is just born, so go "

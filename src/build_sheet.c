@@ -234,14 +234,15 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
     cairo_set_source_rgb(cr, 0, 0, 0);
     char t[2048];
     snprintf(t, sizeof t, "Build sheet: %s", s->design_name);
-    wrapped(cr, t, M, M + 14, SHEET_W - 2 * M, 18, 1);
+    /* a long name or path wraps: what follows moves down, not under it */
+    double y_sub = wrapped(cr, t, M, M + 14, SHEET_W - 2 * M, 18, 1) - 0.5;
     snprintf(t, sizeof t,
              "%s; sphere radius %g mm; the weight's physical travel Z2 = %.2f .. %.2f mm (Z2: "
              "its midpoint above the sphere's centre). %s",
              s->design_file, s->radius_mm, s->travel_from_mm, s->travel_to_mm,
              s->three_in_one ? "3-in-1: it can stay up, flip and hang."
                              : "Not 3-in-1: not every behaviour is within the travel.");
-    wrapped(cr, t, M, M + 36, SHEET_W - 2 * M, 10.5, 0);
+    double y_head = wrapped(cr, t, M, y_sub, SHEET_W - 2 * M, 10.5, 0);
 
     /* the section, with the weight at the flip's setting (else the first there is) */
     double z2 = NAN;
@@ -274,7 +275,7 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
                                    s->hole_tapped || s->hole_insert ? s->hole_diameter_mm : 0,
                                .fit_note = s->fit_note,
                                .has_cut = s->needs_split,
-                               .joint = s->needs_split,
+                               .joint = s->joint_ring,
                                .cut_z_mm = 0,
                                .n_sockets = have_ps ? ps.n_sockets : 0};
     for (int k = 0; k < o.n_sockets; k++) {
@@ -283,7 +284,7 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
         o.socket_rim_z_mm[k] = ps.socket_rim_z_mm[k];
         o.socket_floor_z_mm[k] = ps.socket_floor_z_mm[k];
     }
-    double top_y = M + 52;
+    double top_y = fmax(M + 52, y_head + 2.5);
     int rc = tippe_drawing_render(d, &o, cr, M, top_y, 520, 433, err);
     if (have_ps)
         tippe_profile_set_free(&ps);
@@ -337,11 +338,13 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
     /* below: the settings, then the steps */
     y = fmax(y, top_y + 433) + 20;
     heading(cr, "Settings: where to put the weight, how fast to spin", M, y);
+    double y_table = y + 6;
     if (s->measure != TIPPE_BUILD_MEASURE_NONE) {
         snprintf(t, sizeof t, "Depth measured from %s.", s->reference);
-        wrapped(cr, t, M + 380, y, SHEET_W - 2 * M - 380, 9, 0);
+        /* 1.25 x 9 pt a line: a second line pushes the table down */
+        y_table = fmax(y_table, wrapped(cr, t, M + 380, y, SHEET_W - 2 * M - 380, 9, 0) - 5.25);
     }
-    y = settings_table(cr, s, M, y + 6, SHEET_W - 2 * M) + 16;
+    y = settings_table(cr, s, M, y_table, SHEET_W - 2 * M) + 16;
     heading(cr, "Steps", M, y);
     y += 14;
     for (int k = 0; k < s->n_steps; k++) {

@@ -561,14 +561,24 @@ static void draw_title_legend(dlist *L, const tippe_design *d, const tippe_drawi
         sw->stroke = BLACK;
         page_text(L, x + 38, y, 0, 14, 0, BLACK, "moving weight (at Z2)");
     }
-    char notes[300];
-    int grown = 0;
+    char notes[400], holes[200];
+    /* a hole printed at a fit diameter (a tap drill) has no clearance: say which */
+    int fitted = o->fit_diameter_mm > 0 && o->fit_part >= 0, grown = 0;
     for (int i = 0; o->clearance_applied && i < tippe_design_n_parts(d); i++)
-        grown |= o->clearance_applied[i];
+        grown |= o->clearance_applied[i] && !(fitted && i == o->fit_part);
+    const char *fit = o->fit_note ? o->fit_note : "fit diameter";
+    if (fitted && grown)
+        snprintf(holes, sizeof holes, "holes for hardware printed with radial clearance, the "
+                 "screw's at its %s (not in the mass model)", fit);
+    else if (fitted)
+        snprintf(holes, sizeof holes, "the screw's hole printed at its %s (not in the mass model)",
+                 fit);
+    else
+        snprintf(holes, sizeof holes, "%s",
+                 grown ? "holes for hardware printed with radial clearance (not in the mass model)"
+                       : "no hole takes hardware");
     snprintf(notes, sizeof notes,
-             "O centre of the sphere   G centre of mass   %s   outlines within %.3g mm",
-             grown ? "holes for hardware printed with radial clearance (not in the mass model)"
-                   : "no hole takes hardware",
+             "O centre of the sphere   G centre of mass   %s   outlines within %.3g mm", holes,
              o->chord_mm / 2);
     page_text(L, MARGIN_PX, y + 34, 0, 13, 0, GREY, notes);
 }

@@ -542,42 +542,34 @@ static int family_index(tippe_group g)
     return -1;
 }
 
-int tippe_sweep_family_runs(const tippe_sweep_result *r, tippe_sweep_family_run *runs, int max)
+int tippe_sweep_family_run(const tippe_sweep_result *r, int i, int *family, double *from_mm,
+                           double *to_mm)
 {
-    int n = 0;
-    for (int i = 0; i < r->n_zones;) {
-        double from, to, f2, t2;
-        int fam = tippe_sweep_zone_usable(r, &r->zones[i], &from, &to)
-                      ? family_index(r->zones[i].group)
-                      : -1;
-        int j = i + 1;
-        while (fam >= 0 && j < r->n_zones && tippe_sweep_zone_usable(r, &r->zones[j], &f2, &t2) &&
-               family_index(r->zones[j].group) == fam) {
-            to = t2;
-            j++;
-        }
-        if (fam >= 0) {
-            if (runs && n < max)
-                runs[n] = (tippe_sweep_family_run){fam, from, to, i, j - 1};
-            n++;
-        }
-        i = j;
+    double f2, t2;
+    *family = tippe_sweep_zone_usable(r, &r->zones[i], from_mm, to_mm)
+                  ? family_index(r->zones[i].group)
+                  : -1;
+    int j = i + 1;
+    while (*family >= 0 && j < r->n_zones && tippe_sweep_zone_usable(r, &r->zones[j], &f2, &t2) &&
+           family_index(r->zones[j].group) == *family) {
+        *to_mm = t2;
+        j++;
     }
-    return n;
+    return j;
 }
 
 void tippe_sweep_summarise(const tippe_sweep_result *r, tippe_sweep_summary *out)
 {
     memset(out, 0, sizeof *out);
     int has[3] = {0, 0, 0};
-    tippe_sweep_family_run *runs = malloc((size_t)(r->n_zones > 0 ? r->n_zones : 1) * sizeof *runs);
-    int n = runs ? tippe_sweep_family_runs(r, runs, r->n_zones) : 0;
-    for (int k = 0; k < n; k++) {
-        const tippe_sweep_family_run *u = &runs[k];
-        out->widest_mm[u->family] = GSL_MAX(out->widest_mm[u->family], u->to_mm - u->from_mm);
-        has[u->family] = 1;
+    for (int i = 0, f; i < r->n_zones;) {
+        double from, to;
+        i = tippe_sweep_family_run(r, i, &f, &from, &to);
+        if (f >= 0) {
+            out->widest_mm[f] = GSL_MAX(out->widest_mm[f], to - from);
+            has[f] = 1;
+        }
     }
-    free(runs);
     out->has_I = has[0];
     out->has_II = has[1];
     out->has_III = has[2];

@@ -232,15 +232,15 @@ void tippe_sweep_robust_widths(const tippe_sweep_result *r, const tippe_sweep_ba
 {
     int has[3] = {0, 0, 0};
     robust_mm[0] = robust_mm[1] = robust_mm[2] = 0;
-    /* The runs tippe_sweep_summarise measures, each less its end bands. */
-    tippe_sweep_family_run *runs = malloc((size_t)(r->n_zones > 0 ? r->n_zones : 1) * sizeof *runs);
-    int n = runs ? tippe_sweep_family_runs(r, runs, r->n_zones) : 0;
-    for (int k = 0; k < n; k++) {
-        const tippe_sweep_family_run *u = &runs[k];
-        has[u->family] = 1;
-        robust_mm[u->family] = GSL_MAX(robust_mm[u->family], robust(u->from_mm, u->to_mm, b));
+    /* Runs as tippe_sweep_summarise makes them (tippe_sweep_family_run). */
+    for (int i = 0, f; i < r->n_zones;) {
+        double from, to;
+        i = tippe_sweep_family_run(r, i, &f, &from, &to);
+        if (f >= 0) {
+            has[f] = 1;
+            robust_mm[f] = GSL_MAX(robust_mm[f], robust(from, to, b));
+        }
     }
-    free(runs);
     /* 0 unless 3-in-1, as tippe_sweep_summary's narrowest_zone_mm. */
     *narrowest_mm = has[0] && has[1] && has[2]
                         ? GSL_MIN(robust_mm[0], GSL_MIN(robust_mm[1], robust_mm[2]))

@@ -24,6 +24,30 @@ for f in designs/*.json; do
     # (the central launch at 1.25 x the threshold spin)
     check "$stem: every reachable setting's launch check ends as its behaviour" \
         json_ok "$tmp/$stem.json" 'all(s["launch_as_expected"] for s in o["settings"] if s["reachable"])'
+    # every STL file the sheet names (bill of materials, steps) is one it wrote
+    python3 - "$tmp/$stem/$stem-build.md" "$tmp/$stem" <<'EOF' && ok || bad "$stem: the sheet names an STL file that was not written"
+import fnmatch, os, re, sys
+names = re.findall(r"[\w+*.-]+\.stl", open(sys.argv[1]).read())
+files = os.listdir(sys.argv[2])
+assert names, "no file named"
+for n in names:
+    assert any(fnmatch.fnmatch(f, n) for f in files), (n, files)
+EOF
+    # the settings are where tippe sweep's robust widths are: only where the model
+    # applies (no setting with a screw standing out of the ball, where the top
+    # rests on the screw), so every width is sweep's to rounding
+    "$tippe" sweep "$f" --json >"$tmp/$stem.sweep"
+    python3 - "$tmp/$stem.json" "$tmp/$stem.sweep" <<'EOF' && ok || bad "$stem: robust widths or ranges differ from tippe sweep's"
+import json, sys
+b = json.load(open(sys.argv[1])); sw = json.load(open(sys.argv[2]))
+w = sw["robust_zone_widths_mm"]; lo, hi = sw.get("sphere_only_mm") or (-1e300, 1e300)
+assert b["three_in_one"] == sw["three_in_one"]
+for st in b["settings"]:
+    if not st["reachable"]:
+        continue
+    assert abs(st["robust_width_mm"] - w[st["group"]]) < 1e-9, (st["group"], st["robust_width_mm"], w)
+    assert lo - 1e-9 <= st["z2_from_mm"] <= st["z2_to_mm"] <= hi + 1e-9, (st, lo, hi)
+EOF
 done
 
 # --- the settings against sweep, classify and check ---------------------------
@@ -182,12 +206,42 @@ assert made >= 1
 EOF
 done
 
+# the drawing's note says the screw's hole is printed at its tap drill, not with clearance
+check "section drawing: the tapped hole's note" \
+    grep -q "the screw's hole printed at its M10 x 1.5 tap drill" "$tmp/drilled-ball-catalogue-best/drilled-ball-catalogue-best-section.svg"
+check "section drawing: no clearance claimed for the tapped hole" \
+    sh -c '! grep -q "printed with radial clearance" "$1"' _ "$tmp/drilled-ball-catalogue-best/drilled-ball-catalogue-best-section.svg"
+
 # --- refusals -------------------------------------------------------------------
 expect_fail "no output directory" 2 "--output DIR is required" -- build "$d"
+# "-" is no directory (the verb writes several files): refused, and none named "-" made
+(cd "$tmp" && "$tippe" build "$OLDPWD/$d" -o - >/dev/null 2>"$tmp/dash.err"; echo $? >"$tmp/dash.rc")
+check "-o - refused with exit 2" grep -qx 2 "$tmp/dash.rc"
+check "-o - names standard output" grep -q "not to standard output" "$tmp/dash.err"
+check "-o - makes no directory named -" test ! -e "$tmp/-"
+# a printed body named like a sheet file would overwrite it: refused, nothing written
+python3 - designs/m12-setscrew.json "$tmp/clash.json" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["parts"][0]["name"] = "gauge-flips"
+d["parts"][1]["cut_from"] = "gauge-flips"
+json.dump(d, open(sys.argv[2], "w"))
+EOF
+cp designs/materials.json "$tmp/materials.json"
+expect_fail "a body named like a sheet file" 2 "clash-gauge-flips.stl is also the sheet's" -- build "$tmp/clash.json" -o "$tmp/clash"
+check "a clash leaves no output directory" test ! -e "$tmp/clash"
 touch "$tmp/afile"
 expect_fail "output is a file" 2 "not a directory" -- build "$d" -o "$tmp/afile"
 expect_fail "unknown hole fit" 2 "--hole press: not a fit" -- build "$d" -o "$tmp/x" --hole press
 expect_fail "unreadable catalogue" 2 "nothere.json" -- build "$d" -o "$tmp/x" --catalogue "$tmp/nothere.json"
+# the catalogue is read after the directory was made: a failed run removes it again
+check "a failed run leaves no output directory it made" test ! -e "$tmp/x"
+echo '{"iso4026": ' >"$tmp/badcat.json"
+expect_fail "catalogue not JSON" 2 "badcat.json" -- build "$d" -o "$tmp/y" --catalogue "$tmp/badcat.json"
+check "a failed run leaves no output directory it made (bad catalogue)" test ! -e "$tmp/y"
+mkdir "$tmp/keep"
+expect_fail "bad catalogue into an existing directory" 2 "badcat.json" -- build "$d" -o "$tmp/keep" --catalogue "$tmp/badcat.json"
+check "an existing output directory stays, empty" test -d "$tmp/keep" -a -z "$(ls -A "$tmp/keep")"
 # --- a setting never puts the weight where it stands out of the sphere: the M12
 # screw (r 5.5, h 15 mm) leaves the R 25 mm ball at Z2 = sqrt(25^2 - 5.5^2) - 7.5.
 "$tippe" build designs/m12-setscrew.json -o "$tmp/m12" --no-export --json >"$tmp/m12.json"

@@ -173,6 +173,9 @@ typedef struct {
     int needs_split;                     /* the printed body closes around hardware */
     int rod_sockets;                     /* the rod is held by sockets at both poles
                                             (tippe_profile_options.sockets) */
+    int joint_ring;                      /* split, and a cut face is wide enough for tippe
+                                            export's joint ring (else the halves are glued
+                                            without one) */
     /* Not 3-in-1: single changes that make it so, found by the model (each
      * field scanned over its range with the zones swept at every value, the
      * nearest edge of the 3-in-1 values bisected to 1e-3 of the range). */
@@ -186,6 +189,11 @@ typedef struct {
     int n_steps;
     char step[10][400];                  /* assembly steps, in order */
 } tippe_build_sheet;
+
+/* The design file's name without directory and extension: the stem tippe build
+ * (and tippe export, tippe_export_stem, the same rule in the export module)
+ * names its files with. */
+void tippe_build_stem(const char *design_path, char *out, size_t size);
 
 /* Whether the design's printed body closes around its hardware, so that it
  * must be printed in halves (tippe export --split). */

@@ -105,6 +105,16 @@ int tippe_sweep_zone_model_invalid(const tippe_sweep_result *r, const tippe_swee
  * piece too). Returns 1 and [*from_mm, *to_mm] where it is longer than 0. */
 int tippe_sweep_zone_usable(const tippe_sweep_result *r, const tippe_sweep_zone *z,
                             double *from_mm, double *to_mm);
+/* The run that starts at zone i: the usable parts (tippe_sweep_zone_usable) of
+ * the adjacent zones whose groups are of one family (Theorem 5.1's I, II, III:
+ * *family 0, 1, 2; the com_side split at the balanced point does not end a
+ * run), joined into [*from_mm, *to_mm]. *family is -1 when zone i has no usable
+ * part. Returns the index of the zone after the run (i + 1 at least), so that
+ * for (i = 0; i < r->n_zones; i = tippe_sweep_family_run(r, i, ...)) visits
+ * every run once; the summary, the robust widths and tippe build all join runs
+ * this way. */
+int tippe_sweep_family_run(const tippe_sweep_result *r, int i, int *family, double *from_mm,
+                           double *to_mm);
 
 typedef struct {
     int n_scan;        /* scan intervals for bracketing (default 2000) */
@@ -142,20 +152,6 @@ tippe_sweep_path tippe_sweep_design_path(const tippe_design *d);
 int tippe_sweep_design(const tippe_design *d, double from_mm, double to_mm,
                        const tippe_sweep_options *opt, tippe_sweep_result *out,
                        tippe_error *err);
-
-/* A run: a maximal sequence of adjacent usable zones (tippe_sweep_zone_usable)
- * whose groups are of one family of Theorem 5.1 (0 I, 1 II, 2 III); the com_side
- * split at the balanced point does not end it. [from_mm, to_mm] is its usable
- * extent; zones first_zone .. last_zone of r make it. */
-typedef struct {
-    int family;
-    double from_mm, to_mm;
-    int first_zone, last_zone;
-} tippe_sweep_family_run;
-
-/* The runs of r in order of Z2, at most max of them into runs (NULL: count
- * only); returns how many there are. At most r->n_zones. */
-int tippe_sweep_family_runs(const tippe_sweep_result *r, tippe_sweep_family_run *runs, int max);
 
 /* Main-group summary over the usable parts of the zones (tippe_sweep_zone_usable:
  * within the physical travel, the whole range before tippe_sweep_mark_travel, and

@@ -58,16 +58,18 @@ static int build_parse(build_args *a, int argc, char **argv)
                     "       [--no-export] [--json] [--set FIELD=VALUE]",
         .about = "What a maker follows, from the design's numbers: for each behaviour (stays\n"
                  "up, flips, hangs) the robust range of Z2 (the widest zone within the travel\n"
-                 "less its tolerance bands) as the depth of the weight's end below the rim of\n"
-                 "its hole (or the end of its rod) and the turns of its thread, the spin it\n"
-                 "needs (Theorem 5.1) and the verdict of one central hand launch there (tippe\n"
-                 "check's); the bill of materials with the catalogue screw and tap drills;\n"
-                 "and the files tippe export writes.",
-        .after = "Writes DIR/STEM-build.json and DIR/STEM-build.md (the sheet) and, unless\n"
-                 "--no-export, tippe export's files (STL, 3MF, OpenSCAD, section drawing;\n"
-                 "split into halves when the printed body closes around its hardware).\n"
-                 "Exit status: 0 ok, 2 bad usage or design, 1 a computation or a file\n"
-                 "failed. See docs/build.md.",
+                 "where the model applies, less its tolerance bands) as the depth of the\n"
+                 "weight's end below the rim of its hole (or the end of its rod) and the turns\n"
+                 "of its thread, the spin it needs (Theorem 5.1) and the verdict of one\n"
+                 "central hand launch there (tippe check's); the bill of materials with the\n"
+                 "catalogue screw and tap drills; and the files tippe export writes.",
+        .after = "Writes into DIR (STEM: the design file's name without .json) the sheet as\n"
+                 "STEM-build.json, STEM-build.md and one A3 page STEM-sheet.pdf, .svg, .png;\n"
+                 "a depth gauge STEM-gauge-stays-up.stl, -flips.stl, -hangs.stl per setting\n"
+                 "deeper than 1 mm; and, unless --no-export, tippe export's files (STL, 3MF,\n"
+                 "OpenSCAD, section drawing; split into halves when the printed body closes\n"
+                 "around its hardware). Exit status: 0 ok, 2 bad usage or design, 1 a\n"
+                 "computation or a file failed. See docs/build.md.",
         .opts = opts,
         .min_args = 1,
         .max_args = 1,
@@ -91,18 +93,6 @@ static int build_parse(build_args *a, int argc, char **argv)
     return 0;
 }
 
-/* Creates dir if it is missing (one level): 0, or 2 after a usage error. */
-static int make_dir(const char *dir)
-{
-    struct stat st;
-    if (stat(dir, &st) == 0)
-        return S_ISDIR(st.st_mode) ? 0 : tippe_cli_usage_error(VERB, "-o %s: not a directory", dir);
-    if (mkdir(dir, 0777) != 0)
-        return tippe_cli_usage_error(VERB, "-o %s: cannot create the directory: %s", dir,
-                                     strerror(errno));
-    return 0;
-}
-
 /* The default catalogue: catalogue.json beside the design, if it exists. */
 static const char *default_catalogue(const char *design, char *buf, size_t size)
 {
@@ -112,17 +102,6 @@ static const char *default_catalogue(const char *design, char *buf, size_t size)
     else
         snprintf(buf, size, "catalogue.json");
     return access(buf, R_OK) == 0 ? buf : NULL;
-}
-
-/* The design file's name without directory and .json, as tippe export names
- * its files (tippe_export_stem, which lives in the export module). */
-static void stem_of(const tippe_design *d, char *out, size_t size)
-{
-    const char *path = tippe_design_path(d), *base = strrchr(path, '/');
-    snprintf(out, size, "%s", base ? base + 1 : path);
-    char *dot = strrchr(out, '.');
-    if (dot && dot != out)
-        *dot = '\0';
 }
 
 /* The sheet's files: JSON, Markdown, the page as PDF, SVG and PNG, then the
@@ -135,7 +114,7 @@ static const char *const sheet_tails[N_OUT] = {
 static void sheet_paths(const tippe_design *d, const char *dir, char (*out)[4096])
 {
     char stem[1024];
-    stem_of(d, stem, sizeof stem);
+    tippe_build_stem(tippe_design_path(d), stem, sizeof stem);
     const char *sep = dir[0] && dir[strlen(dir) - 1] != '/' ? "/" : "";
     for (int k = 0; k < N_OUT; k++)
         snprintf(out[k], 4096, "%s%s%s%s", dir, sep, stem, sheet_tails[k]);
@@ -182,7 +161,7 @@ static int run(build_args *a, const tippe_design *d)
     a->o.n_sets = a->sets.n;
     sheet_paths(d, a->dir, sheet);
     /* every output checked before any work */
-    int rc = make_dir(a->dir);
+    int rc = tippe_cli_make_output_dir(VERB, "-o", a->dir);
     for (int k = 0; !rc && k < N_OUT; k++)
         rc = tippe_cli_check_output(VERB, "-o", sheet[k], 0);
     char(*paths)[4096] = NULL;
@@ -203,8 +182,18 @@ static int run(build_args *a, const tippe_design *d)
         int np = tippe_export_plan(d, &a->q, paths, TIPPE_EXPORT_MAX_FILES, &err);
         if (np < 0)
             rc = tippe_cli_fail(VERB, &err, err.code ? err.code : TIPPE_EINPUT);
-        for (int k = 0; !rc && k < np; k++)
-            rc = tippe_cli_check_output(VERB, "-o", paths[k], 0);
+        for (int k = 0; !rc && k < np; k++) {
+            /* a printed body named like a sheet file ("gauge-flips") would
+             * overwrite it: both are -o, which tippe_cli_check_output does not
+             * compare with each other */
+            for (int j = 0; !rc && j < N_OUT; j++)
+                if (!strcmp(paths[k], sheet[j]))
+                    rc = tippe_cli_usage_error(VERB, "-o %s: tippe export's file %s is also "
+                                               "the sheet's (a printed body named like a sheet "
+                                               "file); rename the part", a->dir, paths[k]);
+            if (!rc)
+                rc = tippe_cli_check_output(VERB, "-o", paths[k], 0);
+        }
     }
     if (rc) {
         free(paths);

@@ -208,6 +208,12 @@ void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
  * nothing and costs nothing. A plot is also refused (2) when the command's
  * plotting module (src/modules/) does not load: said before the work, not after. */
 int tippe_cli_check_output(const char *verb, const char *option, const char *path, int plot);
+/* The output directory of a verb that writes one (export, build): created if
+ * missing (one level, its parent must exist): 0, or 2 after a usage error
+ * naming option ("-", a file, no parent, no permission). One made by this run is
+ * removed again when the run fails (tippe_cli_run, after its files are
+ * dropped), so a failed run leaves nothing. */
+int tippe_cli_make_output_dir(const char *verb, const char *option, const char *dir);
 /* Records the verb's input files (tippe_cli_parse does it for the positional
  * arguments): tippe_cli_check_output refuses an output that is one of them. */
 void tippe_cli_note_inputs(const char *const *paths, int n);

@@ -327,6 +327,26 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
     return 0;
 }
 
+/* The directory tippe_cli_make_output_dir created in this run, if any. */
+static char made_dir[4096];
+
+int tippe_cli_make_output_dir(const char *verb, const char *option, const char *dir)
+{
+    struct stat st;
+    if (!strcmp(dir, "-")) /* several files cannot share standard output */
+        return tippe_cli_usage_error(verb, "%s -: %s writes several files into a directory, not "
+                                     "to standard output; give a directory", option, verb);
+    if (stat(dir, &st) == 0)
+        return S_ISDIR(st.st_mode) ? 0
+                                   : tippe_cli_usage_error(verb, "%s %s: not a directory", option,
+                                                           dir);
+    if (mkdir(dir, 0777) != 0)
+        return tippe_cli_usage_error(verb, "%s %s: cannot create the directory: %s", option, dir,
+                                     strerror(errno));
+    snprintf(made_dir, sizeof made_dir, "%s", dir);
+    return 0;
+}
+
 int tippe_cli_run(const tippe_cli_verb *v, int argc, char **argv)
 {
     tippe_cli_signals_install(v->name);
@@ -344,9 +364,12 @@ int tippe_cli_run(const tippe_cli_verb *v, int argc, char **argv)
             status = 1;
     }
     tippe_error err = {0};
-    if (status != 0)
+    if (status != 0) {
         tippe_report_set_abort();
-    else if (tippe_report_set_commit(&err) != TIPPE_OK)
+        /* rmdir takes only an empty directory: one holding other files stays */
+        if (made_dir[0])
+            rmdir(made_dir);
+    } else if (tippe_report_set_commit(&err) != TIPPE_OK)
         status = tippe_cli_fail(v->name, &err, TIPPE_ECOMPUTE);
     const int stopped = tippe_cli_signal_pending(v->name);
     return stopped ? stopped : status;

@@ -47,24 +47,6 @@ static int parse_formats(const char *text, unsigned *out)
     return 0;
 }
 
-/* Creates dir if it is missing (one level; *made says so): 0, or 2 after a
- * usage error. */
-static int make_dir(const char *dir, int *made)
-{
-    struct stat st;
-    *made = 0;
-    if (stat(dir, &st) == 0) {
-        if (!S_ISDIR(st.st_mode))
-            return tippe_cli_usage_error(VERB, "-o %s: not a directory", dir);
-        return 0;
-    }
-    if (mkdir(dir, 0777) != 0)
-        return tippe_cli_usage_error(VERB, "-o %s: cannot create the directory: %s", dir,
-                                     strerror(errno));
-    *made = 1;
-    return 0;
-}
-
 /* "group IIa" at Z2, for the drawing's title. */
 static void zone_note(const tippe_design *d, double z2_mm, char *out, size_t size)
 {
@@ -321,9 +303,8 @@ static int export_parse(export_args *a, int argc, char **argv)
     return 0;
 }
 
-/* Every output path is checked before anything is written: 0, or the exit status.
- * *made: the output directory was created for this run. */
-static int export_check_outputs(const tippe_design *d, const export_args *a, int *made)
+/* Every output path is checked before anything is written: 0, or the exit status. */
+static int export_check_outputs(const tippe_design *d, const export_args *a)
 {
     tippe_error err = {0};
     char(*paths)[4096] = malloc(TIPPE_EXPORT_MAX_FILES * sizeof *paths);
@@ -334,7 +315,7 @@ static int export_check_outputs(const tippe_design *d, const export_args *a, int
         free(paths);
         return tippe_cli_fail(VERB, &err, err.code ? err.code : TIPPE_EINPUT);
     }
-    int rc = make_dir(a->dir, made);
+    int rc = tippe_cli_make_output_dir(VERB, "-o", a->dir);
     for (int k = 0; !rc && k < np; k++)
         rc = tippe_cli_check_output(VERB, "-o", paths[k], 0);
     free(paths);
@@ -342,7 +323,7 @@ static int export_check_outputs(const tippe_design *d, const export_args *a, int
 }
 
 /* Meshes, files and the report: 0, or the exit status. */
-static int export_write(const tippe_design *d, const export_args *a, int made)
+static int export_write(const tippe_design *d, const export_args *a)
 {
     tippe_error err = {0};
     tippe_export_result r;
@@ -351,12 +332,7 @@ static int export_write(const tippe_design *d, const export_args *a, int made)
         fprintf(stderr, "tippe %s: warning: %s\n", VERB, r.profiles.warning[k]);
     if (rc) {
         tippe_export_result_free(&r);
-        /* the command removes this run's files afterwards; rmdir only takes an
-         * empty directory made for them (one with finished files stays) */
-        int status = tippe_cli_fail(VERB, &err, rc);
-        if (made)
-            rmdir(a->dir);
-        return status;
+        return tippe_cli_fail(VERB, &err, rc);
     }
     if (a->json)
         rc = tippe_cli_print_json(VERB, to_json(d, &a->q, &r));
@@ -383,7 +359,7 @@ int tippe_cli_export(int argc, char **argv)
     a.q.z2_mm = isnan(a.z2_mm) ? 0.5 * (t0 + t1) : a.z2_mm;
     tippe_top top;
     char note[200], fit_note[64];
-    int made = 0, fit_part;
+    int fit_part;
     double fit_mm;
     /* the screw's hole as the design's fit asks (tap drill or insert pilot hole) */
     if ((rc = tippe_build_design_fit(d, a.q.profile.clearance_mm, &fit_part, &fit_mm, fit_note,
@@ -401,9 +377,9 @@ int tippe_cli_export(int argc, char **argv)
     } else {
         zone_note(d, a.q.z2_mm, note, sizeof note);
         a.q.title_note = note;
-        rc = export_check_outputs(d, &a, &made);
+        rc = export_check_outputs(d, &a);
         if (!rc)
-            rc = export_write(d, &a, made);
+            rc = export_write(d, &a);
     }
     tippe_design_free(d);
     return rc;
