@@ -160,6 +160,9 @@ EOF
 check "no feasible design: exit 1" test $? -eq 1
 check "no feasible design: said, and the table shows why" \
     bash -c "grep -q 'no feasible design' '$tmp/err' && grep -q 'too heavy' '$tmp/out'"
+check "no feasible design: no best claimed in the table, the closest marked" \
+    bash -c "! grep -q -- '<- best' '$tmp/out' && grep -q 'closest (infeasible)' '$tmp/out' &&
+             grep -q '^best     none' '$tmp/out' && ! grep -q 'narrowest zone [0-9]' '$tmp/out'"
 check "no feasible design: nothing written" \
     bash -c "! ls '$tmp'/never.* 2>/dev/null | grep -q ."
 # A chain: the screw's radius follows its height, the hole's radius the screw's

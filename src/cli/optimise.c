@@ -116,6 +116,8 @@ static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, doub
     }
     printf(" %8s %8s %8s %9s%s %8s %8s  %s\n", "I (mm)", "II (mm)", "III (mm)", "narrowest",
            r->robust ? "    robust" : "", "eps_max", "n* rev/s", "status");
+    /* with no feasible candidate there is no best, only the least infeasible */
+    const int feasible = r->choices[r->best_choice].best.status == TIPPE_OPT_OK;
     for (int c = 0; c < r->n_choices; c++) {
         const tippe_opt_eval *e = &r->choices[c].best;
         char label[256];
@@ -126,9 +128,14 @@ static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, doub
         if (r->robust)
             printf(" %9.3f", e->robust_mm);
         printf(" %8.3f %8.2f  %s%s\n", e->eps_max_mm, e->spin_flip_rev_s,
-               tippe_opt_status_name(e->status), c == r->best_choice ? "  <- best" : "");
+               tippe_opt_status_name(e->status),
+               c != r->best_choice ? "" : feasible ? "  <- best" : "  <- closest (infeasible)");
     }
     const tippe_opt_eval *b = &r->choices[r->best_choice].best;
+    if (!feasible) {
+        printf("\nbest     none: no candidate meets every constraint of the spec\n");
+        return;
+    }
     printf("\nbest     narrowest zone %.6f mm (I %.6f, II %.6f, III %.6f mm), travel %.3f .. "
            "%.3f mm\n",
            b->objective_mm, b->zone_mm[0], b->zone_mm[1], b->zone_mm[2], b->travel_mm[0],
