@@ -1269,9 +1269,15 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         cJSON_AddStringToObject(j, "part", s->print[k].part);
         cJSON_AddStringToObject(j, "material", s->print[k].material);
         cJSON_AddBoolToObject(j, "print_block", s->print[k].has_block);
-        cJSON_AddNumberToObject(j, "perimeters", p->perimeters);
+        /* a body with no print block is modelled solid: no walls to count */
+        if (s->print[k].has_block) {
+            cJSON_AddNumberToObject(j, "perimeters", p->perimeters);
+            cJSON_AddNumberToObject(j, "top_bottom_layers", p->top_bottom_layers);
+        } else {
+            cJSON_AddNullToObject(j, "perimeters");
+            cJSON_AddNullToObject(j, "top_bottom_layers");
+        }
         cJSON_AddNumberToObject(j, "line_width_mm", p->line_width_mm);
-        cJSON_AddNumberToObject(j, "top_bottom_layers", p->top_bottom_layers);
         cJSON_AddNumberToObject(j, "layer_height_mm", p->layer_height_mm);
         cJSON_AddNumberToObject(j, "infill", s->print[k].infill);
         cJSON_AddBoolToObject(j, "calibrated", s->print[k].calibrated);
