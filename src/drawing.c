@@ -333,10 +333,22 @@ static void height_dim_at(dlist *L, const char *name, const char *field, double 
     text(L, x_line + 1.2, y_label - 3.2, 0, 12, DIM, "%s", name);
 }
 
-static void height_dim(dlist *L, const char *name, const char *field, double x_edge,
-                       double x_line, double y0, double y1)
+/* A right-hand column's label block (value, name, a note: from about y + 1.5
+ * down to y - 7.5 mm) moved off the cut plane's label, which runs across those
+ * columns at the cut: below it if the dimension reaches there, else above. */
+static double label_clear_of_cut(const tippe_drawing_options *o, double y, double y0, double y1)
 {
-    height_dim_at(L, name, field, x_edge, x_line, y0, y1, 0.5 * (y0 + y1));
+    if (!o->has_cut || y + 1.5 < o->cut_z_mm - 1.2 || y - 7.5 > o->cut_z_mm + 1.2)
+        return y;
+    double below = o->cut_z_mm - 2.7, above = o->cut_z_mm + 8.7;
+    return below >= fmin(y0, y1) ? below : above;
+}
+
+static void height_dim(dlist *L, const tippe_drawing_options *o, const char *name,
+                       const char *field, double x_edge, double x_line, double y0, double y1)
+{
+    height_dim_at(L, name, field, x_edge, x_line, y0, y1,
+                  label_clear_of_cut(o, 0.5 * (y0 + y1), y0, y1));
 }
 
 /* Top z of a (possibly clipped) cylinder wall at radius r. */
@@ -383,7 +395,7 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
             }
             if (s.clip_radius_mm <= 0) {
                 double x_line = R + 6 + 12 * right_k++;
-                height_dim(L, name, "height_mm", s.radius_mm, x_line,
+                height_dim(L, o, name, "height_mm", s.radius_mm, x_line,
                            s.z_mm + dz - s.height_mm / 2, s.z_mm + dz + s.height_mm / 2);
             } else if (s.is_void && !s.moving && s.clip_radius_mm > 0 && s.clip_inner_mm == 0) {
                 /* a blind hole: its depth from the rim as printed (where a depth rod
@@ -401,10 +413,9 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
                     if (up != down) {
                         double x_line = R + 6 + 12 * right_k++;
                         double y0 = up ? lo : -rim, y1 = up ? rim : hi;
-                        height_dim_at(L, name, "depth_mm", ap, x_line, y0, y1,
-                                      y0 + 0.3 * (y1 - y0));
-                        text(L, x_line + 1.2, y0 + 0.3 * (y1 - y0) - 6.4, 0, 12, DIM,
-                             "deep from the rim");
+                        double yl = label_clear_of_cut(o, y0 + 0.3 * (y1 - y0), y0, y1);
+                        height_dim_at(L, name, "depth_mm", ap, x_line, y0, y1, yl);
+                        text(L, x_line + 1.2, yl - 6.4, 0, 12, DIM, "deep from the rim");
                     }
                 }
             } else if (!s.is_void && !s.moving && s.inner_radius_mm == 0 &&
@@ -433,7 +444,7 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
                     }
                 double x_line = R + 6 + 12 * right_k++;
                 /* the label below the middle, clear of a cut plane at the equator */
-                double yl = lo + 0.3 * (hi - lo);
+                double yl = label_clear_of_cut(o, lo + 0.3 * (hi - lo), lo, hi);
                 height_dim_at(L, name, "length_mm", s.radius_mm, x_line, lo, hi, yl);
                 text(L, x_line + 1.2, yl - 6.4, 0, 12, DIM, "%s",
                      held ? "cut square, in sockets" : "cut square");
@@ -447,14 +458,16 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
             dim_text(L, (s.radius_mm + 6.5) * cos(b), (s.radius_mm + 6.5) * sin(b), 0, what,
                      s.thickness_mm, "wall %.4g", s.thickness_mm);
         } else if (!strcmp(s.shape, "torus")) {
+            /* the label under the sphere, clear of the right-hand columns' labels
+             * (a rod's length sits at the band's height) and of the cut plane's */
             double xr = s.centre_radius_mm - s.radial_semi_mm * 0.5, yr = s.z_mm + dz;
-            line(L, xr, yr, R + 7, -R * 0.25, DIM, 1, 0, 1, 0);
+            line(L, xr, yr, R + 1, -R - 2, DIM, 1, 0, 1, 0);
             char what[100];
             snprintf(what, sizeof what, "%s.radial_semi_mm", name);
-            dim_text(L, R + 7.5, -R * 0.25 - 0.5, 0, what, s.radial_semi_mm,
+            dim_text(L, R + 1.5, -R - 3.2, 0, what, s.radial_semi_mm,
                      "%s semi-axes: radial %.4g", name, s.radial_semi_mm);
             snprintf(what, sizeof what, "%s.axial_semi_mm", name);
-            dim_text(L, R + 7.5, -R * 0.25 - 4.5, 0, what, s.axial_semi_mm, "axial %.4g",
+            dim_text(L, R + 1.5, -R - 7.2, 0, what, s.axial_semi_mm, "axial %.4g",
                      s.axial_semi_mm);
         } else if (!strcmp(s.shape, "ball") && fabs(s.radius_mm - R) > 1e-9) {
             double y_line = R + 5 + 6.5 * top_k++;

@@ -3,7 +3,8 @@
 # reader (tests/export_check.py: numpy-stl, zipfile + XML; admesh): closed,
 # manifold, outward meshes whose volume is the body's exact volume, bounding
 # boxes equal to the design's dimensions, a 3MF with the same bodies, drawing
-# labels equal to the design's numbers, OpenSCAD rendering (when installed),
+# labels equal to the design's numbers and clear of each other (whole and
+# --split), OpenSCAD rendering (when installed),
 # and clear refusals. Usage: test_export_cli.sh TIPPE
 source "$(dirname "$0")/lib.sh"
 setup "$@"
@@ -39,6 +40,12 @@ for f in designs/*.json; do
     "$py" "$checker" chord "$tmp/$stem.json" >"$tmp/$stem.chord" 2>/dev/null
     check "$stem: the mesh keeps the chord tolerance: $(cat "$tmp/$stem.chord")" \
         ok_py "$tmp/$stem.chord" 'o["bodies"] and all(max(b["forward_max_mm"], b["reverse_max_mm"]) <= o["chord_mm"] + o["sample_step_mm"] / 2 + 2e-6 for b in o["bodies"])'
+    # the section drawing's labels do not overlap one another (tests/svg_labels.py)
+    check "$stem: section drawing labels clear of each other: $("$py" tests/svg_labels.py "$out/$stem-section.svg")" \
+        "$py" tests/svg_labels.py "$out/$stem-section.svg"
+    "$tippe" export "$f" -o "$out-split" --split --format svg >/dev/null 2>&1
+    check "$stem --split: labels clear of each other and of the cut plane's: $("$py" tests/svg_labels.py "$out-split/$stem-section.svg")" \
+        "$py" tests/svg_labels.py "$out-split/$stem-section.svg"
     # admesh, a second independent reader of each STL
     for stl in "$out"/*.stl; do
         command -v admesh >/dev/null || break
