@@ -20,6 +20,7 @@ static const unsigned verdict_rgb[TIPPE_LAUNCH_N_VERDICTS] = {
 };
 #define C_NMINUS 0xffd21fu /* yellow */
 #define C_NSTAR 0x25d0e8u  /* cyan */
+#define C_INVALID 0xC00000u /* a part stands out of the sphere, as in the zone plot */
 
 static const char *const verdict_key[TIPPE_LAUNCH_N_VERDICTS] = {
     "no_tip (stays upright)", "tip (flips to #gh = #gp)", "hang (intermediate #gh)",
@@ -123,6 +124,26 @@ static void draw_cells(const tippe_launch_map *map, const map_frame *f, int *pre
         }
 }
 
+/* Red hatching over the columns whose Z2 puts a part out of the sphere (map's
+ * '!' columns): the top rests on the part and the model does not apply there.
+ * 1 if any. */
+static int draw_invalid_columns(const tippe_launch_map *map, const tippe_design *d,
+                                const map_frame *f)
+{
+    double a, b;
+    tippe_design_sphere_only_mm(d, &a, &b);
+    int any = 0;
+    for (int i = 0; i < map->n_z2; i++) {
+        const double z = map->z2_mm[i];
+        if (z >= a && z <= b)
+            continue;
+        double x0 = f->xmin + i * f->cell_w;
+        tippe_plot_hatch(x0, x0 + f->cell_w, f->ymin, f->ymax, C_INVALID);
+        any = 1;
+    }
+    return any;
+}
+
 /* Zone boundaries inside the window, and zone names above the panel. */
 static void draw_zones(const tippe_sweep_result *zones, const map_frame *f)
 {
@@ -156,7 +177,8 @@ static void draw_thresholds(const map_thresholds *m)
     }
 }
 
-static void draw_map_legend(const int *present, int boundaries, const map_thresholds *m)
+static void draw_map_legend(const int *present, int boundaries, int invalid,
+                            const map_thresholds *m)
 {
     tippe_plot_key keys[12];
     int nk = 0;
@@ -169,6 +191,9 @@ static void draw_map_legend(const int *present, int boundaries, const map_thresh
     if (boundaries)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_LINE, "zone boundary", 0x000000u, 1, 2.2,
                                       TIPPE_PLOT_SOLID};
+    if (invalid)
+        keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "part out: model invalid",
+                                      C_INVALID, 1.0, 0, 0};
     if (m->any_minus)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_LINE, "n#d-#u: #gh = 0 unstable above",
                                       C_NMINUS, 1, 3.0, TIPPE_PLOT_SOLID};
@@ -222,6 +247,7 @@ int tippe_launch_plot_map(const char *file, const tippe_launch_map *map, const t
 
     int present[TIPPE_LAUNCH_N_VERDICTS] = {0};
     draw_cells(map, &f, present);
+    const int invalid = draw_invalid_columns(map, d, &f);
     if (have_zones)
         draw_zones(&zones, &f);
     draw_thresholds(m);
@@ -234,7 +260,7 @@ int tippe_launch_plot_map(const char *file, const tippe_launch_map *map, const t
     snprintf(sub, sizeof sub, "%s: outcome of %ld hand launches per cell",
              title ? title : tippe_design_name(d), map->per_cell);
     tippe_plot_page_title(tippe_plot_escape(sub, esc, sizeof esc), 1.05);
-    draw_map_legend(present, have_zones && zones.n_zones > 1, m);
+    draw_map_legend(present, have_zones && zones.n_zones > 1, invalid, m);
 
     free(m);
     tippe_sweep_result_free(&zones); /* zeroed by the sweep even when it failed */
