@@ -88,4 +88,15 @@ echo "old film" >"$tmp/keep.mp4"
 "$tippe" animate "$flip" --mu -1 -o "$tmp/keep.mp4" >/dev/null 2>&1
 check "old file kept after a failure" grep -q "old film" "$tmp/keep.mp4"
 
+# A Z2 where the screw stands out of the ball (beyond sqrt(25^2 - 5.5^2) - 7.5 =
+# 16.887 mm): the film's report says the model does not apply, as check does.
+"$tippe" animate designs/m12-setscrew.json --z2 18 --frame 0.1 -o "$tmp/out18.png" >"$tmp/o18.txt"
+check "a protruding screw: the report says contact INVALID" grep -q "^contact   INVALID at Z2 = 18 mm" "$tmp/o18.txt"
+"$tippe" animate designs/m12-setscrew.json --z2 18 --frame 0.1 -o "$tmp/out18.png" --json >"$tmp/o18.json"
+check "a protruding screw: JSON model_valid false, 1.086 mm out" python3 -c '
+import json, math, sys
+o = json.load(open(sys.argv[1]))
+assert o["model_valid"] is False, o["model_valid"]
+assert abs(o["protrusion"]["protrusion_mm"] - (math.hypot(5.5, 25.5) - 25)) < 1e-5, o["protrusion"]' "$tmp/o18.json"
+
 finish

@@ -27,6 +27,9 @@ typedef struct {
     long fps;
     int width, height, json, still;
     tippe_cli_launch_args l; /* the launch: scenario or design, and its options */
+    /* where the design's weight puts a part out of the sphere (set by load_launch) */
+    tippe_design_protrusion protrusion;
+    double z2_mm;
 } args;
 
 static int parse_size(const char *text, int *w, int *h)
@@ -104,7 +107,7 @@ static int parse_args(args *a, int argc, char **argv)
 
 /* The launch of a scenario file or of a design's hand launch, with the
  * design's weight for the picture when the top comes from a design. */
-static int load_launch(const args *a, tippe_animate_launch *l, tippe_error *err)
+static int load_launch(args *a, tippe_animate_launch *l, tippe_error *err)
 {
     tippe_scenario sc;
     int rc = tippe_cli_launch_load(a->input, &a->l, &sc, err);
@@ -116,6 +119,8 @@ static int load_launch(const args *a, tippe_animate_launch *l, tippe_error *err)
     l->initial = sc.initial;
     l->t_end = sc.t_end;
     l->accuracy = sc.accuracy;
+    a->protrusion = sc.protrusion;
+    a->z2_mm = sc.z2_mm;
     if (sc.design_path[0]) {
         /* Only for the picture of the weight: the top itself is the scenario's
          * (a scenario file's own design "set" list is not applied to it). */
@@ -204,6 +209,7 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
             if (isfinite(f->t_settled))
                 cJSON_AddNumberToObject(o, "t_settled_s", f->t_settled);
             cJSON_AddNumberToObject(o, "jellett_rel_drift", r->jellett_rel_drift);
+            tippe_cli_json_model_validity(o, &a->protrusion);
             if (bytes >= 0)
                 cJSON_AddNumberToObject(o, "bytes", (double)bytes);
             else
@@ -249,6 +255,8 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
     if (isfinite(f->t_settled))
         fprintf(out, "settled   theta within 0.05 rad of its end state from t = %.6g s\n",
                 f->t_settled);
+    tippe_cli_fprint_model_validity(out, &a->protrusion, a->z2_mm, "contact   ",
+                                    "the verdict above is");
     fprintf(out, "accuracy  %d samples at exact times, Jellett drift %.2g, made in %.3g s\n",
            f->n_samples, r->jellett_rel_drift, elapsed_s);
 }

@@ -279,6 +279,9 @@ void tippe_cli_json_verdict_proof(struct cJSON *o, const tippe_dynamics_result *
  * 1; prints nothing and returns 0 where the model applies. */
 int tippe_cli_print_model_validity(const tippe_design_protrusion *p, double z2_mm,
                                    const char *prefix, const char *what);
+/* The same onto out (a report that gives standard output to a '-' file). */
+int tippe_cli_fprint_model_validity(FILE *out, const tippe_design_protrusion *p, double z2_mm,
+                                    const char *prefix, const char *what);
 /* The same as JSON fields of o: "model_valid" (true/false) and "protrusion"
  * (null, or {part, protrusion_mm, pole ("+z"/"-z"), theta_range_rad}). */
 void tippe_cli_json_model_validity(struct cJSON *o, const tippe_design_protrusion *p);

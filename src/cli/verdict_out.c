@@ -148,17 +148,24 @@ void tippe_cli_launch_friction(const tippe_launch_options *o, tippe_dynamics_mod
     m->slip_scale_m_s = o->slip_scale_m_s;
 }
 
-int tippe_cli_print_model_validity(const tippe_design_protrusion *p, double z2_mm,
-                                   const char *prefix, const char *what)
+int tippe_cli_fprint_model_validity(FILE *out, const tippe_design_protrusion *p, double z2_mm,
+                                    const char *prefix, const char *what)
 {
     if (!(p->protrusion_mm > 0))
         return 0;
     char text[512];
     tippe_design_protrusion_text(p, text, sizeof text);
-    printf("%sINVALID at Z2 = %g mm: %s; the model lets the top touch the table with its "
-           "sphere only, so %s no prediction\n",
-           prefix, z2_mm, text, what);
+    fprintf(out,
+            "%sINVALID at Z2 = %g mm: %s; the model lets the top touch the table with its "
+            "sphere only, so %s no prediction\n",
+            prefix, z2_mm, text, what);
     return 1;
+}
+
+int tippe_cli_print_model_validity(const tippe_design_protrusion *p, double z2_mm,
+                                   const char *prefix, const char *what)
+{
+    return tippe_cli_fprint_model_validity(stdout, p, z2_mm, prefix, what);
 }
 
 void tippe_cli_json_model_validity(cJSON *o, const tippe_design_protrusion *p)
