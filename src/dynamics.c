@@ -28,8 +28,9 @@ enum { DIM_VERDICT = 9, DIM_TRAJECTORY = 15 };
 /* The step budget also caps the RHS evaluations at this many per allowed step: rk8pd
  * uses 13 a step (16 with the rejections of a stiff launch), but an implicit stepper's
  * finite-difference Jacobians cost up to ~240 (bsimp), so on a stiff launch (the creep
- * law at v_s = 1e-7 m/s) a budget of steps alone let bsimp run ~10 minutes, rk4imp 90 s,
- * where rk8pd stops after 13 s (docs/dynamics.md, "Coulomb friction", "Extremes"). */
+ * law at v_s = 1e-7 m/s) a budget of steps alone let bsimp run for more than 100 s
+ * (stopped by hand) and rk4imp 90 s, where rk8pd stops after 13 s (docs/dynamics.md,
+ * "Coulomb friction", "Extremes"). */
 #define BUDGET_EVALS_PER_STEP 20
 
 /* The accuracy presets, chosen from the work-precision benchmark
