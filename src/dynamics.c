@@ -25,6 +25,13 @@ enum { DIM_VERDICT = 9, DIM_TRAJECTORY = 15 };
  * same room over a whole period). */
 #define STICK_SLIP_FACTOR 30.0
 #define STICK_MARGIN 1e-3
+/* The step budget also caps the RHS evaluations at this many per allowed step: rk8pd
+ * uses 13 a step (16 with the rejections of a stiff launch), but an implicit stepper's
+ * finite-difference Jacobians cost up to ~240 (bsimp), so on a stiff launch (the creep
+ * law at v_s = 1e-7 m/s) a budget of steps alone let bsimp run for more than 100 s
+ * (stopped by hand) and rk4imp 90 s, where rk8pd stops after 13 s (docs/dynamics.md,
+ * "Coulomb friction", "Extremes"). */
+#define BUDGET_EVALS_PER_STEP 20
 
 /* The accuracy presets, chosen from the work-precision benchmark
  * (tools/bench/run.sh, docs/performance.md): without a step cap rk8pd is on the
@@ -1202,7 +1209,8 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
 
     while (!status && !run_may_stop(&rs, res) && rs.t < opt->t_end &&
            res->verdict != TIPPE_VERDICT_LOST_CONTACT) {
-        if (opt->max_steps > 0 && res->steps >= opt->max_steps) {
+        if (opt->max_steps > 0 && (res->steps >= opt->max_steps ||
+                                   rs.c.nevals >= BUDGET_EVALS_PER_STEP * opt->max_steps)) {
             res->budget_exhausted = 1;
             break;
         }

@@ -181,8 +181,10 @@ typedef struct {
      * t_flip is known (a verdict is usually proved well before the flip). */
     int until_flip;
     /* Step budget: the run stops, undecided, with budget_exhausted set, after
-     * this many accepted steps (0: no budget). Bounds the work of a launch that
-     * never settles (mu = 0, or a t_end of millions of periods). */
+     * this many accepted steps or 20 times as many RHS evaluations, whichever
+     * comes first (an implicit stepper's step can cost ~240; 0: no budget). Bounds
+     * the work of a launch that never settles (mu = 0, or a t_end of millions of
+     * periods, or a stiff law: the creep law at a small v_s). */
     long max_steps;
 } tippe_dynamics_options;
 

@@ -159,8 +159,8 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                r->slip_events == 1 ? "" : "s", r->rolling_time_s, r->last.t);
     if (r->budget_exhausted)
         printf("budget    exhausted: the integration stopped at its step budget (%ld accepted "
-               "steps) at t = %.6g s, before t_end = %.6g s\n",
-               r->steps, r->last.t, sc->t_end);
+               "steps, %ld RHS evaluations) at t = %.6g s, before t_end = %.6g s\n",
+               r->steps, r->rhs_evals, r->last.t, sc->t_end);
     if (!tc->ok) {
         printf("theory    no prediction: %s\n", tc->error);
     } else {
