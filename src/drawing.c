@@ -924,17 +924,24 @@ static void dlist_free(dlist *L)
     free(L->it);
 }
 
+/* The drawing's display list: parts, marks, dimensions, title and legend, laid
+ * out; L->fail when memory ran out. */
+static void compose(dlist *L, const tippe_design *d, const tippe_drawing_options *o)
+{
+    material_list mats = {0};
+    draw_parts(L, d, o, &mats);
+    draw_marks_and_travel(L, d, o);
+    draw_dimensions(L, d, o);
+    draw_title_legend(L, d, o, &mats);
+    layout(L);
+}
+
 int tippe_drawing_render(const tippe_design *d, const tippe_drawing_options *o, void *cairo,
                          double x, double y, double w, double h, tippe_error *err)
 {
     cairo_t *cr = cairo;
     dlist L = {0};
-    material_list mats = {0};
-    draw_parts(&L, d, o, &mats);
-    draw_marks_and_travel(&L, d, o);
-    draw_dimensions(&L, d, o);
-    draw_title_legend(&L, d, o, &mats);
-    layout(&L);
+    compose(&L, d, o);
     if (L.fail) {
         dlist_free(&L);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory while drawing");
@@ -959,12 +966,7 @@ int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, c
     if (!svg && !png && !pdf)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: a drawing is .svg, .png or .pdf", path);
     dlist L = {0};
-    material_list mats = {0};
-    draw_parts(&L, d, o, &mats);
-    draw_marks_and_travel(&L, d, o);
-    draw_dimensions(&L, d, o);
-    draw_title_legend(&L, d, o, &mats);
-    layout(&L);
+    compose(&L, d, o);
     if (L.fail) {
         dlist_free(&L);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory while drawing", path);
