@@ -203,4 +203,10 @@ assert all(c["model_valid"] == (c["z2_mm"] < 16.8875) for c in o["cells"]), o["c
 "$tippe" map "$m12" --z2 14:20:4 --spin 5:20rev/s:2 -n 1 "${quick[@]}" >"$tmp/mapp.txt"
 check "map text: the Z2 columns beyond marked !" grep -q "14.00  16.00 18.00! 20.00!" "$tmp/mapp.txt"
 
+# Without friction check's launch (a steady precession) dissipates nothing: undecided,
+# and said so (not blamed on a launch "exactly on an unstable steady state").
+out=$("$tippe" check "$m12" --z2 15 --mu 0 --t-end 5 --accuracy fast)
+check "check --mu 0: undecided, the steady precession without friction named" \
+    bash -c 'grep -q "^verdict    undecided" <<<"$1" && grep -q "without friction this launch" <<<"$1"' _ "$out"
+
 finish

@@ -163,8 +163,17 @@ static void check_text(const hands_args *a, const check_result *r)
     hands_print_model(&a->o);
     print_verdict_line(rec);
     if (rec->how == TIPPE_DECIDED_T_END || rec->how == TIPPE_DECIDED_BUDGET) {
-        printf("           (t_end or the step budget came first; exactly on an unstable steady "
-               "state, as with --tilt 0, nothing ever decides)\n");
+        /* The launch is a steady precession: without friction nothing dissipates
+         * and it stays one; with friction, only a launch exactly on an unstable
+         * steady state (--tilt 0) stays. */
+        const int frictionless = a->o.law == TIPPE_FRICTION_VISCOUS ? !(a->o.mu > 0)
+                                                                    : !(a->o.mu_c > 0);
+        if (frictionless)
+            printf("           (t_end or the step budget came first: without friction this "
+                   "launch, a steady precession, dissipates nothing and never leaves it)\n");
+        else
+            printf("           (t_end or the step budget came first; exactly on an unstable "
+                   "steady state, as with --tilt 0, nothing ever decides)\n");
     } else {
         printf("           decided by %s at t = %.4g s", tippe_decision_name(rec->how), rec->t_s);
         if (rec->verdict == TIPPE_VERDICT_BOUNDED)
