@@ -203,8 +203,9 @@ static void intermediate_curve(sim_series *s, const tippe_scenario *sc, double J
     }
 }
 
-/* (alpha, theta, n): the projection of the paper's Figures 12 and 14, on the right. */
-static void draw_path_3d(sim_series *s, const tippe_scenario *sc, double J0)
+/* (alpha, theta, n): the projection of the paper's Figures 12 and 14, on the right.
+ * 1 if a piece of the intermediate-state curve was drawn. */
+static int draw_path_3d(sim_series *s, const tippe_scenario *sc, double J0)
 {
     const int n = s->n;
     double alo, ahi, nlo, nhi;
@@ -229,12 +230,15 @@ static void draw_path_3d(sim_series *s, const tippe_scenario *sc, double J0)
     /* curve segments: consecutive kept points, broken where theta jumped */
     colour_3d(COL_CURVE);
     plwidth(2.5);
+    int curve = 0;
     for (int i = 0; i < s->nc;) {
         int j = i + 1;
         while (j < s->nc && s->cy[j] - s->cy[j - 1] < 2.5 * M_PI / n)
             j++;
-        if (j - i > 1)
+        if (j - i > 1) {
             plline3(j - i, s->cx + i, s->cy + i, s->cz + i);
+            curve = 1;
+        }
         i = j;
     }
     colour_3d(COL_TRAJ);
@@ -249,11 +253,13 @@ static void draw_path_3d(sim_series *s, const tippe_scenario *sc, double J0)
     plssym(0.0, 1.0);
     plwidth(1.0);
     plschr(0.0, 1.0);
+    return curve;
 }
 
 /* One legend for both sides, in the strip under the 3D panel; the top's numbers
  * under it; the title (the verdict and the scenario) over the page. */
-static void draw_key_and_title(const tippe_scenario *sc, const tippe_dynamics_result *res)
+static void draw_key_and_title(const tippe_scenario *sc, const tippe_dynamics_result *res,
+                               int curve)
 {
     const double vx0 = 0.56, vx1 = 0.98;
     tippe_plot_panel(vx0, vx1, 0.095, 0.225, 0, 1, 0, 1);
@@ -265,7 +271,7 @@ static void draw_key_and_title(const tippe_scenario *sc, const tippe_dynamics_re
         {TIPPE_PLOT_KEY_LINE, "intermediate states (eqs 5.4-5.6, 5.10)", COL_CURVE, 1, 2.5,
          TIPPE_PLOT_SOLID},
     };
-    tippe_plot_legend(keys, 3, "tl", 1, 0.7);
+    tippe_plot_legend(keys, curve ? 3 : 2, "tl", 1, 0.7); /* the curve's key where drawn */
     const tippe_top *top = &sc->model.top;
     char note[400];
     tippe_theory_class cls;
@@ -310,8 +316,8 @@ int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynam
         return rc;
     }
     draw_series(&s, res);
-    draw_path_3d(&s, sc, res->J0);
-    draw_key_and_title(sc, res);
+    const int curve = draw_path_3d(&s, sc, res->J0);
+    draw_key_and_title(sc, res, curve);
     free(s.t);
     return tippe_plot_close(p, err);
 }
