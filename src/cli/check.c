@@ -166,9 +166,9 @@ static void check_text(const hands_args *a, const check_result *r)
         /* The launch is a steady precession: without friction nothing dissipates
          * and it stays one; with friction, only a launch exactly on an unstable
          * steady state (--tilt 0) stays. */
-        const int frictionless = a->o.law == TIPPE_FRICTION_VISCOUS ? !(a->o.mu > 0)
-                                                                    : !(a->o.mu_c > 0);
-        if (frictionless)
+        tippe_dynamics_model law;
+        tippe_cli_launch_friction(&a->o, &law);
+        if (tippe_dynamics_frictionless(&law))
             printf("           (t_end or the step budget came first: without friction this "
                    "launch, a steady precession, dissipates nothing and never leaves it)\n");
         else
