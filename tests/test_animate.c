@@ -4,7 +4,6 @@
 
 #include "tippe/animate.h"
 #include "tippe/scenario.h"
-#include "tippe/scene.h"
 
 #include <math.h>
 #include <stdint.h>

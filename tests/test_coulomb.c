@@ -4,8 +4,7 @@
  * speed v_s, Pliskin's spin dependence, and Cohen's (1977) launch. docs/dynamics.md,
  * "Coulomb friction", gives the figures these reproduce. */
 #include "check.h"
-#include "tippe/dynamics.h"
-#include "tippe/launch.h"
+#include "tippe/physics.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>

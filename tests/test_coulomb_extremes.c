@@ -10,8 +10,7 @@
  * are steady states). docs/dynamics.md, "Coulomb friction", "Extremes" has the
  * figures. */
 #include "check.h"
-#include "tippe/dynamics.h"
-#include "tippe/theory.h"
+#include "tippe/physics.h"
 
 #include <math.h>
 #include <stdio.h>

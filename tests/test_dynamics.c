@@ -1,7 +1,6 @@
 /* Tests of the dynamics core: conservation laws, the regular form against the
  * paper's Euler-angle form, Theorem 5.1 against simulation, symmetry, events. */
-#include "tippe/dynamics.h"
-#include "tippe/theory.h"
+#include "tippe/physics.h"
 
 #include "check.h"
 

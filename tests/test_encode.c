@@ -3,7 +3,7 @@
  * (issue 19.11: the GIF muxer's held packet leaked when a write failed). */
 #include "check.h"
 
-#include "tippe/encode.h"
+#include "tippe/animate.h"
 
 #include <malloc.h>
 #include <stdint.h>

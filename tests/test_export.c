@@ -3,7 +3,7 @@
 #include "check.h"
 
 #include "tippe/design.h"
-#include "tippe/mesh.h"
+#include "export/mesh.h"
 #include "tippe/profile.h"
 
 #include <math.h>

@@ -5,8 +5,7 @@
  * 1 mm and 1 m, and designs with a 1e-6 mm hole, a 1e-6 mm shell and the weight
  * at the very end of its travel. */
 #include "tippe/design.h"
-#include "tippe/dynamics.h"
-#include "tippe/theory.h"
+#include "tippe/physics.h"
 
 #include "check.h"
 

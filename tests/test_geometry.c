@@ -1,6 +1,6 @@
 /* test_geometry: the solids' closed forms against an independent numerical
  * integration of their regions, exact limits, composition, and thin-part accuracy. */
-#include "tippe/geometry.h"
+#include "tippe/design.h"
 
 #include "check.h"
 

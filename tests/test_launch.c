@@ -3,8 +3,8 @@
  * launch distributions, bit-identical runs on 1 and 2 OpenMP threads, tallies,
  * the central launch, and outcomes that Theorem 5.1 forbids. */
 #include "tippe/design.h"
-#include "tippe/launch.h"
-#include "tippe/progress.h"
+#include "tippe/physics.h"
+#include "tippe/base.h"
 
 #include "check.h"
 

@@ -2,8 +2,7 @@
  * against quantities computed another way: the energy of random states from the
  * dynamics module (E >= V), the intermediate states of eq 5.10 (critical points),
  * Theorem 5.1's predictions (minima) and a dense scan of V's slope (completeness). */
-#include "tippe/dynamics.h"
-#include "tippe/theory.h"
+#include "tippe/physics.h"
 
 #include "check.h"
 

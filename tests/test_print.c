@@ -13,8 +13,6 @@
  * errors), the "shell" clip's closed form, and the issue's figures for the
  * paper's M12 ball. Run from the repository root. */
 #include "tippe/design.h"
-#include "tippe/geometry.h"
-#include "tippe/print.h"
 
 #include "check.h"
 

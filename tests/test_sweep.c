@@ -1,6 +1,7 @@
 /* Tests of the Z2 sweep core and its plots on synthetic paths Z2 -> (A/C, eps/R),
  * checked against an independent reference: a dense scan of
  * tippe_theory_classify() with each change of group refined by bisection. */
+#include "tippe/plot.h"
 #include "tippe/sweep.h"
 
 #include "check.h"

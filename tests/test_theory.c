@@ -1,7 +1,7 @@
 /* Tests of the theory module against the definitions of Ciocci et al. 2012,
  * section 5, Theorem 5.1, Appendix A and section 7.1. The inequalities and
  * equations are re-derived here independently of src/theory.c where possible. */
-#include "tippe/theory.h"
+#include "tippe/physics.h"
 
 #include "check.h"
 

@@ -5,8 +5,6 @@
  * widths are width less both bands. Run from the repository root. */
 #include "tippe/design.h"
 #include "tippe/sweep.h"
-#include "tippe/sweep_bands.h"
-#include "tippe/tolerance.h"
 
 #include "check.h"
 

@@ -5,8 +5,7 @@
  * (rk8pd at rtol 1e-10, on past the decision): the motion stays in the claimed theta
  * range with Rn above the claimed bound, and where it is affordable it is followed
  * until it reaches the claimed end state. */
-#include "tippe/dynamics.h"
-#include "tippe/theory.h"
+#include "tippe/physics.h"
 
 #include "check.h"
 

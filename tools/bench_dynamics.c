@@ -8,7 +8,7 @@
  * prints RHS evaluations, steps, the best wall time of several repeats, and the
  * Jellett drift reached.
  *   usage: bench_dynamics [REPEATS]   (default 5) */
-#include "tippe/dynamics.h"
+#include "tippe/physics.h"
 #include "bench_util.h"
 
 #include <math.h>

@@ -20,10 +20,8 @@
 #include <stdio.h>
 
 #include "tippe/design.h"
-#include "tippe/dynamics.h"
-#include "tippe/error.h"
-#include "tippe/launch.h"
-#include "tippe/print.h"
+#include "tippe/physics.h"
+#include "tippe/base.h"
 
 /* ISO 261 coarse-pitch metric threads (ISO 724 basic profile). */
 typedef struct {

@@ -1,3 +1,208 @@
+/* tippe/design.h: a top as designed: the solids (geometry), the printed parts (print), the design file and its materials, tolerances, and the top struct that crosses to physics.
+ *
+ * One public header per module (docs/architecture.md); the sections below keep
+ * the notes of the headers they were. */
+#ifndef TIPPE_DESIGN_H
+#define TIPPE_DESIGN_H
+
+#include <stddef.h>
+
+#include "tippe/base.h"
+
+/* ==== from tippe/top.h ==== */
+/* tippe/top.h: the one struct that crosses from geometry to physics.
+ *
+ * An eccentric sphere (paper section 3, Figure 4): mass m, sphere radius R,
+ * eccentricity eps = distance from the geometric centre to the centre of mass
+ * (0 <= eps < R; the centre of mass is below the centre when theta = 0),
+ * A = transverse moment through the centre of mass, C = axial moment. SI units.
+ * Theory and dynamics take only this (plus g and friction). */
+typedef struct {
+    double m;   /* kg */
+    double R;   /* m */
+    double eps; /* m, >= 0 */
+    double A;   /* kg m^2 */
+    double C;   /* kg m^2 */
+    /* Which side of the sphere's centre the centre of mass lies on, along the
+     * design's +z axis: +1 above, -1 below, 0 at the centre. That side is the one
+     * that rests on the table at theta = 0. Informational only. */
+    int com_side;
+} tippe_top;
+
+/* Gravity used wherever a user gives none (scenarios, classify, launches), m/s^2. */
+#define TIPPE_DEFAULT_G_M_S2 9.81
+
+static inline double tippe_top_A_over_C(const tippe_top *t) { return t->A / t->C; }
+static inline double tippe_top_eps_over_R(const tippe_top *t) { return t->eps / t->R; }
+
+/* ==== from tippe/geometry.h ==== */
+/* tippe/geometry.h: mass properties of solids of revolution about the z axis.
+ *
+ * Every solid is described by four integrals over its region (SI units):
+ *   m    = rho * \int dV          [kg]
+ *   m_z  = rho * \int z dV        [kg m]
+ *   m_zz = rho * \int z^2 dV      [kg m^2]
+ *   m_rr = rho * \int r^2 dV      [kg m^2]   (r = distance from the z axis)
+ * These add for parts, subtract for voids and shift exactly along z, so a
+ * composite top is a sum of them. From the sum (tippe_moments_inertia):
+ *   z_cm = m_z / m,  C = m_rr,  A_origin = m_rr / 2 + m_zz,  A = A_origin - m z_cm^2.
+ * The constructors below return the moments at unit density (rho = 1), i.e.
+ * volume moments; tippe_moments_scale() applies a density in kg/m^3.
+ * Lengths are in metres. z is measured from the centre of the sphere. */
+typedef struct {
+    double m, m_z, m_zz, m_rr;
+} tippe_moments;
+
+/* The solids (unit density). ball_radius <= 0 or INFINITY means "not clipped";
+ * otherwise the solid is intersected with the ball of that radius centred at
+ * the origin (a hole drilled through a sphere, a rod that spans a shell, a
+ * band inside a shell). A zero or negative size (radius, thickness, height,
+ * semi-axis, r_out <= r_in) gives zero moments, never NaN; a negative r_in is a
+ * plain cylinder, a shell thicker than its radius is the ball. All moments are
+ * exact integrals (closed forms) up to rounding, thin shells and walls included:
+ * relative error ~1e-15. */
+tippe_moments tippe_ball(double radius, double z_centre);
+tippe_moments tippe_shell(double outer_radius, double thickness, double z_centre);
+/* Annular cylinder r_in <= r <= r_out, |z - z_centre| <= height/2; r_in = 0 is a
+ * plain cylinder. */
+tippe_moments tippe_tube(double r_in, double r_out, double height, double z_centre,
+                         double ball_radius);
+/* Solid torus of elliptical cross-section: ((r - centre_radius)/radial_semi)^2 +
+ * ((z - z_centre)/axial_semi)^2 <= 1, normally with radial_semi <= centre_radius
+ * (if larger, the cross-section reaches past the axis and the solid is the region
+ * it sweeps, counted once). When the ball cuts it, the heights where the ball's
+ * surface crosses the torus are found by GSL root finding and the integrals
+ * between them are closed forms; reentrant, NaN only if GSL cannot allocate. */
+tippe_moments tippe_torus(double centre_radius, double radial_semi, double axial_semi,
+                          double z_centre, double ball_radius);
+
+tippe_moments tippe_moments_add(tippe_moments a, tippe_moments b);
+tippe_moments tippe_moments_sub(tippe_moments a, tippe_moments b);
+tippe_moments tippe_moments_scale(tippe_moments a, double density_kg_m3);
+/* The same solid moved by dz along the axis (parallel-axis theorem). */
+tippe_moments tippe_moments_shift(tippe_moments a, double dz);
+
+/* A = m_rr/2 + m_zz - m z_cm^2 is formed from sums about the origin: it loses about
+ * log10(z_cm^2 / var(z)) digits, little for a top built around its sphere's centre.
+ * m = 0 gives z_cm = 0. */
+typedef struct {
+    double m;     /* kg */
+    double z_cm;  /* m, signed: centre of mass above (+) or below (-) the origin */
+    double A;     /* kg m^2, about a transverse axis through the centre of mass */
+    double C;     /* kg m^2, about the symmetry axis */
+} tippe_inertia;
+
+tippe_inertia tippe_moments_inertia(tippe_moments a);
+
+/* ==== from tippe/print.h ==== */
+/* tippe/print.h: a part as an FDM printer makes it -- walls, top/bottom skins
+ * and sparse infill -- and the mass moments that follow.
+ *
+ * The part is printed with the top's axis vertical (z up): the only
+ * orientation in which every layer is a set of concentric annuli, so the
+ * printed part stays a solid of revolution and the top's A, C and eps keep
+ * their meaning. The printed part P is the part's region minus the voids cut
+ * from it. A point of P is solid material when
+ *   - (walls) in the horizontal layer through it, its radial distance to a
+ *     circle bounding the annulus that contains it is at most wall_m
+ *     (= perimeters x line width); the axis is not a boundary, so a layer that
+ *     is a full disc has a wall only at its rim, but a ring with a tiny hole
+ *     (near the pole of a shell's cavity) has one at the hole too;
+ *   - (skins) on the vertical line through it, its distance to an end of the
+ *     segment of P containing it is at most skin_m (= top/bottom layers x
+ *     layer height);
+ * and elsewhere (the "sparse core") it has infill x the material's density.
+ * Layers are continuous (not quantised to the layer height).
+ *
+ * In the (r, z) half-plane the core is the set of points whose horizontal
+ * segment [r - wall, r + wall] (mirrored through the axis) and vertical
+ * segment [z - skin, z + skin] both lie in P. Its cross-section at a height z
+ * is a union of annuli found exactly (every cross-section of a ball, shell,
+ * tube or torus, clipped or not, is one annulus whose radii are monotone
+ * either side of one centre height, so the extremes over [z - skin, z + skin]
+ * are values at the ends or at a centre). The moments of each annulus are
+ * closed forms in r; the remaining integral over z is done by GSL's adaptive
+ * QAGS between breakpoints: every height where the set of curves bounding the
+ * core changes (a wall meeting a skin, a hole's wall ending, ...), found by
+ * bisection to ~1e-15 of the part's height from 2048 samples plus every centre
+ * and end of a solid shifted by 0 and +-skin. The error bound returned is the
+ * sum of QAGS's estimates; the requested accuracy is 1e-12 relative. */
+
+/* Slicer settings, as a design file gives them. */
+typedef struct {
+    int perimeters;           /* walls, line widths */
+    double line_width_mm;
+    int top_bottom_layers;    /* skins, layers */
+    double layer_height_mm;
+    double infill;            /* fraction 0 .. 1 of the solid density */
+} tippe_print_settings;
+
+/* PrusaSlicer-like defaults: 2 x 0.45 mm perimeters, 4 x 0.2 mm top/bottom,
+ * 15 % infill. */
+tippe_print_settings tippe_print_defaults(void);
+
+static inline double tippe_print_wall_mm(const tippe_print_settings *s)
+{
+    return s->perimeters * s->line_width_mm;
+}
+static inline double tippe_print_skin_mm(const tippe_print_settings *s)
+{
+    return s->top_bottom_layers * s->layer_height_mm;
+}
+
+/* A solid of revolution about the z axis (lengths in m), as the geometry
+ * module's constructors take them, with its clip: the solid is intersected
+ * with the ball |x| <= clip_outer (0: not clipped) and, if clip_inner > 0,
+ * with the outside of the ball |x| >= clip_inner (the wall of a shell). Both
+ * clip balls are centred at the origin. */
+typedef enum {
+    TIPPE_SOLID_BALL,
+    TIPPE_SOLID_SHELL,
+    TIPPE_SOLID_TUBE, /* inner_radius 0: a plain cylinder */
+    TIPPE_SOLID_TORUS
+} tippe_solid_kind;
+
+typedef struct {
+    tippe_solid_kind kind;
+    double z_centre;
+    double radius;        /* ball, shell (outer), tube (outer) */
+    double inner_radius;  /* shell (of its cavity), tube */
+    double height;        /* tube */
+    double centre_radius, radial_semi, axial_semi; /* torus */
+    double clip_outer, clip_inner;
+} tippe_solid;
+
+typedef struct {
+    tippe_moments core; /* unit-density volume moments of the sparse core (SI) */
+    double abserr[4];   /* error bounds on core.m, m_z, m_zz, m_rr (QAGS estimates) */
+    int n_pieces;       /* z intervals integrated separately */
+} tippe_print_core;
+
+/* The sparse core of part minus voids[0..n_voids) for walls wall_m thick and
+ * skins skin_m thick (both >= 0; 0 and 0 give the whole printed part, which
+ * tests compare with the closed forms). TIPPE_EINPUT for a void the model
+ * cannot handle (a clipped torus void: its extreme radii over a height range
+ * are not at a centre); TIPPE_ECOMPUTE if GSL cannot allocate or QAGS cannot
+ * reach 1e-10 of the part's scale. Reentrant. */
+int tippe_print_core_moments(const tippe_solid *part, const tippe_solid *voids, int n_voids,
+                             double wall_m, double skin_m, tippe_print_core *out,
+                             tippe_error *err);
+
+/* Mass moments of the printed part: density x (solid - (1 - infill) x core),
+ * where solid is the printed part's unit-density moments (closed form). */
+tippe_moments tippe_print_moments(tippe_moments solid, tippe_moments core, double density_kg_m3,
+                                  double infill);
+
+/* Mass is affine in the infill, m(f) = rho (V_solid - (1 - f) V_core), so the
+ * infill that gives a weighed mass is (m / rho - V_solid + V_core) / V_core.
+ * Returns 0 and sets *infill, or -1 if the mass is below the walls and skins
+ * alone (f < 0), +1 if above the solid part (f > 1). mass_at_0 and mass_at_1
+ * (kg, may be NULL) get the two limits for messages. */
+int tippe_print_infill_for_mass(double mass_kg, double solid_volume_m3, double core_volume_m3,
+                                double density_kg_m3, double *infill, double *mass_at_0,
+                                double *mass_at_1);
+
+/* ==== from tippe/design.h ==== */
 /* tippe/design.h: a top described by a design file (JSON), placed at one Z2.
  *
  * A design file gives the sphere radius, named parts (solids of revolution
@@ -11,14 +216,6 @@
  *
  * A loaded design is read-only: tippe_design_top() and the other accessors may
  * be called from many threads at once on the same design. */
-#ifndef TIPPE_DESIGN_H
-#define TIPPE_DESIGN_H
-
-#include "tippe/error.h"
-#include "tippe/print.h"
-#include "tippe/top.h"
-
-#include <stddef.h>
 
 typedef struct tippe_design tippe_design; /* opaque */
 
@@ -268,5 +465,56 @@ int tippe_design_source_apply(const tippe_design_source *s, const char *const *o
 
 const char *tippe_design_source_path(const tippe_design_source *s);
 void tippe_design_source_free(tippe_design_source *s);
+
+/* ==== from tippe/tolerance.h ==== */
+/* tippe/tolerance.h: how far a built top may be from its design file.
+ *
+ * A design's "tolerances" block (docs/design-format.md) gives, per field, a
+ * +/- value: absolute in the field's unit, or "N%" of it. Fields are named as
+ * --set names them ("radius_mm", "parts.screw.height_mm", "parts[2].z_mm") or,
+ * for a material's density shared by every part made of it (one spool of
+ * filament, one error), "materials.NAME.density_g_cm3". Fields the block leaves
+ * out get the documented defaults (printed dimension +/-0.2 mm, filament
+ * density +/-3 %, hardware mass +/-2 % through its density, a printed part's
+ * infill +/-25 % of it, or its weighed mass +/-0.1 g); 0 removes one.
+ * The design reads and checks the block when it loads; a loaded design lists
+ * the result (tippe_design_n_tolerances, tippe_design_tolerance). */
+
+#define TIPPE_TOLERANCE_FIELD_LEN 160
+#define TIPPE_TOLERANCE_MAX 200
+
+/* Documented defaults. */
+#define TIPPE_TOL_PRINTED_MM 0.2
+#define TIPPE_TOL_FILAMENT_DENSITY_PERCENT 3.0
+#define TIPPE_TOL_HARDWARE_MASS_PERCENT 2.0
+/* A printed part's infill as the slicer states it (its real density is not
+ * known: slicer mass estimates are off by 3 to 26 % against the scale), and
+ * the reading of a 0.1 g kitchen scale when the part was weighed. */
+#define TIPPE_TOL_INFILL_PERCENT 25.0
+#define TIPPE_TOL_WEIGHED_G 0.1
+
+typedef struct {
+    char field[TIPPE_TOLERANCE_FIELD_LEN]; /* canonical: parts by name */
+    double value;      /* nominal, in the field's unit */
+    double plus_minus; /* absolute, in the field's unit (> 0) */
+    double percent;    /* as given when relative, else 0 */
+    const char *unit;  /* "mm", "g/cm^3", "g" or "" (infill, a fraction) */
+    const char *rule;  /* "tolerances block", or the default's: "printed dimension",
+                          "filament density", "hardware mass", "slicer infill",
+                          "scale reading" */
+} tippe_tolerance;
+
+int tippe_design_n_tolerances(const tippe_design *d);
+/* Tolerance i (0-based), NULL out of range. */
+const tippe_tolerance *tippe_design_tolerance(const tippe_design *d, int i);
+
+/* The overrides that move t's field from its nominal value by delta (one per
+ * part made of the material, for a material's density), written into
+ * buf[0..cap-1]; returns how many, or -1 if cap is too small. For
+ * tippe_design_derive. */
+int tippe_tolerance_overrides(const tippe_design *d, const tippe_tolerance *t, double delta,
+                              char (*buf)[TIPPE_TOLERANCE_FIELD_LEN + 40], int cap);
+
+
 
 #endif

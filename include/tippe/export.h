@@ -13,8 +13,7 @@
 #include <stddef.h>
 
 #include "tippe/design.h"
-#include "tippe/error.h"
-#include "tippe/mesh.h"
+#include "tippe/base.h"
 #include "tippe/profile.h"
 
 enum {
@@ -26,6 +25,13 @@ enum {
     TIPPE_EXPORT_PDF = 32,
     TIPPE_EXPORT_ALL = 63
 };
+
+/* Topology audit: edges used once (open), more than twice (non-manifold),
+ * directed edges used twice (inconsistent orientation), triangles of zero area
+ * after rounding to float (as written to STL). All zero for a good mesh. */
+typedef struct {
+    long open_edges, nonmanifold_edges, flipped_edges, degenerate_triangles;
+} tippe_mesh_audit;
 
 typedef struct {
     tippe_profile_options profile;

@@ -17,7 +17,7 @@
 #define TIPPE_OPTIMISE_H
 
 #include "tippe/design.h"
-#include "tippe/error.h"
+#include "tippe/base.h"
 #include "tippe/sweep.h"
 
 #include <stddef.h>
@@ -132,13 +132,6 @@ int tippe_opt_overrides(const tippe_opt_spec *s, int choice, const double *x, ch
  * plots and checks; *out must be freed with tippe_sweep_result_free(). */
 int tippe_opt_sweep(const tippe_opt_spec *s, const tippe_opt_eval *e, tippe_sweep_result *out,
                     tippe_error *err);
-
-/* The plot (src/plot_optimise.c; PNG, SVG or PDF by extension): the zones along
- * Z2 of the best design of each choice (the best ten when there are more),
- * with each group's width, and the convergence of the search (best score so
- * far against evaluations) for the same choices. */
-int tippe_opt_plot(const char *file, const tippe_opt_spec *s, const tippe_opt_result *r,
-                   tippe_error *err);
 
 /* The candidate as a design file a user can load: the base design with its
  * overrides, travel_mm the physical travel, materials relative to out_path's

@@ -18,7 +18,7 @@
 #define TIPPE_PROFILE_H
 
 #include "tippe/design.h"
-#include "tippe/error.h"
+#include "tippe/base.h"
 
 typedef struct {
     double r_mm, z_mm;

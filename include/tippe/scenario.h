@@ -16,8 +16,8 @@
 #define TIPPE_SCENARIO_H
 
 #include "tippe/design.h"
-#include "tippe/dynamics.h"
-#include "tippe/error.h"
+#include "tippe/physics.h"
+#include "tippe/base.h"
 
 enum { TIPPE_PHI_DOT_GIVEN = -1 }; /* phi_dot_rule when phi_dot was a number */
 
@@ -60,14 +60,5 @@ int tippe_scenario_for_design(const char *design_path, double z2_mm,
 
 /* "steady", "s1", "s2", "s3", or "given". */
 const char *tippe_scenario_phi_dot_rule_name(int rule);
-
-/* The figure of a simulated scenario (src/plot_sim.c): theta, spin and contact
- * speed against time in stacked panels, and the path in (phi_dot, theta, n)
- * space as in the paper's Figures 12 and 14, with the intermediate states of
- * eq 5.10 and theory's final states. PNG, SVG or PDF by the extension of path,
- * written atomically. samples are trajectory-level samples in time order.
- * PLplot has one global state: call from one thread. */
-int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynamics_result *res,
-                   const tippe_dynamics_sample *samples, int n_samples, tippe_error *err);
 
 #endif

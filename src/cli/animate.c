@@ -4,9 +4,8 @@
 
 #include "tippe/animate.h"
 #include "tippe/design.h"
-#include "tippe/json.h"
-#include "tippe/progress.h"
-#include "tippe/report.h"
+#include "base/json.h"
+#include "tippe/base.h"
 #include "tippe/scenario.h"
 
 #include <cjson/cJSON.h>

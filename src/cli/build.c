@@ -5,7 +5,7 @@
 #include "tippe/build.h"
 #include "tippe/design.h"
 #include "tippe/export.h"
-#include "tippe/report.h"
+#include "tippe/base.h"
 
 #include <cjson/cJSON.h>
 

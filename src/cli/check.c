@@ -2,7 +2,7 @@
  * and theory's prediction. */
 #include "hands.h"
 
-#include "tippe/theory.h"
+#include "tippe/physics.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>

@@ -8,14 +8,13 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "tippe/dynamics.h"
-#include "tippe/launch.h"
+#include "tippe/physics.h"
 #include "tippe/scenario.h"
 
 /* A macro's value as a string literal, for defaults quoted in --help texts. */
 #define TIPPE_CLI_STR_(x) #x
 #define TIPPE_CLI_STR(x) TIPPE_CLI_STR_(x)
-#include "tippe/error.h"
+#include "tippe/base.h"
 
 struct cJSON;
 

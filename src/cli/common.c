@@ -5,9 +5,9 @@
 #include "../modules/module.h"
 
 #include "tippe/design.h"
-#include "tippe/json.h"
+#include "base/json.h"
 #include "tippe/plot.h"
-#include "tippe/report.h"
+#include "tippe/base.h"
 
 #include <cjson/cJSON.h>
 

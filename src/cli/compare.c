@@ -1,10 +1,10 @@
 /* tippe compare: the zone tables of several designs side by side. */
 #include "cli.h"
 
+#include "tippe/plot.h"
 #include "tippe/design.h"
-#include "tippe/report.h"
+#include "tippe/base.h"
 #include "tippe/sweep.h"
-#include "tippe/sweep_bands.h"
 
 #include <cjson/cJSON.h>
 

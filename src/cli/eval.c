@@ -2,7 +2,7 @@
 #include "cli.h"
 
 #include "tippe/design.h"
-#include "tippe/theory.h"
+#include "tippe/physics.h"
 
 #include <cjson/cJSON.h>
 

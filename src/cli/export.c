@@ -4,7 +4,7 @@
 #include "tippe/build.h"
 #include "tippe/design.h"
 #include "tippe/export.h"
-#include "tippe/theory.h"
+#include "tippe/physics.h"
 
 #include <cjson/cJSON.h>
 

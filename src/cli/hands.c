@@ -3,7 +3,7 @@
 #include "hands.h"
 
 #include "tippe/sweep.h"
-#include "tippe/theory.h"
+#include "tippe/physics.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>

@@ -9,8 +9,8 @@
 #include "cli.h"
 
 #include "tippe/design.h"
-#include "tippe/launch.h"
-#include "tippe/progress.h"
+#include "tippe/physics.h"
+#include "tippe/base.h"
 
 #include <stdint.h>
 

@@ -3,8 +3,8 @@
  * tippe/launch.h; what launch, map and check share is in hands.c). */
 #include "hands.h"
 
-#include "tippe/report.h"
-#include "tippe/theory.h"
+#include "tippe/base.h"
+#include "tippe/physics.h"
 
 #include <cjson/cJSON.h>
 #include <inttypes.h>

@@ -2,10 +2,10 @@
  * most frequent outcome of each cell as a table, CSV, JSON and heat map. */
 #include "hands.h"
 
-#include "tippe/launch.h"
-#include "tippe/report.h"
+#include "tippe/plot.h"
+#include "tippe/physics.h"
+#include "tippe/base.h"
 #include "tippe/sweep.h"
-#include "tippe/theory.h"
 
 #include <cjson/cJSON.h>
 #include <inttypes.h>

@@ -1,9 +1,9 @@
 /* tippe optimise: search a spec's design space for the widest narrowest zone. */
 #include "cli.h"
 
+#include "tippe/plot.h"
 #include "tippe/optimise.h"
-#include "tippe/progress.h"
-#include "tippe/report.h"
+#include "tippe/base.h"
 
 #include <cjson/cJSON.h>
 

@@ -4,7 +4,7 @@
  * of range and speaks one unit language. */
 #include "cli.h"
 
-#include "tippe/progress.h"
+#include "tippe/base.h"
 
 #include <getopt.h>
 #include <math.h>

@@ -9,7 +9,7 @@
  * async-signal-safe calls (unlink, write, signal, raise). */
 #include "cli.h"
 
-#include "tippe/report.h"
+#include "tippe/base.h"
 
 #include <signal.h>
 #include <stdio.h>

@@ -1,13 +1,11 @@
 /* tippe simulate: integrate one launch described by a scenario file. */
 #include "cli.h"
 
-#include "tippe/dynamics.h"
-#include "tippe/json.h"
-#include "tippe/launch.h"
+#include "tippe/physics.h"
+#include "base/json.h"
 #include "tippe/plot.h"
-#include "tippe/report.h"
+#include "tippe/base.h"
 #include "tippe/scenario.h"
-#include "tippe/theory.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>

@@ -4,7 +4,6 @@
 #include "tippe/design.h"
 #include "tippe/plot.h"
 #include "tippe/sweep.h"
-#include "tippe/sweep_bands.h"
 
 #include <cjson/cJSON.h>
 

@@ -14,7 +14,7 @@
 #ifndef TIPPE_MODULE_H
 #define TIPPE_MODULE_H
 
-#include "tippe/error.h"
+#include "tippe/base.h"
 
 #include <limits.h>
 #include <pthread.h>

@@ -1,10 +1,10 @@
 /* Stubs of the plots (src/plot*.c, PLplot) for the tippe command: see module.h. */
 #include "module.h"
-#include "tippe/launch.h"
+#include "tippe/plot.h"
+#include "tippe/physics.h"
 #include "tippe/optimise.h"
 #include "tippe/scenario.h"
 #include "tippe/sweep.h"
-#include "tippe/sweep_bands.h"
 
 static tippe_module plot =
     TIPPE_MODULE("plot", "PLplot: apt-get install libplplot-dev plplot-driver-cairo");

@@ -14,7 +14,7 @@
  *   usage: levels SCENARIO.json [REPEATS [N_SAMPLES [CSV_PATH [verdict]]]]
  *   (defaults 7, 20000, /tmp/tippe-levels.csv; the CSV is removed at the end;
  *   a fifth argument "verdict" runs the verdict level only, for perf) */
-#include "tippe/dynamics.h"
+#include "tippe/physics.h"
 #include "../bench_util.h"
 #include "tippe/scenario.h"
 

@@ -34,7 +34,7 @@
  *   usage: work_precision OUTDIR [quick | presets]
  * "quick" runs three steppers and every other tolerance (a smoke test);
  * "presets" only writes OUTDIR/presets.csv. */
-#include "tippe/dynamics.h"
+#include "tippe/physics.h"
 #include "../bench_util.h"
 #include "tippe/scenario.h"
 

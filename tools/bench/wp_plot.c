@@ -4,7 +4,7 @@
  * tolerance, rows that are not "ok" left out.
  *
  *   usage: wp_plot OUT.png SCENARIO FILE.csv [FILE.csv ...] */
-#include "tippe/plot.h"
+#include "plot/canvas.h"
 
 #include <math.h>
 #include <stdio.h>

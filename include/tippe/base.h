@@ -1,0 +1,192 @@
+/* tippe/base.h: the bottom layer: errors as codes with a message, reports and safe file writing, progress.
+ *
+ * One public header per module (docs/architecture.md); the sections below keep
+ * the notes of the headers they were. */
+#ifndef TIPPE_BASE_H
+#define TIPPE_BASE_H
+
+#include <stdio.h>
+
+/* ==== from tippe/error.h ==== */
+/* tippe/error.h: how every tippe function reports failure.
+ *
+ * Like GSL, a function returns an int status (TIPPE_OK on success) and, when it
+ * fails, fills a tippe_error with a message a user can act on: which file, which
+ * field (as a JSON path such as "parts[2].radius_mm"), and what is wrong.
+ * The status doubles as the process exit code of the tippe command. */
+enum {
+    TIPPE_OK = 0,
+    TIPPE_ECOMPUTE = 1, /* a computation failed (integrator, root finder, ...) */
+    TIPPE_EINPUT = 2    /* bad usage or bad input: the user can fix it */
+};
+
+typedef struct {
+    int code;
+    char msg[1024];
+} tippe_error;
+
+/* Sets err (if not NULL) and returns code, so that callers can write
+ * `return tippe_error_set(err, TIPPE_EINPUT, "%s: %s: ...", file, path);` */
+int tippe_error_set(tippe_error *err, int code, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* Turns GSL's abort-on-error handler off, once per process and thread-safely:
+ * every library entry point that calls GSL calls this first, and then checks
+ * GSL's return codes itself (GSL's default handler would abort the process). */
+void tippe_gsl_errors_as_codes(void);
+
+/* ==== from tippe/report.h ==== */
+/* tippe/report.h: output files that appear whole or not at all, and never
+ * cost a user an old file.
+ *
+ * Where the bytes go depends on what the path names:
+ *   - a regular file or a new path: a temporary next to the file
+ *     ("NAME.tmp.XXXXXX"), renamed over it once everything is written and
+ *     checked, so that a reader never sees a half-written file and a failed run
+ *     leaves the old file as it was. The new file keeps the old one's
+ *     permissions (a new one gets 0666 less the umask, as fopen() gives);
+ *   - a symbolic link: the same, for the file the link finally points to (the
+ *     temporary sits next to that file and the link is kept);
+ *   - a character device, a FIFO (/dev/null, /dev/stdout, a named pipe):
+ *     straight through, since such a file cannot be replaced;
+ *   - "-": standard output, straight through: file descriptor 1 through a
+ *     duplicate of it (closed at commit), whatever the C stream stdout is.
+ * A directory, a path through a regular file or one that cannot be created is
+ * refused (TIPPE_EINPUT) with the reason; tippe_report_check() finds that out
+ * before any work by really creating (and removing) a temporary.
+ *
+ * Every write is checked: commit flushes, syncs and closes the stream and fails
+ * (TIPPE_ECOMPUTE, "PATH: writing WHAT failed: REASON") if any of it failed.
+ *
+ *     tippe_report_file rf;
+ *     if ((rc = tippe_report_open(&rf, path, "the CSV file", err)) != 0) return rc;
+ *     fprintf(rf.f, ...);
+ *     return tippe_report_commit(&rf, err);    // or tippe_report_abort(&rf)
+ *
+ * Sets of outputs: between tippe_report_set_begin() and tippe_report_set_commit()
+ * (or _set_abort()), commit only finishes a file (complete and checked under
+ * its temporary name); the set's files are renamed into place together at the
+ * end, or all removed. The tippe command runs every verb inside one set, so a
+ * verb's outputs are all written or none is (src/cli/common.c).
+ *
+ * Signals: every temporary is recorded in a fixed table that
+ * tippe_report_remove_temporaries() empties with unlink() only, so that a
+ * signal handler may call it (the command's handler, src/cli/signals.c).
+ * Outputs are written from one thread. */
+
+typedef enum {
+    TIPPE_REPORT_REPLACE = 0, /* temporary + rename (regular file, new path) */
+    TIPPE_REPORT_DIRECT,      /* straight through (device, FIFO) */
+    TIPPE_REPORT_STDOUT       /* "-" */
+} tippe_report_mode;
+
+typedef struct {
+    FILE *f;                  /* write here; NULL once closed */
+    const char *what;         /* "the CSV file", "the plot": for messages */
+    tippe_report_mode mode;
+    char path[4096];          /* as given, for messages */
+    char target[4096];        /* the file written or replaced (a link's target) */
+    char write_path[4096 + 16]; /* where the bytes go: the temporary or target */
+    int slot;                 /* the temporary's entry in the table, or -1 */
+    int fd, sync_on_close, io_errno; /* private: the stream's descriptor and first error */
+} tippe_report_file;
+
+/* Opens path for writing (see above for where the bytes go). what (a string
+ * that outlives rf) names the file in messages; rf must stay where it is until
+ * commit or abort (its stream refers to it). TIPPE_EINPUT if path cannot
+ * be written ("PATH: cannot write WHAT: REASON"); on failure nothing is left
+ * on disk. */
+int tippe_report_open(tippe_report_file *rf, const char *path, const char *what,
+                      tippe_error *err);
+
+/* As tippe_report_open(), for a writer that opens the file by name itself
+ * (FFmpeg, lib3mf): rf->f is NULL and the writer writes to rf->write_path (the
+ * temporary, the device, or /dev/stdout for "-"). The caller checks its
+ * writer's status and then commits or aborts. */
+int tippe_report_open_name(tippe_report_file *rf, const char *path, const char *what,
+                           tippe_error *err);
+
+/* Whether path can be written as tippe_report_open() would write it, found by
+ * creating and removing a temporary next to it (an existing file must also
+ * open for writing; a FIFO need not have a reader yet). Changes nothing on
+ * disk. TIPPE_EINPUT with the reason if not. */
+int tippe_report_check(const char *path, const char *what, tippe_error *err);
+
+/* The file path finally names: path, or what its symbolic links point to
+ * (relative links resolved from their own directory; a dangling link gives
+ * the file it would create). For telling whether two outputs are one file. */
+int tippe_report_target(const char *path, char *out, size_t size, tippe_error *err);
+
+/* Flushes, syncs and closes rf->f (unless NULL) and checks that every write
+ * succeeded, then renames the temporary into place (inside a set: leaves it
+ * for tippe_report_set_commit()). On failure (TIPPE_ECOMPUTE) the temporary is
+ * removed and the old file is untouched. */
+int tippe_report_commit(tippe_report_file *rf, tippe_error *err);
+
+/* Closes rf->f (unless NULL) and removes the temporary. Safe after a failed
+ * open or a commit (then it does nothing). */
+void tippe_report_abort(tippe_report_file *rf);
+
+/* Starts a set of outputs (see above). A set already open is kept. */
+void tippe_report_set_begin(void);
+/* Renames every finished file of the set into place and ends the set. A
+ * rename that fails is reported (TIPPE_ECOMPUTE) and the temporaries not yet
+ * renamed are removed. */
+int tippe_report_set_commit(tippe_error *err);
+/* Removes every temporary (finished or not) and ends the set. */
+void tippe_report_set_abort(void);
+
+/* Removes every temporary still on disk, with unlink() only: safe in a signal
+ * handler. Files already renamed into place are not touched. */
+void tippe_report_remove_temporaries(void);
+
+/* 1 while tippe_report_set_commit() renames files into place (a signal
+ * handler should then let it finish); safe in a signal handler. */
+int tippe_report_committing(void);
+
+/* ==== from tippe/progress.h ==== */
+/* tippe/progress.h: progress of long loops with a time-left estimate.
+ *
+ * On a terminal it is a bar redrawn in place (at most ~5 times a second). On
+ * anything else (a pipe, a file, a CI log) a redrawn bar would be noise, so:
+ * with TIPPE_PROGRESS_AUTO nothing is shown there, and with TIPPE_PROGRESS_ON
+ * (the command's --progress) plain lines are written instead,
+ *     tippe map: 1200/16000 (7.5%), 3 min 05 s left
+ * one when another tenth of the work is done or 30 s have passed since the
+ * last line (never more than one per 2 s), and a last line when it finishes.
+ * tippe_progress_add() may be called from any number of OpenMP threads at once;
+ * it costs one critical section, nothing measurable next to a launch. */
+
+enum { TIPPE_PROGRESS_OFF = 0, TIPPE_PROGRESS_ON = 1, TIPPE_PROGRESS_AUTO = -1 };
+
+typedef struct {
+    FILE *out;
+    int enabled;
+    char label[48];
+    long total, done;
+    double t_start, t_last_draw; /* s, monotonic clock */
+    int drawn;                   /* 1 once a line was drawn (it must be finished) */
+    int plain;                   /* 1: plain lines (not a terminal), 0: a bar */
+    long done_at_last_line;      /* plain lines: units done at the last line */
+} tippe_progress;
+
+/* Starts a bar for `total` units of work. enabled: TIPPE_PROGRESS_ON (a bar
+ * on a terminal, plain lines elsewhere), _OFF or _AUTO (a bar on a terminal,
+ * nothing elsewhere). out may be NULL (then off). */
+void tippe_progress_start(tippe_progress *p, FILE *out, const char *label, long total,
+                          int enabled);
+
+/* Records n more units done; thread-safe. p may be NULL. */
+void tippe_progress_add(tippe_progress *p, long n);
+
+/* Draws the final state (if anything was drawn) and ends the line. p may be NULL. */
+void tippe_progress_finish(tippe_progress *p);
+
+/* Seconds left at the average rate so far: elapsed_s (total - done) / done;
+ * negative when nothing is done yet (no estimate). Pure, for tests. */
+double tippe_progress_eta_s(double elapsed_s, long done, long total);
+
+/* Formats a duration as "42 s", "3 min 05 s" or "2 h 07 min" into buf. */
+char *tippe_progress_format_duration(double s, char *buf, size_t size);
+
+#endif

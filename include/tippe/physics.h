@@ -1,0 +1,663 @@
+/* tippe/physics.h: the physics of a top: the paper's theory (section 5), the equations of motion and their proved verdicts (section 3), hand launches and maps.
+ *
+ * One public header per module (docs/architecture.md); the sections below keep
+ * the notes of the headers they were. */
+#ifndef TIPPE_PHYSICS_H
+#define TIPPE_PHYSICS_H
+
+#include <stdint.h>
+
+#include "tippe/base.h"
+#include "tippe/design.h"
+
+/* ==== from tippe/theory.h ==== */
+/* tippe/theory.h: relative equilibria of the eccentric sphere and their stability
+ * (Ciocci et al. 2012, section 5, Theorem 5.1, Appendix A, section 7.1).
+ *
+ * Pure functions of a top (tippe_top) and g; no state, safe on any number of threads.
+ * Throughout, k = A/C and e = eps/R; the Jellett invariant J is in kg m^3/s (SI).
+ * docs/theory.md says which equation each function implements and how points on a
+ * group boundary are decided. */
+
+typedef enum { TIPPE_GROUP_IA, TIPPE_GROUP_IB, TIPPE_GROUP_IIA, TIPPE_GROUP_IIB,
+               TIPPE_GROUP_IIC, TIPPE_GROUP_III } tippe_group;
+
+/* "Ia", "Ib", "IIa", "IIb", "IIc", "III". */
+const char *tippe_group_name(tippe_group g);
+/* The main group of a subgroup: "I", "II" or "III". */
+const char *tippe_group_family(tippe_group g);
+
+/* Points closer than this to a boundary of the phase diagram (in k - 1 +- e,
+ * k - 1 + e^2 or b -+ 1) are reported as lying on it. */
+#define TIPPE_THEORY_BOUNDARY_TOL 1e-12
+
+typedef struct {
+    tippe_group group;       /* never undefined: on a boundary, the side chosen is documented */
+    const char *boundary;    /* NULL, or the name of the boundary it lies on within 1e-12 */
+    double A_over_C, eps_over_R;
+    int has_b; double b, theta_b_rad;   /* eq 5.11 */
+    int has_c; double c, theta_c_rad;   /* eq 5.8/5.9 */
+    /* Added to the contract: b and c are real numbers more often than their angles
+     * exist. has_b means b is real (k < 1 and k - 1 <= -e^2); has_theta_b means
+     * also |b| <= 1, so that theta_b_rad = acos(b) is the fold angle. has_c means
+     * k != 1; has_theta_c means |c| <= 1 (groups I and III), where theta_c_rad
+     * bounds the intermediate states. theta_*_rad is 0 when its flag is 0. */
+    int has_theta_b, has_theta_c;
+} tippe_theory_class;
+
+/* Classifies (k, e) by Theorem 5.1. TIPPE_EINPUT unless k > 0 and 0 <= e < 1 are
+ * finite numbers. Points within TIPPE_THEORY_BOUNDARY_TOL of a boundary get its
+ * name in out->boundary and the group of the documented side:
+ *   "A/C-1=-eps/R"     (I/II)   -> I (Ia or Ib by b): n- is infinite there, so
+ *                                  theta = 0 is stable for every J, as in group I;
+ *   "A/C-1=+eps/R"     (II/III) -> III: n+ is infinite, theta = pi never stable;
+ *   "A/C-1=-(eps/R)^2"          -> IIb (b = 1/e > 1 on this line);
+ *   "b=1"              (IIa/IIb) -> IIb: the whole branch 0 < theta < pi is stable;
+ *   "b=-1"             (Ia/Ib, IIa/IIc) -> Ia or IIc: the whole branch is unstable;
+ *   "A/C-1=-eps/R,b=-1"          -> Ia (the one point where both hold);
+ *   "eps/R=0"          balanced ball, no preferred side: group I if k <= 1, else III.
+ * A = C (k = 1, e > 0) is inside IIb with has_b = has_c = 0 and no boundary. */
+int tippe_theory_classify(double A_over_C, double eps_over_R, tippe_theory_class *out);
+
+/* Whether an intermediate state (eq 5.7) exists at theta: (k - 1) cos(theta) + e > 0. */
+int tippe_theory_exists(double A_over_C, double eps_over_R, double theta);
+
+/* Whether the intermediate state at theta (0 < theta < pi, existing) is stable, by
+ * Theorem 5.1 applied to cls: Ia, IIc never; IIb, III always; Ib, IIa for
+ * theta > theta_b. */
+int tippe_theory_branch_stable(const tippe_theory_class *cls, double theta);
+
+/* Dimensionless intermediate-state curve (eq 5.10): J^2 / (m g C R^3) at theta,
+ *   e (C (cos th - e)^2 + A sin^2 th)^2 / (C^2 ((k - 1) cos th + e)).
+ * TIPPE_EINPUT if no intermediate state exists at theta (eq 5.7). */
+int tippe_theory_curve_j2(double A_over_C, double eps_over_R, double theta, double *j2);
+
+/* One intermediate state (a relative equilibrium, U = V = 0, theta constant). */
+typedef struct {
+    double theta_rad;
+    double phi_dot_rad_s;  /* precession rate alpha, eq 5.6 */
+    double spin_rad_s;     /* n = alpha (cos theta - eps/R), eq 5.4 */
+    double J;              /* eq 3.20/3.22 on the state, kg m^3/s */
+} tippe_theory_state;
+
+/* The intermediate state at theta with sign(alpha) = sign (+1 or -1): the symmetry
+ * (n, alpha) -> (-n, -alpha) maps one onto the other and flips J. TIPPE_EINPUT if
+ * the top or g is invalid or no intermediate state exists at theta (eq 5.7). */
+int tippe_theory_intermediate(const tippe_top *top, double g, double theta, int sign,
+                              tippe_theory_state *out, tippe_error *err);
+
+/* Jellett invariant J = -L.q (eq 3.20/3.22) of a state, SI:
+ *   J = C n (R cos theta - eps) + A phi_dot R sin^2 theta. */
+double tippe_theory_jellett(const tippe_top *top, double theta, double phi_dot, double spin);
+/* Spin of the vertical state theta = 0 (n0) and theta = pi (n_pi) with Jellett J
+ * (section 5, before Theorem 5.1). */
+double tippe_theory_n0(const tippe_top *top, double J);
+double tippe_theory_npi(const tippe_top *top, double J);
+
+/* The spins at which stability changes, in rad/s (eq 5.11, A.14, A.27, section 7.1). */
+typedef struct {
+    tippe_theory_class cls;
+    /* theta = 0 is stable iff |n0| < n-. has_n_minus = 0 where n- is infinite
+     * (group I and its boundary: stable for every J). */
+    int has_n_minus; double n_minus_rad_s, J_minus;
+    /* theta = pi is stable iff |n_pi| > n+. has_n_plus = 0 where no spin suffices
+     * (group III and its boundary). */
+    int has_n_plus; double n_plus_rad_s, J_plus;
+    /* n* = n+ (R + eps) / (R - eps): the spin at theta = 0 whose J puts the
+     * inverted state at n+ (section 7.1). */
+    int has_n_star; double n_star_rad_s;
+    /* The spin at theta = 0 (n_b_0) and at theta = pi (n_b_pi) whose J equals J on
+     * the curve at the fold theta_b (section 7.1, Figure 14); only in Ib and IIa,
+     * where the fold lies on the branch. */
+    int has_n_b; double n_b_0_rad_s, n_b_pi_rad_s, J_b;
+} tippe_theory_thresholds;
+
+int tippe_theory_compute_thresholds(const tippe_top *top, double g, tippe_theory_thresholds *out,
+                                     tippe_error *err);
+
+/* Stable final states for a given Jellett invariant (Theorem 5.1): 1 or 2 of them. */
+typedef enum { TIPPE_FINAL_NO_TIP, TIPPE_FINAL_TIP, TIPPE_FINAL_HANG } tippe_final_kind;
+/* state[i].spin_rad_s and phi_dot_rad_s were added to the contract: the spin and
+ * precession of that state (phi_dot is 0 for a vertical state, where it is
+ * arbitrary). States are sorted by theta. */
+typedef struct {
+    int n;
+    struct {
+        tippe_final_kind kind;
+        double theta_rad;
+        double spin_rad_s, phi_dot_rad_s;
+    } state[3];
+} tippe_theory_prediction;
+
+/* theta = 0 is stable iff k - 1 <= -e or |n0| < n- (A.14); theta = pi iff
+ * k - 1 < e and |n_pi| > n+ (A.27); an intermediate state is stable where the
+ * curve J(theta) of eq 5.10 meets |J| with J^2 increasing in theta. J of either
+ * sign. If |J| equals a threshold exactly, the vertical state where the stable
+ * branch ends is returned (marginally stable). eps = 0 (balanced ball): k < 1 gives
+ * both vertical states (no preferred side), k > 1 a HANG at theta = pi/2;
+ * k = 1 or J = 0 is neutral (any orientation) and gives TIPPE_EINPUT. */
+int tippe_theory_predict(const tippe_top *top, double g, double J, tippe_theory_prediction *out,
+                         tippe_error *err);
+
+const char *tippe_final_kind_name(tippe_final_kind kind); /* "no_tip", "tip", "hang" */
+
+/* ---- Effective potential and its wells (docs/dynamics.md, "Proved verdicts") ----
+ *
+ * V(theta; J) = m g (R - eps cos theta) + J^2 / (2 D(theta)),
+ * D(theta) = A R^2 sin^2 theta + C (R cos theta - eps)^2:
+ * the least energy (section 4) of any state at angle theta with Jellett invariant J
+ * (eq 3.20), reached with no sliding, theta_dot = 0 and the spin/precession split
+ * that minimises the kinetic energy for that J. In J. Along a motion in contact,
+ * E(t) >= V(theta(t); J). */
+double tippe_theory_potential(const tippe_top *top, double g, double J, double theta);
+/* dV/dtheta, in J/rad. */
+double tippe_theory_potential_slope(const tippe_top *top, double g, double J, double theta);
+
+enum { TIPPE_THEORY_MAX_CRIT = 10, TIPPE_THEORY_MAX_WELLS = 3 };
+
+/* A well of V: the interval between two neighbouring interior maxima (or 0, pi:
+ * the poles separate nothing, theta passes through them), holding exactly one
+ * local minimum. */
+typedef struct {
+    double theta_min_rad;   /* the minimum, to ~1e-14 rad: a steady state (Theorem 5.1) */
+    double V_min;           /* J */
+    double theta_lo_rad, theta_hi_rad; /* its ends: interior maxima, or 0 and pi */
+    double V_escape;        /* J, the lower of the V at its interior maxima (INFINITY if none):
+                               with E below this, theta can never leave the well */
+    double curvature;       /* J/rad^2, V'' at the minimum (> 0) */
+    int flat;               /* 1 if the minimum or an end is degenerate (V'' ~ 0 there,
+                               or a double critical point nearby): no decision there */
+} tippe_theory_well;
+
+typedef struct {
+    double J;                                  /* the J they were computed for */
+    int n_crit;                                /* critical points in [0, pi], sorted */
+    double crit_theta_rad[TIPPE_THEORY_MAX_CRIT];
+    int crit_kind[TIPPE_THEORY_MAX_CRIT];      /* -1 minimum, +1 maximum, 0 neither (a
+                                                  double point where V' keeps its sign) */
+    int crit_degenerate[TIPPE_THEORY_MAX_CRIT]; /* 1 if |V''| is below 1e-9 of its scale */
+    double crit_V[TIPPE_THEORY_MAX_CRIT];      /* J */
+    int n_wells;
+    tippe_theory_well well[TIPPE_THEORY_MAX_WELLS];
+} tippe_theory_wells;
+
+/* All critical points of V(.; J) on [0, pi] and its wells. The critical points are
+ * theta = 0, pi (always) and the roots in (-1, 1) of the quartic in x = cos theta
+ *   G(x) = e P(x)^2 - T ((k - 1) x + e),  P(x) = (x - e)^2 + k (1 - x^2),
+ *   T = J^2 / (m g C R^3),
+ * since dV/dtheta = m g R sin(theta) G(cos theta) / P^2; G = 0 is eq 5.10 (the
+ * intermediate states). The roots are isolated on intervals where G is monotone,
+ * found from the roots of G', whose own monotone pieces come from the quadratic
+ * G'' in closed form: a subdivision proven complete, no sampling. A critical point
+ * where |V''| < 1e-9 of its natural scale (m g eps + J^2 / (C R^2)) is degenerate
+ * and makes the wells it touches flat. TIPPE_EINPUT for a bad top, g or J. */
+int tippe_theory_find_wells(const tippe_top *top, double g, double J, tippe_theory_wells *out,
+                            tippe_error *err);
+
+/* The index of the well whose [theta_lo, theta_hi] holds theta (the lower on a tie). */
+int tippe_theory_well_index(const tippe_theory_wells *w, double theta);
+
+/* The part of well i where V <= E: [*lo, *hi] around its minimum, found by bisection
+ * on the monotone sides to 1e-14 rad. E below V_min gives lo = hi = theta_min. */
+void tippe_theory_well_range(const tippe_top *top, double g, const tippe_theory_wells *w, int i,
+                             double E, double *lo, double *hi);
+
+/* ==== from tippe/dynamics.h ==== */
+/* tippe/dynamics.h: one launch of an eccentric sphere on a table (paper section 3).
+ *
+ * The model: a sphere (tippe_top) on a horizontal plane under gravity g, with
+ * the normal force of the contact constraint (eq 3.17/3.19, any mass m) and
+ * friction: viscous Rf = -mu Rn V_Q (eq 3.12, mu in s/m), or Coulomb: sliding
+ * |Rf| = mu_c Rn against the slip (regularised below a stated slip speed v_s,
+ * Rf = -mu_c Rn V_Q / sqrt(|V_Q|^2 + v_s^2)) and sticking, rolling without
+ * slipping while the force that needs stays inside the cone |Rf| <= mu_c Rn
+ * (event-driven, as Leine and Glocker 2003; docs/dynamics.md, "Coulomb friction").
+ *
+ * The equations are integrated in a lab-frame form that is regular at
+ * theta = 0 and pi: the state is the symmetry axis k (unit vector), the
+ * angular velocity omega and the horizontal velocity of the centre of mass,
+ * plus the dissipated energy. The paper's Euler-angle form (3.15-3.18), which
+ * is singular where sin(theta) = 0, is provided separately as a reference.
+ * docs/dynamics.md derives both and documents every criterion used here.
+ *
+ * Everything is reentrant: no globals, no static mutable state; every
+ * tippe_dynamics_run() call owns its GSL driver, so many launches may run at
+ * once on OpenMP threads. */
+
+/* Verdicts no_tip, tip and hang are proved (docs/dynamics.md, "Proved verdicts"):
+ * the energy is below every barrier of the effective potential V(theta; J) around
+ * the current well and the normal force stays positive over the trapped set, so the
+ * top ends in the well's minimum. */
+typedef enum {
+    TIPPE_VERDICT_NO_TIP,       /* trapped in the well of theta = 0 */
+    TIPPE_VERDICT_TIP,          /* trapped in the well of theta = pi */
+    TIPPE_VERDICT_HANG,         /* trapped in a well whose minimum is 0 < theta < pi */
+    TIPPE_VERDICT_LOST_CONTACT, /* Rn reached 0: the top leaves the table */
+    TIPPE_VERDICT_UNDECIDED,    /* t_end (or the step budget) reached first */
+    TIPPE_VERDICT_BOUNDED       /* mu = 0 (nothing dissipates), eps = 0 (rolling
+                                   dissipates nothing), or (Coulomb) rolling for ever
+                                   across pi/2: no rest state is forced, but theta stays
+                                   for ever in [theta_lo_rad, theta_hi_rad] */
+} tippe_verdict;
+
+/* "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded". */
+const char *tippe_verdict_name(tippe_verdict v);
+
+/* How a verdict was reached. */
+typedef enum {
+    TIPPE_DECIDED_T_END,        /* not decided: t_end reached */
+    TIPPE_DECIDED_TRAPPED,      /* energy below the well's barrier, contact bound > 0 */
+    TIPPE_DECIDED_LOST_CONTACT, /* Rn crossed 0 (located by bisection) */
+    TIPPE_DECIDED_FLAT_WELL,    /* undecided for ever at this accuracy: confined to a well
+                                   that is flat, or whose barrier above its minimum is
+                                   within the energy margin (which never shrinks) */
+    TIPPE_DECIDED_BUDGET,       /* not decided: the step budget ran out before t_end */
+    TIPPE_DECIDED_ROLLING       /* Coulomb friction: the top rolls without slipping, and
+                                   over one whole period of its nutation (the rolling
+                                   sphere is integrable: the motion repeats) the force
+                                   that rolling needs stayed inside the friction cone,
+                                   so it rolls for ever, theta within the period's range
+                                   (no_tip below pi/2, tip above, else bounded) */
+} tippe_decision;
+
+/* "t_end", "trapped", "lost_contact", "flat_well", "budget", "rolling". */
+const char *tippe_decision_name(tippe_decision d);
+
+/* The friction law. Zero (viscous) is the paper's, so a model initialised with
+ * only {top, g, mu} keeps eq 3.12. */
+typedef enum {
+    TIPPE_FRICTION_VISCOUS = 0, /* Rf = -mu Rn V_Q (eq 3.12), mu in s/m */
+    TIPPE_FRICTION_COULOMB = 1, /* sliding: Rf = -mu_c Rn V_Q / sqrt(|V_Q|^2 + v_s^2)
+                                   (Coulomb's |Rf| = mu_c Rn against the slip for
+                                   |V_Q| >> v_s); sticking once |V_Q| < 30 v_s and rolling
+                                   needs |Rf| <= mu_c Rn, until it needs more */
+    TIPPE_FRICTION_COULOMB_CREEP = 2 /* the regularised sliding law alone, no sticking:
+                                   below v_s the contact creeps (|Rf| < mu_c Rn) and
+                                   dissipates; kept to measure what the stick phase
+                                   changes (docs/dynamics.md) */
+} tippe_friction_law;
+
+/* "viscous", "coulomb", "coulomb-creep"; tippe_friction_law_parse returns -1 for an
+ * unknown name. */
+const char *tippe_friction_law_name(tippe_friction_law law);
+int tippe_friction_law_parse(const char *name);
+
+/* The regularisation speed v_s of the Coulomb law when the model leaves it 0, m/s:
+ * the sliding law's width and the slip below which sticking is tried.
+ * docs/dynamics.md measures the reported times against smaller v_s. */
+#define TIPPE_COULOMB_SLIP_SCALE_M_S 1e-5
+
+typedef struct {
+    tippe_top top;
+    double g;  /* m/s^2 */
+    double mu; /* s/m, viscous sliding friction coefficient (eq 3.12), >= 0 */
+    tippe_friction_law law;  /* TIPPE_FRICTION_VISCOUS (0) uses mu, the others mu_c */
+    double mu_c;             /* Coulomb friction coefficient (dimensionless), >= 0 */
+    double slip_scale_m_s;   /* Coulomb's regularisation speed v_s, m/s (0: the default
+                                TIPPE_COULOMB_SLIP_SCALE_M_S) */
+} tippe_dynamics_model;
+
+/* Whether the model's friction is zero (no dissipation at all). */
+int tippe_dynamics_frictionless(const tippe_dynamics_model *model);
+
+/* A launch in the paper's variables (eq 3.4): nutation angle theta in [0, pi],
+ * its rate, the precession rate phi_dot (alpha), the spin n = omega.k, and the
+ * velocity of the centre of mass along e1 (horizontal direction of the axis k)
+ * and e2 = e3 x e1. At sin(theta) = 0, phi_dot does not enter the state and
+ * e1 is the lab x axis. The launch has phi = psi = 0 and the centre of mass
+ * above the lab origin. */
+typedef struct {
+    double theta, theta_dot, phi_dot, spin, U, V; /* rad, rad/s, rad/s, rad/s, m/s, m/s */
+} tippe_dynamics_initial;
+
+/* Named precession rates that keep theta stationary at launch (theta_dot = 0,
+ * U = 0): the roots alpha of A cos(theta) alpha^2 - C n alpha - m g eps = 0
+ * (eq 3.15 with theta_ddot = 0 and Rn = m g). With D = C^2 n^2 + 4 A m g eps cos(theta):
+ *   STEADY: (C n + sgn(n) sqrt(D)) / (2 A cos theta)  (sec 7.1 / Figure 12 near theta = 0)
+ *   S1:     (C n + sqrt(D)) / (2 A cos theta)          (Figure 14's s1 near theta = pi)
+ *   S2:     (C n - sqrt(D)) / (2 A cos theta)          (s2)
+ *   S3:      C n / (2 A cos theta)                     (s3: the real part when D < 0)
+ * TIPPE_EINPUT if cos(theta) = 0 or (STEADY, S1, S2) D < 0. */
+typedef enum {
+    TIPPE_PRECESSION_STEADY,
+    TIPPE_PRECESSION_S1,
+    TIPPE_PRECESSION_S2,
+    TIPPE_PRECESSION_S3
+} tippe_precession_rule;
+int tippe_dynamics_precession(const tippe_dynamics_model *model, double theta, double spin,
+                              tippe_precession_rule rule, double *phi_dot, tippe_error *err);
+
+/* Integrator choice: a GSL odeiv2 stepper by name (rk2, rk4, rkf45, rkck, rk8pd,
+ * rk1imp, rk2imp, rk4imp, bsimp, msadams, msbdf) and a relative tolerance. The
+ * absolute tolerance is rtol times a per-component scale (docs/dynamics.md). */
+typedef struct {
+    char stepper[16];
+    double rtol;
+} tippe_dynamics_accuracy;
+
+/* The named presets "fast", "balanced", "precise" (one table in dynamics.c). */
+int tippe_dynamics_accuracy_preset(const char *name, tippe_dynamics_accuracy *out,
+                                   tippe_error *err);
+int tippe_dynamics_n_presets(void);
+const char *tippe_dynamics_preset_name(int i);
+/* 1 if name is one of the allowed steppers. */
+int tippe_dynamics_stepper_known(const char *name);
+
+typedef enum {
+    TIPPE_LEVEL_VERDICT,   /* reduced state (9 components), no samples */
+    TIPPE_LEVEL_TRAJECTORY /* adds orientation and position (15), samples */
+} tippe_dynamics_level;
+
+/* The state at one time, in the paper's variables plus monitors. */
+typedef struct {
+    double t;                                      /* s */
+    double theta, theta_dot, phi_dot, spin, U, V;  /* as tippe_dynamics_initial */
+    double phi, psi, x, y;  /* rad, rad, m, m: trajectory level only (NAN otherwise) */
+    double Rn;              /* N, normal force (eq 3.19) */
+    double slip_speed;      /* m/s, |V_Q| (eq 3.9) */
+    double E;               /* J, energy (sec 4) */
+    double D;               /* J, energy dissipated so far (integral of eq 4.1) */
+    double J;               /* kg m^2/s, Jellett -L.q (eq 3.20) */
+} tippe_dynamics_sample;
+
+/* Called for each sample; a nonzero return stops the run (TIPPE_ECOMPUTE,
+ * with the callback's code in the message). */
+typedef int (*tippe_dynamics_sample_fn)(const tippe_dynamics_sample *s, void *ctx);
+
+typedef struct {
+    tippe_dynamics_level level;
+    double t_end;                      /* s */
+    tippe_dynamics_accuracy accuracy;
+    /* Trajectory level: one sample every sample_dt seconds (the integrator
+     * lands on these times), or every accepted step if sample_dt <= 0. */
+    double sample_dt;
+    tippe_dynamics_sample_fn on_sample;
+    void *sample_ctx;
+    /* The energy margin of a decision is margin_factor times (energy-balance
+     * error + the change of V that the Jellett drift can make), docs/dynamics.md. */
+    double margin_factor;
+    int run_to_t_end;  /* 1: record the verdict but keep integrating to t_end */
+    /* 1: after a tip verdict, integrate on until theta first passes pi/2 so that
+     * t_flip is known (a verdict is usually proved well before the flip). */
+    int until_flip;
+    /* Step budget: the run stops, undecided, with budget_exhausted set, after
+     * this many accepted steps or 20 times as many RHS evaluations, whichever
+     * comes first (an implicit stepper's step can cost ~240; 0: no budget). Bounds
+     * the work of a launch that never settles (mu = 0, or a t_end of millions of
+     * periods, or a stiff law: the creep law at a small v_s). */
+    long max_steps;
+} tippe_dynamics_options;
+
+/* Defaults: verdict level, t_end 100 s, preset "balanced", margin_factor 10,
+ * sample_dt 0, no callback, until_flip 0, max_steps 1e7 (a few seconds of one
+ * core at the verdict level with rk8pd; docs/performance.md). */
+void tippe_dynamics_options_default(tippe_dynamics_options *o);
+
+typedef struct {
+    tippe_verdict verdict;
+    tippe_decision how;          /* how it was reached */
+    double t_verdict;            /* s, when the verdict was reached (decision time) */
+    tippe_dynamics_sample final; /* state at t_verdict (not the end state: see below) */
+    /* The end state. Trapped: the well's minimum of V (to ~1e-14 rad) and the steady
+     * state there for J0 (tippe_theory_intermediate, n0 or n_pi; phi_dot 0 on the
+     * vertical); bounded: the minimum the motion oscillates about; otherwise the
+     * state at t_verdict. */
+    double theta_final_rad, spin_final_rad_s, phi_dot_final_rad_s;
+    /* Trapped or bounded: theta stays in [theta_lo_rad, theta_hi_rad] (the part of
+     * the well where V <= E + margin); the barrier gap is the least other critical
+     * value of V in the well minus E (INFINITY if the well has none), the margin
+     * the energy margin demanded, Rn_bound_N the lower bound of Rn over that set.
+     * NAN when not trapped. */
+    double theta_lo_rad, theta_hi_rad, barrier_gap_J, margin_J, Rn_bound_N;
+    double t_flip;               /* s, first time theta passed pi/2 upwards (NAN if it did
+                                    not), linear between accepted steps */
+    tippe_dynamics_sample last;  /* state where integration stopped */
+    double J0, E0;               /* at launch */
+    double jellett_rel_drift;    /* max |J - J0| / max(|J0|, 1e-6 C W R), W = |omega0| + sqrt(g/R) */
+    double energy_rel_error;     /* max |E + D - E0| / E0 */
+    double energy_max_rise;      /* J, max over steps of E(t_i) - min_{j<i} E(t_j) (>= 0) */
+    double min_Rn;               /* N, smallest normal force at an accepted step */
+    long rhs_evals;              /* including those of a finite-difference Jacobian */
+    long steps, rejected_steps;
+    int state_dim;               /* 9 at verdict level, 15 at trajectory level */
+    int budget_exhausted;        /* 1 if the run stopped at max_steps before t_end */
+    /* Coulomb friction with sticking: how often the contact stuck (began rolling
+     * without slipping) and broke loose, the model time spent rolling, and whether
+     * it rolls at t_verdict. While rolling nothing dissipates, so a trapped verdict
+     * proves the well and the range [theta_lo_rad, theta_hi_rad] but not the end
+     * state: end_state_proved is 0 (1 for viscous and creeping friction). */
+    long stick_events, slip_events;
+    double rolling_time_s;
+    int rolling;
+    int end_state_proved;
+} tippe_dynamics_result;
+
+/* Integrates one launch. TIPPE_EINPUT for an invalid model, launch or option,
+ * TIPPE_ECOMPUTE if the integrator fails or the contact force is undetermined
+ * (the denominator of eq 3.19 reaches 0: friction too strong for the model). */
+int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_initial *ic,
+                       const tippe_dynamics_options *opt, tippe_dynamics_result *res,
+                       tippe_error *err);
+
+/* Energy, Jellett invariant, normal force and contact speed of a launch state
+ * (fields t, phi, psi, x, y, D of *out are 0). */
+int tippe_dynamics_evaluate(const tippe_dynamics_model *model, const tippe_dynamics_initial *s,
+                            tippe_dynamics_sample *out, tippe_error *err);
+
+/* Reference: the paper's Euler-angle equations (3.15-3.19, derived for any m),
+ * valid for 0 < theta < pi. y = (theta, theta_dot, phi_dot, spin, U, V, phi, psi),
+ * dydt its derivative; *Rn the normal force. TIPPE_ECOMPUTE where sin(theta) = 0
+ * or the contact force is undetermined. */
+enum { TIPPE_EULER_DIM = 8 };
+int tippe_dynamics_euler_rhs(const tippe_dynamics_model *model, const double y[TIPPE_EULER_DIM],
+                             double dydt[TIPPE_EULER_DIM], double *Rn);
+
+/* ==== from tippe/launch.h ==== */
+/* tippe/launch.h: many hand launches of a top, and what they end in.
+ *
+ * A hand launch is a spin, a tilt of the symmetry axis away from the vertical,
+ * a precession rate near the steady one for that tilt and spin, and a small
+ * sliding velocity of the centre of mass in a random direction, drawn from
+ * distributions whose defaults describe a hand-spun top of 50 mm diameter
+ * (docs/launch.md justifies each default). Each launch runs through the
+ * dynamics core at the verdict level (tippe/dynamics.h) and is compared with
+ * Theorem 5.1's stable final states for its own Jellett invariant.
+ *
+ * Reproducibility: launch number `draw` of a run with seed S takes its random
+ * numbers from its own GSL generator (mt19937) seeded by tippe_launch_mix(S,
+ * draw), so a launch's initial state and outcome depend only on (S, draw, the
+ * top, the options), not on the order in which launches run, on the number of
+ * threads or on the number of MPI ranks. Results go to per-index slots and are
+ * tallied in index order, so tallies are bit-identical whatever the parallelism.
+ *
+ * Everything here is reentrant; tippe_launch_run() runs its launches on OpenMP
+ * threads (schedule(dynamic): launches differ in length by orders of magnitude). */
+
+/* The launch distributions and the model they run in. */
+typedef struct {
+    double spin_from_rev_s, spin_to_rev_s; /* spin n uniform in [from, to], rev/s */
+    double tilt_sd_rad;       /* tilt theta0 half-normal with this scale, rad */
+    double tilt_max_rad;      /* draws above this are drawn again (< pi/2), rad */
+    double precession_sd_rel; /* phi_dot = steady rate * (1 + sd * N(0, 1)) */
+    double slide_sd_m_s;      /* sliding speed half-normal with this scale, m/s;
+                                 direction uniform in [0, 2 pi) */
+    tippe_friction_law law;   /* friction law (default viscous, eq 3.12) */
+    double mu;                /* s/m, viscous sliding friction (eq 3.12), law viscous */
+    double mu_c;              /* Coulomb coefficient, the Coulomb laws */
+    double slip_scale_m_s;    /* Coulomb's regularisation speed v_s (0: the default) */
+    double g;                 /* m/s^2 */
+    double t_end;             /* s, bound on each launch's simulated time */
+    int until_flip;           /* 1: follow a tip to its flip (t_flip_s), 0: stop at the proof */
+    char accuracy_name[16];   /* a preset of tippe/dynamics.h, or "custom" */
+    tippe_dynamics_accuracy accuracy;
+} tippe_launch_options;
+
+/* Viscous friction (eq 3.12) for a plastic ball on a table, s/m: a Coulomb
+ * coefficient of about 0.3 divided by a typical contact slip speed of 0.13 m/s
+ * (docs/launch.md derives it and gives the sources). */
+#define TIPPE_LAUNCH_DEFAULT_MU_S_M 2.3
+
+/* Coulomb friction of a printed (PLA or nylon) ball on a tabletop: 0.3, within the
+ * published 0.2-0.5 for plastic on wood or laminate (docs/launch.md gives the sources). */
+#define TIPPE_LAUNCH_DEFAULT_MU_C 0.3
+
+/* The median of a half-normal distribution of scale 1 (sqrt(2) erf^-1(1/2)):
+ * a central launch's tilt is this times the tilt scale. */
+#define TIPPE_LAUNCH_HALF_NORMAL_MEDIAN 0.6744897501960817
+
+/* The documented defaults (docs/launch.md): spin 5..25 rev/s, tilt scale
+ * 0.1 rad (redrawn above 1 rad), precession spread 0.1, sliding 0.05 m/s,
+ * viscous friction mu TIPPE_LAUNCH_DEFAULT_MU_S_M (eq 3.12; mu_c TIPPE_LAUNCH_DEFAULT_MU_C
+ * if the law is set to Coulomb), g TIPPE_DEFAULT_G_M_S2,
+ * t_end 600 s, preset "balanced", until_flip 1. */
+void tippe_launch_options_default(tippe_launch_options *o);
+
+/* TIPPE_EINPUT naming the first bad field. */
+int tippe_launch_options_check(const tippe_launch_options *o, tippe_error *err);
+
+/* The seed of launch `draw` of a run with seed `seed`: the (draw + 1)-th output
+ * of a splitmix64 generator whose state is the first output of a splitmix64
+ * generator started at `seed` (docs/launch.md). */
+uint64_t tippe_launch_mix(uint64_t seed, uint64_t draw);
+
+/* Draws launch `draw`'s initial state. The random numbers are always drawn in
+ * the same order (spin, tilt, precession, sliding speed, sliding direction);
+ * spin_rad_s, if finite, then replaces the drawn spin (a map cell's spin), so
+ * that the other variables of a draw are the same at every spin. */
+int tippe_launch_draw(const tippe_top *top, const tippe_launch_options *o, uint64_t seed,
+                      uint64_t draw, double spin_rad_s, tippe_dynamics_initial *ic,
+                      tippe_error *err);
+
+/* The central hand launch (for `tippe check`): the median tilt of the
+ * half-normal (0.674 tilt_sd_rad), steady precession, no sliding, and the
+ * given spin (rad/s). */
+int tippe_launch_central(const tippe_top *top, const tippe_launch_options *o, double spin_rad_s,
+                         tippe_dynamics_initial *ic, tippe_error *err);
+
+/* A hang agrees with theory when the angles differ by less than this, rad: a
+ * proved hang reports the well's minimum of V, a root of eq 5.10 like theory's
+ * angle, so both agree to ~1e-12; 1e-8 leaves room for ill-conditioned roots. */
+#define TIPPE_LAUNCH_HANG_AGREE_RAD 1e-8
+
+enum { TIPPE_LAUNCH_N_VERDICTS = 6 }; /* tippe_verdict values 0 .. 5 */
+
+/* One launch and its outcome. Plain data (no pointers), so that records can be
+ * sent between MPI ranks as bytes. */
+typedef struct {
+    long index;              /* position in the run */
+    long draw;               /* the random draw it used (tippe_launch_mix) */
+    int status;              /* TIPPE_OK, or the dynamics' error code */
+    tippe_dynamics_initial ic;
+    tippe_verdict verdict;
+    double t_s;              /* s, when the verdict was reached (decision time) */
+    tippe_decision how;      /* trapped, lost_contact or t_end */
+    double theta_final_rad;  /* the end state (tippe_dynamics_result.theta_final_rad) */
+    double spin_final_rad_s; /* its spin */
+    double barrier_gap_J, margin_J; /* of a trapped decision (NAN otherwise) */
+    /* trapped or bounded: theta stays in [theta_lo_rad, theta_hi_rad] with Rn above
+     * Rn_bound_N (NAN otherwise); a bounded launch has no end state (NAN) */
+    double theta_lo_rad, theta_hi_rad, Rn_bound_N;
+    double t_flip_s;         /* s, theta first passed pi/2 (NAN: not, or not followed) */
+    int rolling;             /* Coulomb: rolling without slipping at the decision */
+    int end_state_proved;    /* 0 under Coulomb friction with sticking: a trapped verdict
+                                proves the well and range, not the rest state */
+    double J0;               /* kg m^3/s, Jellett invariant at launch (eq 3.20) */
+    double jellett_rel_drift;
+    long rhs_evals;
+    /* Theorem 5.1 for J0: theory_ok = 0 where it gives no prediction (J0 = 0,
+     * or a neutral balanced ball). predicted is a bit set of (1 << tippe_final_kind);
+     * hang_theta_rad the predicted hanging angle (NAN if no hang is predicted). */
+    int theory_ok;
+    unsigned predicted;
+    double hang_theta_rad;
+    /* 1 the verdict is a predicted state (a hang within TIPPE_LAUNCH_HANG_AGREE_RAD),
+     * 0 it is not, -1 not comparable (lost_contact, undecided, no prediction). */
+    int agrees;
+} tippe_launch_record;
+
+/* One launch of draw `draw` (its initial state from tippe_launch_draw, spin
+ * replaced by spin_rad_s if finite), integrated and compared with theory.
+ * rec->index is set to `draw`. Returns the dynamics' status (rec->status). */
+int tippe_launch_one(const tippe_top *top, const tippe_launch_options *o, uint64_t seed,
+                     uint64_t draw, double spin_rad_s, tippe_launch_record *rec,
+                     tippe_error *err);
+
+/* Runs the given initial state (for `tippe check`) the same way. */
+int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o,
+                             const tippe_dynamics_initial *ic, tippe_launch_record *rec,
+                             tippe_error *err);
+
+/* Many launches in groups: group i has top tops[i] and, if spin_rad_s is not
+ * NULL, the fixed spin spin_rad_s[i] (a map cell). Launch number `index`
+ * (0 <= index < n_groups * per_group) belongs to group index / per_group and
+ * uses draw index % per_group: every group sees the same hands (common random
+ * numbers), so differences between groups are not sampling noise of the draws. */
+typedef struct {
+    int n_groups;
+    long per_group;
+    const tippe_top *tops;
+    const double *spin_rad_s;
+} tippe_launch_plan;
+
+long tippe_launch_plan_total(const tippe_launch_plan *plan);
+
+/* Runs launches [from, to) of the plan on OpenMP threads into out[0 .. to-from)
+ * and reports each to prog (may be NULL). Returns TIPPE_OK, or the error of the
+ * lowest-numbered launch that failed (its message names the launch); the other
+ * records are filled in any case. */
+int tippe_launch_run(const tippe_launch_plan *plan, const tippe_launch_options *o, uint64_t seed,
+                     long from, long to, tippe_launch_record *out, tippe_progress *prog,
+                     tippe_error *err);
+
+/* Counts over a run of records, in index order. */
+typedef struct {
+    long n;
+    long counts[TIPPE_LAUNCH_N_VERDICTS]; /* by tippe_verdict */
+    long comparable, agree;               /* launches with agrees >= 0, and agrees = 1 */
+    long predicted[8];                    /* by predicted bit set (no prediction: 0) */
+    /* median final theta and verdict time of each verdict (NAN where no launch
+     * has it), and the largest Jellett drift */
+    double median_theta_rad[TIPPE_LAUNCH_N_VERDICTS];
+    double median_t_s[TIPPE_LAUNCH_N_VERDICTS];
+    double max_jellett_rel_drift;
+    double rhs_evals; /* total */
+    /* Over tips followed to the flip (until_flip): how many, and the median model
+     * time at which theta passed pi/2 (NAN if none). */
+    long flips;
+    double median_t_flip_s;
+    /* Trapped decisions (no_tip, tip, hang): how many, how many of them in a well
+     * with no barrier, and the smallest barrier gap / margin of the others
+     * (INFINITY if none). */
+    long trapped, trapped_no_barrier;
+    long rolling; /* decided rolling for ever (Coulomb friction with sticking) */
+    double min_gap_over_margin;
+} tippe_launch_tally;
+
+/* TIPPE_ECOMPUTE if out of memory. */
+int tippe_launch_tally_records(const tippe_launch_record *r, long n, tippe_launch_tally *out,
+                               tippe_error *err);
+
+/* The normal quantile for a two-sided 95% interval, Phi^-1(0.975). */
+#define TIPPE_LAUNCH_Z95 1.959963984540054
+
+/* Wilson score interval for k successes in n trials at normal quantile z:
+ * (p + z^2/2n -+ z sqrt(p (1 - p)/n + z^2/4n^2)) / (1 + z^2/n), p = k/n,
+ * clamped to [0, 1]; [0, 1] for n = 0. */
+void tippe_launch_wilson(long k, long n, double z, double *lo, double *hi);
+
+/* The predicted bit set as text: "no_tip", "tip or hang", ..., "none". */
+const char *tippe_launch_predicted_name(unsigned predicted);
+
+/* An outcome map over a grid of Z2 and spin (`tippe map`). Cell (i, j), at
+ * z2_mm[i] and spin_rev_s[j], is cells[i * n_spin + j]. */
+typedef struct {
+    int n_z2, n_spin;
+    const double *z2_mm, *spin_rev_s;
+    const tippe_launch_tally *cells;
+    long per_cell;
+} tippe_launch_map;
+
+/* The index of the most frequent verdict of a cell (the lowest on a tie). */
+int tippe_launch_dominant(const tippe_launch_tally *t);
+
+#endif

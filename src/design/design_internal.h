@@ -1,0 +1,15 @@
+/* design/design_internal.h: what the design module's files share and no other
+ * module sees. */
+#ifndef TIPPE_DESIGN_INTERNAL_H
+#define TIPPE_DESIGN_INTERNAL_H
+
+#include "base/json.h"
+#include "tippe/design.h"
+
+/* Called by the design loader once the parts are resolved: checks block (NULL
+ * if the file has none) and builds the list with the defaults. Messages name
+ * the file and tolerances["FIELD"]. *out is malloc'ed (free). */
+int tippe_tolerances_read(const tippe_json_reader *c, const cJSON *block, const tippe_design *d,
+                          tippe_tolerance **out, int *n_out);
+
+#endif
