@@ -4,12 +4,137 @@
 #define TIPPE_DESIGN_INTERNAL_H
 
 #include "base/json.h"
+#include "design/tolerance_read.h"
 #include "tippe/design.h"
 
-/* Called by the design loader once the parts are resolved: checks block (NULL
- * if the file has none) and builds the list with the defaults. Messages name
- * the file and tolerances["FIELD"]. *out is malloc'ed (free). */
-int tippe_tolerances_read(const tippe_json_reader *c, const cJSON *block, const tippe_design *d,
-                          tippe_tolerance **out, int *n_out);
+#define NAME_LEN 64
+#define MAX_PARTS 50
+#define MAX_FILE_MIB 4
+/* Overlap depth that still counts as touching: far below print resolution
+ * (~0.1 mm), far above double roundoff on mm-sized numbers (~1e-14 mm). */
+#define TOL_MM 1e-6
+/* Uniform r samples across the widest part; see the resolution note in docs. */
+#define N_R_UNIFORM 4000
+/* The same for an optimiser's candidates (TIPPE_DESIGN_COARSE_LAYOUT): 20 times
+ * fewer uniform samples; every part's edges are still sampled exactly. */
+#define N_R_COARSE 200
+/* A sphere radius match (the part forming the sphere's surface), mm. */
+#define SAME_LENGTH_MM 1e-9
+/* Slack on the travel check for a sweep's rounded steps, mm. */
+#define TRAVEL_SLACK_MM 1e-9
+/* Beyond any coordinate in a design, mm: stands for an unbounded interval. */
+#define BIG_MM 1e12
+/* The densest solid: osmium, 22.587 g/cm^3 at 20 C (J. W. Arblaster, "Densities
+ * of osmium and iridium", Platinum Metals Review 33 (1989) 14-16; the CRC
+ * Handbook of Chemistry and Physics gives 22.59). Anything denser was typed in
+ * another unit (kg/m^3 for g/cm^3: 7850 for steel). */
+#define DENSITY_MAX_G_CM3 22.6
+/* Sphere radii of a tippe top: a 2 mm bead to a 2 m ball. Outside, the number
+ * was typed in another unit (metres: 0.025; um: 25000). */
+#define RADIUS_MIN_MM 1.0
+#define RADIUS_MAX_MM 1000.0
+/* A part length below 10 um is finer than anything printed or machined: a
+ * warning (probably metres); smaller lengths still load, for limit studies. */
+#define LENGTH_HINT_MM 0.01
+/* Intervals per r: a part gives at most 2, each void removes at most 2 more. */
+#define MAX_IV (4 + 4 * MAX_PARTS)
+
+enum { CLIP_NONE, CLIP_SPHERE, CLIP_CAVITY, CLIP_SHELL };
+
+typedef enum { SHAPE_BALL, SHAPE_SHELL, SHAPE_CYLINDER, SHAPE_TUBE, SHAPE_TORUS, N_SHAPES } shape_kind;
+static const char *const shape_names[N_SHAPES] = {"ball", "shell", "cylinder", "tube", "torus"};
+
+typedef struct {
+    char name[NAME_LEN];
+    char material[NAME_LEN]; /* "" when density_g_cm3 was given inline */
+    shape_kind shape;
+    double radius_mm;       /* ball, shell (outer), cylinder, tube (outer) */
+    double inner_radius_mm; /* cylinder, tube */
+    double thickness_mm;    /* shell */
+    double height_mm;       /* cylinder, tube; resolved when only a clip is given */
+    double centre_radius_mm, radial_semi_mm, axial_semi_mm; /* torus */
+    double z_mm;            /* moving parts: offset from Z2 */
+    double density_g_cm3;   /* voids: the parent's */
+    int is_void, moving, may_protrude;
+    int printable;          /* the material's "printable" flag (voids: the parent's) */
+    int has_height, has_radius;
+    int parent;             /* voids: index of the part cut from; else -1 */
+    int clip;               /* CLIP_NONE, CLIP_SPHERE, CLIP_CAVITY, CLIP_SHELL */
+    double clip_radius_mm;  /* resolved; 0 = not clipped */
+    double clip_inner_mm;   /* CLIP_SHELL: the shell's cavity radius (the part is cut to
+                               the wall between it and clip_radius_mm); else 0 */
+    int printed;            /* has a "print" block */
+    tippe_print_settings print;
+    int calibrated;         /* the infill comes from measured_mass_g */
+    double measured_mass_g;
+    double infill;          /* used: print.infill, or the calibrated one */
+    double solid_mass_kg, skin_mass_kg, print_rel_error;
+    double mass_kg;         /* signed contribution */
+    int fit;                /* a hole's "fit": TIPPE_DESIGN_FIT_* (NONE when not given) */
+} part;
+
+struct tippe_design {
+    char *path, *name;
+    double radius_mm;
+    double travel_mm[2], contact_mm[2];
+    char contact_limit[2][256];
+    /* Z2 where every part stays within the sphere (from > to: nowhere); the
+     * sampled radii it and tippe_design_protrusion_at use (NULL: no layout) */
+    double sphere_only_mm[2];
+    double *rs;
+    int nr;
+    int n_parts;
+    part *parts;
+    tippe_moments fixed, moving; /* SI; moving at Z2 = 0 */
+    char **overrides;            /* as loaded, for tippe_design_derive */
+    int n_overrides;
+    tippe_tolerance *tolerances; /* the tolerances block and the defaults */
+    int n_tolerances;
+    /* Set only while a tippe_design_source builds it: the source's parsed
+     * materials table (not owned) and whether the travel is the physical one. */
+    const struct tippe_design_source *source;
+    int travel_physical, coarse_layout;
+};
+
+
+/* ---- what one file of the module calls in another ---- */
+
+/* z intervals at one radius (design_layout.c). */
+typedef struct {
+    int n;
+    double lo[MAX_IV], hi[MAX_IV]; /* sorted, disjoint, lo < hi */
+} ivset;
+
+/* design.c: the loader's pieces that design sources reuse. */
+char *tippe_design_dup_string(const char *s);
+int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d,
+                       int check);
+/* A length in mm that must be > 0 (or >= 0 with allow_zero). */
+int tippe_design_read_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
+                             const char *key, int required, int allow_zero, double *out,
+                             int *present);
+
+/* design_parts.c: the file's keys, the parts and the materials table. */
+extern const char *const tippe_design_top_keys[];
+extern const char *const tippe_design_top_string_keys[];
+extern const char *const tippe_design_part_string_keys[];
+extern const char *const tippe_design_all_part_keys[];
+extern const char *const tippe_design_print_keys[];
+int tippe_design_parse_part(const tippe_json_reader *c, const cJSON *obj, int index, part *p);
+int tippe_design_load_materials(const char *mat_file, cJSON **out, tippe_error *err);
+int tippe_design_lookup_material(const tippe_json_reader *c, const cJSON *table,
+                                 const char *mat_file, const char *name, const char *path,
+                                 double *density, int *printable);
+
+/* design_overrides.c: --set overrides and design sources. */
+int tippe_design_apply_override(tippe_json_reader *c, cJSON *root, const char *text);
+int tippe_design_source_materials(const tippe_design *d, const char *mat_file, cJSON **out);
+int tippe_design_remember_overrides(tippe_design *d, const char *const *overrides, int n,
+                                    tippe_error *err);
+
+/* design_layout.c: where the parts are. */
+int tippe_design_check_layout(const tippe_json_reader *c, tippe_design *d);
+void tippe_design_material_ivs(const tippe_design *d, int i, double r, double dz, ivset *s);
+const char *tippe_design_role_of(const part *p);
 
 #endif

@@ -1,6 +1,6 @@
 /* A design's tolerances: the block, checked strictly, and the documented
  * defaults (see tippe/tolerance.h and docs/design-format.md). */
-#include "design/design_internal.h"
+#include "design/tolerance_read.h"
 
 #include <math.h>
 #include <stdio.h>

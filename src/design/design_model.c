@@ -1,0 +1,307 @@
+/* A loaded design as the rest of tippe sees it: the top at Z2, the accessors of
+ * its parts and the numeric fields that --set, --vary and the tolerances name.
+ * Calls neither the loader nor the tolerances (which call these). */
+#include "design/design_internal.h"
+
+#include <cjson/cJSON.h>
+#include <gsl/gsl_errno.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ------------------------------------------------------------------ top */
+
+void tippe_design_top_any(const tippe_design *d, double z2_mm, tippe_top *top)
+{
+    tippe_moments all = tippe_moments_add(d->fixed, tippe_moments_shift(d->moving, z2_mm * 1e-3));
+    tippe_inertia in = tippe_moments_inertia(all);
+    top->m = in.m;
+    top->R = d->radius_mm * 1e-3;
+    top->A = in.A;
+    top->C = in.C;
+    /* A CoM within 1e-12 R of the centre is roundoff of a symmetric design:
+     * call it centred, so that Z2 = 0 reads eps = 0 and not +-1e-19 m. */
+    if (fabs(in.z_cm) <= 1e-12 * top->R) {
+        top->eps = 0;
+        top->com_side = 0;
+    } else {
+        top->eps = fabs(in.z_cm);
+        top->com_side = in.z_cm > 0 ? 1 : -1;
+    }
+}
+
+int tippe_design_top(const tippe_design *d, double z2_mm, tippe_top *top, tippe_error *err)
+{
+    if (!isfinite(z2_mm))
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: Z2 must be a finite number of mm",
+                               d->path);
+    if (z2_mm < d->travel_mm[0] - TRAVEL_SLACK_MM || z2_mm > d->travel_mm[1] + TRAVEL_SLACK_MM)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%s: travel_mm: Z2 = %g mm is outside the design's travel "
+                               "[%g, %g] mm",
+                               d->path, z2_mm, d->travel_mm[0], d->travel_mm[1]);
+    tippe_design_top_any(d, z2_mm, top);
+    if (!(top->m > 0) || !(top->A > 0) || !(top->C > 0) || !isfinite(top->eps))
+        return tippe_error_set(err, TIPPE_ECOMPUTE,
+                               "%s: at Z2 = %g mm the mass properties are not physical "
+                               "(m = %g kg, A = %g, C = %g kg m^2)",
+                               d->path, z2_mm, top->m, top->A, top->C);
+    if (top->eps >= top->R)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%s: at Z2 = %g mm the centre of mass (%g mm from the centre) "
+                               "lies outside the sphere",
+                               d->path, z2_mm, top->eps * 1e3);
+    return TIPPE_OK;
+}
+
+/* -------------------------------------------------------------- accessors */
+
+void tippe_design_travel_mm(const tippe_design *d, double *from_mm, double *to_mm)
+{
+    *from_mm = d->travel_mm[0];
+    *to_mm = d->travel_mm[1];
+}
+
+void tippe_design_contact_travel_mm(const tippe_design *d, double *from_mm, double *to_mm)
+{
+    *from_mm = d->contact_mm[0];
+    *to_mm = d->contact_mm[1];
+}
+
+const char *tippe_design_contact_limit(const tippe_design *d, int upper)
+{
+    return d->contact_limit[upper ? 1 : 0];
+}
+
+const char *tippe_design_name(const tippe_design *d) { return d->name; }
+const char *tippe_design_path(const tippe_design *d) { return d->path; }
+double tippe_design_radius_mm(const tippe_design *d) { return d->radius_mm; }
+double tippe_design_moving_mass_kg(const tippe_design *d) { return d->moving.m; }
+int tippe_design_n_parts(const tippe_design *d) { return d->n_parts; }
+
+int tippe_design_part(const tippe_design *d, int i, tippe_design_part_info *out)
+{
+    if (i < 0 || i >= d->n_parts)
+        return tippe_error_set(NULL, TIPPE_EINPUT, "no part %d", i);
+    const part *p = &d->parts[i];
+    out->name = p->name;
+    out->shape = shape_names[p->shape];
+    out->material = p->material[0] ? p->material : "(inline)";
+    out->role = tippe_design_role_of(p);
+    out->cut_from = p->is_void ? d->parts[p->parent].name : NULL;
+    out->density_g_cm3 = p->density_g_cm3;
+    out->mass_kg = p->mass_kg;
+    out->z_mm = p->z_mm;
+    out->may_protrude = p->may_protrude;
+    out->printable = p->printable;
+    return TIPPE_OK;
+}
+
+int tippe_design_part_fit(const tippe_design *d, int i)
+{
+    return i < 0 || i >= d->n_parts ? TIPPE_DESIGN_FIT_NONE : d->parts[i].fit;
+}
+
+int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out)
+{
+    memset(out, 0, sizeof *out);
+    if (i < 0 || i >= d->n_parts)
+        return tippe_error_set(NULL, TIPPE_EINPUT, "no part %d", i);
+    const part *p = &d->parts[i];
+    if (!p->printed)
+        return TIPPE_OK;
+    out->printed = 1;
+    out->settings = p->print;
+    out->wall_mm = tippe_print_wall_mm(&p->print);
+    out->skin_mm = tippe_print_skin_mm(&p->print);
+    out->infill = p->infill;
+    out->calibrated = p->calibrated;
+    out->measured_mass_kg = p->calibrated ? p->measured_mass_g * 1e-3 : 0;
+    out->solid_mass_kg = p->solid_mass_kg;
+    out->skin_mass_kg = p->skin_mass_kg;
+    out->printed_mass_kg = p->skin_mass_kg + p->infill * (p->solid_mass_kg - p->skin_mass_kg);
+    out->rel_error = p->print_rel_error;
+    return TIPPE_OK;
+}
+
+int tippe_design_has_printed_parts(const tippe_design *d)
+{
+    for (int i = 0; i < d->n_parts; i++)
+        if (d->parts[i].printed)
+            return 1;
+    return 0;
+}
+
+int tippe_design_part_printable(const tippe_design *d, int i)
+{
+    return i >= 0 && i < d->n_parts && d->parts[i].printable;
+}
+
+/* ------------------------------------------------------ numeric fields */
+
+/* The length fields a part of this shape has, and where each lives. */
+static double *length_field(part *p, const char *key)
+{
+    int cyl = p->shape == SHAPE_CYLINDER || p->shape == SHAPE_TUBE;
+    if (!strcmp(key, "radius_mm") && p->shape != SHAPE_TORUS)
+        return &p->radius_mm;
+    if (!strcmp(key, "thickness_mm") && p->shape == SHAPE_SHELL)
+        return &p->thickness_mm;
+    if (!strcmp(key, "inner_radius_mm") && cyl)
+        return &p->inner_radius_mm;
+    if (!strcmp(key, "height_mm") && cyl)
+        return &p->height_mm;
+    if (p->shape == SHAPE_TORUS) {
+        if (!strcmp(key, "centre_radius_mm"))
+            return &p->centre_radius_mm;
+        if (!strcmp(key, "radial_semi_mm"))
+            return &p->radial_semi_mm;
+        if (!strcmp(key, "axial_semi_mm"))
+            return &p->axial_semi_mm;
+    }
+    return NULL;
+}
+
+/* Index of the part a "parts.NAME" / "parts[I]" prefix (len characters of
+ * field) names, or -1. */
+static int part_named(const tippe_design *d, const char *field, size_t len)
+{
+    if (len > 7 && field[5] == '[') {
+        char *end = NULL;
+        long i = strtol(field + 6, &end, 10);
+        return end == field + len - 1 && *end == ']' && i >= 0 && i < d->n_parts ? (int)i : -1;
+    }
+    for (int i = 0; i < d->n_parts; i++)
+        if (strlen(d->parts[i].name) == len - 6 && !strncmp(d->parts[i].name, field + 6, len - 6))
+            return i;
+    return -1;
+}
+
+/* parts.NAME.print.KEY: the print settings that are numbers (infill: the one
+ * used, calibrated or not). */
+static int print_field(const tippe_design *d, int i, const char *key, double *value,
+                       int *part_index, char *why, size_t why_cap)
+{
+    const part *p = &d->parts[i];
+    *part_index = i;
+    if (!p->printed) {
+        snprintf(why, why_cap, "part '%s' has no print block", p->name);
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "infill"))
+        *value = p->infill;
+    else if (!strcmp(key, "line_width_mm"))
+        *value = p->print.line_width_mm;
+    else if (!strcmp(key, "layer_height_mm"))
+        *value = p->print.layer_height_mm;
+    else if (!strcmp(key, "perimeters"))
+        *value = p->print.perimeters;
+    else if (!strcmp(key, "top_bottom_layers"))
+        *value = p->print.top_bottom_layers;
+    else if (!strcmp(key, "measured_mass_g") && p->calibrated)
+        *value = p->measured_mass_g;
+    else {
+        snprintf(why, why_cap, "not a number setting of the print block (infill, "
+                               "line_width_mm, layer_height_mm, perimeters, "
+                               "top_bottom_layers, measured_mass_g when given)");
+        return TIPPE_EINPUT;
+    }
+    return TIPPE_OK;
+}
+
+int tippe_design_field(const tippe_design *d, const char *field, double *value, int *part_index,
+                       char *why, size_t why_cap)
+{
+    *part_index = -1;
+    if (!strcmp(field, "radius_mm")) {
+        *value = d->radius_mm;
+        return TIPPE_OK;
+    }
+    const char *dot = strrchr(field, '.');
+    if (strncmp(field, "parts", 5) || (field[5] != '.' && field[5] != '[') || !dot ||
+        dot < field + 6) {
+        snprintf(why, why_cap, "not a number field of the design (radius_mm, "
+                               "parts.NAME.FIELD or parts[I].FIELD)");
+        return TIPPE_EINPUT;
+    }
+    int i = part_named(d, field, (size_t)(dot - field));
+    size_t plen = (size_t)(dot - field);
+    if (i < 0 && plen > 12 && !strncmp(dot - 6, ".print", 6) &&
+        (i = part_named(d, field, plen - 6)) >= 0)
+        return print_field(d, i, dot + 1, value, part_index, why, why_cap);
+    if (i < 0) {
+        snprintf(why, why_cap, "no part %.*s", (int)(dot - field - 5), field + 5);
+        return TIPPE_EINPUT;
+    }
+    part *p = &d->parts[i];
+    const char *key = dot + 1;
+    *part_index = i;
+    if (!strcmp(key, "z_mm")) {
+        *value = p->z_mm;
+        return TIPPE_OK;
+    }
+    if (!strcmp(key, "density_g_cm3")) {
+        if (p->is_void) {
+            snprintf(why, why_cap, "a void has its part's density: give the tolerance to "
+                                   "'%s'", d->parts[p->parent].name);
+            return TIPPE_EINPUT;
+        }
+        *value = p->density_g_cm3;
+        return TIPPE_OK;
+    }
+    const double *v = length_field(p, key);
+    if (!v) {
+        snprintf(why, why_cap, "not a number field of a %s (radius_mm, ... as the shape has; "
+                               "z_mm; density_g_cm3)", shape_names[p->shape]);
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "height_mm") && !p->has_height) {
+        snprintf(why, why_cap, "the height is not in the file: the part spans its clip ball, "
+                               "so the clip decides it");
+        return TIPPE_EINPUT;
+    }
+    if (!strcmp(key, "radius_mm") && tippe_design_forms_sphere(d, i)) {
+        snprintf(why, why_cap, "the part forms the sphere the top rolls on: its radius is "
+                               "radius_mm (give the tolerance there)");
+        return TIPPE_EINPUT;
+    }
+    *value = *v;
+    return TIPPE_OK;
+}
+
+int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, int cap)
+{
+    static const char *const all[] = {"radius_mm", "thickness_mm", "inner_radius_mm",
+                                      "height_mm", "centre_radius_mm", "radial_semi_mm",
+                                      "axial_semi_mm"};
+    if (i < 0 || i >= d->n_parts)
+        return 0;
+    part *p = &d->parts[i];
+    int n = 0;
+    for (size_t k = 0; k < sizeof all / sizeof all[0] && n < cap; k++) {
+        const double *v = length_field(p, all[k]);
+        if (!v || *v <= 0 || (!strcmp(all[k], "height_mm") && !p->has_height) ||
+            (!strcmp(all[k], "radius_mm") && tippe_design_forms_sphere(d, i)))
+            continue;
+        keys[n++] = all[k];
+    }
+    return n;
+}
+
+int tippe_design_forms_sphere(const tippe_design *d, int i)
+{
+    if (i < 0 || i >= d->n_parts)
+        return 0;
+    const part *p = &d->parts[i];
+    return !p->is_void && !p->moving && (p->shape == SHAPE_BALL || p->shape == SHAPE_SHELL) &&
+           fabs(p->radius_mm - d->radius_mm) < SAME_LENGTH_MM && p->z_mm == 0;
+}
+
+int tippe_design_n_tolerances(const tippe_design *d) { return d->n_tolerances; }
+
+const tippe_tolerance *tippe_design_tolerance(const tippe_design *d, int i)
+{
+    return i >= 0 && i < d->n_tolerances ? &d->tolerances[i] : NULL;
+}
