@@ -113,13 +113,13 @@ static void test_spec_errors(void)
             break;
         fputs(cases[k].text, f);
         fclose(f);
-        tippe_opt_spec *s = NULL;
+        tippe_optimise_spec *s = NULL;
         tippe_error err = {0};
-        int rc = tippe_opt_spec_load(path, &s, &err);
+        int rc = tippe_optimise_spec_load(path, &s, &err);
         CHECK(rc == TIPPE_EINPUT && strstr(err.msg, path) && strstr(err.msg, cases[k].want),
               "case %zu: rc %d, message '%s' should name %s and %s", k, rc, err.msg, path,
               cases[k].want);
-        tippe_opt_spec_free(s);
+        tippe_optimise_spec_free(s);
     }
     remove(path);
 }
@@ -156,12 +156,12 @@ static void test_narrowest_is_the_objective(void)
         CHECK(s.narrowest_zone_mm == 0.0 && !s.narrowest_family,
               "not 3-in-1: narrowest %g mm, expected 0", s.narrowest_zone_mm);
     }
-    tippe_opt_spec *spec = NULL;
+    tippe_optimise_spec *spec = NULL;
     tippe_error err = {0};
-    int rc = tippe_opt_spec_load("designs/optimise/drilled-ball.json", &spec, &err);
+    int rc = tippe_optimise_spec_load("designs/optimise/drilled-ball.json", &spec, &err);
     CHECK(rc == TIPPE_OK, "spec: %s", err.msg);
     if (rc || summarise_file("designs/drilled-ball-best.json", &s)) {
-        tippe_opt_spec_free(spec);
+        tippe_optimise_spec_free(spec);
         return;
     }
     /* designs/drilled-ball-best.json's overrides: radius, height, hole z (its notes). */
@@ -182,14 +182,14 @@ static void test_narrowest_is_the_objective(void)
     int brass = strstr(text, "parts.screw.material=brass") != NULL;
     CHECK(found && brass, "drilled-ball-best.json's notes should give its overrides");
     if (found && brass) {
-        tippe_opt_eval ev;
-        tippe_opt_evaluate(spec, 1, x, 0, &ev); /* choice 1: brass */
-        CHECK(s.three_in_one && ev.status == TIPPE_OPT_OK &&
+        tippe_optimise_eval ev;
+        tippe_optimise_evaluate(spec, 1, x, 0, &ev); /* choice 1: brass */
+        CHECK(s.three_in_one && ev.status == TIPPE_OPTIMISE_OK &&
                   fabs(s.narrowest_zone_mm - ev.score) <= 1e-6,
               "sweep's narrowest %.9f mm, the optimiser's score %.9f mm", s.narrowest_zone_mm,
               ev.score);
     }
-    tippe_opt_spec_free(spec);
+    tippe_optimise_spec_free(spec);
 }
 
 int main(void)

@@ -60,7 +60,7 @@ int tippe_launch_plot_map(const char *file, const tippe_launch_map *map, const t
  * Z2 of the best design of each choice (the best ten when there are more),
  * with each group's width, and the convergence of the search (best score so
  * far against evaluations) for the same choices. */
-int tippe_opt_plot(const char *file, const tippe_opt_spec *s, const tippe_opt_result *r,
+int tippe_optimise_plot(const char *file, const tippe_optimise_spec *s, const tippe_optimise_result *r,
                    tippe_error *err);
 
 /* ---- a simulated launch (src/plot/plot_sim.c) ---- */

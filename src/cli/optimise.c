@@ -90,24 +90,24 @@ static int parse_args(int argc, char **argv, optimise_args *a)
 
 static void progress_add(void *ctx, long n) { tippe_progress_add(ctx, n); }
 
-static void print_params(FILE *f, const tippe_opt_spec *s, const tippe_opt_eval *e, int csv)
+static void print_params(FILE *f, const tippe_optimise_spec *s, const tippe_optimise_eval *e, int csv)
 {
-    for (int k = 0; k < tippe_opt_spec_n_vary(s); k++)
+    for (int k = 0; k < tippe_optimise_spec_n_vary(s); k++)
         fprintf(f, csv ? ",%.10g" : " %12.4f", e->x[k]);
 }
 
-static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, double seconds)
+static void print_table(const tippe_optimise_spec *s, const tippe_optimise_result *r, double seconds)
 {
-    int nv = tippe_opt_spec_n_vary(s);
-    printf("spec     %s\n", tippe_opt_spec_path(s));
+    int nv = tippe_optimise_spec_n_vary(s);
+    printf("spec     %s\n", tippe_optimise_spec_path(s));
     printf("search   %ld candidates in %.1f s over %d choice%s\n\n", r->total_evals, seconds,
            r->n_choices, r->n_choices == 1 ? "" : "s");
     printf("%-24s", "choice");
     for (int k = 0; k < nv; k++) {
         /* "parts.rod.radius_mm" -> "rod.radius": the part and the field, which
          * tell two radii apart in 12 characters. */
-        const char *p = tippe_opt_spec_vary_path(s, k);
-        char head[TIPPE_OPT_PATH_LEN];
+        const char *p = tippe_optimise_spec_vary_path(s, k);
+        char head[TIPPE_OPTIMISE_PATH_LEN];
         snprintf(head, sizeof head, "%s", strncmp(p, "parts.", 6) ? p : p + 6);
         size_t n = strlen(head);
         if (n > 3 && !strcmp(head + n - 3, "_mm"))
@@ -117,21 +117,21 @@ static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, doub
     printf(" %8s %8s %8s %9s%s %8s %8s  %s\n", "I (mm)", "II (mm)", "III (mm)", "narrowest",
            r->robust ? "    robust" : "", "eps_max", "n* rev/s", "status");
     /* with no feasible candidate there is no best, only the least infeasible */
-    const int feasible = r->choices[r->best_choice].best.status == TIPPE_OPT_OK;
+    const int feasible = r->choices[r->best_choice].best.status == TIPPE_OPTIMISE_OK;
     for (int c = 0; c < r->n_choices; c++) {
-        const tippe_opt_eval *e = &r->choices[c].best;
+        const tippe_optimise_eval *e = &r->choices[c].best;
         char label[256];
-        printf("%-24.24s", tippe_opt_spec_choice_label(s, c, label, sizeof label));
+        printf("%-24.24s", tippe_optimise_spec_choice_label(s, c, label, sizeof label));
         print_params(stdout, s, e, 0);
         printf(" %8.3f %8.3f %8.3f %9.3f", e->zone_mm[0], e->zone_mm[1], e->zone_mm[2],
                e->objective_mm);
         if (r->robust)
             printf(" %9.3f", e->robust_mm);
         printf(" %8.3f %8.2f  %s%s\n", e->eps_max_mm, e->spin_flip_rev_s,
-               tippe_opt_status_name(e->status),
+               tippe_optimise_status_name(e->status),
                c != r->best_choice ? "" : feasible ? "  <- best" : "  <- closest (infeasible)");
     }
-    const tippe_opt_eval *b = &r->choices[r->best_choice].best;
+    const tippe_optimise_eval *b = &r->choices[r->best_choice].best;
     if (!feasible) {
         printf("\nbest     none: no candidate meets every constraint of the spec\n");
         return;
@@ -149,11 +149,11 @@ static void print_table(const tippe_opt_spec *s, const tippe_opt_result *r, doub
                b->robust_mm, b->robust_zone_mm[0], b->robust_zone_mm[1], b->robust_zone_mm[2]);
 }
 
-static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, double seconds,
+static cJSON *result_json(const tippe_optimise_spec *s, const tippe_optimise_result *r, double seconds,
                           const char *best_path)
 {
     cJSON *o = cJSON_CreateObject(), *choices = NULL;
-    if (!o || !cJSON_AddStringToObject(o, "spec", tippe_opt_spec_path(s)) ||
+    if (!o || !cJSON_AddStringToObject(o, "spec", tippe_optimise_spec_path(s)) ||
         !cJSON_AddNumberToObject(o, "evaluations", (double)r->total_evals) ||
         !cJSON_AddNumberToObject(o, "seconds", seconds) ||
         !cJSON_AddStringToObject(o, "objective", r->robust ? "robust_narrowest_zone"
@@ -163,7 +163,7 @@ static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, do
         return NULL;
     }
     for (int c = 0; c < r->n_choices; c++) {
-        const tippe_opt_eval *e = &r->choices[c].best;
+        const tippe_optimise_eval *e = &r->choices[c].best;
         char label[256];
         cJSON *ch = cJSON_CreateObject(), *params = NULL, *zones = NULL;
         if (!ch || !cJSON_AddItemToArray(choices, ch)) {
@@ -172,11 +172,11 @@ static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, do
             return NULL;
         }
         int ok = cJSON_AddStringToObject(ch, "choice",
-                                         tippe_opt_spec_choice_label(s, c, label, sizeof label)) &&
+                                         tippe_optimise_spec_choice_label(s, c, label, sizeof label)) &&
                  (params = cJSON_AddObjectToObject(ch, "parameters")) &&
                  (zones = cJSON_AddObjectToObject(ch, "zone_widths_mm"));
-        for (int k = 0; ok && k < tippe_opt_spec_n_vary(s); k++)
-            ok = cJSON_AddNumberToObject(params, tippe_opt_spec_vary_path(s, k), e->x[k]) != NULL;
+        for (int k = 0; ok && k < tippe_optimise_spec_n_vary(s); k++)
+            ok = cJSON_AddNumberToObject(params, tippe_optimise_spec_vary_path(s, k), e->x[k]) != NULL;
         const char *g[3] = {"I", "II", "III"};
         for (int k = 0; ok && k < 3; k++)
             ok = cJSON_AddNumberToObject(zones, g[k], e->zone_mm[k]) != NULL;
@@ -191,7 +191,7 @@ static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, do
              cJSON_AddNumberToObject(ch, "weight_g", e->weight_g) &&
              (e->has_robust ? cJSON_AddNumberToObject(ch, "robust_narrowest_zone_mm", e->robust_mm)
                             : cJSON_AddNullToObject(ch, "robust_narrowest_zone_mm")) &&
-             cJSON_AddStringToObject(ch, "status", tippe_opt_status_name(e->status)) &&
+             cJSON_AddStringToObject(ch, "status", tippe_optimise_status_name(e->status)) &&
              cJSON_AddNumberToObject(ch, "evaluations", (double)r->choices[c].n_evals) &&
              cJSON_AddBoolToObject(ch, "best", c == r->best_choice);
         if (!ok) {
@@ -207,7 +207,7 @@ static cJSON *result_json(const tippe_opt_spec *s, const tippe_opt_result *r, do
     return o;
 }
 
-static int write_csv(const char *path, const tippe_opt_spec *s, const tippe_opt_result *r,
+static int write_csv(const char *path, const tippe_optimise_spec *s, const tippe_optimise_result *r,
                      tippe_error *err)
 {
     tippe_report_file rf;
@@ -216,18 +216,18 @@ static int write_csv(const char *path, const tippe_opt_spec *s, const tippe_opt_
         return rc;
     FILE *f = rf.f;
     fprintf(f, "choice,index");
-    for (int k = 0; k < tippe_opt_spec_n_vary(s); k++)
-        fprintf(f, ",%s", tippe_opt_spec_vary_path(s, k));
+    for (int k = 0; k < tippe_optimise_spec_n_vary(s); k++)
+        fprintf(f, ",%s", tippe_optimise_spec_vary_path(s, k));
     fprintf(f, ",zone_I_mm,zone_II_mm,zone_III_mm,narrowest_mm,travel_from_mm,travel_to_mm,"
                "eps_max_mm,flip_spin_rev_s,wall_mm,weight_g,status,score\n");
     for (int c = 0; c < r->n_choices; c++) {
         char label[256];
-        tippe_opt_spec_choice_label(s, c, label, sizeof label);
+        tippe_optimise_spec_choice_label(s, c, label, sizeof label);
         for (char *p = label; *p; p++)
             if (*p == ',' || *p == '"')
                 *p = ';';
         for (long i = 0; i < r->choices[c].n_evals; i++) {
-            const tippe_opt_eval *e = &r->choices[c].all[i];
+            const tippe_optimise_eval *e = &r->choices[c].all[i];
             fprintf(f, "%s,%ld", label, i);
             print_params(f, s, e, 1);
             fprintf(f, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,", e->zone_mm[0], e->zone_mm[1],
@@ -235,24 +235,24 @@ static int write_csv(const char *path, const tippe_opt_spec *s, const tippe_opt_
                     e->eps_max_mm, e->spin_flip_rev_s);
             if (isfinite(e->wall_mm))
                 fprintf(f, "%.6g", e->wall_mm);
-            fprintf(f, ",%.6g,%s,%.9g\n", e->weight_g, tippe_opt_status_name(e->status),
+            fprintf(f, ",%.6g,%s,%.9g\n", e->weight_g, tippe_optimise_status_name(e->status),
                     e->score);
         }
     }
     return tippe_report_commit(&rf, err);
 }
 
-static int write_best(const char *path, const tippe_opt_spec *s, const tippe_opt_result *r,
+static int write_best(const char *path, const tippe_optimise_spec *s, const tippe_optimise_result *r,
                       unsigned long seed, tippe_error *err)
 {
-    const tippe_opt_choice_result *b = &r->choices[r->best_choice];
+    const tippe_optimise_choice_result *b = &r->choices[r->best_choice];
     char how[512], label[256];
     snprintf(how, sizeof how, "best of %d choice%s, this one %s, after %ld evaluations in all, "
                               "seed %lu",
              r->n_choices, r->n_choices == 1 ? "" : "s",
-             tippe_opt_spec_choice_label(s, r->best_choice, label, sizeof label),
+             tippe_optimise_spec_choice_label(s, r->best_choice, label, sizeof label),
              r->total_evals, seed);
-    cJSON *d = tippe_opt_design_json(s, &b->best, path, how, err);
+    cJSON *d = tippe_optimise_design_json(s, &b->best, path, how, err);
     if (!d)
         return err->code ? err->code : TIPPE_ECOMPUTE;
     /* On standard output the file may land anywhere: its materials table by
@@ -283,27 +283,27 @@ int tippe_cli_optimise(int argc, char **argv)
     if (rc)
         return rc == TIPPE_CLI_HELP ? 0 : rc;
     tippe_error err = {0};
-    tippe_opt_spec *s = NULL;
-    if ((rc = tippe_opt_spec_load(a.spec, &s, &err)))
+    tippe_optimise_spec *s = NULL;
+    if ((rc = tippe_optimise_spec_load(a.spec, &s, &err)))
         return tippe_cli_fail(VERB, &err, rc);
     tippe_progress bar;
-    tippe_progress_start(&bar, stderr, "tippe optimise", tippe_opt_planned_evals(s),
+    tippe_progress_start(&bar, stderr, "tippe optimise", tippe_optimise_planned_evals(s),
                          tippe_cli_progress_mode());
-    tippe_opt_options o;
-    tippe_opt_options_default(&o);
+    tippe_optimise_options o;
+    tippe_optimise_options_default(&o);
     o.seed = (unsigned long)a.seed;
     o.threads = (int)a.threads;
     o.keep_all = a.csv != NULL;
     o.progress = progress_add;
     o.progress_ctx = &bar;
-    tippe_opt_result r;
+    tippe_optimise_result r;
     double t0 = tippe_cli_now_s();
-    rc = tippe_opt_run(s, &o, &r, &err);
+    rc = tippe_optimise_run(s, &o, &r, &err);
     double seconds = tippe_cli_now_s() - t0;
     tippe_progress_finish(&bar);
     /* No candidate met the constraints: the table says why (each choice's
      * status), but no file is written, since none would be a design to make. */
-    const int feasible = rc || r.choices[r.best_choice].best.status == TIPPE_OPT_OK;
+    const int feasible = rc || r.choices[r.best_choice].best.status == TIPPE_OPTIMISE_OK;
     if (!feasible) {
         if (a.json)
             rc = tippe_cli_print_json(VERB, result_json(s, &r, seconds, NULL));
@@ -312,14 +312,14 @@ int tippe_cli_optimise(int argc, char **argv)
         fprintf(stderr, "tippe %s: no feasible design: every candidate of the %ld evaluated "
                         "breaks a constraint or does not fit (status column); nothing written\n",
                 VERB, r.total_evals);
-        tippe_opt_result_free(&r);
-        tippe_opt_spec_free(s);
+        tippe_optimise_result_free(&r);
+        tippe_optimise_spec_free(s);
         return 1;
     }
     if (!rc && a.csv)
         rc = write_csv(a.csv, s, &r, &err);
     if (!rc && a.plot)
-        rc = tippe_opt_plot(a.plot, s, &r, &err);
+        rc = tippe_optimise_plot(a.plot, s, &r, &err);
     if (!rc && a.best)
         rc = write_best(a.best, s, &r, o.seed, &err);
     if (rc) {
@@ -331,7 +331,7 @@ int tippe_cli_optimise(int argc, char **argv)
         if (a.best)
             printf("wrote    %s\n", a.best);
     }
-    tippe_opt_result_free(&r);
-    tippe_opt_spec_free(s);
+    tippe_optimise_result_free(&r);
+    tippe_optimise_spec_free(s);
     return rc;
 }

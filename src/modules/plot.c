@@ -58,8 +58,8 @@ int tippe_sweep_plot_compare(const char *file, const tippe_sweep_result *r,
     TIPPE_MODULE_CALL(&plot, tippe_sweep_plot_compare, err, file, r, labels, n, title, err);
 }
 
-int tippe_opt_plot(const char *file, const tippe_opt_spec *s, const tippe_opt_result *r,
+int tippe_optimise_plot(const char *file, const tippe_optimise_spec *s, const tippe_optimise_result *r,
                    tippe_error *err)
 {
-    TIPPE_MODULE_CALL(&plot, tippe_opt_plot, err, file, s, r, err);
+    TIPPE_MODULE_CALL(&plot, tippe_optimise_plot, err, file, s, r, err);
 }

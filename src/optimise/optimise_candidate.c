@@ -20,7 +20,7 @@
 /* ---- one candidate --------------------------------------------------------- */
 
 /* The value the tie's field follows, for candidate (options idx, x). */
-static double tie_source(const tippe_opt_spec *s, const tie_t *t, const int *idx, const double *x)
+static double tie_source(const tippe_optimise_spec *s, const tie_t *t, const int *idx, const double *x)
 {
     if (t->vary_index >= 0)
         return x[t->vary_index];
@@ -41,7 +41,7 @@ static double tie_source(const tippe_opt_spec *s, const tie_t *t, const int *idx
 
 /* Tie k's value: along a chain, each link's value from the one it follows
  * (the spec load refused cycles, so the chain ends within n_tie links). */
-static double tie_value(const tippe_opt_spec *s, int k, const int *idx, const double *x)
+static double tie_value(const tippe_optimise_spec *s, int k, const int *idx, const double *x)
 {
     const tie_t *t = &s->tie[k];
     double from = t->tie_index >= 0 ? tie_value(s, t->tie_index, idx, x)
@@ -49,7 +49,7 @@ static double tie_value(const tippe_opt_spec *s, int k, const int *idx, const do
     return t->times * from + t->plus_mm;
 }
 
-int tippe_opt_overrides(const tippe_opt_spec *s, int choice, const double *x, char (*buf)[256],
+int tippe_optimise_overrides(const tippe_optimise_spec *s, int choice, const double *x, char (*buf)[256],
                         int cap)
 {
     int idx[MAX_CHOOSE], n = 0;
@@ -125,7 +125,7 @@ static double flip_spin_rev_s(const tippe_design *d, double from, double to)
 
 /* The tolerance bands of the sweep's zone ends and the widths that survive
  * them (tippe/sweep_bands.h); left unset if they cannot be computed. */
-static void robust_widths(const tippe_design *d, const tippe_sweep_result *r, tippe_opt_eval *out)
+static void robust_widths(const tippe_design *d, const tippe_sweep_result *r, tippe_optimise_eval *out)
 {
     tippe_sweep_bands_result b;
     tippe_error e = {0};
@@ -160,10 +160,10 @@ static double perimeter_wall_mm(const tippe_design *d, const char *hole)
 }
 
 
-/* tippe_opt_evaluate, with the margins (the polish's constraints; the score's
+/* tippe_optimise_evaluate, with the margins (the polish's constraints; the score's
  * violation is the sum of the positive ones). */
-void tippe_optimise_evaluate_margins(const tippe_opt_spec *s, int choice, const double *x, int n_scan,
-                     tippe_opt_eval *out, double margin[N_CON])
+void tippe_optimise_evaluate_margins(const tippe_optimise_spec *s, int choice, const double *x, int n_scan,
+                     tippe_optimise_eval *out, double margin[N_CON])
 {
     memset(out, 0, sizeof *out);
     for (int k = 0; k < N_CON; k++)
@@ -172,9 +172,9 @@ void tippe_optimise_evaluate_margins(const tippe_opt_spec *s, int choice, const 
     for (int k = 0; k < s->n_vary; k++)
         out->x[k] = x[k];
     out->wall_mm = INFINITY;
-    char buf[TIPPE_OPT_MAX_VARY + MAX_CHOOSE * MAX_SETS_PER_OPTION + MAX_TIE][256];
+    char buf[TIPPE_OPTIMISE_MAX_VARY + MAX_CHOOSE * MAX_SETS_PER_OPTION + MAX_TIE][256];
     const char *ov[sizeof buf / sizeof buf[0]];
-    int n = tippe_opt_overrides(s, choice, x, buf, (int)(sizeof buf / sizeof buf[0]));
+    int n = tippe_optimise_overrides(s, choice, x, buf, (int)(sizeof buf / sizeof buf[0]));
     for (int i = 0; i < n; i++)
         ov[i] = buf[i];
     tippe_design *d = NULL;
@@ -183,7 +183,7 @@ void tippe_optimise_evaluate_margins(const tippe_opt_spec *s, int choice, const 
      * reported best (n_scan = 0) is built and swept at full resolution. */
     unsigned flags = TIPPE_DESIGN_TRAVEL_PHYSICAL | (n_scan > 0 ? TIPPE_DESIGN_COARSE_LAYOUT : 0);
     if (tippe_design_source_build(s->src, ov, n, flags, &d, &e)) {
-        out->status = TIPPE_OPT_DOES_NOT_FIT;
+        out->status = TIPPE_OPTIMISE_DOES_NOT_FIT;
         out->score = -2.0;
         return;
     }
@@ -208,7 +208,7 @@ void tippe_optimise_evaluate_margins(const tippe_opt_spec *s, int choice, const 
     double violation = 0.0;
     margin[CON_SPIN] = -1.0;
     if (tippe_sweep_design(d, out->travel_mm[0], out->travel_mm[1], &so, &r, &e)) {
-        out->status = TIPPE_OPT_NO_ZONES;
+        out->status = TIPPE_OPTIMISE_NO_ZONES;
         violation += 1.0;
     } else {
         tippe_sweep_summarise(&r, &sum);
@@ -224,7 +224,7 @@ void tippe_optimise_evaluate_margins(const tippe_opt_spec *s, int choice, const 
                                    ? out->spin_flip_rev_s / s->spin_max_rev_s - 1.0
                                    : 1.0;
             if (!(out->spin_flip_rev_s <= s->spin_max_rev_s)) {
-                out->status = TIPPE_OPT_SPIN_HIGH;
+                out->status = TIPPE_OPTIMISE_SPIN_HIGH;
                 violation += margin[CON_SPIN];
             }
         }
@@ -237,35 +237,35 @@ void tippe_optimise_evaluate_margins(const tippe_opt_spec *s, int choice, const 
                        : out->wall_mm < min_wall ? 1.0
                                                  : -1.0;
     if (out->eps_max_mm < s->eps_max_min_mm) {
-        out->status = TIPPE_OPT_EPS_SMALL;
+        out->status = TIPPE_OPTIMISE_EPS_SMALL;
         violation += margin[CON_EPS];
     }
     if (out->weight_g > s->max_weight_g) {
-        out->status = TIPPE_OPT_HEAVY;
+        out->status = TIPPE_OPTIMISE_HEAVY;
         violation += margin[CON_WEIGHT];
     }
     if (out->wall_mm < min_wall) {
-        out->status = TIPPE_OPT_THIN_WALL;
+        out->status = TIPPE_OPTIMISE_THIN_WALL;
         violation += margin[CON_WALL];
     }
-    out->score = out->status == TIPPE_OPT_OK ? out->objective_mm : -1.0 - fmin(violation, 0.99);
+    out->score = out->status == TIPPE_OPTIMISE_OK ? out->objective_mm : -1.0 - fmin(violation, 0.99);
     tippe_design_free(d);
 }
 
-void tippe_opt_evaluate(const tippe_opt_spec *s, int choice, const double *x, int n_scan,
-                        tippe_opt_eval *out)
+void tippe_optimise_evaluate(const tippe_optimise_spec *s, int choice, const double *x, int n_scan,
+                        tippe_optimise_eval *out)
 {
     double margin[N_CON];
     tippe_optimise_evaluate_margins(s, choice, x, n_scan, out, margin);
 }
 
-int tippe_opt_sweep(const tippe_opt_spec *s, const tippe_opt_eval *e, tippe_sweep_result *out,
+int tippe_optimise_sweep(const tippe_optimise_spec *s, const tippe_optimise_eval *e, tippe_sweep_result *out,
                     tippe_error *err)
 {
     memset(out, 0, sizeof *out);
-    char buf[TIPPE_OPT_MAX_VARY + MAX_CHOOSE * MAX_SETS_PER_OPTION + MAX_TIE][256];
+    char buf[TIPPE_OPTIMISE_MAX_VARY + MAX_CHOOSE * MAX_SETS_PER_OPTION + MAX_TIE][256];
     const char *ov[sizeof buf / sizeof buf[0]];
-    int n = tippe_opt_overrides(s, e->choice, e->x, buf, (int)(sizeof buf / sizeof buf[0]));
+    int n = tippe_optimise_overrides(s, e->choice, e->x, buf, (int)(sizeof buf / sizeof buf[0]));
     for (int i = 0; i < n; i++)
         ov[i] = buf[i];
     tippe_design *d = NULL;

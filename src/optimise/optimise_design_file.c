@@ -63,12 +63,12 @@ static void relative_path(const char *from, const char *target, char *out, size_
     snprintf(out + n, cap - n, "%s", target + common + (target[common] == '/'));
 }
 
-cJSON *tippe_opt_design_json(const tippe_opt_spec *s, const tippe_opt_eval *e,
+cJSON *tippe_optimise_design_json(const tippe_optimise_spec *s, const tippe_optimise_eval *e,
                              const char *out_path, const char *how, tippe_error *err)
 {
-    char buf[TIPPE_OPT_MAX_VARY + MAX_CHOOSE * MAX_SETS_PER_OPTION + MAX_TIE][256];
+    char buf[TIPPE_OPTIMISE_MAX_VARY + MAX_CHOOSE * MAX_SETS_PER_OPTION + MAX_TIE][256];
     const char *ov[sizeof buf / sizeof buf[0]];
-    int n = tippe_opt_overrides(s, e->choice, e->x, buf, (int)(sizeof buf / sizeof buf[0]));
+    int n = tippe_optimise_overrides(s, e->choice, e->x, buf, (int)(sizeof buf / sizeof buf[0]));
     for (int i = 0; i < n; i++)
         ov[i] = buf[i];
     cJSON *root = NULL;

@@ -20,7 +20,7 @@
 #define TIPPE_PI 3.14159265358979323846
 
 typedef struct {
-    char path[TIPPE_OPT_PATH_LEN];
+    char path[TIPPE_OPTIMISE_PATH_LEN];
     double lo, hi;
 } vary_t;
 
@@ -31,13 +31,13 @@ typedef struct {
 } option_t;
 
 typedef struct {
-    char path[TIPPE_OPT_PATH_LEN];
+    char path[TIPPE_OPTIMISE_PATH_LEN];
     int n;
     option_t *opt;
 } choose_t;
 
 typedef struct {
-    char path[TIPPE_OPT_PATH_LEN], follows[TIPPE_OPT_PATH_LEN];
+    char path[TIPPE_OPTIMISE_PATH_LEN], follows[TIPPE_OPTIMISE_PATH_LEN];
     double plus_mm, times;
     int vary_index;   /* follows a vary parameter, or -1 */
     int tie_index;    /* follows another tie's field (a chain), or -1 */
@@ -49,12 +49,12 @@ static const char *const alg_names[N_ALG] = {"DIRECT-L", "CRS2", "MLSL", "ISRES"
 typedef enum { POLISH_COBYLA, POLISH_BOBYQA, POLISH_NONE, N_POLISH } polish_t;
 static const char *const polish_names[N_POLISH] = {"COBYLA", "BOBYQA", "none"};
 
-struct tippe_opt_spec {
+struct tippe_optimise_spec {
     char *path, *design_path;
     char name[256];
     tippe_design_source *src;
     int n_vary;
-    vary_t vary[TIPPE_OPT_MAX_VARY];
+    vary_t vary[TIPPE_OPTIMISE_MAX_VARY];
     int n_choose;
     choose_t choose[MAX_CHOOSE];
     int n_tie;
@@ -68,13 +68,13 @@ struct tippe_opt_spec {
 };
 
 /* optimise_spec.c */
-void tippe_optimise_choice_options(const tippe_opt_spec *s, int choice, int *idx);
+void tippe_optimise_choice_options(const tippe_optimise_spec *s, int choice, int *idx);
 
 /* The constraints' margins of a candidate: relative (so that they add
  * across constraints), <= 0 where the constraint is met. */
 enum { CON_EPS, CON_SPIN, CON_WALL, CON_WEIGHT, N_CON };
 
 /* optimise_candidate.c */
-void tippe_optimise_evaluate_margins(const tippe_opt_spec *s, int choice, const double *x, int n_scan, tippe_opt_eval *out, double margin[N_CON]);
+void tippe_optimise_evaluate_margins(const tippe_optimise_spec *s, int choice, const double *x, int n_scan, tippe_optimise_eval *out, double margin[N_CON]);
 
 #endif

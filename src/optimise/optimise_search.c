@@ -20,19 +20,19 @@
 /* ---- the search ------------------------------------------------------------ */
 
 typedef struct {
-    const tippe_opt_spec *s;
-    const tippe_opt_options *o;
+    const tippe_optimise_spec *s;
+    const tippe_optimise_options *o;
     int choice;
-    tippe_opt_choice_result *res;
+    tippe_optimise_choice_result *res;
     long cap;
     double best_score;
-    double best_x[TIPPE_OPT_MAX_VARY];
+    double best_x[TIPPE_OPTIMISE_MAX_VARY];
     int failed;
     /* The last candidate evaluated (clamped x), for the polish's constraints,
      * which NLopt asks for at the point whose objective it has just asked. */
-    tippe_opt_eval last;
+    tippe_optimise_eval last;
     double last_margin[N_CON];
-    double last_x[TIPPE_OPT_MAX_VARY];
+    double last_x[TIPPE_OPTIMISE_MAX_VARY];
     int has_last;
 } job_t;
 
@@ -86,17 +86,17 @@ static int nl_ready(tippe_error *err)
 
 /* Evaluates candidate x (its first n_vary values; clamped to the bounds, which
  * COBYLA may step a hair outside), records it and keeps it as j->last. */
-static const tippe_opt_eval *evaluate_at(job_t *j, const double *x)
+static const tippe_optimise_eval *evaluate_at(job_t *j, const double *x)
 {
     unsigned n = (unsigned)j->s->n_vary;
-    double xx[TIPPE_OPT_MAX_VARY] = {0};
+    double xx[TIPPE_OPTIMISE_MAX_VARY] = {0};
     for (unsigned k = 0; k < n; k++)
         xx[k] = fmin(fmax(x[k], j->s->vary[k].lo), j->s->vary[k].hi);
-    tippe_opt_eval *ev = &j->last;
+    tippe_optimise_eval *ev = &j->last;
     tippe_optimise_evaluate_margins(j->s, j->choice, xx, SEARCH_SCAN, ev, j->last_margin);
     memcpy(j->last_x, x, n * sizeof *x);
     j->has_last = 1;
-    tippe_opt_choice_result *r = j->res;
+    tippe_optimise_choice_result *r = j->res;
     if (r->n_evals < j->cap) {
         if (ev->score > j->best_score) {
             j->best_score = ev->score;
@@ -147,7 +147,7 @@ static void polish_constraints(unsigned m, double *c, unsigned n, const double *
     (void)grad;
     job_t *j = data;
     unsigned nv = n - 1;
-    const tippe_opt_eval *ev = j->has_last && !memcmp(j->last_x, x, nv * sizeof *x)
+    const tippe_optimise_eval *ev = j->has_last && !memcmp(j->last_x, x, nv * sizeof *x)
                                    ? &j->last
                                    : evaluate_at(j, x);
     double t = x[nv];
@@ -176,9 +176,9 @@ static nlopt_algorithm nlopt_alg(algorithm_t a)
  * maxeval evaluations. Returns 0, or -1 if NLopt could not be set up. */
 static int run_nlopt(job_t *j, nlopt_algorithm alg, long maxeval, double *x)
 {
-    const tippe_opt_spec *s = j->s;
+    const tippe_optimise_spec *s = j->s;
     unsigned n = (unsigned)s->n_vary;
-    double lo[TIPPE_OPT_MAX_VARY], hi[TIPPE_OPT_MAX_VARY], step[TIPPE_OPT_MAX_VARY], f = 0;
+    double lo[TIPPE_OPTIMISE_MAX_VARY], hi[TIPPE_OPTIMISE_MAX_VARY], step[TIPPE_OPTIMISE_MAX_VARY], f = 0;
     for (unsigned k = 0; k < n; k++) {
         lo[k] = s->vary[k].lo;
         hi[k] = s->vary[k].hi;
@@ -211,10 +211,10 @@ static int run_nlopt(job_t *j, nlopt_algorithm alg, long maxeval, double *x)
  * evaluations. Returns 0, or -1 if NLopt could not be set up. */
 static int run_polish(job_t *j, long maxeval, const double *x)
 {
-    const tippe_opt_spec *s = j->s;
+    const tippe_optimise_spec *s = j->s;
     unsigned n = (unsigned)s->n_vary;
-    double lo[TIPPE_OPT_MAX_VARY + 1], hi[TIPPE_OPT_MAX_VARY + 1], step[TIPPE_OPT_MAX_VARY + 1];
-    double y[TIPPE_OPT_MAX_VARY + 1], tol[N_POLISH_CON] = {0}, f = 0;
+    double lo[TIPPE_OPTIMISE_MAX_VARY + 1], hi[TIPPE_OPTIMISE_MAX_VARY + 1], step[TIPPE_OPTIMISE_MAX_VARY + 1];
+    double y[TIPPE_OPTIMISE_MAX_VARY + 1], tol[N_POLISH_CON] = {0}, f = 0;
     for (unsigned k = 0; k < n; k++) {
         lo[k] = s->vary[k].lo;
         hi[k] = s->vary[k].hi;
@@ -245,8 +245,8 @@ static int run_polish(job_t *j, long maxeval, const double *x)
 
 static void search_choice(job_t *j)
 {
-    const tippe_opt_spec *s = j->s;
-    double x[TIPPE_OPT_MAX_VARY] = {0};
+    const tippe_optimise_spec *s = j->s;
+    double x[TIPPE_OPTIMISE_MAX_VARY] = {0};
     j->best_score = -INFINITY;
     if (s->n_vary == 0) {
         objective(0, x, NULL, j);
@@ -277,16 +277,16 @@ static void search_choice(job_t *j)
         }
     }
     /* The best point, measured as a report measures it (full sweep). */
-    tippe_opt_evaluate(s, j->choice, j->best_x, 0, &j->res->best);
+    tippe_optimise_evaluate(s, j->choice, j->best_x, 0, &j->res->best);
 }
 
-long tippe_opt_planned_evals(const tippe_opt_spec *s)
+long tippe_optimise_planned_evals(const tippe_optimise_spec *s)
 {
     long per = s->n_vary ? s->evals + (s->polish != POLISH_NONE ? s->polish_evals : 0) : 1;
     return per * s->n_choices;
 }
 
-void tippe_opt_result_free(tippe_opt_result *r)
+void tippe_optimise_result_free(tippe_optimise_result *r)
 {
     if (!r)
         return;
@@ -300,9 +300,9 @@ void tippe_opt_result_free(tippe_opt_result *r)
 
 /* Whether a ranks above b: feasible before infeasible, then by robust width
  * where both have one, else by score. */
-int tippe_opt_rank_above(const tippe_opt_eval *a, const tippe_opt_eval *b)
+int tippe_optimise_rank_above(const tippe_optimise_eval *a, const tippe_optimise_eval *b)
 {
-    int fa = a->status == TIPPE_OPT_OK, fb = b->status == TIPPE_OPT_OK;
+    int fa = a->status == TIPPE_OPTIMISE_OK, fb = b->status == TIPPE_OPTIMISE_OK;
     if (fa != fb)
         return fa;
     if (fa && a->has_robust && b->has_robust && a->robust_mm != b->robust_mm)
@@ -310,7 +310,7 @@ int tippe_opt_rank_above(const tippe_opt_eval *a, const tippe_opt_eval *b)
     return a->score > b->score;
 }
 
-int tippe_opt_run(const tippe_opt_spec *s, const tippe_opt_options *o, tippe_opt_result *out,
+int tippe_optimise_run(const tippe_optimise_spec *s, const tippe_optimise_options *o, tippe_optimise_result *out,
                   tippe_error *err)
 {
     memset(out, 0, sizeof *out);
@@ -318,13 +318,13 @@ int tippe_opt_run(const tippe_opt_spec *s, const tippe_opt_options *o, tippe_opt
     if (rc)
         return rc;
     tippe_gsl_errors_as_codes();
-    tippe_opt_options def;
+    tippe_optimise_options def;
     if (!o) {
-        tippe_opt_options_default(&def);
+        tippe_optimise_options_default(&def);
         o = &def;
     }
     int nc = s->n_choices;
-    long per = tippe_opt_planned_evals(s) / nc;
+    long per = tippe_optimise_planned_evals(s) / nc;
     /* COBYLA and MLSL may make a few more calls than asked when they stop. */
     long cap = per + 64;
     out->choices = calloc((size_t)nc, sizeof *out->choices);
@@ -337,7 +337,7 @@ int tippe_opt_run(const tippe_opt_spec *s, const tippe_opt_options *o, tippe_opt
     out->robust = s->robust;
     int oom = 0;
     for (int c = 0; c < nc; c++) {
-        tippe_opt_choice_result *r = &out->choices[c];
+        tippe_optimise_choice_result *r = &out->choices[c];
         r->best_so_far = malloc((size_t)cap * sizeof *r->best_so_far);
         if (o->keep_all)
             r->all = malloc((size_t)cap * sizeof *r->all);
@@ -358,14 +358,14 @@ int tippe_opt_run(const tippe_opt_spec *s, const tippe_opt_options *o, tippe_opt
         out->total_evals += out->choices[c].n_evals;
         if (jobs[c].failed && failed < 0)
             failed = c;
-        if (tippe_opt_rank_above(&out->choices[c].best, &out->choices[out->best_choice].best))
+        if (tippe_optimise_rank_above(&out->choices[c].best, &out->choices[out->best_choice].best))
             out->best_choice = c;
     }
     free(jobs);
     if (failed >= 0) {
         char label[256];
         return tippe_error_set(err, TIPPE_ECOMPUTE, "optimise: NLopt failed on choice %s",
-                               tippe_opt_spec_choice_label(s, failed, label, sizeof label));
+                               tippe_optimise_spec_choice_label(s, failed, label, sizeof label));
     }
     return TIPPE_OK;
 }

@@ -38,15 +38,15 @@ static const char *const item_keys[] = {"name", "thread", "d_mm", "pitch_mm", "l
                                         "radius_mm", "height_mm", "socket_s_mm",
                                         "socket_t_mm", NULL};
 
-const char *tippe_opt_status_name(tippe_opt_status s)
+const char *tippe_optimise_status_name(tippe_optimise_status s)
 {
     static const char *const names[] = {"ok", "does not fit", "thin wall", "too heavy",
                                         "eps_max too small", "flip spin too high",
                                         "no zones"};
-    return (int)s >= 0 && (int)s <= (int)TIPPE_OPT_NO_ZONES ? names[s] : "?";
+    return (int)s >= 0 && (int)s <= (int)TIPPE_OPTIMISE_NO_ZONES ? names[s] : "?";
 }
 
-void tippe_opt_options_default(tippe_opt_options *o)
+void tippe_optimise_options_default(tippe_optimise_options *o)
 {
     memset(o, 0, sizeof *o);
     o->seed = 1;
@@ -79,7 +79,7 @@ static double design_number(const cJSON *root, const char *path)
 {
     const cJSON *obj = root;
     const char *key = path;
-    char name[TIPPE_OPT_PATH_LEN];
+    char name[TIPPE_OPTIMISE_PATH_LEN];
     if (!strncmp(path, "parts.", 6)) {
         const char *dot = strrchr(path, '.');
         if (dot <= path + 6 || (size_t)(dot - path - 6) >= sizeof name)
@@ -109,12 +109,12 @@ static int entry_path(tippe_json_reader *c, const char *section, const cJSON *v,
     tippe_json_path(p, cap, section, v->string);
     if (n == max)
         return tippe_json_fail(c, p, "at most %d %s", max, what);
-    if (strlen(v->string) >= TIPPE_OPT_PATH_LEN || strchr(v->string, '='))
+    if (strlen(v->string) >= TIPPE_OPTIMISE_PATH_LEN || strchr(v->string, '='))
         return tippe_json_fail(c, p, "not a field path");
     return TIPPE_OK;
 }
 
-static int parse_vary(tippe_json_reader *c, const cJSON *vary, tippe_opt_spec *s)
+static int parse_vary(tippe_json_reader *c, const cJSON *vary, tippe_optimise_spec *s)
 {
     if (!vary)
         return TIPPE_OK;
@@ -122,7 +122,7 @@ static int parse_vary(tippe_json_reader *c, const cJSON *vary, tippe_opt_spec *s
         return tippe_json_wrong_type(c, "vary", "an object {FIELD: [from, to]}", vary);
     for (const cJSON *v = vary->child; v; v = v->next) {
         char p[256];
-        int rc = entry_path(c, "vary", v, s->n_vary, TIPPE_OPT_MAX_VARY,
+        int rc = entry_path(c, "vary", v, s->n_vary, TIPPE_OPTIMISE_MAX_VARY,
                             "continuous parameters", p, sizeof p);
         if (rc)
             return rc;
@@ -235,7 +235,7 @@ static int catalogue_options(tippe_json_reader *c, const char *cpath, const cJSO
 }
 
 static int parse_choose(tippe_json_reader *c, const cJSON *choose, const char *catalogue_file,
-                        tippe_opt_spec *s)
+                        tippe_optimise_spec *s)
 {
     if (!choose)
         return TIPPE_OK;
@@ -288,7 +288,7 @@ static int parse_choose(tippe_json_reader *c, const cJSON *choose, const char *c
 }
 
 static int parse_tie(tippe_json_reader *c, const cJSON *tie, const cJSON *design_root,
-                     tippe_opt_spec *s)
+                     tippe_optimise_spec *s)
 {
     if (!tie)
         return TIPPE_OK;
@@ -303,7 +303,7 @@ static int parse_tie(tippe_json_reader *c, const cJSON *tie, const cJSON *design
         snprintf(t->path, sizeof t->path, "%s", v->string);
         t->times = 1.0;
         t->plus_mm = 0.0;
-        char follows[TIPPE_OPT_PATH_LEN] = "";
+        char follows[TIPPE_OPTIMISE_PATH_LEN] = "";
         if (cJSON_IsString(v)) {
             snprintf(follows, sizeof follows, "%s", v->valuestring);
         } else if (cJSON_IsObject(v)) {
@@ -374,7 +374,7 @@ static int parse_tie(tippe_json_reader *c, const cJSON *tie, const cJSON *design
     return TIPPE_OK;
 }
 
-static int parse_constraints(tippe_json_reader *c, const cJSON *con, tippe_opt_spec *s)
+static int parse_constraints(tippe_json_reader *c, const cJSON *con, tippe_optimise_spec *s)
 {
     /* Unset (-1): two perimeters of the hole's part as printed (its print block,
      * else tippe_print_defaults: 2 x 0.45 mm). */
@@ -413,7 +413,7 @@ static int parse_constraints(tippe_json_reader *c, const cJSON *con, tippe_opt_s
     return TIPPE_OK;
 }
 
-static int parse_search(tippe_json_reader *c, const cJSON *root, tippe_opt_spec *s)
+static int parse_search(tippe_json_reader *c, const cJSON *root, tippe_optimise_spec *s)
 {
     char obj[32] = "robust_narrowest_zone";
     int rc = tippe_json_string(c, root, "", "objective", 0, obj, sizeof obj, NULL);
@@ -472,7 +472,7 @@ static int parse_search(tippe_json_reader *c, const cJSON *root, tippe_opt_spec 
 /* A choice of materials names only materials of the base design's table
  * (exactly: names are case-sensitive), so that a misspelt option is refused
  * here rather than reported as a candidate that "does not fit". */
-static int check_materials(tippe_json_reader *c, const tippe_opt_spec *s)
+static int check_materials(tippe_json_reader *c, const tippe_optimise_spec *s)
 {
     tippe_materials *tab = NULL;
     for (int k = 0; k < s->n_choose; k++) {
@@ -518,17 +518,17 @@ static int check_materials(tippe_json_reader *c, const tippe_opt_spec *s)
     return TIPPE_OK;
 }
 
-static int check_paths(tippe_json_reader *c, tippe_opt_spec *s)
+static int check_paths(tippe_json_reader *c, tippe_optimise_spec *s)
 {
     int rc = check_materials(c, s);
     if (rc)
         return rc;
-    double x[TIPPE_OPT_MAX_VARY];
+    double x[TIPPE_OPTIMISE_MAX_VARY];
     for (int k = 0; k < s->n_vary; k++)
         x[k] = 0.5 * (s->vary[k].lo + s->vary[k].hi);
     for (int ch = 0; ch < s->n_choices; ch++) {
-        char buf[TIPPE_OPT_MAX_VARY + MAX_CHOOSE * MAX_SETS_PER_OPTION + MAX_TIE][256];
-        int n = tippe_opt_overrides(s, ch, x, buf, (int)(sizeof buf / sizeof buf[0]));
+        char buf[TIPPE_OPTIMISE_MAX_VARY + MAX_CHOOSE * MAX_SETS_PER_OPTION + MAX_TIE][256];
+        int n = tippe_optimise_overrides(s, ch, x, buf, (int)(sizeof buf / sizeof buf[0]));
         const char *ov[sizeof buf / sizeof buf[0]];
         for (int i = 0; i < n; i++)
             ov[i] = buf[i];
@@ -546,11 +546,11 @@ static int check_paths(tippe_json_reader *c, tippe_opt_spec *s)
     return TIPPE_OK;
 }
 
-int tippe_opt_spec_load(const char *path, tippe_opt_spec **out, tippe_error *err)
+int tippe_optimise_spec_load(const char *path, tippe_optimise_spec **out, tippe_error *err)
 {
     *out = NULL;
     tippe_json_reader *c = tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, NULL);
-    tippe_opt_spec *s = calloc(1, sizeof *s);
+    tippe_optimise_spec *s = calloc(1, sizeof *s);
     if (!c || !s || !(s->path = dup_str(path))) {
         free(c);
         free(s);
@@ -621,14 +621,14 @@ int tippe_opt_spec_load(const char *path, tippe_opt_spec **out, tippe_error *err
     cJSON_Delete(droot);
     free(c);
     if (rc) {
-        tippe_opt_spec_free(s);
+        tippe_optimise_spec_free(s);
         return rc;
     }
     *out = s;
     return TIPPE_OK;
 }
 
-void tippe_opt_spec_free(tippe_opt_spec *s)
+void tippe_optimise_spec_free(tippe_optimise_spec *s)
 {
     if (!s)
         return;
@@ -640,15 +640,15 @@ void tippe_opt_spec_free(tippe_opt_spec *s)
     free(s);
 }
 
-int tippe_opt_spec_n_vary(const tippe_opt_spec *s) { return s->n_vary; }
-const char *tippe_opt_spec_vary_path(const tippe_opt_spec *s, int k) { return s->vary[k].path; }
-int tippe_opt_spec_n_choices(const tippe_opt_spec *s) { return s->n_choices; }
-const char *tippe_opt_spec_path(const tippe_opt_spec *s) { return s->path; }
-const tippe_design_source *tippe_opt_spec_design(const tippe_opt_spec *s) { return s->src; }
+int tippe_optimise_spec_n_vary(const tippe_optimise_spec *s) { return s->n_vary; }
+const char *tippe_optimise_spec_vary_path(const tippe_optimise_spec *s, int k) { return s->vary[k].path; }
+int tippe_optimise_spec_n_choices(const tippe_optimise_spec *s) { return s->n_choices; }
+const char *tippe_optimise_spec_path(const tippe_optimise_spec *s) { return s->path; }
+const tippe_design_source *tippe_optimise_spec_design(const tippe_optimise_spec *s) { return s->src; }
 
 /* The option of each choose entry in combination `choice` (mixed radix, the
  * first entry varying slowest). */
-void tippe_optimise_choice_options(const tippe_opt_spec *s, int choice, int *idx)
+void tippe_optimise_choice_options(const tippe_optimise_spec *s, int choice, int *idx)
 {
     for (int k = s->n_choose - 1; k >= 0; k--) {
         idx[k] = choice % s->choose[k].n;
@@ -656,7 +656,7 @@ void tippe_optimise_choice_options(const tippe_opt_spec *s, int choice, int *idx
     }
 }
 
-const char *tippe_opt_spec_choice_label(const tippe_opt_spec *s, int choice, char *buf,
+const char *tippe_optimise_spec_choice_label(const tippe_optimise_spec *s, int choice, char *buf,
                                         size_t cap)
 {
     int idx[MAX_CHOOSE];

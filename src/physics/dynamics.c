@@ -746,7 +746,7 @@ typedef struct {
     int at_sample;                  /* the last step landed on a sample time */
     double J_scale, E_min;
     double energy_abs_err, J_abs_err; /* running maxima of |E + D - E0|, |J - J0| */
-    verdict_ctx vc;
+    tippe_dynamics_verdict_ctx vc;
     double contact_retry_excess;    /* try the contact bound when E - V_min is below this */
     /* Rolling: 1 waiting for a minimum of theta, 2 following a period from it; the
      * period's theta range (widened by half the largest step in theta), its least
@@ -794,7 +794,7 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
     rs->J_scale = fmax(fabs(res->J0), 1e-6 * c->C * omega_scale * c->R);
     rs->E_min = res->E0;
     rs->contact_retry_excess = INFINITY;
-    st = verdict_init(&rs->vc, model, res->J0, err);
+    st = tippe_dynamics_verdict_init(&rs->vc, model, res->J0, err);
     if (st)
         return st;
     rs->sys = (gsl_odeiv2_system){rhs, jacobian, c->dim, c};
@@ -842,7 +842,7 @@ static int run_dissipates_to_rest(const run_state *rs)
 }
 
 /* The verdict of a trapped well and the steady state at its minimum for J0. */
-static void run_set_trapped(run_state *rs, const verdict_trap *tr, double margin, double Rn_bound,
+static void run_set_trapped(run_state *rs, const tippe_dynamics_verdict_trap *tr, double margin, double Rn_bound,
                             tippe_dynamics_result *res)
 {
     const tippe_theory_well *wl = &rs->vc.wells.well[tr->well];
@@ -896,13 +896,13 @@ static void run_set_trapped(run_state *rs, const verdict_trap *tr, double margin
  * well that can never be resolved (undecided, flat_well). */
 static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
 {
-    const double margin = verdict_margin(&rs->vc, rs->opt->margin_factor, rs->energy_abs_err,
+    const double margin = tippe_dynamics_verdict_margin(&rs->vc, rs->opt->margin_factor, rs->energy_abs_err,
                                          rs->J_abs_err, res->E0);
     const tippe_dynamics_sample *s = &rs->smp;
     const int at_rest = (s->theta == 0.0 || s->theta == M_PI) && s->theta_dot == 0.0 &&
                         s->slip_speed == 0.0;
-    verdict_trap tr;
-    verdict_energy_test(&rs->vc, s->theta, s->E, margin, at_rest ? s->theta : NAN, &tr);
+    tippe_dynamics_verdict_trap tr;
+    tippe_dynamics_verdict_energy_test(&rs->vc, s->theta, s->E, margin, at_rest ? s->theta : NAN, &tr);
     const int decidable =
         run_dissipates_to_rest(rs) ? (tr.trapped || tr.unresolvable) : tr.confined;
     if (!decidable)
@@ -910,8 +910,8 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
     const double excess = rs->smp.E - rs->vc.wells.well[tr.well].V_min;
     if (!(excess < rs->contact_retry_excess))
         return 0;
-    verdict_trap_range(&rs->vc, rs->smp.E, margin, &tr);
-    const double Rn_bound = verdict_contact_bound(&rs->vc, rs->smp.E + margin, tr.lo, tr.hi);
+    tippe_dynamics_verdict_trap_range(&rs->vc, rs->smp.E, margin, &tr);
+    const double Rn_bound = tippe_dynamics_verdict_contact_bound(&rs->vc, rs->smp.E + margin, tr.lo, tr.hi);
     /* With sticking the top can roll for ever anywhere in [lo, hi] (nothing dissipates
      * while it rolls), so only the range is proved: tip needs all of it above pi/2,
      * no_tip all of it below. */

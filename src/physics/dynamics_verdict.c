@@ -13,7 +13,7 @@
 #include <math.h>
 #include <string.h>
 
-int verdict_init(verdict_ctx *v, const tippe_dynamics_model *model, double J, tippe_error *err)
+int tippe_dynamics_verdict_init(tippe_dynamics_verdict_ctx *v, const tippe_dynamics_model *model, double J, tippe_error *err)
 {
     memset(v, 0, sizeof *v);
     v->top = model->top;
@@ -44,7 +44,7 @@ int verdict_init(verdict_ctx *v, const tippe_dynamics_model *model, double J, ti
     return TIPPE_OK;
 }
 
-double verdict_margin(const verdict_ctx *v, double factor, double energy_err_J, double J_err,
+double tippe_dynamics_verdict_margin(const tippe_dynamics_verdict_ctx *v, double factor, double energy_err_J, double J_err,
                       double E0)
 {
     /* dV/dJ = J / D <= |J| / D_min */
@@ -57,7 +57,7 @@ double verdict_margin(const verdict_ctx *v, double factor, double energy_err_J, 
  * (eq 4.1) ends there only from that state's stable manifold, a set of launches of
  * measure zero, so it is not a barrier, except when the state is exactly that steady
  * state (at the pole, no tilt rate, no slip: E never falls and it stays for ever). */
-static double well_barrier(const verdict_ctx *v, int i, double rest_pole_rad)
+static double well_barrier(const tippe_dynamics_verdict_ctx *v, int i, double rest_pole_rad)
 {
     const tippe_theory_wells *w = &v->wells;
     const tippe_theory_well *wl = &w->well[i];
@@ -75,8 +75,8 @@ static double well_barrier(const verdict_ctx *v, int i, double rest_pole_rad)
     return b;
 }
 
-void verdict_energy_test(const verdict_ctx *v, double theta, double E, double margin,
-                         double rest_pole_rad, verdict_trap *out)
+void tippe_dynamics_verdict_energy_test(const tippe_dynamics_verdict_ctx *v, double theta, double E, double margin,
+                         double rest_pole_rad, tippe_dynamics_verdict_trap *out)
 {
     out->well = tippe_theory_well_index(&v->wells, theta);
     const tippe_theory_well *wl = &v->wells.well[out->well];
@@ -88,7 +88,7 @@ void verdict_energy_test(const verdict_ctx *v, double theta, double E, double ma
     out->lo = out->hi = wl->theta_min_rad;
 }
 
-void verdict_trap_range(const verdict_ctx *v, double E, double margin, verdict_trap *tr)
+void tippe_dynamics_verdict_trap_range(const tippe_dynamics_verdict_ctx *v, double E, double margin, tippe_dynamics_verdict_trap *tr)
 {
     tippe_theory_well_range(&v->top, v->g, &v->wells, tr->well, E + margin, &tr->lo, &tr->hi);
 }
@@ -99,7 +99,7 @@ void verdict_trap_range(const verdict_ctx *v, double E, double margin, verdict_t
  * where the state has kinetic energy above its minimum J^2 / 2D of at most
  * dK = E_max - V(theta): (a, n) lies on the Jellett line within energy distance dK
  * of its minimiser, and theta_dot, U (hence V_QX = U - h theta_dot) within dK. */
-static double bound_at(const verdict_ctx *v, double theta, double E_max)
+static double bound_at(const tippe_dynamics_verdict_ctx *v, double theta, double E_max)
 {
     const tippe_top *t = &v->top;
     const double x = cos(theta), s = sin(theta), m = t->m, eps = t->eps;
@@ -140,11 +140,11 @@ static double bound_at(const verdict_ctx *v, double theta, double E_max)
     return m * N / (base + fr);
 }
 
-double verdict_contact_bound(const verdict_ctx *v, double E_max, double lo, double hi)
+double tippe_dynamics_verdict_contact_bound(const tippe_dynamics_verdict_ctx *v, double E_max, double lo, double hi)
 {
     double b = INFINITY;
-    for (int i = 0; i < VERDICT_CONTACT_NODES; i++) {
-        const double th = lo + (hi - lo) * i / (VERDICT_CONTACT_NODES - 1);
+    for (int i = 0; i < TIPPE_DYNAMICS_VERDICT_CONTACT_NODES; i++) {
+        const double th = lo + (hi - lo) * i / (TIPPE_DYNAMICS_VERDICT_CONTACT_NODES - 1);
         const double r = bound_at(v, th, E_max);
         if (r < b)
             b = r;

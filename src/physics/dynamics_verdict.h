@@ -15,13 +15,13 @@ typedef struct {
                          inside the cone |F| <= mu_c Rn */
     tippe_theory_wells wells;
     double D_min;  /* kg m^2, least of D(theta) = A R^2 sin^2 + C (R cos - eps)^2 */
-} verdict_ctx;
+} tippe_dynamics_verdict_ctx;
 
-int verdict_init(verdict_ctx *v, const tippe_dynamics_model *model, double J, tippe_error *err);
+int tippe_dynamics_verdict_init(tippe_dynamics_verdict_ctx *v, const tippe_dynamics_model *model, double J, tippe_error *err);
 
 /* Energy margin, J: factor * (energy-balance error + the change of V that a Jellett
  * error dJ can make, |J| dJ / D_min) plus 1e-12 E0 for rounding. */
-double verdict_margin(const verdict_ctx *v, double factor, double energy_err_J, double J_err,
+double tippe_dynamics_verdict_margin(const tippe_dynamics_verdict_ctx *v, double factor, double energy_err_J, double J_err,
                       double E0);
 
 /* What the energy test found for a state at angle theta with energy E. */
@@ -34,22 +34,22 @@ typedef struct {
     double barrier;      /* J, least V of the well's other critical points where a motion can
                             end (interior maxima, degenerate points; INFINITY: none) */
     double gap;          /* J, barrier - E */
-    double lo, hi;       /* rad, where V <= E + margin in the well (verdict_trap_range) */
-} verdict_trap;
+    double lo, hi;       /* rad, where V <= E + margin in the well (tippe_dynamics_verdict_trap_range) */
+} tippe_dynamics_verdict_trap;
 
 /* Cheap (a few comparisons): called at every accepted step. rest_pole_rad is 0 or pi
  * when the state is exactly the steady state at that pole (no tilt rate, no slip),
  * NAN otherwise: only then is a pole that is a maximum of V a barrier. */
-void verdict_energy_test(const verdict_ctx *v, double theta, double E, double margin,
-                         double rest_pole_rad, verdict_trap *out);
+void tippe_dynamics_verdict_energy_test(const tippe_dynamics_verdict_ctx *v, double theta, double E, double margin,
+                         double rest_pole_rad, tippe_dynamics_verdict_trap *out);
 /* Fills tr->lo, tr->hi by bisection on V (~100 evaluations): only before a contact bound. */
-void verdict_trap_range(const verdict_ctx *v, double E, double margin, verdict_trap *tr);
+void tippe_dynamics_verdict_trap_range(const tippe_dynamics_verdict_ctx *v, double E, double margin, tippe_dynamics_verdict_trap *tr);
 
 /* A lower bound of the normal force Rn (eq 3.19) over every state with theta in
  * [lo, hi], Jellett J and energy <= E_max (N); -INFINITY where the bound fails. */
-double verdict_contact_bound(const verdict_ctx *v, double E_max, double lo, double hi);
+double tippe_dynamics_verdict_contact_bound(const tippe_dynamics_verdict_ctx *v, double E_max, double lo, double hi);
 
 /* Number of theta nodes at which the contact bound is evaluated. */
-enum { VERDICT_CONTACT_NODES = 65 };
+enum { TIPPE_DYNAMICS_VERDICT_CONTACT_NODES = 65 };
 
 #endif

@@ -22,12 +22,12 @@ static const unsigned line_rgb[MAX_SHOWN] = {0x1f4fd0u, 0xd01c1cu, 0x2a9a2au, 0x
 
 /* The best MAX_SHOWN choices as the search ranks them, best first (lower index
  * first on a tie). */
-static int order_choices(const tippe_opt_result *r, int *idx)
+static int order_choices(const tippe_optimise_result *r, int *idx)
 {
     int n = 0;
     for (int c = 0; c < r->n_choices; c++) {
         int k = n;
-        while (k > 0 && tippe_opt_rank_above(&r->choices[c].best, &r->choices[idx[k - 1]].best))
+        while (k > 0 && tippe_optimise_rank_above(&r->choices[c].best, &r->choices[idx[k - 1]].best))
             k--;
         if (k >= MAX_SHOWN)
             continue;
@@ -40,7 +40,7 @@ static int order_choices(const tippe_opt_result *r, int *idx)
     return n;
 }
 
-static void zone_bars(const tippe_opt_spec *s, const tippe_opt_result *r, const int *idx, int n,
+static void zone_bars(const tippe_optimise_spec *s, const tippe_optimise_result *r, const int *idx, int n,
                       tippe_sweep_result *sw, const int *ok)
 {
     double lo = INFINITY, hi = -INFINITY;
@@ -56,15 +56,15 @@ static void zone_bars(const tippe_opt_spec *s, const tippe_opt_result *r, const 
     for (int i = 0; i < n; i++) {
         double y = n - 1 - i; /* best at the top */
         char label[256], esc[300], text[600];
-        tippe_opt_spec_choice_label(s, idx[i], label, sizeof label);
+        tippe_optimise_spec_choice_label(s, idx[i], label, sizeof label);
         tippe_plot_escape(label, esc, sizeof esc);
-        const tippe_opt_eval *e = &r->choices[idx[i]].best;
+        const tippe_optimise_eval *e = &r->choices[idx[i]].best;
         char robust[64] = "";
         if (e->has_robust)
             snprintf(robust, sizeof robust, ", robust %.3f", e->robust_mm);
         snprintf(text, sizeof text, "%s: narrowest %.3f mm (I %.3f, II %.3f, III %.3f)%s%s", esc,
                  e->objective_mm, e->zone_mm[0], e->zone_mm[1], e->zone_mm[2], robust,
-                 e->status == TIPPE_OPT_OK ? "" : " infeasible");
+                 e->status == TIPPE_OPTIMISE_OK ? "" : " infeasible");
         tippe_plot_text(lo, y + 0.2, 0, 0.0, 0.7, line_rgb[i], text); /* as its convergence line */
         if (!ok[i])
             continue;
@@ -85,12 +85,12 @@ static void zone_bars(const tippe_opt_spec *s, const tippe_opt_result *r, const 
     tippe_plot_legend(keys, 3, "tr", 3, 0.7);
 }
 
-static void convergence(const tippe_opt_result *r, const int *idx, int n)
+static void convergence(const tippe_optimise_result *r, const int *idx, int n)
 {
     long nmax = 1;
     double top = 0.0;
     for (int i = 0; i < n; i++) {
-        const tippe_opt_choice_result *c = &r->choices[idx[i]];
+        const tippe_optimise_choice_result *c = &r->choices[idx[i]];
         nmax = c->n_evals > nmax ? c->n_evals : nmax;
         if (c->n_evals)
             top = fmax(top, c->best_so_far[c->n_evals - 1]);
@@ -99,7 +99,7 @@ static void convergence(const tippe_opt_result *r, const int *idx, int n)
     tippe_plot_panel(0.69, 0.97, 0.12, 0.86, 1.0, (double)nmax, 0.0, ytop);
     tippe_plot_grid();
     for (int i = n - 1; i >= 0; i--) {
-        const tippe_opt_choice_result *c = &r->choices[idx[i]];
+        const tippe_optimise_choice_result *c = &r->choices[idx[i]];
         double *x = malloc((size_t)c->n_evals * sizeof *x);
         double *y = malloc((size_t)c->n_evals * sizeof *y);
         int m = 0;
@@ -125,7 +125,7 @@ static void convergence(const tippe_opt_result *r, const int *idx, int n)
                     "convergence (colours as the labels)");
 }
 
-int tippe_opt_plot(const char *file, const tippe_opt_spec *s, const tippe_opt_result *r,
+int tippe_optimise_plot(const char *file, const tippe_optimise_spec *s, const tippe_optimise_result *r,
                    tippe_error *err)
 {
     int idx[MAX_SHOWN], ok[MAX_SHOWN];
@@ -134,14 +134,14 @@ int tippe_opt_plot(const char *file, const tippe_opt_spec *s, const tippe_opt_re
     memset(sw, 0, sizeof sw);
     for (int i = 0; i < n; i++) {
         tippe_error e = {0};
-        ok[i] = r->choices[idx[i]].best.status != TIPPE_OPT_DOES_NOT_FIT &&
-                tippe_opt_sweep(s, &r->choices[idx[i]].best, &sw[i], &e) == TIPPE_OK;
+        ok[i] = r->choices[idx[i]].best.status != TIPPE_OPTIMISE_DOES_NOT_FIT &&
+                tippe_optimise_sweep(s, &r->choices[idx[i]].best, &sw[i], &e) == TIPPE_OK;
     }
     tippe_plot *p = NULL;
     int st = tippe_plot_open(file, 1300, 140 + 64 * (n < 6 ? 6 : n), &p, err);
     if (st == TIPPE_OK) {
         char title[600], esc[520];
-        tippe_plot_escape(tippe_opt_spec_path(s), esc, sizeof esc);
+        tippe_plot_escape(tippe_optimise_spec_path(s), esc, sizeof esc);
         snprintf(title, sizeof title, "tippe optimise %s: widest narrowest zone", esc);
         zone_bars(s, r, idx, n, sw, ok);
         convergence(r, idx, n);
