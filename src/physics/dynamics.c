@@ -2,7 +2,7 @@
  * the energy and Jellett monitors, the lost-contact event, and the run that ends
  * in a proved verdict (dynamics_verdict.c). docs/dynamics.md derives the
  * equations and documents each criterion. */
-#include "tippe/physics.h"
+#include "physics/dynamics_internal.h"
 #include "tippe/base.h"
 
 #include "physics/dynamics_verdict.h"
@@ -13,513 +13,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-
-/* State layout. Verdict level: axis k, angular velocity omega, horizontal
- * velocity of the centre of mass, dissipated energy. Trajectory level adds the
- * orientation quaternion and the position of the centre of mass on the table. */
-enum { IK = 0, IW = 3, IV = 6, ID = 8, IQ = 9, IX = 13 };
-enum { DIM_VERDICT = 9, DIM_TRAJECTORY = 15 };
-/* Sticking is tried below this many v_s of slip, and needs the rolling force inside
- * the cone by this fraction of mu_c m g (run_try_stick; the rolling decision asks the
- * same room over a whole period). */
-#define STICK_SLIP_FACTOR 30.0
-#define STICK_MARGIN 1e-3
-/* The step budget also caps the RHS evaluations at this many per allowed step: rk8pd
- * uses 13 a step (16 with the rejections of a stiff launch), but an implicit stepper's
- * finite-difference Jacobians cost up to ~240 (bsimp), so on a stiff launch (the creep
- * law at v_s = 1e-7 m/s) a budget of steps alone let bsimp run for more than 100 s
- * (stopped by hand) and rk4imp 90 s, where rk8pd stops after 13 s (docs/dynamics.md,
- * "Coulomb friction", "Extremes"). */
-#define BUDGET_EVALS_PER_STEP 20
-
-/* The accuracy presets, chosen from the work-precision benchmark
- * (tools/bench/run.sh, docs/performance.md): without a step cap rk8pd is on the
- * best front of every non-stiff scenario at every error measured (1e-2 down), so
- * all three are rk8pd; fast was rkck 1e-6, which rk8pd 1e-6 now beats in cost and
- * error (Figure 12 flip: 4.7e-3 in 1.82 ms against 6.9e-2 in 2.32 ms). */
-static const struct {
-    const char *name, *stepper;
-    double rtol;
-} presets[] = {
-    {"fast", "rk8pd", 1e-6},
-    {"balanced", "rk8pd", 1e-9},
-    {"precise", "rk8pd", 1e-12},
-};
-enum { N_PRESETS = (int)(sizeof presets / sizeof presets[0]) };
-
-static const struct {
-    const char *name;
-    const gsl_odeiv2_step_type *const *type;
-} steppers[] = {
-    {"rk2", &gsl_odeiv2_step_rk2},       {"rk4", &gsl_odeiv2_step_rk4},
-    {"rkf45", &gsl_odeiv2_step_rkf45},   {"rkck", &gsl_odeiv2_step_rkck},
-    {"rk8pd", &gsl_odeiv2_step_rk8pd},   {"rk1imp", &gsl_odeiv2_step_rk1imp},
-    {"rk2imp", &gsl_odeiv2_step_rk2imp}, {"rk4imp", &gsl_odeiv2_step_rk4imp},
-    {"bsimp", &gsl_odeiv2_step_bsimp},   {"msadams", &gsl_odeiv2_step_msadams},
-    {"msbdf", &gsl_odeiv2_step_msbdf},
-};
-enum { N_STEPPERS = (int)(sizeof steppers / sizeof steppers[0]) };
-
-const char *tippe_verdict_name(tippe_verdict v)
-{
-    switch (v) {
-    case TIPPE_VERDICT_NO_TIP: return "no_tip";
-    case TIPPE_VERDICT_TIP: return "tip";
-    case TIPPE_VERDICT_HANG: return "hang";
-    case TIPPE_VERDICT_LOST_CONTACT: return "lost_contact";
-    case TIPPE_VERDICT_UNDECIDED: return "undecided";
-    case TIPPE_VERDICT_BOUNDED: return "bounded";
-    }
-    return "?";
-}
-
-const char *tippe_decision_name(tippe_decision d)
-{
-    switch (d) {
-    case TIPPE_DECIDED_T_END: return "t_end";
-    case TIPPE_DECIDED_TRAPPED: return "trapped";
-    case TIPPE_DECIDED_LOST_CONTACT: return "lost_contact";
-    case TIPPE_DECIDED_FLAT_WELL: return "flat_well";
-    case TIPPE_DECIDED_BUDGET: return "budget";
-    case TIPPE_DECIDED_ROLLING: return "rolling";
-    }
-    return "?";
-}
-
-const char *tippe_friction_law_name(tippe_friction_law law)
-{
-    switch (law) {
-    case TIPPE_FRICTION_VISCOUS: return "viscous";
-    case TIPPE_FRICTION_COULOMB: return "coulomb";
-    case TIPPE_FRICTION_COULOMB_CREEP: return "coulomb-creep";
-    }
-    return "?";
-}
-
-int tippe_friction_law_parse(const char *name)
-{
-    if (!strcmp(name, "viscous"))
-        return TIPPE_FRICTION_VISCOUS;
-    if (!strcmp(name, "coulomb"))
-        return TIPPE_FRICTION_COULOMB;
-    if (!strcmp(name, "coulomb-creep"))
-        return TIPPE_FRICTION_COULOMB_CREEP;
-    return -1;
-}
-
-int tippe_dynamics_frictionless(const tippe_dynamics_model *model)
-{
-    return model->law == TIPPE_FRICTION_VISCOUS ? !(model->mu > 0.0) : !(model->mu_c > 0.0);
-}
-
-int tippe_dynamics_n_presets(void) { return N_PRESETS; }
-
-const char *tippe_dynamics_preset_name(int i)
-{
-    return (i >= 0 && i < N_PRESETS) ? presets[i].name : NULL;
-}
-
-int tippe_dynamics_accuracy_preset(const char *name, tippe_dynamics_accuracy *out,
-                                   tippe_error *err)
-{
-    for (int i = 0; i < N_PRESETS; i++)
-        if (!strcmp(name, presets[i].name)) {
-            snprintf(out->stepper, sizeof out->stepper, "%s", presets[i].stepper);
-            out->rtol = presets[i].rtol;
-            return TIPPE_OK;
-        }
-    return tippe_error_set(err, TIPPE_EINPUT,
-                           "unknown accuracy preset '%s' (expected fast, balanced or precise)",
-                           name);
-}
-
-static const gsl_odeiv2_step_type *stepper_type(const char *name)
-{
-    for (int i = 0; i < N_STEPPERS; i++)
-        if (!strcmp(name, steppers[i].name))
-            return *steppers[i].type;
-    return NULL;
-}
-
-int tippe_dynamics_stepper_known(const char *name) { return stepper_type(name) != NULL; }
-
-void tippe_dynamics_options_default(tippe_dynamics_options *o)
-{
-    memset(o, 0, sizeof *o);
-    o->level = TIPPE_LEVEL_VERDICT;
-    o->t_end = 100.0;
-    tippe_dynamics_accuracy_preset("balanced", &o->accuracy, NULL);
-    o->sample_dt = 0.0;
-    o->margin_factor = 10.0;
-    o->run_to_t_end = 0;
-    o->max_steps = 10000000;
-}
-
-int tippe_dynamics_precession(const tippe_dynamics_model *model, double theta, double spin,
-                              tippe_precession_rule rule, double *phi_dot, tippe_error *err)
-{
-    const tippe_top *t = &model->top;
-    const double c = cos(theta);
-    if (fabs(c) < 1e-12)
-        return tippe_error_set(err, TIPPE_EINPUT,
-                               "no steady precession rule at theta = pi/2 (cos theta = 0): "
-                               "give phi_dot as a number");
-    /* theta_ddot = 0 in eq 3.15 with theta_dot = U = 0, hence Rn = m g (eq 3.17)
-     * and no friction torque about e2: A cos(theta) a^2 - C n a - m g eps = 0. */
-    const double Cn = t->C * spin;
-    const double disc = Cn * Cn + 4.0 * t->A * c * t->m * model->g * t->eps;
-    if (rule == TIPPE_PRECESSION_S3) {
-        *phi_dot = Cn / (2.0 * t->A * c);
-        return TIPPE_OK;
-    }
-    if (disc < 0.0)
-        return tippe_error_set(err, TIPPE_EINPUT,
-                               "no real steady precession at theta = %g rad for spin %g rad/s "
-                               "(C^2 n^2 + 4 A m g eps cos(theta) = %g < 0): use s3 or a number",
-                               theta, spin, disc);
-    double sign = 1.0;
-    if (rule == TIPPE_PRECESSION_S2)
-        sign = -1.0;
-    else if (rule == TIPPE_PRECESSION_STEADY && spin < 0.0)
-        sign = -1.0;
-    *phi_dot = (Cn + sign * sqrt(disc)) / (2.0 * t->A * c);
-    return TIPPE_OK;
-}
-
-/* ---- the equations of motion ------------------------------------------- */
-
-typedef struct {
-    double m, R, eps, A, C, g, mu;
-    int coulomb;          /* friction law: 0 viscous (mu), 1 Coulomb (regularised slip) */
-    int stick_law;        /* Coulomb with the event-driven stick (rolling) phase */
-    int stick;            /* current phase: 1 rolling without slipping (V_Q = 0) */
-    double mu_c, vs, vs2; /* Coulomb coefficient, its slip scale v_s and v_s^2 */
-    double min_stage_stick; /* smallest mu_c Rn - |F| met by a stage since reset (rolling) */
-    /* Constants of the right-hand side, once per run rather than per call. */
-    double one_minus_A_over_C, C_minus_A_over_A, inv_A;
-    size_t dim;
-    long nevals;
-    double min_stage_Rn;  /* smallest Rn met by any right-hand-side call since reset */
-    int bad_contact;      /* the denominator of eq 3.19 was <= 0 */
-    double scale[DIM_TRAJECTORY]; /* absolute scale per component */
-} dyn_ctx;
-
-typedef struct {
-    double k[3], w[3], v[3], q[3], VQ[3];
-    double n, Rn, den, power;
-    double mu_eff;  /* s/m: mu (viscous) or mu_c / sqrt(|V_Q|^2 + v_s^2) (Coulomb) */
-    double F[2];    /* N, horizontal friction force */
-    double K[3][3]; /* contact compliance (Delassus) matrix, rolling phase only */
-    double wdot[3];
-} contact;
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-    double r0 = a[1] * b[2] - a[2] * b[1];
-    double r1 = a[2] * b[0] - a[0] * b[2];
-    double r2 = a[0] * b[1] - a[1] * b[0];
-    out[0] = r0;
-    out[1] = r1;
-    out[2] = r2;
-}
-
-/* The angular acceleration that a torque tau about the centre of mass adds:
- * A omega' = tau - (1 - A/C)(tau.k) k (the lab form of eq 3.13, L = A omega + (C - A) n k). */
-static void inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3])
-{
-    const double tk = dot3(tau, k);
-    for (int i = 0; i < 3; i++)
-        out[i] = (tau[i] - c->one_minus_A_over_C * tk * k[i]) * c->inv_A;
-}
-
-/* K P: the change of the contact point's velocity V_Q = v + omega x q that a
- * force (or impulse) P at the contact makes, P/m + (I^-1 (q x P)) x q. K is
- * symmetric positive definite (the contact's Delassus matrix). */
-static void compliance(const dyn_ctx *c, const double k[3], const double q[3], double K[3][3])
-{
-    for (int j = 0; j < 3; j++) {
-        double e[3] = {0.0, 0.0, 0.0}, qe[3], w[3], wq[3];
-        e[j] = 1.0;
-        cross3(q, e, qe);
-        inv_inertia(c, k, qe, w);
-        cross3(w, q, wq);
-        for (int i = 0; i < 3; i++)
-            K[i][j] = wq[i] + (i == j ? 1.0 / c->m : 0.0);
-    }
-}
-
-/* x = K^-1 b by Cramer's rule (3 x 3, K positive definite: det > 0). */
-static int solve3(const double K[3][3], const double b[3], double x[3])
-{
-    const double c0 = K[1][1] * K[2][2] - K[1][2] * K[2][1];
-    const double c1 = K[1][2] * K[2][0] - K[1][0] * K[2][2];
-    const double c2 = K[1][0] * K[2][1] - K[1][1] * K[2][0];
-    const double det = K[0][0] * c0 + K[0][1] * c1 + K[0][2] * c2;
-    if (!(det > 0.0))
-        return 1;
-    double M[3][3];
-    for (int j = 0; j < 3; j++) {
-        memcpy(M, K, sizeof M);
-        for (int i = 0; i < 3; i++)
-            M[i][j] = b[i];
-        x[j] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
-                M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-                M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
-               det;
-    }
-    return 0;
-}
-
-/* Everything the right-hand side needs from a state: the contact velocity, the
- * normal force in closed form, the angular acceleration. The axis is
- * normalised here, so |k| drifting at the integrator's tolerance never enters
- * the physics. Returns nonzero where the contact force is undetermined. */
-static int contact_eval(const dyn_ctx *c, const double *y, contact *o)
-{
-    const double inv_kn = 1.0 / sqrt(dot3(y + IK, y + IK));
-    for (int i = 0; i < 3; i++) {
-        o->k[i] = y[IK + i] * inv_kn;
-        o->w[i] = y[IW + i];
-    }
-    const double *k = o->k, *w = o->w;
-    o->n = dot3(w, k);
-    double wk[3];
-    cross3(w, k, wk);
-    /* q = CoM -> contact = eps k - R e3 (eq 3.6) */
-    o->q[0] = c->eps * k[0];
-    o->q[1] = c->eps * k[1];
-    o->q[2] = c->eps * k[2] - c->R;
-    /* The CoM height is R - eps k_z (eq 3.10), so its vertical velocity is
-     * -eps (omega x k)_z (eq 3.11). */
-    o->v[0] = y[IV];
-    o->v[1] = y[IV + 1];
-    o->v[2] = -c->eps * wk[2];
-    double wq[3];
-    cross3(w, o->q, wq);
-    o->VQ[0] = o->v[0] + wq[0]; /* eq 3.7 */
-    o->VQ[1] = o->v[1] + wq[1];
-    o->VQ[2] = 0.0; /* vanishes identically by the constraint (eq 3.11) */
-    if (c->stick) {
-        /* Rolling without slipping: the contact force Fc = (F, Rn) keeps the contact
-         * point at rest, d/dt V_Q = 0 with q' = eps omega x k:
-         *   Fc/m - g e3 + (I^-1 (q x Fc) + a0) x q + eps omega x (omega x k) = 0,
-         * i.e. K Fc = g e3 - a0 x q - eps omega x (omega x k), a0 the gyroscopic
-         * part of omega'. Its z row is eq 3.17; K is positive definite, so Fc is
-         * always determined (no Painleve case while rolling). */
-        double a0[3], a0q[3], wwk[3], b[3], Fc[3], tau[3], wt[3];
-        const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
-        for (int i = 0; i < 3; i++)
-            a0[i] = minus_CmA_A_n * wk[i];
-        cross3(a0, o->q, a0q);
-        cross3(w, wk, wwk);
-        for (int i = 0; i < 3; i++)
-            b[i] = -a0q[i] - c->eps * wwk[i];
-        b[2] += c->g;
-        compliance(c, k, o->q, o->K);
-        if (solve3(o->K, b, Fc))
-            return 1;
-        cross3(o->q, Fc, tau);
-        inv_inertia(c, k, tau, wt);
-        for (int i = 0; i < 3; i++)
-            o->wdot[i] = wt[i] + a0[i];
-        o->Rn = Fc[2];
-        o->F[0] = Fc[0];
-        o->F[1] = Fc[1];
-        o->den = 1.0;
-        o->mu_eff = 0.0;
-        /* exact rolling dissipates nothing: any change of E while rolling is
-         * integration error, and shows in the energy balance |E + D - E0| */
-        o->power = 0.0;
-        return 0;
-    }
-    const double slip2 = o->VQ[0] * o->VQ[0] + o->VQ[1] * o->VQ[1];
-    /* Both laws are F = -mu_eff Rn V_Q with mu_eff fixed by the state alone (V_Q does
-     * not depend on Rn): viscous mu (eq 3.12), or regularised Coulomb
-     * mu_c / sqrt(|V_Q|^2 + v_s^2), so |F| -> mu_c Rn for |V_Q| >> v_s. */
-    o->mu_eff = c->coulomb ? c->mu_c / sqrt(slip2 + c->vs2) : c->mu;
-    /* F = Rn (e3 - mu_eff V_Q): force and torque are linear in Rn. */
-    const double f[3] = {-o->mu_eff * o->VQ[0], -o->mu_eff * o->VQ[1], 1.0};
-    double tau[3];
-    cross3(o->q, f, tau); /* torque per unit Rn about the CoM (eq 3.13) */
-    const double tk = dot3(tau, k);
-    /* A omega' = tau - (C - A)(n' k + n omega x k) with C n' = tau.k (eq 3.13 in
-     * the lab frame): omega' = Rn a1 + a0. */
-    double a1[3], a0[3];
-    const double one_minus_AC = c->one_minus_A_over_C, inv_A = c->inv_A;
-    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
-    for (int i = 0; i < 3; i++) {
-        a1[i] = (tau[i] - one_minus_AC * tk * k[i]) * inv_A;
-        a0[i] = minus_CmA_A_n * wk[i];
-    }
-    double a1k[3], a0k[3], wwk[3];
-    cross3(a1, k, a1k);
-    cross3(a0, k, a0k);
-    cross3(w, wk, wwk);
-    /* m z'' = Rn - m g with z'' = -eps ((omega' x k)_z + (omega x (omega x k))_z)
-     * (eq 3.16-3.17), solved for Rn: the lab form of eq 3.19, any m. */
-    o->den = 1.0 + c->m * c->eps * a1k[2];
-    if (!(o->den > 0.0))
-        return 1;
-    o->Rn = c->m * (c->g - c->eps * (a0k[2] + wwk[2])) / o->den;
-    for (int i = 0; i < 3; i++)
-        o->wdot[i] = o->Rn * a1[i] + a0[i];
-    o->F[0] = -o->mu_eff * o->Rn * o->VQ[0];
-    o->F[1] = -o->mu_eff * o->Rn * o->VQ[1];
-    o->power = o->mu_eff * o->Rn * slip2; /* eq 4.1; Coulomb: mu_c Rn |V_Q| for |V_Q| >> v_s */
-    return 0;
-}
-
-static int rhs(double t, const double y[], double f[], void *params)
-{
-    (void)t;
-    dyn_ctx *c = params;
-    c->nevals++;
-    contact o;
-    if (contact_eval(c, y, &o)) {
-        /* Not GSL_EBADFUNC: a trial stage of a too-long step can leave the
-         * region where eq 3.19 is defined, and GSL then retries with a shorter
-         * step. Only if the step shrinks to nothing is the model at fault. */
-        c->bad_contact = 1;
-        return GSL_EDOM;
-    }
-    if (o.Rn < c->min_stage_Rn)
-        c->min_stage_Rn = o.Rn;
-    if (c->stick) {
-        const double g = c->mu_c * o.Rn - hypot(o.F[0], o.F[1]);
-        if (g < c->min_stage_stick)
-            c->min_stage_stick = g;
-    }
-    /* dk/dt = omega x k with the unnormalised k: the exact flow keeps |k|. */
-    cross3(o.w, y + IK, f + IK);
-    for (int i = 0; i < 3; i++)
-        f[IW + i] = o.wdot[i];
-    f[IV] = o.F[0] / c->m; /* eq 3.14 horizontal */
-    f[IV + 1] = o.F[1] / c->m;
-    f[ID] = o.power;
-    if (c->dim == DIM_TRAJECTORY) {
-        /* q' = (0, omega) q / 2 for a lab-frame angular velocity. */
-        const double *p = y + IQ;
-        double wp[3];
-        cross3(o.w, p + 1, wp);
-        f[IQ] = -0.5 * dot3(o.w, p + 1);
-        for (int i = 0; i < 3; i++)
-            f[IQ + 1 + i] = 0.5 * (p[0] * o.w[i] + wp[i]);
-        f[IX] = o.v[0];
-        f[IX + 1] = o.v[1];
-    }
-    return GSL_SUCCESS;
-}
-
-/* Forward-difference Jacobian for the implicit steppers (rk1imp, rk2imp,
- * rk4imp, bsimp, msbdf): its error only slows their Newton iterations. */
-static int jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params)
-{
-    dyn_ctx *c = params;
-    const size_t d = c->dim;
-    double f0[DIM_TRAJECTORY], f1[DIM_TRAJECTORY], yp[DIM_TRAJECTORY];
-    int s = rhs(t, y, f0, c);
-    if (s != GSL_SUCCESS)
-        return s;
-    memcpy(yp, y, d * sizeof *y);
-    for (size_t j = 0; j < d; j++) {
-        const double save = yp[j];
-        double hj = sqrt(DBL_EPSILON) * fmax(fabs(save), c->scale[j]);
-        yp[j] = save + hj;
-        hj = yp[j] - save; /* the step actually representable */
-        s = rhs(t, yp, f1, c);
-        yp[j] = save;
-        if (s != GSL_SUCCESS)
-            return s;
-        for (size_t i = 0; i < d; i++)
-            dfdy[i * d + j] = (f1[i] - f0[i]) / hj;
-    }
-    for (size_t i = 0; i < d; i++)
-        dfdt[i] = 0.0;
-    return GSL_SUCCESS;
-}
-
-/* ---- paper variables and monitors -------------------------------------- */
-
-static double energy(const dyn_ctx *c, const contact *o)
-{
-    double L[3];
-    for (int i = 0; i < 3; i++)
-        L[i] = c->A * o->w[i] + (c->C - c->A) * o->n * o->k[i];
-    /* sec 4: translational + rotational kinetic energy + m g h (eq 3.10) */
-    return 0.5 * c->m * dot3(o->v, o->v) + 0.5 * dot3(o->w, L) +
-           c->m * c->g * (c->R - c->eps * o->k[2]);
-}
-
-static double jellett(const dyn_ctx *c, const contact *o)
-{
-    double L[3];
-    for (int i = 0; i < 3; i++)
-        L[i] = c->A * o->w[i] + (c->C - c->A) * o->n * o->k[i];
-    return -dot3(L, o->q); /* eq 3.20 */
-}
-
-/* The paper's variables (eq 3.4) from the regular state: e1 is the horizontal
- * direction of k (the lab x axis when k is vertical), i = cos(theta) e1 -
- * sin(theta) e3, omega = -phi_dot sin(theta) i + theta_dot e2 + n k. */
-static void paper_variables(const dyn_ctx *c, double t, const double *y, const contact *o,
-                            tippe_dynamics_sample *s)
-{
-    const double *k = o->k, *w = o->w;
-    const double sth = hypot(k[0], k[1]), cth = k[2];
-    double e1x = 1.0, e1y = 0.0;
-    if (sth > 0.0) {
-        e1x = k[0] / sth;
-        e1y = k[1] / sth;
-    }
-    s->t = t;
-    s->theta = atan2(sth, cth);
-    s->theta_dot = -w[0] * e1y + w[1] * e1x;
-    const double wi = cth * (w[0] * e1x + w[1] * e1y) - sth * w[2];
-    /* phi_dot is undefined on the vertical; reported as 0 there. */
-    s->phi_dot = sth > 1e-9 ? -wi / sth : 0.0;
-    s->spin = o->n;
-    s->U = o->v[0] * e1x + o->v[1] * e1y;
-    s->V = -o->v[0] * e1y + o->v[1] * e1x;
-    s->phi = s->psi = s->x = s->y = NAN;
-    s->Rn = o->Rn;
-    s->slip_speed = hypot(o->VQ[0], o->VQ[1]);
-    s->E = energy(c, o);
-    s->D = y[ID];
-    s->J = jellett(c, o);
-}
-
-static double unwrap(double raw, double prev)
-{
-    return raw + 2.0 * M_PI * round((prev - raw) / (2.0 * M_PI));
-}
-
-/* Euler angles (phi, theta, psi), rotation Rz(phi) Ry(theta) Rz(psi), from the
- * orientation quaternion, continued from the previous values; on the vertical
- * only phi + psi (theta = 0) or phi - psi (theta = pi) is defined, and phi keeps
- * its previous value. */
-static void euler_angles(const double *p, double *phi, double *psi)
-{
-    const double nq = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3]);
-    const double w = p[0] / nq, x = p[1] / nq, y = p[2] / nq, z = p[3] / nq;
-    const double R11 = 1 - 2 * (y * y + z * z), R21 = 2 * (x * y + w * z);
-    const double R13 = 2 * (x * z + w * y), R23 = 2 * (y * z - w * x);
-    const double R31 = 2 * (x * z - w * y), R32 = 2 * (y * z + w * x);
-    const double R33 = 1 - 2 * (x * x + y * y);
-    const double sth = hypot(R13, R23);
-    if (sth > 1e-9) {
-        *phi = unwrap(atan2(R23, R13), *phi);
-        *psi = unwrap(atan2(R32, -R31), *psi);
-    } else if (R33 > 0) {
-        *psi = unwrap(atan2(R21, R11) - *phi, *psi);
-    } else {
-        *psi = unwrap(*phi - atan2(-R21, -R11), *psi);
-    }
-}
 
 /* ---- the run --------------------------------------------------------------- */
 
@@ -564,7 +57,7 @@ static int check_inputs(const tippe_dynamics_model *model, const tippe_dynamics_
         return tippe_error_set(err, TIPPE_EINPUT, "initial state must be finite");
     if (!(opt->t_end > 0 && isfinite(opt->t_end)))
         return tippe_error_set(err, TIPPE_EINPUT, "t_end = %g s must be positive", opt->t_end);
-    if (!stepper_type(opt->accuracy.stepper))
+    if (!tippe_dynamics_stepper_type(opt->accuracy.stepper))
         return tippe_error_set(err, TIPPE_EINPUT,
                                "unknown stepper '%s' (rk2, rk4, rkf45, rkck, rk8pd, rk1imp, "
                                "rk2imp, rk4imp, bsimp, msadams, msbdf)",
@@ -640,11 +133,11 @@ int tippe_dynamics_evaluate(const tippe_dynamics_model *model, const tippe_dynam
     double y[DIM_VERDICT];
     initial_state(&c, s, y);
     contact ct;
-    if (contact_eval(&c, y, &ct))
+    if (tippe_dynamics_contact_eval(&c, y, &ct))
         return tippe_error_set(err, TIPPE_ECOMPUTE,
                                "contact force undetermined at this state (denominator of eq "
                                "3.19 <= 0: friction too strong for the model)");
-    paper_variables(&c, 0.0, y, &ct, out);
+    tippe_dynamics_paper_variables(&c, 0.0, y, &ct, out);
     out->phi = out->psi = out->x = out->y = 0.0;
     return TIPPE_OK;
 }
@@ -672,7 +165,7 @@ static int Rn_after(dyn_ctx *c, gsl_odeiv2_step *bs, const gsl_odeiv2_system *sy
             return s;
     }
     contact o;
-    if (contact_eval(c, y, &o))
+    if (tippe_dynamics_contact_eval(c, y, &o))
         return GSL_EBADFUNC;
     *Rn = event_value(c, &o, event);
     return GSL_SUCCESS;
@@ -729,7 +222,6 @@ static int locate_lift_off(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0, 
     return status < 0 ? status : found;
 }
 
-
 /* ---- the run, in named steps -------------------------------------------------- */
 
 typedef struct {
@@ -781,13 +273,13 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
     for (int i = 0; i < 3; i++)
         c->scale[IW + i] = omega_scale;
     c->scale[IV] = c->scale[IV + 1] = c->R * omega_scale;
-    if (contact_eval(c, rs->y, &rs->ct))
+    if (tippe_dynamics_contact_eval(c, rs->y, &rs->ct))
         return tippe_error_set(err, TIPPE_ECOMPUTE,
                                "contact force undetermined at launch (denominator of eq 3.19 "
                                "= %g <= 0: friction too strong for the model)",
                                rs->ct.den);
-    res->E0 = energy(c, &rs->ct);
-    res->J0 = jellett(c, &rs->ct);
+    res->E0 = tippe_dynamics_energy(c, &rs->ct);
+    res->J0 = tippe_dynamics_jellett(c, &rs->ct);
     c->scale[ID] = res->E0;
     if (rs->traj)
         c->scale[IX] = c->scale[IX + 1] = c->R;
@@ -797,10 +289,10 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
     st = tippe_dynamics_verdict_init(&rs->vc, model, res->J0, err);
     if (st)
         return st;
-    rs->sys = (gsl_odeiv2_system){rhs, jacobian, c->dim, c};
+    rs->sys = (gsl_odeiv2_system){tippe_dynamics_rhs, tippe_dynamics_jacobian, c->dim, c};
     /* A first step of 1e-4 of the fastest period; the controller grows it. */
     rs->h = 1e-4 * 2.0 * M_PI / omega_scale;
-    rs->drv = gsl_odeiv2_driver_alloc_scaled_new(&rs->sys, stepper_type(opt->accuracy.stepper),
+    rs->drv = gsl_odeiv2_driver_alloc_scaled_new(&rs->sys, tippe_dynamics_stepper_type(opt->accuracy.stepper),
                                                  rs->h, opt->accuracy.rtol, opt->accuracy.rtol,
                                                  1.0, 0.0, c->scale);
     if (!rs->drv)
@@ -811,9 +303,9 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
 /* The reported state at rs->t, with the orientation at trajectory level. */
 static void run_fill_sample(run_state *rs)
 {
-    paper_variables(&rs->c, rs->t, rs->y, &rs->ct, &rs->smp);
+    tippe_dynamics_paper_variables(&rs->c, rs->t, rs->y, &rs->ct, &rs->smp);
     if (rs->traj) {
-        euler_angles(rs->y + IQ, &rs->phi, &rs->psi);
+        tippe_dynamics_euler_angles(rs->y + IQ, &rs->phi, &rs->psi);
         rs->smp.phi = rs->phi;
         rs->smp.psi = rs->psi;
         rs->smp.x = rs->y[IX];
@@ -969,28 +461,28 @@ static void run_try_stick(run_state *rs, tippe_dynamics_result *res)
     contact o;
     /* inside the cone by STICK_MARGIN mu_c m g: where the contact just broke loose (the
      * force on the cone's edge) it slides on rather than sticking again at once */
-    if (contact_eval(c, rs->y, &o) || !(o.Rn > 0.0) ||
+    if (tippe_dynamics_contact_eval(c, rs->y, &o) || !(o.Rn > 0.0) ||
         !(event_value(c, &o, EVENT_SLIP) > STICK_MARGIN * c->mu_c * c->m * c->g)) {
         c->stick = 0; /* rolling needs more than the cone gives: it keeps sliding */
         return;
     }
     const double V[3] = {o.VQ[0], o.VQ[1], 0.0};
     double P[3], qP[3], dw[3];
-    if (solve3(o.K, V, P)) {
+    if (tippe_dynamics_solve3(o.K, V, P)) {
         c->stick = 0;
         return;
     }
     for (int i = 0; i < 3; i++)
         P[i] = -P[i];
     cross3(o.q, P, qP);
-    inv_inertia(c, o.k, qP, dw);
+    tippe_dynamics_inv_inertia(c, o.k, qP, dw);
     rs->y[IV] += P[0] / c->m;
     rs->y[IV + 1] += P[1] / c->m;
     for (int i = 0; i < 3; i++)
         rs->y[IW + i] += dw[i];
     rs->y[ID] -= 0.5 * dot3(V, P);
     gsl_odeiv2_driver_reset(rs->drv);
-    contact_eval(c, rs->y, &rs->ct);
+    tippe_dynamics_contact_eval(c, rs->y, &rs->ct);
     res->stick_events++;
     run_fill_sample(rs);
     rs->roll_phase = 1;
@@ -1092,7 +584,7 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
     rs->at_sample = rs->t >= t_target;
     if (rs->traj && opt->sample_dt > 0.0 && rs->at_sample)
         rs->i_sample++;
-    if (contact_eval(c, rs->y, &rs->ct))
+    if (tippe_dynamics_contact_eval(c, rs->y, &rs->ct))
         return -tippe_error_set(err, TIPPE_ECOMPUTE,
                                 "at t = %g s the contact force became undetermined "
                                 "(denominator of eq 3.19 <= 0)", rs->t);
@@ -1116,7 +608,7 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
             c->stick = 0;
             res->slip_events++;
             gsl_odeiv2_driver_reset(rs->drv);
-            contact_eval(c, rs->y, &rs->ct);
+            tippe_dynamics_contact_eval(c, rs->y, &rs->ct);
             if (rs->traj && opt->sample_dt > 0.0 && rs->at_sample) {
                 rs->at_sample = 0; /* stopped short of the sample time */
                 rs->i_sample--;
@@ -1133,7 +625,7 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
         if (f == 1) {
             rs->t = rs->t_prev + hc;
             memcpy(rs->y, ycross, c->dim * sizeof *rs->y);
-            contact_eval(c, rs->y, &rs->ct);
+            tippe_dynamics_contact_eval(c, rs->y, &rs->ct);
             lost = 1;
         }
     }

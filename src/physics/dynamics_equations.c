@@ -1,0 +1,305 @@
+/* The equations of motion in the lab frame (the right-hand side, its Jacobian,
+ * the contact and its normal force, eq 3.19) and the paper's variables and
+ * monitors (energy, Jellett's J, Euler angles) computed from a state. */
+#include "physics/dynamics_internal.h"
+#include "tippe/base.h"
+
+#include <float.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The angular acceleration that a torque tau about the centre of mass adds:
+ * A omega' = tau - (1 - A/C)(tau.k) k (the lab form of eq 3.13, L = A omega + (C - A) n k). */
+void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3])
+{
+    const double tk = dot3(tau, k);
+    for (int i = 0; i < 3; i++)
+        out[i] = (tau[i] - c->one_minus_A_over_C * tk * k[i]) * c->inv_A;
+}
+
+/* K P: the change of the contact point's velocity V_Q = v + omega x q that a
+ * force (or impulse) P at the contact makes, P/m + (I^-1 (q x P)) x q. K is
+ * symmetric positive definite (the contact's Delassus matrix). */
+static void compliance(const dyn_ctx *c, const double k[3], const double q[3], double K[3][3])
+{
+    for (int j = 0; j < 3; j++) {
+        double e[3] = {0.0, 0.0, 0.0}, qe[3], w[3], wq[3];
+        e[j] = 1.0;
+        cross3(q, e, qe);
+        tippe_dynamics_inv_inertia(c, k, qe, w);
+        cross3(w, q, wq);
+        for (int i = 0; i < 3; i++)
+            K[i][j] = wq[i] + (i == j ? 1.0 / c->m : 0.0);
+    }
+}
+
+/* x = K^-1 b by Cramer's rule (3 x 3, K positive definite: det > 0). */
+int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3])
+{
+    const double c0 = K[1][1] * K[2][2] - K[1][2] * K[2][1];
+    const double c1 = K[1][2] * K[2][0] - K[1][0] * K[2][2];
+    const double c2 = K[1][0] * K[2][1] - K[1][1] * K[2][0];
+    const double det = K[0][0] * c0 + K[0][1] * c1 + K[0][2] * c2;
+    if (!(det > 0.0))
+        return 1;
+    double M[3][3];
+    for (int j = 0; j < 3; j++) {
+        memcpy(M, K, sizeof M);
+        for (int i = 0; i < 3; i++)
+            M[i][j] = b[i];
+        x[j] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
+                M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+                M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
+               det;
+    }
+    return 0;
+}
+
+/* Everything the right-hand side needs from a state: the contact velocity, the
+ * normal force in closed form, the angular acceleration. The axis is
+ * normalised here, so |k| drifting at the integrator's tolerance never enters
+ * the physics. Returns nonzero where the contact force is undetermined. */
+int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
+{
+    const double inv_kn = 1.0 / sqrt(dot3(y + IK, y + IK));
+    for (int i = 0; i < 3; i++) {
+        o->k[i] = y[IK + i] * inv_kn;
+        o->w[i] = y[IW + i];
+    }
+    const double *k = o->k, *w = o->w;
+    o->n = dot3(w, k);
+    double wk[3];
+    cross3(w, k, wk);
+    /* q = CoM -> contact = eps k - R e3 (eq 3.6) */
+    o->q[0] = c->eps * k[0];
+    o->q[1] = c->eps * k[1];
+    o->q[2] = c->eps * k[2] - c->R;
+    /* The CoM height is R - eps k_z (eq 3.10), so its vertical velocity is
+     * -eps (omega x k)_z (eq 3.11). */
+    o->v[0] = y[IV];
+    o->v[1] = y[IV + 1];
+    o->v[2] = -c->eps * wk[2];
+    double wq[3];
+    cross3(w, o->q, wq);
+    o->VQ[0] = o->v[0] + wq[0]; /* eq 3.7 */
+    o->VQ[1] = o->v[1] + wq[1];
+    o->VQ[2] = 0.0; /* vanishes identically by the constraint (eq 3.11) */
+    if (c->stick) {
+        /* Rolling without slipping: the contact force Fc = (F, Rn) keeps the contact
+         * point at rest, d/dt V_Q = 0 with q' = eps omega x k:
+         *   Fc/m - g e3 + (I^-1 (q x Fc) + a0) x q + eps omega x (omega x k) = 0,
+         * i.e. K Fc = g e3 - a0 x q - eps omega x (omega x k), a0 the gyroscopic
+         * part of omega'. Its z row is eq 3.17; K is positive definite, so Fc is
+         * always determined (no Painleve case while rolling). */
+        double a0[3], a0q[3], wwk[3], b[3], Fc[3], tau[3], wt[3];
+        const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
+        for (int i = 0; i < 3; i++)
+            a0[i] = minus_CmA_A_n * wk[i];
+        cross3(a0, o->q, a0q);
+        cross3(w, wk, wwk);
+        for (int i = 0; i < 3; i++)
+            b[i] = -a0q[i] - c->eps * wwk[i];
+        b[2] += c->g;
+        compliance(c, k, o->q, o->K);
+        if (tippe_dynamics_solve3(o->K, b, Fc))
+            return 1;
+        cross3(o->q, Fc, tau);
+        tippe_dynamics_inv_inertia(c, k, tau, wt);
+        for (int i = 0; i < 3; i++)
+            o->wdot[i] = wt[i] + a0[i];
+        o->Rn = Fc[2];
+        o->F[0] = Fc[0];
+        o->F[1] = Fc[1];
+        o->den = 1.0;
+        o->mu_eff = 0.0;
+        /* exact rolling dissipates nothing: any change of E while rolling is
+         * integration error, and shows in the energy balance |E + D - E0| */
+        o->power = 0.0;
+        return 0;
+    }
+    const double slip2 = o->VQ[0] * o->VQ[0] + o->VQ[1] * o->VQ[1];
+    /* Both laws are F = -mu_eff Rn V_Q with mu_eff fixed by the state alone (V_Q does
+     * not depend on Rn): viscous mu (eq 3.12), or regularised Coulomb
+     * mu_c / sqrt(|V_Q|^2 + v_s^2), so |F| -> mu_c Rn for |V_Q| >> v_s. */
+    o->mu_eff = c->coulomb ? c->mu_c / sqrt(slip2 + c->vs2) : c->mu;
+    /* F = Rn (e3 - mu_eff V_Q): force and torque are linear in Rn. */
+    const double f[3] = {-o->mu_eff * o->VQ[0], -o->mu_eff * o->VQ[1], 1.0};
+    double tau[3];
+    cross3(o->q, f, tau); /* torque per unit Rn about the CoM (eq 3.13) */
+    const double tk = dot3(tau, k);
+    /* A omega' = tau - (C - A)(n' k + n omega x k) with C n' = tau.k (eq 3.13 in
+     * the lab frame): omega' = Rn a1 + a0. */
+    double a1[3], a0[3];
+    const double one_minus_AC = c->one_minus_A_over_C, inv_A = c->inv_A;
+    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
+    for (int i = 0; i < 3; i++) {
+        a1[i] = (tau[i] - one_minus_AC * tk * k[i]) * inv_A;
+        a0[i] = minus_CmA_A_n * wk[i];
+    }
+    double a1k[3], a0k[3], wwk[3];
+    cross3(a1, k, a1k);
+    cross3(a0, k, a0k);
+    cross3(w, wk, wwk);
+    /* m z'' = Rn - m g with z'' = -eps ((omega' x k)_z + (omega x (omega x k))_z)
+     * (eq 3.16-3.17), solved for Rn: the lab form of eq 3.19, any m. */
+    o->den = 1.0 + c->m * c->eps * a1k[2];
+    if (!(o->den > 0.0))
+        return 1;
+    o->Rn = c->m * (c->g - c->eps * (a0k[2] + wwk[2])) / o->den;
+    for (int i = 0; i < 3; i++)
+        o->wdot[i] = o->Rn * a1[i] + a0[i];
+    o->F[0] = -o->mu_eff * o->Rn * o->VQ[0];
+    o->F[1] = -o->mu_eff * o->Rn * o->VQ[1];
+    o->power = o->mu_eff * o->Rn * slip2; /* eq 4.1; Coulomb: mu_c Rn |V_Q| for |V_Q| >> v_s */
+    return 0;
+}
+
+int tippe_dynamics_rhs(double t, const double y[], double f[], void *params)
+{
+    (void)t;
+    dyn_ctx *c = params;
+    c->nevals++;
+    contact o;
+    if (tippe_dynamics_contact_eval(c, y, &o)) {
+        /* Not GSL_EBADFUNC: a trial stage of a too-long step can leave the
+         * region where eq 3.19 is defined, and GSL then retries with a shorter
+         * step. Only if the step shrinks to nothing is the model at fault. */
+        c->bad_contact = 1;
+        return GSL_EDOM;
+    }
+    if (o.Rn < c->min_stage_Rn)
+        c->min_stage_Rn = o.Rn;
+    if (c->stick) {
+        const double g = c->mu_c * o.Rn - hypot(o.F[0], o.F[1]);
+        if (g < c->min_stage_stick)
+            c->min_stage_stick = g;
+    }
+    /* dk/dt = omega x k with the unnormalised k: the exact flow keeps |k|. */
+    cross3(o.w, y + IK, f + IK);
+    for (int i = 0; i < 3; i++)
+        f[IW + i] = o.wdot[i];
+    f[IV] = o.F[0] / c->m; /* eq 3.14 horizontal */
+    f[IV + 1] = o.F[1] / c->m;
+    f[ID] = o.power;
+    if (c->dim == DIM_TRAJECTORY) {
+        /* q' = (0, omega) q / 2 for a lab-frame angular velocity. */
+        const double *p = y + IQ;
+        double wp[3];
+        cross3(o.w, p + 1, wp);
+        f[IQ] = -0.5 * dot3(o.w, p + 1);
+        for (int i = 0; i < 3; i++)
+            f[IQ + 1 + i] = 0.5 * (p[0] * o.w[i] + wp[i]);
+        f[IX] = o.v[0];
+        f[IX + 1] = o.v[1];
+    }
+    return GSL_SUCCESS;
+}
+
+/* Forward-difference Jacobian for the implicit steppers (rk1imp, rk2imp,
+ * rk4imp, bsimp, msbdf): its error only slows their Newton iterations. */
+int tippe_dynamics_jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params)
+{
+    dyn_ctx *c = params;
+    const size_t d = c->dim;
+    double f0[DIM_TRAJECTORY], f1[DIM_TRAJECTORY], yp[DIM_TRAJECTORY];
+    int s = tippe_dynamics_rhs(t, y, f0, c);
+    if (s != GSL_SUCCESS)
+        return s;
+    memcpy(yp, y, d * sizeof *y);
+    for (size_t j = 0; j < d; j++) {
+        const double save = yp[j];
+        double hj = sqrt(DBL_EPSILON) * fmax(fabs(save), c->scale[j]);
+        yp[j] = save + hj;
+        hj = yp[j] - save; /* the step actually representable */
+        s = tippe_dynamics_rhs(t, yp, f1, c);
+        yp[j] = save;
+        if (s != GSL_SUCCESS)
+            return s;
+        for (size_t i = 0; i < d; i++)
+            dfdy[i * d + j] = (f1[i] - f0[i]) / hj;
+    }
+    for (size_t i = 0; i < d; i++)
+        dfdt[i] = 0.0;
+    return GSL_SUCCESS;
+}
+
+/* ---- paper variables and monitors -------------------------------------- */
+
+double tippe_dynamics_energy(const dyn_ctx *c, const contact *o)
+{
+    double L[3];
+    for (int i = 0; i < 3; i++)
+        L[i] = c->A * o->w[i] + (c->C - c->A) * o->n * o->k[i];
+    /* sec 4: translational + rotational kinetic energy + m g h (eq 3.10) */
+    return 0.5 * c->m * dot3(o->v, o->v) + 0.5 * dot3(o->w, L) +
+           c->m * c->g * (c->R - c->eps * o->k[2]);
+}
+
+double tippe_dynamics_jellett(const dyn_ctx *c, const contact *o)
+{
+    double L[3];
+    for (int i = 0; i < 3; i++)
+        L[i] = c->A * o->w[i] + (c->C - c->A) * o->n * o->k[i];
+    return -dot3(L, o->q); /* eq 3.20 */
+}
+
+/* The paper's variables (eq 3.4) from the regular state: e1 is the horizontal
+ * direction of k (the lab x axis when k is vertical), i = cos(theta) e1 -
+ * sin(theta) e3, omega = -phi_dot sin(theta) i + theta_dot e2 + n k. */
+void tippe_dynamics_paper_variables(const dyn_ctx *c, double t, const double *y, const contact *o,
+                            tippe_dynamics_sample *s)
+{
+    const double *k = o->k, *w = o->w;
+    const double sth = hypot(k[0], k[1]), cth = k[2];
+    double e1x = 1.0, e1y = 0.0;
+    if (sth > 0.0) {
+        e1x = k[0] / sth;
+        e1y = k[1] / sth;
+    }
+    s->t = t;
+    s->theta = atan2(sth, cth);
+    s->theta_dot = -w[0] * e1y + w[1] * e1x;
+    const double wi = cth * (w[0] * e1x + w[1] * e1y) - sth * w[2];
+    /* phi_dot is undefined on the vertical; reported as 0 there. */
+    s->phi_dot = sth > 1e-9 ? -wi / sth : 0.0;
+    s->spin = o->n;
+    s->U = o->v[0] * e1x + o->v[1] * e1y;
+    s->V = -o->v[0] * e1y + o->v[1] * e1x;
+    s->phi = s->psi = s->x = s->y = NAN;
+    s->Rn = o->Rn;
+    s->slip_speed = hypot(o->VQ[0], o->VQ[1]);
+    s->E = tippe_dynamics_energy(c, o);
+    s->D = y[ID];
+    s->J = tippe_dynamics_jellett(c, o);
+}
+
+static double unwrap(double raw, double prev)
+{
+    return raw + 2.0 * M_PI * round((prev - raw) / (2.0 * M_PI));
+}
+
+/* Euler angles (phi, theta, psi), rotation Rz(phi) Ry(theta) Rz(psi), from the
+ * orientation quaternion, continued from the previous values; on the vertical
+ * only phi + psi (theta = 0) or phi - psi (theta = pi) is defined, and phi keeps
+ * its previous value. */
+void tippe_dynamics_euler_angles(const double *p, double *phi, double *psi)
+{
+    const double nq = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3]);
+    const double w = p[0] / nq, x = p[1] / nq, y = p[2] / nq, z = p[3] / nq;
+    const double R11 = 1 - 2 * (y * y + z * z), R21 = 2 * (x * y + w * z);
+    const double R13 = 2 * (x * z + w * y), R23 = 2 * (y * z - w * x);
+    const double R31 = 2 * (x * z - w * y), R32 = 2 * (y * z + w * x);
+    const double R33 = 1 - 2 * (x * x + y * y);
+    const double sth = hypot(R13, R23);
+    if (sth > 1e-9) {
+        *phi = unwrap(atan2(R23, R13), *phi);
+        *psi = unwrap(atan2(R32, -R31), *psi);
+    } else if (R33 > 0) {
+        *psi = unwrap(atan2(R21, R11) - *phi, *psi);
+    } else {
+        *psi = unwrap(*phi - atan2(-R21, -R11), *psi);
+    }
+}

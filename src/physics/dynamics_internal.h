@@ -1,0 +1,84 @@
+/* physics/dynamics_internal.h: what the dynamics files share (the state's
+ * layout, the run's context, the contact) and no other module sees. */
+#ifndef TIPPE_PHYSICS_DYNAMICS_INTERNAL_H
+#define TIPPE_PHYSICS_DYNAMICS_INTERNAL_H
+
+#include <gsl/gsl_odeiv2.h>
+#include <stddef.h>
+
+#include "tippe/physics.h"
+
+/* State layout. Verdict level: axis k, angular velocity omega, horizontal
+ * velocity of the centre of mass, dissipated energy. Trajectory level adds the
+ * orientation quaternion and the position of the centre of mass on the table. */
+enum { IK = 0, IW = 3, IV = 6, ID = 8, IQ = 9, IX = 13 };
+enum { DIM_VERDICT = 9, DIM_TRAJECTORY = 15 };
+/* Sticking is tried below this many v_s of slip, and needs the rolling force inside
+ * the cone by this fraction of mu_c m g (run_try_stick; the rolling decision asks the
+ * same room over a whole period). */
+#define STICK_SLIP_FACTOR 30.0
+#define STICK_MARGIN 1e-3
+/* The step budget also caps the RHS evaluations at this many per allowed step: rk8pd
+ * uses 13 a step (16 with the rejections of a stiff launch), but an implicit stepper's
+ * finite-difference Jacobians cost up to ~240 (bsimp), so on a stiff launch (the creep
+ * law at v_s = 1e-7 m/s) a budget of steps alone let bsimp run for more than 100 s
+ * (stopped by hand) and rk4imp 90 s, where rk8pd stops after 13 s (docs/dynamics.md,
+ * "Coulomb friction", "Extremes"). */
+#define BUDGET_EVALS_PER_STEP 20
+
+
+typedef struct {
+    double m, R, eps, A, C, g, mu;
+    int coulomb;          /* friction law: 0 viscous (mu), 1 Coulomb (regularised slip) */
+    int stick_law;        /* Coulomb with the event-driven stick (rolling) phase */
+    int stick;            /* current phase: 1 rolling without slipping (V_Q = 0) */
+    double mu_c, vs, vs2; /* Coulomb coefficient, its slip scale v_s and v_s^2 */
+    double min_stage_stick; /* smallest mu_c Rn - |F| met by a stage since reset (rolling) */
+    /* Constants of the right-hand side, once per run rather than per call. */
+    double one_minus_A_over_C, C_minus_A_over_A, inv_A;
+    size_t dim;
+    long nevals;
+    double min_stage_Rn;  /* smallest Rn met by any right-hand-side call since reset */
+    int bad_contact;      /* the denominator of eq 3.19 was <= 0 */
+    double scale[DIM_TRAJECTORY]; /* absolute scale per component */
+} dyn_ctx;
+
+typedef struct {
+    double k[3], w[3], v[3], q[3], VQ[3];
+    double n, Rn, den, power;
+    double mu_eff;  /* s/m: mu (viscous) or mu_c / sqrt(|V_Q|^2 + v_s^2) (Coulomb) */
+    double F[2];    /* N, horizontal friction force */
+    double K[3][3]; /* contact compliance (Delassus) matrix, rolling phase only */
+    double wdot[3];
+} contact;
+
+static inline double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static inline void cross3(const double a[3], const double b[3], double out[3])
+{
+    double r0 = a[1] * b[2] - a[2] * b[1];
+    double r1 = a[2] * b[0] - a[0] * b[2];
+    double r2 = a[0] * b[1] - a[1] * b[0];
+    out[0] = r0;
+    out[1] = r1;
+    out[2] = r2;
+}
+
+/* dynamics_equations.c */
+int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o);
+void tippe_dynamics_paper_variables(const dyn_ctx *c, double t, const double *y, const contact *o, tippe_dynamics_sample *s);
+double tippe_dynamics_energy(const dyn_ctx *c, const contact *o);
+double tippe_dynamics_jellett(const dyn_ctx *c, const contact *o);
+int tippe_dynamics_rhs(double t, const double y[], double f[], void *params);
+int tippe_dynamics_jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params);
+void tippe_dynamics_euler_angles(const double *p, double *phi, double *psi);
+int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3]);
+void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3]);
+
+/* dynamics_model.c */
+const gsl_odeiv2_step_type *tippe_dynamics_stepper_type(const char *name);
+
+#endif

@@ -1,0 +1,168 @@
+/* The dynamics' model and options: the names of verdicts, decisions and
+ * friction laws, the accuracy presets and steppers, whether a model dissipates,
+ * and the steady precession a launch starts from. Calls nothing of the run. */
+#include "physics/dynamics_internal.h"
+#include "tippe/base.h"
+
+#include <float.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The accuracy presets, chosen from the work-precision benchmark
+ * (tools/bench/run.sh, docs/performance.md): without a step cap rk8pd is on the
+ * best front of every non-stiff scenario at every error measured (1e-2 down), so
+ * all three are rk8pd; fast was rkck 1e-6, which rk8pd 1e-6 now beats in cost and
+ * error (Figure 12 flip: 4.7e-3 in 1.82 ms against 6.9e-2 in 2.32 ms). */
+static const struct {
+    const char *name, *stepper;
+    double rtol;
+} presets[] = {
+    {"fast", "rk8pd", 1e-6},
+    {"balanced", "rk8pd", 1e-9},
+    {"precise", "rk8pd", 1e-12},
+};
+enum { N_PRESETS = (int)(sizeof presets / sizeof presets[0]) };
+
+static const struct {
+    const char *name;
+    const gsl_odeiv2_step_type *const *type;
+} steppers[] = {
+    {"rk2", &gsl_odeiv2_step_rk2},       {"rk4", &gsl_odeiv2_step_rk4},
+    {"rkf45", &gsl_odeiv2_step_rkf45},   {"rkck", &gsl_odeiv2_step_rkck},
+    {"rk8pd", &gsl_odeiv2_step_rk8pd},   {"rk1imp", &gsl_odeiv2_step_rk1imp},
+    {"rk2imp", &gsl_odeiv2_step_rk2imp}, {"rk4imp", &gsl_odeiv2_step_rk4imp},
+    {"bsimp", &gsl_odeiv2_step_bsimp},   {"msadams", &gsl_odeiv2_step_msadams},
+    {"msbdf", &gsl_odeiv2_step_msbdf},
+};
+enum { N_STEPPERS = (int)(sizeof steppers / sizeof steppers[0]) };
+
+const char *tippe_verdict_name(tippe_verdict v)
+{
+    switch (v) {
+    case TIPPE_VERDICT_NO_TIP: return "no_tip";
+    case TIPPE_VERDICT_TIP: return "tip";
+    case TIPPE_VERDICT_HANG: return "hang";
+    case TIPPE_VERDICT_LOST_CONTACT: return "lost_contact";
+    case TIPPE_VERDICT_UNDECIDED: return "undecided";
+    case TIPPE_VERDICT_BOUNDED: return "bounded";
+    }
+    return "?";
+}
+
+const char *tippe_decision_name(tippe_decision d)
+{
+    switch (d) {
+    case TIPPE_DECIDED_T_END: return "t_end";
+    case TIPPE_DECIDED_TRAPPED: return "trapped";
+    case TIPPE_DECIDED_LOST_CONTACT: return "lost_contact";
+    case TIPPE_DECIDED_FLAT_WELL: return "flat_well";
+    case TIPPE_DECIDED_BUDGET: return "budget";
+    case TIPPE_DECIDED_ROLLING: return "rolling";
+    }
+    return "?";
+}
+
+const char *tippe_friction_law_name(tippe_friction_law law)
+{
+    switch (law) {
+    case TIPPE_FRICTION_VISCOUS: return "viscous";
+    case TIPPE_FRICTION_COULOMB: return "coulomb";
+    case TIPPE_FRICTION_COULOMB_CREEP: return "coulomb-creep";
+    }
+    return "?";
+}
+
+int tippe_friction_law_parse(const char *name)
+{
+    if (!strcmp(name, "viscous"))
+        return TIPPE_FRICTION_VISCOUS;
+    if (!strcmp(name, "coulomb"))
+        return TIPPE_FRICTION_COULOMB;
+    if (!strcmp(name, "coulomb-creep"))
+        return TIPPE_FRICTION_COULOMB_CREEP;
+    return -1;
+}
+
+int tippe_dynamics_frictionless(const tippe_dynamics_model *model)
+{
+    return model->law == TIPPE_FRICTION_VISCOUS ? !(model->mu > 0.0) : !(model->mu_c > 0.0);
+}
+
+int tippe_dynamics_n_presets(void) { return N_PRESETS; }
+
+const char *tippe_dynamics_preset_name(int i)
+{
+    return (i >= 0 && i < N_PRESETS) ? presets[i].name : NULL;
+}
+
+int tippe_dynamics_accuracy_preset(const char *name, tippe_dynamics_accuracy *out,
+                                   tippe_error *err)
+{
+    for (int i = 0; i < N_PRESETS; i++)
+        if (!strcmp(name, presets[i].name)) {
+            snprintf(out->stepper, sizeof out->stepper, "%s", presets[i].stepper);
+            out->rtol = presets[i].rtol;
+            return TIPPE_OK;
+        }
+    return tippe_error_set(err, TIPPE_EINPUT,
+                           "unknown accuracy preset '%s' (expected fast, balanced or precise)",
+                           name);
+}
+
+const gsl_odeiv2_step_type *tippe_dynamics_stepper_type(const char *name)
+{
+    for (int i = 0; i < N_STEPPERS; i++)
+        if (!strcmp(name, steppers[i].name))
+            return *steppers[i].type;
+    return NULL;
+}
+
+int tippe_dynamics_stepper_known(const char *name) { return tippe_dynamics_stepper_type(name) != NULL; }
+
+void tippe_dynamics_options_default(tippe_dynamics_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->level = TIPPE_LEVEL_VERDICT;
+    o->t_end = 100.0;
+    tippe_dynamics_accuracy_preset("balanced", &o->accuracy, NULL);
+    o->sample_dt = 0.0;
+    o->margin_factor = 10.0;
+    o->run_to_t_end = 0;
+    o->max_steps = 10000000;
+}
+
+int tippe_dynamics_precession(const tippe_dynamics_model *model, double theta, double spin,
+                              tippe_precession_rule rule, double *phi_dot, tippe_error *err)
+{
+    const tippe_top *t = &model->top;
+    const double c = cos(theta);
+    if (fabs(c) < 1e-12)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "no steady precession rule at theta = pi/2 (cos theta = 0): "
+                               "give phi_dot as a number");
+    /* theta_ddot = 0 in eq 3.15 with theta_dot = U = 0, hence Rn = m g (eq 3.17)
+     * and no friction torque about e2: A cos(theta) a^2 - C n a - m g eps = 0. */
+    const double Cn = t->C * spin;
+    const double disc = Cn * Cn + 4.0 * t->A * c * t->m * model->g * t->eps;
+    if (rule == TIPPE_PRECESSION_S3) {
+        *phi_dot = Cn / (2.0 * t->A * c);
+        return TIPPE_OK;
+    }
+    if (disc < 0.0)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "no real steady precession at theta = %g rad for spin %g rad/s "
+                               "(C^2 n^2 + 4 A m g eps cos(theta) = %g < 0): use s3 or a number",
+                               theta, spin, disc);
+    double sign = 1.0;
+    if (rule == TIPPE_PRECESSION_S2)
+        sign = -1.0;
+    else if (rule == TIPPE_PRECESSION_STEADY && spin < 0.0)
+        sign = -1.0;
+    *phi_dot = (Cn + sign * sqrt(disc)) / (2.0 * t->A * c);
+    return TIPPE_OK;
+}
+
+/* ---- the equations of motion ------------------------------------------- */
