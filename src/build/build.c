@@ -1,5 +1,5 @@
 /* Build sheet: robust settings in measurable units, spins, launch verdicts, BOM. */
-#include "tippe/build.h"
+#include "build/build_internal.h"
 
 #include "base/json.h"
 #include "tippe/profile.h"
@@ -63,13 +63,11 @@ const tippe_build_insert *tippe_build_insert_for(const char *thread)
 }
 
 /* ISO 724: basic minor diameter of the internal thread, D1 = D - (5 sqrt(3) / 8) P. */
-static double minor_diameter_mm(const tippe_build_thread *t)
+double tippe_build_minor_diameter_mm(const tippe_build_thread *t)
 {
     return t->d_mm - 1.082531754730548 * t->pitch_mm;
 }
 
-static const char *const behaviours[3] = {"stays up", "flips", "hangs"};
-static const char *const families[3] = {"I", "II", "III"};
 
 const char *tippe_build_behaviour(int f) { return f >= 0 && f < 3 ? behaviours[f] : "?"; }
 const char *tippe_build_family(int f) { return f >= 0 && f < 3 ? families[f] : "?"; }
@@ -474,466 +472,6 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
     }
 }
 
-/* ----------------------------------------------------------------- BOM */
-
-void tippe_build_stem(const char *design_path, char *out, size_t size)
-{
-    const char *base = strrchr(design_path, '/');
-    snprintf(out, size, "%s", base ? base + 1 : design_path);
-    char *dot = strrchr(out, '.');
-    if (dot && dot != out)
-        *dot = '\0';
-}
-
-/* The sheet names the files it refers to as they are written. */
-static void file_stem(const tippe_build_sheet *s, char *out, size_t size)
-{
-    tippe_build_stem(s->design_file, out, size);
-}
-
-static void bom(tippe_build_sheet *s, int qty, const char *what, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-static void bom(tippe_build_sheet *s, int qty, const char *what, const char *fmt, ...)
-{
-    if (s->n_bom >= TIPPE_BUILD_MAX_BOM)
-        return;
-    tippe_build_bom_line *l = &s->bom[s->n_bom++];
-    l->quantity = qty;
-    snprintf(l->what, sizeof l->what, "%s", what);
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(l->detail, sizeof l->detail, fmt, ap);
-    va_end(ap);
-}
-
-static void note(tippe_build_sheet *s, const char *text)
-{
-    if (s->n_notes < 4)
-        snprintf(s->note[s->n_notes++], sizeof s->note[0], "%s", text);
-}
-
-static void bill(const tippe_design *d, const tippe_profile_set *ps, const tippe_build_options *o,
-                 tippe_build_sheet *s, double rod_r)
-{
-    char what[512];
-    for (int b = 0; ps && b < ps->n_bodies; b++) {
-        snprintf(what, sizeof what, "printed body '%s', %s", ps->body[b].name,
-                 ps->body[b].material);
-        bom(s, 1, what, "%.2f mm tall, %.2f mm across; printed with the axis vertical",
-            ps->body[b].z_max_mm - ps->body[b].z_min_mm, 2 * ps->body[b].r_max_mm);
-    }
-    for (int i = 0; i < tippe_design_n_parts(d); i++) {
-        tippe_design_solid sd;
-        tippe_design_part_info p;
-        tippe_design_print_info pr;
-        if (tippe_design_part_solid(d, i, &sd) || tippe_design_part(d, i, &p) ||
-            tippe_design_part_print(d, i, &pr) || sd.is_void || p.printable || pr.printed)
-            continue;
-        int cyl = !strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube");
-        if (sd.moving && s->catalogue_item[0]) {
-            snprintf(what, sizeof what, "set screw %s (%s), %s", s->catalogue_item,
-                     s->catalogue_title, p.material);
-            bom(s, 1, what, "thread %s x %.4g mm, length %.4g mm; the weight ('%s')",
-                s->thread_name, s->thread.pitch_mm, sd.height_mm, p.name);
-        } else if (sd.moving && s->measure == TIPPE_BUILD_MEASURE_HOLE && cyl) {
-            snprintf(what, sizeof what, "screw or slug '%s', %s", p.name, p.material);
-            bom(s, 1, what,
-                "diameter %.4g mm (modelled), length %.4g mm; no catalogue item matches: "
-                "nearest ISO 261 thread %s x %.4g mm",
-                2 * sd.radius_mm, sd.height_mm, s->thread_name, s->thread.pitch_mm);
-        } else if (sd.moving && cyl && sd.inner_radius_mm > 0) {
-            snprintf(what, sizeof what, "bead (weight) '%s', %s", p.name, p.material);
-            if (s->has_thread)
-                bom(s, 1, what,
-                    "outer diameter %.4g mm, height %.4g mm, bore tapped %s x %.4g mm "
-                    "(tap drill %.2f mm)",
-                    2 * sd.radius_mm, sd.height_mm, s->thread_name, s->thread.pitch_mm,
-                    s->tap_drill_mm);
-            else
-                bom(s, 1, what, "outer diameter %.4g mm, height %.4g mm, bore %.4g mm",
-                    2 * sd.radius_mm, sd.height_mm, 2 * sd.inner_radius_mm);
-        } else if (!sd.moving && cyl && sd.inner_radius_mm == 0) {
-            double len = sd.height_mm;
-            const char *ends = "cut square";
-            int ns = 0;
-            double lo = 0, hi = 0;
-            for (int k = 0; ps && k < ps->n_sockets; k++)
-                if (ps->socket_part[k] == i) {
-                    ns++;
-                    lo = fmin(lo, ps->socket_floor_z_mm[k]);
-                    hi = fmax(hi, ps->socket_floor_z_mm[k]);
-                }
-            if (ns == 2) {
-                /* held on the axis by the shell's sockets (tippe/profile.h):
-                 * longer than the model's rod, whose ends the cavity clips */
-                len = hi - lo;
-                char t[320];
-                double extra_g = (M_PI * sd.radius_mm * sd.radius_mm * len * 1e-3 *
-                                      p.density_g_cm3 - p.mass_kg * 1e3);
-                snprintf(t, sizeof t,
-                         "The rod is cut %.2f mm long, its ends %.1f mm deep in the shell's "
-                         "sockets at the poles (they hold it on the axis): %+.3f g against the "
-                         "model's rod, whose ends the cavity clips; the sockets remove %.1f mm^3 "
-                         "of printed wall. Neither is in the mass model.",
-                         len, TIPPE_PROFILE_SOCKET_DEPTH_MM, extra_g,
-                         ps->socket_volume_mm3[0] + ps->socket_volume_mm3[1]);
-                note(s, t);
-                ends = "cut square; its ends sit in the shell's sockets at the poles";
-                s->rod_sockets = 1;
-            } else if (sd.clip_radius_mm > 0) {
-                double cap = sqrt(sd.clip_radius_mm * sd.clip_radius_mm -
-                                  sd.radius_mm * sd.radius_mm);
-                if (sd.z_mm + sd.height_mm / 2 > cap && sd.z_mm - sd.height_mm / 2 < -cap) {
-                    len = 2 * cap;
-                    ends = "cut square at this length, its end edges touching the clip ball "
-                           "(the model's rounded ends hold a little more metal)";
-                }
-            }
-            const tippe_build_thread *t = tippe_build_thread_by_diameter(2 * sd.radius_mm);
-            snprintf(what, sizeof what, "%s '%s', %s", t ? "threaded rod" : "rod", p.name,
-                     p.material);
-            if (t)
-                bom(s, 1, what, "%s x %.4g mm (ISO 261 coarse), length %.2f mm, %s", t->name,
-                    t->pitch_mm, len, ends);
-            else
-                bom(s, 1, what, "diameter %.4g mm, length %.2f mm, %s", 2 * sd.radius_mm, len,
-                    ends);
-            (void)rod_r;
-        } else {
-            snprintf(what, sizeof what, "part '%s', %s %s", p.name, p.material, sd.shape);
-            bom(s, 1, what, "%s", sd.moving ? "moving (the weight)" : "fixed hardware");
-        }
-    }
-    if (s->hole_insert)
-        bom(s, 1, "heat-set threaded insert, brass, non-flanged",
-            "%s (for the %s x %g screw), outer diameter at most %.1f mm; pressed into the "
-            "hole's rim, printed %.1f mm across (its vendor's pilot hole: %s)",
-            s->insert.thread, s->thread_name, s->thread.pitch_mm, s->insert.outer_max_mm,
-            s->insert.pilot_mm, TIPPE_BUILD_INSERT_SOURCE);
-    int split = 0;
-    for (int k = 0; ps && k < ps->n_warnings; k++)
-        split |= strstr(ps->warning[k], "--split") != NULL;
-    s->needs_split = split;
-    if (split) {
-        /* tippe export makes the ring only where a wall at the cut is wide
-         * enough for its groove (a thin shell gets none): ask it */
-        tippe_profile_options po = tippe_profile_defaults();
-        po.clearance_mm = o->clearance_mm;
-        po.split = po.joint = 1;
-        tippe_profile_set js;
-        tippe_error e = {0};
-        if (tippe_profile_build(d, &po, &js, &e) == TIPPE_OK) {
-            s->joint_ring = js.n_grooves > 0;
-            tippe_profile_set_free(&js);
-        }
-    }
-    char stem[sizeof ((tippe_build_sheet *)0)->design_file];
-    file_stem(s, stem, sizeof stem);
-    if (s->joint_ring)
-        bom(s, 1, "joint ring, printed (the body's filament)",
-            "%s-joint-ring.stl: fills the 2 mm grooves of both halves' cut faces to align them "
-            "(tippe export --split --joint)", stem);
-    if (split)
-        bom(s, 1, "adhesive for the two printed halves",
-            "the body closes around its hardware, so it is printed in halves (--split): join "
-            "them (solvent weld for ABS, cyanoacrylate for PLA or PETG)");
-}
-
-int tippe_build_needs_split(const tippe_design *d, double clearance_mm)
-{
-    tippe_profile_options po = tippe_profile_defaults();
-    po.clearance_mm = clearance_mm;
-    tippe_profile_set ps;
-    tippe_error e = {0};
-    if (tippe_profile_build(d, &po, &ps, &e))
-        return 0;
-    int split = 0;
-    for (int k = 0; k < ps.n_warnings; k++)
-        split |= strstr(ps.warning[k], "--split") != NULL;
-    tippe_profile_set_free(&ps);
-    return split;
-}
-
-static void print_settings(const tippe_design *d, const tippe_profile_set *ps,
-                           tippe_build_sheet *s)
-{
-    for (int i = 0; ps && i < tippe_design_n_parts(d) && s->n_print < 4; i++) {
-        tippe_design_part_info p;
-        tippe_design_print_info pr;
-        tippe_design_solid sd;
-        if (tippe_design_part(d, i, &p) || tippe_design_part_print(d, i, &pr) ||
-            tippe_design_part_solid(d, i, &sd) || sd.is_void || sd.moving ||
-            !(p.printable || pr.printed))
-            continue;
-        int k = s->n_print++;
-        snprintf(s->print[k].part, sizeof s->print[k].part, "%s", p.name);
-        snprintf(s->print[k].material, sizeof s->print[k].material, "%s", p.material);
-        s->print[k].has_block = pr.printed;
-        s->print[k].settings = pr.printed ? pr.settings : tippe_print_defaults();
-        s->print[k].infill = pr.printed ? pr.infill : 1.0;
-        s->print[k].calibrated = pr.calibrated;
-    }
-}
-
-static void step(tippe_build_sheet *s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void step(tippe_build_sheet *s, const char *fmt, ...)
-{
-    if (s->n_steps >= 10)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(s->step[s->n_steps++], sizeof s->step[0], fmt, ap);
-    va_end(ap);
-}
-
-/* The order a maker works in, from what the sheet found. */
-static void steps(tippe_build_sheet *s)
-{
-    const tippe_build_setting *first = NULL;
-    for (int f = 0; f < 3 && !first; f++)
-        if (s->set[f].reachable)
-            first = &s->set[f];
-    char stem[sizeof ((tippe_build_sheet *)0)->design_file];
-    file_stem(s, stem, sizeof stem);
-    if (s->needs_split)
-        step(s, "Print the body in two halves (%s-*-lower.stl and %s-*-upper.stl, each standing "
-                "on its flat cut face at the equator: no supports) with the print settings.",
-             stem, stem);
-    else
-        step(s, "Print the body with the print settings, its axis vertical (the mass model "
-                "assumes it), no supports inside the hole.");
-    if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
-        double bite = 0.5 * (s->thread.d_mm - s->hole_diameter_mm);
-        if (s->hole_insert)
-            step(s, "Press the %s heat-set insert into the hole at the rim with a soldering iron "
-                    "(its insert tip), straight along the axis, until its top is flush with the "
-                    "rim; let it cool. The hole is printed %.1f mm across for it.",
-                 s->insert.thread, s->hole_diameter_mm);
-        else if (s->hole_diameter_mm > s->tap_drill_mm + 1e-9)
-            step(s, "Check the hole: printed diameter %.2f mm for the %s x %g screw, wider than "
-                    "its tap drill %.2f mm (a sliding fit: the design's hole, the screw's pitch "
-                    "diameter, plus the clearance): the thread bites %.2f mm deep into the wall. "
-                    "If the screw turns loose, fix it with a drop of glue.",
-                 s->hole_diameter_mm, s->thread_name, s->thread.pitch_mm, s->tap_drill_mm,
-                 bite > 0 ? bite : 0);
-        else
-            step(s, "Tap the hole %s x %g: it is printed at the tap drill, %.2f mm across (d - "
-                    "P; drill it to %.2f mm first if the print came out narrower).",
-                 s->thread_name, s->thread.pitch_mm, s->hole_diameter_mm, s->tap_drill_mm);
-        step(s, "Turn the screw in with a hex key until its end is flush with the rim, then "
-                "the turns of the table for the behaviour wanted. Check the depth with the "
-                "printed gauge of that setting (%s-gauge-*.stl: pin in the hole, disc on the rim, "
-                "the screw's end just touching the pin) or a caliper's depth rod on the rim.",
-             stem);
-    } else if (s->measure == TIPPE_BUILD_MEASURE_ROD) {
-        step(s, "Cut the rod to the length in the bill of materials, square.");
-        step(s, "Screw the bead onto the rod until its top face lies at the table's depth "
-                "below the rod's top end%s: the printed sleeve gauge (%s-gauge-*.stl) standing on "
-                "the bead is then flush with the rod's end. Fix it with a drop of threadlocker.",
-             first ? " for the behaviour wanted" : "", stem);
-        const char *rod_in_sockets = s->rod_sockets
-                                         ? " with its lower end in the lower half's socket (the "
-                                           "upper end goes into the upper half's)"
-                                         : "";
-        if (s->joint_ring)
-            step(s, "Put the joint ring in the groove of the lower half's cut face, stand the rod "
-                    "on the axis%s, close with the upper half (its groove over the ring) and join "
-                    "them (adhesive in the bill of materials); the bead can no longer be moved: "
-                    "build one top per behaviour, or choose the one you want first.",
-                 rod_in_sockets);
-        else
-            step(s, "Stand the rod on the axis of the lower half%s, close with the upper half "
-                    "and join them (adhesive in the bill of materials; the wall at the cut is too "
-                    "thin for a joint ring: align the halves by hand); the bead can no longer "
-                    "be moved: build one top per behaviour, or choose the one you want first.",
-                 rod_in_sockets);
-    } else {
-        step(s, "Place the weight at the set Z2 of the table (its midpoint above the sphere's "
-                "centre).");
-    }
-    step(s, "Spin the top on a hard, flat table at the spin of the table (a flick of the "
-            "fingers gives 5 to 25 rev/s) and watch it stay up, flip or hang.");
-}
-
-int tippe_build_gauge_applies(const tippe_build_sheet *s, int f, double *pin_mm)
-{
-    *pin_mm = NAN;
-    if (f < 0 || f > 2 || !s->set[f].reachable || s->measure == TIPPE_BUILD_MEASURE_NONE ||
-        !(s->set[f].depth_set_mm >= TIPPE_BUILD_GAUGE_MIN_MM))
-        return 0;
-    *pin_mm = s->set[f].depth_set_mm;
-    return 1;
-}
-
-double tippe_build_gauge_pin_diameter_mm(const tippe_build_sheet *s)
-{
-    double d = s->hole_diameter_mm - 1;
-    /* an insert's bore is its thread: the pin passes its minor diameter (ISO 724) */
-    if (s->hole_insert && s->has_thread)
-        d = fmin(d, minor_diameter_mm(&s->thread) - 0.5);
-    return d;
-}
-
-/* ------------------------------------------------------ 3-in-1 search */
-
-/* 1 if the design with field=value is 3-in-1 within its physical travel, 0 if
- * not, -1 if it does not load (a layout the value breaks). */
-static int three_in_one_at(const tippe_design *d, const tippe_build_options *o,
-                           const char *field, double value)
-{
-    const char *ov[TIPPE_JSON_MAX_SETS];
-    int n = 0;
-    for (int k = 0; k < o->n_sets && n < TIPPE_JSON_MAX_SETS - 1; k++)
-        ov[n++] = o->sets[k];
-    char set[512];
-    snprintf(set, sizeof set, "%s=%.10g", field, value);
-    ov[n++] = set;
-    tippe_design *v = NULL;
-    tippe_error e = {0};
-    if (tippe_design_load(tippe_design_path(d), ov, n, &v, &e))
-        return -1;
-    tippe_sweep_result r;
-    int yes = -1;
-    if (tippe_sweep_design(v, 0, 0, NULL, &r, &e) == TIPPE_OK) {
-        tippe_sweep_summary sm;
-        tippe_sweep_summarise(&r, &sm);
-        yes = sm.three_in_one;
-    }
-    tippe_sweep_result_free(&r);
-    tippe_design_free(v);
-    return yes;
-}
-
-/* Scans field over [lo, hi]; the 3-in-1 value nearest now, its edge bisected.
- * 1 found (advice filled), 0 none. */
-static int search(const tippe_design *d, const tippe_build_options *o, const char *field,
-                  double now, double lo, double hi, tippe_build_sheet *s)
-{
-    enum { N = 24 };
-    int yes[N + 1];
-    double x[N + 1];
-    for (int i = 0; i <= N; i++) {
-        x[i] = lo + (hi - lo) * i / N;
-        yes[i] = three_in_one_at(d, o, field, x[i]);
-    }
-    int best = -1;
-    for (int i = 0; i <= N; i++)
-        if (yes[i] == 1 && (best < 0 || fabs(x[i] - now) < fabs(x[best] - now)))
-            best = i;
-    if (best < 0 || s->n_advice >= 6)
-        return 0;
-    /* the neighbour towards now that is not 3-in-1: bisect between them */
-    int towards = x[best] > now ? best - 1 : best + 1;
-    double edge = x[best];
-    int at_least = x[best] > now;
-    if (towards >= 0 && towards <= N && yes[towards] != 1) {
-        double a = x[towards], b = x[best]; /* a: not, b: yes */
-        while (fabs(b - a) > 1e-3 * (hi - lo)) {
-            double m = 0.5 * (a + b);
-            if (three_in_one_at(d, o, field, m) == 1)
-                b = m;
-            else
-                a = m;
-        }
-        edge = b;
-    }
-    int k = s->n_advice++;
-    snprintf(s->advice[k].field, sizeof s->advice[k].field, "%s", field);
-    s->advice[k].now = now;
-    s->advice[k].value = edge;
-    s->advice[k].at_least = at_least;
-    return 1;
-}
-
-static void advise(const tippe_design *d, const tippe_build_options *o, tippe_build_sheet *s)
-{
-    char field[200];
-    for (int i = 0; i < tippe_design_n_parts(d); i++) {
-        tippe_design_part_info p;
-        tippe_design_print_info pr;
-        tippe_design_solid sd;
-        if (tippe_design_part(d, i, &p) || tippe_design_part_print(d, i, &pr) ||
-            tippe_design_part_solid(d, i, &sd))
-            continue;
-        int k = s->n_advice;
-        if (pr.printed && !pr.calibrated) {
-            snprintf(field, sizeof field, "parts.%s.print.infill", p.name);
-            if (search(d, o, field, pr.infill, 0, 1, s))
-                snprintf(s->advice[k].text, sizeof s->advice[k].text,
-                         "3-in-1 at %s %.1f %% infill of '%s' (the slicer's %.0f %%): weigh the "
-                         "print (a print's real infill often differs from the slicer's) and give "
-                         "measured_mass_g, or print at that infill",
-                         s->advice[k].at_least ? "or above" : "or below",
-                         100 * s->advice[k].value, p.name, 100 * pr.infill);
-        } else if (pr.printed) {
-            snprintf(field, sizeof field, "parts.%s.print.measured_mass_g", p.name);
-            if (search(d, o, field, pr.measured_mass_kg * 1e3, pr.skin_mass_kg * 1e3,
-                       pr.solid_mass_kg * 1e3, s))
-                snprintf(s->advice[k].text, sizeof s->advice[k].text,
-                         "3-in-1 if '%s' weighs %s %.2f g (weighed %.2f g): print it at a %s "
-                         "infill",
-                         p.name, s->advice[k].at_least ? "at least" : "at most",
-                         s->advice[k].value, pr.measured_mass_kg * 1e3,
-                         s->advice[k].at_least ? "denser" : "sparser");
-        } else if (sd.moving && !sd.is_void) {
-            snprintf(field, sizeof field, "parts.%s.density_g_cm3", p.name);
-            if (search(d, o, field, p.density_g_cm3, 1, 22, s))
-                snprintf(s->advice[k].text, sizeof s->advice[k].text,
-                         "3-in-1 with a %s weight: density %s %.2f g/cm^3 for '%s' (now %.2f, "
-                         "%s)",
-                         s->advice[k].at_least ? "heavier" : "lighter",
-                         s->advice[k].at_least ? "at least" : "at most", s->advice[k].value,
-                         p.name, p.density_g_cm3, p.material);
-            k = s->n_advice;
-            if ((!strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube"))) {
-                snprintf(field, sizeof field, "parts.%s.height_mm", p.name);
-                if (search(d, o, field, sd.height_mm, 0.5 * sd.height_mm, 2 * sd.height_mm, s))
-                    snprintf(s->advice[k].text, sizeof s->advice[k].text,
-                             "3-in-1 with a %s weight: '%s' %s %.2f mm long (now %.4g mm)",
-                             s->advice[k].at_least ? "longer" : "shorter", p.name,
-                             s->advice[k].at_least ? "at least" : "at most",
-                             s->advice[k].value, sd.height_mm);
-            }
-        }
-    }
-}
-
-/* The print model's mass of the hole's part with the hole as printed, against
- * the mass model's hole: what a scale reading of the print lacks (or has too
- * much) for calibrating the design (measured_mass_g describes the design's
- * part). The derived design is geometry only (tippe_design_derive), so a hole
- * narrower than the screw (a tap drill) is allowed. */
-static double hole_model_radius(const tippe_design *d, int i)
-{
-    tippe_design_solid hs;
-    return tippe_design_part_solid(d, i, &hs) ? NAN : hs.radius_mm;
-}
-
-static void weigh_offset(const tippe_design *d, tippe_build_sheet *s)
-{
-    tippe_design_solid hs;
-    tippe_design_part_info hp, pp;
-    tippe_design_print_info before, after;
-    if (s->measure != TIPPE_BUILD_MEASURE_HOLE || s->hole_part < 0 ||
-        tippe_design_part_solid(d, s->hole_part, &hs) || hs.parent < 0 ||
-        tippe_design_part(d, s->hole_part, &hp) || tippe_design_part(d, hs.parent, &pp) ||
-        tippe_design_part_print(d, hs.parent, &before) || !before.printed)
-        return;
-    char set[300];
-    snprintf(set, sizeof set, "parts.%s.radius_mm=%.10g", hp.name, s->hole_diameter_mm / 2);
-    const char *extra[1] = {set};
-    tippe_design *v = NULL;
-    tippe_error e = {0};
-    if (tippe_design_derive(d, extra, 1, &v, &e) == TIPPE_OK &&
-        tippe_design_part_print(v, hs.parent, &after) == TIPPE_OK && after.printed) {
-        /* at the same infill: a calibrated design's infill is the one solved */
-        double m_model = before.skin_mass_kg + before.infill * (before.solid_mass_kg - before.skin_mass_kg);
-        double m_print = after.skin_mass_kg + before.infill * (after.solid_mass_kg - after.skin_mass_kg);
-        s->weigh_offset_g = (m_model - m_print) * 1e3;
-    }
-    tippe_design_free(v);
-}
-
 /* ------------------------------------------------------------ compute */
 
 int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
@@ -1059,7 +597,7 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
         out->thread.name = NULL; /* the sheet's copy is thread_name */
     }
 
-    weigh_offset(d, out);
+    tippe_build_weigh_offset(d, out);
     for (int f = 0; f < 3; f++) {
         tippe_build_setting *s = &out->set[f];
         if (!s->reachable)
@@ -1075,7 +613,7 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
         s->turns_to = s->depth_to_mm / p;
         spins_and_launch(d, o, f, s);
     }
-    bill(d, have_ps ? &ps : NULL, o, out, rod_r);
+    tippe_build_bill(d, have_ps ? &ps : NULL, o, out, rod_r);
     int n_gauges = 0;
     char which[64] = "";
     for (int f = 0; f < 3; f++) {
@@ -1087,26 +625,26 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
         }
     }
     char stem[sizeof ((tippe_build_sheet *)0)->design_file];
-    file_stem(out, stem, sizeof stem);
+    tippe_build_file_stem(out, stem, sizeof stem);
     if (n_gauges)
-        bom(out, n_gauges, "depth gauges, printed (any filament)",
+        tippe_build_bom(out, n_gauges, "depth gauges, printed (any filament)",
             "%s-gauge-*.stl, one per setting (%s), printed flat side down", stem, which);
-    print_settings(d, have_ps ? &ps : NULL, out);
-    steps(out);
+    tippe_build_print_settings(d, have_ps ? &ps : NULL, out);
+    tippe_build_steps(out);
     if (!out->three_in_one)
-        advise(d, o, out);
+        tippe_build_advise(d, o, out);
     if (have_ps)
         tippe_profile_set_free(&ps);
     if (out->measure == TIPPE_BUILD_MEASURE_HOLE)
-        note(out, "Depth is measured from the rim of the hole to the screw's end; a negative "
+        tippe_build_note(out, "Depth is measured from the rim of the hole to the screw's end; a negative "
                   "depth means the screw stands out of the ball. Turns are counted from the "
                   "screw's end flush with the rim.");
     else if (out->measure == TIPPE_BUILD_MEASURE_ROD)
-        note(out, "Depth is measured along the rod from its top end down to the bead's top "
+        tippe_build_note(out, "Depth is measured along the rod from its top end down to the bead's top "
                   "face, before the shell is closed. Turns are counted from the bead's top "
                   "face flush with the rod's end.");
     else
-        note(out, "No hole or rod on the axis holds the weight: set it by Z2 directly "
+        tippe_build_note(out, "No hole or rod on the axis holds the weight: set it by Z2 directly "
                   "(its midpoint's height above the sphere's centre).");
     if (out->hole_insert) {
         /* below the insert the pilot hole is wider than the thread: the screw
@@ -1122,8 +660,8 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
             snprintf(t + n, sizeof t - (size_t)n,
                      " below the rim: an insert shorter than that lets the screw fall; tap "
                      "the hole instead.");
-        note(out, t);
-        note(out, "The insert's brass is not in the mass model (the zones are the design's): "
+        tippe_build_note(out, t);
+        tippe_build_note(out, "The insert's brass is not in the mass model (the zones are the design's): "
                   "for a top whose zones hold with it, add the insert to the design as a fixed "
                   "tube of its size and weight. Weigh the print before pressing the insert in.");
     }
@@ -1133,296 +671,9 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                  "Weighing to calibrate the infill: the hole is printed %.2f mm across, the mass "
                  "model's is %.2f mm, so add %+.3f g (the print model's difference, same infill) "
                  "to the scale's reading of the bare print before giving it as measured_mass_g.",
-                 out->hole_diameter_mm, 2 * hole_model_radius(d, out->hole_part),
+                 out->hole_diameter_mm, 2 * tippe_build_hole_model_radius(d, out->hole_part),
                  out->weigh_offset_g);
-        note(out, t);
+        tippe_build_note(out, t);
     }
     return TIPPE_OK;
-}
-
-/* ------------------------------------------------------------ reports */
-
-static cJSON *num(double x) { return isfinite(x) ? cJSON_CreateNumber(x) : cJSON_CreateNull(); }
-
-static const char *measure_name(tippe_build_measure m)
-{
-    return m == TIPPE_BUILD_MEASURE_HOLE ? "hole" : m == TIPPE_BUILD_MEASURE_ROD ? "rod" : "none";
-}
-
-cJSON *tippe_build_json(const tippe_build_sheet *s)
-{
-    cJSON *o = cJSON_CreateObject();
-    if (!o)
-        return NULL;
-    cJSON_AddStringToObject(o, "design", s->design_name);
-    cJSON_AddStringToObject(o, "file", s->design_file);
-    cJSON_AddNumberToObject(o, "radius_mm", s->radius_mm);
-    cJSON *t = cJSON_AddArrayToObject(o, "physical_travel_mm");
-    cJSON_AddItemToArray(t, num(s->travel_from_mm));
-    cJSON_AddItemToArray(t, num(s->travel_to_mm));
-    cJSON_AddBoolToObject(o, "three_in_one", s->three_in_one);
-    cJSON *m = cJSON_AddObjectToObject(o, "measure");
-    if (m) {
-        cJSON_AddStringToObject(m, "kind", measure_name(s->measure));
-        cJSON_AddStringToObject(m, "reference", s->reference);
-        cJSON_AddItemToObject(m, "reference_z_mm",
-                              num(s->measure ? s->reference_z_mm : NAN));
-        cJSON_AddStringToObject(m, "weight", s->weight_name);
-        if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
-            cJSON_AddNumberToObject(m, "hole_printed_diameter_mm", s->hole_diameter_mm);
-            cJSON_AddStringToObject(m, "hole_fit", s->hole_tapped   ? "tap"
-                                                   : s->hole_insert ? "insert"
-                                                                    : "slide");
-            cJSON_AddStringToObject(m, "hole_fit_from",
-                                    s->hole_fit_from_design ? "design" : "default or option");
-            if (s->hole_insert) {
-                cJSON *in = cJSON_AddObjectToObject(m, "insert");
-                if (in) {
-                    cJSON_AddStringToObject(in, "thread", s->insert.thread);
-                    cJSON_AddNumberToObject(in, "pilot_hole_mm", s->insert.pilot_mm);
-                    cJSON_AddNumberToObject(in, "outer_diameter_max_mm", s->insert.outer_max_mm);
-                    cJSON_AddStringToObject(in, "source", TIPPE_BUILD_INSERT_SOURCE);
-                }
-            }
-            cJSON_AddItemToObject(m, "weigh_offset_g", num(s->weigh_offset_g));
-        }
-        cJSON_AddNumberToObject(m, "weight_end_above_z2_mm", s->weight_end_offset_mm);
-    }
-    cJSON *th = cJSON_AddObjectToObject(o, "thread");
-    if (th && s->has_thread) {
-        cJSON_AddStringToObject(th, "name", s->thread_name);
-        cJSON_AddNumberToObject(th, "d_mm", s->thread.d_mm);
-        cJSON_AddNumberToObject(th, "pitch_mm", s->thread.pitch_mm);
-        cJSON_AddNumberToObject(th, "tap_drill_mm", s->tap_drill_mm);
-        cJSON_AddStringToObject(th, "tap_drill_rule", "d - P (ISO 2306 for ISO 261 threads)");
-        if (s->catalogue_item[0]) {
-            cJSON_AddStringToObject(th, "catalogue_item", s->catalogue_item);
-            cJSON_AddStringToObject(th, "catalogue", s->catalogue_title);
-        } else {
-            cJSON_AddNullToObject(th, "catalogue_item");
-        }
-        cJSON_AddBoolToObject(th, "assumed", s->thread_assumed);
-    }
-    cJSON *arr = cJSON_AddArrayToObject(o, "settings");
-    for (int f = 0; arr && f < 3; f++) {
-        const tippe_build_setting *x = &s->set[f];
-        cJSON *j = cJSON_CreateObject();
-        if (!j || !cJSON_AddItemToArray(arr, j)) {
-            cJSON_Delete(j);
-            break;
-        }
-        cJSON_AddStringToObject(j, "behaviour", behaviours[f]);
-        cJSON_AddStringToObject(j, "group", families[f]);
-        cJSON_AddBoolToObject(j, "reachable", x->reachable);
-        if (!x->reachable)
-            continue;
-        cJSON_AddBoolToObject(j, "robust", x->robust);
-        cJSON_AddNumberToObject(j, "z2_from_mm", x->from_mm);
-        cJSON_AddNumberToObject(j, "z2_to_mm", x->to_mm);
-        cJSON_AddNumberToObject(j, "band_from_mm", x->band_from_mm);
-        cJSON_AddNumberToObject(j, "band_to_mm", x->band_to_mm);
-        cJSON_AddNumberToObject(j, "robust_from_mm", x->robust_from_mm);
-        cJSON_AddNumberToObject(j, "robust_to_mm", x->robust_to_mm);
-        cJSON_AddNumberToObject(j, "robust_width_mm",
-                                x->robust ? x->robust_to_mm - x->robust_from_mm : 0);
-        cJSON_AddNumberToObject(j, "set_z2_mm", x->set_z2_mm);
-        cJSON_AddItemToObject(j, "depth_from_mm", num(x->depth_from_mm));
-        cJSON_AddItemToObject(j, "depth_set_mm", num(x->depth_set_mm));
-        cJSON_AddItemToObject(j, "depth_to_mm", num(x->depth_to_mm));
-        cJSON_AddItemToObject(j, "turns_from", num(x->turns_from));
-        cJSON_AddItemToObject(j, "turns_set", num(x->turns_set));
-        cJSON_AddItemToObject(j, "turns_to", num(x->turns_to));
-        cJSON_AddItemToObject(j, "spin_needed_rev_s", num(x->spin_needed_rev_s));
-        cJSON_AddItemToObject(j, "spin_needed_max_rev_s", num(x->spin_needed_max_rev_s));
-        cJSON_AddStringToObject(j, "spin_rule", x->spin_rule ? x->spin_rule : "");
-        cJSON_AddItemToObject(j, "launch_spin_rev_s", num(x->spin_launch_rev_s));
-        cJSON_AddBoolToObject(j, "beyond_hand_spin", x->beyond_hand);
-        if (x->launch_status == TIPPE_OK) {
-            cJSON_AddStringToObject(j, "launch_verdict", tippe_verdict_name(x->verdict));
-            cJSON_AddBoolToObject(j, "launch_as_expected", x->verdict_ok);
-            cJSON_AddNumberToObject(j, "launch_decided_s", x->launch_t_s);
-        } else {
-            cJSON_AddNullToObject(j, "launch_verdict");
-            cJSON_AddBoolToObject(j, "launch_as_expected", 0);
-        }
-    }
-    cJSON *b = cJSON_AddArrayToObject(o, "bill_of_materials");
-    for (int k = 0; b && k < s->n_bom; k++) {
-        cJSON *j = cJSON_CreateObject();
-        if (!j || !cJSON_AddItemToArray(b, j)) {
-            cJSON_Delete(j);
-            break;
-        }
-        cJSON_AddNumberToObject(j, "quantity", s->bom[k].quantity);
-        cJSON_AddStringToObject(j, "item", s->bom[k].what);
-        cJSON_AddStringToObject(j, "detail", s->bom[k].detail);
-    }
-    cJSON *pa = cJSON_AddArrayToObject(o, "print");
-    for (int k = 0; pa && k < s->n_print; k++) {
-        cJSON *j = cJSON_CreateObject();
-        if (!j || !cJSON_AddItemToArray(pa, j)) {
-            cJSON_Delete(j);
-            break;
-        }
-        const tippe_print_settings *p = &s->print[k].settings;
-        cJSON_AddStringToObject(j, "part", s->print[k].part);
-        cJSON_AddStringToObject(j, "material", s->print[k].material);
-        cJSON_AddBoolToObject(j, "print_block", s->print[k].has_block);
-        /* a body with no print block is modelled solid: no walls to count */
-        if (s->print[k].has_block) {
-            cJSON_AddNumberToObject(j, "perimeters", p->perimeters);
-            cJSON_AddNumberToObject(j, "top_bottom_layers", p->top_bottom_layers);
-        } else {
-            cJSON_AddNullToObject(j, "perimeters");
-            cJSON_AddNullToObject(j, "top_bottom_layers");
-        }
-        cJSON_AddNumberToObject(j, "line_width_mm", p->line_width_mm);
-        cJSON_AddNumberToObject(j, "layer_height_mm", p->layer_height_mm);
-        cJSON_AddNumberToObject(j, "infill", s->print[k].infill);
-        cJSON_AddBoolToObject(j, "calibrated", s->print[k].calibrated);
-        cJSON_AddStringToObject(j, "orientation",
-                                s->needs_split ? "axis vertical, halves on their cut faces"
-                                               : "axis vertical");
-    }
-    cJSON_AddBoolToObject(o, "split", s->needs_split);
-    cJSON_AddBoolToObject(o, "joint_ring", s->joint_ring);
-    cJSON *adv = cJSON_AddArrayToObject(o, "to_make_it_three_in_one");
-    for (int k = 0; adv && k < s->n_advice; k++) {
-        cJSON *j = cJSON_CreateObject();
-        if (!j || !cJSON_AddItemToArray(adv, j)) {
-            cJSON_Delete(j);
-            break;
-        }
-        cJSON_AddStringToObject(j, "field", s->advice[k].field);
-        cJSON_AddNumberToObject(j, "now", s->advice[k].now);
-        cJSON_AddNumberToObject(j, "edge", s->advice[k].value);
-        cJSON_AddStringToObject(j, "side", s->advice[k].at_least ? "at_least" : "at_most");
-        cJSON_AddStringToObject(j, "advice", s->advice[k].text);
-    }
-    cJSON *stp = cJSON_AddArrayToObject(o, "steps");
-    for (int k = 0; stp && k < s->n_steps; k++)
-        cJSON_AddItemToArray(stp, cJSON_CreateString(s->step[k]));
-    cJSON *n = cJSON_AddArrayToObject(o, "notes");
-    for (int k = 0; n && k < s->n_notes; k++)
-        cJSON_AddItemToArray(n, cJSON_CreateString(s->note[k]));
-    return o;
-}
-
-/* "12.34 mm" or "-" */
-static const char *mm(double v, char *buf, size_t size)
-{
-    if (isfinite(v))
-        snprintf(buf, size, "%.2f mm", v);
-    else
-        snprintf(buf, size, "-");
-    return buf;
-}
-
-static const char *turns(double v, char *buf, size_t size)
-{
-    if (isfinite(v))
-        snprintf(buf, size, "%.1f", v);
-    else
-        snprintf(buf, size, "-");
-    return buf;
-}
-
-void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
-{
-    char a[32], b[32], c[32], d[32], e[32], g[32];
-    fprintf(f, "# Build sheet: %s\n\nDesign file `%s`; sphere radius %g mm; the weight's "
-               "physical travel Z2 = %.2f .. %.2f mm.\n\n",
-            s->design_name, s->design_file, s->radius_mm, s->travel_from_mm, s->travel_to_mm);
-    fprintf(f, "## Settings\n\n");
-    if (s->measure != TIPPE_BUILD_MEASURE_NONE)
-        fprintf(f, "Measure from %s.\n\n", s->reference);
-    fprintf(f, "| behaviour | group | robust Z2 range | set Z2 | depth (range) | depth to set | "
-               "turns to set | spin needed | launch check |\n"
-               "|---|---|---|---|---|---|---|---|---|\n");
-    for (int k = 0; k < 3; k++) {
-        const tippe_build_setting *x = &s->set[k];
-        if (!x->reachable) {
-            fprintf(f, "| %s | %s | not reachable within the travel where the model applies "
-                       "| | | | | | |\n",
-                    behaviours[k], families[k]);
-            continue;
-        }
-        char range[80], spin[96], check[120];
-        if (x->robust)
-            snprintf(range, sizeof range, "%.2f .. %.2f mm", x->robust_from_mm, x->robust_to_mm);
-        else
-            snprintf(range, sizeof range, "none robust (zone %.2f .. %.2f mm)", x->from_mm,
-                     x->to_mm);
-        if (k == 0)
-            snprintf(spin, sizeof spin, "any");
-        else if (isfinite(x->spin_needed_max_rev_s))
-            snprintf(spin, sizeof spin, "above %.1f rev/s (%.1f at the range's worst end)",
-                     x->spin_needed_rev_s, x->spin_needed_max_rev_s);
-        else
-            snprintf(spin, sizeof spin, "no spin suffices");
-        if (x->launch_status == TIPPE_OK)
-            snprintf(check, sizeof check, "%s at %.1f rev/s%s%s", tippe_verdict_name(x->verdict),
-                     x->spin_launch_rev_s, x->verdict_ok ? " (as expected)" : " (NOT as expected)",
-                     x->beyond_hand ? "; beyond a hand spin" : "");
-        else
-            snprintf(check, sizeof check, "not run");
-        double lo = fmin(x->depth_from_mm, x->depth_to_mm);
-        double hi = fmax(x->depth_from_mm, x->depth_to_mm);
-        fprintf(f, "| %s | %s | %s | %.2f mm | %s .. %s | %s | %s | %s | %s |\n", behaviours[k],
-                families[k], range, x->set_z2_mm, mm(lo, a, sizeof a),
-                mm(hi, b, sizeof b), mm(x->depth_set_mm, c, sizeof c),
-                turns(x->turns_set, d, sizeof d), spin, check);
-    }
-    (void)e;
-    (void)g;
-    fprintf(f, "\n%s 3-in-1: %s.\n", s->three_in_one ? "It is" : "It is not",
-            s->three_in_one ? "all three behaviours are reachable within the travel where the model applies"
-                            : "not every behaviour is reachable within the travel where the model applies");
-    if (!s->three_in_one) {
-        fprintf(f, "\nWhat would make it 3-in-1 (one change at a time, found by sweeping the "
-                   "zones at each value; at the edge given the missing zone is just born, so go "
-                   "beyond it for a zone wide enough to set):\n\n");
-        for (int k = 0; k < s->n_advice; k++)
-            fprintf(f, "- %s (`--set %s=%.4g`).\n", s->advice[k].text, s->advice[k].field,
-                    s->advice[k].value);
-        if (!s->n_advice)
-            fprintf(f, "- no single change of the infill, the weight's density (1 .. 22 g/cm^3) "
-                       "or its length (half to double) makes it 3-in-1.\n");
-    }
-    if (s->has_thread) {
-        fprintf(f, "\nThread: %s x %g mm", s->thread_name, s->thread.pitch_mm);
-        if (s->catalogue_item[0])
-            fprintf(f, " (catalogue item %s, %s)", s->catalogue_item, s->catalogue_title);
-        else if (s->thread_assumed)
-            fprintf(f, " (assumed: no catalogue item matches the weight; the ISO 261 size whose "
-                       "pitch diameter is nearest its modelled diameter)");
-        fprintf(f, "; tap drill %.2f mm (d - P, ISO 2306).\n", s->tap_drill_mm);
-    }
-    fprintf(f, "\n## Bill of materials\n\n| qty | item | detail |\n|---|---|---|\n");
-    for (int k = 0; k < s->n_bom; k++)
-        fprintf(f, "| %d | %s | %s |\n", s->bom[k].quantity, s->bom[k].what, s->bom[k].detail);
-    fprintf(f, "\n## Print settings\n\n| part | material | perimeters | top/bottom layers | "
-               "infill | orientation |\n|---|---|---|---|---|---|\n");
-    for (int k = 0; k < s->n_print; k++) {
-        const tippe_print_settings *p = &s->print[k].settings;
-        if (s->print[k].has_block)
-            fprintf(f, "| %s | %s | %d x %.2f mm | %d x %.2f mm | %.0f %%%s | axis vertical%s |\n",
-                    s->print[k].part, s->print[k].material, p->perimeters, p->line_width_mm,
-                    p->top_bottom_layers, p->layer_height_mm, 100 * s->print[k].infill,
-                    s->print[k].calibrated ? " (calibrated by weighing)" : "",
-                    s->needs_split ? ", halves on their cut faces" : "");
-        else
-            fprintf(f, "| %s | %s | as many as fill it | - | 100 %% (solid: the design has no "
-                       "print block) | axis vertical%s |\n",
-                    s->print[k].part, s->print[k].material,
-                    s->needs_split ? ", halves on their cut faces" : "");
-    }
-    fprintf(f, "\n## Steps\n\n");
-    for (int k = 0; k < s->n_steps; k++)
-        fprintf(f, "%d. %s\n", k + 1, s->step[k]);
-    if (s->n_notes) {
-        fprintf(f, "\n## Notes\n\n");
-        for (int k = 0; k < s->n_notes; k++)
-            fprintf(f, "- %s\n", s->note[k]);
-    }
 }

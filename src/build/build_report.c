@@ -1,0 +1,300 @@
+/* The build sheet's text: the terminal report, Markdown and JSON. */
+#include "build/build_internal.h"
+#include "base/json.h"
+#include "tippe/physics.h"
+#include "tippe/profile.h"
+#include "tippe/sweep.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ------------------------------------------------------------ reports */
+
+static cJSON *num(double x) { return isfinite(x) ? cJSON_CreateNumber(x) : cJSON_CreateNull(); }
+
+static const char *measure_name(tippe_build_measure m)
+{
+    return m == TIPPE_BUILD_MEASURE_HOLE ? "hole" : m == TIPPE_BUILD_MEASURE_ROD ? "rod" : "none";
+}
+
+cJSON *tippe_build_json(const tippe_build_sheet *s)
+{
+    cJSON *o = cJSON_CreateObject();
+    if (!o)
+        return NULL;
+    cJSON_AddStringToObject(o, "design", s->design_name);
+    cJSON_AddStringToObject(o, "file", s->design_file);
+    cJSON_AddNumberToObject(o, "radius_mm", s->radius_mm);
+    cJSON *t = cJSON_AddArrayToObject(o, "physical_travel_mm");
+    cJSON_AddItemToArray(t, num(s->travel_from_mm));
+    cJSON_AddItemToArray(t, num(s->travel_to_mm));
+    cJSON_AddBoolToObject(o, "three_in_one", s->three_in_one);
+    cJSON *m = cJSON_AddObjectToObject(o, "measure");
+    if (m) {
+        cJSON_AddStringToObject(m, "kind", measure_name(s->measure));
+        cJSON_AddStringToObject(m, "reference", s->reference);
+        cJSON_AddItemToObject(m, "reference_z_mm",
+                              num(s->measure ? s->reference_z_mm : NAN));
+        cJSON_AddStringToObject(m, "weight", s->weight_name);
+        if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
+            cJSON_AddNumberToObject(m, "hole_printed_diameter_mm", s->hole_diameter_mm);
+            cJSON_AddStringToObject(m, "hole_fit", s->hole_tapped   ? "tap"
+                                                   : s->hole_insert ? "insert"
+                                                                    : "slide");
+            cJSON_AddStringToObject(m, "hole_fit_from",
+                                    s->hole_fit_from_design ? "design" : "default or option");
+            if (s->hole_insert) {
+                cJSON *in = cJSON_AddObjectToObject(m, "insert");
+                if (in) {
+                    cJSON_AddStringToObject(in, "thread", s->insert.thread);
+                    cJSON_AddNumberToObject(in, "pilot_hole_mm", s->insert.pilot_mm);
+                    cJSON_AddNumberToObject(in, "outer_diameter_max_mm", s->insert.outer_max_mm);
+                    cJSON_AddStringToObject(in, "source", TIPPE_BUILD_INSERT_SOURCE);
+                }
+            }
+            cJSON_AddItemToObject(m, "weigh_offset_g", num(s->weigh_offset_g));
+        }
+        cJSON_AddNumberToObject(m, "weight_end_above_z2_mm", s->weight_end_offset_mm);
+    }
+    cJSON *th = cJSON_AddObjectToObject(o, "thread");
+    if (th && s->has_thread) {
+        cJSON_AddStringToObject(th, "name", s->thread_name);
+        cJSON_AddNumberToObject(th, "d_mm", s->thread.d_mm);
+        cJSON_AddNumberToObject(th, "pitch_mm", s->thread.pitch_mm);
+        cJSON_AddNumberToObject(th, "tap_drill_mm", s->tap_drill_mm);
+        cJSON_AddStringToObject(th, "tap_drill_rule", "d - P (ISO 2306 for ISO 261 threads)");
+        if (s->catalogue_item[0]) {
+            cJSON_AddStringToObject(th, "catalogue_item", s->catalogue_item);
+            cJSON_AddStringToObject(th, "catalogue", s->catalogue_title);
+        } else {
+            cJSON_AddNullToObject(th, "catalogue_item");
+        }
+        cJSON_AddBoolToObject(th, "assumed", s->thread_assumed);
+    }
+    cJSON *arr = cJSON_AddArrayToObject(o, "settings");
+    for (int f = 0; arr && f < 3; f++) {
+        const tippe_build_setting *x = &s->set[f];
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(arr, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        cJSON_AddStringToObject(j, "behaviour", behaviours[f]);
+        cJSON_AddStringToObject(j, "group", families[f]);
+        cJSON_AddBoolToObject(j, "reachable", x->reachable);
+        if (!x->reachable)
+            continue;
+        cJSON_AddBoolToObject(j, "robust", x->robust);
+        cJSON_AddNumberToObject(j, "z2_from_mm", x->from_mm);
+        cJSON_AddNumberToObject(j, "z2_to_mm", x->to_mm);
+        cJSON_AddNumberToObject(j, "band_from_mm", x->band_from_mm);
+        cJSON_AddNumberToObject(j, "band_to_mm", x->band_to_mm);
+        cJSON_AddNumberToObject(j, "robust_from_mm", x->robust_from_mm);
+        cJSON_AddNumberToObject(j, "robust_to_mm", x->robust_to_mm);
+        cJSON_AddNumberToObject(j, "robust_width_mm",
+                                x->robust ? x->robust_to_mm - x->robust_from_mm : 0);
+        cJSON_AddNumberToObject(j, "set_z2_mm", x->set_z2_mm);
+        cJSON_AddItemToObject(j, "depth_from_mm", num(x->depth_from_mm));
+        cJSON_AddItemToObject(j, "depth_set_mm", num(x->depth_set_mm));
+        cJSON_AddItemToObject(j, "depth_to_mm", num(x->depth_to_mm));
+        cJSON_AddItemToObject(j, "turns_from", num(x->turns_from));
+        cJSON_AddItemToObject(j, "turns_set", num(x->turns_set));
+        cJSON_AddItemToObject(j, "turns_to", num(x->turns_to));
+        cJSON_AddItemToObject(j, "spin_needed_rev_s", num(x->spin_needed_rev_s));
+        cJSON_AddItemToObject(j, "spin_needed_max_rev_s", num(x->spin_needed_max_rev_s));
+        cJSON_AddStringToObject(j, "spin_rule", x->spin_rule ? x->spin_rule : "");
+        cJSON_AddItemToObject(j, "launch_spin_rev_s", num(x->spin_launch_rev_s));
+        cJSON_AddBoolToObject(j, "beyond_hand_spin", x->beyond_hand);
+        if (x->launch_status == TIPPE_OK) {
+            cJSON_AddStringToObject(j, "launch_verdict", tippe_verdict_name(x->verdict));
+            cJSON_AddBoolToObject(j, "launch_as_expected", x->verdict_ok);
+            cJSON_AddNumberToObject(j, "launch_decided_s", x->launch_t_s);
+        } else {
+            cJSON_AddNullToObject(j, "launch_verdict");
+            cJSON_AddBoolToObject(j, "launch_as_expected", 0);
+        }
+    }
+    cJSON *b = cJSON_AddArrayToObject(o, "bill_of_materials");
+    for (int k = 0; b && k < s->n_bom; k++) {
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(b, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        cJSON_AddNumberToObject(j, "quantity", s->bom[k].quantity);
+        cJSON_AddStringToObject(j, "item", s->bom[k].what);
+        cJSON_AddStringToObject(j, "detail", s->bom[k].detail);
+    }
+    cJSON *pa = cJSON_AddArrayToObject(o, "print");
+    for (int k = 0; pa && k < s->n_print; k++) {
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(pa, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        const tippe_print_settings *p = &s->print[k].settings;
+        cJSON_AddStringToObject(j, "part", s->print[k].part);
+        cJSON_AddStringToObject(j, "material", s->print[k].material);
+        cJSON_AddBoolToObject(j, "print_block", s->print[k].has_block);
+        /* a body with no print block is modelled solid: no walls to count */
+        if (s->print[k].has_block) {
+            cJSON_AddNumberToObject(j, "perimeters", p->perimeters);
+            cJSON_AddNumberToObject(j, "top_bottom_layers", p->top_bottom_layers);
+        } else {
+            cJSON_AddNullToObject(j, "perimeters");
+            cJSON_AddNullToObject(j, "top_bottom_layers");
+        }
+        cJSON_AddNumberToObject(j, "line_width_mm", p->line_width_mm);
+        cJSON_AddNumberToObject(j, "layer_height_mm", p->layer_height_mm);
+        cJSON_AddNumberToObject(j, "infill", s->print[k].infill);
+        cJSON_AddBoolToObject(j, "calibrated", s->print[k].calibrated);
+        cJSON_AddStringToObject(j, "orientation",
+                                s->needs_split ? "axis vertical, halves on their cut faces"
+                                               : "axis vertical");
+    }
+    cJSON_AddBoolToObject(o, "split", s->needs_split);
+    cJSON_AddBoolToObject(o, "joint_ring", s->joint_ring);
+    cJSON *adv = cJSON_AddArrayToObject(o, "to_make_it_three_in_one");
+    for (int k = 0; adv && k < s->n_advice; k++) {
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(adv, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        cJSON_AddStringToObject(j, "field", s->advice[k].field);
+        cJSON_AddNumberToObject(j, "now", s->advice[k].now);
+        cJSON_AddNumberToObject(j, "edge", s->advice[k].value);
+        cJSON_AddStringToObject(j, "side", s->advice[k].at_least ? "at_least" : "at_most");
+        cJSON_AddStringToObject(j, "advice", s->advice[k].text);
+    }
+    cJSON *stp = cJSON_AddArrayToObject(o, "steps");
+    for (int k = 0; stp && k < s->n_steps; k++)
+        cJSON_AddItemToArray(stp, cJSON_CreateString(s->step[k]));
+    cJSON *n = cJSON_AddArrayToObject(o, "notes");
+    for (int k = 0; n && k < s->n_notes; k++)
+        cJSON_AddItemToArray(n, cJSON_CreateString(s->note[k]));
+    return o;
+}
+
+/* "12.34 mm" or "-" */
+const char *tippe_build_mm(double v, char *buf, size_t size)
+{
+    if (isfinite(v))
+        snprintf(buf, size, "%.2f mm", v);
+    else
+        snprintf(buf, size, "-");
+    return buf;
+}
+
+const char *tippe_build_turns(double v, char *buf, size_t size)
+{
+    if (isfinite(v))
+        snprintf(buf, size, "%.1f", v);
+    else
+        snprintf(buf, size, "-");
+    return buf;
+}
+
+void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
+{
+    char a[32], b[32], c[32], d[32], e[32], g[32];
+    fprintf(f, "# Build sheet: %s\n\nDesign file `%s`; sphere radius %g mm; the weight's "
+               "physical travel Z2 = %.2f .. %.2f mm.\n\n",
+            s->design_name, s->design_file, s->radius_mm, s->travel_from_mm, s->travel_to_mm);
+    fprintf(f, "## Settings\n\n");
+    if (s->measure != TIPPE_BUILD_MEASURE_NONE)
+        fprintf(f, "Measure from %s.\n\n", s->reference);
+    fprintf(f, "| behaviour | group | robust Z2 range | set Z2 | depth (range) | depth to set | "
+               "turns to set | spin needed | launch check |\n"
+               "|---|---|---|---|---|---|---|---|---|\n");
+    for (int k = 0; k < 3; k++) {
+        const tippe_build_setting *x = &s->set[k];
+        if (!x->reachable) {
+            fprintf(f, "| %s | %s | not reachable within the travel where the model applies "
+                       "| | | | | | |\n",
+                    behaviours[k], families[k]);
+            continue;
+        }
+        char range[80], spin[96], check[120];
+        if (x->robust)
+            snprintf(range, sizeof range, "%.2f .. %.2f mm", x->robust_from_mm, x->robust_to_mm);
+        else
+            snprintf(range, sizeof range, "none robust (zone %.2f .. %.2f mm)", x->from_mm,
+                     x->to_mm);
+        if (k == 0)
+            snprintf(spin, sizeof spin, "any");
+        else if (isfinite(x->spin_needed_max_rev_s))
+            snprintf(spin, sizeof spin, "above %.1f rev/s (%.1f at the range's worst end)",
+                     x->spin_needed_rev_s, x->spin_needed_max_rev_s);
+        else
+            snprintf(spin, sizeof spin, "no spin suffices");
+        if (x->launch_status == TIPPE_OK)
+            snprintf(check, sizeof check, "%s at %.1f rev/s%s%s", tippe_verdict_name(x->verdict),
+                     x->spin_launch_rev_s, x->verdict_ok ? " (as expected)" : " (NOT as expected)",
+                     x->beyond_hand ? "; beyond a hand spin" : "");
+        else
+            snprintf(check, sizeof check, "not run");
+        double lo = fmin(x->depth_from_mm, x->depth_to_mm);
+        double hi = fmax(x->depth_from_mm, x->depth_to_mm);
+        fprintf(f, "| %s | %s | %s | %.2f mm | %s .. %s | %s | %s | %s | %s |\n", behaviours[k],
+                families[k], range, x->set_z2_mm, tippe_build_mm(lo, a, sizeof a),
+                tippe_build_mm(hi, b, sizeof b), tippe_build_mm(x->depth_set_mm, c, sizeof c),
+                tippe_build_turns(x->turns_set, d, sizeof d), spin, check);
+    }
+    (void)e;
+    (void)g;
+    fprintf(f, "\n%s 3-in-1: %s.\n", s->three_in_one ? "It is" : "It is not",
+            s->three_in_one ? "all three behaviours are reachable within the travel where the model applies"
+                            : "not every behaviour is reachable within the travel where the model applies");
+    if (!s->three_in_one) {
+        fprintf(f, "\nWhat would make it 3-in-1 (one change at a time, found by sweeping the "
+                   "zones at each value; at the edge given the missing zone is just born, so go "
+                   "beyond it for a zone wide enough to set):\n\n");
+        for (int k = 0; k < s->n_advice; k++)
+            fprintf(f, "- %s (`--set %s=%.4g`).\n", s->advice[k].text, s->advice[k].field,
+                    s->advice[k].value);
+        if (!s->n_advice)
+            fprintf(f, "- no single change of the infill, the weight's density (1 .. 22 g/cm^3) "
+                       "or its length (half to double) makes it 3-in-1.\n");
+    }
+    if (s->has_thread) {
+        fprintf(f, "\nThread: %s x %g mm", s->thread_name, s->thread.pitch_mm);
+        if (s->catalogue_item[0])
+            fprintf(f, " (catalogue item %s, %s)", s->catalogue_item, s->catalogue_title);
+        else if (s->thread_assumed)
+            fprintf(f, " (assumed: no catalogue item matches the weight; the ISO 261 size whose "
+                       "pitch diameter is nearest its modelled diameter)");
+        fprintf(f, "; tap drill %.2f mm (d - P, ISO 2306).\n", s->tap_drill_mm);
+    }
+    fprintf(f, "\n## Bill of materials\n\n| qty | item | detail |\n|---|---|---|\n");
+    for (int k = 0; k < s->n_bom; k++)
+        fprintf(f, "| %d | %s | %s |\n", s->bom[k].quantity, s->bom[k].what, s->bom[k].detail);
+    fprintf(f, "\n## Print settings\n\n| part | material | perimeters | top/bottom layers | "
+               "infill | orientation |\n|---|---|---|---|---|---|\n");
+    for (int k = 0; k < s->n_print; k++) {
+        const tippe_print_settings *p = &s->print[k].settings;
+        if (s->print[k].has_block)
+            fprintf(f, "| %s | %s | %d x %.2f mm | %d x %.2f mm | %.0f %%%s | axis vertical%s |\n",
+                    s->print[k].part, s->print[k].material, p->perimeters, p->line_width_mm,
+                    p->top_bottom_layers, p->layer_height_mm, 100 * s->print[k].infill,
+                    s->print[k].calibrated ? " (calibrated by weighing)" : "",
+                    s->needs_split ? ", halves on their cut faces" : "");
+        else
+            fprintf(f, "| %s | %s | as many as fill it | - | 100 %% (solid: the design has no "
+                       "print block) | axis vertical%s |\n",
+                    s->print[k].part, s->print[k].material,
+                    s->needs_split ? ", halves on their cut faces" : "");
+    }
+    fprintf(f, "\n## Steps\n\n");
+    for (int k = 0; k < s->n_steps; k++)
+        fprintf(f, "%d. %s\n", k + 1, s->step[k]);
+    if (s->n_notes) {
+        fprintf(f, "\n## Notes\n\n");
+        for (int k = 0; k < s->n_notes; k++)
+            fprintf(f, "- %s\n", s->note[k]);
+    }
+}
