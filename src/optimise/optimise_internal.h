@@ -75,6 +75,7 @@ void tippe_optimise_choice_options(const tippe_optimise_spec *s, int choice, int
 enum { CON_EPS, CON_SPIN, CON_WALL, CON_WEIGHT, N_CON };
 
 /* optimise_candidate.c */
-void tippe_optimise_evaluate_margins(const tippe_optimise_spec *s, int choice, const double *x, int n_scan, tippe_optimise_eval *out, double margin[N_CON]);
+void tippe_optimise_evaluate_margins(const tippe_optimise_spec *s, int choice, const double *x,
+                                     int n_scan, tippe_optimise_eval *out, double margin[N_CON]);
 
 #endif

@@ -69,14 +69,16 @@ static inline void cross3(const double a[3], const double b[3], double out[3])
 
 /* dynamics_equations.c */
 int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o);
-void tippe_dynamics_paper_variables(const dyn_ctx *c, double t, const double *y, const contact *o, tippe_dynamics_sample *s);
+void tippe_dynamics_paper_variables(const dyn_ctx *c, double t, const double *y, const contact *o,
+                                    tippe_dynamics_sample *s);
 double tippe_dynamics_energy(const dyn_ctx *c, const contact *o);
 double tippe_dynamics_jellett(const dyn_ctx *c, const contact *o);
 int tippe_dynamics_rhs(double t, const double y[], double f[], void *params);
 int tippe_dynamics_jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params);
 void tippe_dynamics_euler_angles(const double *p, double *phi, double *psi);
 int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3]);
-void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3]);
+void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3],
+                                double out[3]);
 
 /* dynamics_model.c */
 const gsl_odeiv2_step_type *tippe_dynamics_stepper_type(const char *name);
