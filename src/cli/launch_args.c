@@ -1,0 +1,116 @@
+/* One launch's arguments, from a scenario file or a design with --z2 and
+ * --spin, shared by simulate, check, animate, launch and map. */
+#include "cli.h"
+
+#include "base/json.h"
+#include "tippe/base.h"
+#include "tippe/design.h"
+#include "tippe/scenario.h"
+
+#include <cjson/cJSON.h>
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- one launch, from a scenario file or a design ---------------------------- */
+
+/* The file's kind: a design has "parts" at its top (a scenario never has). */
+static int is_design_file(const char *path)
+{
+    tippe_error err;
+    tippe_json_reader *c = tippe_json_reader_new(path, &err, TIPPE_JSON_WORDS_KEY, "");
+    cJSON *root = NULL;
+    int design = c && tippe_json_load(c, 16, "file", &root) == TIPPE_OK &&
+                 cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts");
+    cJSON_Delete(root);
+    free(c);
+    return design;
+}
+
+/* --phi-dot: a rule, or a rate with its unit, as the override initial.phi_dot. */
+static int add_phi_dot(const char *verb, tippe_cli_launch_args *l)
+{
+    static const char *const rules[] = {"steady", "s1", "s2", "s3"};
+    for (int i = 0; i < 4; i++)
+        if (!strcmp(l->phi_dot, rules[i]))
+            return tippe_cli_sets_add(&l->over, "initial.phi_dot", l->phi_dot) ? 2 : 0;
+    double x;
+    char num[64];
+    if (!tippe_cli_parse_unit(l->phi_dot, "rad/s", &x) || !(fabs(x) <= TIPPE_CLI_RATE_MAX_RAD_S))
+        return tippe_cli_usage_error(verb,
+                                     "--phi-dot '%s': expected steady, s1, s2, s3 or a number "
+                                     "of rad/s from -%g to %g",
+                                     l->phi_dot, TIPPE_CLI_RATE_MAX_RAD_S,
+                                     TIPPE_CLI_RATE_MAX_RAD_S);
+    snprintf(num, sizeof num, "%.17g", x);
+    return tippe_cli_sets_add(&l->over, "initial.phi_dot", num) ? 2 : 0;
+}
+
+/* --friction, --mu, --mu-c and --slip-scale name one law, as in tippe launch (a
+ * coefficient alone selects its law: the scenario's overrides do that). 0, or 2. */
+static int check_friction_opts(const char *verb, tippe_cli_spec *spec,
+                               const tippe_cli_launch_args *l)
+{
+    const tippe_cli_opt *fr = tippe_cli_find_opt(spec, "friction");
+    const tippe_cli_opt *mu = tippe_cli_find_opt(spec, "mu");
+    const tippe_cli_opt *mu_c = tippe_cli_find_opt(spec, "mu-c");
+    const tippe_cli_opt *vs = tippe_cli_find_opt(spec, "slip-scale");
+    const int mu_seen = mu && mu->seen, mu_c_seen = mu_c && mu_c->seen;
+    const int coulomb_seen = mu_c_seen || (vs && vs->seen);
+    const char *law = NULL; /* --friction's value: the last friction.law override */
+    if (fr && fr->seen)
+        for (int i = 0; i < l->over.n; i++)
+            if (!strncmp(l->over.item[i], "friction.law=", 13))
+                law = l->over.item[i] + 13;
+    if (!law && mu_seen && coulomb_seen)
+        return tippe_cli_usage_error(verb, "--mu (s/m, viscous) and --mu-c or --slip-scale "
+                                           "(Coulomb) name different laws: give one, or "
+                                           "--friction");
+    if (law && !strcmp(law, "viscous") && coulomb_seen)
+        return tippe_cli_usage_error(verb, "%s: with the viscous law give --mu (s/m)",
+                                     mu_c_seen ? "--mu-c is the Coulomb coefficient"
+                                               : "--slip-scale is the Coulomb law's "
+                                                 "regularisation");
+    if (law && strcmp(law, "viscous") != 0 && mu_seen)
+        return tippe_cli_usage_error(verb, "--mu (s/m) is the viscous coefficient: with the "
+                                           "%s law give --mu-c",
+                                     law);
+    return 0;
+}
+
+int tippe_cli_launch_finish(const char *verb, tippe_cli_spec *spec, const char *file,
+                            tippe_cli_launch_args *l)
+{
+    int rc;
+    if ((rc = check_friction_opts(verb, spec, l)) != 0)
+        return rc;
+    if (l->phi_dot && (rc = add_phi_dot(verb, l)) != 0)
+        return rc;
+    const int has_z2 = tippe_cli_find_opt(spec, "z2")->seen;
+    l->is_design = is_design_file(file);
+    if (l->is_design && !has_z2)
+        return tippe_cli_usage_error(verb, "--z2 MM is required with a design file");
+    if (!l->is_design && has_z2) {
+        char num[64];
+        snprintf(num, sizeof num, "%.17g", l->z2_mm);
+        tippe_cli_sets_add(&l->over, "top.z2_mm", num);
+    }
+    if (!l->is_design) /* --set names scenario fields, after the shorthands */
+        for (int i = 0; i < l->sets.n; i++)
+            if (tippe_cli_sets_add(&l->over, NULL, l->sets.item[i]))
+                return tippe_cli_usage_error(verb, "more than %d overrides", TIPPE_CLI_MAX_SETS);
+    return 0;
+}
+
+int tippe_cli_launch_load(const char *file, const tippe_cli_launch_args *l, tippe_scenario *sc,
+                          tippe_error *err)
+{
+    return l->is_design ? tippe_scenario_for_design(file, l->z2_mm, l->sets.item, l->sets.n,
+                                                    l->over.item, l->over.n, sc, err)
+                        : tippe_scenario_load(file, l->over.item, l->over.n, sc, err);
+}
