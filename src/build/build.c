@@ -1,5 +1,5 @@
 /* Build sheet: robust settings in measurable units, spins, launch verdicts, BOM. */
-#include "build/build_internal.h"
+#include "build/internal.h"
 
 #include "base/json.h"
 #include "tippe/profile.h"

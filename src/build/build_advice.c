@@ -1,6 +1,6 @@
 /* What would make a design 3-in-1: single changes searched and checked by
  * sweeping the changed design. */
-#include "build/build_internal.h"
+#include "build/internal.h"
 #include "base/json.h"
 #include "tippe/physics.h"
 #include "tippe/profile.h"

@@ -1,6 +1,6 @@
 /* What a maker buys and follows: the bill of materials, the print settings,
  * the file names and the steps of the build sheet. */
-#include "build/build_internal.h"
+#include "build/internal.h"
 #include "base/json.h"
 #include "tippe/physics.h"
 #include "tippe/profile.h"

@@ -1,5 +1,5 @@
 /* The build sheet's text: the terminal report, Markdown and JSON. */
-#include "build/build_internal.h"
+#include "build/internal.h"
 #include "base/json.h"
 #include "tippe/physics.h"
 #include "tippe/profile.h"

@@ -13,7 +13,7 @@
  * parts touch, material is eroded and voids dilated by TOL_MM before comparing:
  * "overlap" means sharing volume more than TOL_MM deep. docs/design-format.md
  * states the resolution this gives. */
-#include "design/design_internal.h"
+#include "design/internal.h"
 #include "tippe/base.h"
 #include "base/json.h"
 
@@ -25,23 +25,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A length in mm that must be > 0 (or >= 0 with allow_zero). */
-int tippe_design_read_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
-                        const char *key, int required, int allow_zero, double *out, int *present)
-{
-    int here = 0;
-    int rc = tippe_json_number(c, obj, prefix, key, required, out, &here);
-    if (present)
-        *present = here;
-    if (rc || !here)
-        return rc;
-    char p[256];
-    tippe_json_path(p, sizeof p, prefix, key);
-    if (allow_zero ? *out < 0 : *out <= 0)
-        return tippe_json_fail(c, p, "must be %s (a length in mm), got %g",
-                               allow_zero ? ">= 0" : "positive", *out);
-    return TIPPE_OK;
-}
 
 /* "0.025 m is 25 mm" / "25000 um is 25 mm": what a length would be in mm if it
  * was typed in metres (small) or micrometres (large), when that fits in
@@ -740,4 +723,22 @@ void tippe_design_free(tippe_design *d)
     free(d->name);
     free(d->parts);
     free(d);
+}
+
+/* A built variant remembers its overrides (and its travel, when that was the
+ * physical one) so that tippe_design_derive() rebuilds the same design. */
+int tippe_design_remember_overrides(tippe_design *d, const char *const *overrides, int n,
+                              tippe_error *err)
+{
+    if (!(d->overrides = calloc((size_t)n + 1, sizeof *d->overrides)))
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    char travel[128];
+    snprintf(travel, sizeof travel, "travel_mm=[%.17g,%.17g]", d->travel_mm[0], d->travel_mm[1]);
+    for (int i = 0; i <= n; i++) {
+        if (i == n && !d->travel_physical)
+            break;
+        if (!(d->overrides[d->n_overrides++] = tippe_design_dup_string(i < n ? overrides[i] : travel)))
+            return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    }
+    return TIPPE_OK;
 }

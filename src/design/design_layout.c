@@ -1,7 +1,7 @@
 /* Where the parts are: each part as z intervals at a radius r of the (r, z)
  * half-plane, overlap and travel decided by interval arithmetic (see the note at
  * the top of design.c), the physical travel, and what can be printed. */
-#include "design/design_internal.h"
+#include "design/internal.h"
 
 #include <cjson/cJSON.h>
 #include <gsl/gsl_errno.h>

@@ -1,7 +1,7 @@
 /* A loaded design as the rest of tippe sees it: the top at Z2, the accessors of
  * its parts and the numeric fields that --set, --vary and the tolerances name.
  * Calls neither the loader nor the tolerances (which call these). */
-#include "design/design_internal.h"
+#include "design/internal.h"
 
 #include <cjson/cJSON.h>
 #include <gsl/gsl_errno.h>

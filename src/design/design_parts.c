@@ -1,6 +1,6 @@
 /* The parts of a design file and the materials table: their keys, each part's
  * shape, dimensions and material read and checked (naming the file and field). */
-#include "design/design_internal.h"
+#include "design/internal.h"
 
 #include <cjson/cJSON.h>
 #include <gsl/gsl_errno.h>
@@ -25,6 +25,24 @@ static int check_density(const tippe_json_reader *c, const char *path, double v)
                            "22.59 g/cm^3)%s",
                            v, hint);
 }
+/* A length in mm that must be > 0 (or >= 0 with allow_zero). */
+int tippe_design_read_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
+                        const char *key, int required, int allow_zero, double *out, int *present)
+{
+    int here = 0;
+    int rc = tippe_json_number(c, obj, prefix, key, required, out, &here);
+    if (present)
+        *present = here;
+    if (rc || !here)
+        return rc;
+    char p[256];
+    tippe_json_path(p, sizeof p, prefix, key);
+    if (allow_zero ? *out < 0 : *out <= 0)
+        return tippe_json_fail(c, p, "must be %s (a length in mm), got %g",
+                               allow_zero ? ">= 0" : "positive", *out);
+    return TIPPE_OK;
+}
+
 /* ---------------------------------------------------------------- schema */
 
 const char *const tippe_design_top_keys[] = {"name", "notes", "radius_mm", "travel_mm", "materials",
@@ -460,4 +478,14 @@ int tippe_design_materials_file(const char *design_path, char *buf, size_t size,
     cJSON_Delete(root);
     free(c);
     return rc;
+}
+
+/* The source's materials table (a copy the caller deletes) if it is the one
+ * tippe_design_build() is about to read; 0 if not. */
+int tippe_design_source_materials(const tippe_design *d, const char *mat_file, cJSON **out)
+{
+    if (!d->source || !d->source->materials || strcmp(mat_file, d->source->mat_file))
+        return 0;
+    *out = cJSON_Duplicate(d->source->materials, 1);
+    return *out != NULL;
 }

@@ -1,6 +1,6 @@
 /* One candidate of a search: the spec's choice and parameters turned into
  * design overrides, loaded and swept, and scored (see tippe/optimise.h). */
-#include "optimise/optimise_internal.h"
+#include "optimise/internal.h"
 #include "tippe/design.h"
 #include "tippe/physics.h"
 #include "tippe/sweep.h"

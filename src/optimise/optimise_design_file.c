@@ -1,5 +1,5 @@
 /* The best candidate as a design file a user can load. */
-#include "optimise/optimise_internal.h"
+#include "optimise/internal.h"
 #include "tippe/design.h"
 #include "tippe/physics.h"
 #include "tippe/sweep.h"

@@ -1,6 +1,6 @@
 /* The search: NLopt's global algorithm over each choice, then a local polish
  * (see tippe/optimise.h); NLopt is opened when a search runs. */
-#include "optimise/optimise_internal.h"
+#include "optimise/internal.h"
 #include "tippe/design.h"
 #include "tippe/physics.h"
 #include "tippe/sweep.h"

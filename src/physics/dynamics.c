@@ -2,7 +2,7 @@
  * the energy and Jellett monitors, the lost-contact event, and the run that ends
  * in a proved verdict (dynamics_verdict.c). docs/dynamics.md derives the
  * equations and documents each criterion. */
-#include "physics/dynamics_internal.h"
+#include "physics/dynamics_state.h"
 #include "tippe/base.h"
 
 #include "physics/dynamics_verdict.h"

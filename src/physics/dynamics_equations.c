@@ -1,7 +1,7 @@
 /* The equations of motion in the lab frame (the right-hand side, its Jacobian,
  * the contact and its normal force, eq 3.19) and the paper's variables and
  * monitors (energy, Jellett's J, Euler angles) computed from a state. */
-#include "physics/dynamics_internal.h"
+#include "physics/dynamics_state.h"
 #include "tippe/base.h"
 
 #include <float.h>

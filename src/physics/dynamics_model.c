@@ -1,7 +1,7 @@
 /* The dynamics' model and options: the names of verdicts, decisions and
  * friction laws, the accuracy presets and steppers, whether a model dissipates,
  * and the steady precession a launch starts from. Calls nothing of the run. */
-#include "physics/dynamics_internal.h"
+#include "physics/dynamics_state.h"
 #include "tippe/base.h"
 
 #include <float.h>

@@ -1,4 +1,4 @@
-/* build/build_internal.h: what the build module's files share and no other
+/* build/internal.h: what the build module's files share and no other
  * module sees. */
 #ifndef TIPPE_BUILD_INTERNAL_H
 #define TIPPE_BUILD_INTERNAL_H

@@ -1,4 +1,4 @@
-/* optimise/optimise_internal.h: the spec's representation and what the
+/* optimise/internal.h: the spec's representation and what the
  * optimise module's files share; no other module sees it. */
 #ifndef TIPPE_OPTIMISE_INTERNAL_H
 #define TIPPE_OPTIMISE_INTERNAL_H
@@ -67,7 +67,7 @@ struct tippe_optimise_spec {
     int n_choices;
 };
 
-/* optimise_spec.c */
+/* optimise_read.c */
 void tippe_optimise_choice_options(const tippe_optimise_spec *s, int choice, int *idx);
 
 /* The constraints' margins of a candidate: relative (so that they add

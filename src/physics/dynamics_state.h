@@ -1,7 +1,7 @@
-/* physics/dynamics_internal.h: what the dynamics files share (the state's
+/* physics/dynamics_state.h: what the dynamics files share (the state's
  * layout, the run's context, the contact) and no other module sees. */
-#ifndef TIPPE_PHYSICS_DYNAMICS_INTERNAL_H
-#define TIPPE_PHYSICS_DYNAMICS_INTERNAL_H
+#ifndef TIPPE_PHYSICS_DYNAMICS_STATE_H
+#define TIPPE_PHYSICS_DYNAMICS_STATE_H
 
 #include <gsl/gsl_odeiv2.h>
 #include <stddef.h>

@@ -6,7 +6,7 @@
  * root-found sweep. NLopt searches each choice on its own thread; nothing is
  * shared between choices but the read-only spec, so the result does not depend
  * on how many threads there are. */
-#include "optimise/optimise_internal.h"
+#include "optimise/internal.h"
 #include "tippe/design.h"
 #include "base/json.h"
 #include "tippe/sweep.h"

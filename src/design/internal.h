@@ -1,4 +1,4 @@
-/* design/design_internal.h: what the design module's files share and no other
+/* design/internal.h: what the design module's files share and no other
  * module sees. */
 #ifndef TIPPE_DESIGN_INTERNAL_H
 #define TIPPE_DESIGN_INTERNAL_H
@@ -96,6 +96,13 @@ struct tippe_design {
     int travel_physical, coarse_layout;
 };
 
+/* A design file parsed once (design_source.c). */
+struct tippe_design_source {
+    char *path;
+    cJSON *root;      /* the design file as parsed (duplicate keys refused) */
+    char mat_file[1024];
+    cJSON *materials; /* the materials table it names, read and checked once; or NULL */
+};
 
 /* ---- what one file of the module calls in another ---- */
 
@@ -106,15 +113,18 @@ typedef struct {
 } ivset;
 
 /* design.c: the loader's pieces that design sources reuse. */
+int tippe_design_remember_overrides(tippe_design *d, const char *const *overrides, int n,
+                                    tippe_error *err);
 char *tippe_design_dup_string(const char *s);
 int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d,
                        int check);
-/* A length in mm that must be > 0 (or >= 0 with allow_zero). */
+
+/* design_parts.c: the file's keys, the parts and the materials table. */
+/* a length in mm that must be > 0 (or >= 0 with allow_zero) */
 int tippe_design_read_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
                              const char *key, int required, int allow_zero, double *out,
                              int *present);
-
-/* design_parts.c: the file's keys, the parts and the materials table. */
+int tippe_design_source_materials(const tippe_design *d, const char *mat_file, cJSON **out);
 extern const char *const tippe_design_top_keys[];
 extern const char *const tippe_design_top_string_keys[];
 extern const char *const tippe_design_part_string_keys[];
@@ -126,11 +136,8 @@ int tippe_design_lookup_material(const tippe_json_reader *c, const cJSON *table,
                                  const char *mat_file, const char *name, const char *path,
                                  double *density, int *printable);
 
-/* design_overrides.c: --set overrides and design sources. */
+/* design_overrides.c: --set overrides. */
 int tippe_design_apply_override(tippe_json_reader *c, cJSON *root, const char *text);
-int tippe_design_source_materials(const tippe_design *d, const char *mat_file, cJSON **out);
-int tippe_design_remember_overrides(tippe_design *d, const char *const *overrides, int n,
-                                    tippe_error *err);
 
 /* design_layout.c: where the parts are. */
 int tippe_design_check_layout(const tippe_json_reader *c, tippe_design *d);
