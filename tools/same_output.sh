@@ -10,14 +10,15 @@
 # and PDF creation dates are dropped first, since they change from run to run.
 #
 # Usage: tools/same_output.sh OLD_BUILD_DIR NEW_BUILD_DIR
-# Exit 0 when everything matches; otherwise the differing files are listed.
+# Exit 0 when everything matches; otherwise the differing files are listed (KEEP=1
+# keeps the scratch folders to look at).
 set -euo pipefail
 [ $# -eq 2 ] || { echo "usage: $0 OLD_BUILD_DIR NEW_BUILD_DIR" >&2; exit 2; }
 repo=$(cd "$(dirname "$0")/.." && pwd)
 old=$(cd "$1" && pwd)
 new=$(cd "$2" && pwd)
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+[ -n "${KEEP:-}" ] || trap 'rm -rf "$work"' EXIT
 
 # The command list, once, for both runs.
 {
@@ -68,13 +69,21 @@ echo "same_output: $(wc -l < "$work/commands") commands, each with $old and $new
 run_all "$old" "$work/a"
 run_all "$new" "$work/b"
 
-# Times and dates change from run to run: drop those lines in text outputs.
+# Times change from run to run: mask them (the same way in both runs). A 3MF
+# is a zip whose entries carry the time they were written: compare its entries'
+# contents instead.
 normalise() {
     find "$1" -type f \( -name '*.out' -o -name '*.err' -o -name '*.md' -o -name '*.json' \
         -o -name '*.csv' -o -name '*.txt' -o -name '*.scad' \) -print0 |
-        xargs -0 -r sed -i -E '/took|[0-9] ?ms\b|s left|elapsed|wall|CreationDate|ModDate/d'
-    find "$1" -type f -name '*.pdf' -print0 |
-        xargs -0 -r sed -i -E '/CreationDate|ModDate/d' 2>/dev/null || true
+        xargs -0 -r sed -i -E 's/(evaluations|took|in|elapsed)(,? )[0-9.e+-]+ ?m?s\b/\1\2T/g;
+            s/"(elapsed_s|seconds)": *[0-9.e+-]+/"\1": T/g; /s left|CreationDate|ModDate/d'
+    find "$1" -type f -name '*.3mf' -print0 | while IFS= read -r -d '' f; do
+        python3 -c 'import sys, zipfile
+z = zipfile.ZipFile(sys.argv[1])
+for n in sorted(z.namelist()):
+    sys.stdout.buffer.write(n.encode() + b"\n" + z.read(n))' "$f" > "$f.entries" && rm "$f"
+    done
+    find "$1" -maxdepth 1 -type l -delete
 }
 normalise "$work/a"
 normalise "$work/b"

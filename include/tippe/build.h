@@ -233,15 +233,6 @@ int tippe_build_gauge_applies(const tippe_build_sheet *s, int family, double *pi
 /* A hole gauge's pin diameter: 1 mm narrower than the printed hole, and with a
  * heat-set insert 0.5 mm narrower than its thread's minor diameter (ISO 724). */
 double tippe_build_gauge_pin_diameter_mm(const tippe_build_sheet *s);
-/* Writes setting family's gauge as binary STL (TIPPE_EINPUT if none applies). */
-int tippe_build_gauge_write(const tippe_build_sheet *s, int family, const char *path,
-                            tippe_error *err);
 
-/* The sheet on one page (A3 landscape): the section drawing with the weight
- * at the flip's setting, the settings table, bill of materials, thread, print
- * settings, notes and steps. The format follows path's extension: .pdf, .svg
- * (cairo; text as glyphs) or .png (1906 x 1347 px). Written atomically. */
-int tippe_build_sheet_write(const tippe_design *d, const tippe_build_sheet *s, const char *path,
-                            tippe_error *err);
 
 #endif

@@ -12,6 +12,7 @@
 
 #include <stddef.h>
 
+#include "tippe/build.h"
 #include "tippe/design.h"
 #include "tippe/base.h"
 #include "tippe/profile.h"
@@ -80,5 +81,18 @@ void tippe_export_result_free(tippe_export_result *r);
 
 /* "m12-setscrew" for "designs/m12-setscrew.json". */
 void tippe_export_stem(const tippe_design *d, char *out, size_t size);
+
+/* ---- the build sheet (src/export/build_sheet.c), from tippe_build_compute ---- */
+
+/* Writes setting family's gauge as binary STL (TIPPE_EINPUT if none applies). */
+int tippe_export_gauge_write(const tippe_build_sheet *s, int family, const char *path,
+                             tippe_error *err);
+
+/* The sheet on one page (A3 landscape): the section drawing with the weight
+ * at the flip's setting, the settings table, bill of materials, thread, print
+ * settings, notes and steps. The format follows path's extension: .pdf, .svg
+ * (cairo; text as glyphs) or .png (1906 x 1347 px). Written atomically. */
+int tippe_export_sheet_write(const tippe_design *d, const tippe_build_sheet *s, const char *path,
+                            tippe_error *err);
 
 #endif

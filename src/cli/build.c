@@ -142,11 +142,11 @@ static int write_sheet(const tippe_design *d, const tippe_build_sheet *s,
         rc = tippe_report_commit(&rf, err);
     }
     for (int k = 2; !rc && k < N_SHEET; k++)
-        rc = tippe_build_sheet_write(d, s, paths[k], err);
+        rc = tippe_export_sheet_write(d, s, paths[k], err);
     double pin;
     for (int f = 0; !rc && f < 3; f++)
         if (tippe_build_gauge_applies(s, f, &pin))
-            rc = tippe_build_gauge_write(s, f, paths[N_SHEET + f], err);
+            rc = tippe_export_gauge_write(s, f, paths[N_SHEET + f], err);
     return rc;
 }
 

@@ -362,8 +362,8 @@ static cairo_status_t to_file(void *closure, const unsigned char *data, unsigned
                                                               : CAIRO_STATUS_WRITE_ERROR;
 }
 
-int tippe_build_sheet_write(const tippe_design *d, const tippe_build_sheet *s, const char *path,
-                            tippe_error *err)
+int tippe_export_sheet_write(const tippe_design *d, const tippe_build_sheet *s, const char *path,
+                             tippe_error *err)
 {
     const char *dot = strrchr(path, '.');
     const char *ext = dot ? dot + 1 : "";
@@ -399,8 +399,8 @@ int tippe_build_sheet_write(const tippe_design *d, const tippe_build_sheet *s, c
 
 /* ------------------------------------------------------------ gauges */
 
-int tippe_build_gauge_write(const tippe_build_sheet *s, int f, const char *path,
-                            tippe_error *err)
+int tippe_export_gauge_write(const tippe_build_sheet *s, int f, const char *path,
+                             tippe_error *err)
 {
     double pin;
     if (!tippe_build_gauge_applies(s, f, &pin))

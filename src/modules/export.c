@@ -27,14 +27,14 @@ void tippe_export_result_free(tippe_export_result *r)
     TIPPE_MODULE_FREE(&export_module, tippe_export_result_free, r);
 }
 
-int tippe_build_sheet_write(const tippe_design *d, const tippe_build_sheet *s, const char *path,
-                            tippe_error *err)
+int tippe_export_sheet_write(const tippe_design *d, const tippe_build_sheet *s, const char *path,
+                             tippe_error *err)
 {
-    TIPPE_MODULE_CALL(&export_module, tippe_build_sheet_write, err, d, s, path, err);
+    TIPPE_MODULE_CALL(&export_module, tippe_export_sheet_write, err, d, s, path, err);
 }
 
-int tippe_build_gauge_write(const tippe_build_sheet *s, int family, const char *path,
-                            tippe_error *err)
+int tippe_export_gauge_write(const tippe_build_sheet *s, int family, const char *path,
+                             tippe_error *err)
 {
-    TIPPE_MODULE_CALL(&export_module, tippe_build_gauge_write, err, s, family, path, err);
+    TIPPE_MODULE_CALL(&export_module, tippe_export_gauge_write, err, s, family, path, err);
 }
