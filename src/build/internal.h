@@ -32,7 +32,7 @@ void tippe_build_weigh_offset(const tippe_design *d, tippe_build_sheet *s);
 const char *tippe_build_mm(double v, char *buf, size_t size);
 const char *tippe_build_turns(double v, char *buf, size_t size);
 
-/* build.c */
+/* build_hardware.c */
 double tippe_build_minor_diameter_mm(const tippe_build_thread *t);
 
 #endif

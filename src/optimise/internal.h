@@ -67,7 +67,7 @@ struct tippe_optimise_spec {
     int n_choices;
 };
 
-/* optimise_read.c */
+/* optimise_candidate.c */
 void tippe_optimise_choice_options(const tippe_optimise_spec *s, int choice, int *idx);
 
 /* The constraints' margins of a candidate: relative (so that they add

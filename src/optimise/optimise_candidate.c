@@ -49,6 +49,16 @@ static double tie_value(const tippe_optimise_spec *s, int k, const int *idx, con
     return t->times * from + t->plus_mm;
 }
 
+/* The option of each choose entry in combination `choice` (mixed radix, the
+ * first entry varying slowest). */
+void tippe_optimise_choice_options(const tippe_optimise_spec *s, int choice, int *idx)
+{
+    for (int k = s->n_choose - 1; k >= 0; k--) {
+        idx[k] = choice % s->choose[k].n;
+        choice /= s->choose[k].n;
+    }
+}
+
 int tippe_optimise_overrides(const tippe_optimise_spec *s, int choice, const double *x, char (*buf)[256],
                         int cap)
 {

@@ -646,16 +646,6 @@ int tippe_optimise_spec_n_choices(const tippe_optimise_spec *s) { return s->n_ch
 const char *tippe_optimise_spec_path(const tippe_optimise_spec *s) { return s->path; }
 const tippe_design_source *tippe_optimise_spec_design(const tippe_optimise_spec *s) { return s->src; }
 
-/* The option of each choose entry in combination `choice` (mixed radix, the
- * first entry varying slowest). */
-void tippe_optimise_choice_options(const tippe_optimise_spec *s, int choice, int *idx)
-{
-    for (int k = s->n_choose - 1; k >= 0; k--) {
-        idx[k] = choice % s->choose[k].n;
-        choice /= s->choose[k].n;
-    }
-}
-
 const char *tippe_optimise_spec_choice_label(const tippe_optimise_spec *s, int choice, char *buf,
                                         size_t cap)
 {

@@ -1,0 +1,198 @@
+#!/usr/bin/env python3
+"""The house's rules, checked from the compiler's objects and the sources
+(docs/architecture.md):
+
+1. names: every symbol libtippe.a exports starts with tippe_ and a name its folder
+   owns (a misspelt or foreign module prefix is a leak between modules);
+2. layers: a folder includes public headers (tippe/NAME.h) only of modules on
+   its own layer or below, and internal headers only of its own folder (and
+   base's JSON reader, the plumbing of every loader);
+3. no cycles: file A calls file B when an undefined symbol of A.o is defined by
+   B.o (nm); the calls between the library's and the command's files form no
+   circle, and a call between folders never runs up a layer.
+
+Usage: check_house.py SOURCE_DIR BUILD_DIR. Prints one line per breach and the
+closing line 'N passed, M failed'."""
+import os
+import re
+import subprocess
+import sys
+
+src_root, build = sys.argv[1], sys.argv[2]
+
+# Bottom up; a folder may use its own layer and those below.
+LAYER = {"base": 0, "design": 1, "physics": 2, "profile": 3, "scenario": 4, "sweep": 4,
+         "optimise": 5, "build": 5, "plot": 6, "export": 6, "animate": 6,
+         "cli": 7, "modules": 7, "serve": 7}
+HEADER_LAYER = {"base": 0, "design": 1, "physics": 2, "profile": 3, "scenario": 4,
+                "sweep": 4, "optimise": 5, "build": 5, "plot": 6, "export": 6, "animate": 6,
+                "serve": 7}
+# The names each folder's objects may export (after tippe_).
+OWNS = {
+    "base": ["error", "gsl", "report", "progress", "json"],
+    "design": ["design", "tolerance", "tolerances", "materials", "moments", "print", "ball",
+               "shell", "tube", "torus", "gcode"],
+    "physics": ["theory", "dynamics", "launch", "group", "verdict", "decision", "friction",
+                "final", "contact"],
+    "profile": ["profile"],
+    "scenario": ["scenario"],
+    "sweep": ["sweep"],
+    "optimise": ["optimise"],
+    "build": ["build"],
+    "plot": ["plot", "sweep_plot", "launch_plot", "optimise_plot"],
+    "export": ["export", "mesh", "drawing", "scad", "slice"],
+    "animate": ["animate", "film", "scene", "encode"],
+}
+
+failures, checks = [], 0
+
+
+def fail(msg):
+    failures.append(msg)
+    print("FAIL " + msg)
+
+
+def objects():
+    """(folder, file, path of .o) of the library's and the command's objects."""
+    out = []
+    for d, _, files in os.walk(build):
+        if "/tests" in d[len(build):] or "/tools" in d[len(build):]:
+            continue
+        for f in files:
+            if not f.endswith(".c.o"):
+                continue
+            m = re.search(r"/src/([a-z_]+)/([a-z_0-9]+\.c)\.o$", os.path.join(d, f))
+            source = os.path.join(src_root, "src", m.group(1), m.group(2)) if m else ""
+            if m and os.path.exists(source) and "tippe-mpi.dir" not in d \
+                    and "_module.dir" not in d:
+                out.append((m.group(1), m.group(2), os.path.join(d, f)))
+    return out
+
+
+objs = objects()
+if len(objs) < 40:
+    sys.exit("check_house: found only %d objects under %s (build it first)" % (len(objs), build))
+
+# 1. names
+for folder, name, path in objs:
+    if folder in ("cli", "modules"):
+        continue
+    text = subprocess.run(["nm", "-g", "--defined-only", path], capture_output=True,
+                          text=True).stdout
+    for line in text.splitlines():
+        parts = line.split()
+        if len(parts) < 3:
+            continue
+        sym = parts[2]
+        checks += 1
+        if sym.startswith(".gomp_critical_user_tippe_"):
+            continue  # an OpenMP named critical section: tippe_ by its name
+        if not sym.startswith("tippe_"):
+            fail("names: src/%s/%s exports %s (no tippe_ prefix)" % (folder, name, sym))
+        elif not any(sym[6:] == own or sym[6:].startswith(own + "_") for own in OWNS[folder]):
+            fail("names: src/%s/%s exports %s (not a name of %s: %s)" %
+                 (folder, name, sym, folder, ", ".join(OWNS[folder])))
+
+# 2. layers, by the includes of every source and internal header
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+for folder in sorted(os.listdir(os.path.join(src_root, "src"))):
+    fdir = os.path.join(src_root, "src", folder)
+    if not os.path.isdir(fdir):
+        continue
+    for f in sorted(os.listdir(fdir)):
+        if not f.endswith((".c", ".h")):
+            continue
+        text = open(os.path.join(fdir, f), encoding="utf-8").read()
+        for inc in INCLUDE.findall(text):
+            checks += 1
+            where = "src/%s/%s includes \"%s\"" % (folder, f, inc)
+            m = re.match(r"tippe/([a-z_]+)\.h$", inc)
+            if m:
+                mod = m.group(1)
+                if mod not in HEADER_LAYER:
+                    fail("layers: %s: no such module" % where)
+                elif HEADER_LAYER[mod] > LAYER[folder]:
+                    fail("layers: %s: %s (layer %d) is above %s (layer %d)" %
+                         (where, mod, HEADER_LAYER[mod], folder, LAYER[folder]))
+                continue
+            m = re.match(r"(?:\.\./)?([a-z_]+)/[a-z_]+\.h$", inc)
+            if m:
+                other = m.group(1)
+                if other != folder and inc != "base/json.h" and \
+                        not (folder == "cli" and other == "modules"):
+                    fail("layers: %s: another module's internal header" % where)
+
+# 3. calls between files
+defined, undefined = {}, {}
+for folder, name, path in objs:
+    if folder == "modules":
+        continue  # the command's stubs define the heavy modules' names again
+    key = "src/%s/%s" % (folder, name)
+    text = subprocess.run(["nm", path], capture_output=True, text=True).stdout
+    d, u = set(), set()
+    for line in text.splitlines():
+        parts = line.split()
+        if len(parts) == 2 and parts[0] == "U":
+            u.add(parts[1])
+        elif len(parts) == 3 and parts[1] in "TDBRC":
+            d.add(parts[2])
+    defined[key], undefined[key] = d, u
+owner = {}
+for key, syms in defined.items():
+    for s in syms:
+        owner.setdefault(s, key)
+edges = {k: set() for k in defined}
+why = {}
+for key, syms in undefined.items():
+    for s in syms:
+        if s in owner and owner[s] != key:
+            edges[key].add(owner[s])
+            why.setdefault((key, owner[s]), []).append(s)
+for a, bs in sorted(edges.items()):
+    for b in sorted(bs):
+        checks += 1
+        fa, fb = a.split("/")[1], b.split("/")[1]
+        if LAYER[fb] > LAYER[fa]:
+            fail("layers: %s calls %s, a layer up (%s)" % (a, b, ", ".join(sorted(why[(a, b)])[:4])))
+
+# Tarjan's strongly connected components: any with two files or more is a cycle.
+index, low, stack, on, comps, counter = {}, {}, [], set(), [], [0]
+sys.setrecursionlimit(10000)
+
+
+def strong(v):
+    index[v] = low[v] = counter[0]
+    counter[0] += 1
+    stack.append(v)
+    on.add(v)
+    for w in edges[v]:
+        if w not in index:
+            strong(w)
+            low[v] = min(low[v], low[w])
+        elif w in on:
+            low[v] = min(low[v], index[w])
+    if low[v] == index[v]:
+        comp = []
+        while True:
+            w = stack.pop()
+            on.discard(w)
+            comp.append(w)
+            if w == v:
+                break
+        comps.append(comp)
+
+
+for v in sorted(edges):
+    if v not in index:
+        strong(v)
+checks += 1
+for comp in comps:
+    if len(comp) > 1:
+        ties = ["%s -> %s: %s" % (a, b, ", ".join(sorted(why[(a, b)])[:4]))
+                for a in sorted(comp) for b in sorted(edges[a]) if b in comp]
+        fail("cycle: %s call each other around (%s)" % (", ".join(sorted(comp)), "; ".join(ties)))
+
+print("check_house: %d objects, %d file-to-file calls, %d includes and symbols checked" %
+      (len(defined), sum(len(b) for b in edges.values()), checks))
+print("%d passed, %d failed" % (checks - len(failures), len(failures)))
+sys.exit(1 if failures else 0)
