@@ -56,7 +56,7 @@ run_all() { # BUILD_DIR SCRATCH
     local scratch=$2 k=0
     mkdir -p "$scratch/out" "$scratch/docs/img" "$scratch/res"
     ln -s "$1" "$scratch/build"
-    ln -s "$repo/designs" "$scratch/designs"
+    cp -r "$repo/designs" "$scratch/designs" # some examples write into designs/
     ln -s "$repo/tools" "$scratch/tools"
     while IFS= read -r cmd; do
         k=$((k + 1))
@@ -76,13 +76,18 @@ normalise() {
     find "$1" -type f \( -name '*.out' -o -name '*.err' -o -name '*.md' -o -name '*.json' \
         -o -name '*.csv' -o -name '*.txt' -o -name '*.scad' \) -print0 |
         xargs -0 -r sed -i -E 's/(evaluations|took|in|elapsed)(,? )[0-9.e+-]+ ?m?s\b/\1\2T/g;
-            s/"(elapsed_s|seconds)": *[0-9.e+-]+/"\1": T/g; /s left|CreationDate|ModDate/d'
+            s/[0-9.]+ s on /T s on /g; s/[0-9.]+ (launches|cells|candidates)\/s/T \1\/s/g;
+            s/^(time +)[0-9.e+-]+ s/\1T s/; s/"(elapsed_s|seconds)": *[0-9.e+-]+/"\1": T/g;
+            /s left|CreationDate|ModDate/d'
     find "$1" -type f -name '*.3mf' -print0 | while IFS= read -r -d '' f; do
         python3 -c 'import sys, zipfile
 z = zipfile.ZipFile(sys.argv[1])
 for n in sorted(z.namelist()):
     sys.stdout.buffer.write(n.encode() + b"\n" + z.read(n))' "$f" > "$f.entries" && rm "$f"
     done
+    # 3MF objects get random UUIDs, PDFs the time they were made.
+    find "$1" -type f \( -name '*.entries' -o -name '*.pdf' \) -print0 |
+        LC_ALL=C xargs -0 -r sed -i -E 's/UUID="[0-9a-f-]+"/UUID="U"/g; s/\(D:[0-9]+Z\)/(D)/g'
     find "$1" -maxdepth 1 -type l -delete
 }
 normalise "$work/a"
