@@ -13,7 +13,7 @@
 #include <string.h>
 #include <unistd.h>
 
-/* lib3mf 1.8's C entry points (see src/mesh.c for why they are declared here). */
+/* lib3mf 1.8's C entry points (see src/export/mesh.c for why they are declared here). */
 int lib3mf_createmodel(void **model);
 int lib3mf_release(void *instance);
 int lib3mf_model_queryreader(void *model, const char *reader_class, void **reader);

@@ -1,4 +1,4 @@
-/* tippe/scene.h and tippe/animate.h: the picture shows the state it is given,
+/* tippe/animate.h and tippe/animate.h: the picture shows the state it is given,
  * and a film's frames are states at exact frame times. */
 #include "check.h"
 

@@ -1,4 +1,4 @@
-/* tippe/encode.h when the output fails: a film written to a full disk
+/* tippe/animate.h when the output fails: a film written to a full disk
  * (/dev/full) fails with a message, and leaves nothing allocated behind
  * (issue 19.11: the GIF muxer's held packet leaked when a write failed). */
 #include "check.h"

@@ -1,4 +1,4 @@
-/* Tests of hand launches (tippe/launch.h) and the progress bar (tippe/progress.h):
+/* Tests of hand launches (tippe/physics.h) and the progress bar (tippe/base.h):
  * Wilson intervals against their closed forms, the per-launch generators and the
  * launch distributions, bit-identical runs on 1 and 2 OpenMP threads, tallies,
  * the central launch, and outcomes that Theorem 5.1 forbids. */

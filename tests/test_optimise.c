@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The layout code lets parts touch within 1e-6 mm (TOL_MM in src/design.c). */
+/* The layout code lets parts touch within 1e-6 mm (TOL_MM in src/design/internal.h). */
 #define TRAVEL_TOL_MM 1e-5
 
 static void test_blind_hole_travel(void)

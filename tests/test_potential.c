@@ -1,4 +1,4 @@
-/* The effective potential V(theta; J) and its wells (tippe/theory.h), checked
+/* The effective potential V(theta; J) and its wells (tippe/physics.h), checked
  * against quantities computed another way: the energy of random states from the
  * dynamics module (E >= V), the intermediate states of eq 5.10 (critical points),
  * Theorem 5.1's predictions (minima) and a dense scan of V's slope (completeness). */

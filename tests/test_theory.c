@@ -1,6 +1,6 @@
 /* Tests of the theory module against the definitions of Ciocci et al. 2012,
  * section 5, Theorem 5.1, Appendix A and section 7.1. The inequalities and
- * equations are re-derived here independently of src/theory.c where possible. */
+ * equations are re-derived here independently of src/physics/theory.c where possible. */
 #include "tippe/physics.h"
 
 #include "check.h"

@@ -12,7 +12,7 @@
 #include "tippe/design.h"
 
 /* ==== from tippe/encode.h ==== */
-/* tippe/encode.h: a film from frames drawn one at a time, with FFmpeg's libraries.
+/* Encode: a film from frames drawn one at a time, with FFmpeg's libraries.
  *
  * The caller draws frames into a 32-bit pixel buffer in cairo's ARGB32 layout
  * (one native-endian 32-bit word per pixel, alpha in the top byte, opaque);
@@ -61,7 +61,7 @@ int tippe_encode_film(FILE *out, const tippe_encode_options *o, tippe_frame_fn d
                       tippe_progress *prog, tippe_error *err);
 
 /* ==== from tippe/scene.h ==== */
-/* tippe/scene.h: one picture of the top on its table, drawn with cairo.
+/* Scene: one picture of the top on its table, drawn with cairo.
  *
  * The ball is a transparent shell seen from a camera above the table (an
  * orthographic view, elevation 28 degrees by default, looking along the lab's
@@ -73,11 +73,11 @@ int tippe_encode_film(FILE *out, const tippe_encode_options *o, tippe_frame_fn d
  * disc). Under the ball: its shadow and the recent path of the contact point.
  * Parts on the far side of the shell are drawn faded, seen through it.
  *
- * The pose comes from a trajectory-level sample of tippe/dynamics.h: the
+ * The pose comes from a trajectory-level sample of tippe/physics.h: the
  * rotation Rz(phi) Ry(theta) Rz(psi) (docs/dynamics.md), the centre of mass at
  * (x, y) on the table and the sphere's centre R above the table.
  *
- * Pixels are cairo's ARGB32 (tippe/encode.h): the public interface keeps cairo
+ * Pixels are cairo's ARGB32 (tippe/animate.h): the public interface keeps cairo
  * to itself. Reentrant: nothing global. */
 
 typedef struct {
@@ -137,7 +137,7 @@ void tippe_scene_contact(const tippe_scene *sc, const tippe_dynamics_sample *s, 
                          double *y_m);
 
 /* ==== from tippe/animate.h ==== */
-/* tippe/animate.h: a film of one launch (what `tippe animate` writes).
+/* Animate: a film of one launch (what `tippe animate` writes).
  *
  * A film is made in three steps, each reading only what the one before made:
  *   1. plan:    the launch to its t_end, sampled coarsely (4096 samples), says
@@ -148,12 +148,12 @@ void tippe_scene_contact(const tippe_scene *sc, const tippe_dynamics_sample *s, 
  *               nothing is proved), and maps model time to film time (speed:
  *               model seconds per film second);
  *   2. compute: the launch again at the trajectory level, sampled at exact
- *               times (the integrator lands on them, tippe/dynamics.h): every
+ *               times (the integrator lands on them, tippe/physics.h): every
  *               frame's time, and between frames often enough to draw the
  *               contact point's path (16 samples per turn at the launch's
  *               rotation rate). Frames therefore do not depend on step sizes;
- *   3. draw:    each frame from its sample (tippe/scene.h), encoded with
- *               tippe/encode.h, or one frame as a PNG.
+ *   3. draw:    each frame from its sample (tippe/animate.h), encoded with
+ *               tippe/animate.h, or one frame as a PNG.
  * The library never prints: a tippe_progress (may be NULL) counts frames. */
 
 /* The launch to film. */
@@ -163,7 +163,7 @@ typedef struct {
     tippe_dynamics_initial initial;
     double t_end;                    /* s, the launch's bound (as in a scenario) */
     tippe_dynamics_accuracy accuracy;
-    /* The moving weight in the picture (tippe/scene.h); radius 0: none. */
+    /* The moving weight in the picture (tippe/animate.h); radius 0: none. */
     double weight_offset_m, weight_radius_m;
 } tippe_animate_launch;
 
@@ -213,7 +213,7 @@ int tippe_film_make_still(const tippe_animate_launch *launch, const tippe_animat
 
 void tippe_film_free(tippe_film *film);
 
-/* Step 3: the film in the given format to out (see tippe/encode.h). */
+/* Step 3: the film in the given format to out (see tippe/animate.h). */
 int tippe_film_write(const tippe_film *film, tippe_film_format format, FILE *out,
                      tippe_progress *prog, tippe_error *err);
 

@@ -8,7 +8,7 @@
 #include <stdio.h>
 
 /* ==== from tippe/error.h ==== */
-/* tippe/error.h: how every tippe function reports failure.
+/* Error: how every tippe function reports failure.
  *
  * Like GSL, a function returns an int status (TIPPE_OK on success) and, when it
  * fails, fills a tippe_error with a message a user can act on: which file, which
@@ -36,7 +36,7 @@ int tippe_error_set(tippe_error *err, int code, const char *fmt, ...)
 void tippe_gsl_errors_as_codes(void);
 
 /* ==== from tippe/report.h ==== */
-/* tippe/report.h: output files that appear whole or not at all, and never
+/* Report: output files that appear whole or not at all, and never
  * cost a user an old file.
  *
  * Where the bytes go depends on what the path names:
@@ -145,7 +145,7 @@ void tippe_report_remove_temporaries(void);
 int tippe_report_committing(void);
 
 /* ==== from tippe/progress.h ==== */
-/* tippe/progress.h: progress of long loops with a time-left estimate.
+/* Progress: progress of long loops with a time-left estimate.
  *
  * On a terminal it is a bar redrawn in place (at most ~5 times a second). On
  * anything else (a pipe, a file, a CI log) a redrawn bar would be noise, so:

@@ -3,14 +3,14 @@
  * For each behaviour the zones offer (stays up: group I; flips: group II;
  * hangs: group III) the build sheet takes the widest run of Z2 within the
  * physical travel (tippe/sweep.h) and shrinks it by the tolerance bands at
- * its ends (tippe/sweep_bands.h): the robust range, where the behaviour holds
+ * its ends (tippe/sweep.h): the robust range, where the behaviour holds
  * whatever the tolerances do (to first order). It converts Z2 into what one
  * measures: the depth of the weight's end below the rim of the hole it is
  * screwed into (a caliper's depth rod rests on the rim), or below the top end
  * of the rod it is screwed onto, and the turns of its thread from flush (the
  * pitch from the hardware catalogue, else ISO 261's coarse pitch). It gives
- * the spin needed there from Theorem 5.1's thresholds (tippe/theory.h) and
- * runs one central hand launch (tippe/launch.h, the check verb's) at a spin
+ * the spin needed there from Theorem 5.1's thresholds (tippe/physics.h) and
+ * runs one central hand launch (tippe/physics.h, the check verb's) at a spin
  * above it, whose verdict is reported beside the behaviour it should give.
  *
  * Units: mm, rev/s in the sheet (the maker's); the library's SI inside. */

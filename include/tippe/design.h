@@ -10,7 +10,7 @@
 #include "tippe/base.h"
 
 /* ==== from tippe/top.h ==== */
-/* tippe/top.h: the one struct that crosses from geometry to physics.
+/* Top: the one struct that crosses from geometry to physics.
  *
  * An eccentric sphere (paper section 3, Figure 4): mass m, sphere radius R,
  * eccentricity eps = distance from the geometric centre to the centre of mass
@@ -36,7 +36,7 @@ static inline double tippe_top_A_over_C(const tippe_top *t) { return t->A / t->C
 static inline double tippe_top_eps_over_R(const tippe_top *t) { return t->eps / t->R; }
 
 /* ==== from tippe/geometry.h ==== */
-/* tippe/geometry.h: mass properties of solids of revolution about the z axis.
+/* Geometry: mass properties of solids of revolution about the z axis.
  *
  * Every solid is described by four integrals over its region (SI units):
  *   m    = rho * \int dV          [kg]
@@ -95,7 +95,7 @@ typedef struct {
 tippe_inertia tippe_moments_inertia(tippe_moments a);
 
 /* ==== from tippe/print.h ==== */
-/* tippe/print.h: a part as an FDM printer makes it -- walls, top/bottom skins
+/* Print: a part as an FDM printer makes it -- walls, top/bottom skins
  * and sparse infill -- and the mass moments that follow.
  *
  * The part is printed with the top's axis vertical (z up): the only
@@ -203,7 +203,7 @@ int tippe_print_infill_for_mass(double mass_kg, double solid_volume_m3, double c
                                 double *mass_at_1);
 
 /* ==== from tippe/design.h ==== */
-/* tippe/design.h: a top described by a design file (JSON), placed at one Z2.
+/* Design: a top described by a design file (JSON), placed at one Z2.
  *
  * A design file gives the sphere radius, named parts (solids of revolution
  * about the z axis, in mm, each of a material from a materials table in
@@ -467,7 +467,7 @@ const char *tippe_design_source_path(const tippe_design_source *s);
 void tippe_design_source_free(tippe_design_source *s);
 
 /* ==== from tippe/tolerance.h ==== */
-/* tippe/tolerance.h: how far a built top may be from its design file.
+/* Tolerance: how far a built top may be from its design file.
  *
  * A design's "tolerances" block (docs/design-format.md) gives, per field, a
  * +/- value: absolute in the field's unit, or "N%" of it. Fields are named as

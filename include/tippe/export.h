@@ -2,8 +2,8 @@
  *
  * One call writes, into one directory, for the printed bodies of a design
  * (tippe/profile.h): a binary STL per body and one 3MF with all bodies
- * (tippe/mesh.h), the OpenSCAD source of the whole top (tippe/scad.h) and the
- * dimensioned cross-section drawing (tippe/drawing.h). Every mesh is audited
+ * (src/export/mesh.h), the OpenSCAD source of the whole top (src/export/scad.h) and the
+ * dimensioned cross-section drawing (src/export/drawing.h). Every mesh is audited
  * (closed, manifold, consistently outward, no degenerate facet) before it is
  * written; a mesh that fails is an error, never a file. Files are named after
  * the design file: STEM-BODY.stl, STEM.3mf, STEM.scad, STEM-section.svg|png|pdf. */

@@ -69,7 +69,7 @@ typedef struct {
     double spin_flip_rev_s;        /* n* (section 7.1) over zone II's middle half; 0 if none */
     double wall_mm;                /* thinnest hole wall or floor (INFINITY: no hole) */
     double weight_g;               /* moving mass */
-    /* Robust widths (tippe/sweep_bands.h: each width less the tolerance bands
+    /* Robust widths (tippe/sweep.h: each width less the tolerance bands
      * of its ends), computed for the reported best of each choice only. */
     int has_robust;
     double robust_zone_mm[3], robust_mm;

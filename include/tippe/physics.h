@@ -11,7 +11,7 @@
 #include "tippe/design.h"
 
 /* ==== from tippe/theory.h ==== */
-/* tippe/theory.h: relative equilibria of the eccentric sphere and their stability
+/* Theory: relative equilibria of the eccentric sphere and their stability
  * (Ciocci et al. 2012, section 5, Theorem 5.1, Appendix A, section 7.1).
  *
  * Pure functions of a top (tippe_top) and g; no state, safe on any number of threads.
@@ -203,7 +203,7 @@ void tippe_theory_well_range(const tippe_top *top, double g, const tippe_theory_
                              double E, double *lo, double *hi);
 
 /* ==== from tippe/dynamics.h ==== */
-/* tippe/dynamics.h: one launch of an eccentric sphere on a table (paper section 3).
+/* Dynamics: one launch of an eccentric sphere on a table (paper section 3).
  *
  * The model: a sphere (tippe_top) on a horizontal plane under gravity g, with
  * the normal force of the contact constraint (eq 3.17/3.19, any mass m) and
@@ -453,14 +453,14 @@ int tippe_dynamics_euler_rhs(const tippe_dynamics_model *model, const double y[T
                              double dydt[TIPPE_EULER_DIM], double *Rn);
 
 /* ==== from tippe/launch.h ==== */
-/* tippe/launch.h: many hand launches of a top, and what they end in.
+/* Launch: many hand launches of a top, and what they end in.
  *
  * A hand launch is a spin, a tilt of the symmetry axis away from the vertical,
  * a precession rate near the steady one for that tilt and spin, and a small
  * sliding velocity of the centre of mass in a random direction, drawn from
  * distributions whose defaults describe a hand-spun top of 50 mm diameter
  * (docs/launch.md justifies each default). Each launch runs through the
- * dynamics core at the verdict level (tippe/dynamics.h) and is compared with
+ * dynamics core at the verdict level (tippe/physics.h) and is compared with
  * Theorem 5.1's stable final states for its own Jellett invariant.
  *
  * Reproducibility: launch number `draw` of a run with seed S takes its random
@@ -488,7 +488,7 @@ typedef struct {
     double g;                 /* m/s^2 */
     double t_end;             /* s, bound on each launch's simulated time */
     int until_flip;           /* 1: follow a tip to its flip (t_flip_s), 0: stop at the proof */
-    char accuracy_name[16];   /* a preset of tippe/dynamics.h, or "custom" */
+    char accuracy_name[16];   /* a preset of tippe/physics.h, or "custom" */
     tippe_dynamics_accuracy accuracy;
 } tippe_launch_options;
 

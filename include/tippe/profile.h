@@ -5,7 +5,7 @@
  * that region for the parts a maker prints -- every fixed, non-void part of a
  * printable material, with the voids cut from it -- as polygons whose chords
  * stay within chord_mm / 2 of the true arcs (circles and ellipses), so that the
- * revolved mesh (tippe/mesh.h, which spends the other half on its angular
+ * revolved mesh (src/export/mesh.h, which spends the other half on its angular
  * steps) is within chord_mm of the true surface. Boolean operations on the
  * polygons (union of touching parts, voids cut, split plane) are GEOS's.
  *

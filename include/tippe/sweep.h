@@ -12,7 +12,7 @@
 #include "tippe/physics.h"
 
 /* ==== from tippe/sweep.h ==== */
-/* tippe/sweep.h: the zones of a top as its moving weight travels (paper section 6).
+/* Sweep: the zones of a top as its moving weight travels (paper section 6).
  *
  * As the weight's midpoint Z2 moves, k = A/C and e = eps/R trace a path through
  * the phase diagram of Theorem 5.1 (Figure 2). A sweep cuts [from, to] into
@@ -222,8 +222,8 @@ struct cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *
 void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe_design *d);
 
 /* ==== from tippe/sweep_bands.h ==== */
-/* tippe/sweep_bands.h: how far each zone boundary of a sweep moves under the
- * design's tolerances (tippe/tolerance.h), and the zone widths that survive.
+/* Sweep bands: how far each zone boundary of a sweep moves under the
+ * design's tolerances (tippe/design.h), and the zone widths that survive.
  *
  * A zone boundary is a root Z2* of a boundary function f(Z2; p) (tippe/sweep.h;
  * p the design's fields). To first order a change dp of one field moves it by

@@ -1,4 +1,4 @@
-/* Films with FFmpeg's libraries (see tippe/encode.h): libavcodec encodes,
+/* Films with FFmpeg's libraries (see tippe/animate.h): libavcodec encodes,
  * libavformat muxes into the caller's stream through a custom I/O context,
  * libswscale converts cairo's pixels to yuv420p, and libavfilter's palettegen
  * and paletteuse make a GIF's palette. */

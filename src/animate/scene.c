@@ -1,4 +1,4 @@
-/* One picture of the top on its table (see tippe/scene.h), drawn with cairo. */
+/* One picture of the top on its table (see tippe/animate.h), drawn with cairo. */
 #include "tippe/animate.h"
 
 #include <cairo.h>

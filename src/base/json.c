@@ -1,5 +1,5 @@
 /* Strict JSON reading shared by design files, materials tables and scenarios
- * (include/tippe/json.h). */
+ * (src/base/json.h). */
 #include "base/json.h"
 
 #include <ctype.h>

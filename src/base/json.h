@@ -1,4 +1,4 @@
-/* tippe/json.h: strict reading of the JSON files tippe takes (designs,
+/* src/base/json.h: strict reading of the JSON files tippe takes (designs,
  * materials tables, scenarios).
  *
  * cJSON accepts what a user almost never means: keys differing only in case

@@ -1,5 +1,5 @@
 /* Progress as a bar on a terminal or plain lines elsewhere, shared by OpenMP
- * threads (tippe/progress.h). */
+ * threads (tippe/base.h). */
 #include "tippe/base.h"
 
 #include <math.h>

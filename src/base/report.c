@@ -1,4 +1,4 @@
-/* Output files that appear whole or not at all (see tippe/report.h). */
+/* Output files that appear whole or not at all (see tippe/base.h). */
 #define _GNU_SOURCE /* fopencookie: every write's errno, for the message */
 #include "tippe/base.h"
 

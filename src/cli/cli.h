@@ -1,7 +1,7 @@
 /* Private to the tippe command: one function per verb, each in src/cli/<verb>.c.
  * A verb parses its own arguments, calls the library, prints, and returns the
  * exit status: 0 success, 2 bad usage or bad input, 1 failed computation.
- * Output files go through tippe/report.h, so that none is ever half-written. */
+ * Output files go through tippe/base.h, so that none is ever half-written. */
 #ifndef TIPPE_CLI_H
 #define TIPPE_CLI_H
 
@@ -135,7 +135,7 @@ enum { TIPPE_CLI_HELP = -1 };
 int tippe_cli_parse(tippe_cli_spec *spec, int argc, char **argv, const char **args,
                     int *n_args);
 
-/* How a verb shows progress on stderr (tippe/progress.h): TIPPE_PROGRESS_ON
+/* How a verb shows progress on stderr (tippe/base.h): TIPPE_PROGRESS_ON
  * after --progress (plain lines when stderr is not a terminal), else
  * TIPPE_PROGRESS_AUTO (a bar on a terminal only). */
 int tippe_cli_progress_mode(void);
@@ -198,7 +198,7 @@ void tippe_cli_json_sets(struct cJSON *o, const tippe_cli_sets *s);
 
 /* An output file (plot: its extension names a plot format) that can be
  * written, found by really creating (and removing) a temporary next to it
- * (tippe/report.h): 0, or 2 after a usage error naming option, path and
+ * (tippe/base.h): 0, or 2 after a usage error naming option, path and
  * reason (a directory, a path through a file, /proc, no permission, or the
  * same file as an earlier output of this run). "-" is standard output, and
  * from then on the verb's text (printf) goes to stderr, so that a piped file
@@ -234,7 +234,7 @@ int tippe_cli_run(const tippe_cli_verb *v, int argc, char **argv);
  * ..."; files already in place are never touched. SIGXFSZ (ulimit -f) is
  * caught so that the write fails with EFBIG and is reported. Nothing to poll:
  * a verb (or a library loop) needs no cancel flag; it only has to write its
- * files through tippe/report.h. */
+ * files through tippe/base.h. */
 void tippe_cli_signals_install(const char *verb);
 /* After the outputs were renamed into place: if a stop signal came during the
  * renames, says so and ends the process by it; otherwise returns 0. */

@@ -318,7 +318,7 @@ static int map_report(const hands_args *a, const tippe_design *d, map_grid *g, d
     char title[1024], sets[900];
     snprintf(title, sizeof title, "%s%s%s", tippe_design_name(d), a->sets.n ? " with " : "",
              tippe_cli_sets_text(&a->sets, sets, sizeof sets));
-    /* one set with the CSV: both or neither (tippe/report.h) */
+    /* one set with the CSV: both or neither (tippe/base.h) */
     if (!rc && a->plot)
         rc = tippe_launch_plot_map(a->plot, &m, d, a->o.g, title, &err);
     if (rc)

@@ -85,7 +85,7 @@ static const char *input_named_by(const char *path)
     return NULL;
 }
 
-/* Every file the run has read or is about to read through tippe/json.h (a
+/* Every file the run has read or is about to read through src/base/json.h (a
  * design's materials table, a spec's catalogue and base design, a scenario's
  * design), and the existing files the outputs name: an output is refused when
  * it is one of them, whichever the run meets first. Reads may come from
@@ -171,7 +171,7 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
             return tippe_cli_usage_error(verb, "%s -: standard output already carries %s; "
                                          "give %s a file name", option, stdout_owner, option);
         stdout_owner = option;
-        /* The data owns descriptor 1 (tippe/report.h writes "-" there); the
+        /* The data owns descriptor 1 (tippe/base.h writes "-" there); the
          * text report goes to stderr so that the piped file stays clean.
          * glibc's stdout is an ordinary variable that may be set. */
         fflush(stdout);

@@ -4,7 +4,7 @@
  * The handler does the whole job itself rather than setting a flag for the
  * work to poll: a single long integration, an encoder, or a write blocked on a
  * FIFO polls nothing, and every output file still exists only as a
- * temporary (tippe/report.h) until the verb has finished, so removing the
+ * temporary (tippe/base.h) until the verb has finished, so removing the
  * temporaries and ending the process is always a clean stop. It uses only
  * async-signal-safe calls (unlink, write, signal, raise). */
 #include "cli.h"

@@ -533,7 +533,7 @@ int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tipp
                                  &d->tolerances, &d->n_tolerances);
 }
 
-/* Keeps the overrides a design was built with (src/design.c, below), so that
+/* Keeps the overrides a design was built with (src/design/design.c, below), so that
  * tippe_design_derive can rebuild it with more. */
 
 static int load(const char *path, const char *const *overrides, int n_overrides, int check,

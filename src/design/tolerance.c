@@ -1,5 +1,5 @@
 /* A design's tolerances: the block, checked strictly, and the documented
- * defaults (see tippe/tolerance.h and docs/design-format.md). */
+ * defaults (see tippe/design.h and docs/design-format.md). */
 #include "design/tolerance_read.h"
 
 #include <math.h>

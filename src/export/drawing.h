@@ -1,4 +1,4 @@
-/* tippe/drawing.h: the dimensioned cross-section of a design, for the maker.
+/* src/export/drawing.h: the dimensioned cross-section of a design, for the maker.
  *
  * The section through the axis: every part cut and hatched by material (a
  * legend names them), the printed bodies' holes with their clearance, the
@@ -8,7 +8,7 @@
  * weight diameters and heights, band semi-axes, Z2). The format follows the
  * file's extension: .svg (written directly; each dimension is a <text> with
  * class "dim" and data-mm="VALUE", so a test can read the values back), .png
- * or .pdf (cairo). Written atomically (tippe/report.h). */
+ * or .pdf (cairo). Written atomically (tippe/base.h). */
 #ifndef TIPPE_EXPORT_DRAWING_H
 #define TIPPE_EXPORT_DRAWING_H
 

@@ -7,7 +7,7 @@
  * facets); edges lying on the axis sweep nothing. The angular step keeps every
  * circle within sag_mm of the true one. Units: mm.
  *
- * Output files are written atomically (tippe/report.h). */
+ * Output files are written atomically (tippe/base.h). */
 #ifndef TIPPE_EXPORT_MESH_H
 #define TIPPE_EXPORT_MESH_H
 

@@ -1,4 +1,4 @@
-/* tippe/scad.h: the design as OpenSCAD source, for a maker to edit and re-render.
+/* src/export/scad.h: the design as OpenSCAD source, for a maker to edit and re-render.
  *
  * The file opens with the design's numbers as named variables (mm), then one
  * module per part built from OpenSCAD's own solids (sphere, cylinder, and
@@ -6,7 +6,7 @@
  * as the printed parts less their voids (holes that take hardware grown by the
  * clearance), the fixed hardware, and the moving weight at z2_mm in its own
  * colour. Setting show = "printed" renders the printed bodies alone, which is
- * what tippe's STL files hold. Written atomically (tippe/report.h). */
+ * what tippe's STL files hold. Written atomically (tippe/base.h). */
 #ifndef TIPPE_EXPORT_SCAD_H
 #define TIPPE_EXPORT_SCAD_H
 

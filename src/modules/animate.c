@@ -1,5 +1,5 @@
-/* Stubs of the films (src/animate.c and scene.c, cairo) for the tippe command:
- * see module.h. FFmpeg is opened later still, by src/encode.c. */
+/* Stubs of the films (src/animate/animate.c and scene.c, cairo) for the tippe command:
+ * see module.h. FFmpeg is opened later still, by src/animate/encode.c. */
 #include "module.h"
 #include "tippe/animate.h"
 

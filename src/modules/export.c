@@ -1,4 +1,4 @@
-/* Stubs of the files of printed bodies (src/export.c with mesh.c, drawing.c,
+/* Stubs of the files of printed bodies (src/export/export.c with mesh.c, drawing.c,
  * scad.c and profile.c: lib3MF, cairo, GEOS) for the tippe command: see module.h. */
 #include "module.h"
 #include "tippe/build.h"

@@ -1,5 +1,5 @@
 /* Opening the command's heavy-library modules (see module.h), in the manner
- * of src/encode.c with FFmpeg: on the first call that needs one. */
+ * of src/animate/encode.c with FFmpeg: on the first call that needs one. */
 #include "module.h"
 
 #include <dlfcn.h>

@@ -1,4 +1,4 @@
-/* Stubs of the printed bodies (src/profile.c, GEOS) for the tippe command: see
+/* Stubs of the printed bodies (src/profile/profile.c, GEOS) for the tippe command: see
  * module.h. `eval` and `printed` need them; `export` has its own copy in its module. */
 #include "module.h"
 #include "tippe/profile.h"

@@ -134,7 +134,7 @@ static double flip_spin_rev_s(const tippe_design *d, double from, double to)
 }
 
 /* The tolerance bands of the sweep's zone ends and the widths that survive
- * them (tippe/sweep_bands.h); left unset if they cannot be computed. */
+ * them (tippe/sweep.h); left unset if they cannot be computed. */
 static void robust_widths(const tippe_design *d, const tippe_sweep_result *r, tippe_optimise_eval *out)
 {
     tippe_sweep_bands_result b;

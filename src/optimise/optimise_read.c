@@ -1,6 +1,6 @@
 /* Search a design space for the widest narrowest zone (see tippe/optimise.h).
  *
- * The spec is read strictly (tippe/json.h). A candidate is the base design with
+ * The spec is read strictly (src/base/json.h). A candidate is the base design with
  * overrides, built from a design source held in memory (no file is read per
  * candidate), with its physical travel as its travel; its zones come from the
  * root-found sweep. NLopt searches each choice on its own thread; nothing is

@@ -36,7 +36,7 @@ typedef struct {
     int has_last;
 } job_t;
 
-/* NLopt is opened when the first optimisation runs, as src/encode.c opens
+/* NLopt is opened when the first optimisation runs, as src/animate/encode.c opens
  * FFmpeg: linked, it would be loaded by every tippe command at start-up.
  * TIPPE_NLOPT_SONAME is the linked library's file name (CMakeLists.txt). */
 #define NLOPT_FUNCS(X) \

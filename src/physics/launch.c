@@ -1,5 +1,5 @@
 /* Hand launches: distributions, per-launch generators, OpenMP runs, tallies
- * and Wilson intervals (tippe/launch.h, docs/launch.md). */
+ * and Wilson intervals (tippe/physics.h, docs/launch.md). */
 #include "tippe/physics.h"
 #include "tippe/base.h"
 

@@ -3,7 +3,7 @@
  * A figure goes to PNG, SVG or PDF according to the extension of its path
  * (pngcairo, svgcairo, pdfcairo). PLplot draws into memory; tippe_plot_close()
  * checks that the driver finished a whole file (PNG IEND chunk, SVG closing
- * tag, PDF %%EOF) and writes it through tippe/report.h (every write checked,
+ * tag, PDF %%EOF) and writes it through tippe/base.h (every write checked,
  * a temporary renamed into place, devices and FIFOs straight through), so a
  * failed or abandoned plot leaves nothing behind and no old file is lost.
  *

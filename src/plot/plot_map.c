@@ -1,6 +1,6 @@
 /* The outcome map of `tippe map` as a heat map over (Z2, spin), with the zones
  * of the design's sweep and theory's spin thresholds drawn over it
- * (tippe/launch.h). */
+ * (tippe/physics.h). */
 #include "tippe/physics.h"
 #include "plot/canvas.h"
 #include "tippe/sweep.h"

@@ -207,7 +207,7 @@ static GEOSGeometry *solid_region(geos_ctx *g, const tippe_design_solid *s, doub
 /* --------------------------------------------------------- printability */
 
 /* Filament: a printable material, or a part with a print block (which the
- * mass model prints, tippe/print.h, whether its density is a material's or
+ * mass model prints, tippe/design.h, whether its density is a material's or
  * given inline); a void: its part's. */
 static int part_is_filament(const tippe_design *d, int i, const tippe_design_part_info *p)
 {

@@ -1,4 +1,4 @@
-/* Tolerance bands on the zone boundaries of a sweep (see tippe/sweep_bands.h). */
+/* Tolerance bands on the zone boundaries of a sweep (see tippe/sweep.h). */
 #include "tippe/sweep.h"
 #include "tippe/design.h"
 
@@ -150,7 +150,7 @@ static int find_crossings(const tippe_design *d, const tippe_sweep_result *r, in
     return TIPPE_OK;
 }
 
-/* d(Z2*)/dp of every crossing for tolerance i (eq. of tippe/sweep_bands.h). */
+/* d(Z2*)/dp of every crossing for tolerance i (eq. of tippe/sweep.h). */
 static int sensitivities(const tippe_design *d, int i, tippe_sweep_bands_result *out,
                          tippe_error *err)
 {
