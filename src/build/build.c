@@ -419,20 +419,28 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
 
 /* ------------------------------------------------------------ compute */
 
-int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
-                        tippe_build_sheet *out, tippe_error *err)
+/* What tippe_build_compute's steps share: the design, the options, the sheet
+ * being filled, the printed profiles (when GEOS could build them) and the
+ * weight's extent along the axis. */
+typedef struct {
+    const tippe_design *d;
+    const tippe_build_options *o;
+    tippe_build_sheet *out;
+    tippe_profile_set ps;
+    int have_ps;
+    double top, bottom, r_weight, bore, rod_r; /* mm */
+    int rod_part;
+} compute_ctx;
+
+/* Step 1: the zones, and the robust range of each behaviour. */
+static int compute_zones(compute_ctx *c, tippe_error *err)
 {
-    memset(out, 0, sizeof *out);
-    out->hole_part = -1;
-    out->weigh_offset_g = NAN;
-    snprintf(out->design_name, sizeof out->design_name, "%s", tippe_design_name(d));
-    snprintf(out->design_file, sizeof out->design_file, "%s", tippe_design_path(d));
-    out->radius_mm = tippe_design_radius_mm(d);
+    tippe_build_sheet *out = c->out;
     tippe_sweep_result r;
     tippe_sweep_bands_result b = {0};
-    int rc = tippe_sweep_design(d, 0, 0, NULL, &r, err);
+    int rc = tippe_sweep_design(c->d, 0, 0, NULL, &r, err);
     if (!rc)
-        rc = tippe_sweep_bands(d, &r, &b, err);
+        rc = tippe_sweep_bands(c->d, &r, &b, err);
     if (rc) {
         tippe_sweep_bands_free(&b);
         tippe_sweep_result_free(&r);
@@ -444,61 +452,74 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     out->three_in_one = out->set[0].reachable && out->set[1].reachable && out->set[2].reachable;
     tippe_sweep_bands_free(&b);
     tippe_sweep_result_free(&r);
+    return TIPPE_OK;
+}
 
-    /* where the weight is measured from */
-    double top, bottom, r_weight, bore, rod_r = 0;
-    weight_extent(d, &top, &bottom, &r_weight, &bore, out->weight_name, sizeof out->weight_name);
+/* Step 2: where the weight is measured from (a hole's rim or a rod's end). */
+static void compute_reference(compute_ctx *c)
+{
+    tippe_build_sheet *out = c->out;
+    weight_extent(c->d, &c->top, &c->bottom, &c->r_weight, &c->bore, out->weight_name,
+                  sizeof out->weight_name);
     tippe_profile_options po = tippe_profile_defaults();
-    po.clearance_mm = o->clearance_mm;
+    po.clearance_mm = c->o->clearance_mm;
     po.sockets = 1; /* a rod spanning a cavity gets them (tippe build exports them so) */
-    tippe_profile_set ps;
     tippe_error perr = {0};
-    int have_ps = tippe_profile_build(d, &po, &ps, &perr) == TIPPE_OK;
-    int rod_part = -1;
-    if (isfinite(top) && !find_hole(d, have_ps ? &ps : NULL, o->clearance_mm, r_weight, out) &&
-        find_rod(d, bore, &rod_r, &rod_part, out)) {
+    c->have_ps = tippe_profile_build(c->d, &po, &c->ps, &perr) == TIPPE_OK;
+    c->rod_part = -1;
+    if (isfinite(c->top) &&
+        !find_hole(c->d, c->have_ps ? &c->ps : NULL, c->o->clearance_mm, c->r_weight, out) &&
+        find_rod(c->d, c->bore, &c->rod_r, &c->rod_part, out)) {
         /* a rod held by sockets is cut longer: its top end is the upper socket's floor */
-        for (int k = 0; have_ps && k < ps.n_sockets; k++)
-            if (ps.socket_part[k] == rod_part && ps.socket_floor_z_mm[k] > 0) {
-                out->reference_z_mm = ps.socket_floor_z_mm[k];
+        for (int k = 0; c->have_ps && k < c->ps.n_sockets; k++)
+            if (c->ps.socket_part[k] == c->rod_part && c->ps.socket_floor_z_mm[k] > 0) {
+                out->reference_z_mm = c->ps.socket_floor_z_mm[k];
                 snprintf(out->reference + strlen(out->reference),
                          sizeof out->reference - strlen(out->reference),
                          " (cut to sit in the shell's sockets)");
             }
     }
-    out->weight_end_offset_mm = out->reference_up ? top : bottom;
+    out->weight_end_offset_mm = out->reference_up ? c->top : c->bottom;
+}
 
-    /* the thread the weight turns on */
+/* Step 3: the thread the weight turns on (a catalogue screw, or the ISO thread
+ * of the modelled cylinder). */
+static int compute_thread(compute_ctx *c, tippe_error *err)
+{
+    tippe_build_sheet *out = c->out;
     if (out->measure == TIPPE_BUILD_MEASURE_HOLE) {
         int m = 0;
-        double h = top - bottom;
-        if (o->catalogue && (m = match_catalogue(o->catalogue, r_weight, h, out, err)) < 0) {
-            if (have_ps)
-                tippe_profile_set_free(&ps);
+        double h = c->top - c->bottom;
+        if (c->o->catalogue && (m = match_catalogue(c->o->catalogue, c->r_weight, h, out, err)) < 0)
             return -m;
-        }
         if (!m) {
             /* the screw is modelled as a cylinder of its pitch diameter (the
              * catalogue's convention) */
-            out->thread = *tippe_build_thread_by_pitch_diameter(2 * r_weight);
+            out->thread = *tippe_build_thread_by_pitch_diameter(2 * c->r_weight);
             out->thread_assumed = 1;
         }
         out->has_thread = 1;
     } else if (out->measure == TIPPE_BUILD_MEASURE_ROD) {
-        const tippe_build_thread *t = tippe_build_thread_by_diameter(2 * rod_r);
+        const tippe_build_thread *t = tippe_build_thread_by_diameter(2 * c->rod_r);
         if (t) {
             out->thread = *t;
             out->has_thread = 1;
         }
     }
-    /* how the screw's hole is printed: the option, else the design's fit, else tapped */
+    return TIPPE_OK;
+}
+
+/* Step 4: how the screw's hole is printed (the option, else the design's fit,
+ * else tapped), and the rim where depths start when that moves it. */
+static int compute_hole_fit(compute_ctx *c, tippe_error *err)
+{
+    const tippe_design *d = c->d;
+    const tippe_build_options *o = c->o;
+    tippe_build_sheet *out = c->out;
     tippe_build_hole_fit fit = o->hole_fit;
-    if ((rc = check_fits(d, out->measure == TIPPE_BUILD_MEASURE_HOLE ? out->hole_part : -1,
-                         err))) {
-        if (have_ps)
-            tippe_profile_set_free(&ps);
+    int rc = check_fits(d, out->measure == TIPPE_BUILD_MEASURE_HOLE ? out->hole_part : -1, err);
+    if (rc)
         return rc;
-    }
     if (fit == TIPPE_BUILD_HOLE_DESIGN) {
         int df = out->hole_part >= 0 ? tippe_design_part_fit(d, out->hole_part)
                                      : TIPPE_DESIGN_FIT_NONE;
@@ -507,42 +528,45 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
               : df == TIPPE_DESIGN_FIT_INSERT ? TIPPE_BUILD_HOLE_INSERT
                                               : TIPPE_BUILD_HOLE_TAP;
     }
-    if (out->has_thread) {
-        out->tap_drill_mm = tippe_build_tap_drill_mm(&out->thread);
-        if (out->measure == TIPPE_BUILD_MEASURE_HOLE && fit != TIPPE_BUILD_HOLE_SLIDE) {
-            /* printed for its thread: its rim, where depths start, moves */
-            const tippe_build_insert *ins;
-            double dia = 0.0; /* set by fit_diameter when it returns 0 */
-            /* a catalogue screw's thread is named in thread_name only */
-            const char *tname = out->thread.name ? out->thread.name : out->thread_name;
-            if ((rc = fit_diameter(d, out->hole_part, fit, o->hole_fit == TIPPE_BUILD_HOLE_DESIGN,
-                                   &out->thread, tname, &dia, out->fit_note,
-                                   sizeof out->fit_note, &ins, err))) {
-                if (have_ps)
-                    tippe_profile_set_free(&ps);
-                return rc;
-            }
-            double R = out->radius_mm, a = dia / 2, rim = sqrt(R * R - a * a);
-            out->hole_tapped = fit == TIPPE_BUILD_HOLE_TAP;
-            out->hole_insert = fit == TIPPE_BUILD_HOLE_INSERT;
-            if (ins)
-                out->insert = *ins;
-            out->hole_diameter_mm = dia;
-            out->reference_z_mm = out->reference_up ? rim : -rim;
-            tippe_design_part_info hp;
-            tippe_design_part(d, out->hole_part, &hp);
-            snprintf(out->reference, sizeof out->reference,
-                     "the rim of hole '%s' at the %s pole (printed %.2f mm across, %s), "
-                     "where a caliper's depth rod rests",
-                     hp.name, out->reference_up ? "top (+z)" : "bottom (-z)", 2 * a,
-                     ins ? "for the insert" : "the tap drill");
-        }
-        if (out->thread.name)
-            snprintf(out->thread_name, sizeof out->thread_name, "%s", out->thread.name);
-        out->thread.name = NULL; /* the sheet's copy is thread_name */
+    if (!out->has_thread)
+        return TIPPE_OK;
+    out->tap_drill_mm = tippe_build_tap_drill_mm(&out->thread);
+    if (out->measure == TIPPE_BUILD_MEASURE_HOLE && fit != TIPPE_BUILD_HOLE_SLIDE) {
+        /* printed for its thread: its rim, where depths start, moves */
+        const tippe_build_insert *ins;
+        double dia = 0.0; /* set by fit_diameter when it returns 0 */
+        /* a catalogue screw's thread is named in thread_name only */
+        const char *tname = out->thread.name ? out->thread.name : out->thread_name;
+        if ((rc = fit_diameter(d, out->hole_part, fit, o->hole_fit == TIPPE_BUILD_HOLE_DESIGN,
+                               &out->thread, tname, &dia, out->fit_note, sizeof out->fit_note,
+                               &ins, err)))
+            return rc;
+        double R = out->radius_mm, a = dia / 2, rim = sqrt(R * R - a * a);
+        out->hole_tapped = fit == TIPPE_BUILD_HOLE_TAP;
+        out->hole_insert = fit == TIPPE_BUILD_HOLE_INSERT;
+        if (ins)
+            out->insert = *ins;
+        out->hole_diameter_mm = dia;
+        out->reference_z_mm = out->reference_up ? rim : -rim;
+        tippe_design_part_info hp;
+        tippe_design_part(d, out->hole_part, &hp);
+        snprintf(out->reference, sizeof out->reference,
+                 "the rim of hole '%s' at the %s pole (printed %.2f mm across, %s), "
+                 "where a caliper's depth rod rests",
+                 hp.name, out->reference_up ? "top (+z)" : "bottom (-z)", 2 * a,
+                 ins ? "for the insert" : "the tap drill");
     }
+    if (out->thread.name)
+        snprintf(out->thread_name, sizeof out->thread_name, "%s", out->thread.name);
+    out->thread.name = NULL; /* the sheet's copy is thread_name */
+    return TIPPE_OK;
+}
 
-    tippe_build_weigh_offset(d, out);
+/* Step 5: each behaviour's setting as a depth below the reference and turns of
+ * the thread, with the spin it needs and a launch there. */
+static void compute_settings(compute_ctx *c)
+{
+    tippe_build_sheet *out = c->out;
     for (int f = 0; f < 3; f++) {
         tippe_build_setting *s = &out->set[f];
         if (!s->reachable)
@@ -556,9 +580,17 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
         s->turns_from = s->depth_from_mm / p;
         s->turns_set = s->depth_set_mm / p;
         s->turns_to = s->depth_to_mm / p;
-        spins_and_launch(d, o, f, s);
+        spins_and_launch(c->d, c->o, f, s);
     }
-    tippe_build_bill(d, have_ps ? &ps : NULL, o, out, rod_r);
+}
+
+/* Step 6: what a maker buys and prints (bill, gauges, print settings), the
+ * steps, and advice when the design is not 3-in-1. */
+static void compute_bill_and_steps(compute_ctx *c)
+{
+    tippe_build_sheet *out = c->out;
+    const tippe_profile_set *ps = c->have_ps ? &c->ps : NULL;
+    tippe_build_bill(c->d, ps, c->o, out, c->rod_r);
     int n_gauges = 0;
     char which[64] = "";
     for (int f = 0; f < 3; f++) {
@@ -573,24 +605,29 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     tippe_build_file_stem(out, stem, sizeof stem);
     if (n_gauges)
         tippe_build_bom(out, n_gauges, "depth gauges, printed (any filament)",
-            "%s-gauge-*.stl, one per setting (%s), printed flat side down", stem, which);
-    tippe_build_print_settings(d, have_ps ? &ps : NULL, out);
+                        "%s-gauge-*.stl, one per setting (%s), printed flat side down", stem,
+                        which);
+    tippe_build_print_settings(c->d, ps, out);
     tippe_build_steps(out);
     if (!out->three_in_one)
-        tippe_build_advise(d, o, out);
-    if (have_ps)
-        tippe_profile_set_free(&ps);
+        tippe_build_advise(c->d, c->o, out);
+}
+
+/* Step 7: the notes on how depths are read, an insert's reach and weighing. */
+static void compute_notes(compute_ctx *c)
+{
+    tippe_build_sheet *out = c->out;
     if (out->measure == TIPPE_BUILD_MEASURE_HOLE)
-        tippe_build_note(out, "Depth is measured from the rim of the hole to the screw's end; a negative "
-                  "depth means the screw stands out of the ball. Turns are counted from the "
-                  "screw's end flush with the rim.");
+        tippe_build_note(out, "Depth is measured from the rim of the hole to the screw's end; a "
+                              "negative depth means the screw stands out of the ball. Turns are "
+                              "counted from the screw's end flush with the rim.");
     else if (out->measure == TIPPE_BUILD_MEASURE_ROD)
-        tippe_build_note(out, "Depth is measured along the rod from its top end down to the bead's top "
-                  "face, before the shell is closed. Turns are counted from the bead's top "
-                  "face flush with the rod's end.");
+        tippe_build_note(out, "Depth is measured along the rod from its top end down to the "
+                              "bead's top face, before the shell is closed. Turns are counted "
+                              "from the bead's top face flush with the rod's end.");
     else
-        tippe_build_note(out, "No hole or rod on the axis holds the weight: set it by Z2 directly "
-                  "(its midpoint's height above the sphere's centre).");
+        tippe_build_note(out, "No hole or rod on the axis holds the weight: set it by Z2 "
+                              "directly (its midpoint's height above the sphere's centre).");
     if (out->hole_insert) {
         /* below the insert the pilot hole is wider than the thread: the screw
          * holds only while all of it is within the insert */
@@ -600,15 +637,16 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
         for (int f = 0, k = 0; f < 3; f++)
             if (out->set[f].reachable && n > 0 && (size_t)n < sizeof t)
                 n += snprintf(t + n, sizeof t - (size_t)n, "%s %.1f mm (%s)", k++ ? "," : "",
-                              out->set[f].depth_set_mm + (top - bottom), behaviours[f]);
+                              out->set[f].depth_set_mm + (c->top - c->bottom), behaviours[f]);
         if (n > 0 && (size_t)n < sizeof t)
             snprintf(t + n, sizeof t - (size_t)n,
                      " below the rim: an insert shorter than that lets the screw fall; tap "
                      "the hole instead.");
         tippe_build_note(out, t);
-        tippe_build_note(out, "The insert's brass is not in the mass model (the zones are the design's): "
-                  "for a top whose zones hold with it, add the insert to the design as a fixed "
-                  "tube of its size and weight. Weigh the print before pressing the insert in.");
+        tippe_build_note(out, "The insert's brass is not in the mass model (the zones are the "
+                              "design's): for a top whose zones hold with it, add the insert to "
+                              "the design as a fixed tube of its size and weight. Weigh the print "
+                              "before pressing the insert in.");
     }
     if (isfinite(out->weigh_offset_g)) {
         char t[320];
@@ -616,9 +654,35 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                  "Weighing to calibrate the infill: the hole is printed %.2f mm across, the mass "
                  "model's is %.2f mm, so add %+.3f g (the print model's difference, same infill) "
                  "to the scale's reading of the bare print before giving it as measured_mass_g.",
-                 out->hole_diameter_mm, 2 * tippe_build_hole_model_radius(d, out->hole_part),
+                 out->hole_diameter_mm, 2 * tippe_build_hole_model_radius(c->d, out->hole_part),
                  out->weigh_offset_g);
         tippe_build_note(out, t);
     }
-    return TIPPE_OK;
+}
+
+/* The sheet in named steps: zones, the reference depths start from, the
+ * thread, the hole's fit, the settings, the bill and steps, the notes. */
+int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
+                        tippe_build_sheet *out, tippe_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->hole_part = -1;
+    out->weigh_offset_g = NAN;
+    snprintf(out->design_name, sizeof out->design_name, "%s", tippe_design_name(d));
+    snprintf(out->design_file, sizeof out->design_file, "%s", tippe_design_path(d));
+    out->radius_mm = tippe_design_radius_mm(d);
+    compute_ctx c = {.d = d, .o = o, .out = out, .rod_r = 0};
+    int rc = compute_zones(&c, err);
+    if (rc)
+        return rc;
+    compute_reference(&c);
+    if (!(rc = compute_thread(&c, err)) && !(rc = compute_hole_fit(&c, err))) {
+        tippe_build_weigh_offset(d, out);
+        compute_settings(&c);
+        compute_bill_and_steps(&c);
+        compute_notes(&c);
+    }
+    if (c.have_ps)
+        tippe_profile_set_free(&c.ps);
+    return rc;
 }
