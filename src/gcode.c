@@ -491,9 +491,13 @@ static int do_line(gc_state *g, const char *line, const char *end)
     case 83:
         g->m83 = 1;
         break;
-    case 200:
-        if (g->opt->volumetric_e < 0 && has(&w, 'D') && !isnan(w.v['D' - 'A']))
+    case 200: /* Marlin: D0 or S0 turns volumetric E off, D>0 (S1) on */
+        if (g->opt->volumetric_e >= 0)
+            break;
+        if (has(&w, 'D') && !isnan(w.v['D' - 'A']))
             g->volumetric = w.v['D' - 'A'] > 0;
+        if (has(&w, 'S') && !isnan(w.v['S' - 'A']))
+            g->volumetric = g->volumetric && w.v['S' - 'A'] != 0;
         break;
     case 221:
         if (has(&w, 'S') && !isnan(w.v['S' - 'A'])) {
@@ -547,6 +551,15 @@ int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
                                "%s: the options' filament diameter (%g mm) and density (%g "
                                "g/cm^3) must be positive, or 0 for the file's",
                                name, opt->filament_diameter_mm, opt->density_g_cm3);
+    if (len >= 4 && !memcmp(text, "GCDE", 4))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%s: binary G-code (PrusaSlicer's .bgcode): export text G-code "
+                               "(Printer Settings > General: Supports binary G-code off)",
+                               name);
+    if (len >= 3 && !memcmp(text, "\xEF\xBB\xBF", 3)) { /* a UTF-8 byte order mark */
+        text += 3;
+        len -= 3;
+    }
     gc_state *g = calloc(1, sizeof *g);
     gc_acc *acc = malloc(sizeof *acc);
     if (!g || !acc) {
