@@ -7,7 +7,9 @@
  * volumetric E), the features (excluded skirt, support, custom and unlabelled
  * G-code; Cura's and Orca's labels), the syntax (CRLF, N and checksums,
  * comments), and the refusals. Coordinates and E are written with 9 decimals;
- * expectations use the values as written where exactness is claimed. */
+ * expectations use the values as written where exactness is claimed. Last, when
+ * they are installed, tools/gcode_moments.py (Python, numpy) reads a slicer-like
+ * file by its own method, and PrusaSlicer slices a real ball. */
 #include "tippe/gcode.h"
 
 #include "check.h"
@@ -774,6 +776,108 @@ static void test_python_check(void)
     free(b.s);
 }
 
+/* ------------------------------------------------------------ (h) a real slicer's file */
+
+/* A binary STL of a UV sphere of radius r standing on z = 0 (its centre at z = r). */
+static int write_sphere_stl(const char *path, double r, int nt, int np)
+{
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        return -1;
+    char head[80] = {0};
+    unsigned n = (unsigned)(2 * nt * np - 2 * np);
+    fwrite(head, 1, 80, f);
+    fwrite(&n, 4, 1, f);
+    for (int i = 0; i < nt; i++)
+        for (int j = 0; j < np; j++) {
+            double t[2] = {M_PI * i / nt, M_PI * (i + 1) / nt};
+            double q[2] = {2 * M_PI * j / np, 2 * M_PI * (j + 1) / np};
+            float v[4][3];
+            int idx[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+            for (int k = 0; k < 4; k++) {
+                double th = t[idx[k][0]], ph = q[idx[k][1]];
+                v[k][0] = (float)(r * sin(th) * cos(ph));
+                v[k][1] = (float)(r * sin(th) * sin(ph));
+                v[k][2] = (float)(r + r * cos(th));
+            }
+            int tri[2][3] = {{0, 1, 3}, {1, 2, 3}};
+            for (int k = 0; k < 2; k++) {
+                if ((k == 0 && i == 0) || (k == 1 && i == nt - 1))
+                    continue; /* the poles' degenerate triangles */
+                float rec[12] = {0};
+                for (int c = 0; c < 3; c++)
+                    memcpy(rec + 3 + 3 * c, v[tri[k][c]], sizeof v[0]);
+                fwrite(rec, sizeof rec, 1, f);
+                fwrite("\0\0", 2, 1, f);
+            }
+        }
+    return fclose(f);
+}
+
+static void test_prusaslicer(void)
+{
+    if (access("/usr/bin/prusa-slicer", X_OK)) {
+        printf("skip: the real-slicer check needs /usr/bin/prusa-slicer\n");
+        return;
+    }
+    char dir[] = "/tmp/test_gcode_slicer_XXXXXX";
+    if (!mkdtemp(dir)) {
+        CHECK(0, "a temporary directory");
+        return;
+    }
+    char stl[64], gcode[64], cmd[512];
+    snprintf(stl, sizeof stl, "%s/ball.stl", dir);
+    snprintf(gcode, sizeof gcode, "%s/ball.gcode", dir);
+    CHECK(write_sphere_stl(stl, 8, 48, 96) == 0, "the sphere's STL");
+    /* a 16 mm PLA ball: 2 perimeters, 4 top/bottom layers, 15 % infill, 0.3 mm layers */
+    snprintf(cmd, sizeof cmd,
+             "/usr/bin/prusa-slicer --export-gcode --perimeters 2 --top-solid-layers 4 "
+             "--bottom-solid-layers 4 --fill-density 15%% --layer-height 0.3 "
+             "--first-layer-height 0.3 --skirts 1 --filament-density 1.24 --gcode-label-objects "
+             "--use-relative-e-distances --center 120,100 -o %s %s >/dev/null 2>&1",
+             gcode, stl);
+    int sliced = system(cmd);
+    CHECK(sliced == 0, "prusa-slicer sliced the ball (status %d)", sliced);
+    tippe_gcode_body body;
+    tippe_error err = {0};
+    int rc = sliced ? -1 : tippe_gcode_read(gcode, NULL, &body, &err);
+    CHECK(rc == TIPPE_OK, "the sliced ball reads: %s", err.msg);
+    if (rc == TIPPE_OK) {
+        double area = M_PI * body.filament_diameter_mm * body.filament_diameter_mm / 4;
+        double laid_mm = (body.body_volume_mm3 + body.excluded_volume_mm3) / area;
+        /* the slicer's own total is what it laid, written to 0.01 mm */
+        CHECK(fabs(laid_mm - body.slicer_filament_mm) <= 0.006,
+              "laid %.4f mm of filament, the slicer says %.2f mm", laid_mm,
+              body.slicer_filament_mm);
+        CHECK(fabs(1e3 * (body.m + body.excluded_mass_kg) - body.slicer_filament_g) <= 0.006,
+              "laid %.4f g, the slicer says %.2f g", 1e3 * (body.m + body.excluded_mass_kg),
+              body.slicer_filament_g);
+        CHECK(body.feature[TIPPE_GCODE_SKIRT_BRIM].volume_mm3 > 0 && body.n_objects == 1 &&
+                  body.n_clusters == 1,
+              "a skirt, one object (%d), one cluster (%d)", body.n_objects, body.n_clusters);
+        tippe_gcode_expect x = {0};
+        x.height_mm = 16;
+        x.diameter_mm = 16;
+        x.axis_known = 1;
+        x.axis_x_mm = 120;
+        x.axis_y_mm = 100;
+        tippe_gcode_part p;
+        rc = tippe_gcode_match(&body, &x, &p, &err);
+        CHECK(rc == TIPPE_OK, "the ball matches a 16 mm ball at (120, 100): %s", err.msg);
+        /* symmetric about its equator but for the top layer's quantisation (<= 0.3 mm) */
+        CHECK(fabs(p.z_cm - 8e-3) < 0.3e-3, "z_cm %.4f mm", 1e3 * p.z_cm);
+        /* walls and skins outside, sparse inside: between a solid ball's 2/5 and a shell's 2/3 */
+        double k = p.C / (p.m * 8e-3 * 8e-3);
+        CHECK(k > 0.4 && k < 2.0 / 3, "C / (m R^2) = %.4f", k);
+        CHECK(sqrt(p.com_offset_x * p.com_offset_x + p.com_offset_y * p.com_offset_y) < 0.1e-3,
+              "the centre of mass within 0.1 mm of the axis (%.4f, %.4f) mm",
+              1e3 * p.com_offset_x, 1e3 * p.com_offset_y);
+    }
+    remove(gcode);
+    remove(stl);
+    rmdir(dir);
+}
+
 int main(void)
 {
     test_rod();
@@ -783,5 +887,6 @@ int main(void)
     test_disc();
     test_refusals();
     test_python_check();
+    test_prusaslicer();
     return check_summary("test_gcode");
 }

@@ -23,19 +23,21 @@
  *     nothing.
  *
  * The bead (TIPPE_GCODE_BEAD_BOX, the default): the nozzle's height z is the
- * top of the bead it lays (the slicer's model: the layer is the slab of
- * thickness h below the nozzle), so a bead is a box h high (h from the slicer's
- * ";HEIGHT:" / "; LAYER_HEIGHT:" comment, else the height above the highest
- * nozzle height of an earlier deposit below it, or the bed; custom G-code and,
- * in a labelled file, unlabelled G-code -- start G-code's purge lines -- do not
- * count) and w = dV / (L h) wide (the slicer's
- * volume over length and height, inverted) around the segment of length L at
- * z - h/2. Its moments are the segment's (a uniform rod) plus the box's
- * cross-section, dV w^2/12 across the segment and dV h^2/12 vertically: exact
- * for a box bead. A stack of layers of one path is then exactly the prism it
- * approximates; PrusaSlicer's rounded bead ends change w^2/12 by ~1e-5 of a
- * top's moments. TIPPE_GCODE_BEAD_LINE is the thin rod along the nozzle's path
- * (no shift, no cross-section), for checks.
+ * top of the bead it lays (the slicer's model: a layer is the slab h thick
+ * below the nozzle; placing the mass at the nozzle would raise the centre of
+ * mass by h/2, 0.1 mm, a few % of a top's eps). So a bead is a box h high and
+ * w = dV / (L h) wide (the slicer's flow, inverted) around the segment of
+ * length L at z - h/2; h is the slicer's ";HEIGHT:" / "; LAYER_HEIGHT:"
+ * comment, else the height above the highest earlier deposit's nozzle height
+ * below z, or above the bed (custom G-code and, in a labelled file, unlabelled
+ * G-code -- start G-code's purge lines -- do not count). Its moments are the
+ * segment's (a uniform rod) plus the box's cross-section, dV w^2/12 across the
+ * segment and dV h^2/12 vertically: exact for a box, and a stack of layers of
+ * one path is exactly the prism it approximates. A real bead differs by ~1e-4
+ * of a top's moments: PrusaSlicer's rounded sides, and a curved bead's mass
+ * leaning outwards (w^2/6 of r^2 on a ring of radius r). TIPPE_GCODE_BEAD_LINE
+ * is the thin rod along the nozzle's path (no shift, no cross-section), for
+ * checks.
  *
  * Features. Each move carries the feature its slicer labelled it with. The
  * part's body is the walls, skins, infill, bridges, gap fill (and what is
@@ -153,11 +155,12 @@ typedef struct {
     double cluster_centre[2][2];  /* m, x y of their footprints' bounding-box centres */
 } tippe_gcode_body;
 
-/* Reads a G-code text (len bytes, not NUL-terminated necessarily); name is
- * used in messages. TIPPE_EINPUT for: a bad number or word ("NAME:LINE: ..."),
- * a bad checksum, inch units (G20), an arc in another plane (G18/G19), an arc
- * whose radius cannot reach its end, no filament diameter or density, no
- * extrusion in the body. TIPPE_ECOMPUTE if memory runs out. */
+/* Reads a G-code text (len bytes, not necessarily NUL-terminated); name is
+ * used in messages; opt NULL: the defaults. TIPPE_EINPUT for: a bad number or
+ * word ("NAME:LINE: ..."), a bad checksum, inch units (G20), an arc in another
+ * plane (G18/G19) or whose radius cannot reach its end, no filament diameter
+ * (for E in mm) or density, binary G-code (.bgcode), no extrusion in the body.
+ * TIPPE_ECOMPUTE if memory runs out. */
 int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
                              const tippe_gcode_options *opt, tippe_gcode_body *out,
                              tippe_error *err);
@@ -167,7 +170,8 @@ int tippe_gcode_read(const char *path, const tippe_gcode_options *opt, tippe_gco
                      tippe_error *err);
 
 /* What the part should be: a solid of revolution printed with its axis
- * vertical. A size 0 is not checked; a tolerance 0 is the default. */
+ * vertical. A size 0 is not checked; a tolerance 0 is the default; NULL
+ * expects nothing but one part on the bed. */
 typedef struct {
     double height_mm;          /* the part's height */
     double diameter_mm;        /* its widest horizontal extent (a sphere's diameter) */
