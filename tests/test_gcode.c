@@ -10,7 +10,7 @@
  * expectations use the values as written where exactness is claimed. Last, when
  * they are installed, tools/gcode_moments.py (Python, numpy) reads a slicer-like
  * file by its own method, and PrusaSlicer slices a real ball. */
-#include "tippe/gcode.h"
+#include "tippe/design.h"
 
 #include "check.h"
 

@@ -25,7 +25,7 @@
  * Commands we do not use are skipped
  * with their arguments (M117 messages), and so are extended commands
  * (Klipper's PRINT_START ...; EXCLUDE_OBJECT_START/END label objects). */
-#include "gcode_internal.h"
+#include "design/gcode_internal.h"
 
 #include <errno.h>
 #include <math.h>
@@ -47,8 +47,8 @@ typedef struct {
     const char *name;
     long line;
     const tippe_gcode_options *opt;
-    gc_config cfg;
-    gc_acc *acc;
+    tippe_gcode_config cfg;
+    tippe_gcode_acc *acc;
     double pos[3], off[3]; /* logical position; physical = logical + off */
     double e;              /* logical E */
     int rel_xyz, m83;
@@ -63,9 +63,9 @@ typedef struct {
     double height_mm; /* the slicer's ;HEIGHT: comment, 0 none */
     char object[GC_SCHEMES][TIPPE_GCODE_NAME_MAX];
     tippe_error *err;
-} gc_state;
+} tippe_gcode_state;
 
-static int fail(gc_state *g, const char *what, const char *s, const char *e)
+static int fail(tippe_gcode_state *g, const char *what, const char *s, const char *e)
 {
     int n = (int)(e - s > 60 ? 60 : e - s);
     return tippe_error_set(g->err, TIPPE_EINPUT, "%s:%ld: %s in '%.*s%s'", g->name, g->line,
@@ -76,16 +76,16 @@ static int fail(gc_state *g, const char *what, const char *s, const char *e)
 typedef struct {
     unsigned has; /* bit per letter */
     double v[26];
-} gc_words;
+} tippe_gcode_words;
 
-static int has(const gc_words *w, char c) { return (w->has >> (c - 'A')) & 1; }
+static int has(const tippe_gcode_words *w, char c) { return (w->has >> (c - 'A')) & 1; }
 
-static int parse_words(gc_state *g, const char *s, const char *e, const char *line,
-                       const char *line_end, gc_words *w)
+static int parse_words(tippe_gcode_state *g, const char *s, const char *e, const char *line,
+                       const char *line_end, tippe_gcode_words *w)
 {
     w->has = 0;
     while (s < e) {
-        if (gc_is_space(*s)) {
+        if (tippe_gcode_is_space(*s)) {
             s++;
             continue;
         }
@@ -95,14 +95,14 @@ static int parse_words(gc_state *g, const char *s, const char *e, const char *li
             s += s < e;
             continue;
         }
-        if (!gc_is_alpha(*s))
+        if (!tippe_gcode_is_alpha(*s))
             return fail(g, "not a G-code word", line, line_end);
-        int c = gc_upper(*s++);
+        int c = tippe_gcode_upper(*s++);
         double x = NAN;
-        if (s < e && (gc_is_digit(*s) || *s == '.' || *s == '-' || *s == '+')) {
-            if (gc_scan_number(&s, e, &x))
+        if (s < e && (tippe_gcode_is_digit(*s) || *s == '.' || *s == '-' || *s == '+')) {
+            if (tippe_gcode_scan_number(&s, e, &x))
                 return fail(g, "bad number", line, line_end);
-            if (s < e && !gc_is_space(*s) && !gc_is_alpha(*s) && *s != '(')
+            if (s < e && !tippe_gcode_is_space(*s) && !tippe_gcode_is_alpha(*s) && *s != '(')
                 return fail(g, "bad number", line, line_end);
             if (!(fabs(x) <= MAX_ABS_VALUE))
                 return fail(g, "number out of range", line, line_end);
@@ -114,7 +114,7 @@ static int parse_words(gc_state *g, const char *s, const char *e, const char *li
 }
 
 /* A move's axis words must carry numbers. */
-static int need_numbers(gc_state *g, const gc_words *w, const char *axes, const char *line,
+static int need_numbers(tippe_gcode_state *g, const tippe_gcode_words *w, const char *axes, const char *line,
                         const char *line_end)
 {
     for (const char *a = axes; *a; a++)
@@ -123,30 +123,30 @@ static int need_numbers(gc_state *g, const gc_words *w, const char *axes, const 
     return TIPPE_OK;
 }
 
-static void physical(const gc_state *g, double p[3])
+static void physical(const tippe_gcode_state *g, double p[3])
 {
     for (int i = 0; i < 3; i++)
         p[i] = g->pos[i] + g->off[i];
 }
 
 /* The bead height for a deposit whose nozzle ends at z. */
-static double bead_height(const gc_state *g, double z)
+static double bead_height(const tippe_gcode_state *g, double z)
 {
-    return g->height_mm > 0 ? g->height_mm : gc_fallback_height(g->acc, z);
+    return g->height_mm > 0 ? g->height_mm : tippe_gcode_fallback_height(g->acc, z);
 }
 
-static void note_object(gc_state *g)
+static void note_object(tippe_gcode_state *g)
 {
-    if (!gc_body_candidate(g->feature))
+    if (!tippe_gcode_body_candidate(g->feature))
         return;
     for (int s = 0; s < GC_SCHEMES; s++)
         if (g->object[s][0])
-            gc_object_seen(g->acc, s, g->object[s]);
+            tippe_gcode_object_seen(g->acc, s, g->object[s]);
 }
 
 /* The plastic a move of dE (E units) lays, in mm^3, after the filament's
  * bookkeeping. */
-static int plastic(gc_state *g, double de, double *vol)
+static int plastic(tippe_gcode_state *g, double de, double *vol)
 {
     *vol = 0;
     if (de == 0)
@@ -180,7 +180,7 @@ static int plastic(gc_state *g, double de, double *vol)
     return TIPPE_OK;
 }
 
-static int do_move(gc_state *g, const gc_words *w, const char *line, const char *line_end)
+static int do_move(tippe_gcode_state *g, const tippe_gcode_words *w, const char *line, const char *line_end)
 {
     int rc = need_numbers(g, w, "XYZE", line, line_end);
     if (rc)
@@ -203,12 +203,12 @@ static int do_move(gc_state *g, const gc_words *w, const char *line, const char 
         return rc;
     if (vol > 0) {
         note_object(g);
-        gc_deposit(g->acc, g->feature, a, b, vol, g->rho_kg_mm3[g->tool], bead_height(g, b[2]), 1);
+        tippe_gcode_deposit(g->acc, g->feature, a, b, vol, g->rho_kg_mm3[g->tool], bead_height(g, b[2]), 1);
     }
     return TIPPE_OK;
 }
 
-static int do_arc(gc_state *g, const gc_words *w, int ccw, const char *line, const char *line_end)
+static int do_arc(tippe_gcode_state *g, const tippe_gcode_words *w, int ccw, const char *line, const char *line_end)
 {
     int rc = need_numbers(g, w, "XYZEIJRP", line, line_end);
     if (rc)
@@ -278,13 +278,13 @@ static int do_arc(gc_state *g, const gc_words *w, int ccw, const char *line, con
             q[1] = cy + r * sin(ang);
             q[2] = a[2] + (b[2] - a[2]) * t;
         }
-        gc_deposit(g->acc, g->feature, p, q, vol / n, g->rho_kg_mm3[g->tool], h, k == 1);
+        tippe_gcode_deposit(g->acc, g->feature, p, q, vol / n, g->rho_kg_mm3[g->tool], h, k == 1);
         memcpy(p, q, sizeof p);
     }
     return TIPPE_OK;
 }
 
-static int do_g92(gc_state *g, const gc_words *w, const char *line, const char *line_end)
+static int do_g92(tippe_gcode_state *g, const tippe_gcode_words *w, const char *line, const char *line_end)
 {
     int rc = need_numbers(g, w, "XYZE", line, line_end);
     if (rc)
@@ -304,33 +304,33 @@ static int do_g92(gc_state *g, const gc_words *w, const char *line, const char *
 }
 
 /* A comment line's text [s, e) (after ';' and spaces). */
-static void do_comment(gc_state *g, const char *s, const char *e)
+static void do_comment(tippe_gcode_state *g, const char *s, const char *e)
 {
     const char *v;
     size_t n = (size_t)(e - s);
 #define STARTS(lit)                                                                               \
     (n >= sizeof(lit) - 1 && !memcmp(s, lit, sizeof(lit) - 1) && (v = s + sizeof(lit) - 1))
     if (STARTS("TYPE:") || STARTS("FEATURE:")) {
-        while (v < e && gc_is_space(*v))
+        while (v < e && tippe_gcode_is_space(*v))
             v++;
-        g->feature = gc_feature_of(v, e);
+        g->feature = tippe_gcode_feature_of(v, e);
     } else if (STARTS("HEIGHT:") || STARTS("LAYER_HEIGHT:")) {
         double x;
-        while (v < e && gc_is_space(*v))
+        while (v < e && tippe_gcode_is_space(*v))
             v++;
-        if (!gc_scan_number(&v, e, &x) && x > 0 && x < 100)
+        if (!tippe_gcode_scan_number(&v, e, &x) && x > 0 && x < 100)
             g->height_mm = x;
     } else if (STARTS("stop printing object")) {
         g->object[SCHEME_COMMENT][0] = 0;
     } else if (STARTS("start printing object, unique label id:") || STARTS("printing object ")) {
-        while (v < e && gc_is_space(*v))
+        while (v < e && tippe_gcode_is_space(*v))
             v++;
-        gc_copy_text(g->object[SCHEME_COMMENT], TIPPE_GCODE_NAME_MAX, v, e);
+        tippe_gcode_copy_text(g->object[SCHEME_COMMENT], TIPPE_GCODE_NAME_MAX, v, e);
     } else if (STARTS("MESH:")) {
-        if (gc_same_ci(v, e, "NONMESH"))
+        if (tippe_gcode_same_ci(v, e, "NONMESH"))
             g->object[SCHEME_CURA][0] = 0;
         else
-            gc_copy_text(g->object[SCHEME_CURA], TIPPE_GCODE_NAME_MAX, v, e);
+            tippe_gcode_copy_text(g->object[SCHEME_CURA], TIPPE_GCODE_NAME_MAX, v, e);
     } else if (g->cfg.cura && STARTS("TIME_ELAPSED:")) {
         /* Cura labels each layer's features anew; what follows the last layer
          * (the end G-code) is not the part's */
@@ -340,7 +340,7 @@ static void do_comment(gc_state *g, const char *s, const char *e)
 }
 
 /* An extended (Klipper) command line [s, e). */
-static void do_extended(gc_state *g, const char *s, const char *e)
+static void do_extended(tippe_gcode_state *g, const char *s, const char *e)
 {
     static const char start[] = "EXCLUDE_OBJECT_START", end[] = "EXCLUDE_OBJECT_END";
     size_t n = (size_t)(e - s);
@@ -352,21 +352,21 @@ static void do_extended(gc_state *g, const char *s, const char *e)
             p++;
         if (p + 5 <= e) {
             const char *q = p + 5;
-            while (q < e && !gc_is_space(*q))
+            while (q < e && !tippe_gcode_is_space(*q))
                 q++;
-            gc_copy_text(g->object[SCHEME_KLIPPER], TIPPE_GCODE_NAME_MAX, p + 5, q);
+            tippe_gcode_copy_text(g->object[SCHEME_KLIPPER], TIPPE_GCODE_NAME_MAX, p + 5, q);
         }
     }
 }
 
-static int do_line(gc_state *g, const char *line, const char *end)
+static int do_line(tippe_gcode_state *g, const char *line, const char *end)
 {
     const char *s = line, *e = end;
-    while (s < e && gc_is_space(*s))
+    while (s < e && tippe_gcode_is_space(*s))
         s++;
     if (s < e && *s == ';') {
         s++;
-        while (s < e && gc_is_space(*s))
+        while (s < e && tippe_gcode_is_space(*s))
             s++;
         do_comment(g, s, e);
         return TIPPE_OK;
@@ -374,7 +374,7 @@ static int do_line(gc_state *g, const char *line, const char *end)
     const char *semi = memchr(s, ';', (size_t)(e - s));
     if (semi)
         e = semi;
-    while (e > s && gc_is_space(e[-1]))
+    while (e > s && tippe_gcode_is_space(e[-1]))
         e--;
     if (s == e)
         return TIPPE_OK;
@@ -385,7 +385,7 @@ static int do_line(gc_state *g, const char *line, const char *end)
             sum ^= (unsigned char)*p;
         const char *p = star + 1;
         double want;
-        if (gc_scan_number(&p, e, &want) || p != e || want != (unsigned)want)
+        if (tippe_gcode_scan_number(&p, e, &want) || p != e || want != (unsigned)want)
             return fail(g, "bad checksum", line, end);
         if ((unsigned)want != sum) {
             char what[64];
@@ -393,29 +393,29 @@ static int do_line(gc_state *g, const char *line, const char *end)
             return fail(g, what, line, end);
         }
         e = star;
-        while (e > s && gc_is_space(e[-1]))
+        while (e > s && tippe_gcode_is_space(e[-1]))
             e--;
     }
-    if (s < e && gc_upper(*s) == 'N' && s + 1 < e && gc_is_digit(s[1])) { /* line number */
+    if (s < e && tippe_gcode_upper(*s) == 'N' && s + 1 < e && tippe_gcode_is_digit(s[1])) { /* line number */
         s++;
-        while (s < e && gc_is_digit(*s))
+        while (s < e && tippe_gcode_is_digit(*s))
             s++;
-        while (s < e && gc_is_space(*s))
+        while (s < e && tippe_gcode_is_space(*s))
             s++;
     }
     if (s == e)
         return TIPPE_OK;
-    if (!gc_is_alpha(*s))
+    if (!tippe_gcode_is_alpha(*s))
         return fail(g, "not a G-code word", line, end);
     const char *p = s + 1;
-    if (!(p < e && (gc_is_digit(*p) || *p == '.' || *p == '-'))) { /* an extended command */
+    if (!(p < e && (tippe_gcode_is_digit(*p) || *p == '.' || *p == '-'))) { /* an extended command */
         do_extended(g, s, e);
         return TIPPE_OK;
     }
-    char letter = gc_upper(*s);
+    char letter = tippe_gcode_upper(*s);
     double code;
-    if (gc_scan_number(&p, e, &code) ||
-        (p < e && !gc_is_space(*p) && !gc_is_alpha(*p) && *p != '('))
+    if (tippe_gcode_scan_number(&p, e, &code) ||
+        (p < e && !tippe_gcode_is_space(*p) && !tippe_gcode_is_alpha(*p) && *p != '('))
         return fail(g, "bad command number", line, end);
     if (letter == 'T') {
         if (!(code >= 0 && code < GC_MAX_TOOLS && code == floor(code)))
@@ -435,10 +435,10 @@ static int do_line(gc_state *g, const char *line, const char *end)
     if (!run)
         return TIPPE_OK;
     if (letter == 'M' && c == 486) { /* labels objects: S<id>; A<name> is free text */
-        while (p < e && gc_is_space(*p))
+        while (p < e && tippe_gcode_is_space(*p))
             p++;
         double id;
-        if (p < e && gc_upper(*p) == 'S' && (++p, !gc_scan_number(&p, e, &id))) {
+        if (p < e && tippe_gcode_upper(*p) == 'S' && (++p, !tippe_gcode_scan_number(&p, e, &id))) {
             if (id < 0)
                 g->object[SCHEME_M486][0] = 0;
             else
@@ -446,7 +446,7 @@ static int do_line(gc_state *g, const char *line, const char *end)
         }
         return TIPPE_OK;
     }
-    gc_words w;
+    tippe_gcode_words w;
     int rc = parse_words(g, p, e, line, end, &w);
     if (rc)
         return rc;
@@ -560,8 +560,8 @@ int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
         text += 3;
         len -= 3;
     }
-    gc_state *g = calloc(1, sizeof *g);
-    gc_acc *acc = malloc(sizeof *acc);
+    tippe_gcode_state *g = calloc(1, sizeof *g);
+    tippe_gcode_acc *acc = malloc(sizeof *acc);
     if (!g || !acc) {
         free(g);
         free(acc);
@@ -574,8 +574,8 @@ int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
     g->flow = 1;
     g->feature = TIPPE_GCODE_UNLABELLED;
     long lines;
-    gc_read_config(text, len, &g->cfg, &lines);
-    gc_acc_init(acc, opt->bead, g->cfg.labelled);
+    tippe_gcode_read_config(text, len, &g->cfg, &lines);
+    tippe_gcode_acc_init(acc, opt->bead, g->cfg.labelled);
     int rc = TIPPE_OK;
     for (int t = 0; t < GC_MAX_TOOLS; t++) {
         double d = per_tool(g->cfg.diam, g->cfg.n_diam, t, opt->filament_diameter_mm,
@@ -599,7 +599,7 @@ int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
         goto done;
     }
     g->volumetric = opt->volumetric_e >= 0 ? opt->volumetric_e != 0 : g->cfg.volumetric == 1;
-    rc = gc_each_line(text, len, &g->line, machine_line, g);
+    rc = tippe_gcode_each_line(text, len, &g->line, machine_line, g);
     if (rc)
         goto done;
     out->n_lines = lines;
@@ -612,9 +612,9 @@ int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
                                    : g->owed_mm3[0];
     out->slicer_filament_mm = g->cfg.filament_mm;
     out->slicer_filament_g = g->cfg.filament_g;
-    rc = gc_acc_finish(acc, out, err);
+    rc = tippe_gcode_acc_finish(acc, out, err);
 done:
-    gc_acc_free(acc);
+    tippe_gcode_acc_free(acc);
     free(acc);
     free(g);
     return rc;

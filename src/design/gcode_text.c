@@ -6,7 +6,7 @@
  * Config comments are "; key = value" (PrusaSlicer, SuperSlicer, OrcaSlicer's
  * config block, at the file's end) or "; key: value" (BambuStudio's header,
  * Cura's ";Filament used: 1.2m"); lists are per extruder. */
-#include "gcode_internal.h"
+#include "design/gcode_internal.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -17,7 +17,7 @@
 /* A G-code number at *p (< e): [+-] digits [. digits], at least one digit.
  * Returns 0 and advances *p, or -1. Exact for up to 15 significant digits and
  * 22 decimals (one correctly rounded division of two exact doubles). */
-int gc_scan_number(const char **p, const char *e, double *v)
+int tippe_gcode_scan_number(const char **p, const char *e, double *v)
 {
     static const double pow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                    1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
@@ -29,7 +29,7 @@ int gc_scan_number(const char **p, const char *e, double *v)
     double mant = 0;
     int digits = 0, frac = 0, point = 0;
     for (; s < e; s++) {
-        if (gc_is_digit(*s)) {
+        if (tippe_gcode_is_digit(*s)) {
             mant = mant * 10 + (*s - '0');
             digits++;
             frac += point;
@@ -54,10 +54,10 @@ static int number_list(const char *s, const char *e, double *v)
 {
     int n = 0;
     while (s < e && n < GC_MAX_TOOLS) {
-        while (s < e && (gc_is_space(*s) || *s == ','))
+        while (s < e && (tippe_gcode_is_space(*s) || *s == ','))
             s++;
         double x;
-        if (s >= e || gc_scan_number(&s, e, &x))
+        if (s >= e || tippe_gcode_scan_number(&s, e, &x))
             break;
         v[n++] = x;
     }
@@ -72,27 +72,27 @@ static const char *config_value(const char *s, const char *e, const char *key, c
     if ((size_t)(e - s) <= k || memcmp(s, key, k))
         return NULL;
     s += k;
-    while (s < e && gc_is_space(*s))
+    while (s < e && tippe_gcode_is_space(*s))
         s++;
     if (s >= e || (*s != '=' && *s != ':'))
         return NULL;
     s++;
-    while (s < e && gc_is_space(*s))
+    while (s < e && tippe_gcode_is_space(*s))
         s++;
-    while (e > s && gc_is_space(e[-1]))
+    while (e > s && tippe_gcode_is_space(e[-1]))
         e--;
     *ve = e;
     return s;
 }
 
-void gc_copy_text(char *dst, size_t cap, const char *s, const char *e)
+void tippe_gcode_copy_text(char *dst, size_t cap, const char *s, const char *e)
 {
     size_t n = (size_t)(e - s) < cap - 1 ? (size_t)(e - s) : cap - 1;
     memcpy(dst, s, n);
     dst[n] = 0;
 }
 
-static void read_config_comment(gc_config *c, const char *s, const char *e)
+static void read_config_comment(tippe_gcode_config *c, const char *s, const char *e)
 {
     const char *v, *ve;
     double x[GC_MAX_TOOLS];
@@ -118,13 +118,13 @@ static void read_config_comment(gc_config *c, const char *s, const char *e)
         const char *g = s + 13, *on = g;
         while (on + 4 <= e && memcmp(on, " on ", 4))
             on++;
-        gc_copy_text(c->generator, sizeof c->generator, g, on + 4 <= e ? on : e);
+        tippe_gcode_copy_text(c->generator, sizeof c->generator, g, on + 4 <= e ? on : e);
     } else if (!c->generator[0] && (size_t)(e - s) > 15 && !memcmp(s, "Generated with ", 15)) {
-        gc_copy_text(c->generator, sizeof c->generator, s + 15, e);
+        tippe_gcode_copy_text(c->generator, sizeof c->generator, s + 15, e);
         if (strstr(c->generator, "Cura"))
             c->cura = 1;
     } else if (!c->generator[0] && (size_t)(e - s) > 12 && !memcmp(s, "BambuStudio ", 12)) {
-        gc_copy_text(c->generator, sizeof c->generator, s, e);
+        tippe_gcode_copy_text(c->generator, sizeof c->generator, s, e);
     } else if ((size_t)(e - s) > 7 && !memcmp(s, "FLAVOR:", 7)) {
         c->cura = 1;
     } else if (((size_t)(e - s) >= 5 && !memcmp(s, "TYPE:", 5)) ||
@@ -181,27 +181,27 @@ static const struct {
     {"Custom", TIPPE_GCODE_CUSTOM},
 };
 
-int gc_same_ci(const char *s, const char *e, const char *name)
+int tippe_gcode_same_ci(const char *s, const char *e, const char *name)
 {
     size_t n = strlen(name);
     if ((size_t)(e - s) != n)
         return 0;
     for (size_t i = 0; i < n; i++)
-        if (gc_upper(s[i]) != gc_upper(name[i]))
+        if (tippe_gcode_upper(s[i]) != tippe_gcode_upper(name[i]))
             return 0;
     return 1;
 }
 
 /* The feature a label names; unknown names (Ironing, Mixed, new ones) are "other". */
-tippe_gcode_feature gc_feature_of(const char *s, const char *e)
+tippe_gcode_feature tippe_gcode_feature_of(const char *s, const char *e)
 {
     for (size_t i = 0; i < sizeof feature_table / sizeof *feature_table; i++)
-        if (gc_same_ci(s, e, feature_table[i].name))
+        if (tippe_gcode_same_ci(s, e, feature_table[i].name))
             return feature_table[i].f;
     return TIPPE_GCODE_OTHER;
 }
 
-int gc_each_line(const char *text, size_t len, long *line_no,
+int tippe_gcode_each_line(const char *text, size_t len, long *line_no,
                      int (*fn)(void *, const char *, const char *), void *ctx)
 {
     const char *p = text, *end = text + len;
@@ -223,23 +223,23 @@ int gc_each_line(const char *text, size_t len, long *line_no,
 
 static int config_line(void *ctx, const char *s, const char *e)
 {
-    while (s < e && gc_is_space(*s))
+    while (s < e && tippe_gcode_is_space(*s))
         s++;
     if (s < e && *s == ';') {
         s++;
-        while (s < e && gc_is_space(*s))
+        while (s < e && tippe_gcode_is_space(*s))
             s++;
-        while (e > s && gc_is_space(e[-1]))
+        while (e > s && tippe_gcode_is_space(e[-1]))
             e--;
         read_config_comment(ctx, s, e);
     }
     return TIPPE_OK;
 }
 
-void gc_read_config(const char *text, size_t len, gc_config *c, long *n_lines)
+void tippe_gcode_read_config(const char *text, size_t len, tippe_gcode_config *c, long *n_lines)
 {
     memset(c, 0, sizeof *c);
     c->volumetric = -1;
     c->filament_mm = c->filament_g = NAN;
-    gc_each_line(text, len, n_lines, config_line, c);
+    tippe_gcode_each_line(text, len, n_lines, config_line, c);
 }

@@ -10,7 +10,7 @@
  * dm h^2/12 along z (a uniform w x h rectangle's variances). Sums are kept
  * about the first deposit's (x, y, 0) so that the central moments, formed as
  * q - m c c^T, lose little to cancellation on a bed hundreds of mm wide. */
-#include "gcode_internal.h"
+#include "design/gcode_internal.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -28,7 +28,7 @@ const char *tippe_gcode_feature_name(tippe_gcode_feature f)
     return (int)f >= 0 && f < TIPPE_GCODE_N_FEATURES ? feature_names[f] : "?";
 }
 
-void gc_acc_init(gc_acc *a, tippe_gcode_bead bead, int labelled)
+void tippe_gcode_acc_init(tippe_gcode_acc *a, tippe_gcode_bead bead, int labelled)
 {
     memset(a, 0, sizeof *a);
     a->bead = bead;
@@ -42,7 +42,7 @@ void gc_acc_init(gc_acc *a, tippe_gcode_bead bead, int labelled)
     }
 }
 
-void gc_acc_free(gc_acc *a)
+void tippe_gcode_acc_free(tippe_gcode_acc *a)
 {
     free(a->all.z);
     free(a->body.z);
@@ -55,7 +55,7 @@ void gc_acc_free(gc_acc *a)
 /* ------------------------------------------------------------ levels */
 
 /* Index of the first level >= z - eps. */
-static size_t levels_lower(const gc_levels *l, double z)
+static size_t levels_lower(const tippe_gcode_levels *l, double z)
 {
     size_t lo = 0, hi = l->n;
     while (lo < hi) {
@@ -68,7 +68,7 @@ static size_t levels_lower(const gc_levels *l, double z)
     return lo;
 }
 
-static void levels_insert(gc_acc *a, gc_levels *l, double z)
+static void levels_insert(tippe_gcode_acc *a, tippe_gcode_levels *l, double z)
 {
     /* the common case: at or above the last level */
     size_t i = l->n;
@@ -91,7 +91,7 @@ static void levels_insert(gc_acc *a, gc_levels *l, double z)
     l->n++;
 }
 
-double gc_fallback_height(const gc_acc *a, double z_mm)
+double tippe_gcode_fallback_height(const tippe_gcode_acc *a, double z_mm)
 {
     size_t i = levels_lower(&a->all, z_mm);
     double below = i > 0 ? a->all.z[i - 1] : 0.0;
@@ -111,7 +111,7 @@ static void grow(double lo[3], double hi[3], double x, double y, double z, doubl
     hi[2] = fmax(hi[2], z);
 }
 
-void gc_deposit(gc_acc *a, int f, const double p0[3], const double p1[3], double vol,
+void tippe_gcode_deposit(tippe_gcode_acc *a, int f, const double p0[3], const double p1[3], double vol,
                 double rho, double h, int count)
 {
     if (!(vol > 0))
@@ -135,7 +135,7 @@ void gc_deposit(gc_acc *a, int f, const double p0[3], const double p1[3], double
     u[2] -= shift;
     v[2] -= shift;
     double dm = vol * rho;
-    gc_moments *m = &a->mom[f];
+    tippe_gcode_moments *m = &a->mom[f];
     m->m += dm;
     for (int i = 0; i < 3; i++)
         m->s[i] += dm * (u[i] + v[i]) / 2;
@@ -170,12 +170,12 @@ void gc_deposit(gc_acc *a, int f, const double p0[3], const double p1[3], double
 
     if (f != TIPPE_GCODE_CUSTOM && !(f == TIPPE_GCODE_UNLABELLED && a->labelled))
         levels_insert(a, &a->all, p1[2]);
-    if (!gc_body_candidate(f))
+    if (!tippe_gcode_body_candidate(f))
         return;
     levels_insert(a, f == TIPPE_GCODE_UNLABELLED ? &a->unlab : &a->body, p1[2]);
     if (a->n_seg == a->cap_seg) {
         size_t cap = a->cap_seg ? 2 * a->cap_seg : 4096;
-        gc_seg *s2 = realloc(a->seg, cap * sizeof *s2);
+        tippe_gcode_seg *s2 = realloc(a->seg, cap * sizeof *s2);
         if (!s2) {
             a->oom = 1;
             return;
@@ -183,13 +183,13 @@ void gc_deposit(gc_acc *a, int f, const double p0[3], const double p1[3], double
         a->seg = s2;
         a->cap_seg = cap;
     }
-    a->seg[a->n_seg++] = (gc_seg){(float)p0[0], (float)p0[1], (float)p1[0], (float)p1[1],
+    a->seg[a->n_seg++] = (tippe_gcode_seg){(float)p0[0], (float)p0[1], (float)p1[0], (float)p1[1],
                                   (float)vol, (unsigned char)f};
 }
 
-void gc_object_seen(gc_acc *a, int scheme, const char *name)
+void tippe_gcode_object_seen(tippe_gcode_acc *a, int scheme, const char *name)
 {
-    gc_names *ns = &a->objects[scheme];
+    tippe_gcode_names *ns = &a->objects[scheme];
     for (int i = 0; i < ns->n && i < GC_MAX_NAMES; i++)
         if (!strcmp(ns->name[i], name))
             return;
@@ -205,12 +205,12 @@ void gc_object_seen(gc_acc *a, int scheme, const char *name)
  * max(0.5 mm, extent / 1024), cells within two of each other joined (a gap of
  * one empty cell is closed: infill lines a few mm apart cross the walls
  * anyway; parts the slicer arranges >= 1 mm apart stay apart). */
-static int clusters(gc_acc *a, int unlab_body, tippe_gcode_body *out)
+static int clusters(tippe_gcode_acc *a, int unlab_body, tippe_gcode_body *out)
 {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     size_t n = 0;
     for (size_t k = 0; k < a->n_seg; k++) {
-        const gc_seg *s = &a->seg[k];
+        const tippe_gcode_seg *s = &a->seg[k];
         if (s->feature == TIPPE_GCODE_UNLABELLED && !unlab_body)
             continue;
         x0 = fmin(x0, fmin(s->x0, s->x1));
@@ -234,7 +234,7 @@ static int clusters(gc_acc *a, int unlab_body, tippe_gcode_body *out)
         label[c] = -2; /* empty */
 #define CELL(x, y) ((size_t)(int)(((y) - y0) / cell) * nx + (size_t)(int)(((x) - x0) / cell))
     for (size_t k = 0; k < a->n_seg; k++) {
-        const gc_seg *s = &a->seg[k];
+        const tippe_gcode_seg *s = &a->seg[k];
         if (s->feature == TIPPE_GCODE_UNLABELLED && !unlab_body)
             continue;
         double len = hypot(s->x1 - s->x0, s->y1 - s->y0);
@@ -287,7 +287,7 @@ static int clusters(gc_acc *a, int unlab_body, tippe_gcode_body *out)
         box[4 * k + 3] = fmax(box[4 * k + 3], y);
     }
     for (size_t k = 0; k < a->n_seg; k++) {
-        const gc_seg *s = &a->seg[k];
+        const tippe_gcode_seg *s = &a->seg[k];
         if (s->feature == TIPPE_GCODE_UNLABELLED && !unlab_body)
             continue;
         vol[label[CELL(s->x0, s->y0)]] += s->volume;
@@ -320,12 +320,12 @@ static int clusters(gc_acc *a, int unlab_body, tippe_gcode_body *out)
 
 /* ------------------------------------------------------------ finishing */
 
-int gc_acc_finish(gc_acc *a, tippe_gcode_body *out, tippe_error *err)
+int tippe_gcode_acc_finish(tippe_gcode_acc *a, tippe_gcode_body *out, tippe_error *err)
 {
     if (a->oom)
         return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", out->source);
     int unlab_body = !a->labelled;
-    gc_moments b = {0};
+    tippe_gcode_moments b = {0};
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     double vol_h = 0, zmin = INFINITY;
     out->body_volume_mm3 = out->excluded_volume_mm3 = out->excluded_mass_kg = 0;
@@ -400,7 +400,7 @@ int gc_acc_finish(gc_acc *a, tippe_gcode_body *out, tippe_error *err)
     /* objects: the scheme that names most (a file may label one object twice over) */
     out->n_objects = 0;
     for (int s = 0; s < GC_SCHEMES; s++) {
-        const gc_names *ns = &a->objects[s];
+        const tippe_gcode_names *ns = &a->objects[s];
         if (ns->n > out->n_objects) {
             out->n_objects = ns->n;
             for (int i = 0; i < 2; i++)

@@ -3,7 +3,7 @@
 #ifndef TIPPE_GCODE_INTERNAL_H
 #define TIPPE_GCODE_INTERNAL_H
 
-#include "tippe/gcode.h"
+#include "tippe/design.h"
 
 #include <stddef.h>
 
@@ -17,22 +17,24 @@
 
 /* ------------------------------------------------------------ text (gcode_text.c) */
 
-static inline int gc_is_space(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-static inline int gc_is_digit(char c) { return c >= '0' && c <= '9'; }
-static inline int gc_is_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-static inline char gc_upper(char c) { return c >= 'a' && c <= 'z' ? (char)(c - 32) : c; }
+static inline int tippe_gcode_is_space(
+                                       char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+static inline int tippe_gcode_is_digit(char c) { return c >= '0' && c <= '9'; }
+static inline int tippe_gcode_is_alpha(
+                                       char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+static inline char tippe_gcode_upper(char c) { return c >= 'a' && c <= 'z' ? (char)(c - 32) : c; }
 
 /* A G-code number at *p (< e); 0 and *p advanced, or -1. */
-int gc_scan_number(const char **p, const char *e, double *v);
+int tippe_gcode_scan_number(const char **p, const char *e, double *v);
 /* [s, e) into dst, cut to cap - 1 bytes and NUL-terminated. */
-void gc_copy_text(char *dst, size_t cap, const char *s, const char *e);
+void tippe_gcode_copy_text(char *dst, size_t cap, const char *s, const char *e);
 /* Whether [s, e) is name, ignoring case. */
-int gc_same_ci(const char *s, const char *e, const char *name);
+int tippe_gcode_same_ci(const char *s, const char *e, const char *name);
 /* The feature a ;TYPE: or ; FEATURE: label names (unknown labels: other). */
-tippe_gcode_feature gc_feature_of(const char *s, const char *e);
+tippe_gcode_feature tippe_gcode_feature_of(const char *s, const char *e);
 /* Calls fn on each line [s, e) without its line end (LF or CRLF), counting lines
  * in *line_no; stops at fn's first nonzero return and returns it. */
-int gc_each_line(const char *text, size_t len, long *line_no,
+int tippe_gcode_each_line(const char *text, size_t len, long *line_no,
                  int (*fn)(void *, const char *, const char *), void *ctx);
 
 /* What the slicer's comments say of the print. */
@@ -44,29 +46,29 @@ typedef struct {
     int labelled; /* a ;TYPE: or ; FEATURE: line anywhere */
     double filament_mm, filament_g; /* NAN if absent */
     char generator[64];
-} gc_config;
+} tippe_gcode_config;
 
 /* The config pass over the whole text; *n_lines gets the line count. */
-void gc_read_config(const char *text, size_t len, gc_config *c, long *n_lines);
+void tippe_gcode_read_config(const char *text, size_t len, tippe_gcode_config *c, long *n_lines);
 
 /* ------------------------------------------------------------ deposits (gcode_body.c) */
 
 /* Sums about a reference point o: m, m x_i, m x_i x_j (xx yy zz xy xz yz). */
 typedef struct {
     double m, s[3], q[6];
-} gc_moments;
+} tippe_gcode_moments;
 
 /* Sorted distinct heights. */
 typedef struct {
     double *z;
     size_t n, cap;
-} gc_levels;
+} tippe_gcode_levels;
 
 /* A body deposit's centre line seen from above, for the footprint's clusters. */
 typedef struct {
     float x0, y0, x1, y1, volume;
     unsigned char feature;
-} gc_seg;
+} tippe_gcode_seg;
 
 #define GC_SCHEMES 4 /* object labels: slicer comments, M486, Klipper, Cura ;MESH: */
 #define GC_MAX_NAMES 64
@@ -74,54 +76,54 @@ typedef struct {
 typedef struct {
     int n;
     char name[GC_MAX_NAMES][TIPPE_GCODE_NAME_MAX];
-} gc_names;
+} tippe_gcode_names;
 
 typedef struct {
     tippe_gcode_bead bead;
     int labelled;         /* the file labels its features (known before the moves) */
     int have_ref;
     double ref[3];
-    gc_moments mom[TIPPE_GCODE_N_FEATURES];
+    tippe_gcode_moments mom[TIPPE_GCODE_N_FEATURES];
     double vol[TIPPE_GCODE_N_FEATURES], mass[TIPPE_GCODE_N_FEATURES];
     double len[TIPPE_GCODE_N_FEATURES], len_h[TIPPE_GCODE_N_FEATURES];
     double vol_h[TIPPE_GCODE_N_FEATURES], point_vol[TIPPE_GCODE_N_FEATURES];
     long n_moves[TIPPE_GCODE_N_FEATURES];
     double lo[TIPPE_GCODE_N_FEATURES][3], hi[TIPPE_GCODE_N_FEATURES][3];
     double zmin_nozzle[TIPPE_GCODE_N_FEATURES];
-    gc_levels all;        /* every deposit's nozzle height: the bead height's fallback */
-    gc_levels body, unlab; /* the body's and the unlabelled deposits' */
-    gc_seg *seg;
+    tippe_gcode_levels all;        /* every deposit's nozzle height: the bead height's fallback */
+    tippe_gcode_levels body, unlab; /* the body's and the unlabelled deposits' */
+    tippe_gcode_seg *seg;
     size_t n_seg, cap_seg;
-    gc_names objects[GC_SCHEMES];
+    tippe_gcode_names objects[GC_SCHEMES];
     int oom;              /* an allocation failed */
-} gc_acc;
+} tippe_gcode_acc;
 
 /* Whether f can be part of the body (the unlabelled deposits may be, see gcode.h). */
-static inline int gc_body_candidate(int f)
+static inline int tippe_gcode_body_candidate(int f)
 {
     return f < TIPPE_GCODE_SKIRT_BRIM || f == TIPPE_GCODE_UNLABELLED;
 }
 
-void gc_acc_init(gc_acc *a, tippe_gcode_bead bead, int labelled);
-void gc_acc_free(gc_acc *a);
+void tippe_gcode_acc_init(tippe_gcode_acc *a, tippe_gcode_bead bead, int labelled);
+void tippe_gcode_acc_free(tippe_gcode_acc *a);
 
 /* The bead height at nozzle height z_mm with no height comment: z above the
  * highest level below it of the deposits that count (not custom G-code, nor
  * unlabelled G-code in a labelled file), or above the bed. */
-double gc_fallback_height(const gc_acc *a, double z_mm);
+double tippe_gcode_fallback_height(const tippe_gcode_acc *a, double z_mm);
 
 /* Lays volume_mm3 of density rho_kg_mm3 uniformly along the nozzle's segment
  * p0 -> p1 (mm, bed frame; equal: a point) as a bead h_mm high (0: unknown).
  * count: whether this is a move of its own (not the second chord of an arc). */
-void gc_deposit(gc_acc *a, int feature, const double p0[3], const double p1[3],
+void tippe_gcode_deposit(tippe_gcode_acc *a, int feature, const double p0[3], const double p1[3],
                 double volume_mm3, double rho_kg_mm3, double h_mm, int count);
 
 /* Records that a body deposit happened inside object name of the given scheme. */
-void gc_object_seen(gc_acc *a, int scheme, const char *name);
+void tippe_gcode_object_seen(tippe_gcode_acc *a, int scheme, const char *name);
 
 /* Fills out's totals, mass properties, layers, objects and clusters. The
  * unlabelled deposits are the body when the file is not labelled.
  * TIPPE_EINPUT if the body has no deposit, TIPPE_ECOMPUTE if memory ran out. */
-int gc_acc_finish(gc_acc *a, tippe_gcode_body *out, tippe_error *err);
+int tippe_gcode_acc_finish(tippe_gcode_acc *a, tippe_gcode_body *out, tippe_error *err);
 
 #endif
