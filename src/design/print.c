@@ -14,7 +14,7 @@
  * z + t or a fixed height; each value carries a tag saying which, and the
  * list of tags along core(z) (its "signature") changes exactly where the
  * integrand stops being one smooth expression. */
-#include "tippe/design.h"
+#include "design/section.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -643,4 +643,35 @@ int tippe_print_infill_for_mass(double mass_kg, double solid_volume_m3, double c
         return 1;
     *infill = core_volume_m3 > 0 ? (mass_kg - m0) / (m1 - m0) : 1.0;
     return 0;
+}
+
+/* ---------------------------------------------- for the slicer's rules */
+
+/* The printed part's cross-section at height z (m): its annuli, sorted and
+ * disjoint, written to lo[], hi[] (at most cap); returns how many. The layer
+ * model (print_slicer.c) slices the part with it as a slicer does. */
+int tippe_print_section(const tippe_solid *part, const tippe_solid *voids, int n_voids, double z,
+                        double *lo, double *hi, int cap)
+{
+    core_model M = {part, voids, n_voids, 0, 0};
+    tivset lay;
+    layer(&M, z, &lay);
+    int n = 0;
+    for (int i = 0; i < lay.n && n < cap; i++, n++) {
+        lo[n] = lay.iv[i].lo;
+        hi[n] = lay.iv[i].hi;
+    }
+    return n;
+}
+
+/* Heights (m) between which the part can have material. */
+int tippe_print_extent(const tippe_solid *part, double *z_lo, double *z_hi)
+{
+    double z0[2], z1[2];
+    int ns = support(part, z0, z1);
+    if (!ns)
+        return 0;
+    *z_lo = z0[0];
+    *z_hi = z1[ns - 1];
+    return 1;
 }
