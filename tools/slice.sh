@@ -18,7 +18,8 @@
 # PrusaSlicer runs headless (no display needed); $PRUSA_SLICER names another binary.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-usage() { sed -n '2,21p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+header() { awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "${BASH_SOURCE[0]}"; }
+usage() { header >&2; exit 2; }
 [ $# -ge 2 ] || usage
 design="$1"; outdir="$2"; shift 2
 profile="$here/designs/slicer/prusa-pla-0.4mm.ini"
@@ -33,7 +34,7 @@ while [ $# -gt 0 ]; do
     --slicer-arg) [ $# -ge 2 ] || usage; slicer_opts+=("$2"); shift 2 ;;
     --slicer-arg=*) slicer_opts+=("${1#--slicer-arg=}"); shift ;;
     --) shift; export_opts+=("$@"); break ;;
-    -h|--help) usage ;;
+    -h|--help) header; exit 0 ;;
     *) echo "slice.sh: unknown option '$1'" >&2; usage ;;
   esac
 done
