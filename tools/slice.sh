@@ -20,6 +20,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 header() { awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "${BASH_SOURCE[0]}"; }
 usage() { header >&2; exit 2; }
+case "${1:-}" in -h|--help) header; exit 0 ;; esac
 [ $# -ge 2 ] || usage
 design="$1"; outdir="$2"; shift 2
 profile="$here/designs/slicer/prusa-pla-0.4mm.ini"
