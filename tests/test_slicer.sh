@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# The slicer in the loop (docs/slicer-measurements.md): tools/slice.sh exports a printed design
+# and slices it headless with the shipped profile; PrusaSlicer applies the 3MF's per-object
+# settings (0.2 mm layers, the design's infill); tools/gcode_check.py accounts for every
+# millimetre of filament the slicer says it uses (body plus skirt), and puts the M12 body where
+# the design has it (centre of mass at the sphere's centre, on the axis). Without PrusaSlicer
+# slice.sh names the package to install. Skipped (with a line saying so) when prusa-slicer is
+# not on PATH; CI installs it (tools/deps.sh).
+# Usage: test_slicer.sh TIPPE
+source "$(dirname "$0")/lib.sh"
+setup "$@"
+py=/usr/bin/python3
+[ -x "$py" ] || py=python3
+tippe_abs="$(cd "$(dirname "$tippe")" && pwd)/$(basename "$tippe")"
+
+# without the slicer: exit 3 and a message naming the Debian package
+if PRUSA_SLICER=/nonexistent/prusa-slicer TIPPE="$tippe_abs" tools/slice.sh \
+        designs/m12-setscrew-printed.json "$tmp/none" >/dev/null 2>"$tmp/none.err"; then
+    bad "slice.sh succeeded without a slicer"
+else
+    rc=$?
+    [ $rc -eq 3 ] && ok || bad "slice.sh without a slicer: exit $rc, want 3"
+    grep -q "Debian package prusa-slicer" "$tmp/none.err" && ok ||
+        bad "slice.sh without a slicer does not name the package: $(cat "$tmp/none.err")"
+fi
+
+# gcode_check.py on a G-code written by hand: a ring of radius 10 mm at z 0.2 (E absolute, with a
+# retraction, a G92 reset and a travel), the same ring at z 0.4 (E relative), and a skirt that is
+# not body. Each ring: 4 chords of a square inscribed in the circle, 1 mm of filament per mm.
+"$py" - "$tmp/hand.gcode" <<'EOF'
+import math, sys
+r = 10.0
+pts = [(r * math.cos(k * math.pi / 2), r * math.sin(k * math.pi / 2)) for k in range(5)]
+side = math.dist(pts[0], pts[1])
+g = ["; filament_diameter = 1.75 placeholder", "G90", "M82", "G92 E0", "G1 Z0.2", ";TYPE:External perimeter",
+     ";HEIGHT:0.2", ";WIDTH:0.45", "G1 X%.6f Y%.6f" % pts[0]]
+e = 0.0
+for k in range(1, 5):
+    e += side
+    g.append("G1 X%.6f Y%.6f E%.6f" % (pts[k] + (e,)))
+    if k == 2:  # retract, travel back and forth, reset E, unretract
+        g += ["G1 E%.6f" % (e - 0.8), "G1 X0 Y0", "G1 X%.6f Y%.6f" % pts[k], "G92 E0", "G1 E0.8"]
+        e = 0.8
+g += ["M83", "G1 Z0.4", "G1 X%.6f Y%.6f" % pts[0]]
+for k in range(1, 5):
+    g.append("G1 X%.6f Y%.6f E%.6f" % (pts[k] + (side,)))
+g += [";TYPE:Skirt/Brim", "G1 X30 Y0", "G1 X40 Y0 E5", "; filament_diameter = 1.75"]
+open(sys.argv[1], "w").write("\n".join(g) + "\n")
+EOF
+"$py" tools/gcode_check.py "$tmp/hand.gcode" --density 1 --axis-xy 0 0 --json > "$tmp/hand.json" 2>"$tmp/hand.err" &&
+"$py" - "$tmp/hand.json" <<'EOF' && ok || bad "gcode_check on a hand-written G-code: $(cat "$tmp/hand.err")"
+import json, math, sys
+c = json.load(open(sys.argv[1]))
+a = math.pi * 1.75 ** 2 / 4
+side = 10 * math.sqrt(2)
+V = 8 * side * a
+assert abs(c["body_volume_mm3"] - V) < 1e-6 * V, (c["body_volume_mm3"], V)
+assert abs(c["by_type"]["Skirt/Brim"]["volume_mm3"] - 5 * a) < 1e-6
+assert c["by_type"]["Skirt/Brim"]["body"] is False
+# half the volume at z 0.1 (the bead's middle), half at 0.3
+assert abs(c["com_z_mm"] - 0.2) < 1e-6, c["com_z_mm"]
+# C of a chord at distance d = r / sqrt(2) from the centre, length L: per unit mass d^2 + L^2 / 12,
+# plus the bead's width across it, w^2 / 12
+mC = (10 ** 2 / 2 + side ** 2 / 12 + 0.45 ** 2 / 12) * V / 1000
+assert abs(c["C_g_mm2"] - mC) < 1e-6 * mC, (c["C_g_mm2"], mC)
+# A: half of C's in-plane part, plus the z spread (0.1 mm either side) and the bead height h^2 / 12
+mA = mC / 2 + (0.1 ** 2 + 0.2 ** 2 / 12) * V / 1000
+assert abs(c["A_g_mm2"] - mA) < 1e-6 * mA, (c["A_g_mm2"], mA)
+EOF
+
+if ! command -v prusa-slicer >/dev/null; then
+    echo "$test_name: prusa-slicer not on PATH: the slicing checks are skipped"
+    finish
+    exit $?
+fi
+
+zb=-24.382998  # the M12 body's lowest point at --clearance-mm 0 (tippe export --json)
+for f in 0.15 0.4; do
+    out="$tmp/m12-$f"
+    check "slice.sh m12 at infill $f" env TIPPE="$tippe_abs" tools/slice.sh \
+        designs/m12-setscrew-printed.json "$out" --set "parts.body.print.infill=$f" \
+        -- --clearance-mm 0 >/dev/null || continue
+    g="$out/m12-setscrew-printed.gcode"
+    # the 3MF carries the infill the design asks for, as PrusaSlicer reads it
+    "$py" - "$out/m12-setscrew-printed.3mf" "$f" <<'EOF' && ok || bad "3MF fill_density for infill $f"
+import sys, zipfile
+cfg = zipfile.ZipFile(sys.argv[1]).read("Metadata/Slic3r_PE_model.config").decode()
+want = '%g%%' % (100 * float(sys.argv[2]))
+assert 'key="fill_density" value="%s"' % want in cfg, cfg
+EOF
+    check "gcode_check on $g" sh -c "'$py' tools/gcode_check.py '$g' --density 1.08 --z-bottom-mm $zb --json > '$out/check.json'" || continue
+    "$py" - "$out/check.json" "$g" "$f" <<'EOF' && ok || bad "G-code body of m12 at infill $f"
+import json, sys
+c = json.load(open(sys.argv[1]))
+lines = open(sys.argv[2]).read().splitlines()
+# every extrusion is counted: body + skirt = the slicer's own filament total (2 decimals of cm^3)
+total = sum(t["volume_mm3"] for t in c["by_type"].values()) / 1000
+said = float(c["slicer_filament_cm3"])
+assert abs(total - said) <= 0.006 + 1e-4 * said, (total, said)
+# the per-object layer height (0.2 mm, from the 3MF) is applied: 48.77 mm in 0.2 mm layers
+assert 240 <= c["layer_count"] <= 246, c["layer_count"]
+# the body sits where the design has it: centre of mass at the centre, on the axis
+assert abs(c["com_z_mm"]) < 0.15, c["com_z_mm"]
+assert max(abs(x) for x in c["com_xy_offset_mm"]) < 0.2, c["com_xy_offset_mm"]
+# a body of revolution: A about x and about y agree
+assert abs(c["A_x_g_mm2"] - c["A_y_g_mm2"]) < 0.005 * c["A_g_mm2"]
+# the mass as measured when this test was written (docs/slicer-measurements.md), +-3 %
+want = {"0.15": 17.93, "0.4": 31.40}[sys.argv[3]]
+assert abs(c["body_mass_g"] - want) < 0.03 * want, (c["body_mass_g"], want)
+EOF
+done
+finish
