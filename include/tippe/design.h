@@ -128,18 +128,77 @@ tippe_inertia tippe_moments_inertia(tippe_moments a);
  * and end of a solid shifted by 0 and +-skin. The error bound returned is the
  * sum of QAGS's estimates; the requested accuracy is 1e-12 relative. */
 
-/* Slicer settings, as a design file gives them. */
+/* The sparse infill patterns PrusaSlicer offers (its fill_pattern names). */
+typedef enum {
+    TIPPE_PATTERN_GYROID,
+    TIPPE_PATTERN_RECTILINEAR,
+    TIPPE_PATTERN_ALIGNED_RECTILINEAR,
+    TIPPE_PATTERN_MONOTONIC,
+    TIPPE_PATTERN_GRID,
+    TIPPE_PATTERN_TRIANGLES,
+    TIPPE_PATTERN_STARS,
+    TIPPE_PATTERN_CUBIC,
+    TIPPE_PATTERN_CONCENTRIC,
+    TIPPE_PATTERN_HONEYCOMB,
+    TIPPE_PATTERN_ADAPTIVE_CUBIC,
+    TIPPE_PATTERN_SUPPORT_CUBIC,
+    TIPPE_PATTERN_LIGHTNING,
+    TIPPE_PATTERN_3D_HONEYCOMB,
+    TIPPE_PRINT_N_PATTERNS
+} tippe_print_pattern;
+
+/* Which rules make the printed part: the slicer's, layer by layer (the default,
+ * print_slicer.c), or the earlier continuous rule of walls and vertical skins
+ * (print.c), kept for comparison. */
+typedef enum { TIPPE_PRINT_MODEL_SLICER, TIPPE_PRINT_MODEL_SKINS } tippe_print_model_kind;
+
+/* Slicer settings, as a design file gives them; the defaults are PrusaSlicer
+ * 2.5's for a 0.4 mm nozzle and 0.2 mm layers (its "0.20mm QUALITY" preset;
+ * designs/slicer/prusa-pla-0.4mm.ini, which tippe slice uses). */
 typedef struct {
     int perimeters;           /* walls, line widths */
-    double line_width_mm;
+    double line_width_mm;     /* perimeters (PrusaSlicer: perimeter_extrusion_width) */
     int top_bottom_layers;    /* skins, layers */
     double layer_height_mm;
     double infill;            /* fraction 0 .. 1 of the solid density */
+    /* the slicer's rules (docs/slicer-rules.md) */
+    int model;                     /* tippe_print_model_kind */
+    int pattern;                   /* tippe_print_pattern */
+    double external_width_mm;      /* external_perimeter_extrusion_width */
+    double infill_width_mm;        /* infill_extrusion_width (sparse and solid) */
+    double first_layer_height_mm;  /* first_layer_height */
+    double first_layer_width_mm;   /* first_layer_extrusion_width; 0: each role's own */
+    double top_min_mm, bottom_min_mm; /* top/bottom_solid_min_thickness */
+    double infill_overlap;         /* of the perimeter spacing */
+    double anchor_mm, anchor_max_mm; /* infill_anchor, infill_anchor_max */
+    double flow;                   /* extrusion multiplier */
 } tippe_print_settings;
 
-/* PrusaSlicer-like defaults: 2 x 0.45 mm perimeters, 4 x 0.2 mm top/bottom,
- * 15 % infill. */
+/* PrusaSlicer 2.5's: 2 x 0.45 mm perimeters, 4 x 0.2 mm top/bottom (at least
+ * 0.7 / 0.5 mm), 15 % gyroid, 0.2 mm first layer of 0.42 mm lines, 25 % overlap,
+ * anchors 2.5 / 12 mm, flow 1; the slicer's rules. */
 tippe_print_settings tippe_print_defaults(void);
+
+const char *tippe_print_pattern_name(int pattern);
+/* The pattern of a PrusaSlicer fill_pattern name, -1 if none. */
+int tippe_print_pattern_parse(const char *name);
+/* The fraction of the nominal density a pattern deposits in bulk (print_slicer.c
+ * gives each its source); 0 for a pattern whose deposit depends on the part's
+ * shape (adaptive cubic, support cubic, lightning, 3D honeycomb). */
+double tippe_print_pattern_bulk(int pattern);
+
+/* The part as the slicer deposits it (print_slicer.c): unit-density volume
+ * moments of everything laid down, and the volume of each kind of line. */
+typedef struct {
+    tippe_moments deposit;   /* SI, unit density, at the settings' infill and flow */
+    double wall_m3, solid_m3, sparse_m3, anchor_m3; /* each kind of line, flow included */
+    int n_layers;
+    double bed_z_m, top_z_m; /* design frame: the face on the bed, the last layer's top */
+    /* what tippe_print_sliced_at needs for another infill (unit density, no flow):
+     * walls and solid infill, the sparse region, its boundary band s/2 wide */
+    tippe_moments fixed, sparse_region, sparse_band;
+    double s_fill_m;         /* the infill lines' spacing (layers after the first) */
+} tippe_print_sliced;
 
 static inline double tippe_print_wall_mm(const tippe_print_settings *s)
 {
@@ -187,6 +246,28 @@ typedef struct {
 int tippe_print_core_moments(const tippe_solid *part, const tippe_solid *voids, int n_voids,
                              double wall_m, double skin_m, tippe_print_core *out,
                              tippe_error *err);
+
+/* The slicer's rules applied layer by layer to part minus voids[0..n_voids),
+ * printed with its axis vertical on the bed at its lowest point (flip: upside
+ * down, on its highest). TIPPE_EINPUT for a pattern whose deposit is not
+ * modelled, or more layers than the model takes. Reentrant. */
+int tippe_print_slice_moments(const tippe_solid *part, const tippe_solid *voids, int n_voids,
+                              const tippe_print_settings *s, int flip, tippe_print_sliced *out,
+                              tippe_error *err);
+/* One layer of tippe_print_slice_layers: where it is and what it deposits. */
+typedef struct {
+    double z_mid_m, thickness_m; /* design frame */
+    double wall_m3, solid_m3, sparse_m3, anchor_m3;
+} tippe_print_layer;
+/* The same, with each layer's deposit in rows[0 .. min(n_layers, cap)) (bottom
+ * up, as printed): to hold the model against a G-code layer by layer. */
+int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, int n_voids,
+                             const tippe_print_settings *s, int flip, tippe_print_sliced *out,
+                             tippe_print_layer *rows, int cap, tippe_error *err);
+/* The same part's deposit (unit density) at another infill, and its sparse and
+ * anchor volumes (may be NULL): walls and solid infill stay. */
+tippe_moments tippe_print_sliced_at(const tippe_print_sliced *sl, const tippe_print_settings *s,
+                                    double infill, double *sparse_m3, double *anchor_m3);
 
 /* Mass moments of the printed part: density x (solid - (1 - infill) x core),
  * where solid is the printed part's unit-density moments (closed form). */

@@ -82,7 +82,7 @@ static tippe_moments shape_moments(const part *p, double clip_m)
 /* Unit-density moments of p's own region (SI), at its z_mm. Cut to a shell's
  * wall, it is the part cut to the outer ball less the part cut to the cavity
  * (the second lies inside the first). */
-static tippe_moments part_moments(const part *p)
+tippe_moments tippe_design_part_moments(const part *p)
 {
     tippe_moments m = shape_moments(p, p->clip_radius_mm * 1e-3);
     if (p->clip_inner_mm > 0)
@@ -390,101 +390,6 @@ static int check_sizes(const tippe_json_reader *c, const tippe_design *d)
     return TIPPE_OK;
 }
 
-/* The print model's description of p's own region (SI). */
-static tippe_solid print_solid(const part *p)
-{
-    const double mm = 1e-3;
-    tippe_solid s = {0};
-    s.z_centre = p->z_mm * mm;
-    s.radius = p->radius_mm * mm;
-    s.clip_outer = p->clip_radius_mm * mm;
-    s.clip_inner = p->clip_inner_mm * mm;
-    switch (p->shape) {
-    case SHAPE_BALL:
-        s.kind = TIPPE_SOLID_BALL;
-        break;
-    case SHAPE_SHELL:
-        s.kind = TIPPE_SOLID_SHELL;
-        s.inner_radius = (p->radius_mm - p->thickness_mm) * mm;
-        break;
-    case SHAPE_CYLINDER:
-    case SHAPE_TUBE:
-        s.kind = TIPPE_SOLID_TUBE;
-        s.inner_radius = p->inner_radius_mm * mm;
-        s.height = p->height_mm * mm;
-        break;
-    case SHAPE_TORUS:
-    default:
-        s.kind = TIPPE_SOLID_TORUS;
-        s.centre_radius = p->centre_radius_mm * mm;
-        s.radial_semi = p->radial_semi_mm * mm;
-        s.axial_semi = p->axial_semi_mm * mm;
-        break;
-    }
-    return s;
-}
-
-/* Unit-density moments of printed part i as printed: the part minus its voids
- * (closed forms) less (1 - infill) x its sparse core (print model). Sets the
- * part's infill (calibrated from a weighed mass when one is given), its solid
- * and skin masses and the relative error bound. */
-static int printed_moments(const tippe_json_reader *c, tippe_design *d, int i,
-                           tippe_moments *out)
-{
-    part *p = &d->parts[i];
-    tippe_solid shape = print_solid(p), holes[MAX_PARTS];
-    tippe_moments solid = part_moments(p);
-    int n_holes = 0;
-    for (int k = 0; k < d->n_parts; k++)
-        if (d->parts[k].parent == i) {
-            holes[n_holes++] = print_solid(&d->parts[k]);
-            solid = tippe_moments_sub(solid, part_moments(&d->parts[k]));
-        }
-    tippe_print_core core;
-    tippe_error perr;
-    char pth[64];
-    snprintf(pth, sizeof pth, "parts[%d].print", i);
-    int rc = tippe_print_core_moments(&shape, holes, n_holes, tippe_print_wall_mm(&p->print) * 1e-3,
-                                      tippe_print_skin_mm(&p->print) * 1e-3, &core, &perr);
-    if (rc)
-        return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", perr.msg)
-                                  : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,
-                                                    perr.msg);
-    double rho = p->density_g_cm3 * 1e3;
-    p->infill = p->print.infill;
-    if (p->calibrated) {
-        double m0, m1;
-        int side = tippe_print_infill_for_mass(p->measured_mass_g * 1e-3, solid.m, core.core.m,
-                                               rho, &p->infill, &m0, &m1);
-        snprintf(pth, sizeof pth, "parts[%d].print.measured_mass_g", i);
-        if (side < 0)
-            return tippe_json_fail(c, pth,
-                                   "%g g is less than the walls and top/bottom skins alone "
-                                   "weigh (%.3f g at 0 %% infill with these settings and %g "
-                                   "g/cm^3)",
-                                   p->measured_mass_g, m0 * 1e3, p->density_g_cm3);
-        if (side > 0)
-            return tippe_json_fail(c, pth,
-                                   "%g g is more than part '%s' weighs printed solid (%.3f g at "
-                                   "%g g/cm^3)",
-                                   p->measured_mass_g, p->name, m1 * 1e3, p->density_g_cm3);
-    }
-    p->solid_mass_kg = rho * solid.m;
-    /* no walls and no skins: the core is the part, up to QAGS's 1e-12 */
-    p->skin_mass_kg = rho * fmax(0.0, solid.m - core.core.m);
-    /* the error bound of each moment, relative to the printed part's */
-    double lack = 1.0 - p->infill, printed_m = solid.m - lack * core.core.m;
-    double printed_rr = solid.m_rr - lack * core.core.m_rr;
-    if (!(printed_m > 0) || !(printed_rr > 0))
-        return tippe_json_fail(c, pth, "part '%s' printed this way has no material (no walls, "
-                                       "no skins and 0 infill)",
-                               p->name);
-    p->print_rel_error = lack * fmax(core.abserr[0] / printed_m, core.abserr[3] / printed_rr);
-    /* the part's own region, its voids added back: they subtract as usual */
-    *out = tippe_moments_sub(part_moments(p), tippe_moments_scale(core.core, lack));
-    return TIPPE_OK;
-}
-
 /* Moments: parts add, voids subtract (with the parent's density); the fixed
  * parts and the moving group at Z2 = 0. */
 static int sum_moments(const tippe_json_reader *c, tippe_design *d)
@@ -492,9 +397,9 @@ static int sum_moments(const tippe_json_reader *c, tippe_design *d)
     d->fixed = d->moving = (tippe_moments){0, 0, 0, 0};
     for (int i = 0; i < d->n_parts; i++) {
         part *p = &d->parts[i];
-        tippe_moments unit = part_moments(p);
+        tippe_moments unit = tippe_design_part_moments(p);
         int rc;
-        if (p->printed && (rc = printed_moments(c, d, i, &unit)))
+        if (p->printed && (rc = tippe_design_printed_moments(c, d, i, &unit)))
             return rc;
         tippe_moments m = tippe_moments_scale(unit, p->density_g_cm3 * 1e3);
         if (!finite_moments(m) || !(m.m > 0))

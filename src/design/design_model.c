@@ -121,7 +121,7 @@ int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_inf
     out->measured_mass_kg = p->calibrated ? p->measured_mass_g * 1e-3 : 0;
     out->solid_mass_kg = p->solid_mass_kg;
     out->skin_mass_kg = p->skin_mass_kg;
-    out->printed_mass_kg = p->skin_mass_kg + p->infill * (p->solid_mass_kg - p->skin_mass_kg);
+    out->printed_mass_kg = p->printed_mass_kg;
     out->rel_error = p->print_rel_error;
     return TIPPE_OK;
 }

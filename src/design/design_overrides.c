@@ -152,7 +152,9 @@ int tippe_design_apply_override(tippe_json_reader *c, cJSON *root, const char *t
         snprintf(path, sizeof path, "%s", key);
     }
 
+    int in_print = strstr(path, ".print.") != NULL;
     int is_string = obj == root ? tippe_json_in_list(key, tippe_design_top_string_keys)
+                    : in_print  ? tippe_json_in_list(key, tippe_design_print_string_keys)
                                 : tippe_json_in_list(key, tippe_design_part_string_keys);
     cJSON *item = NULL;
     if (!strcmp(value, "null")) {

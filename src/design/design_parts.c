@@ -64,9 +64,13 @@ const char *const tippe_design_all_part_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from", "clip",
     "moving", "may_protrude", "print", "fit", "radius_mm", "inner_radius_mm", "thickness_mm",
     "height_mm", "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
-const char *const tippe_design_print_keys[] = {"perimeters", "line_width_mm", "top_bottom_layers",
-                                         "layer_height_mm", "infill", "measured_mass_g",
-                                         "notes", NULL};
+const char *const tippe_design_print_keys[] = {
+    "perimeters", "line_width_mm", "top_bottom_layers", "layer_height_mm", "infill",
+    "measured_mass_g", "notes", "model", "pattern", "external_width_mm", "infill_width_mm",
+    "first_layer_height_mm", "first_layer_width_mm", "top_min_mm", "bottom_min_mm",
+    "infill_overlap", "flow", "gcode", NULL};
+/* The print settings that are text (--set writes them as strings). */
+const char *const tippe_design_print_string_keys[] = {"notes", "model", "pattern", "gcode", NULL};
 static const char *const material_keys[] = {"density_g_cm3", "source", "printable", "notes",
                                              NULL};
 
@@ -87,6 +91,64 @@ static int print_number(const tippe_json_reader *c, const cJSON *obj, const char
         return tippe_json_fail(c, path, "must be a whole number of %s, got %g", unit, *out);
     if (!(*out >= lo && *out <= hi))
         return tippe_json_fail(c, path, "must be %g .. %g %s, got %g", lo, hi, unit, *out);
+    return TIPPE_OK;
+}
+
+/* The print block's settings of the slicer's rules (docs/design-format.md):
+ * which model, the infill pattern, the widths the slicer's flow takes, the
+ * first layer, the minimum skin thicknesses, the overlap, the flow, and a
+ * G-code of the part (a path relative to the design file). The widths of the
+ * external perimeter and the infill default to line_width_mm, as a slicer
+ * profile whose widths are all one. */
+static int parse_print_rules(const tippe_json_reader *c, const cJSON *item, const char *path,
+                             part *p)
+{
+    tippe_print_settings *s = &p->print;
+    char text[64] = "", full[96];
+    int rc, here = 0;
+    s->external_width_mm = s->infill_width_mm = s->line_width_mm;
+    if ((rc = tippe_json_string(c, item, path, "model", 0, text, sizeof text, &here)))
+        return rc;
+    if (here) {
+        tippe_json_path(full, sizeof full, path, "model");
+        if (!strcmp(text, "slicer"))
+            s->model = TIPPE_PRINT_MODEL_SLICER;
+        else if (!strcmp(text, "skins"))
+            s->model = TIPPE_PRINT_MODEL_SKINS;
+        else
+            return tippe_json_fail(c, full, "'%s' is not a print model (slicer: PrusaSlicer's "
+                                            "rules layer by layer; skins: the continuous rule)",
+                                   text);
+    }
+    if ((rc = tippe_json_string(c, item, path, "pattern", 0, text, sizeof text, &here)))
+        return rc;
+    if (here && (s->pattern = tippe_print_pattern_parse(text)) < 0) {
+        char list[400] = "";
+        for (int k = 0; k < TIPPE_PRINT_N_PATTERNS; k++)
+            snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", k ? ", " : "",
+                     tippe_print_pattern_name(k));
+        tippe_json_path(full, sizeof full, path, "pattern");
+        return tippe_json_fail(c, full, "'%s' is not a PrusaSlicer infill pattern (%s)", text,
+                               list);
+    }
+    if ((rc = tippe_json_string(c, item, path, "gcode", 0, p->gcode, sizeof p->gcode, &here)))
+        return rc;
+    if ((rc = print_number(c, item, path, "external_width_mm", 0.05, 3, 0, "mm",
+                           &s->external_width_mm)) ||
+        (rc = print_number(c, item, path, "infill_width_mm", 0.05, 3, 0, "mm",
+                           &s->infill_width_mm)) ||
+        (rc = print_number(c, item, path, "first_layer_height_mm", 0.01, 2, 0, "mm",
+                           &s->first_layer_height_mm)) ||
+        (rc = print_number(c, item, path, "first_layer_width_mm", 0, 3, 0,
+                           "mm (0: each line its own width)", &s->first_layer_width_mm)) ||
+        (rc = print_number(c, item, path, "top_min_mm", 0, 100, 0, "mm", &s->top_min_mm)) ||
+        (rc = print_number(c, item, path, "bottom_min_mm", 0, 100, 0, "mm", &s->bottom_min_mm)) ||
+        (rc = print_number(c, item, path, "infill_overlap", 0, 1, 0,
+                           "(a fraction of the perimeter spacing: 25 % is 0.25)",
+                           &s->infill_overlap)) ||
+        (rc = print_number(c, item, path, "flow", 0.5, 1.5, 0, "(extrusion multiplier)",
+                           &s->flow)))
+        return rc;
     return TIPPE_OK;
 }
 
@@ -112,18 +174,19 @@ static int parse_print(const tippe_json_reader *c, const cJSON *obj, const char 
                                      item);
     int rc;
     double per = p->print.perimeters, layers = p->print.top_bottom_layers;
+    tippe_print_settings *s = &p->print;
     if ((rc = tippe_json_check_keys(c, item, path, "a print block", tippe_design_print_keys, NULL)) ||
         (rc = tippe_json_string(c, item, path, "notes", 0, NULL, 0, NULL)) ||
         (rc = print_number(c, item, path, "perimeters", 0, 50, 1, "perimeters", &per)) ||
-        (rc = print_number(c, item, path, "line_width_mm", 0.05, 3, 0, "mm",
-                           &p->print.line_width_mm)) ||
+        (rc = print_number(c, item, path, "line_width_mm", 0.05, 3, 0, "mm", &s->line_width_mm)) ||
         (rc = print_number(c, item, path, "top_bottom_layers", 0, 200, 1, "layers", &layers)) ||
         (rc = print_number(c, item, path, "layer_height_mm", 0.01, 2, 0, "mm",
-                           &p->print.layer_height_mm)) ||
+                           &s->layer_height_mm)) ||
         (rc = print_number(c, item, path, "infill", 0, 1, 0,
-                           "(a fraction of the solid density: 15 % is 0.15)", &p->print.infill)) ||
+                           "(a fraction of the solid density: 15 % is 0.15)", &s->infill)) ||
         (rc = print_number(c, item, path, "measured_mass_g", 1e-6, 1e6, 0, "g",
-                           &p->measured_mass_g)))
+                           &p->measured_mass_g)) ||
+        (rc = parse_print_rules(c, item, path, p)))
         return rc;
     p->print.perimeters = (int)per;
     p->print.top_bottom_layers = (int)layers;

@@ -71,6 +71,17 @@ typedef struct {
     double solid_mass_kg, skin_mass_kg, print_rel_error;
     double mass_kg;         /* signed contribution */
     int fit;                /* a hole's "fit": TIPPE_DESIGN_FIT_* (NONE when not given) */
+    char gcode[1024];       /* print.gcode as given (relative to the design file), or "" */
+    double printed_mass_kg; /* as printed, at `infill` */
+    tippe_print_sliced sliced; /* the slicer model's layers (print.model slicer) */
+    /* print.gcode: the G-code's body, matched to the part, the weighing's flow factor
+     * and the layer model's moments and mass beside it */
+    int has_gcode;
+    tippe_gcode_body gcode_body;
+    tippe_gcode_part gcode_part;
+    double gcode_flow;
+    tippe_moments model_moments;
+    double model_mass_kg;
 } part;
 
 struct tippe_design {
@@ -119,6 +130,13 @@ char *tippe_design_dup_string(const char *s);
 int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d,
                        int check);
 
+/* design.c: a part's unit-density moments (closed forms; a void's positive). */
+tippe_moments tippe_design_part_moments(const part *p);
+/* design_printed.c: a printed part's unit-density moments as printed (its voids
+ * added back: the caller subtracts them as usual); sets its infill and masses. */
+int tippe_design_printed_moments(const tippe_json_reader *c, tippe_design *d, int i,
+                                 tippe_moments *out);
+
 /* design_parts.c: the file's keys, the parts and the materials table. */
 /* a length in mm that must be > 0 (or >= 0 with allow_zero) */
 int tippe_design_read_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
@@ -130,6 +148,7 @@ extern const char *const tippe_design_top_string_keys[];
 extern const char *const tippe_design_part_string_keys[];
 extern const char *const tippe_design_all_part_keys[];
 extern const char *const tippe_design_print_keys[];
+extern const char *const tippe_design_print_string_keys[];
 int tippe_design_parse_part(const tippe_json_reader *c, const cJSON *obj, int index, part *p);
 int tippe_design_load_materials(const char *mat_file, cJSON **out, tippe_error *err);
 int tippe_design_lookup_material(const tippe_json_reader *c, const cJSON *table,

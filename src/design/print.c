@@ -615,7 +615,26 @@ int tippe_print_core_moments(const tippe_solid *part, const tippe_solid *voids, 
 
 tippe_print_settings tippe_print_defaults(void)
 {
-    tippe_print_settings s = {2, 0.45, 4, 0.2, 0.15};
+    /* PrusaSlicer 2.5, "0.20mm QUALITY @MK3" with a 0.4 mm nozzle
+     * (designs/slicer/prusa-pla-0.4mm.ini): widths 1.125 x the nozzle
+     * (Flow::auto_extrusion_width), gyroid, 25 % overlap, anchors 2.5 / 12 mm */
+    tippe_print_settings s = {.perimeters = 2,
+                              .line_width_mm = 0.45,
+                              .top_bottom_layers = 4,
+                              .layer_height_mm = 0.2,
+                              .infill = 0.15,
+                              .model = TIPPE_PRINT_MODEL_SLICER,
+                              .pattern = TIPPE_PATTERN_GYROID,
+                              .external_width_mm = 0.45,
+                              .infill_width_mm = 0.45,
+                              .first_layer_height_mm = 0.2,
+                              .first_layer_width_mm = 0.42,
+                              .top_min_mm = 0.7,
+                              .bottom_min_mm = 0.5,
+                              .infill_overlap = 0.25,
+                              .anchor_mm = 2.5,
+                              .anchor_max_mm = 12,
+                              .flow = 1.0};
     return s;
 }
 

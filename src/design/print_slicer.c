@@ -1,0 +1,494 @@
+/* The printed part as PrusaSlicer 2.5 deposits it, layer by layer.
+ *
+ * The slicer's rules, each from its source (docs/slicer-rules.md names the file and function
+ * of each; PrusaSlicer version_2.5.0, src/libslic3r/), applied to a solid of revolution printed
+ * with its axis vertical. Every layer is a set of rings, so each rule is interval arithmetic on
+ * radii, and the deposit of a layer is a set of annular slabs whose moments are closed forms
+ * (tippe_tube). Nothing is sampled but the heights the slicer samples (the middle of each
+ * layer, PrintObjectSlice.cpp), so the model is exact arithmetic on the slicer's own
+ * discretisation; what it leaves out is listed in docs/printing.md. */
+#include "design/section.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Rings per layer: the part's one ring less up to one per void, times two for the
+ * differences taken below. */
+#define MAX_RINGS 128
+/* Layers at most: a 1 m ball at 0.05 mm layers. */
+#define MAX_LAYERS 50000
+/* The extremes of the printed part in z are found to this (m). */
+#define EDGE_TOL_M 1e-12
+/* PrusaSlicer 2.5 grows top and bottom fill surfaces by 3 mm into the infill
+ * (EXTERNAL_INFILL_MARGIN, libslic3r.h; LayerRegion::process_external_surfaces). */
+#define EXTERNAL_INFILL_MARGIN_M 3e-3
+/* Vertical shells: the grown region is opened by 0.5 and 0.8 of 1.05 x the solid
+ * infill's spacing (PrintObject::discover_vertical_shells). */
+#define SHELL_SPACING_FACTOR 1.05
+/* Infill regions narrower than 0.6 x the infill spacing vanish (offset by
+ * INSET_OVERLAP_TOLERANCE = 0.4 of the spacing each side, PerimeterGenerator.cpp). */
+#define INFILL_MIN_WIDTH_FACTOR 0.6
+/* Top and bottom surfaces are opened by a tenth of the external perimeter's width
+ * (PrintObject::detect_surfaces_type). */
+#define SURFACE_OPENING_FACTOR 0.1
+
+typedef struct {
+    int n;
+    double lo[MAX_RINGS], hi[MAX_RINGS]; /* m; sorted, disjoint; lo == 0: a disc */
+} rings;
+
+/* ------------------------------------------------------------ rings */
+
+static void rings_push(rings *s, double lo, double hi)
+{
+    if (!(lo < hi) || s->n >= MAX_RINGS)
+        return;
+    if (s->n && lo <= s->hi[s->n - 1]) { /* touching or overlapping: merge */
+        if (hi > s->hi[s->n - 1])
+            s->hi[s->n - 1] = hi;
+        return;
+    }
+    s->lo[s->n] = lo;
+    s->hi[s->n++] = hi;
+}
+
+static void rings_intersect(const rings *a, const rings *b, rings *out)
+{
+    rings r = {0};
+    for (int i = 0, j = 0; i < a->n && j < b->n;) {
+        rings_push(&r, fmax(a->lo[i], b->lo[j]), fmin(a->hi[i], b->hi[j]));
+        if (a->hi[i] < b->hi[j])
+            i++;
+        else
+            j++;
+    }
+    *out = r;
+}
+
+static void rings_subtract(const rings *a, const rings *b, rings *out)
+{
+    rings r = {0};
+    for (int i = 0; i < a->n; i++) {
+        double lo = a->lo[i];
+        for (int j = 0; j < b->n && lo < a->hi[i]; j++) {
+            if (b->hi[j] <= lo || b->lo[j] >= a->hi[i])
+                continue;
+            rings_push(&r, lo, b->lo[j]);
+            lo = fmax(lo, b->hi[j]);
+        }
+        rings_push(&r, lo, a->hi[i]);
+    }
+    *out = r;
+}
+
+static void rings_union(const rings *a, const rings *b, rings *out)
+{
+    rings r = {0};
+    int i = 0, j = 0;
+    while (i < a->n || j < b->n) {
+        if (j >= b->n || (i < a->n && a->lo[i] <= b->lo[j])) {
+            rings_push(&r, a->lo[i], a->hi[i]);
+            i++;
+        } else {
+            rings_push(&r, b->lo[j], b->hi[j]);
+            j++;
+        }
+    }
+    *out = r;
+}
+
+/* Each ring's bounding circles moved by d (d < 0 shrinks, d > 0 grows): a 2-D
+ * offset of an annulus is the annulus of the offset radii. The axis is not a
+ * boundary (a disc keeps lo = 0), and a grown ring stops at the axis. */
+static void rings_offset(const rings *a, double d, rings *out)
+{
+    rings r = {0};
+    for (int i = 0; i < a->n; i++) {
+        double lo = a->lo[i] > 0 ? fmax(0.0, a->lo[i] - d) : 0.0;
+        rings_push(&r, lo, a->hi[i] + d);
+    }
+    *out = r;
+}
+
+/* Morphological opening: shrink by a, grow by b (b >= a): rings narrower than
+ * 2a (a disc: whose diameter is) vanish, the rest grow by b - a. */
+static void rings_opening(const rings *a, double shrink, double grow, rings *out)
+{
+    rings t;
+    rings_offset(a, -shrink, &t);
+    rings_offset(&t, grow, out);
+}
+
+/* Rings narrower than w vanish (a disc: narrower than its diameter). */
+static void rings_drop_narrow(rings *s, double w)
+{
+    rings r = {0};
+    for (int i = 0; i < s->n; i++)
+        if ((s->lo[i] > 0 ? s->hi[i] - s->lo[i] : 2 * s->hi[i]) >= w)
+            rings_push(&r, s->lo[i], s->hi[i]);
+    *s = r;
+}
+
+/* Unit-density moments of the slab of rings r, thickness t, centred at z. */
+static tippe_moments rings_slab(const rings *r, double t, double z)
+{
+    tippe_moments m = {0, 0, 0, 0};
+    for (int i = 0; i < r->n; i++)
+        m = tippe_moments_add(m, tippe_tube(r->lo[i], r->hi[i], t, z, 0.0));
+    return m;
+}
+
+/* ------------------------------------------------------------ layers */
+
+typedef struct {
+    double z_mid;       /* design frame, m: where the slicer cuts (the layer's middle) */
+    double t;           /* thickness, m */
+    double s_ext, s_per, s_fill; /* spacings of its lines, m */
+    rings outline, walls, infill, surface;
+} layer_t;
+
+/* A line of width w laid in layers t thick is a band w - t (1 - pi/4) wide
+ * (Flow::rounded_rectangle_extrusion_spacing, Flow.cpp). */
+static double spacing(double w, double t) { return w - t * (1.0 - M_PI / 4.0); }
+
+typedef struct {
+    const tippe_solid *part, *voids;
+    int n_voids, flip;
+} slicer_part;
+
+static void outline_at(const slicer_part *p, double z_print, rings *out)
+{
+    double z = p->flip ? -z_print : z_print;
+    double lo[MAX_RINGS], hi[MAX_RINGS];
+    int n = tippe_print_section(p->part, p->voids, p->n_voids, z, lo, hi, MAX_RINGS);
+    out->n = 0;
+    for (int i = 0; i < n; i++)
+        rings_push(out, lo[i], hi[i]);
+}
+
+/* The lowest (dir = +1) or highest (dir = -1) height in the print frame where
+ * the part has material: where the slicer's bed (or the last layer) is. */
+static int printed_edge(const slicer_part *p, double zlo, double zhi, int dir, double *edge)
+{
+    enum { N = 4096 };
+    rings r;
+    double prev = dir > 0 ? zlo : zhi;
+    for (int k = 1; k <= N; k++) {
+        double z = dir > 0 ? zlo + (zhi - zlo) * k / N : zhi - (zhi - zlo) * k / N;
+        outline_at(p, z, &r);
+        if (!r.n) {
+            prev = z;
+            continue;
+        }
+        double a = prev, b = z; /* a empty, b not: bisect */
+        while (fabs(b - a) > EDGE_TOL_M) {
+            double m = 0.5 * (a + b);
+            outline_at(p, m, &r);
+            if (r.n)
+                b = m;
+            else
+                a = m;
+        }
+        *edge = b;
+        return 1;
+    }
+    return 0;
+}
+
+/* Layer i's walls and infill region (PerimeterGenerator::process_arachne): the
+ * external perimeter's band starts (w_e - s_e)/2 inside the outline, the walls
+ * are s_e + (n - 1) s_p thick, and the infill region starts infill_overlap x s_p
+ * before their inner edge (so the two overlap there). */
+static void walls_and_infill(const tippe_print_settings *s, layer_t *L)
+{
+    const int n = s->perimeters;
+    double w_e = s->external_width_mm * 1e-3;
+    double d0 = n > 0 ? 0.5 * (w_e - L->s_ext) : 0.0;
+    double W = n > 0 ? L->s_ext + (n - 1) * L->s_per : 0.0;
+    double d_f = n > 0 ? d0 + W - s->infill_overlap * L->s_per : 0.0;
+    rings inner, band, outer;
+    rings_offset(&L->outline, -d0, &outer);
+    rings_offset(&L->outline, -(d0 + W), &inner);
+    rings_subtract(&outer, &inner, &band);
+    L->walls = band;
+    rings_offset(&L->outline, -d_f, &L->infill);
+    rings_drop_narrow(&L->infill, INFILL_MIN_WIDTH_FACTOR * L->s_fill);
+}
+
+/* Layer i's top and bottom fill surfaces (PrintObject::detect_surfaces_type):
+ * what of its infill region the layer above (below) does not cover, opened by
+ * w_e / 10; the first layer is all bottom. Grown by EXTERNAL_INFILL_MARGIN
+ * within the infill region (2.5's process_external_surfaces). */
+static void surfaces(const tippe_print_settings *s, layer_t *layers, int n_layers, int i)
+{
+    layer_t *L = &layers[i];
+    rings top, bottom, both, open;
+    static const rings none = {0};
+    rings_subtract(&L->infill, i + 1 < n_layers ? &layers[i + 1].outline : &none, &top);
+    if (i == 0)
+        bottom = L->infill;
+    else
+        rings_subtract(&L->infill, &layers[i - 1].outline, &bottom);
+    rings_union(&top, &bottom, &both);
+    double d = 0.5 * SURFACE_OPENING_FACTOR * s->external_width_mm * 1e-3;
+    rings_opening(&both, d, d, &open);
+    rings grown;
+    rings_offset(&open, open.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &grown);
+    rings_intersect(&grown, &L->infill, &L->surface);
+}
+
+/* The layers whose shells count for layer i (PrintObject::discover_vertical_shells):
+ * upwards while fewer than top_solid_layers or thinner than top_solid_min_thickness,
+ * downwards likewise with the bottom settings. */
+static void shell_range(const tippe_print_settings *s, const layer_t *layers, int n_layers, int i,
+                        int *lo, int *hi)
+{
+    int j = i + 1;
+    while (j < n_layers && (j < i + s->top_bottom_layers ||
+                            layers[j].z_mid - layers[i].z_mid < s->top_min_mm * 1e-3 - 1e-12))
+        j++;
+    *hi = j - 1;
+    j = i - 1;
+    while (j >= 0 && (j > i - s->top_bottom_layers ||
+                      layers[i].z_mid - layers[j].z_mid < s->bottom_min_mm * 1e-3 - 1e-12))
+        j--;
+    *lo = j + 1;
+}
+
+/* Layer i's solid infill: its own surfaces, and the vertical shell: where its
+ * infill region is not inside every neighbour's infill region, or a neighbour's
+ * surface (grown by 1.05 s) lies over it; the shell opened (bands narrower than
+ * 1.05 s vanish, the rest grow by 0.3 x 1.05 s), all within the infill region. */
+static void solid_infill(const tippe_print_settings *s, const layer_t *layers, int n_layers,
+                         int i, rings *solid)
+{
+    const layer_t *L = &layers[i];
+    int lo, hi;
+    shell_range(s, layers, n_layers, i, &lo, &hi);
+    double sp = SHELL_SPACING_FACTOR * L->s_fill;
+    rings common = L->infill, cover = {0}, t;
+    for (int j = lo; j <= hi; j++) {
+        if (j == i)
+            continue;
+        rings_intersect(&common, &layers[j].infill, &t);
+        common = t;
+        rings g;
+        rings_offset(&layers[j].surface, sp, &g);
+        rings_union(&cover, &g, &t);
+        cover = t;
+    }
+    rings shell, opened;
+    rings_subtract(&L->infill, &common, &shell);
+    rings_union(&shell, &cover, &t);
+    rings_intersect(&t, &L->infill, &shell);
+    rings_opening(&shell, 0.5 * sp, 0.8 * sp, &opened);
+    rings_intersect(&opened, &L->infill, &shell);
+    rings_union(&shell, &L->surface, solid);
+}
+
+/* The anchors and joins of sparse lines along their region's boundary
+ * (Fill::connect_infill, FillBase.cpp): neighbouring line ends are joined by
+ * the boundary between them when it is shorter than infill_anchor_max, so half
+ * the boundary is traced by a line s wide; the lines stop s/2 inside the
+ * boundary, which takes back the pattern's share of that strip. A band
+ * lambda = (s/2)(1 - bulk) wide per unit boundary length. Where line ends lie
+ * farther apart than anchor_max (line ends along a boundary at 45 degrees:
+ * sqrt(2) s / bulk apart), each end gets an anchor of at most infill_anchor
+ * instead. Returned as the factor of (s/2) for the regular layers' spacing. */
+static double anchor_factor(const tippe_print_settings *s, double s_fill, double bulk)
+{
+    if (!(bulk > 0))
+        return 0.0;
+    double factor = 1.0 - fmin(bulk, 1.0);
+    double gap = M_SQRT2 * s_fill / bulk;
+    if (gap > s->anchor_max_mm * 1e-3)
+        factor *= fmin(1.0, 2.0 * s->anchor_mm * 1e-3 / gap);
+    return factor;
+}
+
+/* Moments of a band lambda wide along the circles bounding r, in a slab t thick
+ * at z: 2 pi rho lambda t at each boundary radius rho (the axis is none). */
+static tippe_moments boundary_band(const rings *r, double lambda, double t, double z)
+{
+    tippe_moments m = {0, 0, 0, 0};
+    for (int i = 0; i < r->n; i++) {
+        double rho[2] = {r->lo[i], r->hi[i]};
+        for (int k = 0; k < 2; k++) {
+            if (!(rho[k] > 0))
+                continue;
+            double v = 2 * M_PI * rho[k] * lambda * t;
+            m = tippe_moments_add(m, (tippe_moments){v, v * z, v * (z * z + t * t / 12),
+                                                     v * rho[k] * rho[k]});
+        }
+    }
+    return m;
+}
+
+/* ------------------------------------------------------------ the part */
+
+int tippe_print_slice_moments(const tippe_solid *part, const tippe_solid *voids, int n_voids,
+                              const tippe_print_settings *s, int flip, tippe_print_sliced *out,
+                              tippe_error *err)
+{
+    return tippe_print_slice_layers(part, voids, n_voids, s, flip, out, NULL, 0, err);
+}
+
+int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, int n_voids,
+                             const tippe_print_settings *s, int flip, tippe_print_sliced *out,
+                             tippe_print_layer *rows, int cap, tippe_error *err)
+{
+    memset(out, 0, sizeof *out);
+    double bulk = tippe_print_pattern_bulk(s->pattern);
+    if (!(bulk > 0))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "infill pattern '%s' deposits a shape-dependent amount (no bulk "
+                               "fraction to model): slice the part and give its G-code",
+                               tippe_print_pattern_name(s->pattern));
+    slicer_part P = {part, voids, n_voids, flip};
+    double zlo, zhi;
+    if (!tippe_print_extent(part, &zlo, &zhi))
+        return TIPPE_OK;
+    if (flip) {
+        double t = zlo;
+        zlo = -zhi;
+        zhi = -t;
+    }
+    double bed, top;
+    if (!printed_edge(&P, zlo, zhi, +1, &bed) || !printed_edge(&P, zlo, zhi, -1, &top))
+        return TIPPE_OK; /* nothing printed */
+    const double h = s->layer_height_mm * 1e-3, h1 = s->first_layer_height_mm * 1e-3;
+    double height = top - bed;
+    long n_layers = height <= h1 ? 1 : 1 + (long)ceil((height - h1) / h - 1e-9);
+    if (n_layers > MAX_LAYERS)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%ld layers of %g mm: more than the layer model takes (%d)",
+                               n_layers, s->layer_height_mm, MAX_LAYERS);
+    layer_t *L = calloc((size_t)n_layers, sizeof *L);
+    if (!L)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "print model: out of memory");
+    int n = 0;
+    for (long i = 0; i < n_layers; i++) {
+        double t = i ? h : h1, bottom = i ? bed + h1 + (double)(i - 1) * h : bed;
+        layer_t *l = &L[n];
+        outline_at(&P, bottom + 0.5 * t, &l->outline);
+        if (!l->outline.n)
+            continue; /* a layer that cuts no material is no layer */
+        /* the first layer takes first_layer_extrusion_width for every line (PrintRegion::flow) */
+        int first = i == 0 && s->first_layer_width_mm > 0;
+        double w_e = (first ? s->first_layer_width_mm : s->external_width_mm) * 1e-3;
+        double w_p = (first ? s->first_layer_width_mm : s->line_width_mm) * 1e-3;
+        double w_f = (first ? s->first_layer_width_mm : s->infill_width_mm) * 1e-3;
+        l->t = t;
+        l->z_mid = bottom + 0.5 * t;
+        l->s_ext = spacing(w_e, t);
+        l->s_per = spacing(w_p, t);
+        l->s_fill = spacing(w_f, t);
+        walls_and_infill(s, l);
+        n++;
+    }
+    for (int i = 0; i < n; i++)
+        surfaces(s, L, n, i);
+    tippe_moments fixed = {0, 0, 0, 0}, sparse = {0, 0, 0, 0}, band = {0, 0, 0, 0};
+    for (int i = 0; i < n; i++) {
+        layer_t *l = &L[i];
+        double z = flip ? -l->z_mid : l->z_mid;
+        rings solid, sp;
+        solid_infill(s, L, n, i, &solid);
+        rings_subtract(&l->infill, &solid, &sp);
+        tippe_moments w = rings_slab(&l->walls, l->t, z), so = rings_slab(&solid, l->t, z);
+        out->wall_m3 += w.m * s->flow;
+        out->solid_m3 += so.m * s->flow;
+        fixed = tippe_moments_add(fixed, tippe_moments_add(w, so));
+        tippe_moments spm = rings_slab(&sp, l->t, z);
+        tippe_moments bm = boundary_band(&sp, 0.5 * l->s_fill, l->t, z);
+        sparse = tippe_moments_add(sparse, spm);
+        band = tippe_moments_add(band, bm);
+        if (rows && i < cap) {
+            double bulk_f = bulk * s->infill;
+            double a = s->infill > 0 ? anchor_factor(s, n > 1 ? L[1].s_fill : l->s_fill, bulk_f)
+                                     : 0.0;
+            rows[i] = (tippe_print_layer){.z_mid_m = z, .thickness_m = l->t,
+                                          .wall_m3 = w.m * s->flow, .solid_m3 = so.m * s->flow,
+                                          .sparse_m3 = spm.m * bulk_f * s->flow,
+                                          .anchor_m3 = bm.m * a * s->flow};
+        }
+    }
+    out->fixed = fixed;
+    out->sparse_region = sparse;
+    out->sparse_band = band;
+    out->s_fill_m = n > 1 ? L[1].s_fill : n ? L[0].s_fill : 0.0;
+    out->deposit = tippe_print_sliced_at(out, s, s->infill, &out->sparse_m3, &out->anchor_m3);
+    out->n_layers = n;
+    out->bed_z_m = flip ? -bed : bed;
+    out->top_z_m = flip ? -top : top;
+    free(L);
+    return TIPPE_OK;
+}
+
+/* The deposit at another infill: the walls and solid infill do not depend on
+ * it, the sparse lines deposit bulk x infill of their region and the anchors a
+ * band (1 - bulk x infill) x s/2 (times the anchor factor) along its boundary. */
+tippe_moments tippe_print_sliced_at(const tippe_print_sliced *sl, const tippe_print_settings *s,
+                                    double infill, double *sparse_m3, double *anchor_m3)
+{
+    double bulk = tippe_print_pattern_bulk(s->pattern) * infill;
+    double a = infill > 0 ? anchor_factor(s, sl->s_fill_m, bulk) : 0.0;
+    tippe_moments sp = tippe_moments_scale(sl->sparse_region, bulk);
+    tippe_moments an = tippe_moments_scale(sl->sparse_band, a);
+    if (sparse_m3)
+        *sparse_m3 = sp.m * s->flow;
+    if (anchor_m3)
+        *anchor_m3 = an.m * s->flow;
+    return tippe_moments_scale(tippe_moments_add(sl->fixed, tippe_moments_add(sp, an)), s->flow);
+}
+
+/* ------------------------------------------------------------ patterns */
+
+static const struct {
+    const char *name;
+    double bulk; /* deposited fraction of the nominal density in bulk; 0: not modelled */
+} patterns[TIPPE_PRINT_N_PATTERNS] = {
+    /* 2.44 x the gyroid's mean curve length per unit area of a horizontal slice in
+     * its own units (0.3944, by the co-area formula over a period; tests/test_print_slicer.c
+     * recomputes it): FillGyroid.cpp scales the pattern by spacing / (2.44 density). */
+    [TIPPE_PATTERN_GYROID] = {"gyroid", 0.9623},
+    /* lines spacing / density apart (FillRectilinear.cpp, fill_surface_by_lines): exactly */
+    [TIPPE_PATTERN_RECTILINEAR] = {"rectilinear", 1.0},
+    [TIPPE_PATTERN_ALIGNED_RECTILINEAR] = {"alignedrectilinear", 1.0},
+    [TIPPE_PATTERN_MONOTONIC] = {"monotonic", 1.0},
+    /* n directions, each n spacing / density apart (fill_surface_by_multilines) */
+    [TIPPE_PATTERN_GRID] = {"grid", 1.0},
+    [TIPPE_PATTERN_TRIANGLES] = {"triangles", 1.0},
+    [TIPPE_PATTERN_STARS] = {"stars", 1.0},
+    [TIPPE_PATTERN_CUBIC] = {"cubic", 1.0},
+    /* loops spacing / density apart (FillConcentric.cpp) */
+    [TIPPE_PATTERN_CONCENTRIC] = {"concentric", 1.0},
+    /* zigzag columns a distance d = spacing / density apart, each period 2 sqrt(3) d long
+     * tracing 8 d / sqrt(3) of line (FillHoneycomb.cpp): 4/3 of the density */
+    [TIPPE_PATTERN_HONEYCOMB] = {"honeycomb", 4.0 / 3.0},
+    /* shape-dependent: an octree or a tree that follows the part (FillAdaptive.cpp,
+     * FillLightning.cpp), 3D honeycomb's per-layer truncated octahedra */
+    [TIPPE_PATTERN_ADAPTIVE_CUBIC] = {"adaptivecubic", 0},
+    [TIPPE_PATTERN_SUPPORT_CUBIC] = {"supportcubic", 0},
+    [TIPPE_PATTERN_LIGHTNING] = {"lightning", 0},
+    [TIPPE_PATTERN_3D_HONEYCOMB] = {"3dhoneycomb", 0},
+};
+
+const char *tippe_print_pattern_name(int pattern)
+{
+    return pattern >= 0 && pattern < TIPPE_PRINT_N_PATTERNS ? patterns[pattern].name : "?";
+}
+
+int tippe_print_pattern_parse(const char *name)
+{
+    for (int i = 0; i < TIPPE_PRINT_N_PATTERNS; i++)
+        if (!strcmp(name, patterns[i].name))
+            return i;
+    return -1;
+}
+
+double tippe_print_pattern_bulk(int pattern)
+{
+    return pattern >= 0 && pattern < TIPPE_PRINT_N_PATTERNS ? patterns[pattern].bulk : 0.0;
+}
