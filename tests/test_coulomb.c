@@ -4,6 +4,7 @@
  * speed v_s, Pliskin's spin dependence, and Cohen's (1977) launch. docs/dynamics.md,
  * "Coulomb friction", gives the figures these reproduce. */
 #include "check.h"
+#include "dynamics_fixtures.h"
 #include "tippe/physics.h"
 
 #include <gsl/gsl_errno.h>
@@ -14,82 +15,25 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Cohen (1977): R = 2.5 cm, CoM 0.5 cm from the centre, I1 = I3 = 0.4 m R^2, m = 15 g. */
+/* Cohen's (1977) top, his friction mu_c = 0.3 under law (v_s = vs). */
 static tippe_dynamics_model cohen(tippe_friction_law law, double vs)
 {
-    const double m = 0.015, R = 0.025, I = 0.4 * m * R * R;
-    tippe_dynamics_model md = {.top = {m, R, 0.005, I, I, -1}, .g = 9.81, .mu = 0.0,
-                               .law = law, .mu_c = 0.3, .slip_scale_m_s = vs};
-    return md;
+    return friction_model(cohen_ball(0.005), 0.0, law, 0.3, vs);
 }
 
-/* The M12 set-screw ball (designs/m12-setscrew.json) with its weight at Z2 = 15 mm,
- * and its central hand launch's tilt (0.674 x 0.1 rad, steady precession). */
+/* The M12 ball, mu = 2.3 s/m (viscous) or mu_c = 0.3 under law (v_s = vs). */
 static tippe_dynamics_model m12(tippe_friction_law law, double vs)
 {
-    tippe_dynamics_model md = {.top = {0.0768353146, 0.025, 0.00219013874, 1.9053487e-05,
-                                       1.77647865e-05, 1},
-                               .g = 9.81, .mu = 2.3, .law = law, .mu_c = 0.3,
-                               .slip_scale_m_s = vs};
-    return md;
+    return friction_model(m12_ball(1.0), 2.3, law, 0.3, vs);
 }
 
-static tippe_dynamics_initial m12_launch(const tippe_dynamics_model *md, double spin)
+/* To t_end at the default accuracy, on past a tip verdict to the flip (t_flip). */
+static int run_flip(const tippe_dynamics_model *md, const tippe_dynamics_initial *ic,
+                    double t_end, tippe_dynamics_result *r)
 {
-    tippe_dynamics_initial ic = {0.067448975019608171, 0, 0, spin, 0, 0};
-    tippe_error e;
-    tippe_dynamics_precession(md, ic.theta, spin, TIPPE_PRECESSION_STEADY, &ic.phi_dot, &e);
-    return ic;
-}
-
-static int run(const tippe_dynamics_model *md, const tippe_dynamics_initial *ic, double t_end,
-               int until_flip, tippe_dynamics_result *r)
-{
-    tippe_dynamics_options o;
-    tippe_dynamics_options_default(&o);
-    o.t_end = t_end;
-    o.until_flip = until_flip;
-    tippe_error e;
-    int s = tippe_dynamics_run(md, ic, &o, r, &e);
-    if (s)
-        printf("  run failed: %s\n", e.msg);
-    return s;
-}
-
-typedef struct {
-    int n, cap;
-    tippe_dynamics_sample *s;
-} buf;
-
-static int collect(const tippe_dynamics_sample *s, void *ctx)
-{
-    buf *b = ctx;
-    if (b->n == b->cap) {
-        b->cap = b->cap ? 2 * b->cap : 1024;
-        b->s = realloc(b->s, (size_t)b->cap * sizeof *b->s);
-        if (!b->s)
-            return 1;
-    }
-    b->s[b->n++] = *s;
-    return 0;
-}
-
-static int run_samples(const tippe_dynamics_model *md, const tippe_dynamics_initial *ic,
-                       double t_end, double dt, buf *b, tippe_dynamics_result *r)
-{
-    tippe_dynamics_options o;
-    tippe_dynamics_options_default(&o);
-    o.level = TIPPE_LEVEL_TRAJECTORY;
-    o.t_end = t_end;
-    o.sample_dt = dt;
-    o.on_sample = collect;
-    o.sample_ctx = b;
-    o.run_to_t_end = 1;
-    tippe_error e;
-    int s = tippe_dynamics_run(md, ic, &o, r, &e);
-    if (s)
-        printf("  run failed: %s\n", e.msg);
-    return s;
+    tippe_dynamics_options o = run_options(t_end, NULL, NULL, 0.0);
+    o.until_flip = 1;
+    return run_with(md, ic, o, r);
 }
 
 /* dE/dt = -mu_c Rn |V_Q| at every sample of a sliding flip (the M12 ball at 300 rad/s
@@ -98,10 +42,10 @@ static void test_energy_balance(void)
 {
     tippe_dynamics_model md = m12(TIPPE_FRICTION_COULOMB, 1e-4);
     tippe_dynamics_initial ic = m12_launch(&md, 300.0);
-    buf b = {0, 0, NULL};
+    sample_buf b = {0, 0, NULL};
     tippe_dynamics_result r;
     const double dt = 2e-5;
-    CHECK(run_samples(&md, &ic, 1.6, dt, &b, &r) == TIPPE_OK, "run");
+    CHECK(run_samples(&md, &ic, 1.6, dt, NULL, &b, &r) == TIPPE_OK, "run");
     CHECK(r.stick_events == 0, "slides throughout: %ld stick events", r.stick_events);
     double worst = 0.0, slip_min = INFINITY;
     int crossed = 0;
@@ -141,7 +85,7 @@ static void test_viscous_limit(void)
     reg.mu_c = 300.0;
     const tippe_dynamics_initial ic = {0.1, 0, 0, 100.0, 0, 0};
     tippe_dynamics_result a, b;
-    CHECK(run(&vis, &ic, 10.0, 1, &a) == TIPPE_OK && run(&reg, &ic, 10.0, 1, &b) == TIPPE_OK,
+    CHECK(run_flip(&vis, &ic, 10.0, &a) == TIPPE_OK && run_flip(&reg, &ic, 10.0, &b) == TIPPE_OK,
           "runs");
     CHECK(a.verdict == TIPPE_VERDICT_TIP && b.verdict == TIPPE_VERDICT_TIP, "%s, %s",
           tippe_verdict_name(a.verdict), tippe_verdict_name(b.verdict));
@@ -154,26 +98,20 @@ static void test_viscous_limit(void)
     /* and a 10x smaller v_s moves it measurably (the test can fail) */
     reg.slip_scale_m_s = 1.0;
     reg.mu_c = 3.0;
-    CHECK(run(&reg, &ic, 10.0, 1, &b) == TIPPE_OK, "run");
+    CHECK(run_flip(&reg, &ic, 10.0, &b) == TIPPE_OK, "run");
     CHECK(!(fabs(a.t_flip - b.t_flip) < 1e-5), "v_s = 1 m/s is not viscous: %.9f vs %.9f",
           a.t_flip, b.t_flip);
 }
 
 /* The sliding law in the Euler-angle reference form (3.15-3.19 with the regularised
  * Coulomb coefficient) against the lab-frame form, along a sliding flip. */
-static int euler_sys(double t, const double y[], double f[], void *p)
-{
-    (void)t;
-    return tippe_dynamics_euler_rhs(p, y, f, NULL) == TIPPE_OK ? GSL_SUCCESS : GSL_EBADFUNC;
-}
-
 static void test_against_euler(void)
 {
     tippe_dynamics_model md = m12(TIPPE_FRICTION_COULOMB_CREEP, 1e-4);
     const tippe_dynamics_initial ic = {1.0, 0.0, 20.0, 300.0, 0.05, -0.02};
-    buf b = {0, 0, NULL};
+    sample_buf b = {0, 0, NULL};
     tippe_dynamics_result r;
-    CHECK(run_samples(&md, &ic, 0.5, 0.01, &b, &r) == TIPPE_OK, "run");
+    CHECK(run_samples(&md, &ic, 0.5, 0.01, NULL, &b, &r) == TIPPE_OK, "run");
     gsl_odeiv2_system sys = {euler_sys, NULL, TIPPE_EULER_DIM, &md};
     gsl_odeiv2_driver *d =
         gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-6, 1e-12, 1e-12);
@@ -217,9 +155,9 @@ static void test_stick_limit(void)
     for (int i = 0; i < 3; i++) {
         tippe_dynamics_model md = i == 0 ? cohen(TIPPE_FRICTION_COULOMB, 1e-4)
                                          : cohen(TIPPE_FRICTION_COULOMB_CREEP, vs[i - 1]);
-        buf b = {0, 0, NULL};
+        sample_buf b = {0, 0, NULL};
         tippe_dynamics_result r;
-        CHECK(run_samples(&md, &ic, 0.3, 0.3, &b, &r) == TIPPE_OK, "run %d", i);
+        CHECK(run_samples(&md, &ic, 0.3, 0.3, NULL, &b, &r) == TIPPE_OK, "run %d", i);
         th[i] = b.n ? b.s[b.n - 1].theta : NAN;
         if (i == 0)
             CHECK(r.stick_events == 1 && r.slip_events == 0 && r.rolling_time_s > 0.26,
@@ -246,7 +184,7 @@ static void test_cohen(void)
     tippe_dynamics_model md = cohen(TIPPE_FRICTION_COULOMB, 0.0);
     const tippe_dynamics_initial ic = {0.1, 0, 0, 100.0, 0, 0};
     tippe_dynamics_result r;
-    CHECK(run(&md, &ic, 100.0, 1, &r) == TIPPE_OK, "run");
+    CHECK(run_flip(&md, &ic, 100.0, &r) == TIPPE_OK, "run");
     printf("  Cohen 1977 launch: %s (decided by %s at %.4f s), theta in [%.4f, %.4f] rad, "
            "flip %g s (Cohen ~0.94 s)\n",
            tippe_verdict_name(r.verdict), tippe_decision_name(r.how), r.t_verdict,
@@ -254,9 +192,9 @@ static void test_cohen(void)
     CHECK(r.how == TIPPE_DECIDED_ROLLING && r.verdict == TIPPE_VERDICT_NO_TIP && isnan(r.t_flip),
           "%s by %s", tippe_verdict_name(r.verdict), tippe_decision_name(r.how));
     CHECK(r.rolling && !r.end_state_proved, "rolling, end state not claimed");
-    buf b = {0, 0, NULL};
+    sample_buf b = {0, 0, NULL};
     tippe_dynamics_result r2;
-    CHECK(run_samples(&md, &ic, 20.0, 0.0, &b, &r2) == TIPPE_OK, "long run");
+    CHECK(run_samples(&md, &ic, 20.0, 0.0, NULL, &b, &r2) == TIPPE_OK, "long run");
     double lo = INFINITY, hi = -INFINITY;
     for (int i = 0; i < b.n; i++)
         if (b.s[i].t > r.t_verdict) {
@@ -275,9 +213,9 @@ static void test_cohen(void)
     /* the creep law (no sticking) rises on the creep's time scale, ~1/v_s */
     tippe_dynamics_model cr = cohen(TIPPE_FRICTION_COULOMB_CREEP, 1e-2);
     tippe_dynamics_result c1, c2;
-    CHECK(run(&cr, &ic, 100.0, 1, &c1) == TIPPE_OK, "creep run");
+    CHECK(run_flip(&cr, &ic, 100.0, &c1) == TIPPE_OK, "creep run");
     cr.slip_scale_m_s = 1e-3;
-    CHECK(run(&cr, &ic, 100.0, 1, &c2) == TIPPE_OK, "creep run");
+    CHECK(run_flip(&cr, &ic, 100.0, &c2) == TIPPE_OK, "creep run");
     /* measured 1.14 s and 5.26 s */
     CHECK(c2.t_flip > 3.0 * c1.t_flip, "creep flips at %g s (v_s 1e-2), %g s (1e-3)", c1.t_flip,
           c2.t_flip);
@@ -296,7 +234,7 @@ static void test_spin_and_convergence(void)
             tippe_dynamics_model md = m12(TIPPE_FRICTION_COULOMB, vs[j]);
             tippe_dynamics_initial ic = m12_launch(&md, spins[i]);
             tippe_dynamics_result r;
-            CHECK(run(&md, &ic, 60.0, 1, &r) == TIPPE_OK, "run");
+            CHECK(run_flip(&md, &ic, 60.0, &r) == TIPPE_OK, "run");
             tf[i][j] = r.t_flip;
         }
         printf("  spin %g rad/s: flip %.7f s (v_s 1e-4), %.7f s (1e-5)\n", spins[i], tf[i][0],
@@ -310,7 +248,7 @@ static void test_spin_and_convergence(void)
     tippe_dynamics_result a, b;
     tippe_dynamics_model vis = m12(TIPPE_FRICTION_VISCOUS, 0.0);
     tippe_dynamics_initial i1 = m12_launch(&vis, 200.0), i2 = m12_launch(&vis, 400.0);
-    CHECK(run(&vis, &i1, 60.0, 1, &a) == TIPPE_OK && run(&vis, &i2, 60.0, 1, &b) == TIPPE_OK,
+    CHECK(run_flip(&vis, &i1, 60.0, &a) == TIPPE_OK && run_flip(&vis, &i2, 60.0, &b) == TIPPE_OK,
           "runs");
     CHECK(b.t_flip / a.t_flip < 1.0, "viscous: flip(400)/flip(200) = %g", b.t_flip / a.t_flip);
 }
@@ -331,13 +269,13 @@ static void test_rolling_claims(void)
             continue;
         }
         tippe_dynamics_result r;
-        CHECK(run(&md, &ic, 600.0, 0, &r) == TIPPE_OK, "draw %d", draw);
+        CHECK(run(&md, &ic, 600.0, NULL, &r) == TIPPE_OK, "draw %d", draw);
         if (r.how != TIPPE_DECIDED_ROLLING)
             continue;
         n_rolling++;
-        buf b = {0, 0, NULL};
+        sample_buf b = {0, 0, NULL};
         tippe_dynamics_result r2;
-        CHECK(run_samples(&md, &ic, 10.0, 0.0, &b, &r2) == TIPPE_OK, "draw %d on", draw);
+        CHECK(run_samples(&md, &ic, 10.0, 0.0, NULL, &b, &r2) == TIPPE_OK, "draw %d on", draw);
         double th_lo = INFINITY, th_hi = -INFINITY;
         for (int i = 0; i < b.n; i++)
             if (b.s[i].t > r.t_verdict) {
@@ -371,9 +309,9 @@ static void test_stick_slip(void)
         tippe_dynamics_model md = i == 0 ? cohen(TIPPE_FRICTION_COULOMB, 1e-6)
                                          : cohen(TIPPE_FRICTION_COULOMB_CREEP, 1e-5);
         md.mu_c = 0.1;
-        buf b = {0, 0, NULL};
+        sample_buf b = {0, 0, NULL};
         tippe_dynamics_result r;
-        CHECK(run_samples(&md, &ic, 2.0, 2.0, &b, &r) == TIPPE_OK, "run %d", i);
+        CHECK(run_samples(&md, &ic, 2.0, 2.0, NULL, &b, &r) == TIPPE_OK, "run %d", i);
         theta[i] = b.n ? b.s[b.n - 1].theta : NAN;
         if (i == 0) {
             sticks = r.stick_events;

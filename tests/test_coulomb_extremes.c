@@ -10,41 +10,24 @@
  * are steady states). docs/dynamics.md, "Coulomb friction", "Extremes" has the
  * figures. */
 #include "check.h"
+#include "dynamics_fixtures.h"
 #include "tippe/physics.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-/* The M12 set-screw ball at Z2 = 15 mm (as tests/test_coulomb.c), scaled by s
- * (lengths s, mass s^3, inertias s^5), and its central launch (tilt 0.0674 rad,
- * steady precession). */
+/* The M12 ball scaled by s (lengths s, mass s^3, inertias s^5) under Coulomb's law,
+ * launched centrally (m12_launch: tilt 0.0674 rad, steady precession). */
 static tippe_dynamics_model m12(double mu_c, double s)
 {
-    tippe_dynamics_model md = {
-        .top = {0.0768353146 * s * s * s, 0.025 * s, 0.00219013874 * s,
-                1.9053487e-05 * pow(s, 5), 1.77647865e-05 * pow(s, 5), 1},
-        .g = 9.81, .law = TIPPE_FRICTION_COULOMB, .mu_c = mu_c};
-    return md;
-}
-
-static const double TH0 = 0.067448975019608171;
-
-static tippe_dynamics_initial central(const tippe_dynamics_model *md, double spin)
-{
-    tippe_dynamics_initial ic = {TH0, 0, 0, spin, 0, 0};
-    tippe_error e;
-    tippe_dynamics_precession(md, ic.theta, spin, TIPPE_PRECESSION_STEADY, &ic.phi_dot, &e);
-    return ic;
+    return friction_model(m12_ball(s), 0.0, TIPPE_FRICTION_COULOMB, mu_c, 0.0);
 }
 
 /* Cohen's sphere (I1 = I3 = 0.4 m R^2) with its centre of mass eps off the centre. */
 static tippe_dynamics_model cohen(double mu_c, double eps)
 {
-    const double m = 0.015, R = 0.025, I = 0.4 * m * R * R;
-    tippe_dynamics_model md = {.top = {m, R, eps, I, I, -1}, .g = 9.81,
-                               .law = TIPPE_FRICTION_COULOMB, .mu_c = mu_c};
-    return md;
+    return friction_model(cohen_ball(eps), 0.0, TIPPE_FRICTION_COULOMB, mu_c, 0.0);
 }
 
 typedef struct {
@@ -123,7 +106,7 @@ static void test_frictionless(void)
 {
     tippe_dynamics_model md = m12(0.0, 1.0);
     const tippe_dynamics_initial ics[] = {
-        central(&md, 300.0),             /* a steady precession: a relative equilibrium */
+        m12_launch(&md, 300.0),           /* a steady precession: a relative equilibrium */
         {0.5, 2.0, 0.0, 300.0, 0.3, 0.0}, /* tilted, nodding, sliding */
         {0.05, 0.0, 0.0, 20.0, 0.0, 0.0}  /* near theta = 0, stable below n- = 22 rad/s */
     };
@@ -162,7 +145,7 @@ static void test_tiny_friction(void)
 {
     tippe_dynamics_model md = m12(1e-4, 1.0);
     const double spin = 300.0;
-    tippe_dynamics_initial ic = central(&md, spin);
+    tippe_dynamics_initial ic = m12_launch(&md, spin);
     tippe_dynamics_result r;
     CHECK(launch("mu_c 1e-4", &md, &ic, 1000000, &r) == TIPPE_OK, "mu_c 1e-4");
     CHECK(r.verdict == TIPPE_VERDICT_UNDECIDED && r.how == TIPPE_DECIDED_T_END &&
@@ -170,7 +153,7 @@ static void test_tiny_friction(void)
           "mu_c 1e-4: %s (%s), %ld sticks, D %g", tippe_verdict_name(r.verdict),
           tippe_decision_name(r.how), r.stick_events, r.last.D);
     const double rate = md.mu_c * md.top.m * md.g * md.top.R / (md.top.C * spin);
-    const double rise = r.last.theta - TH0, want = rate * r.last.t;
+    const double rise = r.last.theta - M12_TILT, want = rate * r.last.t;
     printf("  mu_c 1e-4: theta rose %.5g rad in %g s, Pliskin %.5g\n", rise, r.last.t, want);
     /* Pliskin's estimate neglects the precession's share of the slip; the flip times of
      * the docs' spin table agree with it to 3-10%; allow 20% */
@@ -184,7 +167,7 @@ static void test_tiny_friction(void)
 static void test_huge_friction(void)
 {
     tippe_dynamics_model md = m12(10.0, 1.0);
-    tippe_dynamics_initial ic = central(&md, 300.0);
+    tippe_dynamics_initial ic = m12_launch(&md, 300.0);
     tippe_dynamics_result r;
     launch("mu_c 10", &md, &ic, 5000, &r);
     CHECK(r.how == TIPPE_DECIDED_ROLLING && r.verdict == TIPPE_VERDICT_NO_TIP,
@@ -248,7 +231,7 @@ static void test_poles(void)
 static void test_huge_spin(void)
 {
     tippe_dynamics_model md = m12(0.3, 1.0);
-    tippe_dynamics_initial ic = central(&md, 1e4);
+    tippe_dynamics_initial ic = m12_launch(&md, 1e4);
     tippe_dynamics_result r, ref;
     CHECK(launch("spin 1e4", &md, &ic, 200000, &r) == TIPPE_OK, "spin 1e4");
     tippe_dynamics_options o;
@@ -281,12 +264,12 @@ static void test_scale(void)
         const double f = 1.0 / sqrt(scales[i]);
         char name[48];
         tippe_dynamics_result r;
-        tippe_dynamics_initial ic = central(&md, 300.0 * f);
+        tippe_dynamics_initial ic = m12_launch(&md, 300.0 * f);
         snprintf(name, sizeof name, "R %g mm, 300 rad/s scaled", 25.0 * scales[i]);
         CHECK(launch(name, &md, &ic, 30000, &r) == TIPPE_OK, "%s", name);
         CHECK(r.verdict == TIPPE_VERDICT_TIP, "%s: %s", name, tippe_verdict_name(r.verdict));
         tip_t[i] = r.t_verdict * f;
-        ic = central(&md, 94.2 * f);
+        ic = m12_launch(&md, 94.2 * f);
         snprintf(name, sizeof name, "R %g mm, 94.2 rad/s scaled", 25.0 * scales[i]);
         CHECK(launch(name, &md, &ic, 5000, &r) == TIPPE_OK, "%s", name);
         CHECK(r.verdict == TIPPE_VERDICT_NO_TIP && r.how == TIPPE_DECIDED_ROLLING, "%s: %s",
@@ -344,14 +327,14 @@ static void test_eccentricity(void)
 
     tippe_dynamics_model tiny = m12(0.3, 1.0);
     tiny.top.eps = 1e-6 * tiny.top.R;
-    tippe_dynamics_initial slide = central(&tiny, 300.0);
+    tippe_dynamics_initial slide = m12_launch(&tiny, 300.0);
     slide.theta = 0.3;
     slide.U = 0.2;
     CHECK(launch("eps 1e-6 R, sliding", &tiny, &slide, 1000, &x) == TIPPE_OK, "eps 1e-6 R");
     CHECK(x.verdict != TIPPE_VERDICT_UNDECIDED, "eps 1e-6 R: undecided");
     tippe_dynamics_model big = m12(0.3, 1.0);
     big.top.eps = 0.99 * big.top.R;
-    const tippe_dynamics_initial ic99 = central(&big, 300.0);
+    const tippe_dynamics_initial ic99 = m12_launch(&big, 300.0);
     CHECK(launch("eps 0.99 R", &big, &ic99, 50000, &x) == TIPPE_OK, "eps 0.99 R");
     CHECK(x.verdict == TIPPE_VERDICT_HANG, "eps 0.99 R: %s", tippe_verdict_name(x.verdict));
 }
@@ -371,7 +354,7 @@ static void test_group_boundaries(void)
         tippe_dynamics_result r;
         const double spins[] = {94.2, 300.0};
         for (int j = 0; j < 2; j++) {
-            tippe_dynamics_initial ic = central(&md, spins[j]);
+            tippe_dynamics_initial ic = m12_launch(&md, spins[j]);
             snprintf(name, sizeof name, "A/C %s, %g rad/s", names[i], spins[j]);
             CHECK(launch(name, &md, &ic, 30000, &r) == TIPPE_OK, "%s", name);
         }

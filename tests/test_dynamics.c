@@ -3,6 +3,7 @@
 #include "tippe/physics.h"
 
 #include "check.h"
+#include "dynamics_fixtures.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
@@ -10,48 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* Figure 12's top (group IIb): m = g = 1, eps/R = 0.3, A/C = 0.92, R = C = 1. */
-static tippe_dynamics_model fig12(double mu)
-{
-    tippe_dynamics_model m = {.top = {1.0, 1.0, 0.3, 0.92, 1.0, 0}, .g = 1.0, .mu = mu};
-    return m;
-}
-
-/* Figure 14's top (group IIa): eps/R = 0.5, A/C = 0.55. */
-static tippe_dynamics_model fig14(double mu)
-{
-    tippe_dynamics_model m = {.top = {1.0, 1.0, 0.5, 0.55, 1.0, 0}, .g = 1.0, .mu = mu};
-    return m;
-}
-
-static int run(const tippe_dynamics_model *m, const tippe_dynamics_initial *ic, double t_end,
-               const char *preset, tippe_dynamics_result *r)
-{
-    tippe_dynamics_options o;
-    tippe_dynamics_options_default(&o);
-    o.t_end = t_end;
-    tippe_dynamics_accuracy_preset(preset, &o.accuracy, NULL);
-    tippe_error e;
-    int s = tippe_dynamics_run(m, ic, &o, r, &e);
-    if (s)
-        printf("  run failed: %s\n", e.msg);
-    return s;
-}
-
-/* Integrates on past any verdict to t_end at rtol 1e-10 (the reference). */
-static void run_long(const tippe_dynamics_model *m, const tippe_dynamics_initial *ic, double t_end,
-                     tippe_dynamics_result *r)
-{
-    tippe_dynamics_options o;
-    tippe_dynamics_options_default(&o);
-    o.t_end = t_end;
-    o.run_to_t_end = 1;
-    o.accuracy.rtol = 1e-10;
-    tippe_error e;
-    if (tippe_dynamics_run(m, ic, &o, r, &e))
-        printf("  run failed: %s\n", e.msg);
-}
 
 /* Theory's verdict for the launch's Jellett invariant: does kind (and angle for
  * a hang) appear among the stable final states? The kind is a real comparison
@@ -165,14 +124,6 @@ static void test_launch_quantities(void)
     CHECK(ap == -am, "steady %g vs %g", ap, am); /* exact: same operations, opposite signs */
 }
 
-typedef struct {
-    int n, cap;
-    tippe_dynamics_sample *s;
-} sample_buf;
-static int run_samples(const tippe_dynamics_model *m, const tippe_dynamics_initial *ic,
-                       double t_end, double dt, const char *preset, sample_buf *b,
-                       tippe_dynamics_result *r);
-
 static void test_conservation(void)
 {
     const tippe_dynamics_initial ic = {1.0, 0.2, 1.0, 2.0, 0.1, -0.05};
@@ -233,11 +184,7 @@ static void test_conservation(void)
     const char *steppers[] = {"rk2", "rk4", "rkf45", "rkck", "rk8pd", "rk1imp",
                               "rk2imp", "rk4imp", "bsimp", "msadams", "msbdf"};
     for (size_t i = 0; i < sizeof steppers / sizeof steppers[0]; i++) {
-        tippe_dynamics_options o;
-        tippe_dynamics_options_default(&o);
-        o.t_end = 20.0;
-        snprintf(o.accuracy.stepper, sizeof o.accuracy.stepper, "%s", steppers[i]);
-        o.accuracy.rtol = 1e-6;
+        tippe_dynamics_options o = run_options(20.0, NULL, steppers[i], 1e-6);
         tippe_error e;
         int s = tippe_dynamics_run(&m0, &ic, &o, &r, &e);
         const double bound = (double)r.steps * o.accuracy.rtol;
@@ -248,46 +195,6 @@ static void test_conservation(void)
 }
 
 /* ---- regular form against the Euler-angle reference ---- */
-
-
-static int collect(const tippe_dynamics_sample *s, void *ctx)
-{
-    sample_buf *b = ctx;
-    if (b->n == b->cap) {
-        b->cap = b->cap ? 2 * b->cap : 256;
-        b->s = realloc(b->s, (size_t)b->cap * sizeof *b->s);
-        if (!b->s)
-            return 1;
-    }
-    b->s[b->n++] = *s;
-    return 0;
-}
-
-static int euler_sys(double t, const double y[], double f[], void *p)
-{
-    (void)t;
-    return tippe_dynamics_euler_rhs(p, y, f, NULL) == TIPPE_OK ? GSL_SUCCESS : GSL_EBADFUNC;
-}
-
-static int run_samples(const tippe_dynamics_model *m, const tippe_dynamics_initial *ic,
-                       double t_end, double dt, const char *preset, sample_buf *b,
-                       tippe_dynamics_result *r)
-{
-    tippe_dynamics_options o;
-    tippe_dynamics_options_default(&o);
-    o.level = TIPPE_LEVEL_TRAJECTORY;
-    o.t_end = t_end;
-    o.sample_dt = dt;
-    o.on_sample = collect;
-    o.sample_ctx = b;
-    o.run_to_t_end = 1;
-    tippe_dynamics_accuracy_preset(preset, &o.accuracy, NULL);
-    tippe_error e;
-    int s = tippe_dynamics_run(m, ic, &o, r, &e);
-    if (s)
-        printf("  run failed: %s\n", e.msg);
-    return s;
-}
 
 static void test_against_euler(void)
 {
@@ -362,7 +269,7 @@ static void test_fig12_theorem(void)
          * the motion ends where the proof said, and the end is a relative
          * equilibrium: eqs 5.4, 5.6 and 5.10 hold there. */
         tippe_dynamics_result lr;
-        run_long(&m, &ic, 3.0 * r.t_verdict + 6000.0, &lr);
+        run_to_end(&m, &ic, run_options(3.0 * r.t_verdict + 6000.0, NULL, NULL, 1e-10), &lr);
         CHECK(fabs(lr.last.theta - r.theta_final_rad) < 1e-4, "spin %g: long run ends at %.8f, "
               "proof says %.8f", spins[i], lr.last.theta, r.theta_final_rad);
         if (r.verdict == TIPPE_VERDICT_HANG) {
@@ -414,7 +321,7 @@ static void test_groups_I_III(void)
 {
     tippe_error e;
     /* group III (A/C > 1 + eps/R): rises from near theta = 0 but cannot invert */
-    tippe_dynamics_model m3 = {.top = {1.0, 1.0, 0.3, 1.5, 1.0, 0}, .g = 1.0, .mu = 0.04};
+    tippe_dynamics_model m3 = unit_top(0.3, 1.5, 0.04);
     tippe_theory_class cls;
     tippe_theory_classify(1.5, 0.3, &cls);
     CHECK(cls.group == TIPPE_GROUP_III && cls.has_theta_c, "group III");
@@ -428,7 +335,7 @@ static void test_groups_I_III(void)
     CHECK(agrees(&m3, &r, 1e-8), "group III disagrees"); /* as Fig 12 */
 
     /* group I (A/C < 1 - eps/R): theta = 0 is stable at any spin */
-    tippe_dynamics_model m1 = {.top = {1.0, 1.0, 0.3, 0.6, 1.0, 0}, .g = 1.0, .mu = 0.04};
+    tippe_dynamics_model m1 = unit_top(0.3, 0.6, 0.04);
     tippe_dynamics_initial ic1 = {0.1, 0, 0, 10.0, 0, 0};
     tippe_dynamics_precession(&m1, ic1.theta, ic1.spin, TIPPE_PRECESSION_STEADY, &ic1.phi_dot, &e);
     CHECK(run(&m1, &ic1, 20000.0, "balanced", &r) == TIPPE_OK, "run");

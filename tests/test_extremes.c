@@ -8,19 +8,13 @@
 #include "tippe/physics.h"
 
 #include "check.h"
+#include "dynamics_fixtures.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-
-/* Figure 12's top (m = g = 1, R = C = 1, eps/R = 0.3, A/C = 0.92). */
-static tippe_dynamics_model fig12(double mu)
-{
-    tippe_dynamics_model m = {.top = {1.0, 1.0, 0.3, 0.92, 1.0, 0}, .g = 1.0, .mu = mu};
-    return m;
-}
 
 static int finite_sample(const tippe_dynamics_sample *s)
 {
@@ -29,45 +23,11 @@ static int finite_sample(const tippe_dynamics_sample *s)
            isfinite(s->Rn) && isfinite(s->E) && isfinite(s->J) && isfinite(s->D);
 }
 
-static int run(const tippe_dynamics_model *m, const tippe_dynamics_initial *ic, double t_end,
-               const char *stepper, double rtol, long max_steps, tippe_dynamics_result *r)
+/* The options of the runs here: to t_end with rk8pd at rtol 1e-8 (one also tries
+ * bsimp). */
+static tippe_dynamics_options rk8pd(double t_end)
 {
-    tippe_dynamics_options o;
-    tippe_dynamics_options_default(&o);
-    o.t_end = t_end;
-    snprintf(o.accuracy.stepper, sizeof o.accuracy.stepper, "%s", stepper);
-    o.accuracy.rtol = rtol;
-    if (max_steps >= 0)
-        o.max_steps = max_steps;
-    tippe_error e;
-    int s = tippe_dynamics_run(m, ic, &o, r, &e);
-    if (s)
-        printf("  run failed: %s\n", e.msg);
-    return s;
-}
-
-/* The state at t_end (rk8pd, rtol 1e-8, integrating on past any verdict). */
-static void run_to(const tippe_dynamics_model *m, const tippe_dynamics_initial *ic, double t_end,
-                   tippe_dynamics_result *r)
-{
-    tippe_dynamics_options o;
-    tippe_dynamics_options_default(&o);
-    o.t_end = t_end;
-    o.run_to_t_end = 1;
-    snprintf(o.accuracy.stepper, sizeof o.accuracy.stepper, "rk8pd");
-    o.accuracy.rtol = 1e-8;
-    tippe_error e;
-    if (tippe_dynamics_run(m, ic, &o, r, &e))
-        printf("  run failed: %s\n", e.msg);
-}
-
-/* A launch near theta0 on the steady-precession curve. */
-static tippe_dynamics_initial steady(const tippe_dynamics_model *m, double theta0, double spin)
-{
-    tippe_dynamics_initial ic = {theta0, 0, 0, spin, 0, 0};
-    tippe_error e;
-    tippe_dynamics_precession(m, theta0, spin, TIPPE_PRECESSION_STEADY, &ic.phi_dot, &e);
-    return ic;
+    return run_options(t_end, NULL, "rk8pd", 1e-8);
 }
 
 static void test_eccentricity(void)
@@ -83,7 +43,7 @@ static void test_eccentricity(void)
         m.top.eps = e_over_R[i] * m.top.R;
         tippe_dynamics_initial ic = {0.5, 0, 0, 2.0, 0, 0};
         tippe_dynamics_result r;
-        CHECK(run(&m, &ic, 200.0, "rk8pd", 1e-8, -1, &r) == TIPPE_OK, "e %g", e_over_R[i]);
+        CHECK(run_with(&m, &ic, rk8pd(200.0), &r) == TIPPE_OK, "e %g", e_over_R[i]);
         CHECK(finite_sample(&r.last), "finite state at e %g", e_over_R[i]);
         /* rtol 1e-8 with a 100x margin, as in test_dynamics */
         CHECK(r.energy_rel_error < 1e-6 && r.jellett_rel_drift < 1e-6,
@@ -210,7 +170,7 @@ static void test_vertical(void)
     for (int i = 0; i < 2; i++) {
         tippe_dynamics_initial ic = {th0[i], 0, 0, 1.5, 0, 0};
         tippe_dynamics_result r;
-        CHECK(run(&m, &ic, 500.0, "rk8pd", 1e-8, -1, &r) == TIPPE_OK, "theta0 %g", th0[i]);
+        CHECK(run_with(&m, &ic, rk8pd(500.0), &r) == TIPPE_OK, "theta0 %g", th0[i]);
         /* exact: omega stays parallel to k, so every cross product is 0 */
         CHECK(r.last.theta == th0[i], "theta0 %g drifted to %.17g", th0[i], r.last.theta);
         CHECK(r.last.spin == 1.5 && r.last.D == 0.0, "spin %.17g D %g", r.last.spin, r.last.D);
@@ -227,7 +187,7 @@ static void test_high_spin(void)
     tippe_dynamics_model m = {.top = {0.006, 0.015, 0.0075, 0.82e-6, 0.7e-6, 0}, .g = 9.81, .mu = 0.3};
     tippe_dynamics_initial ic = steady(&m, 0.1, 1e4);
     tippe_dynamics_result r;
-    CHECK(run(&m, &ic, 0.5, "rk8pd", 1e-8, -1, &r) == TIPPE_OK, "spin 1e4");
+    CHECK(run_with(&m, &ic, rk8pd(0.5), &r) == TIPPE_OK, "spin 1e4");
     CHECK(finite_sample(&r.last), "finite state at spin 1e4");
     CHECK(r.jellett_rel_drift < 1e-6 && r.energy_rel_error < 1e-6, "J drift %g, E+D %g",
           r.jellett_rel_drift, r.energy_rel_error); /* rtol 1e-8, 100x margin */
@@ -243,7 +203,7 @@ static void test_friction_extremes(void)
     tippe_dynamics_model m = fig12(1e-6);
     tippe_dynamics_initial ic = steady(&m, 0.01, 3.0);
     tippe_dynamics_result r;
-    CHECK(run(&m, &ic, 2000.0, "rk8pd", 1e-8, -1, &r) == TIPPE_OK, "mu 1e-6");
+    CHECK(run_with(&m, &ic, rk8pd(2000.0), &r) == TIPPE_OK, "mu 1e-6");
     CHECK(r.verdict == TIPPE_VERDICT_UNDECIDED && !r.budget_exhausted, "mu 1e-6: %s",
           tippe_verdict_name(r.verdict));
     CHECK(r.last.D > 0.0 && r.last.D < 1e-3 * r.E0, "dissipated %g of %g", r.last.D, r.E0);
@@ -259,8 +219,9 @@ static void test_friction_extremes(void)
     tippe_dynamics_model ms = fig12(1e3);
     tippe_dynamics_initial is = steady(&ms, 0.01, 3.0);
     tippe_dynamics_result a, b;
-    CHECK(run(&ms, &is, 50.0, "rk8pd", 1e-8, -1, &a) == TIPPE_OK, "mu 1e3 rk8pd");
-    CHECK(run(&ms, &is, 50.0, "bsimp", 1e-8, -1, &b) == TIPPE_OK, "mu 1e3 bsimp");
+    CHECK(run_with(&ms, &is, rk8pd(50.0), &a) == TIPPE_OK, "mu 1e3 rk8pd");
+    CHECK(run_with(&ms, &is, run_options(50.0, NULL, "bsimp", 1e-8), &b) == TIPPE_OK,
+          "mu 1e3 bsimp");
     CHECK(finite_sample(&a.last) && finite_sample(&b.last), "finite");
     /* both at rtol 1e-8; 100x margin on an O(1) angle */
     CHECK(fabs(a.last.theta - b.last.theta) < 1e-6, "theta %.12g vs %.12g", a.last.theta,
@@ -281,12 +242,14 @@ static void test_long_t_end(void)
     tippe_dynamics_initial ic = steady(&m, 0.01, 3.0);
     const double W = 3.0 + 1.0, periods = 1e6 * 2.0 * M_PI / W;
     tippe_dynamics_result r;
-    CHECK(run(&m, &ic, periods, "rk8pd", 1e-8, -1, &r) == TIPPE_OK, "1e6 periods");
+    CHECK(run_with(&m, &ic, rk8pd(periods), &r) == TIPPE_OK, "1e6 periods");
     CHECK(r.verdict == TIPPE_VERDICT_TIP && !r.budget_exhausted && r.t_verdict < 1e-2 * periods,
           "%s at %g s, budget %d", tippe_verdict_name(r.verdict), r.t_verdict,
           r.budget_exhausted);
     tippe_dynamics_model m0 = fig12(0.0);
-    CHECK(run(&m0, &ic, periods, "rk8pd", 1e-8, 20000, &r) == TIPPE_OK, "mu 0, 1e6 periods");
+    tippe_dynamics_options budget = rk8pd(periods);
+    budget.max_steps = 20000;
+    CHECK(run_with(&m0, &ic, budget, &r) == TIPPE_OK, "mu 0, 1e6 periods");
     CHECK(r.budget_exhausted && r.steps == 20000 && r.verdict == TIPPE_VERDICT_UNDECIDED &&
               r.last.t < periods,
           "budget %d, %ld steps, %s at %g s", r.budget_exhausted, r.steps,
@@ -305,7 +268,7 @@ static void test_sizes(void)
     tippe_dynamics_model base = fig12(0.04);
     tippe_dynamics_initial ib = steady(&base, 0.01, 3.0);
     tippe_dynamics_result rb;
-    CHECK(run(&base, &ib, 10000.0, "rk8pd", 1e-8, -1, &rb) == TIPPE_OK, "base");
+    CHECK(run_with(&base, &ib, rk8pd(10000.0), &rb) == TIPPE_OK, "base");
     const double sizes[] = {1e-3, 1.0};
     for (int i = 0; i < 2; i++) {
         const double R = sizes[i], g = 9.81, mass = 0.006, tau = sqrt(R / g);
@@ -313,7 +276,7 @@ static void test_sizes(void)
         tippe_dynamics_model m = {.top = {mass, R, 0.3 * R, 0.92 * C, C, 0}, .g = g, .mu = 0.04 / sqrt(g * R)};
         tippe_dynamics_initial ic = steady(&m, 0.01, 3.0 / tau);
         tippe_dynamics_result r;
-        CHECK(run(&m, &ic, 10000.0 * tau, "rk8pd", 1e-8, -1, &r) == TIPPE_OK, "R %g", R);
+        CHECK(run_with(&m, &ic, rk8pd(10000.0 * tau), &r) == TIPPE_OK, "R %g", R);
         CHECK(r.verdict == rb.verdict && r.verdict == TIPPE_VERDICT_TIP, "R %g: %s", R,
               tippe_verdict_name(r.verdict));
         /* The same motion, step for step (the step control is relative to the
@@ -327,8 +290,8 @@ static void test_sizes(void)
               R, r.theta_final_rad, rb.theta_final_rad);
         /* the trajectory itself, at the same model time */
         tippe_dynamics_result ra, rc;
-        run_to(&base, &ib, 800.0, &ra);
-        run_to(&m, &ic, 800.0 * tau, &rc);
+        run_to_end(&base, &ib, rk8pd(800.0), &ra);
+        run_to_end(&m, &ic, rk8pd(800.0 * tau), &rc);
         CHECK(fabs(ra.last.theta - rc.last.theta) < 1e-7, "R %g: theta(800) %.15g vs %.15g", R,
               rc.last.theta, ra.last.theta);
         CHECK(r.jellett_rel_drift < 1e-6, "R %g: J drift %g", R, r.jellett_rel_drift);

@@ -8,16 +8,20 @@
 #include "tippe/physics.h"
 
 #include "check.h"
+#include "dynamics_fixtures.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-static tippe_dynamics_initial steady(const tippe_dynamics_model *m, double theta0, double spin)
+/* The M12 design at Z2 = 15 mm to six figures, scaled by s (mass s^3, eps s,
+ * inertias s^5), radius R, viscous friction mu (s/m). */
+static tippe_dynamics_model m12_6(double s, double R, double mu)
 {
-    tippe_dynamics_initial ic = {theta0, 0, 0, spin, 0, 0};
-    tippe_dynamics_precession(m, theta0, spin, TIPPE_PRECESSION_STEADY, &ic.phi_dot, NULL);
-    return ic;
+    tippe_dynamics_model m = {.top = {0.0768353 * s * s * s, R, 0.00219014 * s,
+                                      1.90535e-05 * pow(s, 5), 1.77648e-05 * pow(s, 5), -1},
+                              .g = 9.81, .mu = mu};
+    return m;
 }
 
 typedef struct {
@@ -97,7 +101,7 @@ static void check_case(const char *name, const tippe_dynamics_model *m,
  * and 100): n = 0.5 < n- falls back, 1.5 hangs, 3 > n* tips. */
 static void test_strong_friction(void)
 {
-    tippe_dynamics_model m = {.top = {1.0, 1.0, 0.3, 0.92, 1.0, 0}, .g = 1.0, .mu = 10.0};
+    tippe_dynamics_model m = fig12(10.0);
     tippe_dynamics_initial a = steady(&m, 0.5, 0.5), b = steady(&m, 0.1, 1.5),
                            c = steady(&m, 0.1, 3.0);
     /* strong friction: the hang is approached slowly, with a slow oscillation
@@ -119,8 +123,7 @@ static void test_strong_friction(void)
 static void test_small_top(void)
 {
     const double s = 0.001 / 0.025;
-    tippe_dynamics_model m = {.top = {0.0768353 * s * s * s, 0.025 * s, 0.00219014 * s,
-                               1.90535e-05 * pow(s, 5), 1.77648e-05 * pow(s, 5), -1}, .g = 9.81, .mu = 0.1};
+    tippe_dynamics_model m = m12_6(s, 0.025 * s, 0.1);
     tippe_theory_thresholds th;
     tippe_theory_compute_thresholds(&m.top, m.g, &th, NULL);
     CHECK(th.cls.group == TIPPE_GROUP_IIB && 94.0 < th.n_minus_rad_s &&
@@ -137,13 +140,13 @@ static void test_small_top(void)
  * Figure 12's top exactly at theta = pi, spin 0.3 (below n+), kicked sideways. */
 static void test_falls(void)
 {
-    tippe_dynamics_model m = {.top = {1.0, 1.0, 0.5, 0.55, 1.0, 0}, .g = 1.0, .mu = 0.04};
+    tippe_dynamics_model m = fig14(0.04);
     tippe_theory_thresholds th;
     tippe_theory_compute_thresholds(&m.top, m.g, &th, NULL);
     tippe_dynamics_initial a = {M_PI - 0.01, 0, 0, 0.5 * th.n_b_pi_rad_s, 0, 0};
     tippe_dynamics_precession(&m, a.theta, a.spin, TIPPE_PRECESSION_S3, &a.phi_dot, NULL);
     check_case("below n_b", &m, &a, 20000.0, TIPPE_VERDICT_NO_TIP, 3000.0, 1e-4);
-    tippe_dynamics_model m12 = {.top = {1.0, 1.0, 0.3, 0.92, 1.0, 0}, .g = 1.0, .mu = 0.04};
+    tippe_dynamics_model m12 = fig12(0.04);
     tippe_dynamics_initial b = {M_PI, 0, 0, 0.3, 0.05, 0};
     check_case("theta = pi, kick", &m12, &b, 20000.0, TIPPE_VERDICT_NO_TIP, 3000.0, 1e-3);
 }
@@ -160,8 +163,7 @@ static void test_sweep(void)
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 3; j++) {
             const double s = sizes[j] / 0.025;
-            tippe_dynamics_model m = {.top = {0.0768353 * s * s * s, sizes[j], 0.00219014 * s,
-                                       1.90535e-05 * pow(s, 5), 1.77648e-05 * pow(s, 5), -1}, .g = 9.81, .mu = mus[i]};
+            tippe_dynamics_model m = m12_6(s, sizes[j], mus[i]);
             tippe_theory_thresholds th;
             tippe_theory_compute_thresholds(&m.top, m.g, &th, NULL);
             const double spins[2] = {0.5 * th.n_minus_rad_s, 2.0 * th.n_star_rad_s};
@@ -194,7 +196,7 @@ static void test_sweep(void)
 static void test_unstable_poles(void)
 {
     /* launch 58 of `tippe launch designs/m12-setscrew.json --z2 15 -n 200 --seed 1 --mu 0.1` */
-    tippe_dynamics_model m = {.top = {0.0768353, 0.025, 0.00219014, 1.90535e-05, 1.77648e-05, -1}, .g = 9.81, .mu = 0.1};
+    tippe_dynamics_model m = m12_6(1.0, 0.025, 0.1);
     tippe_dynamics_initial a = {0.1020083457, 0, 86.90752611, 101.3246194, -0.03382981768,
                                 0.005757684295};
     check_case("hang near pi", &m, &a, 600.0, TIPPE_VERDICT_HANG, 600.0, 0.0);
@@ -202,7 +204,7 @@ static void test_unstable_poles(void)
     /* Figure 12's top exactly upright at n- < n = 1.5 < n*: theta = 0 is a maximum of V
      * and the contact bound holds (without the rest rule this is "hang" at t = 0), but
      * nothing slides and nothing moves: it must stay undecided, at theta = 0 */
-    tippe_dynamics_model f = {.top = {1.0, 1.0, 0.3, 0.92, 1.0, 0}, .g = 1.0, .mu = 0.04};
+    tippe_dynamics_model f = fig12(0.04);
     tippe_dynamics_initial up = {0.0, 0, 0, 1.5, 0, 0};
     tippe_dynamics_options o;
     tippe_dynamics_options_default(&o);
@@ -225,7 +227,7 @@ static void test_unstable_poles(void)
  * with eps = 0, tilted 0.3 rad and sliding at 0.2 m/s. */
 static void test_centred_ball(void)
 {
-    tippe_dynamics_model m = {.top = {1.0, 1.0, 0.0, 0.92, 1.0, 0}, .g = 1.0, .mu = 0.04};
+    tippe_dynamics_model m = unit_top(0.0, 0.92, 0.04);
     tippe_dynamics_initial ic = {0.3, 0, 0, 3.0, 0.2, 0};
     tippe_dynamics_options o;
     tippe_dynamics_options_default(&o);
@@ -261,7 +263,7 @@ static void test_centred_ball(void)
 /* A run stopped by its step budget says so (budget), not t_end. */
 static void test_budget(void)
 {
-    tippe_dynamics_model m = {.top = {1.0, 1.0, 0.3, 0.92, 1.0, 0}, .g = 1.0, .mu = 0.04};
+    tippe_dynamics_model m = fig12(0.04);
     tippe_dynamics_initial ic = steady(&m, 0.01, 3.0);
     tippe_dynamics_options o;
     tippe_dynamics_options_default(&o);

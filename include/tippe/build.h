@@ -189,8 +189,7 @@ typedef struct {
 } tippe_build_sheet;
 
 /* The design file's name without directory and extension: the stem tippe build
- * (and tippe export, tippe_export_stem, the same rule in the export module)
- * names its files with. */
+ * (and tippe export, by the same rule in the export module) names its files with. */
 void tippe_build_stem(const char *design_path, char *out, size_t size);
 
 /* Whether the design's printed body closes around its hardware, so that it
@@ -208,8 +207,6 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
 /* "stays up", "flips", "hangs" for 0, 1, 2; the group's name "I", "II", "III". */
 const char *tippe_build_behaviour(int family);
 const char *tippe_build_family(int family);
-/* The verdict the behaviour's launch should end in. */
-tippe_verdict tippe_build_expected_verdict(int family);
 
 /* Reports: the sheet as a cJSON object, and as Markdown a maker reads. */
 struct cJSON;

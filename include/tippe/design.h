@@ -32,9 +32,6 @@ typedef struct {
 /* Gravity used wherever a user gives none (scenarios, classify, launches), m/s^2. */
 #define TIPPE_DEFAULT_G_M_S2 9.81
 
-static inline double tippe_top_A_over_C(const tippe_top *t) { return t->A / t->C; }
-static inline double tippe_top_eps_over_R(const tippe_top *t) { return t->eps / t->R; }
-
 /* ==== from tippe/geometry.h ==== */
 /* Geometry: mass properties of solids of revolution about the z axis.
  *
@@ -269,11 +266,6 @@ int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, 
 tippe_moments tippe_print_sliced_at(const tippe_print_sliced *sl, const tippe_print_settings *s,
                                     double infill, double *sparse_m3, double *anchor_m3);
 
-/* Mass moments of the printed part: density x (solid - (1 - infill) x core),
- * where solid is the printed part's unit-density moments (closed form). */
-tippe_moments tippe_print_moments(tippe_moments solid, tippe_moments core, double density_kg_m3,
-                                  double infill);
-
 /* Mass is affine in the infill, m(f) = rho (V_solid - (1 - f) V_core), so the
  * infill that gives a weighed mass is (m / rho - V_solid + V_core) / V_core.
  * Returns 0 and sets *infill, or -1 if the mass is below the walls and skins
@@ -422,9 +414,6 @@ typedef struct {
 /* Fills *out for part i; TIPPE_EINPUT if i is out of range. */
 int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out);
 
-/* Whether any part is printed (has a print block). */
-int tippe_design_has_printed_parts(const tippe_design *d);
-
 /* Whether part i (0-based, file order) is made of a printable filament: its
  * material's "printable" flag in the materials table (a void: its parent's).
  * 0 for bought hardware, for a material without the flag, for a density given
@@ -544,7 +533,6 @@ struct cJSON;
 int tippe_design_source_apply(const tippe_design_source *s, const char *const *overrides,
                               int n_overrides, struct cJSON **out, tippe_error *err);
 
-const char *tippe_design_source_path(const tippe_design_source *s);
 void tippe_design_source_free(tippe_design_source *s);
 
 /* ==== from tippe/tolerance.h ==== */

@@ -79,9 +79,6 @@ int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
 
 void tippe_export_result_free(tippe_export_result *r);
 
-/* "m12-setscrew" for "designs/m12-setscrew.json". */
-void tippe_export_stem(const tippe_design *d, char *out, size_t size);
-
 /* ---- the build sheet (src/export/build_sheet.c), from tippe_build_compute ---- */
 
 /* Writes setting family's gauge as binary STL (TIPPE_EINPUT if none applies). */

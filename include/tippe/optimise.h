@@ -40,7 +40,6 @@ int tippe_optimise_spec_n_choices(const tippe_optimise_spec *s);
 const char *tippe_optimise_spec_choice_label(const tippe_optimise_spec *s, int choice, char *buf,
                                         size_t cap);
 const char *tippe_optimise_spec_path(const tippe_optimise_spec *s);
-const tippe_design_source *tippe_optimise_spec_design(const tippe_optimise_spec *s);
 
 /* Why a candidate is not feasible. */
 typedef enum {

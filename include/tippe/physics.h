@@ -575,14 +575,9 @@ typedef struct {
     int agrees;
 } tippe_launch_record;
 
-/* One launch of draw `draw` (its initial state from tippe_launch_draw, spin
- * replaced by spin_rad_s if finite), integrated and compared with theory.
- * rec->index is set to `draw`. Returns the dynamics' status (rec->status). */
-int tippe_launch_one(const tippe_top *top, const tippe_launch_options *o, uint64_t seed,
-                     uint64_t draw, double spin_rad_s, tippe_launch_record *rec,
-                     tippe_error *err);
-
-/* Runs the given initial state (for `tippe check`) the same way. */
+/* Runs the given initial state (for `tippe check`) as tippe_launch_run runs a
+ * drawn one: integrated and compared with theory. Returns the dynamics' status
+ * (rec->status). */
 int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o,
                              const tippe_dynamics_initial *ic, tippe_launch_record *rec,
                              tippe_error *err);

@@ -106,15 +106,11 @@ typedef struct {
  * not apply: up to two [from, to] pieces into from[], to[]; returns how many. */
 int tippe_sweep_zone_model_invalid(const tippe_sweep_result *r, const tippe_sweep_zone *z,
                                    double from[2], double to[2]);
-/* The part of zone z a maker can use: within the physical travel and the
- * sphere-only interval (the sphere-only interval is one piece, so this is one
- * piece too). Returns 1 and [*from_mm, *to_mm] where it is longer than 0. */
-int tippe_sweep_zone_usable(const tippe_sweep_result *r, const tippe_sweep_zone *z,
-                            double *from_mm, double *to_mm);
-/* The run that starts at zone i: the usable parts (tippe_sweep_zone_usable) of
- * the adjacent zones whose groups are of one family (Theorem 5.1's I, II, III:
- * *family 0, 1, 2; the com_side split at the balanced point does not end a
- * run), joined into [*from_mm, *to_mm]. *family is -1 when zone i has no usable
+/* The run that starts at zone i: the usable parts (the parts a maker can use:
+ * within the physical travel and the sphere-only interval) of the adjacent zones
+ * whose groups are of one family (Theorem 5.1's I, II, III: *family 0, 1, 2; the
+ * com_side split at the balanced point does not end a run), joined into
+ * [*from_mm, *to_mm]. *family is -1 when zone i has no usable
  * part. Returns the index of the zone after the run (i + 1 at least), so that
  * for (i = 0; i < r->n_zones; i = tippe_sweep_family_run(r, i, ...)) visits
  * every run once; the summary, the robust widths and tippe build all join runs
@@ -159,7 +155,7 @@ int tippe_sweep_design(const tippe_design *d, double from_mm, double to_mm,
                        const tippe_sweep_options *opt, tippe_sweep_result *out,
                        tippe_error *err);
 
-/* Main-group summary over the usable parts of the zones (tippe_sweep_zone_usable:
+/* Main-group summary over the usable parts of the zones (as tippe_sweep_family_run:
  * within the physical travel, the whole range before tippe_sweep_mark_travel, and
  * where no part stands out of the sphere). */
 typedef struct {

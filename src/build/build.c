@@ -17,7 +17,8 @@
 const char *tippe_build_behaviour(int f) { return f >= 0 && f < 3 ? behaviours[f] : "?"; }
 const char *tippe_build_family(int f) { return f >= 0 && f < 3 ? families[f] : "?"; }
 
-tippe_verdict tippe_build_expected_verdict(int f)
+/* The verdict the behaviour's launch should end in. */
+static tippe_verdict expected_verdict(int f)
 {
     return f == 0 ? TIPPE_VERDICT_NO_TIP : f == 1 ? TIPPE_VERDICT_TIP : TIPPE_VERDICT_HANG;
 }
@@ -34,7 +35,7 @@ void tippe_build_options_default(tippe_build_options *o)
 
 /* The run of each family with the largest robust width (the nominal widest if
  * none is robust), as tippe_sweep_robust_widths joins runs: only the usable
- * part of each zone (tippe_sweep_zone_usable: within the physical travel and
+ * part of each zone (as tippe_sweep_family_run: within the physical travel and
  * where no part stands out of the sphere, so the model applies). */
 static void robust_runs(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
                         tippe_build_setting set[3])
@@ -413,7 +414,7 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
     if (!rc) {
         s->verdict = rec.verdict;
         s->launch_t_s = rec.t_s;
-        s->verdict_ok = rec.verdict == tippe_build_expected_verdict(f);
+        s->verdict_ok = rec.verdict == expected_verdict(f);
     }
 }
 

@@ -126,14 +126,6 @@ int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_inf
     return TIPPE_OK;
 }
 
-int tippe_design_has_printed_parts(const tippe_design *d)
-{
-    for (int i = 0; i < d->n_parts; i++)
-        if (d->parts[i].printed)
-            return 1;
-    return 0;
-}
-
 int tippe_design_part_printable(const tippe_design *d, int i)
 {
     return i >= 0 && i < d->n_parts && d->parts[i].printable;

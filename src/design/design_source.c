@@ -103,8 +103,6 @@ int tippe_design_source_build(const tippe_design_source *s, const char *const *o
     return TIPPE_OK;
 }
 
-const char *tippe_design_source_path(const tippe_design_source *s) { return s->path; }
-
 void tippe_design_source_free(tippe_design_source *s)
 {
     if (!s)

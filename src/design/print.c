@@ -638,14 +638,6 @@ tippe_print_settings tippe_print_defaults(void)
     return s;
 }
 
-tippe_moments tippe_print_moments(tippe_moments solid, tippe_moments core, double density_kg_m3,
-                                  double infill)
-{
-    /* solid everywhere, less the part of the density the core lacks */
-    return tippe_moments_scale(tippe_moments_sub(solid, tippe_moments_scale(core, 1.0 - infill)),
-                               density_kg_m3);
-}
-
 int tippe_print_infill_for_mass(double mass_kg, double solid_volume_m3, double core_volume_m3,
                                 double density_kg_m3, double *infill, double *mass_at_0,
                                 double *mass_at_1)

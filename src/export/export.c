@@ -13,7 +13,9 @@
 #include <string.h>
 #include <time.h>
 
-void tippe_export_stem(const tippe_design *d, char *out, size_t size)
+/* The design file's name without directory and extension: "m12-setscrew" for
+ * "designs/m12-setscrew.json". */
+static void design_stem(const tippe_design *d, char *out, size_t size)
 {
     const char *path = tippe_design_path(d);
     const char *base = strrchr(path, '/');
@@ -44,7 +46,7 @@ static int paths_of(const tippe_design *d, const tippe_export_request *q,
                     const tippe_profile_set *s, char (*paths)[4096], int max)
 {
     char stem[1024], tail[300];
-    tippe_export_stem(d, stem, sizeof stem);
+    design_stem(d, stem, sizeof stem);
     int n = 0;
     for (int b = 0; (q->formats & TIPPE_EXPORT_STL) && b < s->n_bodies && n < max; b++) {
         char part[160];

@@ -644,7 +644,6 @@ int tippe_optimise_spec_n_vary(const tippe_optimise_spec *s) { return s->n_vary;
 const char *tippe_optimise_spec_vary_path(const tippe_optimise_spec *s, int k) { return s->vary[k].path; }
 int tippe_optimise_spec_n_choices(const tippe_optimise_spec *s) { return s->n_choices; }
 const char *tippe_optimise_spec_path(const tippe_optimise_spec *s) { return s->path; }
-const tippe_design_source *tippe_optimise_spec_design(const tippe_optimise_spec *s) { return s->src; }
 
 const char *tippe_optimise_spec_choice_label(const tippe_optimise_spec *s, int choice, char *buf,
                                         size_t cap)

@@ -259,9 +259,12 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     return TIPPE_OK;
 }
 
-int tippe_launch_one(const tippe_top *top, const tippe_launch_options *o, uint64_t seed,
-                     uint64_t draw, double spin_rad_s, tippe_launch_record *rec,
-                     tippe_error *err)
+/* One launch of draw `draw` (its initial state from tippe_launch_draw, spin
+ * replaced by spin_rad_s if finite), integrated and compared with theory.
+ * rec->index is set to `draw`. Returns the dynamics' status (rec->status). */
+static int launch_one(const tippe_top *top, const tippe_launch_options *o, uint64_t seed,
+                      uint64_t draw, double spin_rad_s, tippe_launch_record *rec,
+                      tippe_error *err)
 {
     memset(rec, 0, sizeof *rec);
     rec->index = (long)draw;
@@ -362,8 +365,8 @@ int tippe_launch_run(const tippe_launch_plan *plan, const tippe_launch_options *
             const int group = (int)(index / plan->per_group);
             tippe_launch_record again;
             tippe_error e;
-            tippe_launch_one(&plan->tops[group], o, seed, (uint64_t)(index % plan->per_group),
-                             plan->spin_rad_s ? plan->spin_rad_s[group] : NAN, &again, &e);
+            launch_one(&plan->tops[group], o, seed, (uint64_t)(index % plan->per_group),
+                       plan->spin_rad_s ? plan->spin_rad_s[group] : NAN, &again, &e);
             return tippe_error_set(err, out[i].status, "launch %ld (draw %ld): %s", index,
                                    index % plan->per_group, e.msg);
         }

@@ -512,8 +512,11 @@ int tippe_sweep_zone_model_invalid(const tippe_sweep_result *r, const tippe_swee
     return n;
 }
 
-int tippe_sweep_zone_usable(const tippe_sweep_result *r, const tippe_sweep_zone *z,
-                            double *from_mm, double *to_mm)
+/* The part of zone z a maker can use: within the physical travel and the
+ * sphere-only interval (the sphere-only interval is one piece, so this is one
+ * piece too). Returns 1 and [*from_mm, *to_mm] where it is longer than 0. */
+static int zone_usable(const tippe_sweep_result *r, const tippe_sweep_zone *z, double *from_mm,
+                       double *to_mm)
 {
     double f = z->z2_from_mm, t = z->z2_to_mm;
     if (!z->within_travel)
@@ -546,11 +549,9 @@ int tippe_sweep_family_run(const tippe_sweep_result *r, int i, int *family, doub
                            double *to_mm)
 {
     double f2, t2;
-    *family = tippe_sweep_zone_usable(r, &r->zones[i], from_mm, to_mm)
-                  ? family_index(r->zones[i].group)
-                  : -1;
+    *family = zone_usable(r, &r->zones[i], from_mm, to_mm) ? family_index(r->zones[i].group) : -1;
     int j = i + 1;
-    while (*family >= 0 && j < r->n_zones && tippe_sweep_zone_usable(r, &r->zones[j], &f2, &t2) &&
+    while (*family >= 0 && j < r->n_zones && zone_usable(r, &r->zones[j], &f2, &t2) &&
            family_index(r->zones[j].group) == *family) {
         *to_mm = t2;
         j++;
