@@ -69,7 +69,10 @@ EOF
 # D1 = d - 1.082532 P (ISO 724) = 2.4587 mm for M3; the STL's float32 rounds
 # by ~1e-6 mm and the pin's polygon is within 0.005 mm of its circle
 pin_fail() { bad "m3 insert: the gauge's pin diameter: $(tail -1 "$tmp/err")"; }
-/usr/bin/python3 - "$tmp/b3/m3-setscrew-printed-gauge-flips.stl" 2>"$tmp/err" <<'EOF' && ok || pin_fail
+# (the gauge of whichever setting the printed M3 has: under the slicer's rules at 15 %
+# it hangs everywhere, so its one gauge is "hangs")
+gauge=$(ls "$tmp"/b3/m3-setscrew-printed-gauge-*.stl 2>/dev/null | head -1)
+/usr/bin/python3 - "$gauge" 2>"$tmp/err" <<'EOF' && ok || pin_fail
 import sys
 import numpy as np
 from stl import mesh

@@ -359,7 +359,7 @@ static int part_index(const tippe_design *d, const char *name)
  * reference core over r. */
 static void test_design_printed_mass(void)
 {
-    const char *sets[] = {"parts.body.print=true"};
+    const char *sets[] = {"parts.body.print={\"model\": \"skins\"}"};
     tippe_design *d = NULL;
     tippe_error err;
     int rc = tippe_design_load("designs/m12-setscrew.json", sets, 1, &d, &err);
@@ -396,7 +396,7 @@ static void test_design_printed_mass(void)
     double m30 = pi.skin_mass_kg + 0.3 * (pi.solid_mass_kg - pi.skin_mass_kg);
     char set_mass[96];
     snprintf(set_mass, sizeof set_mass, "parts.body.print.measured_mass_g=%.17g", m30 * 1e3);
-    const char *sets2[] = {"parts.body.print=true", set_mass};
+    const char *sets2[] = {"parts.body.print={\"model\": \"skins\"}", set_mass};
     tippe_design *d2 = NULL;
     rc = tippe_design_load("designs/m12-setscrew.json", sets2, 2, &d2, &err);
     CHECK(rc == 0, "%s", err.msg);
@@ -414,8 +414,8 @@ static void test_design_printed_mass(void)
     const char *word[2] = {"less than the walls", "more than part 'body' weighs printed solid"};
     for (int k = 0; k < 2; k++) {
         snprintf(set_mass, sizeof set_mass, "parts.body.print.measured_mass_g=%.6f", bad[k]);
-        const char *sets3[] = {set_mass};
-        rc = tippe_design_load("designs/m12-setscrew.json", sets3, 1, &d2, &err);
+        const char *sets3[] = {"parts.body.print={\"model\": \"skins\"}", set_mass};
+        rc = tippe_design_load("designs/m12-setscrew.json", sets3, 2, &d2, &err);
         CHECK(rc == TIPPE_EINPUT && strstr(err.msg, word[k]) &&
                   strstr(err.msg, "parts[0].print.measured_mass_g"),
               "weighed %.3f g: rc %d, %s", bad[k], rc, err.msg);

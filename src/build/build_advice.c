@@ -158,17 +158,17 @@ void tippe_build_weigh_offset(const tippe_design *d, tippe_build_sheet *s)
         tippe_design_part(d, s->hole_part, &hp) || tippe_design_part(d, hs.parent, &pp) ||
         tippe_design_part_print(d, hs.parent, &before) || !before.printed)
         return;
-    char set[300];
-    snprintf(set, sizeof set, "parts.%s.radius_mm=%.10g", hp.name, s->hole_diameter_mm / 2);
-    const char *extra[1] = {set};
+    /* the print's hole, at the same infill (a calibrated design's, the one solved,
+     * with the weighing taken out so that it is not solved again) */
+    char set[3][300];
+    snprintf(set[0], sizeof set[0], "parts.%s.radius_mm=%.10g", hp.name, s->hole_diameter_mm / 2);
+    snprintf(set[1], sizeof set[1], "parts.%s.print.infill=%.17g", pp.name, before.infill);
+    snprintf(set[2], sizeof set[2], "parts.%s.print.measured_mass_g=null", pp.name);
+    const char *extra[3] = {set[0], set[1], set[2]};
     tippe_design *v = NULL;
     tippe_error e = {0};
-    if (tippe_design_derive(d, extra, 1, &v, &e) == TIPPE_OK &&
-        tippe_design_part_print(v, hs.parent, &after) == TIPPE_OK && after.printed) {
-        /* at the same infill: a calibrated design's infill is the one solved */
-        double m_model = before.skin_mass_kg + before.infill * (before.solid_mass_kg - before.skin_mass_kg);
-        double m_print = after.skin_mass_kg + before.infill * (after.solid_mass_kg - after.skin_mass_kg);
-        s->weigh_offset_g = (m_model - m_print) * 1e3;
-    }
+    if (tippe_design_derive(d, extra, before.calibrated ? 3 : 2, &v, &e) == TIPPE_OK &&
+        tippe_design_part_print(v, hs.parent, &after) == TIPPE_OK && after.printed)
+        s->weigh_offset_g = (before.printed_mass_kg - after.printed_mass_kg) * 1e3;
     tippe_design_free(v);
 }

@@ -57,38 +57,7 @@ static int check_sphere_radius(const tippe_json_reader *c, double R)
 
 /* ------------------------------------------------------------ mass moments */
 
-/* Unit-density moments of p's own shape cut to the ball of radius clip_m
- * (0: not cut), SI, at its z_mm. */
-static tippe_moments shape_moments(const part *p, double clip_m)
-{
-    const double mm = 1e-3;
-    double zc = p->z_mm * mm;
-    switch (p->shape) {
-    case SHAPE_BALL:
-        return tippe_ball(p->radius_mm * mm, zc);
-    case SHAPE_SHELL:
-        return tippe_shell(p->radius_mm * mm, p->thickness_mm * mm, zc);
-    case SHAPE_CYLINDER:
-    case SHAPE_TUBE:
-        return tippe_tube(p->inner_radius_mm * mm, p->radius_mm * mm, p->height_mm * mm, zc,
-                          clip_m);
-    case SHAPE_TORUS:
-    default:
-        return tippe_torus(p->centre_radius_mm * mm, p->radial_semi_mm * mm,
-                           p->axial_semi_mm * mm, zc, clip_m);
-    }
-}
 
-/* Unit-density moments of p's own region (SI), at its z_mm. Cut to a shell's
- * wall, it is the part cut to the outer ball less the part cut to the cavity
- * (the second lies inside the first). */
-tippe_moments tippe_design_part_moments(const part *p)
-{
-    tippe_moments m = shape_moments(p, p->clip_radius_mm * 1e-3);
-    if (p->clip_inner_mm > 0)
-        m = tippe_moments_sub(m, shape_moments(p, p->clip_inner_mm * 1e-3));
-    return m;
-}
 
 static int finite_moments(tippe_moments m)
 {

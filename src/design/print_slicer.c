@@ -231,6 +231,8 @@ static void surfaces(const tippe_print_settings *s, layer_t *layers, int n_layer
     else
         rings_subtract(&L->infill, &layers[i - 1].outline, &bottom);
     rings_union(&top, &bottom, &both);
+    if (s->top_bottom_layers == 0)
+        both.n = 0; /* no solid layers: surfaces are filled as the rest (PrintObject.cpp) */
     double d = 0.5 * SURFACE_OPENING_FACTOR * s->external_width_mm * 1e-3;
     rings_opening(&both, d, d, &open);
     rings grown;
@@ -244,6 +246,10 @@ static void surfaces(const tippe_print_settings *s, layer_t *layers, int n_layer
 static void shell_range(const tippe_print_settings *s, const layer_t *layers, int n_layers, int i,
                         int *lo, int *hi)
 {
+    if (s->top_bottom_layers == 0) { /* no shells: the minimum thicknesses need layers */
+        *lo = *hi = i;
+        return;
+    }
     int j = i + 1;
     while (j < n_layers && (j < i + s->top_bottom_layers ||
                             layers[j].z_mid - layers[i].z_mid < s->top_min_mm * 1e-3 - 1e-12))
