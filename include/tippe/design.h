@@ -409,6 +409,20 @@ typedef struct {
     double printed_mass_kg;        /* as printed, at `infill` */
     double rel_error;              /* bound on the print model's relative error in the
                                       part's mass and moments (QAGS estimates) */
+    /* what is deposited, by the model in use (the slicer's rules: spacing-wide
+     * lines; the continuous rule: walls and skins together in skin_mass_kg) */
+    const char *model;             /* "slicer", "skins" or "gcode" */
+    double filament_volume_mm3;    /* printed mass / density: the slicer's estimate */
+    double wall_mass_kg, solid_infill_mass_kg, sparse_mass_kg, anchor_mass_kg;
+    int n_layers;                  /* 0 for the continuous rule */
+    double body_A_over_C;          /* the printed part alone, about its own centre of mass */
+    /* print.gcode: the part from the slicer's G-code, the layer model beside it */
+    int from_gcode;
+    const char *gcode;             /* as given in the design (relative to it) */
+    const char *generator;         /* the slicer that wrote it, "" if it does not say */
+    double flow_factor;            /* a weighing's scale on the G-code's lines (1: none) */
+    double model_mass_kg;          /* the layer model's mass at the same infill */
+    double model_body_A_over_C;
 } tippe_design_print_info;
 
 /* Fills *out for part i; TIPPE_EINPUT if i is out of range. */

@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 /* The printed bodies as tippe export writes them (default clearance), with
  * their exact volumes: what a slicer's volume estimate should approach. */
@@ -23,13 +24,14 @@ static void print_bodies(FILE *out, const tippe_design *d)
     for (int b = 0; b < s.n_bodies; b++) {
         const tippe_profile_body *e = &s.body[b];
         double v = isnan(e->exact_volume_mm3) ? e->polygon_volume_mm3 : e->exact_volume_mm3;
-        fprintf(out, "%s%s (%s): %.1f mm^3 = %.3f cm^3 printed volume\n",
+        fprintf(out, "%s%s (%s): envelope %.1f mm^3 = %.3f cm^3 (the outline, not the filament)\n",
                 b ? "         " : "bodies   ", e->name, e->material, v, v * 1e-3);
     }
     int grown = 0;
     for (int i = 0; i < s.n_parts; i++)
         grown |= s.clearance_applied[i];
-    fprintf(out, "         (as tippe export writes them%s; compare with the slicer's estimate)\n",
+    fprintf(out, "         (as tippe export writes them%s; the filament, to compare with the "
+                 "slicer's estimate, is under printed)\n",
             grown ? ", holes for hardware 0.2 mm wider in radius than in the mass model" : "");
     tippe_profile_set_free(&s);
 }
@@ -71,21 +73,51 @@ void tippe_cli_print_printed_parts(FILE *out, const tippe_design *d)
         if (tippe_design_part(d, i, &p) || tippe_design_part_print(d, i, &pi) || !pi.printed)
             continue;
         const tippe_print_settings *s = &pi.settings;
-        fprintf(out,
-                "%s%s: axis vertical, %d x %.2f mm perimeters (walls %.2f mm), %d x %.2f mm "
-                "top/bottom layers (skins %.2f mm), ",
-                any ? "         " : "printed  ", p.name, s->perimeters, s->line_width_mm,
-                pi.wall_mm, s->top_bottom_layers, s->layer_height_mm, pi.skin_mm);
+        const char *lead = any ? "         " : "printed  ";
+        if (!strcmp(pi.model, "skins"))
+            fprintf(out,
+                    "%s%s: axis vertical, the continuous rule (print model \"skins\"): %d x "
+                    "%.2f mm perimeters (walls %.2f mm), %d x %.2f mm top/bottom layers (skins "
+                    "%.2f mm), ",
+                    lead, p.name, s->perimeters, s->line_width_mm, pi.wall_mm,
+                    s->top_bottom_layers, s->layer_height_mm, pi.skin_mm);
+        else
+            fprintf(out,
+                    "%s%s: axis vertical, PrusaSlicer 2.5's rules in %d layers: %d perimeters of "
+                    "%.2f mm lines, %d top/bottom layers of %.2f mm (at least %.2f / %.2f mm), "
+                    "%s, ",
+                    lead, p.name, pi.n_layers, s->perimeters, s->line_width_mm,
+                    s->top_bottom_layers, s->layer_height_mm, s->top_min_mm, s->bottom_min_mm,
+                    tippe_print_pattern_name(s->pattern));
         if (pi.calibrated)
             fprintf(out, "infill %.2f %% from the weighed %.3f g (slicer: %.0f %%)",
                     pi.infill * 100, pi.measured_mass_kg * 1e3, s->infill * 100);
         else
             fprintf(out, "infill %.0f %%", pi.infill * 100);
-        fprintf(out,
-                "\n         %.3f g as printed (%.3f g solid, %.3f g walls and skins alone); "
-                "print model error < %.0e\n",
-                pi.printed_mass_kg * 1e3, pi.solid_mass_kg * 1e3, pi.skin_mass_kg * 1e3,
-                pi.rel_error > 1e-15 ? pi.rel_error : 1e-15);
+        if (!strcmp(pi.model, "skins"))
+            fprintf(out,
+                    "\n         %.3f g as printed (%.3f g solid, %.3f g walls and skins alone); "
+                    "print model error < %.0e\n",
+                    pi.printed_mass_kg * 1e3, pi.solid_mass_kg * 1e3, pi.skin_mass_kg * 1e3,
+                    pi.rel_error > 1e-15 ? pi.rel_error : 1e-15);
+        else if (!pi.from_gcode)
+            fprintf(out,
+                    "\n         %.3f g as printed (%.3f g solid): walls %.3f g, solid infill "
+                    "%.3f g, sparse infill %.3f g, its anchors %.3f g; filament %.2f cm^3; "
+                    "body A/C %.4f\n",
+                    pi.printed_mass_kg * 1e3, pi.solid_mass_kg * 1e3, pi.wall_mass_kg * 1e3,
+                    pi.solid_infill_mass_kg * 1e3, pi.sparse_mass_kg * 1e3,
+                    pi.anchor_mass_kg * 1e3, pi.filament_volume_mm3 * 1e-3, pi.body_A_over_C);
+        else
+            fprintf(out,
+                    "\n         from its G-code %s (%s): %.3f g, body A/C %.4f%s; the layer model "
+                    "beside it: %.3f g (%+.1f %%), body A/C %.4f; filament %.2f cm^3\n",
+                    pi.gcode, pi.generator[0] ? pi.generator : "slicer not named",
+                    pi.printed_mass_kg * 1e3, pi.body_A_over_C,
+                    pi.calibrated ? " (its lines scaled by the weighing)" : "",
+                    pi.model_mass_kg * 1e3,
+                    100 * (pi.model_mass_kg / pi.printed_mass_kg - 1), pi.model_body_A_over_C,
+                    pi.filament_volume_mm3 * 1e-3);
         any = 1;
     }
     if (!any)
@@ -125,7 +157,25 @@ int tippe_cli_printed_parts_json(struct cJSON *o, const tippe_design *d)
             cJSON_AddNumberToObject(e, "printed_mass_kg", pi.printed_mass_kg) &&
             cJSON_AddNumberToObject(e, "solid_mass_kg", pi.solid_mass_kg) &&
             cJSON_AddNumberToObject(e, "skin_mass_kg", pi.skin_mass_kg) &&
-            cJSON_AddNumberToObject(e, "model_rel_error", pi.rel_error);
+            cJSON_AddNumberToObject(e, "model_rel_error", pi.rel_error) &&
+            cJSON_AddStringToObject(e, "model", pi.model) &&
+            cJSON_AddStringToObject(e, "pattern", tippe_print_pattern_name(s->pattern)) &&
+            cJSON_AddNumberToObject(e, "filament_volume_mm3", pi.filament_volume_mm3) &&
+            cJSON_AddNumberToObject(e, "wall_mass_kg", pi.wall_mass_kg) &&
+            cJSON_AddNumberToObject(e, "solid_infill_mass_kg", pi.solid_infill_mass_kg) &&
+            cJSON_AddNumberToObject(e, "sparse_mass_kg", pi.sparse_mass_kg) &&
+            cJSON_AddNumberToObject(e, "anchor_mass_kg", pi.anchor_mass_kg) &&
+            cJSON_AddNumberToObject(e, "layers", pi.n_layers) &&
+            (isfinite(pi.body_A_over_C) ? cJSON_AddNumberToObject(e, "body_A_over_C",
+                                                                   pi.body_A_over_C)
+                                        : cJSON_AddNullToObject(e, "body_A_over_C")) &&
+            (pi.from_gcode
+                 ? cJSON_AddStringToObject(e, "gcode", pi.gcode) &&
+                       cJSON_AddStringToObject(e, "gcode_generator", pi.generator) &&
+                       cJSON_AddNumberToObject(e, "flow_factor", pi.flow_factor) &&
+                       cJSON_AddNumberToObject(e, "model_mass_kg", pi.model_mass_kg) &&
+                       cJSON_AddNumberToObject(e, "model_body_A_over_C", pi.model_body_A_over_C)
+                 : cJSON_AddNullToObject(e, "gcode") != NULL);
         if (!ok)
             return -1;
     }

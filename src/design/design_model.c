@@ -137,6 +137,16 @@ int tippe_design_part_fit(const tippe_design *d, int i)
     return i < 0 || i >= d->n_parts ? TIPPE_DESIGN_FIT_NONE : d->parts[i].fit;
 }
 
+/* A/C of unit-density moments alone: A about a transverse axis through their
+ * own centre of mass, C about the axis; NAN for no material. */
+static double body_a_over_c(tippe_moments m)
+{
+    if (!(m.m > 0) || !(m.m_rr > 0))
+        return NAN;
+    double zc = m.m_z / m.m;
+    return (0.5 * m.m_rr + m.m_zz - m.m * zc * zc) / m.m_rr;
+}
+
 int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_info *out)
 {
     memset(out, 0, sizeof *out);
@@ -155,6 +165,28 @@ int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_inf
     out->solid_mass_kg = p->solid_mass_kg;
     out->skin_mass_kg = p->skin_mass_kg;
     out->printed_mass_kg = p->printed_mass_kg;
+    const double rho = p->density_g_cm3 * 1e3;
+    out->model = p->has_gcode ? "gcode" : p->print.model == TIPPE_PRINT_MODEL_SKINS ? "skins"
+                                                                                    : "slicer";
+    out->filament_volume_mm3 = p->printed_mass_kg / rho * 1e9;
+    if (p->print.model == TIPPE_PRINT_MODEL_SLICER || p->has_gcode) {
+        const tippe_print_sliced *sl = &p->sliced;
+        double sp = 0, an = 0;
+        tippe_print_sliced_at(sl, &p->print, p->infill, &sp, &an);
+        out->wall_mass_kg = rho * sl->wall_m3;
+        out->solid_infill_mass_kg = rho * sl->solid_m3;
+        out->sparse_mass_kg = rho * sp;
+        out->anchor_mass_kg = rho * an;
+        out->n_layers = sl->n_layers;
+        out->body_A_over_C = body_a_over_c(p->deposit);
+    }
+    out->from_gcode = p->has_gcode;
+    out->gcode = p->gcode;
+    out->generator = p->has_gcode ? p->gcode_body.generator : "";
+    out->flow_factor = p->has_gcode ? p->gcode_flow : 1.0;
+    out->model_mass_kg = p->has_gcode ? p->model_mass_kg : p->printed_mass_kg;
+    out->model_body_A_over_C = p->has_gcode ? body_a_over_c(p->model_deposit)
+                                            : out->body_A_over_C;
     out->rel_error = p->print_rel_error;
     return TIPPE_OK;
 }

@@ -97,6 +97,7 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
     /* exact arithmetic on the slicer's layers; the printed part's bottom and
      * top are found to 1e-12 m */
     p->print_rel_error = 1e-12 / fmax(p->radius_mm * 1e-3, 1e-3);
+    p->deposit = dep;
     /* the part's own region, its voids added back: they subtract as usual */
     *out = tippe_moments_add(dep, tippe_moments_sub(tippe_design_part_moments(p), solid));
     return TIPPE_OK;
@@ -163,6 +164,8 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     double m_rr = gp.C * scale / rho, vol = m / rho;
     tippe_moments dep = {vol, vol * zc, (gp.A * scale + m * zc * zc) / rho - 0.5 * m_rr, m_rr};
     p->gcode_flow = scale;
+    p->model_deposit = p->deposit;
+    p->deposit = dep;
     p->gcode_body = body;
     p->gcode_part = gp;
     p->has_gcode = 1;

@@ -82,6 +82,7 @@ typedef struct {
     double gcode_flow;
     tippe_moments model_moments;
     double model_mass_kg;
+    tippe_moments deposit, model_deposit; /* unit density: the printed part alone */
 } part;
 
 struct tippe_design {

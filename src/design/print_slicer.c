@@ -144,6 +144,7 @@ static tippe_moments rings_slab(const rings *r, double t, double z)
 typedef struct {
     double z_mid;       /* design frame, m: where the slicer cuts (the layer's middle) */
     double t;           /* thickness, m */
+    double w_ext;       /* the external perimeter's width, m */
     double s_ext, s_per, s_fill; /* spacings of its lines, m */
     rings outline, walls, infill, surface;
 } layer_t;
@@ -203,8 +204,7 @@ static int printed_edge(const slicer_part *p, double zlo, double zhi, int dir, d
 static void walls_and_infill(const tippe_print_settings *s, layer_t *L)
 {
     const int n = s->perimeters;
-    double w_e = s->external_width_mm * 1e-3;
-    double d0 = n > 0 ? 0.5 * (w_e - L->s_ext) : 0.0;
+    double d0 = n > 0 ? 0.5 * (L->w_ext - L->s_ext) : 0.0;
     double W = n > 0 ? L->s_ext + (n - 1) * L->s_per : 0.0;
     double d_f = n > 0 ? d0 + W - s->infill_overlap * L->s_per : 0.0;
     rings inner, band, outer;
@@ -233,7 +233,7 @@ static void surfaces(const tippe_print_settings *s, layer_t *layers, int n_layer
     rings_union(&top, &bottom, &both);
     if (s->top_bottom_layers == 0)
         both.n = 0; /* no solid layers: surfaces are filled as the rest (PrintObject.cpp) */
-    double d = 0.5 * SURFACE_OPENING_FACTOR * s->external_width_mm * 1e-3;
+    double d = 0.5 * SURFACE_OPENING_FACTOR * L->w_ext;
     rings_opening(&both, d, d, &open);
     rings grown;
     rings_offset(&open, open.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &grown);
@@ -387,6 +387,7 @@ int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, 
         double w_f = (first ? s->first_layer_width_mm : s->infill_width_mm) * 1e-3;
         l->t = t;
         l->z_mid = bottom + 0.5 * t;
+        l->w_ext = w_e;
         l->s_ext = spacing(w_e, t);
         l->s_per = spacing(w_p, t);
         l->s_fill = spacing(w_f, t);
