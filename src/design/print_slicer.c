@@ -439,7 +439,8 @@ int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, 
 tippe_moments tippe_print_sliced_at(const tippe_print_sliced *sl, const tippe_print_settings *s,
                                     double infill, double *sparse_m3, double *anchor_m3)
 {
-    double bulk = tippe_print_pattern_bulk(s->pattern) * infill;
+    /* at 100 % the slicer fills with lines (a 3MF from tippe export says rectilinear) */
+    double bulk = (infill >= 1 ? 1.0 : tippe_print_pattern_bulk(s->pattern)) * infill;
     double a = infill > 0 ? anchor_factor(s, sl->s_fill_m, bulk) : 0.0;
     tippe_moments sp = tippe_moments_scale(sl->sparse_region, bulk);
     tippe_moments an = tippe_moments_scale(sl->sparse_band, a);

@@ -170,15 +170,25 @@ static void slicer_settings(const tippe_design *d, const tippe_profile_options *
     x->line_width_mm = ps.line_width_mm;
     x->layer_height_mm = ps.layer_height_mm;
     x->infill = infill;
+    /* at 100 % only a line pattern fills solid: PrusaSlicer refuses another one
+     * there (PrintConfig.cpp validation) and the print model uses rectilinear */
+    x->pattern = infill >= 1 ? "rectilinear" : tippe_print_pattern_name(ps.pattern);
+    x->external_width_mm = ps.external_width_mm;
+    x->infill_width_mm = ps.infill_width_mm;
+    x->top_min_mm = ps.top_min_mm;
+    x->bottom_min_mm = ps.bottom_min_mm;
+    x->infill_overlap = ps.infill_overlap;
+    x->anchor_mm = ps.anchor_mm;
+    x->anchor_max_mm = ps.anchor_max_mm;
     char fit[120] = "";
     if (po->fit_diameter_mm > 0)
         snprintf(fit, sizeof fit, ", except the screw's, printed %.2f mm across for its thread",
                  po->fit_diameter_mm);
     snprintf(desc, size,
              "Print with the axis vertical%s: %d perimeters of %.2f mm, %d top/bottom layers of "
-             "%.2f mm, %.4g %% infill (%s). Holes for hardware have %.2f mm radial clearance%s.",
+             "%.2f mm, %.4g %% %s infill (%s). Holes for hardware have %.2f mm radial clearance%s.",
              po->split ? ", each half on its flat cut face" : "", ps.perimeters,
-             ps.line_width_mm, ps.top_bottom_layers, ps.layer_height_mm, 100 * infill,
+             ps.line_width_mm, ps.top_bottom_layers, ps.layer_height_mm, 100 * infill, x->pattern,
              !block       ? "solid: the design has no print block"
              : calibrated ? "calibrated from the weighed part"
                           : "the design's slicer setting",

@@ -347,6 +347,25 @@ static char *slicer_config(const tippe_mesh *meshes, const char *const *names, c
                 "  <metadata type=\"object\" key=\"perimeter_extrusion_width\" value=\"%.4g\"/>\n",
                 x->perimeters, x->top_bottom_layers, x->top_bottom_layers, 100 * x->infill,
                 x->layer_height_mm, x->line_width_mm);
+        if (x->pattern)
+            fprintf(f,
+                    "  <metadata type=\"object\" key=\"fill_pattern\" value=\"%s\"/>\n"
+                    "  <metadata type=\"object\" key=\"external_perimeter_extrusion_width\" "
+                    "value=\"%.4g\"/>\n"
+                    "  <metadata type=\"object\" key=\"infill_extrusion_width\" value=\"%.4g\"/>\n"
+                    "  <metadata type=\"object\" key=\"solid_infill_extrusion_width\" "
+                    "value=\"%.4g\"/>\n"
+                    "  <metadata type=\"object\" key=\"top_solid_min_thickness\" value=\"%.4g\"/>\n"
+                    "  <metadata type=\"object\" key=\"bottom_solid_min_thickness\" "
+                    "value=\"%.4g\"/>\n"
+                    "  <metadata type=\"object\" key=\"infill_overlap\" value=\"%.4g%%\"/>\n"
+                    "  <metadata type=\"object\" key=\"infill_anchor\" value=\"%.4g\"/>\n"
+                    "  <metadata type=\"object\" key=\"infill_anchor_max\" value=\"%.4g\"/>\n"
+                    "  <metadata type=\"object\" key=\"ensure_vertical_shell_thickness\" "
+                    "value=\"1\"/>\n",
+                    x->pattern, x->external_width_mm, x->infill_width_mm, x->infill_width_mm,
+                    x->top_min_mm, x->bottom_min_mm, 100 * x->infill_overlap, x->anchor_mm,
+                    x->anchor_max_mm);
         fprintf(f, "  <volume firstid=\"0\" lastid=\"%ld\">\n", (long)meshes[k].n_triangles - 1);
         fputs("   <metadata type=\"volume\" key=\"name\" value=\"", f);
         xml_attr(f, names[k]);

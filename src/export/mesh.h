@@ -52,6 +52,11 @@ typedef struct {
     int has_print;          /* 0: no slicer settings written */
     int perimeters, top_bottom_layers;
     double line_width_mm, layer_height_mm, infill; /* infill: 0 .. 1 */
+    /* the rest of the settings the print model follows (print_slicer.c), so that
+     * the slicer deposits what tippe modelled */
+    const char *pattern;    /* PrusaSlicer's fill_pattern; rectilinear at 100 % */
+    double external_width_mm, infill_width_mm, top_min_mm, bottom_min_mm, infill_overlap;
+    double anchor_mm, anchor_max_mm;
 } tippe_mesh_3mf_extra;
 
 /* tippe_mesh_write_3mf with the extras (x may be NULL). */
