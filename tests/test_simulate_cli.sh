@@ -213,7 +213,19 @@ mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"law": "coulomb", "mu": 11}'
 expect_fail "mu_c out of range" 2 "friction.mu" "0 .. 10" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"law": "coulomb", "mu_c": 0.3}'
 expect_fail "unknown friction key" 2 "friction.mu_c" "unknown key" -- simulate "$tmp/x.json"
-expect_fail "bad --friction" 2 "friction.law" "dry" -- simulate "$base" --friction dry
+# issue 28.8: a bad word is the option's fault, not the file's; the message lists the words
+expect_fail "bad --friction" 2 "--friction 'dry': expected viscous, coulomb or coulomb-creep" -- simulate "$base" --friction dry
+expect_fail "--friction COULOMB on a design" 2 "--friction 'COULOMB'" "coulomb-creep" -- \
+    simulate designs/m12-setscrew.json --z2 12 --friction COULOMB
+if grep -q "m12-setscrew.json" "$tmp/err"; then bad "--friction COULOMB blames the design file"; else ok; fi
+expect_fail "bad --accuracy" 2 "--accuracy 'FAST': expected fast, balanced or precise" -- simulate "$base" --accuracy FAST
+expect_fail "bad --stepper" 2 "--stepper 'rk9': expected rk2" "msbdf" -- simulate "$base" --stepper rk9
+mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {}'
+expect_fail "an empty friction block, as a missing one" 2 "x.json: friction.law: missing" "coulomb-creep" -- simulate "$tmp/x.json"
+mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"mu": 0.2}'
+"$tippe" simulate "$tmp/x.json" --t-end 1 --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"]["law"] == "coulomb"' &&
+    ok || bad "a block with a coefficient alone names its law: $(cat "$tmp/err")"
 
 # --- bad usage -----------------------------------------------------------------
 expect_fail "no scenario" 2 "no scenario or design file given" -- simulate

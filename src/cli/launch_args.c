@@ -51,6 +51,30 @@ static int add_phi_dot(const char *verb, tippe_cli_launch_args *l)
     return tippe_cli_sets_add(&l->over, "initial.phi_dot", num) ? 2 : 0;
 }
 
+/* The words --friction, --accuracy and --stepper take, checked here so that a bad
+ * one is the option's fault, not the file's: 0, or 2 after a usage error. */
+static int check_words(const char *verb, const tippe_cli_launch_args *l)
+{
+    tippe_dynamics_accuracy acc;
+    for (int i = 0; i < l->over.n; i++) {
+        const char *it = l->over.item[i];
+        if (!strncmp(it, "friction.law=", 13) && tippe_friction_law_parse(it + 13) < 0)
+            return tippe_cli_usage_error(verb, "--friction '%s': expected viscous, coulomb or "
+                                               "coulomb-creep",
+                                         it + 13);
+        if (!strncmp(it, "accuracy=", 9) && tippe_dynamics_accuracy_preset(it + 9, &acc, NULL))
+            return tippe_cli_usage_error(verb, "--accuracy '%s': expected fast, balanced or "
+                                               "precise",
+                                         it + 9);
+        if (!strncmp(it, "accuracy.stepper=", 17) && !tippe_dynamics_stepper_known(it + 17))
+            return tippe_cli_usage_error(verb, "--stepper '%s': expected rk2, rk4, rkf45, rkck, "
+                                               "rk8pd, rk1imp, rk2imp, rk4imp, bsimp, msadams "
+                                               "or msbdf",
+                                         it + 17);
+    }
+    return 0;
+}
+
 /* --friction, --mu, --mu-c and --slip-scale name one law, as in tippe launch (a
  * coefficient alone selects its law: the scenario's overrides do that). 0, or 2. */
 static int check_friction_opts(const char *verb, tippe_cli_spec *spec,
@@ -104,7 +128,7 @@ int tippe_cli_launch_finish(const char *verb, tippe_cli_spec *spec, const char *
                             tippe_cli_launch_args *l)
 {
     int rc;
-    if ((rc = check_friction_opts(verb, spec, l)) != 0)
+    if ((rc = check_words(verb, l)) != 0 || (rc = check_friction_opts(verb, spec, l)) != 0)
         return rc;
     if (l->phi_dot && (rc = add_phi_dot(verb, l)) != 0)
         return rc;

@@ -377,6 +377,14 @@ static int read_friction(tippe_json_reader *c, const cJSON *root, tippe_scenario
         return rc;
     const cJSON *law = cJSON_GetObjectItemCaseSensitive(f, "law");
     const int has_viscous = cJSON_GetObjectItemCaseSensitive(f, "mu_s_m") != NULL;
+    /* A block names its law, or a coefficient names it: an empty block says
+     * nothing, as a missing one (refused above) says nothing. */
+    if (!law && !has_viscous && !cJSON_GetObjectItemCaseSensitive(f, "mu") &&
+        !cJSON_GetObjectItemCaseSensitive(f, "slip_scale_m_s"))
+        return tippe_json_fail(c, "friction.law",
+                               "missing: the block names no law; give {\"law\": \"coulomb\", "
+                               "\"mu\": 0.3} or {\"law\": \"viscous\", \"mu_s_m\": S_M} "
+                               "(laws: viscous, coulomb, coulomb-creep)");
     int l = has_viscous ? TIPPE_FRICTION_VISCOUS : TIPPE_FRICTION_COULOMB;
     if (law) {
         if (!cJSON_IsString(law))
