@@ -88,6 +88,11 @@ echo "old film" >"$tmp/keep.mp4"
 "$tippe" animate "$flip" --mu -1 -o "$tmp/keep.mp4" >/dev/null 2>&1
 check "old file kept after a failure" grep -q "old film" "$tmp/keep.mp4"
 
+# issue 28.8: a frame after t_end is refused before the launch is integrated, naming --frame
+expect_fail "--frame after t_end" 2 "--frame 1e+06 s" "0 .. t_end = 600 s" -- \
+    animate designs/m12-setscrew.json --z2 12 --frame 1e6 -o "$tmp/late.png"
+check "--frame after t_end: no picture" test ! -e "$tmp/late.png"
+
 # A Z2 where the screw stands out of the ball (beyond sqrt(25^2 - 5.5^2) - 7.5 =
 # 16.887 mm): the film's report says the model does not apply, as check does.
 "$tippe" animate designs/m12-setscrew.json --z2 18 --frame 0.1 -o "$tmp/out18.png" >"$tmp/o18.txt"

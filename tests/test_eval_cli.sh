@@ -87,12 +87,22 @@ mutate badshape 'd["parts"][1]["shape"] = "cone"'
 expect_fail "unknown shape" 2 "parts[1].shape: unknown shape 'cone'" -- eval "$tmp/badshape.json" --z2 1
 mutate dupname 'd["parts"][1]["name"] = "shell"'
 expect_fail "duplicate part name" 2 "parts[1].name: 'shell' is already" -- eval "$tmp/dupname.json" --z2 1
+# issue 28.8: an empty name is refused as an empty part name is
+mutate noname 'd["name"] = ""'
+expect_fail "empty design name" 2 "$tmp/noname.json: name: must not be empty" -- eval "$tmp/noname.json" --z2 1
+mutate nopartname 'd["parts"][1]["name"] = ""'
+expect_fail "empty part name" 2 "parts[1].name: must not be empty" -- eval "$tmp/nopartname.json" --z2 1
 
 # --- values ---------------------------------------------------------------------
 mutate negative 'd["parts"][2]["radius_mm"] = -10'
 expect_fail "negative length" 2 "parts[2].radius_mm: must be positive" -- eval "$tmp/negative.json" --z2 1
 mutate zero 'd["parts"][0]["thickness_mm"] = 0'
 expect_fail "zero length" 2 "parts[0].thickness_mm: must be positive" -- eval "$tmp/zero.json" --z2 1
+# issue 28.8: a subnormal length is bad input (exit 2, naming it), not a failed computation
+mutate subnormal 'd["parts"][2]["height_mm"] = 1e-320'
+expect_fail "subnormal part height" 2 "parts[2].height_mm:" "below 1e-09 mm" -- eval "$tmp/subnormal.json" --z2 1
+mutate subnormal_r 'd["parts"][1]["radius_mm"] = 1e-320'
+expect_fail "subnormal part radius" 2 "parts[1].radius_mm:" "below 1e-09 mm" -- eval "$tmp/subnormal_r.json" --z2 1
 mutate zero_radius 'd["radius_mm"] = 0'
 expect_fail "zero sphere radius" 2 "radius_mm: must be positive" -- eval "$tmp/zero_radius.json" --z2 1
 mutate density 'd["parts"][1].pop("material"); d["parts"][1]["density_g_cm3"] = 0'

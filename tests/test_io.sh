@@ -79,6 +79,20 @@ ln -s new-target.csv "$d/dangling.csv"
 "$tippe" simulate "$sc" --csv "$d/dangling.csv" >/dev/null
 check "--csv through a dangling symlink creates its target" cmp -s "$d/new-target.csv" "$d/ref.csv"
 check "the dangling symlink is kept" test -L "$d/dangling.csv"
+# issue 28.8: a dangling symlink into a directory that does not exist is said to be one
+ln -s no-such-dir/x.csv "$d/nowhere.csv"
+expect_fail "--csv through a symlink into no directory" 2 "a dangling symlink to" "no-such-dir/x.csv" \
+    "whose directory does not exist" -- simulate "$sc" --csv "$d/nowhere.csv"
+# ... and as -o of export, the directory it points to is made (was "File exists")
+ln -s new-export "$d/export-link"
+"$tippe" export designs/m12-setscrew.json -o "$d/export-link" >/dev/null 2>"$d/export-link.err"
+check "export -o a dangling symlink exits 0: $(head -1 "$d/export-link.err")" test $? -eq 0
+check "export -o a dangling symlink: the link kept, its target made" \
+    test -L "$d/export-link" -a -d "$d/new-export" -a -s "$d/new-export/m12-setscrew.3mf"
+ln -s no-such-dir/out "$d/export-nowhere"
+expect_fail "export -o a dangling symlink into no directory" 2 "-o $d/export-nowhere: a dangling symlink to" \
+    "no-such-dir/out" -- export designs/m12-setscrew.json -o "$d/export-nowhere"
+check "...and nothing made there" test ! -e "$d/no-such-dir"
 
 # "-" is standard output.
 # (run in $d, so that a build that takes "-" for a file name leaves it there)

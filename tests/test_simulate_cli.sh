@@ -126,6 +126,21 @@ mutate "$tmp/x.json" 'd["initial"]["phi_dot"] = "sideways"'
 expect_fail "bad phi_dot rule" 2 "initial.phi_dot" "sideways" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'd["initial"]["theta"] = 3.1; d["initial"]["phi_dot"] = "s1"; d["initial"]["spin"] = 0.1'
 expect_fail "s1 without a real root" 2 "initial.phi_dot" "use s3" -- simulate "$tmp/x.json"
+# A rule's rate divides by cos(theta): near pi/2 it must stay in the range a
+# number may have (1e6 rad/s in a file, 1e5 for --phi-dot), naming what to change.
+mutate "$tmp/x.json" 'd["initial"]["theta"] = 1.5707963'
+expect_fail "steady rule near pi/2" 2 "x.json: initial.theta:" "from pi/2" "1e+06" -- simulate "$tmp/x.json"
+mutate "$tmp/x.json" 'd["top"]["A"] = 0.5; d["initial"]["spin"] = 6e5'
+expect_fail "steady rule at a spin too fast for it" 2 "x.json: initial.spin:" "1e+06" -- simulate "$tmp/x.json"
+expect_fail "--theta 1e-10 rad from pi/2" 2 "(set by --theta 1.5707963267)" "from pi/2" -- \
+    simulate designs/m12-setscrew.json --z2 12 --theta 1.5707963267
+expect_fail "--theta near pi/2 within the file's range" 2 "--theta 1.5 rad" "-100000 .. 100000" -- \
+    simulate designs/m12-setscrew.json --z2 12 --theta 1.5 --spin 1e4
+mutate "$tmp/y.json" 'd["initial"]["theta"] = 1.5707949'
+expect_fail "--phi-dot s3 near pi/2" 2 "--phi-dot s3" "initial.theta" -- \
+    simulate "$tmp/y.json" --phi-dot s3
+"$tippe" simulate --help | grep -A3 -- "--phi-dot" | grep -qF "[rad/s; -100000 .. 100000]" &&
+    ok || bad "--help gives --phi-dot's range"
 expect_fail "override through a number names the whole path" 2 "'initial.theta' is a number" \
     -- simulate "$base" --set initial.theta.x=1
 mutate "$tmp/x.json" 'd["initial"]["wobble"] = 1'
@@ -198,7 +213,19 @@ mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"law": "coulomb", "mu": 11}'
 expect_fail "mu_c out of range" 2 "friction.mu" "0 .. 10" -- simulate "$tmp/x.json"
 mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"law": "coulomb", "mu_c": 0.3}'
 expect_fail "unknown friction key" 2 "friction.mu_c" "unknown key" -- simulate "$tmp/x.json"
-expect_fail "bad --friction" 2 "friction.law" "dry" -- simulate "$base" --friction dry
+# issue 28.8: a bad word is the option's fault, not the file's; the message lists the words
+expect_fail "bad --friction" 2 "--friction 'dry': expected viscous, coulomb or coulomb-creep" -- simulate "$base" --friction dry
+expect_fail "--friction COULOMB on a design" 2 "--friction 'COULOMB'" "coulomb-creep" -- \
+    simulate designs/m12-setscrew.json --z2 12 --friction COULOMB
+if grep -q "m12-setscrew.json" "$tmp/err"; then bad "--friction COULOMB blames the design file"; else ok; fi
+expect_fail "bad --accuracy" 2 "--accuracy 'FAST': expected fast, balanced or precise" -- simulate "$base" --accuracy FAST
+expect_fail "bad --stepper" 2 "--stepper 'rk9': expected rk2" "msbdf" -- simulate "$base" --stepper rk9
+mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {}'
+expect_fail "an empty friction block, as a missing one" 2 "x.json: friction.law: missing" "coulomb-creep" -- simulate "$tmp/x.json"
+mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"mu": 0.2}'
+"$tippe" simulate "$tmp/x.json" --t-end 1 --json >"$tmp/fr.out" 2>"$tmp/err" &&
+    json_ok "$tmp/fr.out" 'o["friction"]["law"] == "coulomb"' &&
+    ok || bad "a block with a coefficient alone names its law: $(cat "$tmp/err")"
 
 # --- bad usage -----------------------------------------------------------------
 expect_fail "no scenario" 2 "no scenario or design file given" -- simulate

@@ -41,7 +41,12 @@ typedef struct {
  * "initial.phi_dot=steady", "accuracy=precise", "accuracy.rtol=1e-9",
  * "top.z2_mm=12"; VALUE is read as JSON, or as a string if it is not JSON),
  * then validates. TIPPE_EINPUT for a bad file or override (the message names
- * the file, the JSON path and what is wrong), TIPPE_ECOMPUTE otherwise. */
+ * the file, the JSON path and what is wrong, and ends with "(set on the command
+ * line: FIELD=VALUE)" when an override set that path), TIPPE_ECOMPUTE otherwise.
+ * A precession a rule derives ("steady", ...) must lie in the range a number
+ * may (|phi_dot| <= 1e6 rad/s): the rule divides by cos(theta), so a tilt near
+ * pi/2 (or else a spin) that makes it larger is refused, naming initial.theta
+ * (or initial.spin). */
 int tippe_scenario_load(const char *path, const char *const *overrides, int n_overrides,
                         tippe_scenario *out, tippe_error *err);
 

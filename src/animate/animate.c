@@ -248,12 +248,14 @@ int tippe_film_make(const tippe_animate_launch *launch, const tippe_animate_opti
 int tippe_film_make_still(const tippe_animate_launch *launch, const tippe_animate_options *opt,
                           double t_s, tippe_film *f, tippe_error *err)
 {
-    int rc = start(launch, opt, f, err);
-    if (rc)
-        return rc;
+    /* before start(), which integrates the launch (f is freeable either way) */
+    memset(f, 0, sizeof *f);
     if (!(t_s >= 0 && t_s <= launch->t_end))
         return tippe_error_set(err, TIPPE_EINPUT, "time %g s: expected 0 .. t_end = %g s", t_s,
                                launch->t_end);
+    int rc = start(launch, opt, f, err);
+    if (rc)
+        return rc;
     if (f->planned_verdict == TIPPE_VERDICT_LOST_CONTACT && t_s > f->t_show)
         return tippe_error_set(err, TIPPE_EINPUT,
                                "time %g s: the top leaves the table at t = %.6g s, where the "

@@ -86,10 +86,16 @@ static int make_temp(tippe_report_file *rf, const struct stat *old, tippe_error 
         char *slash = strrchr(tmp, '/');
         if (slash)
             slash[slash == tmp] = '\0'; /* tmp is now the directory ("/" kept) */
-        if (e == ENOENT && (slash ? stat(tmp, &dir) : stat(".", &dir)) != 0)
+        if (e == ENOENT && (slash ? stat(tmp, &dir) : stat(".", &dir)) != 0) {
+            if (strcmp(rf->path, rf->target) != 0)
+                return tippe_error_set(err, TIPPE_EINPUT,
+                                       "%s: cannot write %s: a dangling symlink to '%s', whose "
+                                       "directory does not exist",
+                                       rf->path, rf->what, rf->target);
             return tippe_error_set(err, TIPPE_EINPUT,
                                    "%s: cannot write %s: its directory does not exist", rf->path,
                                    rf->what);
+        }
         if (e == ENOENT) /* /proc, /sys: a directory that takes no new files */
             return tippe_error_set(err, TIPPE_EINPUT,
                                    "%s: cannot write %s: no new file can be made in '%s'",

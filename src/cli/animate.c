@@ -293,6 +293,11 @@ int tippe_cli_animate(int argc, char **argv)
     rc = load_launch(&a, &launch, &err);
     if (rc)
         return tippe_cli_fail(VERB, &err, rc);
+    /* before the launch is integrated */
+    if (a.still && !(a.frame_t <= launch.t_end))
+        return tippe_cli_usage_error(VERB, "--frame %g s: the frame's time must lie within 0 .. "
+                                     "t_end = %g s of the launch (give a larger --t-end, or an "
+                                     "earlier --frame)", a.frame_t, launch.t_end);
     tippe_animate_options opt;
     tippe_animate_options_default(&opt);
     opt.speed = a.speed;

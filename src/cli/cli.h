@@ -307,6 +307,11 @@ void tippe_cli_json_range(struct cJSON *o, const char *key, double lo, double hi
 typedef struct {
     double z2_mm;
     const char *phi_dot;  /* --phi-dot as typed: a rule or a rate */
+    int theta_given, spin_given; /* --theta, --spin were given (for messages) */
+    /* the option each of over's first n_named items stands for ("theta"), or
+     * NULL: a message blaming the item names the option instead */
+    const char *over_opt[TIPPE_CLI_MAX_SETS];
+    int n_named;
     int is_design;        /* the file is a design (it has "parts") */
     tippe_cli_sets over;  /* scenario fields: the option shorthands (and a scenario's --set) */
     tippe_cli_sets sets;  /* --set as given: of the scenario, or of the design */
@@ -332,8 +337,9 @@ typedef struct {
      .min = -TIPPE_CLI_RATE_MAX_RAD_S, .max = TIPPE_CLI_RATE_MAX_RAD_S,                           \
      .help = "tilt rate (initial.theta_dot; design: 0)"},                                         \
     {.name = "phi-dot", .kind = TIPPE_CLI_STRING, .value = &(L)->phi_dot, .arg = "RATE|RULE",     \
-     .help = "precession (initial.phi_dot): rad/s, or steady, s1, s2, s3\n"                      \
-             "(design: steady)"},                                                                 \
+     .unit = "rad/s", .min = -TIPPE_CLI_RATE_MAX_RAD_S, .max = TIPPE_CLI_RATE_MAX_RAD_S,          \
+     .help = "precession (initial.phi_dot): rad/s, or steady, s1, s2, s3 (design:\n"             \
+             "steady); a rule's rate must lie in the range a number may"},                        \
     {.name = "U", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "initial.U",            \
      .unit = "m/s", .min = -100, .max = 100,                                                       \
      .help = "sliding velocity of the centre (initial.U; design: 0)"},                            \
@@ -373,7 +379,10 @@ int tippe_cli_launch_finish(const char *verb, tippe_cli_spec *spec, const char *
                             tippe_cli_launch_args *l);
 
 /* The launch as a scenario: the file's, or the design's central hand launch
- * (tippe_scenario_for_design), with the overrides. A library status. */
+ * (tippe_scenario_for_design), with the overrides. A library status. A
+ * precession that a rule derives from --theta, --spin or --phi-dot RULE must lie
+ * in the range --phi-dot allows a number (TIPPE_CLI_RATE_MAX_RAD_S): else
+ * TIPPE_EINPUT naming the option to change. */
 int tippe_cli_launch_load(const char *file, const tippe_cli_launch_args *l,
                           tippe_scenario *sc, tippe_error *err);
 

@@ -51,6 +51,30 @@ static int add_phi_dot(const char *verb, tippe_cli_launch_args *l)
     return tippe_cli_sets_add(&l->over, "initial.phi_dot", num) ? 2 : 0;
 }
 
+/* The words --friction, --accuracy and --stepper take, checked here so that a bad
+ * one is the option's fault, not the file's: 0, or 2 after a usage error. */
+static int check_words(const char *verb, const tippe_cli_launch_args *l)
+{
+    tippe_dynamics_accuracy acc;
+    for (int i = 0; i < l->over.n; i++) {
+        const char *it = l->over.item[i];
+        if (!strncmp(it, "friction.law=", 13) && tippe_friction_law_parse(it + 13) < 0)
+            return tippe_cli_usage_error(verb, "--friction '%s': expected viscous, coulomb or "
+                                               "coulomb-creep",
+                                         it + 13);
+        if (!strncmp(it, "accuracy=", 9) && tippe_dynamics_accuracy_preset(it + 9, &acc, NULL))
+            return tippe_cli_usage_error(verb, "--accuracy '%s': expected fast, balanced or "
+                                               "precise",
+                                         it + 9);
+        if (!strncmp(it, "accuracy.stepper=", 17) && !tippe_dynamics_stepper_known(it + 17))
+            return tippe_cli_usage_error(verb, "--stepper '%s': expected rk2, rk4, rkf45, rkck, "
+                                               "rk8pd, rk1imp, rk2imp, rk4imp, bsimp, msadams "
+                                               "or msbdf",
+                                         it + 17);
+    }
+    return 0;
+}
+
 /* --friction, --mu, --mu-c and --slip-scale name one law, as in tippe launch (a
  * coefficient alone selects its law: the scenario's overrides do that). 0, or 2. */
 static int check_friction_opts(const char *verb, tippe_cli_spec *spec,
@@ -83,14 +107,35 @@ static int check_friction_opts(const char *verb, tippe_cli_spec *spec,
     return 0;
 }
 
+/* The option (without "--") whose shorthand made the override item, or NULL. */
+static const char *option_of(const tippe_cli_spec *spec, const tippe_cli_launch_args *l,
+                             const char *item)
+{
+    const char *eq = strchr(item, '=');
+    const size_t len = eq ? (size_t)(eq - item) : 0;
+    if (len == 15 && !strncmp(item, "initial.phi_dot", len))
+        return "phi-dot";
+    if (len == 9 && !strncmp(item, "top.z2_mm", len))
+        return "z2";
+    for (const tippe_cli_opt *o = spec->opts; o->name; o++)
+        if (o->field && o->value == &l->over && strlen(o->field) == len &&
+            !strncmp(item, o->field, len))
+            return o->name;
+    return NULL;
+}
+
 int tippe_cli_launch_finish(const char *verb, tippe_cli_spec *spec, const char *file,
                             tippe_cli_launch_args *l)
 {
     int rc;
-    if ((rc = check_friction_opts(verb, spec, l)) != 0)
+    if ((rc = check_words(verb, l)) != 0 || (rc = check_friction_opts(verb, spec, l)) != 0)
         return rc;
     if (l->phi_dot && (rc = add_phi_dot(verb, l)) != 0)
         return rc;
+    const tippe_cli_opt *theta = tippe_cli_find_opt(spec, "theta");
+    const tippe_cli_opt *spin = tippe_cli_find_opt(spec, "spin");
+    l->theta_given = theta && theta->seen;
+    l->spin_given = spin && spin->seen;
     const int has_z2 = tippe_cli_find_opt(spec, "z2")->seen;
     l->is_design = is_design_file(file);
     if (l->is_design && !has_z2)
@@ -100,6 +145,9 @@ int tippe_cli_launch_finish(const char *verb, tippe_cli_spec *spec, const char *
         snprintf(num, sizeof num, "%.17g", l->z2_mm);
         tippe_cli_sets_add(&l->over, "top.z2_mm", num);
     }
+    for (int i = 0; i < l->over.n; i++) /* the shorthands, for messages */
+        l->over_opt[i] = option_of(spec, l, l->over.item[i]);
+    l->n_named = l->over.n;
     if (!l->is_design) /* --set names scenario fields, after the shorthands */
         for (int i = 0; i < l->sets.n; i++)
             if (tippe_cli_sets_add(&l->over, NULL, l->sets.item[i]))
@@ -107,10 +155,69 @@ int tippe_cli_launch_finish(const char *verb, tippe_cli_spec *spec, const char *
     return 0;
 }
 
+/* A loader's message blames an override as "(set on the command line:
+ * FIELD=VALUE)" (tippe/scenario.h): where an option's shorthand made it, the
+ * message names the option as it was given, "(set by --theta 1.5707963267)". */
+static void name_options(const tippe_cli_launch_args *l, tippe_error *err)
+{
+    for (int i = 0; i < l->n_named; i++) {
+        if (!l->over_opt[i])
+            continue;
+        char needle[600];
+        snprintf(needle, sizeof needle, "(set on the command line: %s)", l->over.item[i]);
+        char *at = strstr(err->msg, needle);
+        if (!at)
+            continue;
+        char tail[sizeof err->msg];
+        snprintf(tail, sizeof tail, "(set by --%s %s)%s", l->over_opt[i],
+                 strchr(l->over.item[i], '=') + 1, at + strlen(needle));
+        snprintf(at, sizeof err->msg - (size_t)(at - err->msg), "%s", tail);
+    }
+}
+
+/* A precession a rule derived from the command line's --theta, --spin or --phi-dot
+ * RULE: within the range --phi-dot allows a number (near pi/2 the rule divides by
+ * cos(theta) ~ 0 and gives any rate at all). TIPPE_OK, or TIPPE_EINPUT naming the
+ * option to change: the tilt's near pi/2, else the spin's. */
+static int check_derived_rate(const char *file, const tippe_cli_launch_args *l,
+                              const tippe_scenario *sc, tippe_error *err)
+{
+    const tippe_dynamics_initial *ic = &sc->initial;
+    /* --phi-dot was checked: a rule (steady, s1, s2, s3) or a number, never 's...' */
+    const int rule_given = l->phi_dot && l->phi_dot[0] == 's';
+    if (sc->phi_dot_rule == TIPPE_PHI_DOT_GIVEN || fabs(ic->phi_dot) <= TIPPE_CLI_RATE_MAX_RAD_S ||
+        !(l->theta_given || l->spin_given || rule_given))
+        return TIPPE_OK;
+    const char *rule = tippe_scenario_phi_dot_rule_name(sc->phi_dot_rule);
+    const int near = fabs(cos(ic->theta)) < 0.5;
+    const char *opt = near ? (l->theta_given ? "--theta" : l->spin_given ? "--spin" : NULL)
+                           : (l->spin_given ? "--spin" : l->theta_given ? "--theta" : NULL);
+    char who[1200];
+    if (!opt)
+        snprintf(who, sizeof who, "--phi-dot %s (with %s's initial.%s %.17g %s)", l->phi_dot,
+                 file, near ? "theta" : "spin", near ? ic->theta : ic->spin,
+                 near ? "rad" : "rad/s");
+    else if (!strcmp(opt, "--theta"))
+        snprintf(who, sizeof who, "--theta %.17g rad (%.3g rad from pi/2)", ic->theta,
+                 fabs(M_PI_2 - ic->theta));
+    else
+        snprintf(who, sizeof who, "--spin %.17g rad/s", ic->spin);
+    return tippe_error_set(err, TIPPE_EINPUT,
+                           "%s: the %s precession there is %.3g rad/s (theta %.6g rad, spin %g "
+                           "rad/s), outside the -%g .. %g rad/s --phi-dot allows: %s, or give "
+                           "--phi-dot RATE",
+                           who, rule, ic->phi_dot, ic->theta, ic->spin, TIPPE_CLI_RATE_MAX_RAD_S,
+                           TIPPE_CLI_RATE_MAX_RAD_S,
+                           near ? "tilt less (theta further from pi/2)" : "spin slower");
+}
+
 int tippe_cli_launch_load(const char *file, const tippe_cli_launch_args *l, tippe_scenario *sc,
                           tippe_error *err)
 {
-    return l->is_design ? tippe_scenario_for_design(file, l->z2_mm, l->sets.item, l->sets.n,
-                                                    l->over.item, l->over.n, sc, err)
-                        : tippe_scenario_load(file, l->over.item, l->over.n, sc, err);
+    int rc = l->is_design ? tippe_scenario_for_design(file, l->z2_mm, l->sets.item, l->sets.n,
+                                                      l->over.item, l->over.n, sc, err)
+                          : tippe_scenario_load(file, l->over.item, l->over.n, sc, err);
+    if (rc == TIPPE_EINPUT)
+        name_options(l, err);
+    return rc ? rc : check_derived_rate(file, l, sc, err);
 }

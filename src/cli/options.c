@@ -402,11 +402,14 @@ static void print_wrapped(FILE *out, const char *text, int indent)
     }
 }
 
-/* "[mm; default 5; 0 .. 100]": what the help line says of the value. */
+/* "[mm; default 5; 0 .. 100]": what the help line says of the value. A string
+ * option that also takes a number (--phi-dot RATE|RULE) shows the number's
+ * unit and range when it has them (min < max). */
 static void value_note(const tippe_cli_opt *o, char *buf, size_t size)
 {
     buf[0] = '\0';
-    if (!takes_value(o) || o->kind == TIPPE_CLI_STRING || o->kind == TIPPE_CLI_SET)
+    if (!takes_value(o) || o->kind == TIPPE_CLI_SET ||
+        (o->kind == TIPPE_CLI_STRING && !(o->min < o->max)))
         return;
     int n = snprintf(buf, size, "[");
     if (o->unit)
@@ -439,7 +442,7 @@ static void print_option(FILE *out, const tippe_cli_opt *o)
     fputc(' ', out);
     print_wrapped(out, o->help, COLUMN);
     value_note(o, note, sizeof note);
-    if (o->kind == TIPPE_CLI_STRING && o->def)
+    if (o->kind == TIPPE_CLI_STRING && o->def && !note[0])
         snprintf(note, sizeof note, "[default %s]", o->def);
     if (note[0])
         fprintf(out, "\n%*s%s", COLUMN, "", note);

@@ -227,10 +227,24 @@ int tippe_cli_make_output_dir(const char *verb, const char *option, const char *
         return S_ISDIR(st.st_mode) ? 0
                                    : tippe_cli_usage_error(verb, "%s %s: not a directory", option,
                                                            dir);
-    if (mkdir(dir, 0777) != 0)
+    /* A dangling symlink keeps pointing at its new directory, as a symlink to
+     * a file keeps pointing at its new file: the directory is made where it
+     * points (and removed from there if the run fails). */
+    char target[4096];
+    tippe_error err = {0};
+    if (tippe_report_target(dir, target, sizeof target, &err))
+        return tippe_cli_usage_error(verb, "%s %s", option, err.msg);
+    const int link = strcmp(target, dir) != 0;
+    if (mkdir(target, 0777) != 0) {
+        const int e = errno;
+        if (link)
+            return tippe_cli_usage_error(verb, "%s %s: a dangling symlink to '%s', which cannot "
+                                         "be created as a directory: %s", option, dir, target,
+                                         strerror(e));
         return tippe_cli_usage_error(verb, "%s %s: cannot create the directory: %s", option, dir,
-                                     strerror(errno));
-    snprintf(made_dir, sizeof made_dir, "%s", dir);
+                                     strerror(e));
+    }
+    snprintf(made_dir, sizeof made_dir, "%s", target);
     return 0;
 }
 

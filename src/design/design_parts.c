@@ -40,6 +40,11 @@ int tippe_design_read_length(const tippe_json_reader *c, const cJSON *obj, const
     if (allow_zero ? *out < 0 : *out <= 0)
         return tippe_json_fail(c, p, "must be %s (a length in mm), got %g",
                                allow_zero ? ">= 0" : "positive", *out);
+    if (*out > 0 && *out < LENGTH_MIN_MM)
+        return tippe_json_fail(c, p,
+                               "%g mm is below %g mm, smaller than an atom: nothing is that thin "
+                               "(lengths in a design are in mm)",
+                               *out, LENGTH_MIN_MM);
     return TIPPE_OK;
 }
 

@@ -34,8 +34,11 @@
 #define RADIUS_MIN_MM 1.0
 #define RADIUS_MAX_MM 1000.0
 /* A part length below 10 um is finer than anything printed or machined: a
- * warning (probably metres); smaller lengths still load, for limit studies. */
+ * warning (probably metres); smaller lengths still load, for limit studies,
+ * down to a picometre: below that (a subnormal 1e-320, ...) no part is that
+ * thin, and its mass moments would underflow to nothing. */
 #define LENGTH_HINT_MM 0.01
+#define LENGTH_MIN_MM 1e-9
 /* Intervals per r: a part gives at most 2, each void removes at most 2 more. */
 #define MAX_IV (4 + 4 * MAX_PARTS)
 

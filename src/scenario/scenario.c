@@ -377,6 +377,14 @@ static int read_friction(tippe_json_reader *c, const cJSON *root, tippe_scenario
         return rc;
     const cJSON *law = cJSON_GetObjectItemCaseSensitive(f, "law");
     const int has_viscous = cJSON_GetObjectItemCaseSensitive(f, "mu_s_m") != NULL;
+    /* A block names its law, or a coefficient names it: an empty block says
+     * nothing, as a missing one (refused above) says nothing. */
+    if (!law && !has_viscous && !cJSON_GetObjectItemCaseSensitive(f, "mu") &&
+        !cJSON_GetObjectItemCaseSensitive(f, "slip_scale_m_s"))
+        return tippe_json_fail(c, "friction.law",
+                               "missing: the block names no law; give {\"law\": \"coulomb\", "
+                               "\"mu\": 0.3} or {\"law\": \"viscous\", \"mu_s_m\": S_M} "
+                               "(laws: viscous, coulomb, coulomb-creep)");
     int l = has_viscous ? TIPPE_FRICTION_VISCOUS : TIPPE_FRICTION_COULOMB;
     if (law) {
         if (!cJSON_IsString(law))
@@ -516,6 +524,25 @@ static int read_initial(tippe_json_reader *c, const cJSON *ini, tippe_scenario *
     if (tippe_dynamics_precession(&s->model, ic->theta, ic->spin, rules[found].rule,
                                   &ic->phi_dot, &e))
         return tippe_json_fail(c, "initial.phi_dot", "%s", e.msg);
+    /* The rule divides by cos(theta): near pi/2 it gives any rate at all. What it
+     * gives must be a rate the file could have given as a number; the field to
+     * blame is the tilt near pi/2, else the spin. */
+    if (!(fabs(ic->phi_dot) <= RATE_MAX_RAD_S)) {
+        if (fabs(cos(ic->theta)) < 0.5)
+            return tippe_json_fail(c, "initial.theta",
+                                   "%.17g rad is %.3g rad from pi/2, where the %s rule of "
+                                   "initial.phi_dot gives a precession of %.3g rad/s (spin %g "
+                                   "rad/s), outside the allowed -%g .. %g rad/s: tilt less, or "
+                                   "give initial.phi_dot as a number",
+                                   ic->theta, fabs(M_PI_2 - ic->theta), pd->valuestring,
+                                   ic->phi_dot, ic->spin, RATE_MAX_RAD_S, RATE_MAX_RAD_S);
+        return tippe_json_fail(c, "initial.spin",
+                               "%g rad/s: the %s rule of initial.phi_dot gives a precession of "
+                               "%.3g rad/s at theta %g rad, outside the allowed -%g .. %g rad/s: "
+                               "spin slower, or give initial.phi_dot as a number",
+                               ic->spin, pd->valuestring, ic->phi_dot, ic->theta,
+                               RATE_MAX_RAD_S, RATE_MAX_RAD_S);
+    }
     return TIPPE_OK;
 }
 
