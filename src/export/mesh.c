@@ -308,7 +308,9 @@ static int add_3mf_object(void *model, const tippe_mesh *m, const char *name, do
     return ok;
 }
 
-/* A string as an XML attribute value. */
+/* A string as XML character data or an attribute value: the five markup
+ * characters as entities; a control character (refused when a design is
+ * read, src/base/json.c) is left out, since XML 1.0 has no way to write one. */
 static void xml_attr(FILE *f, const char *s)
 {
     for (; *s; s++)
@@ -317,10 +319,27 @@ static void xml_attr(FILE *f, const char *s)
         case '<': fputs("&lt;", f); break;
         case '>': fputs("&gt;", f); break;
         case '"': fputs("&quot;", f); break;
+        case '\'': fputs("&apos;", f); break;
         default:
             if ((unsigned char)*s >= 0x20)
                 fputc(*s, f);
         }
+}
+
+/* s escaped for XML (xml_attr), on the heap; NULL when out of memory. */
+static char *xml_escaped(const char *s)
+{
+    char *buf = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&buf, &size);
+    if (!f)
+        return NULL;
+    xml_attr(f, s);
+    if (fclose(f) != 0) {
+        free(buf);
+        return NULL;
+    }
+    return buf;
 }
 
 /* PrusaSlicer's per-object configuration (its 3MF reader applies each
@@ -381,8 +400,14 @@ int tippe_mesh_write_3mf_extra(const tippe_mesh *meshes, const char *const *name
     int ok = id && lib3mf_createmodel(&model) == 0;
     for (int k = 0; ok && k < n; k++)
         ok = add_3mf_object(model, &meshes[k], names[k], offset_x_mm[k], &id[k]);
-    for (int k = 0; ok && x && k < x->n_meta; k++)
-        ok = lib3mf_model_addmetadatautf8(model, x->meta_keys[k], x->meta_values[k]) == 0;
+    /* lib3mf 1.8 escapes object names but writes a metadata value as it is
+     * given: "Ball & screw" would make the model file ill-formed XML, which a
+     * strict reader (expat, as in PrusaSlicer) refuses. */
+    for (int k = 0; ok && x && k < x->n_meta; k++) {
+        char *v = xml_escaped(x->meta_values[k]);
+        ok = v && lib3mf_model_addmetadatautf8(model, x->meta_keys[k], v) == 0;
+        free(v);
+    }
     if (ok && x && x->has_print) {
         size_t size = 0;
         char *cfg = slicer_config(meshes, names, id, n, x, &size);
