@@ -271,6 +271,8 @@ static int parse_choose(tippe_json_reader *c, const cJSON *choose, const char *c
             snprintf(op, sizeof op, "%s[%d]", p, k);
             option_t *opt = &ch->opt[k];
             if (cJSON_IsString(o) && o->valuestring[0] && strlen(o->valuestring) < 80) {
+                if ((rc = tippe_json_check_text(c, op, o->valuestring, 0)))
+                    return rc;
                 snprintf(opt->label, sizeof opt->label, "%s", o->valuestring);
                 snprintf(opt->set[0], sizeof opt->set[0], "%s=%s", v->string, o->valuestring);
             } else if (cJSON_IsNumber(o) && isfinite(o->valuedouble)) {
@@ -568,7 +570,7 @@ int tippe_optimise_spec_load(const char *path, tippe_optimise_spec **out, tippe_
     if (!rc)
         rc = tippe_json_string(c, root, "", "name", 0, s->name, sizeof s->name, NULL);
     if (!rc)
-        rc = tippe_json_string(c, root, "", "notes", 0, NULL, 0, NULL);
+        rc = tippe_json_text(c, root, "", "notes", 0, NULL, 0, NULL);
     if (!rc)
         rc = tippe_json_string(c, root, "", "design", 1, design_rel, sizeof design_rel, NULL);
     if (!rc)
