@@ -396,6 +396,17 @@ void tippe_report_abort(tippe_report_file *rf)
     rf->slot = -1;
 }
 
+int tippe_report_fail(tippe_report_file *rf, tippe_error *err, const char *why)
+{
+    const int e = close_stream(rf);
+    drop_temp(rf->slot);
+    rf->slot = -1;
+    if (e)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: writing %s failed: %s", rf->path,
+                               rf->what, strerror(e));
+    return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: %s", rf->path, why);
+}
+
 void tippe_report_set_begin(void)
 {
     in_set = 1;
