@@ -214,9 +214,6 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
     return 0;
 }
 
-/* The directory tippe_cli_make_output_dir created in this run, if any. */
-static char made_dir[4096];
-
 int tippe_cli_make_output_dir(const char *verb, const char *option, const char *dir)
 {
     struct stat st;
@@ -227,10 +224,10 @@ int tippe_cli_make_output_dir(const char *verb, const char *option, const char *
         return S_ISDIR(st.st_mode) ? 0
                                    : tippe_cli_usage_error(verb, "%s %s: not a directory", option,
                                                            dir);
-    if (mkdir(dir, 0777) != 0)
+    /* noted for removal by a failure (tippe_cli_run) or a stop signal */
+    if (tippe_cli_signals_mkdir(dir) != 0)
         return tippe_cli_usage_error(verb, "%s %s: cannot create the directory: %s", option, dir,
                                      strerror(errno));
-    snprintf(made_dir, sizeof made_dir, "%s", dir);
     return 0;
 }
 
@@ -254,8 +251,8 @@ int tippe_cli_run(const tippe_cli_verb *v, int argc, char **argv)
     if (status != 0) {
         tippe_report_set_abort();
         /* rmdir takes only an empty directory: one holding other files stays */
-        if (made_dir[0])
-            rmdir(made_dir);
+        if (tippe_cli_signals_made_dir())
+            rmdir(tippe_cli_signals_made_dir());
     } else if (tippe_report_set_commit(&err) != TIPPE_OK)
         status = tippe_cli_fail(v->name, &err, TIPPE_ECOMPUTE);
     const int stopped = tippe_cli_signal_pending(v->name);
