@@ -127,6 +127,13 @@ int tippe_report_commit(tippe_report_file *rf, tippe_error *err);
  * open or a commit (then it does nothing). */
 void tippe_report_abort(tippe_report_file *rf);
 
+/* For a writer that gave up (a library's status said so): aborts rf and sets
+ * err (TIPPE_ECOMPUTE) to why it failed: "PATH: writing WHAT failed: REASON"
+ * when a write to rf->f failed (a full disk: "No space left on device"), else
+ * "PATH: " and the writer's own words, why ("cairo could not write the
+ * drawing"). Returns TIPPE_ECOMPUTE. */
+int tippe_report_fail(tippe_report_file *rf, tippe_error *err, const char *why);
+
 /* Starts a set of outputs (see above). A set already open is kept. */
 void tippe_report_set_begin(void);
 /* Renames every finished file of the set into place and ends the set. A

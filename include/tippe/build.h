@@ -38,6 +38,54 @@ const tippe_build_thread *tippe_build_thread_by_pitch_diameter(double d2_mm);
  * metric threads, about 77 % thread engagement). */
 double tippe_build_tap_drill_mm(const tippe_build_thread *t);
 
+/* The hardware catalogue (designs/catalogue.json): an object of named sets
+ * ("iso4026"), each {"title", "source", "notes", "items": [...]}, each item a
+ * screw {"name", "thread", "d_mm", "pitch_mm", "radius_mm", "height_mm" and,
+ * optional, "length_mm", "socket_s_mm", "socket_t_mm"}. Read strictly, as a
+ * design is: unknown or repeated keys, a missing or mistyped field, an empty
+ * or repeated item name, a control character in a name are refused, and a
+ * thread must be one that can be made: d_mm within ISO 261's diameters
+ * (1 .. 300 mm), pitch_mm within its pitches (0.2 .. 6 mm) and at most d/4
+ * (the coarsest ISO 261 pitch of a size never passes a quarter of its
+ * diameter: M1 x 0.25), so the tap drill d - P is at least 3d/4; a "thread"
+ * written "M10" names d_mm = 10; radius_mm (the screw modelled as a cylinder of
+ * its pitch diameter) at most d/2, lengths positive and at most
+ * TIPPE_BUILD_SCREW_MAX_MM. */
+#define TIPPE_BUILD_THREAD_D_MIN_MM 1.0
+#define TIPPE_BUILD_THREAD_D_MAX_MM 300.0
+#define TIPPE_BUILD_THREAD_PITCH_MIN_MM 0.2
+#define TIPPE_BUILD_THREAD_PITCH_MAX_MM 6.0
+#define TIPPE_BUILD_SCREW_MAX_MM 1000.0
+typedef struct {
+    char name[64];                   /* "M10x12" */
+    char thread[16];                 /* "M10" */
+    double d_mm, pitch_mm;           /* the thread */
+    double radius_mm, height_mm;     /* the screw as a design models it */
+    double length_mm;                /* nominal length; NAN: not given */
+    double socket_s_mm, socket_t_mm; /* hexagon socket; NAN: not given */
+} tippe_build_catalogue_item;
+typedef struct {
+    char key[64];    /* "iso4026" */
+    char title[160]; /* its "title", else its key */
+    int n_items;
+    tippe_build_catalogue_item *items;
+} tippe_build_catalogue_set;
+typedef struct {
+    char file[1024];
+    int n_sets;
+    tippe_build_catalogue_set *sets;
+} tippe_build_catalogue;
+
+/* Reads the catalogue file path: TIPPE_EINPUT with "FILE: JSON.PATH: what is
+ * wrong" for anything above. tippe_build_catalogue_free() the result. */
+int tippe_build_catalogue_load(const char *path, tippe_build_catalogue **out, tippe_error *err);
+void tippe_build_catalogue_free(tippe_build_catalogue *c);
+/* The first item (in file order) of radius_mm and height_mm (within 1e-6
+ * mm), and its set in *set (if not NULL); NULL when none matches. */
+const tippe_build_catalogue_item *tippe_build_catalogue_match(const tippe_build_catalogue *c,
+                                                              double radius_mm, double height_mm,
+                                                              const tippe_build_catalogue_set **set);
+
 /* How the weight's place is measured. */
 typedef enum {
     TIPPE_BUILD_MEASURE_NONE, /* no hole or rod on the axis found: Z2 only */
@@ -117,6 +165,9 @@ typedef struct {
     int n_sets;
     double clearance_mm;     /* export's radial clearance of holes for hardware */
     const char *catalogue;   /* hardware catalogue file; NULL: none */
+    /* the catalogue read already (the command reads it before any work, so that
+     * a bad one is refused first); NULL: tippe_build_compute reads catalogue */
+    const tippe_build_catalogue *catalogue_read;
     tippe_launch_options launch;
 } tippe_build_options;
 

@@ -121,23 +121,47 @@ int tippe_json_load(const tippe_json_reader *r, int max_mib, const char *what, c
     return rc;
 }
 
+/* A message that quotes the file's text (a key, a name) must not carry its
+ * control characters to the terminal: each is shown as \xNN. */
+static void visible(char *out, size_t cap, const char *in)
+{
+    size_t n = 0;
+    for (; *in && n + 5 < cap; in++) {
+        unsigned char ch = (unsigned char)*in;
+        if (ch < 0x20 || ch == 0x7f)
+            n += (size_t)snprintf(out + n, cap - n, "\\x%02X", ch);
+        else
+            out[n++] = (char)ch;
+    }
+    out[n] = '\0';
+}
+
 int tippe_json_fail(const tippe_json_reader *r, const char *path, const char *fmt, ...)
 {
-    char what[768];
+    char raw[768], what[768 * 2], shown_path[TIPPE_JSON_PATH_LEN * 2];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
+    vsnprintf(raw, sizeof raw, fmt, ap);
     va_end(ap);
+    visible(what, sizeof what, raw);
+    const char *blamed = path;
+    if (path) {
+        visible(shown_path, sizeof shown_path, path);
+        path = shown_path;
+    }
     /* The last override wins, as it does on the tree. */
     const char *by = NULL;
-    for (int i = 0; i < r->n_set && path; i++) {
+    for (int i = 0; i < r->n_set && blamed; i++) {
         size_t n = strlen(r->set_path[i]);
-        if (!strncmp(path, r->set_path[i], n) && (path[n] == '\0' || path[n] == '.'))
+        if (!strncmp(blamed, r->set_path[i], n) && (blamed[n] == '\0' || blamed[n] == '.'))
             by = r->set_text[i];
     }
-    if (by)
+    if (by) {
+        char shown_by[768];
+        visible(shown_by, sizeof shown_by, by);
         return tippe_error_set(r->err, TIPPE_EINPUT, "%s: %s: %s (%s%s)", r->file, path, what,
-                               r->set_by ? r->set_by : "set by ", by);
+                               r->set_by ? r->set_by : "set by ", shown_by);
+    }
     if (path && path[0])
         return tippe_error_set(r->err, TIPPE_EINPUT, "%s: %s: %s", r->file, path, what);
     return tippe_error_set(r->err, TIPPE_EINPUT, "%s: %s", r->file, what);
@@ -320,8 +344,59 @@ int tippe_json_number(const tippe_json_reader *r, const cJSON *obj, const char *
     return TIPPE_OK;
 }
 
-int tippe_json_string(const tippe_json_reader *r, const cJSON *obj, const char *path,
-                      const char *key, int required, char *out, size_t cap, int *present)
+/* The length of the UTF-8 sequence at s and its code point in *cp, or 0 when
+ * s does not start a well-formed one (overlong, a surrogate, above U+10FFFF). */
+static int utf8_char(const unsigned char *s, unsigned *cp)
+{
+    if (s[0] < 0x80) {
+        *cp = s[0];
+        return 1;
+    }
+    int n = s[0] >= 0xf0 && s[0] <= 0xf4 ? 4 : s[0] >= 0xe0 ? (s[0] <= 0xef ? 3 : 0)
+                                          : s[0] >= 0xc2 ? 2 : 0;
+    if (!n)
+        return 0;
+    unsigned c = s[0] & (0x7f >> n);
+    for (int k = 1; k < n; k++) {
+        if ((s[k] & 0xc0) != 0x80)
+            return 0;
+        c = (c << 6) | (s[k] & 0x3f);
+    }
+    static const unsigned least[5] = {0, 0, 0x80, 0x800, 0x10000};
+    if (c < least[n] || c > 0x10ffff || (c >= 0xd800 && c <= 0xdfff))
+        return 0;
+    *cp = c;
+    return n;
+}
+
+int tippe_json_check_text(const tippe_json_reader *r, const char *path, const char *s,
+                          int free_text)
+{
+    int at = 1;
+    for (const unsigned char *p = (const unsigned char *)s; *p; at++) {
+        unsigned c;
+        int n = utf8_char(p, &c);
+        if (!n)
+            return tippe_json_fail(r, path, "character %d is not valid UTF-8 (byte 0x%02X): "
+                                            "a text must be UTF-8", at, *p);
+        int control = c < 0x20 || (c >= 0x7f && c <= 0x9f);
+        if (control && !(free_text && (c == '\n' || c == '\t'))) {
+            if (free_text)
+                return tippe_json_fail(r, path, "character %d is the control character U+%04X: "
+                                                "free text may hold line breaks (\\n) and tabs "
+                                                "(\\t), no other control character", at, c);
+            return tippe_json_fail(r, path, "character %d is the control character U+%04X: a "
+                                            "name or label is one line of printable text", at, c);
+        }
+        p += n;
+    }
+    return TIPPE_OK;
+}
+
+/* tippe_json_string and tippe_json_text: a string checked as one line or as free text. */
+static int get_text(const tippe_json_reader *r, const cJSON *obj, const char *path,
+                    const char *key, int required, char *out, size_t cap, int *present,
+                    int free_text)
 {
     char sub[256];
     const cJSON *it = lookup(obj, path, key, sub, sizeof sub, present);
@@ -329,12 +404,27 @@ int tippe_json_string(const tippe_json_reader *r, const cJSON *obj, const char *
         return required ? tippe_json_fail(r, sub, "missing (a string is required)") : TIPPE_OK;
     if (!cJSON_IsString(it))
         return tippe_json_wrong_type(r, sub, "a string", it);
+    int rc = tippe_json_check_text(r, sub, it->valuestring, free_text);
+    if (rc)
+        return rc;
     if (out) {
         if (strlen(it->valuestring) >= cap)
             return tippe_json_fail(r, sub, "longer than %zu characters", cap - 1);
         strcpy(out, it->valuestring);
     }
     return TIPPE_OK;
+}
+
+int tippe_json_string(const tippe_json_reader *r, const cJSON *obj, const char *path,
+                      const char *key, int required, char *out, size_t cap, int *present)
+{
+    return get_text(r, obj, path, key, required, out, cap, present, 0);
+}
+
+int tippe_json_text(const tippe_json_reader *r, const cJSON *obj, const char *path,
+                    const char *key, int required, char *out, size_t cap, int *present)
+{
+    return get_text(r, obj, path, key, required, out, cap, present, 1);
 }
 
 int tippe_json_bool(const tippe_json_reader *r, const cJSON *obj, const char *path,

@@ -98,9 +98,20 @@ int tippe_json_check_keys(const tippe_json_reader *r, const cJSON *obj, const ch
 int tippe_json_number(const tippe_json_reader *r, const cJSON *obj, const char *path,
                       const char *key, int required, double *out, int *present);
 /* out may be NULL to check the type only; else a string of cap - 1 characters
- * or more is an error. */
+ * or more is an error. The string must be UTF-8 and one line of printable text
+ * (a name, a label, a file name): a control character (U+0000..U+001F,
+ * U+007F..U+009F) would reach a terminal as an escape sequence, break a table
+ * or a Markdown line, and cannot be written in XML 1.0 (3MF, SVG). */
 int tippe_json_string(const tippe_json_reader *r, const cJSON *obj, const char *path,
                       const char *key, int required, char *out, size_t cap, int *present);
+/* As tippe_json_string, for free text (notes): line breaks (\n) and tabs
+ * (\t) are allowed there, no other control character (not CR, not ESC). */
+int tippe_json_text(const tippe_json_reader *r, const cJSON *obj, const char *path,
+                    const char *key, int required, char *out, size_t cap, int *present);
+/* The check of both on a text s at path (a key used as a name, a value read
+ * otherwise): TIPPE_OK, or TIPPE_EINPUT with the character and its place. */
+int tippe_json_check_text(const tippe_json_reader *r, const char *path, const char *s,
+                          int free_text);
 /* Never required (a flag's absence means false to every caller). */
 int tippe_json_bool(const tippe_json_reader *r, const cJSON *obj, const char *path,
                     const char *key, int *out, int *present);

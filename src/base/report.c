@@ -79,8 +79,15 @@ static int make_temp(tippe_report_file *rf, const struct stat *old, tippe_error 
     char tmp[sizeof temps[0].tmp];
     if (snprintf(tmp, sizeof tmp, "%s.tmp.XXXXXX", rf->target) >= (int)sizeof tmp)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: path too long", rf->path);
-    int fd = mkostemp(tmp, O_CLOEXEC);
+    /* The slot holds the name while mkostemp fills it in and creates the file:
+     * a signal handler that comes meanwhile unlinks a name not yet created
+     * (harmless) or the new file, never misses it. */
+    memcpy(temps[slot].tmp, tmp, sizeof tmp);
+    temps[slot].live = 1;
+    int fd = mkostemp(temps[slot].tmp, O_CLOEXEC);
+    memcpy(tmp, temps[slot].tmp, sizeof tmp);
     if (fd < 0) {
+        temps[slot].live = 0;
         int e = errno;
         struct stat dir;
         char *slash = strrchr(tmp, '/');
@@ -103,9 +110,7 @@ static int make_temp(tippe_report_file *rf, const struct stat *old, tippe_error 
         return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write %s: %s", rf->path, rf->what,
                                strerror(e));
     }
-    memcpy(temps[slot].tmp, tmp, sizeof tmp);
     snprintf(temps[slot].target, sizeof temps[slot].target, "%s", rf->target);
-    temps[slot].live = 1;
     rf->slot = slot;
     snprintf(rf->write_path, sizeof rf->write_path, "%s", tmp);
     mode_t mode;
@@ -400,6 +405,17 @@ void tippe_report_abort(tippe_report_file *rf)
     close_stream(rf);
     drop_temp(rf->slot);
     rf->slot = -1;
+}
+
+int tippe_report_fail(tippe_report_file *rf, tippe_error *err, const char *why)
+{
+    const int e = close_stream(rf);
+    drop_temp(rf->slot);
+    rf->slot = -1;
+    if (e)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: writing %s failed: %s", rf->path,
+                               rf->what, strerror(e));
+    return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: %s", rf->path, why);
 }
 
 void tippe_report_set_begin(void)

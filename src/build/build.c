@@ -1,13 +1,11 @@
 /* Build sheet: robust settings in measurable units, spins, launch verdicts, BOM. */
 #include "build/internal.h"
 
-#include "base/json.h"
 #include "tippe/profile.h"
 #include "tippe/sweep.h"
 #include "tippe/physics.h"
 #include "tippe/design.h"
 
-#include <cjson/cJSON.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -291,52 +289,29 @@ static double depth_at(const tippe_build_sheet *s, double z2_mm)
 
 /* The catalogue item with the screw's radius and height: 1 matched, 0 not,
  * or a status < 0 with err set if the file does not read. */
-static int match_catalogue(const char *file, double r_mm, double h_mm, tippe_build_sheet *out,
-                           tippe_error *err)
+static int match_catalogue(const tippe_build_options *o, double r_mm, double h_mm,
+                           tippe_build_sheet *out, tippe_error *err)
 {
-    tippe_json_reader *c = tippe_json_reader_new(file, err, TIPPE_JSON_WORDS_FIELD, NULL);
-    if (!c)
-        return -TIPPE_ECOMPUTE;
-    cJSON *root = NULL;
-    int rc = tippe_json_load(c, 16, "catalogue", &root);
-    free(c);
-    if (rc)
-        return -rc;
-    int found = 0;
-    const cJSON *set;
-    cJSON_ArrayForEach(set, root)
-    {
-        const cJSON *items = cJSON_GetObjectItemCaseSensitive(set, "items");
-        const cJSON *it;
-        cJSON_ArrayForEach(it, items)
-        {
-            const cJSON *r = cJSON_GetObjectItemCaseSensitive(it, "radius_mm");
-            const cJSON *h = cJSON_GetObjectItemCaseSensitive(it, "height_mm");
-            const cJSON *n = cJSON_GetObjectItemCaseSensitive(it, "name");
-            const cJSON *d = cJSON_GetObjectItemCaseSensitive(it, "d_mm");
-            const cJSON *p = cJSON_GetObjectItemCaseSensitive(it, "pitch_mm");
-            const cJSON *th = cJSON_GetObjectItemCaseSensitive(it, "thread");
-            if (!cJSON_IsNumber(r) || !cJSON_IsNumber(h) || !cJSON_IsString(n) ||
-                !cJSON_IsNumber(d) || !cJSON_IsNumber(p) || fabs(r->valuedouble - r_mm) > 1e-6 ||
-                fabs(h->valuedouble - h_mm) > 1e-6)
-                continue;
-            const tippe_build_thread *iso = tippe_build_thread_by_diameter(d->valuedouble);
-            snprintf(out->thread_name, sizeof out->thread_name, "%s",
-                     iso ? iso->name : cJSON_IsString(th) ? th->valuestring : "M?");
-            out->thread.d_mm = d->valuedouble;
-            out->thread.pitch_mm = p->valuedouble; /* the catalogue's */
-            snprintf(out->catalogue_item, sizeof out->catalogue_item, "%s", n->valuestring);
-            const cJSON *t = cJSON_GetObjectItemCaseSensitive(set, "title");
-            snprintf(out->catalogue_title, sizeof out->catalogue_title, "%s",
-                     cJSON_IsString(t) ? t->valuestring : set->string);
-            found = 1;
-            break;
-        }
-        if (found)
-            break;
+    tippe_build_catalogue *own = NULL;
+    const tippe_build_catalogue *c = o->catalogue_read;
+    if (!c) {
+        int rc = tippe_build_catalogue_load(o->catalogue, &own, err);
+        if (rc)
+            return -rc;
+        c = own;
     }
-    cJSON_Delete(root);
-    return found;
+    const tippe_build_catalogue_set *set = NULL;
+    const tippe_build_catalogue_item *it = tippe_build_catalogue_match(c, r_mm, h_mm, &set);
+    if (it) {
+        const tippe_build_thread *iso = tippe_build_thread_by_diameter(it->d_mm);
+        snprintf(out->thread_name, sizeof out->thread_name, "%s", iso ? iso->name : it->thread);
+        out->thread.d_mm = it->d_mm;
+        out->thread.pitch_mm = it->pitch_mm; /* the catalogue's */
+        snprintf(out->catalogue_item, sizeof out->catalogue_item, "%s", it->name);
+        snprintf(out->catalogue_title, sizeof out->catalogue_title, "%s", set->title);
+    }
+    tippe_build_catalogue_free(own);
+    return it != NULL;
 }
 
 /* ------------------------------------------------------------- spins */
@@ -491,7 +466,8 @@ static int compute_thread(compute_ctx *c, tippe_error *err)
     if (out->measure == TIPPE_BUILD_MEASURE_HOLE) {
         int m = 0;
         double h = c->top - c->bottom;
-        if (c->o->catalogue && (m = match_catalogue(c->o->catalogue, c->r_weight, h, out, err)) < 0)
+        if ((c->o->catalogue || c->o->catalogue_read) &&
+            (m = match_catalogue(c->o, c->r_weight, h, out, err)) < 0)
             return -m;
         if (!m) {
             /* the screw is modelled as a cylinder of its pitch diameter (the

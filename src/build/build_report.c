@@ -199,15 +199,32 @@ const char *tippe_build_turns(double v, char *buf, size_t size)
     return buf;
 }
 
+/* Text from the design (names, and the sentences that quote them) in Markdown:
+ * '|' would end a table cell, '<' and '&' start raw HTML or an entity (a name
+ * "<!--" would hide the rest of the page), '[' ']' a link, '`' a code span;
+ * each is backslash-escaped (CommonMark), so the page reads as the text. */
+static const char *md(const char *text, char *buf, size_t size)
+{
+    size_t n = 0;
+    for (const char *t = text; *t && n + 2 < size; t++) {
+        if (strchr("\\|<>&[]`", *t))
+            buf[n++] = '\\';
+        buf[n++] = *t;
+    }
+    buf[n] = '\0';
+    return buf;
+}
+
 void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
 {
+    char m1[2048], m2[2048];
     char a[32], b[32], c[32], d[32], e[32], g[32];
     fprintf(f, "# Build sheet: %s\n\nDesign file `%s`; sphere radius %g mm; the weight's "
                "physical travel Z2 = %.2f .. %.2f mm.\n\n",
-            s->design_name, s->design_file, s->radius_mm, s->travel_from_mm, s->travel_to_mm);
+            md(s->design_name, m1, sizeof m1), s->design_file, s->radius_mm, s->travel_from_mm, s->travel_to_mm);
     fprintf(f, "## Settings\n\n");
     if (s->measure != TIPPE_BUILD_MEASURE_NONE)
-        fprintf(f, "Measure from %s.\n\n", s->reference);
+        fprintf(f, "Measure from %s.\n\n", md(s->reference, m1, sizeof m1));
     fprintf(f, "| behaviour | group | robust Z2 range | set Z2 | depth (range) | depth to set | "
                "turns to set | spin needed | launch check |\n"
                "|---|---|---|---|---|---|---|---|---|\n");
@@ -255,16 +272,17 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
                    "zones at each value; at the edge given the missing zone is just born, so go "
                    "beyond it for a zone wide enough to set):\n\n");
         for (int k = 0; k < s->n_advice; k++)
-            fprintf(f, "- %s (`--set %s=%.4g`).\n", s->advice[k].text, s->advice[k].field,
+            fprintf(f, "- %s (`--set %s=%.4g`).\n", md(s->advice[k].text, m1, sizeof m1), s->advice[k].field,
                     s->advice[k].value);
         if (!s->n_advice)
             fprintf(f, "- no single change of the infill, the weight's density (1 .. 22 g/cm^3) "
                        "or its length (half to double) makes it 3-in-1.\n");
     }
     if (s->has_thread) {
-        fprintf(f, "\nThread: %s x %g mm", s->thread_name, s->thread.pitch_mm);
+        fprintf(f, "\nThread: %s x %g mm", md(s->thread_name, m1, sizeof m1), s->thread.pitch_mm);
         if (s->catalogue_item[0])
-            fprintf(f, " (catalogue item %s, %s)", s->catalogue_item, s->catalogue_title);
+            fprintf(f, " (catalogue item %s, %s)", md(s->catalogue_item, m1, sizeof m1),
+                    md(s->catalogue_title, m2, sizeof m2));
         else if (s->thread_assumed)
             fprintf(f, " (assumed: no catalogue item matches the weight; the ISO 261 size whose "
                        "pitch diameter is nearest its modelled diameter)");
@@ -272,29 +290,30 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     }
     fprintf(f, "\n## Bill of materials\n\n| qty | item | detail |\n|---|---|---|\n");
     for (int k = 0; k < s->n_bom; k++)
-        fprintf(f, "| %d | %s | %s |\n", s->bom[k].quantity, s->bom[k].what, s->bom[k].detail);
+        fprintf(f, "| %d | %s | %s |\n", s->bom[k].quantity, md(s->bom[k].what, m1, sizeof m1),
+                md(s->bom[k].detail, m2, sizeof m2));
     fprintf(f, "\n## Print settings\n\n| part | material | perimeters | top/bottom layers | "
                "infill | orientation |\n|---|---|---|---|---|---|\n");
     for (int k = 0; k < s->n_print; k++) {
         const tippe_print_settings *p = &s->print[k].settings;
         if (s->print[k].has_block)
             fprintf(f, "| %s | %s | %d x %.2f mm | %d x %.2f mm | %.0f %%%s | axis vertical%s |\n",
-                    s->print[k].part, s->print[k].material, p->perimeters, p->line_width_mm,
+                    md(s->print[k].part, m1, sizeof m1), md(s->print[k].material, m2, sizeof m2), p->perimeters, p->line_width_mm,
                     p->top_bottom_layers, p->layer_height_mm, 100 * s->print[k].infill,
                     s->print[k].calibrated ? " (calibrated by weighing)" : "",
                     s->needs_split ? ", halves on their cut faces" : "");
         else
             fprintf(f, "| %s | %s | as many as fill it | - | 100 %% (solid: the design has no "
                        "print block) | axis vertical%s |\n",
-                    s->print[k].part, s->print[k].material,
+                    md(s->print[k].part, m1, sizeof m1), md(s->print[k].material, m2, sizeof m2),
                     s->needs_split ? ", halves on their cut faces" : "");
     }
     fprintf(f, "\n## Steps\n\n");
     for (int k = 0; k < s->n_steps; k++)
-        fprintf(f, "%d. %s\n", k + 1, s->step[k]);
+        fprintf(f, "%d. %s\n", k + 1, md(s->step[k], m1, sizeof m1));
     if (s->n_notes) {
         fprintf(f, "\n## Notes\n\n");
         for (int k = 0; k < s->n_notes; k++)
-            fprintf(f, "- %s\n", s->note[k]);
+            fprintf(f, "- %s\n", md(s->note[k], m1, sizeof m1));
     }
 }

@@ -150,16 +150,34 @@ static int write_sheet(const tippe_design *d, const tippe_build_sheet *s,
     return rc;
 }
 
+static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096]);
+
 static int run(build_args *a, const tippe_design *d)
 {
     tippe_error err = {0};
-    char sheet[N_OUT][4096], cat[4096], fit_note[64];
+    char sheet[N_OUT][4096], cat[4096];
     if (!a->catalogue)
         a->catalogue = default_catalogue(a->path, cat, sizeof cat);
     a->o.catalogue = a->catalogue;
     a->o.sets = a->sets.item;
     a->o.n_sets = a->sets.n;
     sheet_paths(d, a->dir, sheet);
+    /* the catalogue is input: a bad one is refused before any work or output */
+    tippe_build_catalogue *catalogue = NULL;
+    if (a->catalogue && tippe_build_catalogue_load(a->catalogue, &catalogue, &err))
+        return err.code == TIPPE_EINPUT ? tippe_cli_usage_error(VERB, "%s", err.msg)
+                                        : tippe_cli_fail(VERB, &err, err.code);
+    a->o.catalogue_read = catalogue;
+    int rc = run_checked(a, d, sheet);
+    tippe_build_catalogue_free(catalogue);
+    return rc;
+}
+
+/* run, once the inputs are read */
+static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096])
+{
+    tippe_error err = {0};
+    char fit_note[64];
     /* every output checked before any work */
     int rc = tippe_cli_make_output_dir(VERB, "-o", a->dir);
     for (int k = 0; !rc && k < N_OUT; k++)

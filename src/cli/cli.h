@@ -240,6 +240,13 @@ void tippe_cli_signals_install(const char *verb);
 /* After the outputs were renamed into place: if a stop signal came during the
  * renames, says so and ends the process by it; otherwise returns 0. */
 int tippe_cli_signal_pending(const char *verb);
+/* mkdir(dir, 0777) with the stop signals held off until the new directory is
+ * noted: a stop signal then removes it (rmdir: only while it is empty, after
+ * the temporaries in it were removed), as a failed run does. 0, or -1 with
+ * errno set. */
+int tippe_cli_signals_mkdir(const char *dir);
+/* The directory tippe_cli_signals_mkdir made in this run, or NULL. */
+const char *tippe_cli_signals_made_dir(void);
 
 /* Prints the design's probable unit mistakes (tippe_design_warning) on stderr,
  * "tippe VERB: warning: FILE: ...", after a design loaded. */

@@ -214,9 +214,6 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
     return 0;
 }
 
-/* The directory tippe_cli_make_output_dir created in this run, if any. */
-static char made_dir[4096];
-
 int tippe_cli_make_output_dir(const char *verb, const char *option, const char *dir)
 {
     struct stat st;
@@ -229,13 +226,14 @@ int tippe_cli_make_output_dir(const char *verb, const char *option, const char *
                                                            dir);
     /* A dangling symlink keeps pointing at its new directory, as a symlink to
      * a file keeps pointing at its new file: the directory is made where it
-     * points (and removed from there if the run fails). */
+     * points (and removed from there if the run fails or is stopped: noted by
+     * tippe_cli_signals_mkdir for tippe_cli_run and the stop signals). */
     char target[4096];
     tippe_error err = {0};
     if (tippe_report_target(dir, target, sizeof target, &err))
         return tippe_cli_usage_error(verb, "%s %s", option, err.msg);
     const int link = strcmp(target, dir) != 0;
-    if (mkdir(target, 0777) != 0) {
+    if (tippe_cli_signals_mkdir(target) != 0) {
         const int e = errno;
         if (link)
             return tippe_cli_usage_error(verb, "%s %s: a dangling symlink to '%s', which cannot "
@@ -244,7 +242,6 @@ int tippe_cli_make_output_dir(const char *verb, const char *option, const char *
         return tippe_cli_usage_error(verb, "%s %s: cannot create the directory: %s", option, dir,
                                      strerror(e));
     }
-    snprintf(made_dir, sizeof made_dir, "%s", target);
     return 0;
 }
 
@@ -268,8 +265,8 @@ int tippe_cli_run(const tippe_cli_verb *v, int argc, char **argv)
     if (status != 0) {
         tippe_report_set_abort();
         /* rmdir takes only an empty directory: one holding other files stays */
-        if (made_dir[0])
-            rmdir(made_dir);
+        if (tippe_cli_signals_made_dir())
+            rmdir(tippe_cli_signals_made_dir());
     } else if (tippe_report_set_commit(&err) != TIPPE_OK)
         status = tippe_cli_fail(v->name, &err, TIPPE_ECOMPUTE);
     const int stopped = tippe_cli_signal_pending(v->name);

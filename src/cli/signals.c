@@ -5,21 +5,27 @@
  * work to poll: a single long integration, an encoder, or a write blocked on a
  * FIFO polls nothing, and every output file still exists only as a
  * temporary (tippe/base.h) until the verb has finished, so removing the
- * temporaries and ending the process is always a clean stop. It uses only
- * async-signal-safe calls (unlink, write, signal, raise). */
+ * temporaries (and the output directory the run made, then empty) and ending
+ * the process is always a clean stop. It uses only async-signal-safe calls
+ * (unlink, rmdir, write, signal, raise). */
 #include "cli.h"
 
 #include "tippe/base.h"
 
+#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static const int stop_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 enum { N_STOP = sizeof stop_signals / sizeof stop_signals[0] };
 static char stop_message[N_STOP][160]; /* written ahead: snprintf is not signal-safe */
 static volatile sig_atomic_t pending;
+/* The output directory this run made, removed by a stop (as by a failure). */
+static char made_dir[4096];
+static volatile sig_atomic_t have_made_dir;
 
 static const char *signal_name(int sig)
 {
@@ -55,6 +61,8 @@ static void on_stop(int sig)
         return;
     }
     tippe_report_remove_temporaries();
+    if (have_made_dir)
+        rmdir(made_dir); /* empty now, unless someone else put a file there */
     for (int i = 0; i < N_STOP; i++)
         if (stop_signals[i] == sig && stop_message[i][0]) {
             ssize_t ignored = write(STDERR_FILENO, stop_message[i], strlen(stop_message[i]));
@@ -97,6 +105,33 @@ void tippe_cli_signals_install(const char *verb)
     sa.sa_handler = on_file_size;
     sa.sa_flags = SA_RESTART;
     sigaction(SIGXFSZ, &sa, NULL);
+}
+
+int tippe_cli_signals_mkdir(const char *dir)
+{
+    if (strlen(dir) >= sizeof made_dir) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    sigset_t stop, old;
+    sigemptyset(&stop);
+    for (int i = 0; i < N_STOP; i++)
+        sigaddset(&stop, stop_signals[i]);
+    sigprocmask(SIG_BLOCK, &stop, &old);
+    int rc = mkdir(dir, 0777);
+    int e = errno;
+    if (rc == 0) {
+        memcpy(made_dir, dir, strlen(dir) + 1);
+        have_made_dir = 1;
+    }
+    sigprocmask(SIG_SETMASK, &old, NULL); /* a stop that came meanwhile is handled here */
+    errno = e;
+    return rc;
+}
+
+const char *tippe_cli_signals_made_dir(void)
+{
+    return have_made_dir ? made_dir : NULL;
 }
 
 int tippe_cli_signal_pending(const char *verb)

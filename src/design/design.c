@@ -110,7 +110,7 @@ static int parse_header(const tippe_json_reader *c, const cJSON *root, const cha
     if ((rc = tippe_json_check_keys(c, root, "", "a design", tippe_design_top_keys, NULL)) ||
         (rc = tippe_json_string(c, root, "", "name", 1, name, sizeof name, NULL)) ||
         (rc = !name[0] ? tippe_json_fail(c, "name", "must not be empty") : TIPPE_OK) ||
-        (rc = tippe_json_string(c, root, "", "notes", 0, NULL, 0, NULL)) ||
+        (rc = tippe_json_text(c, root, "", "notes", 0, NULL, 0, NULL)) ||
         (rc = tippe_design_read_length(c, root, "", "radius_mm", 1, 0, &d->radius_mm, NULL)) ||
         (rc = check_sphere_radius(c, d->radius_mm)))
         return rc;

@@ -181,7 +181,7 @@ static int parse_print(const tippe_json_reader *c, const cJSON *obj, const char 
     double per = p->print.perimeters, layers = p->print.top_bottom_layers;
     tippe_print_settings *s = &p->print;
     if ((rc = tippe_json_check_keys(c, item, path, "a print block", tippe_design_print_keys, NULL)) ||
-        (rc = tippe_json_string(c, item, path, "notes", 0, NULL, 0, NULL)) ||
+        (rc = tippe_json_text(c, item, path, "notes", 0, NULL, 0, NULL)) ||
         (rc = print_number(c, item, path, "perimeters", 0, 50, 1, "perimeters", &per)) ||
         (rc = print_number(c, item, path, "line_width_mm", 0.05, 3, 0, "mm", &s->line_width_mm)) ||
         (rc = print_number(c, item, path, "top_bottom_layers", 0, 200, 1, "layers", &layers)) ||
@@ -394,7 +394,7 @@ int tippe_design_parse_part(const tippe_json_reader *c, const cJSON *obj, int in
         tippe_json_path(path, sizeof path, pre, "name");
         return tippe_json_fail(c, path, "must not be empty");
     }
-    if ((rc = tippe_json_string(c, obj, pre, "notes", 0, NULL, 0, NULL)))
+    if ((rc = tippe_json_text(c, obj, pre, "notes", 0, NULL, 0, NULL)))
         return rc;
     if ((rc = tippe_json_number(c, obj, pre, "z_mm", 0, &p->z_mm, NULL)))
         return rc;
@@ -454,11 +454,13 @@ int tippe_design_load_materials(const char *mat_file, cJSON **out, tippe_error *
         }
         double dens = 0;
         int printable = 0;
-        if ((rc = tippe_json_check_keys(mc, m, m->string, "a material", material_keys, NULL)) ||
+        /* a material's name is its key: a label like a part's name */
+        if ((rc = tippe_json_check_text(mc, m->string, m->string, 0)) ||
+            (rc = tippe_json_check_keys(mc, m, m->string, "a material", material_keys, NULL)) ||
             (rc = tippe_json_number(mc, m, m->string, "density_g_cm3", 1, &dens, NULL)) ||
             (rc = tippe_json_string(mc, m, m->string, "source", 1, NULL, 0, NULL)) ||
             (rc = tippe_json_bool(mc, m, m->string, "printable", &printable, NULL)) ||
-            (rc = tippe_json_string(mc, m, m->string, "notes", 0, NULL, 0, NULL)))
+            (rc = tippe_json_text(mc, m, m->string, "notes", 0, NULL, 0, NULL)))
             goto done;
         char p[256];
         tippe_json_path(p, sizeof p, m->string, "density_g_cm3");

@@ -390,10 +390,12 @@ int tippe_export_sheet_write(const tippe_design *d, const tippe_build_sheet *s, 
     cairo_surface_finish(sf);
     ok = ok && cairo_surface_status(sf) == CAIRO_STATUS_SUCCESS;
     cairo_surface_destroy(sf);
-    if (!ok) {
+    if (!ok && rc) {
         tippe_report_abort(&rf);
-        return rc ? rc : tippe_error_set(err, TIPPE_ECOMPUTE, "%s: cairo could not write the build sheet", path);
+        return rc;
     }
+    if (!ok)
+        return tippe_report_fail(&rf, err, "cairo could not write the build sheet");
     return tippe_report_commit(&rf, err);
 }
 

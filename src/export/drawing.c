@@ -981,11 +981,8 @@ int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, c
             ok = write_cairo(&L, rf.f, pdf);
         if (ok)
             rc = tippe_report_commit(&rf, err);
-        else {
-            tippe_report_abort(&rf);
-            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "%s: cairo could not write the drawing",
-                                 path);
-        }
+        else
+            rc = tippe_report_fail(&rf, err, "cairo could not write the drawing");
     }
     dlist_free(&L);
     return rc;

@@ -245,10 +245,8 @@ int tippe_mesh_write_stl(const tippe_mesh *m, const char *path, const char *soli
                 put_f32(rec + 12 + 12 * k + 4 * c, v[k][c]);
         ok = fwrite(rec, 1, 50, rf.f) == 50;
     }
-    if (!ok) {
-        tippe_report_abort(&rf);
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: cannot write the STL file", path);
-    }
+    if (!ok)
+        return tippe_report_fail(&rf, err, "cannot write the STL file");
     return tippe_report_commit(&rf, err);
 }
 
@@ -275,7 +273,8 @@ int lib3mf_meshobject_setgeometry(void *mesh, lib3mf_vertex *v, unsigned nv, lib
 int lib3mf_object_setnameutf8(void *object, const char *name);
 int lib3mf_model_addbuilditem(void *model, void *object, lib3mf_transform *tr, void **item);
 int lib3mf_model_querywriter(void *model, const char *writer_class, void **writer);
-int lib3mf_writer_writetofileutf8(void *writer, const char *file);
+int lib3mf_writer_writetocallback(void *writer, void *write_callback, void *seek_callback,
+                                  void *user_data);
 int lib3mf_resource_getresourceid(void *resource, unsigned *id);
 int lib3mf_model_addmetadatautf8(void *model, const char *key, const char *value);
 int lib3mf_model_addattachmentutf8(void *model, char *uri, char *relationship, void **attachment);
@@ -308,7 +307,9 @@ static int add_3mf_object(void *model, const tippe_mesh *m, const char *name, do
     return ok;
 }
 
-/* A string as an XML attribute value. */
+/* A string as XML character data or an attribute value: the five markup
+ * characters as entities; a control character (refused when a design is
+ * read, src/base/json.c) is left out, since XML 1.0 has no way to write one. */
 static void xml_attr(FILE *f, const char *s)
 {
     for (; *s; s++)
@@ -317,10 +318,27 @@ static void xml_attr(FILE *f, const char *s)
         case '<': fputs("&lt;", f); break;
         case '>': fputs("&gt;", f); break;
         case '"': fputs("&quot;", f); break;
+        case '\'': fputs("&apos;", f); break;
         default:
             if ((unsigned char)*s >= 0x20)
                 fputc(*s, f);
         }
+}
+
+/* s escaped for XML (xml_attr), on the heap; NULL when out of memory. */
+static char *xml_escaped(const char *s)
+{
+    char *buf = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&buf, &size);
+    if (!f)
+        return NULL;
+    xml_attr(f, s);
+    if (fclose(f) != 0) {
+        free(buf);
+        return NULL;
+    }
+    return buf;
 }
 
 /* PrusaSlicer's per-object configuration (its 3MF reader applies each
@@ -379,6 +397,50 @@ static char *slicer_config(const tippe_mesh *meshes, const char *const *names, c
     return buf;
 }
 
+/* The 3MF package in memory: lib3mf writes it through these callbacks
+ * (NMR_ExportStream_Callback: 0 is success; its ZIP writer seeks back to fill
+ * in headers), and the bytes go to the file through tippe_report_open's checked
+ * stream. Writing by name, lib3mf could not report a full disk: its ZIP writer
+ * threw from a destructor and the process aborted, leaving its temporaries.
+ * The callbacks never fail (a failure would be thrown, possibly from a
+ * destructor too): running out of memory is remembered and reported after. */
+typedef struct {
+    unsigned char *data;
+    unsigned long long size, cap, pos;
+    int out_of_memory;
+} mem_3mf;
+
+static unsigned mem_3mf_write(unsigned char *data, unsigned n, void *user)
+{
+    mem_3mf *m = user;
+    if (m->out_of_memory)
+        return 0;
+    if (m->pos + n > m->cap) {
+        unsigned long long cap = m->cap ? m->cap : 1 << 20;
+        while (cap < m->pos + n)
+            cap *= 2;
+        unsigned char *grown = realloc(m->data, (size_t)cap);
+        if (!grown) {
+            m->out_of_memory = 1;
+            return 0;
+        }
+        m->data = grown;
+        m->cap = cap;
+    }
+    memcpy(m->data + m->pos, data, n);
+    m->pos += n;
+    if (m->pos > m->size)
+        m->size = m->pos;
+    return 0;
+}
+
+static unsigned mem_3mf_seek(unsigned long long pos, void *user)
+{
+    mem_3mf *m = user;
+    m->pos = pos <= m->size ? pos : m->size; /* lib3mf seeks only within what it wrote */
+    return 0;
+}
+
 int tippe_mesh_write_3mf(const tippe_mesh *meshes, const char *const *names,
                          const double *offset_x_mm, int n, const char *path, tippe_error *err)
 {
@@ -391,17 +453,23 @@ int tippe_mesh_write_3mf_extra(const tippe_mesh *meshes, const char *const *name
 {
     _Static_assert(sizeof(lib3mf_triangle) == 3 * sizeof(unsigned), "triangle layout");
     tippe_report_file rf;
-    /* lib3mf writes the file itself, by name */
-    int rc = tippe_report_open_name(&rf, path, "the 3MF file", err);
+    int rc = tippe_report_open(&rf, path, "the 3MF file", err);
     if (rc)
         return rc;
     void *model = NULL, *writer = NULL;
+    mem_3mf mem = {0};
     unsigned *id = calloc((size_t)(n > 0 ? n : 1), sizeof *id);
     int ok = id && lib3mf_createmodel(&model) == 0;
     for (int k = 0; ok && k < n; k++)
         ok = add_3mf_object(model, &meshes[k], names[k], offset_x_mm[k], &id[k]);
-    for (int k = 0; ok && x && k < x->n_meta; k++)
-        ok = lib3mf_model_addmetadatautf8(model, x->meta_keys[k], x->meta_values[k]) == 0;
+    /* lib3mf 1.8 escapes object names but writes a metadata value as it is
+     * given: "Ball & screw" would make the model file ill-formed XML, which a
+     * strict reader (expat, as in PrusaSlicer) refuses. */
+    for (int k = 0; ok && x && k < x->n_meta; k++) {
+        char *v = xml_escaped(x->meta_values[k]);
+        ok = v && lib3mf_model_addmetadatautf8(model, x->meta_keys[k], v) == 0;
+        free(v);
+    }
     if (ok && x && x->has_print) {
         size_t size = 0;
         char *cfg = slicer_config(meshes, names, id, n, x, &size);
@@ -416,16 +484,25 @@ int tippe_mesh_write_3mf_extra(const tippe_mesh *meshes, const char *const *name
     }
     free(id);
     ok = ok && lib3mf_model_querywriter(model, "3mf", &writer) == 0 &&
-         lib3mf_writer_writetofileutf8(writer, rf.write_path) == 0;
+         lib3mf_writer_writetocallback(writer, (void *)mem_3mf_write, (void *)mem_3mf_seek,
+                                       &mem) == 0;
     if (writer)
-        lib3mf_release(writer);
+        lib3mf_release(writer); /* the package is complete once the writer is gone */
     if (model)
         lib3mf_release(model);
-    if (!ok) {
+    if (mem.out_of_memory) {
+        free(mem.data);
         tippe_report_abort(&rf);
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: lib3mf could not write the 3MF file",
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory while writing the 3MF file",
                                path);
     }
+    if (!ok || mem.size == 0) {
+        free(mem.data);
+        return tippe_report_fail(&rf, err, "lib3mf could not write the 3MF file");
+    }
+    /* a short write is remembered by the stream; commit names its reason */
+    fwrite(mem.data, 1, (size_t)mem.size, rf.f);
+    free(mem.data);
     return tippe_report_commit(&rf, err);
 }
 

@@ -7,6 +7,7 @@
  * shared between choices but the read-only spec, so the result does not depend
  * on how many threads there are. */
 #include "optimise/internal.h"
+#include "tippe/build.h"
 #include "tippe/design.h"
 #include "base/json.h"
 #include "tippe/sweep.h"
@@ -33,10 +34,6 @@ static const char *const search_keys[] = {"algorithm", "evaluations", "polish",
                                           "polish_evaluations", NULL};
 static const char *const tie_keys[] = {"follows", "plus_mm", "times", NULL};
 static const char *const choose_cat_keys[] = {"catalogue", "items", NULL};
-static const char *const catalogue_keys[] = {"title", "source", "notes", "items", NULL};
-static const char *const item_keys[] = {"name", "thread", "d_mm", "pitch_mm", "length_mm",
-                                        "radius_mm", "height_mm", "socket_s_mm",
-                                        "socket_t_mm", NULL};
 
 const char *tippe_optimise_status_name(tippe_optimise_status s)
 {
@@ -160,58 +157,31 @@ static int catalogue_options(tippe_json_reader *c, const char *cpath, const cJSO
         return tippe_json_wrong_type(c, p, "a non-empty array of item names", want);
     }
     /* The catalogue file: "catalogue" at the spec's top, default catalogue.json
-     * beside the base design. */
+     * beside the base design; read as tippe build reads it. */
     snprintf(file, sizeof file, "%s", spec_path);
-    tippe_json_reader *cc = tippe_json_reader_new(file, c->err, TIPPE_JSON_WORDS_FIELD, NULL);
-    if (!cc)
-        return TIPPE_ECOMPUTE;
-    cJSON *cat = NULL;
-    rc = tippe_json_load(cc, MAX_SPEC_MIB, "catalogue", &cat);
-    if (!rc)
-        rc = tippe_json_check_duplicates(cc, cat, "");
-    const cJSON *set = NULL;
-    if (!rc && !cJSON_IsObject(cat))
-        rc = tippe_json_wrong_type(cc, NULL, "an object of named catalogues", cat);
-    if (!rc && !(set = cJSON_GetObjectItemCaseSensitive(cat, name)))
+    tippe_build_catalogue *cat = NULL;
+    if ((rc = tippe_build_catalogue_load(file, &cat, c->err)))
+        return rc;
+    const tippe_build_catalogue_set *set = NULL;
+    for (int k = 0; k < cat->n_sets && !set; k++)
+        if (!strcmp(cat->sets[k].key, name))
+            set = &cat->sets[k];
+    if (!set)
         rc = tippe_json_fail(c, p, "no catalogue '%s' in %s", name, file);
-    const cJSON *items = NULL;
-    if (!rc)
-        rc = tippe_json_check_keys(cc, set, name, "a catalogue", catalogue_keys, NULL);
-    if (!rc) {
-        items = cJSON_GetObjectItemCaseSensitive(set, "items");
-        if (!cJSON_IsArray(items) || cJSON_GetArraySize(items) < 1)
-            rc = tippe_json_wrong_type(cc, name, "an object with a non-empty items array",
-                                       items);
-    }
     int n = 0;
-    if (!rc) {
-        ch->opt = calloc((size_t)cJSON_GetArraySize(items), sizeof *ch->opt);
-        if (!ch->opt)
-            rc = tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
-    }
-    int idx = 0;
-    for (const cJSON *it = items ? items->child : NULL; !rc && it; it = it->next, idx++) {
-        char ip[160], iname[96];
-        snprintf(ip, sizeof ip, "%s.items[%d]", name, idx);
-        double r = 0, h = 0;
-        if ((rc = tippe_json_check_keys(cc, it, ip, "a catalogue item", item_keys, NULL)) ||
-            (rc = tippe_json_string(cc, it, ip, "name", 1, iname, sizeof iname, NULL)) ||
-            (rc = tippe_json_number(cc, it, ip, "radius_mm", 1, &r, NULL)) ||
-            (rc = tippe_json_number(cc, it, ip, "height_mm", 1, &h, NULL)))
-            break;
-        if (!(r > 0) || !(h > 0)) {
-            rc = tippe_json_fail(cc, ip, "radius_mm and height_mm must be positive");
-            break;
-        }
+    if (!rc && !(ch->opt = calloc((size_t)set->n_items, sizeof *ch->opt)))
+        rc = tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+    for (int i = 0; !rc && i < set->n_items; i++) {
+        const tippe_build_catalogue_item *it = &set->items[i];
         int take = !want;
         for (const cJSON *w = want ? want->child : NULL; w; w = w->next)
-            take |= cJSON_IsString(w) && !strcmp(w->valuestring, iname);
+            take |= cJSON_IsString(w) && !strcmp(w->valuestring, it->name);
         if (!take)
             continue;
         option_t *o = &ch->opt[n++];
-        snprintf(o->label, sizeof o->label, "%s", iname);
-        snprintf(o->set[0], sizeof o->set[0], "%s.radius_mm=%.17g", part_path, r);
-        snprintf(o->set[1], sizeof o->set[1], "%s.height_mm=%.17g", part_path, h);
+        snprintf(o->label, sizeof o->label, "%s", it->name);
+        snprintf(o->set[0], sizeof o->set[0], "%s.radius_mm=%.17g", part_path, it->radius_mm);
+        snprintf(o->set[1], sizeof o->set[1], "%s.height_mm=%.17g", part_path, it->height_mm);
         o->n_set = 2;
     }
     for (const cJSON *w = want ? want->child : NULL; !rc && w; w = w->next) {
@@ -229,8 +199,7 @@ static int catalogue_options(tippe_json_reader *c, const char *cpath, const cJSO
         rc = tippe_json_fail(c, p, "names no item of catalogue '%s'", name);
     }
     ch->n = n;
-    cJSON_Delete(cat);
-    free(cc);
+    tippe_build_catalogue_free(cat);
     return rc;
 }
 
@@ -271,6 +240,8 @@ static int parse_choose(tippe_json_reader *c, const cJSON *choose, const char *c
             snprintf(op, sizeof op, "%s[%d]", p, k);
             option_t *opt = &ch->opt[k];
             if (cJSON_IsString(o) && o->valuestring[0] && strlen(o->valuestring) < 80) {
+                if ((rc = tippe_json_check_text(c, op, o->valuestring, 0)))
+                    return rc;
                 snprintf(opt->label, sizeof opt->label, "%s", o->valuestring);
                 snprintf(opt->set[0], sizeof opt->set[0], "%s=%s", v->string, o->valuestring);
             } else if (cJSON_IsNumber(o) && isfinite(o->valuedouble)) {
@@ -568,7 +539,7 @@ int tippe_optimise_spec_load(const char *path, tippe_optimise_spec **out, tippe_
     if (!rc)
         rc = tippe_json_string(c, root, "", "name", 0, s->name, sizeof s->name, NULL);
     if (!rc)
-        rc = tippe_json_string(c, root, "", "notes", 0, NULL, 0, NULL);
+        rc = tippe_json_text(c, root, "", "notes", 0, NULL, 0, NULL);
     if (!rc)
         rc = tippe_json_string(c, root, "", "design", 1, design_rel, sizeof design_rel, NULL);
     if (!rc)

@@ -586,9 +586,8 @@ static int scenario_from_root(tippe_json_reader *c, cJSON *root, const char *pat
         return rc;
 
     const cJSON *name = cJSON_GetObjectItemCaseSensitive(root, "name");
-    if (name && !cJSON_IsString(name)) {
-        return tippe_json_wrong_type(c, "name", "a string", name);
-    }
+    if ((rc = tippe_json_string(c, root, "", "name", 0, NULL, 0, NULL)))
+        return rc;
     snprintf(out->name, sizeof out->name, "%s", name ? name->valuestring : path);
     /* the file's name may describe values the command line changed: say so */
     for (int i = 0; i < n_overrides; i++)
@@ -598,11 +597,8 @@ static int scenario_from_root(tippe_json_reader *c, cJSON *root, const char *pat
         if (len + 1 < sizeof out->name)
             snprintf(out->name + len, sizeof out->name - len, "]");
     }
-    const cJSON *notes = cJSON_GetObjectItemCaseSensitive(root, "notes");
-    if (notes && !cJSON_IsString(notes)) {
-        rc = tippe_json_wrong_type(c, "notes", "a string", notes);
+    if ((rc = tippe_json_text(c, root, "", "notes", 0, NULL, 0, NULL)))
         return rc;
-    }
     if ((rc = read_top(c, cJSON_GetObjectItemCaseSensitive(root, "top"), out)))
         return rc;
     out->model.g = TIPPE_DEFAULT_G_M_S2;
