@@ -109,4 +109,25 @@ want = {"0.15": 17.93, "0.4": 31.40}[sys.argv[3]]
 assert abs(c["body_mass_g"] - want) < 0.03 * want, (c["body_mass_g"], want)
 EOF
 done
+# tippe slice: the printed M12 sliced with the shipped profile, its G-code read back as the
+# part. The print model beside it (docs/printing.md, "The print model against the slicer"):
+# the body's mass within 2 % at 15, 40 and 100 % (the issue's goal; measured +1.8, +1.2 and
+# +0.4 %), its A/C within 0.008 (measured -0.0063 at 15 %, -0.0043 at 40 %, -0.0008 at 100 %:
+# the anchors' band the model puts along the boundaries, where the slicer lays 20 % less).
+for f in 0.15 0.4 1; do
+    out="$tmp/slice-$f"
+    "$tippe" slice designs/m12-setscrew-printed.json -o "$out" --set "parts.body.print.infill=$f" \
+        --json >"$out.json" 2>"$out.err" || { bad "tippe slice at $f: $(tail -2 "$out.err")"; continue; }
+    "$py" - "$out.json" <<'EOF' && ok || bad "tippe slice at infill $f: model against G-code"
+import json, sys
+o = json.load(open(sys.argv[1]))
+p = o["sliced_parts"]["printed_parts"][0]
+assert p["model"] == "gcode" and p["gcode_generator"].startswith("PrusaSlicer"), p
+g, m = p["printed_mass_kg"], p["model_mass_kg"]
+assert abs(m / g - 1) < 0.02, (m, g)
+assert abs(p["model_body_A_over_C"] - p["body_A_over_C"]) < 0.008, p
+EOF
+done
+expect_fail "slice refuses a design with no printed part" 2 "no printed part" -- \
+    slice designs/m12-setscrew.json -o "$tmp/none-printed"
 finish

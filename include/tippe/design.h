@@ -168,6 +168,7 @@ typedef struct {
     double top_min_mm, bottom_min_mm; /* top/bottom_solid_min_thickness */
     double infill_overlap;         /* of the perimeter spacing */
     double anchor_mm, anchor_max_mm; /* infill_anchor, infill_anchor_max */
+    double nozzle_mm;              /* nozzle_diameter: bridges and overhangs are round threads */
     double flow;                   /* extrusion multiplier */
 } tippe_print_settings;
 

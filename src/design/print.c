@@ -634,6 +634,7 @@ tippe_print_settings tippe_print_defaults(void)
                               .infill_overlap = 0.25,
                               .anchor_mm = 2.5,
                               .anchor_max_mm = 12,
+                              .nozzle_mm = 0.4,
                               .flow = 1.0};
     return s;
 }

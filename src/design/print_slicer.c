@@ -29,6 +29,10 @@
 /* Infill regions narrower than 0.6 x the infill spacing vanish (offset by
  * INSET_OVERLAP_TOLERANCE = 0.4 of the spacing each side, PerimeterGenerator.cpp). */
 #define INFILL_MIN_WIDTH_FACTOR 0.6
+/* Bridges are round threads of the nozzle's diameter (bridge_flow_ratio 1, PrusaSlicer's
+ * default) laid 0.05 mm further apart than their diameter (Flow::bridge_extrusion_spacing,
+ * BRIDGE_EXTRA_SPACING in Flow.hpp). */
+#define BRIDGE_EXTRA_SPACING_M 0.05e-3
 /* Top and bottom surfaces are opened by a tenth of the external perimeter's width
  * (PrintObject::detect_surfaces_type). */
 #define SURFACE_OPENING_FACTOR 0.1
@@ -147,6 +151,7 @@ typedef struct {
     double w_ext;       /* the external perimeter's width, m */
     double s_ext, s_per, s_fill; /* spacings of its lines, m */
     rings outline, walls, infill, surface;
+    rings bridge;       /* bottom surfaces over air, grown onto their support: bridged */
 } layer_t;
 
 /* A line of width w laid in layers t thick is a band w - t (1 - pi/4) wide
@@ -238,6 +243,15 @@ static void surfaces(const tippe_print_settings *s, layer_t *layers, int n_layer
     rings grown;
     rings_offset(&open, open.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &grown);
     rings_intersect(&grown, &L->infill, &L->surface);
+    /* a bottom surface above the first layer hangs over air: bridged, over the
+     * area it was grown to (it anchors there; LayerRegion::process_external_surfaces) */
+    L->bridge.n = 0;
+    if (i > 0 && s->top_bottom_layers > 0) {
+        rings ob, gb;
+        rings_opening(&bottom, d, d, &ob);
+        rings_offset(&ob, ob.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &gb);
+        rings_intersect(&gb, &L->infill, &L->bridge);
+    }
 }
 
 /* The layers whose shells count for layer i (PrintObject::discover_vertical_shells):
@@ -293,24 +307,70 @@ static void solid_infill(const tippe_print_settings *s, const layer_t *layers, i
     rings_union(&shell, &L->surface, solid);
 }
 
+/* Overhang perimeters (PerimeterGenerator.cpp, "detect overhanging/bridging
+ * perimeters"): a perimeter loop whose centre line lies outside the layer
+ * below's slices grown by half the nozzle is laid as a bridge, a round thread of
+ * the nozzle's diameter (pi d^2 / 4 per unit length) instead of its flat line
+ * (s t). The loops' centre lines: the external one w_e / 2 inside the outline,
+ * the next (s_e + s_p) / 2 further, then s_p apart. Returns the extra moments. */
+static tippe_moments overhang_extra(const tippe_print_settings *s, const layer_t *L,
+                                    const layer_t *below, double z)
+{
+    tippe_moments m = {0, 0, 0, 0};
+    if (!below || s->perimeters <= 0)
+        return m;
+    rings support;
+    rings_offset(&below->outline, 0.5 * s->nozzle_mm * 1e-3, &support);
+    const double d = s->nozzle_mm * 1e-3, round = M_PI * d * d / 4;
+    for (int r = 0; r < L->outline.n; r++)
+        for (int side = 0; side < 2; side++) {
+            double edge = side ? L->outline.lo[r] : L->outline.hi[r];
+            if (!(edge > 0))
+                continue; /* the axis is no boundary */
+            double depth = 0.5 * L->w_ext;
+            for (int k = 0; k < s->perimeters; k++) {
+                double sp = k ? L->s_per : L->s_ext;
+                if (k == 1)
+                    depth += 0.5 * (L->s_ext + L->s_per);
+                else if (k > 1)
+                    depth += L->s_per;
+                double rc = side ? edge + depth : edge - depth;
+                int held = 0;
+                for (int j = 0; j < support.n && !held; j++)
+                    held = rc >= support.lo[j] && rc <= support.hi[j];
+                if (held || !(rc > 0))
+                    continue;
+                double v = 2 * M_PI * rc * (round - sp * L->t);
+                m = tippe_moments_add(m, (tippe_moments){v, v * z, v * (z * z + L->t * L->t / 12),
+                                                         v * rc * rc});
+            }
+        }
+    return m;
+}
+
 /* The anchors and joins of sparse lines along their region's boundary
- * (Fill::connect_infill, FillBase.cpp): neighbouring line ends are joined by
- * the boundary between them when it is shorter than infill_anchor_max, so half
- * the boundary is traced by a line s wide; the lines stop s/2 inside the
- * boundary, which takes back the pattern's share of that strip. A band
- * lambda = (s/2)(1 - bulk) wide per unit boundary length. Where line ends lie
- * farther apart than anchor_max (line ends along a boundary at 45 degrees:
- * sqrt(2) s / bulk apart), each end gets an anchor of at most infill_anchor
- * instead. Returned as the factor of (s/2) for the regular layers' spacing. */
+ * (Fill::connect_infill, FillBase.cpp). Lines d = s / (bulk x infill) apart meet
+ * a boundary at an angle theta to it, their ends sin(theta) / d apart per unit
+ * length: neighbouring ends are joined along the boundary when that gap
+ * d / sin(theta) is at most infill_anchor_max, and every other gap is joined
+ * (a zigzag), so half the boundary is traced; where the gap is longer, each end
+ * gets an anchor of at most infill_anchor along it, a sin(theta) / d of it (at
+ * most half). Over a closed boundary every angle comes equally often, so the
+ * traced share is the mean over theta in [0, pi/2], in closed form. The lines stop
+ * s/2 inside the boundary, which takes back the pattern's bulk x infill of that
+ * strip. Returned as the band's width over s/2. */
 static double anchor_factor(const tippe_print_settings *s, double s_fill, double bulk)
 {
     if (!(bulk > 0))
         return 0.0;
-    double factor = 1.0 - fmin(bulk, 1.0);
-    double gap = M_SQRT2 * s_fill / bulk;
-    if (gap > s->anchor_max_mm * 1e-3)
-        factor *= fmin(1.0, 2.0 * s->anchor_mm * 1e-3 / gap);
-    return factor;
+    double d = s_fill / bulk, a = s->anchor_mm * 1e-3, a_max = s->anchor_max_mm * 1e-3;
+    /* mean over theta of: 1/2 where sin(theta) >= d / a_max, else min(1/2, a sin(theta) / d) */
+    double tc = asin(fmin(1.0, d / fmax(a_max, 1e-300)));
+    double th = a > 0 ? asin(fmin(1.0, d / (2 * a))) : M_PI / 2; /* where a sin / d reaches 1/2 */
+    double low = th >= tc ? (a / d) * (1 - cos(tc)) : (a / d) * (1 - cos(th)) + 0.5 * (tc - th);
+    double share = (0.5 * (0.5 * M_PI - tc) + low) / (0.5 * M_PI);
+    /* at full density the lines fill the strip themselves: no band, never a negative one */
+    return fmax(0.0, 2.0 * share - fmin(bulk, 1.0));
 }
 
 /* Moments of a band lambda wide along the circles bounding r, in a slab t thick
@@ -404,6 +464,13 @@ int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, 
         solid_infill(s, L, n, i, &solid);
         rings_subtract(&l->infill, &solid, &sp);
         tippe_moments w = rings_slab(&l->walls, l->t, z), so = rings_slab(&solid, l->t, z);
+        /* bridged areas deposit pi d^2 / 4 per (d + 0.05 mm) of width instead of t */
+        const double dn = s->nozzle_mm * 1e-3;
+        const double bridge_ratio = M_PI * dn * dn / 4 / ((dn + BRIDGE_EXTRA_SPACING_M) * l->t);
+        rings br;
+        rings_intersect(&l->bridge, &solid, &br);
+        so = tippe_moments_add(so, tippe_moments_scale(rings_slab(&br, l->t, z), bridge_ratio - 1));
+        w = tippe_moments_add(w, overhang_extra(s, l, i > 0 ? &L[i - 1] : NULL, z));
         out->wall_m3 += w.m * s->flow;
         out->solid_m3 += so.m * s->flow;
         fixed = tippe_moments_add(fixed, tippe_moments_add(w, so));
