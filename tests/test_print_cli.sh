@@ -44,7 +44,7 @@ done
 # The text says what is printed and how.
 "$tippe" eval "$M12" --z2 5 >"$tmp/e.txt"
 check "eval names the printed part and its settings" grep -qF \
-    "printed  body: axis vertical, 2 x 0.45 mm perimeters (walls 0.90 mm), 4 x 0.20 mm top/bottom layers (skins 0.80 mm), infill 15 %" \
+    "printed  body: axis vertical, PrusaSlicer 2.5's rules in 244 layers: 2 perimeters of 0.45 mm lines, 4 top/bottom layers of 0.20 mm (at least 0.70 / 0.50 mm), gyroid, infill 15 %" \
     "$tmp/e.txt"
 "$tippe" sweep "$M12" >"$tmp/s.txt"
 check "sweep names the printed part" grep -qF "printed  body: axis vertical" "$tmp/s.txt"
