@@ -261,8 +261,8 @@ static double ref_outer(double r, void *par)
                                   &abserr);
     if (rc && rc != GSL_EROUND && !c->status)
         c->status = rc;
-    /* Pressure over N / a^2: uniform 1/pi, Hertz 3 sqrt(1 - r^2) / (2 pi) (Johnson eq
-     * 4.20 with N = (2/3) p0 pi a^2); the factor 2 counts both halves of the circle. */
+    /* Pressure over N / a^2: uniform 1/pi, Hertz 3 sqrt(1 - r^2) / (2 pi) (Johnson
+     * section 4.2, with N = (2/3) p0 pi a^2); the factor 2 counts both halves of the circle. */
     const double pr = c->hertz ? 1.5 * sqrt(fmax(0.0, 1.0 - r * r)) / PI : 1.0 / PI;
     return 2.0 * r * pr * val;
 }

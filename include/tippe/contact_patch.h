@@ -28,7 +28,7 @@
 /* The pressure over the patch. Both integrate to N. */
 typedef enum {
     TIPPE_PATCH_UNIFORM = 0, /* p = N / (pi a^2) */
-    TIPPE_PATCH_HERTZ = 1    /* p = (3 N / (2 pi a^2)) sqrt(1 - r^2/a^2), Johnson eq 4.20 */
+    TIPPE_PATCH_HERTZ = 1    /* p = (3 N / (2 pi a^2)) sqrt(1 - r^2/a^2), Johnson sec. 4.2 */
 } tippe_patch_pressure;
 
 /* The exact limits of f and m (docs/contact-patch.md derives them):
