@@ -176,7 +176,7 @@ void tippe_patch_friction(tippe_patch_pressure p, double mu_N, double a, double 
     const double w = a * omega_n; /* the patch rim's drilling speed */
     const double W = w * w;
     const double T = V + W;
-    if (!(T > 0.0)) { /* v = 0 and a omega_n = 0: the sticking point */
+    if (T == 0.0) { /* v = 0 and a omega_n = 0: the sticking point (a NaN input propagates) */
         out->F[0] = out->F[1] = out->M = out->dissipation = 0.0;
         return;
     }
@@ -356,6 +356,8 @@ int tippe_patch_reference(tippe_patch_pressure p, double eps, double *f, double 
 double tippe_patch_load_ellipse(tippe_patch_pressure p, double mu_N, double a,
                                 const double F[2], double M)
 {
+    if (!(mu_N > 0.0)) /* no friction: only a zero wrench is held */
+        return (F[0] == 0.0 && F[1] == 0.0 && M == 0.0) ? 0.0 : INFINITY;
     /* Leine and Glocker 2003: (|F|/(mu N))^2 + (M/(mu N a m0))^2 <= 1 while sticking. */
     const double x = hypot(F[0], F[1]) / mu_N;
     const double y = fabs(M) / (mu_N * a * law_of(p)->m0);
@@ -365,6 +367,11 @@ double tippe_patch_load_ellipse(tippe_patch_pressure p, double mu_N, double a,
 double tippe_patch_load(tippe_patch_pressure p, double mu_N, double a, const double F[2],
                         double M, double *eps_exit)
 {
+    if (!(mu_N > 0.0)) { /* no friction: only a zero wrench is held */
+        if (eps_exit)
+            *eps_exit = 0.0;
+        return (F[0] == 0.0 && F[1] == 0.0 && M == 0.0) ? 0.0 : INFINITY;
+    }
     const double x = hypot(F[0], F[1]) / mu_N; /* |F| / (mu N) */
     if (!(a > 0.0)) {                           /* point contact: the Coulomb cone */
         if (eps_exit)

@@ -275,6 +275,9 @@ static void test_cheap_limits(void)
         tippe_patch_friction(law, muN, a, 0.0, v0, 0.0, &w);
         CHECK(w.F[0] == 0.0 && w.F[1] == 0.0 && w.M == 0.0 && w.dissipation == 0.0,
               "(0, 0): zero wrench");
+        const double vnan[2] = {NAN, 0.0};
+        tippe_patch_friction(law, muN, a, 0.0, vnan, om, &w);
+        CHECK(isnan(w.F[0]), "a NaN slip propagates");
         /* v_s at a = 0 is the regularised Coulomb law of src/dynamics.c. */
         const double vs = 1e-5, vsmall[2] = {3e-6, 4e-6};
         tippe_patch_friction(law, muN, 0.0, vs, vsmall, om, &w);
@@ -353,6 +356,10 @@ static void test_sticking(void)
         /* a = 0: the Coulomb cone, and no torque can be held. */
         CHECK(tippe_patch_load(law, muN, 0.0, F1, 0.0, NULL) == 1.0, "a = 0, force");
         CHECK(isinf(tippe_patch_load(law, muN, 0.0, F0, 1e-9, NULL)), "a = 0, torque");
+        CHECK(isinf(tippe_patch_load(law, 0.0, a, F1, 0.0, NULL)) &&
+                  isinf(tippe_patch_load_ellipse(law, 0.0, a, F1, 0.0)) &&
+                  tippe_patch_load(law, 0.0, a, F0, 0.0, NULL) == 0.0,
+              "mu N = 0 holds only a zero wrench");
         /* The exact (reference) limit curve lies inside Leine and Glocker's ellipse: the
          * ellipse lets a wrench stick that the patch cannot hold, by up to this much. */
         double lmin = 2.0, emin = 0.0;

@@ -107,7 +107,8 @@ double tippe_patch_load_ellipse(tippe_patch_pressure p, double mu_N, double a,
  * bisection, ~60 evaluations; for events, not the hot path). If eps_exit is not NULL it
  * receives the eps of the boundary point hit: where the patch leaves a stuck state it
  * starts to slide with |v| / (a |omega_n|) = eps_exit, v against F and omega_n against M.
- * a = 0 reduces both to |F|/(mu N) (M must be 0: +inf otherwise). */
+ * a = 0 reduces both to |F|/(mu N) (M must be 0: +inf otherwise); mu N = 0 holds only a
+ * zero wrench (0, else +inf). */
 double tippe_patch_load(tippe_patch_pressure p, double mu_N, double a, const double F[2],
                         double M, double *eps_exit);
 
