@@ -1,8 +1,7 @@
 /* The contact patch: Hertz radius, Coulomb-Contensou friction (cheap form and quadrature
  * reference), sticking load, rolling resistance. docs/contact-patch.md derives every
  * formula; equation numbers "Johnson" are K.L. Johnson, Contact Mechanics (CUP 1985). */
-#include "tippe/contact_patch.h"
-#include "tippe/error.h"
+#include "tippe/physics.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
@@ -22,7 +21,7 @@
  * P = E^5 + p4 E^4 + ... + p0, Q = E^4 + q3 E^3 + ... + q0. Six coefficients are free
  * (q0..q3, p2, p3), fitted (minimax relative error of f and m on eps in [1e-3, 1e3], 640 points, dense
  * over [0.1, 10] where the error peaks)
- * against tippe_patch_reference; the others follow from the exact limits:
+ * against tippe_contact_patch_reference; the others follow from the exact limits:
  * p0 = m0^2 q0 (m -> m0), p1 = m0 c1 q0 + m0^2 q1 (f ~ c1 eps), p4 = c2 + q3 (m ~ c2/eps),
  * p5 = q4 = 1 (f -> 1). All are positive, so Ph, Qh > 0 away from the origin. */
 typedef struct {
@@ -73,26 +72,26 @@ static const patch_law laws[2] = {
      DP(PH0, PH1, PH2, PH3, PH4), DQ(QH0, QH1, QH2, QH3)},
 };
 
-static const patch_law *law_of(tippe_patch_pressure p)
+static const patch_law *law_of(tippe_contact_patch_pressure p)
 {
-    return &laws[p == TIPPE_PATCH_HERTZ ? 1 : 0];
+    return &laws[p == TIPPE_CONTACT_PATCH_HERTZ ? 1 : 0];
 }
 
-tippe_patch_limits tippe_patch_limits_of(tippe_patch_pressure p)
+tippe_contact_patch_limits tippe_contact_patch_limits_of(tippe_contact_patch_pressure p)
 {
     const patch_law *L = law_of(p);
-    tippe_patch_limits l = {L->m0, L->c1, L->c2};
+    tippe_contact_patch_limits l = {L->m0, L->c1, L->c2};
     return l;
 }
 
-const char *tippe_patch_pressure_name(tippe_patch_pressure p) { return law_of(p)->name; }
+const char *tippe_contact_patch_pressure_name(tippe_contact_patch_pressure p) { return law_of(p)->name; }
 
-int tippe_patch_pressure_parse(const char *name)
+int tippe_contact_patch_pressure_parse(const char *name)
 {
     if (!strcmp(name, "uniform"))
-        return TIPPE_PATCH_UNIFORM;
+        return TIPPE_CONTACT_PATCH_UNIFORM;
     if (!strcmp(name, "hertz"))
-        return TIPPE_PATCH_HERTZ;
+        return TIPPE_CONTACT_PATCH_HERTZ;
     return -1;
 }
 
@@ -110,7 +109,7 @@ static int check_material(double E, double nu, const char *which, tippe_error *e
     return TIPPE_OK;
 }
 
-int tippe_hertz_modulus(double E1, double nu1, double E2, double nu2, double *E_star,
+int tippe_contact_hertz_modulus(double E1, double nu1, double E2, double nu2, double *E_star,
                         tippe_error *err)
 {
     int rc = check_material(E1, nu1, "first material's", err);
@@ -127,7 +126,7 @@ int tippe_hertz_modulus(double E1, double nu1, double E2, double nu2, double *E_
     return TIPPE_OK;
 }
 
-int tippe_hertz_radius(double R, double N, double E_star, double *a, tippe_error *err)
+int tippe_contact_hertz_radius(double R, double N, double E_star, double *a, tippe_error *err)
 {
     if (!(R > 0.0) || !isfinite(R))
         return tippe_error_set(err, TIPPE_EINPUT,
@@ -169,8 +168,8 @@ static inline void potential(const patch_law *L, double x, double y, double *s, 
     *sW = sv - x * sp;
 }
 
-void tippe_patch_friction(tippe_patch_pressure p, double mu_N, double a, double v_s,
-                          const double v[2], double omega_n, tippe_patch_wrench *out)
+void tippe_contact_patch_friction(tippe_contact_patch_pressure p, double mu_N, double a, double v_s,
+                          const double v[2], double omega_n, tippe_contact_patch_wrench *out)
 {
     const double V = v[0] * v[0] + v[1] * v[1];
     const double w = a * omega_n; /* the patch rim's drilling speed */
@@ -195,7 +194,7 @@ void tippe_patch_friction(tippe_patch_pressure p, double mu_N, double a, double 
     out->dissipation = k * S;
 }
 
-void tippe_patch_normalised(tippe_patch_pressure p, double eps, double *f, double *m)
+void tippe_contact_patch_normalised(tippe_contact_patch_pressure p, double eps, double *f, double *m)
 {
     /* V = eps^2, W = 1, T = 1 + eps^2, written so that eps = 0 and eps = inf are exact. */
     double x, y, rx, ry; /* x = V/T, y = W/T, rx = sqrt(x), ry = sqrt(y) */
@@ -217,7 +216,7 @@ void tippe_patch_normalised(tippe_patch_pressure p, double eps, double *f, doubl
     *m = ry * sW / rs; /* a |omega_n| S_W / sqrt(S) */
 }
 
-double tippe_patch_viscous_mu(tippe_patch_pressure p, double mu_c, double a, double omega_n)
+double tippe_contact_patch_viscous_mu(tippe_contact_patch_pressure p, double mu_c, double a, double omega_n)
 {
     /* F -> -mu N c1 v / (a |omega_n|) as eps -> 0; eq 3.12 writes Rf = -mu Rn V_Q. */
     return mu_c * law_of(p)->c1 / (a * fabs(omega_n));
@@ -313,7 +312,7 @@ static int ref_integral(ref_ctx *c, gsl_integration_workspace *outer, double *ou
     return 0;
 }
 
-int tippe_patch_reference(tippe_patch_pressure p, double eps, double *f, double *m,
+int tippe_contact_patch_reference(tippe_contact_patch_pressure p, double eps, double *f, double *m,
                           tippe_error *err)
 {
     if (!(eps >= 0.0))
@@ -331,7 +330,7 @@ int tippe_patch_reference(tippe_patch_pressure p, double eps, double *f, double 
         gsl_integration_workspace_free(inner);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory for the quadrature");
     }
-    ref_ctx c = {p == TIPPE_PATCH_HERTZ, 0, eps, 0.0, inner, 0};
+    ref_ctx c = {p == TIPPE_CONTACT_PATCH_HERTZ, 0, eps, 0.0, inner, 0};
     int rc = 0;
     if (eps == 0.0)
         *f = 0.0; /* by symmetry: pure drilling has no net force */
@@ -353,7 +352,7 @@ int tippe_patch_reference(tippe_patch_pressure p, double eps, double *f, double 
 
 /* ---- sticking ------------------------------------------------------------------------ */
 
-double tippe_patch_load_ellipse(tippe_patch_pressure p, double mu_N, double a,
+double tippe_contact_patch_load_ellipse(tippe_contact_patch_pressure p, double mu_N, double a,
                                 const double F[2], double M)
 {
     if (!(mu_N > 0.0)) /* no friction: only a zero wrench is held */
@@ -364,7 +363,7 @@ double tippe_patch_load_ellipse(tippe_patch_pressure p, double mu_N, double a,
     return hypot(x, y);
 }
 
-double tippe_patch_load(tippe_patch_pressure p, double mu_N, double a, const double F[2],
+double tippe_contact_patch_load(tippe_contact_patch_pressure p, double mu_N, double a, const double F[2],
                         double M, double *eps_exit)
 {
     if (!(mu_N > 0.0)) { /* no friction: only a zero wrench is held */
@@ -412,7 +411,7 @@ double tippe_patch_load(tippe_patch_pressure p, double mu_N, double a, const dou
 
 /* ---- rolling resistance -------------------------------------------------------------- */
 
-double tippe_rolling_resistance(double N, double arm, double w_s, const double w_roll[2],
+double tippe_contact_rolling_resistance(double N, double arm, double w_s, const double w_roll[2],
                                 double M_roll[2])
 {
     const double w2 = w_roll[0] * w_roll[0] + w_roll[1] * w_roll[1];
@@ -429,7 +428,7 @@ double tippe_rolling_resistance(double N, double arm, double w_s, const double w
     return k * w2;
 }
 
-double tippe_rolling_arm_hysteresis(double alpha, double a)
+double tippe_contact_rolling_arm_hysteresis(double alpha, double a)
 {
     /* Johnson section 9.2 (Tabor 1955): a sphere rolling with hysteresis loss alpha
      * meets the resistance F_R = (3/16) alpha N a / R, i.e. a torque (3/16) alpha N a. */
