@@ -69,7 +69,8 @@ void tippe_gsl_errors_as_codes(void);
  * end, or all removed. The tippe command runs every verb inside one set, so a
  * verb's outputs are all written or none is (src/cli/common.c).
  *
- * Signals: every temporary is recorded in a fixed table that
+ * Signals: every temporary is recorded in a table (as large as the files open
+ * at once need: it grows in blocks that never move) that
  * tippe_report_remove_temporaries() empties with unlink() only, so that a
  * signal handler may call it (the command's handler, src/cli/signals.c).
  * Outputs are written from one thread. */

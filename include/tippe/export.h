@@ -44,8 +44,6 @@ typedef struct {
                                tap drill"), for the drawing; NULL: "for its thread" */
 } tippe_export_request;
 
-enum { TIPPE_EXPORT_MAX_FILES = 64 };
-
 typedef struct {
     char name[128], material[64];
     char stl_path[4096];
@@ -62,15 +60,16 @@ typedef struct {
     int n_bodies;
     tippe_export_body *body;
     int n_files;
-    char file[TIPPE_EXPORT_MAX_FILES][4096]; /* written, in order */
+    char (*file)[4096]; /* written, in order (n_files of them) */
     double seconds;
 } tippe_export_result;
 
-/* The paths a request would write, for checking before any work: fills up to
- * max paths, returns how many (or -1 with err set if the profiles cannot be
- * built, e.g. nothing printable). */
+/* The paths a request would write, for checking before any work: *paths (on
+ * the heap, free() it) gets every one, as many as there are bodies and formats;
+ * returns how many, or -1 with err set if the profiles cannot be built (e.g.
+ * nothing printable) or memory ran out. */
 int tippe_export_plan(const tippe_design *d, const tippe_export_request *q,
-                      char (*paths)[4096], int max, tippe_error *err);
+                      char (**paths)[4096], tippe_error *err);
 
 /* Builds and writes everything q asks for. On failure no file of this call is
  * left half-written (each is atomic); files already finished stay. */

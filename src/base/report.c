@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,8 +14,7 @@
 
 /* ---- the table of temporaries (read by signal handlers) ------------------ */
 
-/* Enough for any verb's outputs; a verb that needs more fails cleanly. */
-enum { MAX_TEMPS = 32, MAX_LINKS = 40 };
+enum { BLOCK_TEMPS = 32, MAX_LINKS = 40 };
 
 typedef struct {
     char tmp[4096 + 16];
@@ -23,15 +23,35 @@ typedef struct {
     int finished;               /* complete and checked: waits for the set's commit */
 } temp_entry;
 
-static temp_entry temps[MAX_TEMPS];
+/* As many entries as a run has files at once (a design of 50 parts, split,
+ * has over a hundred): blocks of BLOCK_TEMPS, chained, never moved nor freed,
+ * so that a signal handler can walk them while a block is being added (a
+ * block is linked only once it is zeroed). */
+typedef struct temp_block {
+    temp_entry e[BLOCK_TEMPS];
+    _Atomic(struct temp_block *) next;
+} temp_block;
+
+static temp_block first_block;
+static int n_blocks = 1;
 static int in_set;
 static volatile sig_atomic_t renaming;
 
+/* Entry slot (0 .. BLOCK_TEMPS * n_blocks - 1). */
+static temp_entry *entry(int slot)
+{
+    temp_block *b = &first_block;
+    for (int k = slot / BLOCK_TEMPS; k > 0; k--)
+        b = atomic_load(&b->next);
+    return &b->e[slot % BLOCK_TEMPS];
+}
+
 void tippe_report_remove_temporaries(void)
 {
-    for (int i = 0; i < MAX_TEMPS; i++)
-        if (temps[i].live)
-            unlink(temps[i].tmp);
+    for (temp_block *b = &first_block; b; b = atomic_load(&b->next))
+        for (int i = 0; i < BLOCK_TEMPS; i++)
+            if (b->e[i].live)
+                unlink(b->e[i].tmp);
 }
 
 int tippe_report_committing(void)
@@ -45,23 +65,25 @@ static void drop_temp(int slot)
 {
     if (slot < 0)
         return;
-    if (temps[slot].live)
-        unlink(temps[slot].tmp);
-    temps[slot].live = 0;
-    temps[slot].finished = 0;
+    temp_entry *t = entry(slot);
+    if (t->live)
+        unlink(t->tmp);
+    t->live = 0;
+    t->finished = 0;
 }
 
 /* Renames slot's temporary over its target and frees the slot. */
 static int rename_temp(int slot, const char *path, const char *what, tippe_error *err)
 {
-    if (rename(temps[slot].tmp, temps[slot].target) != 0) {
+    temp_entry *t = entry(slot);
+    if (rename(t->tmp, t->target) != 0) {
         int e = errno;
         drop_temp(slot);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: cannot put %s into place: %s", path,
                                what, strerror(e));
     }
-    temps[slot].live = 0; /* the name is the user's file now */
-    temps[slot].finished = 0;
+    t->live = 0; /* the name is the user's file now */
+    t->finished = 0;
     return TIPPE_OK;
 }
 
@@ -70,24 +92,32 @@ static int rename_temp(int slot, const char *path, const char *what, tippe_error
 static int make_temp(tippe_report_file *rf, const struct stat *old, tippe_error *err, int *fd_out)
 {
     int slot = -1;
-    for (int i = 0; i < MAX_TEMPS && slot < 0; i++)
-        if (!temps[i].live && !temps[i].finished)
+    for (int i = 0; i < BLOCK_TEMPS * n_blocks && slot < 0; i++)
+        if (!entry(i)->live && !entry(i)->finished)
             slot = i;
-    if (slot < 0)
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: more than %d output files at once",
-                               rf->path, MAX_TEMPS);
-    char tmp[sizeof temps[0].tmp];
+    if (slot < 0) { /* every entry is taken: one more block */
+        temp_block *nb = calloc(1, sizeof *nb), *last = &first_block;
+        if (!nb)
+            return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", rf->path);
+        atomic_init(&nb->next, NULL);
+        while (atomic_load(&last->next))
+            last = atomic_load(&last->next);
+        atomic_store(&last->next, nb);
+        slot = BLOCK_TEMPS * n_blocks++;
+    }
+    temp_entry *t = entry(slot);
+    char tmp[sizeof t->tmp];
     if (snprintf(tmp, sizeof tmp, "%s.tmp.XXXXXX", rf->target) >= (int)sizeof tmp)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: path too long", rf->path);
     /* The slot holds the name while mkostemp fills it in and creates the file:
      * a signal handler that comes meanwhile unlinks a name not yet created
      * (harmless) or the new file, never misses it. */
-    memcpy(temps[slot].tmp, tmp, sizeof tmp);
-    temps[slot].live = 1;
-    int fd = mkostemp(temps[slot].tmp, O_CLOEXEC);
-    memcpy(tmp, temps[slot].tmp, sizeof tmp);
+    memcpy(t->tmp, tmp, sizeof tmp);
+    t->live = 1;
+    int fd = mkostemp(t->tmp, O_CLOEXEC);
+    memcpy(tmp, t->tmp, sizeof tmp);
     if (fd < 0) {
-        temps[slot].live = 0;
+        t->live = 0;
         int e = errno;
         struct stat dir;
         char *slash = strrchr(tmp, '/');
@@ -110,7 +140,7 @@ static int make_temp(tippe_report_file *rf, const struct stat *old, tippe_error 
         return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write %s: %s", rf->path, rf->what,
                                strerror(e));
     }
-    snprintf(temps[slot].target, sizeof temps[slot].target, "%s", rf->target);
+    snprintf(t->target, sizeof t->target, "%s", rf->target);
     rf->slot = slot;
     snprintf(rf->write_path, sizeof rf->write_path, "%s", tmp);
     mode_t mode;
@@ -394,7 +424,7 @@ int tippe_report_commit(tippe_report_file *rf, tippe_error *err)
     const int slot = rf->slot;
     rf->slot = -1;
     if (in_set) {
-        temps[slot].finished = 1;
+        entry(slot)->finished = 1;
         return TIPPE_OK;
     }
     return rename_temp(slot, rf->path, rf->what, err);
@@ -427,13 +457,13 @@ int tippe_report_set_commit(tippe_error *err)
 {
     int status = TIPPE_OK;
     renaming = 1;
-    for (int i = 0; i < MAX_TEMPS; i++) {
-        if (!temps[i].finished)
+    for (int i = 0; i < BLOCK_TEMPS * n_blocks; i++) {
+        if (!entry(i)->finished)
             continue;
         if (status != TIPPE_OK)
             drop_temp(i);
         else
-            status = rename_temp(i, temps[i].target, "an output file", err);
+            status = rename_temp(i, entry(i)->target, "an output file", err);
     }
     renaming = 0;
     in_set = 0;
@@ -442,7 +472,7 @@ int tippe_report_set_commit(tippe_error *err)
 
 void tippe_report_set_abort(void)
 {
-    for (int i = 0; i < MAX_TEMPS; i++)
+    for (int i = 0; i < BLOCK_TEMPS * n_blocks; i++)
         drop_temp(i);
     in_set = 0;
 }

@@ -194,10 +194,7 @@ static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096]
         double t0, t1;
         tippe_design_travel_mm(d, &t0, &t1);
         a->q.z2_mm = 0.5 * (t0 + t1);
-        paths = malloc(TIPPE_EXPORT_MAX_FILES * sizeof *paths);
-        if (!paths)
-            return fprintf(stderr, "tippe %s: out of memory\n", VERB), 1;
-        int np = tippe_export_plan(d, &a->q, paths, TIPPE_EXPORT_MAX_FILES, &err);
+        int np = tippe_export_plan(d, &a->q, &paths, &err);
         if (np < 0)
             rc = tippe_cli_fail(VERB, &err, err.code ? err.code : TIPPE_EINPUT);
         for (int k = 0; !rc && k < np; k++) {

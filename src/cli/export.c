@@ -307,10 +307,8 @@ static int export_parse(export_args *a, int argc, char **argv)
 static int export_check_outputs(const tippe_design *d, const export_args *a)
 {
     tippe_error err = {0};
-    char(*paths)[4096] = malloc(TIPPE_EXPORT_MAX_FILES * sizeof *paths);
-    if (!paths)
-        return fprintf(stderr, "tippe %s: out of memory\n", VERB), 1;
-    int np = tippe_export_plan(d, &a->q, paths, TIPPE_EXPORT_MAX_FILES, &err);
+    char(*paths)[4096] = NULL;
+    int np = tippe_export_plan(d, &a->q, &paths, &err);
     if (np < 0) {
         free(paths);
         return tippe_cli_fail(VERB, &err, err.code ? err.code : TIPPE_EINPUT);

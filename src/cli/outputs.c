@@ -24,13 +24,28 @@
 #include <unistd.h>
 
 /* The files the verb's outputs finally name, to refuse two outputs that are
- * one file (each would replace the other). */
-enum { MAX_OUTPUTS = 16 };
-static struct {
+ * one file (each would replace the other): as many as the verb has (an
+ * export of a design of many parts writes over a hundred). */
+typedef struct {
     char file[4096 + 256];
     const char *option;
-} checked[MAX_OUTPUTS];
-static int n_checked;
+} checked_output;
+static checked_output *checked;
+static int n_checked, cap_checked;
+
+/* arr (n used of *cap elements of size bytes) with room for one more, or NULL
+ * when memory ran out (arr is then kept, and the caller only loses a check it
+ * could not record). */
+static void *grown(void *arr, int n, int *cap, size_t size)
+{
+    if (n < *cap)
+        return arr;
+    int want = *cap ? 2 * *cap : 16;
+    void *more = realloc(arr, (size_t)want * size);
+    if (more)
+        *cap = want;
+    return more;
+}
 
 /* dir's real path + "/" + base of a (link-resolved) target: one name per file. */
 static int canonical_name(const char *target, char *out, size_t size)
@@ -98,12 +113,13 @@ static struct {
     ino_t ino;
 } read_files[MAX_READ];
 static int n_read;
-static struct {
+typedef struct {
     const char *option, *path;
     dev_t dev;
     ino_t ino;
-} out_ids[MAX_OUTPUTS];
-static int n_out_ids;
+} output_id;
+static output_id *out_ids;
+static int n_out_ids, cap_out_ids;
 static pthread_mutex_t read_lock = PTHREAD_MUTEX_INITIALIZER;
 
 static int refuse_read_output(const char *path, const char *what, tippe_error *err)
@@ -146,7 +162,9 @@ static int note_output_id(const char *option, const char *path)
     for (int i = 0; i < n_read && found < 0; i++)
         if (read_files[i].dev == st.st_dev && read_files[i].ino == st.st_ino)
             found = i;
-    if (n_out_ids < MAX_OUTPUTS) {
+    output_id *ids = grown(out_ids, n_out_ids, &cap_out_ids, sizeof *out_ids);
+    if (ids) {
+        out_ids = ids;
         out_ids[n_out_ids].option = option;
         out_ids[n_out_ids].path = path;
         out_ids[n_out_ids].dev = st.st_dev;
@@ -194,7 +212,7 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
     tippe_error err = {0};
     if (tippe_report_check(path, plot ? "the plot" : "the output file", &err))
         return tippe_cli_usage_error(verb, "%s %s", option, err.msg);
-    char target[4096], name[sizeof checked[0].file];
+    char target[4096], name[sizeof ((checked_output *)0)->file];
     struct stat st;
     if (strcmp(path, "-") && tippe_report_target(path, target, sizeof target, &err) == 0 &&
         (stat(target, &st) != 0 || S_ISREG(st.st_mode)) &&
@@ -203,7 +221,9 @@ int tippe_cli_check_output(const char *verb, const char *option, const char *pat
             if (!strcmp(checked[i].file, name) && strcmp(checked[i].option, option))
                 return tippe_cli_usage_error(verb, "%s and %s name the same file '%s'",
                                              checked[i].option, option, path);
-        if (n_checked < MAX_OUTPUTS) {
+        checked_output *c = grown(checked, n_checked, &cap_checked, sizeof *checked);
+        if (c) {
+            checked = c;
             memcpy(checked[n_checked].file, name, sizeof name);
             checked[n_checked++].option = option;
         }

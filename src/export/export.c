@@ -41,14 +41,16 @@ static void join(char *out, const char *dir, const char *stem, const char *tail)
              tail);
 }
 
-/* Every path of the request, in the order they are written. */
+/* Every path of the request, in the order they are written: the STL files,
+ * then at most the five below. */
+enum { N_SINGLE = 5 };
 static int paths_of(const tippe_design *d, const tippe_export_request *q,
-                    const tippe_profile_set *s, char (*paths)[4096], int max)
+                    const tippe_profile_set *s, char (*paths)[4096])
 {
     char stem[1024], tail[300];
     design_stem(d, stem, sizeof stem);
     int n = 0;
-    for (int b = 0; (q->formats & TIPPE_EXPORT_STL) && b < s->n_bodies && n < max; b++) {
+    for (int b = 0; (q->formats & TIPPE_EXPORT_STL) && b < s->n_bodies; b++) {
         char part[160];
         file_part(s->body[b].name, part, sizeof part);
         snprintf(tail, sizeof tail, "-%s.stl", part);
@@ -57,24 +59,35 @@ static int paths_of(const tippe_design *d, const tippe_export_request *q,
     static const struct {
         unsigned bit;
         const char *tail;
-    } single[] = {{TIPPE_EXPORT_3MF, ".3mf"},
-                  {TIPPE_EXPORT_SCAD, ".scad"},
-                  {TIPPE_EXPORT_SVG, "-section.svg"},
-                  {TIPPE_EXPORT_PNG, "-section.png"},
-                  {TIPPE_EXPORT_PDF, "-section.pdf"}};
-    for (size_t k = 0; k < sizeof single / sizeof single[0] && n < max; k++)
+    } single[N_SINGLE] = {{TIPPE_EXPORT_3MF, ".3mf"},
+                          {TIPPE_EXPORT_SCAD, ".scad"},
+                          {TIPPE_EXPORT_SVG, "-section.svg"},
+                          {TIPPE_EXPORT_PNG, "-section.png"},
+                          {TIPPE_EXPORT_PDF, "-section.pdf"}};
+    for (size_t k = 0; k < N_SINGLE; k++)
         if (q->formats & single[k].bit)
             join(paths[n++], q->dir, stem, single[k].tail);
     return n;
 }
 
+/* Room for every path of a request over s. */
+static char (*paths_room(const tippe_profile_set *s))[4096]
+{
+    return malloc(((size_t)s->n_bodies + N_SINGLE) * sizeof(char[4096]));
+}
+
 int tippe_export_plan(const tippe_design *d, const tippe_export_request *q,
-                      char (*paths)[4096], int max, tippe_error *err)
+                      char (**paths)[4096], tippe_error *err)
 {
     tippe_profile_set s;
+    *paths = NULL;
     if (tippe_profile_build(d, &q->profile, &s, err))
         return -1;
-    int n = paths_of(d, q, &s, paths, max);
+    int n = -1;
+    if (!(*paths = paths_room(&s)))
+        tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    else
+        n = paths_of(d, q, &s, *paths);
     tippe_profile_set_free(&s);
     return n;
 }
@@ -214,14 +227,14 @@ int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
     int nb = s->n_bodies;
     out->body = calloc((size_t)nb, sizeof *out->body);
     tippe_mesh *meshes = calloc((size_t)nb, sizeof *meshes);
-    char(*paths)[4096] = malloc(TIPPE_EXPORT_MAX_FILES * sizeof *paths);
+    char(*paths)[4096] = paths_room(s);
     if (!out->body || !meshes || !paths) {
         free(meshes);
         free(paths);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
     }
     out->n_bodies = nb;
-    int np = paths_of(d, q, s, paths, TIPPE_EXPORT_MAX_FILES), k = 0;
+    int np = paths_of(d, q, s, paths), k = 0;
     for (int b = 0; !rc && b < nb; b++)
         rc = mesh_body(d, &s->body[b], q->profile.chord_mm, &meshes[b], &out->body[b], err);
     for (int b = 0; !rc && (q->formats & TIPPE_EXPORT_STL) && b < nb; b++, k++) {
@@ -260,7 +273,8 @@ int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
         rc = write_drawings(d, q, s, paths, k, np, err);
     if (!rc) {
         out->n_files = np;
-        memcpy(out->file, paths, (size_t)np * sizeof *paths);
+        out->file = paths; /* the result's now */
+        paths = NULL;
     }
     for (int b = 0; b < nb; b++)
         tippe_mesh_free(&meshes[b]);
@@ -276,5 +290,6 @@ void tippe_export_result_free(tippe_export_result *r)
         return;
     tippe_profile_set_free(&r->profiles);
     free(r->body);
+    free(r->file);
     memset(r, 0, sizeof *r);
 }

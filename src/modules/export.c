@@ -8,12 +8,14 @@ static tippe_module export_module =
     TIPPE_MODULE("export", "GEOS, lib3MF and cairo: apt-get install libgeos-dev lib3mf-dev "
                            "libcairo2-dev");
 
-int tippe_export_plan(const tippe_design *d, const tippe_export_request *q, char (*paths)[4096],
-                      int max, tippe_error *err)
+int tippe_export_plan(const tippe_design *d, const tippe_export_request *q,
+                      char (**paths)[4096], tippe_error *err)
 {
     __typeof__(&tippe_export_plan) real =
         TIPPE_MODULE_FIND(&export_module, tippe_export_plan, err);
-    return real ? real(d, q, paths, max, err) : -1; /* a count, or -1 on failure */
+    if (!real)
+        *paths = NULL;
+    return real ? real(d, q, paths, err) : -1; /* a count, or -1 on failure */
 }
 
 int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
