@@ -206,8 +206,12 @@ int tippe_cli_slice(int argc, char **argv)
     double t0, t1;
     tippe_design_travel_mm(d, &t0, &t1);
     q.z2_mm = 0.5 * (t0 + t1);
-    char paths[TIPPE_EXPORT_MAX_FILES][4096];
-    int np = tippe_export_plan(d, &q, paths, TIPPE_EXPORT_MAX_FILES, &err);
+    char(*planned)[4096] = NULL;
+    int np = tippe_export_plan(d, &q, &planned, &err);
+    char model3mf[4096] = "";
+    if (np == 1)
+        snprintf(model3mf, sizeof model3mf, "%s", planned[0]);
+    free(planned);
     if (np != 1 || (rc = tippe_cli_make_output_dir(VERB, "-o", a.dir))) {
         rc = np < 0 ? tippe_cli_fail(VERB, &err, err.code ? err.code : 2) : rc ? rc : 2;
         tippe_design_free(d);
@@ -230,12 +234,12 @@ int tippe_cli_slice(int argc, char **argv)
     }
     tippe_report_set_begin();
     char gcode[4200], logf[4200], abs_gcode[PATH_MAX + 200];
-    size_t plen = strlen(paths[0]);
-    snprintf(gcode, sizeof gcode, "%.*s.gcode", (int)(plen > 4 ? plen - 4 : plen), paths[0]);
+    size_t plen = strlen(model3mf);
+    snprintf(gcode, sizeof gcode, "%.*s.gcode", (int)(plen > 4 ? plen - 4 : plen), model3mf);
     snprintf(logf, sizeof logf, "%s/slicer.log", a.dir);
     if (!a.json)
-        fprintf(stderr, "tippe slice: slicing %s with %s (%s)...\n", paths[0], slicer, profile);
-    if (run_slicer(slicer, profile, gcode, paths[0], logf, why, sizeof why)) {
+        fprintf(stderr, "tippe slice: slicing %s with %s (%s)...\n", model3mf, slicer, profile);
+    if (run_slicer(slicer, profile, gcode, model3mf, logf, why, sizeof why)) {
         fprintf(stderr, "tippe slice: %s\n", why);
         tippe_design_free(d);
         return 1;
