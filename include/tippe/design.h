@@ -169,6 +169,10 @@ typedef struct {
     double infill_overlap;         /* of the perimeter spacing */
     double anchor_mm, anchor_max_mm; /* infill_anchor, infill_anchor_max */
     double nozzle_mm;              /* nozzle_diameter: bridges and overhangs are round threads */
+    /* where a weighed mass (measured_mass_g) puts what the model lacks: 0 all in
+     * the sparse infill (the infill that gives the mass), 1 all on every line (a
+     * flow factor); the tolerance bands span the two readings */
+    double calibration;
     double flow;                   /* extrusion multiplier */
 } tippe_print_settings;
 

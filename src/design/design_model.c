@@ -259,10 +259,13 @@ static int print_field(const tippe_design *d, int i, const char *key, double *va
         *value = p->print.top_bottom_layers;
     else if (!strcmp(key, "measured_mass_g") && p->calibrated)
         *value = p->measured_mass_g;
+    else if (!strcmp(key, "calibration") && p->calibrated)
+        *value = p->print.calibration;
     else {
         snprintf(why, why_cap, "not a number setting of the print block (infill, "
                                "line_width_mm, layer_height_mm, perimeters, "
-                               "top_bottom_layers, measured_mass_g when given)");
+                               "top_bottom_layers, measured_mass_g and calibration when "
+                               "weighed)");
         return TIPPE_EINPUT;
     }
     return TIPPE_OK;

@@ -64,9 +64,15 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
     const double rho = p->density_g_cm3 * 1e3;
     p->infill = p->print.infill;
     if (p->calibrated) {
+        /* reading c of the weighing: a share c of what the model lacks at the
+         * slicer's infill is put on every line (a flow factor), the rest in the
+         * sparse infill */
+        const double want = p->measured_mass_g * 1e-3, c_share = p->print.calibration;
+        double m_s = rho * tippe_print_sliced_at(&p->sliced, &p->print, p->print.infill, NULL,
+                                                 NULL).m;
+        p->print.flow *= 1 + c_share * (want - m_s) / m_s;
         double m0 = rho * tippe_print_sliced_at(&p->sliced, &p->print, 0, NULL, NULL).m;
         double m1 = rho * tippe_print_sliced_at(&p->sliced, &p->print, 1, NULL, NULL).m;
-        double want = p->measured_mass_g * 1e-3;
         snprintf(pth, sizeof pth, "parts[%d].print.measured_mass_g", i);
         if (want < m0)
             return tippe_json_fail(c, pth,

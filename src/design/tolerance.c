@@ -66,6 +66,12 @@ static void add_print_default(const tippe_design *d, int i, const char *name, to
     if (pi.calibrated) {
         snprintf(field, sizeof field, "parts.%s.print.measured_mass_g", name);
         put(l, field, pi.measured_mass_kg * 1e3, TIPPE_TOL_WEIGHED_G, 0, "g", "scale reading");
+        /* a mass says how much, not where (no G-code: the layer model's reading):
+         * from all in the sparse infill (0) to all on every line (1) */
+        if (!pi.from_gcode && strcmp(pi.model, "skins")) {
+            snprintf(field, sizeof field, "parts.%s.print.calibration", name);
+            put(l, field, pi.settings.calibration, 1.0, 0, "", "where the weighed mass is");
+        }
     } else if (pi.infill < 1) {
         snprintf(field, sizeof field, "parts.%s.print.infill", name);
         put(l, field, pi.infill, pi.infill * TIPPE_TOL_INFILL_PERCENT / 100,
