@@ -435,6 +435,11 @@ int tippe_materials_count(const tippe_materials *t);
 /* Entry i (0 .. count - 1) in the file's order; its strings live as long as t. */
 void tippe_materials_get(const tippe_materials *t, int i, tippe_material *out);
 void tippe_materials_free(tippe_materials *t);
+/* The table as tippe materials --json gives it: {materials: [{name,
+ * density_g_cm3, printable, source, notes}], file} (no "file" when file is
+ * NULL). NULL if out of memory. */
+struct cJSON;
+struct cJSON *tippe_materials_json(const tippe_materials *t, const char *file);
 /* The materials table the design file at design_path reads: its "materials"
  * field (default "materials.json") relative to the design's directory.
  * TIPPE_EINPUT if the file is not a design (a JSON object with "parts"). */
