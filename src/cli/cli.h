@@ -46,6 +46,7 @@ int tippe_cli_materials(int argc, char **argv);
 int tippe_cli_animate(int argc, char **argv);
 int tippe_cli_export(int argc, char **argv);
 int tippe_cli_build(int argc, char **argv);
+int tippe_cli_serve(int argc, char **argv);
 /* Under mpirun with more than one rank (OMPI_COMM_WORLD_SIZE > 1), replaces the
  * process by tippe-mpi from the same directory with the same arguments; returns
  * only if it cannot (2, with a message) or if not under mpirun (0). */
