@@ -150,15 +150,17 @@ with Server(tippe) as srv:
         check(len(zips) == 1, "the build zip was downloaded: %s" % zips)
         if zips:
             names = zipfile.ZipFile(os.path.join(downloads, zips[0])).namelist()
-            want = ["design-build.json", "design-build.md", "design-sheet.pdf",
-                    "design-sheet.png", "design-sheet.svg", "design.3mf", "design.scad"]
+            want = ["m12-setscrew-printed-build.json", "m12-setscrew-printed-build.md",
+                    "m12-setscrew-printed-sheet.pdf", "m12-setscrew-printed-sheet.png",
+                    "m12-setscrew-printed-sheet.svg", "m12-setscrew-printed.3mf",
+                    "m12-setscrew-printed.scad"]
             check(all(n in names for n in want) and any(n.endswith(".stl") for n in names),
                   "the zip holds the sheet (PDF, PNG, SVG, JSON, Markdown), STL, 3MF and "
                   "OpenSCAD: %s" % names)
             sheet = json.loads(zipfile.ZipFile(os.path.join(downloads, zips[0]))
-                               .read("design-build.json"))
-            check(sheet.get("three_in_one") is True or "set" in json.dumps(sheet),
-                  "the sheet is the edited design's")
+                               .read("m12-setscrew-printed-build.json"))
+            check(sheet["three_in_one"] is True and sheet["print"][0]["infill"] == 0.4,
+                  "the sheet is the edited design's: 3-in-1, infill 0.4")
         driver.save_screenshot(os.path.join(artefacts, "4-build.png"))
 
         logs = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "WARNING")]

@@ -134,10 +134,15 @@ int tippe_serve_request_number(const cJSON *req, const char *key, double min, do
 int tippe_serve_request_word(const cJSON *req, const char *key, const char *const *words, int def,
                        serve_response *out);
 /* The design at key: an object (a design file's content) or the name of a
- * shipped design; loaded with the shipped materials table. NULL with a 400
- * naming the field (the loader's message: field and what is wrong). */
+ * shipped design; loaded with the shipped materials table under the name stem
+ * (NULL: key), which its messages and the files of a build start with. NULL
+ * with a 400 naming the field (the loader's message: field and what is wrong). */
 tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, const char *key,
-                                   serve_response *out);
+                                         const char *stem, serve_response *out);
+/* The string at key as a file stem (letters, digits, '-', '_'; at most 64) into
+ * stem, left as it was when absent: 0, or -1 with a 400. */
+int tippe_serve_request_stem(const cJSON *req, const char *key, char *stem, size_t size,
+                             serve_response *out);
 /* The shipped design called name, or NULL. */
 const serve_design *tippe_serve_find_design(const serve_server *s, const char *name);
 

@@ -80,7 +80,7 @@ static void api_sweep(serve_server *s, const cJSON *req, serve_response *out)
     double from, to;
     if (tippe_serve_request_keys(req, keys, out) || sweep_range(req, &from, &to, out))
         return;
-    tippe_design *d = tippe_serve_request_design(s, req, "design", out);
+    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
     if (!d)
         return;
     cJSON *o = sweep_answer(d, from, to, out);
@@ -97,7 +97,7 @@ static void api_eval(serve_server *s, const cJSON *req, serve_response *out)
     if (tippe_serve_request_keys(req, keys, out) ||
         tippe_serve_request_number(req, "z2_mm", -1000, 1000, 1, &z2, out))
         return;
-    tippe_design *d = tippe_serve_request_design(s, req, "design", out);
+    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
     if (!d)
         return;
     tippe_error err = {0};
@@ -140,7 +140,7 @@ static void api_compare(serve_server *s, const cJSON *req, serve_response *out)
             tippe_serve_respond_error(out, 503, NULL, "out of memory");
             return;
         }
-        tippe_design *d = tippe_serve_request_design(s, one, key, out);
+        tippe_design *d = tippe_serve_request_design(s, one, key, NULL, out);
         cJSON_Delete(one);
         cJSON *sw = d ? sweep_answer(d, 0, 0, out) : NULL;
         tippe_design_free(d);
@@ -194,7 +194,7 @@ static void api_check(serve_server *s, const cJSON *req, serve_response *out)
     tippe_launch_options o;
     if (tippe_serve_request_keys(req, keys, out) || launch_request(req, &z2, &spin, &o, out))
         return;
-    tippe_design *d = tippe_serve_request_design(s, req, "design", out);
+    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
     if (!d)
         return;
     tippe_error err = {0};
@@ -254,7 +254,7 @@ static void api_animate(serve_server *s, const cJSON *req, serve_response *out)
                                   "width_px and height_px must be even whole numbers, fps whole");
         return;
     }
-    tippe_design *d = tippe_serve_request_design(s, req, "design", out);
+    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
     if (!d)
         return;
     tippe_error err = {0};
@@ -306,14 +306,14 @@ static int by_string(const void *a, const void *b)
     return strcmp(*(const char *const *)a, *(const char *const *)b);
 }
 
-/* POST /api/build {design, hole?, clearance_mm?}: what tippe build -o DIR writes
+/* POST /api/build {design, name?, hole?, clearance_mm?}: what tippe build -o DIR writes
  * (the sheet as JSON, Markdown, PDF, SVG, PNG, the gauges, tippe export's STL,
  * 3MF, OpenSCAD and drawing) as one zip. The files go to a temporary folder
  * (removed before the answer leaves, and at a stop); only one build runs at a
  * time (the library's file writer keeps one table of temporaries). */
 static void api_build(serve_server *s, const cJSON *req, serve_response *out)
 {
-    static const char *const keys[] = {"design", "hole", "clearance_mm", NULL};
+    static const char *const keys[] = {"design", "name", "hole", "clearance_mm", NULL};
     static const char *const fits[] = {"design", "tap", "insert", "slide", NULL};
     tippe_build_options o;
     tippe_build_options_default(&o);
@@ -326,7 +326,14 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
     o.hole_fit = fit == 0 ? TIPPE_BUILD_HOLE_DESIGN
                  : fit == 1 ? TIPPE_BUILD_HOLE_TAP
                  : fit == 2 ? TIPPE_BUILD_HOLE_INSERT : TIPPE_BUILD_HOLE_SLIDE;
-    tippe_design *d = tippe_serve_request_design(s, req, "design", out);
+    /* the files' stem: "name", else the shipped design's, else "design" */
+    char stem[80] = "design";
+    const cJSON *given = cJSON_GetObjectItemCaseSensitive(req, "design");
+    if (cJSON_IsString(given) && tippe_serve_find_design(s, given->valuestring))
+        snprintf(stem, sizeof stem, "%s", given->valuestring);
+    if (tippe_serve_request_stem(req, "name", stem, sizeof stem, out))
+        return;
+    tippe_design *d = tippe_serve_request_design(s, req, "design", stem, out);
     if (!d)
         return;
     char cat[4096 + 32], dir[4096];
@@ -376,7 +383,7 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
         out->type = "application/zip";
         out->body = zip;
         out->len = len;
-        snprintf(out->filename, sizeof out->filename, "design-build.zip");
+        snprintf(out->filename, sizeof out->filename, "%s-build.zip", stem);
     }
     free(sheet);
     free(paths);

@@ -20,6 +20,7 @@ typedef struct {
     char *body;
     size_t len, cap;
     int too_large;
+    double declared; /* Content-Length, 0 if none */
     int answered;    /* a response was queued at the first call (a refusal) */
     serve_job *job;  /* a request that computes, once handed over */
     int set_cookie;  /* the page was opened with the right ?token= */
@@ -339,12 +340,18 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
             }
             const char *cl =
                 MHD_lookup_connection_value(con, MHD_HEADER_KIND, "Content-Length");
-            if (cl && strtod(cl, NULL) > TIPPE_SERVE_MAX_BODY_BYTES) {
+            /* A body over the limit is read and dropped, so that the client gets
+             * its 413 rather than a broken pipe; beyond 64 MiB the connection is
+             * answered at once and closed. */
+            const double length = cl ? strtod(cl, NULL) : 0;
+            if (length > 64.0 * (1 << 20)) {
                 c->answered = 1;
                 return send_error(s, con, 413, method, url,
                                   "the body is %.20s bytes, more than the limit of %d (1 MiB)",
                                   cl, TIPPE_SERVE_MAX_BODY_BYTES);
             }
+            c->too_large = length > TIPPE_SERVE_MAX_BODY_BYTES;
+            c->declared = length;
         }
         if (get) {
             serve_response r = {0};
@@ -400,6 +407,10 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
         return send_response(s, con, &r, method, url, 0);
     }
     c->answered = 1;
+    if (c->too_large && c->declared > 0)
+        return send_error(s, con, 413, method, url,
+                          "the body is %.0f bytes, more than the limit of %d (1 MiB)",
+                          c->declared, TIPPE_SERVE_MAX_BODY_BYTES);
     if (c->too_large)
         return send_error(s, con, 413, method, url,
                           "the body is more than the limit of %d bytes (1 MiB)",

@@ -174,8 +174,9 @@ const serve_design *tippe_serve_find_design(const serve_server *s, const char *n
 }
 
 tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, const char *key,
-                                   serve_response *out)
+                                         const char *stem, serve_response *out)
 {
+    const char *name = stem ? stem : key;
     const cJSON *x = cJSON_GetObjectItemCaseSensitive(req, key);
     if (!x) {
         tippe_serve_respond_error(out, 400, key,
@@ -209,7 +210,7 @@ tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, cons
     }
     tippe_error err = {0};
     tippe_design *d = NULL;
-    int rc = tippe_design_load_text(key, shipped ? shipped->text : text,
+    int rc = tippe_design_load_text(name, shipped ? shipped->text : text,
                                     shipped ? shipped->len : len, s->designs_dir, NULL, 0, &d,
                                     &err);
     free(text);
@@ -217,10 +218,11 @@ tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, cons
         /* the loader names the field: "design: parts[0].radius_mm: ..." */
         char field[160] = "";
         const char *p = err.msg;
-        size_t klen = strlen(key);
-        if (!strncmp(p, key, klen) && !strncmp(p + klen, ": ", 2)) {
+        size_t klen = strlen(name);
+        if (!strncmp(p, name, klen) && !strncmp(p + klen, ": ", 2)) {
             const char *f = p + klen + 2, *colon = strstr(f, ": ");
-            if (colon && (size_t)(colon - f) < sizeof field - klen - 2 && !memchr(f, ' ', (size_t)(colon - f)))
+            if (colon && (size_t)(colon - f) < sizeof field - strlen(key) - 2 &&
+                !memchr(f, ' ', (size_t)(colon - f)))
                 snprintf(field, sizeof field, "%s.%.*s", key, (int)(colon - f), f);
         }
         tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, field[0] ? field : key, "%s",
@@ -228,4 +230,26 @@ tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, cons
         return NULL;
     }
     return d;
+}
+
+int tippe_serve_request_stem(const cJSON *req, const char *key, char *stem, size_t size,
+                             serve_response *out)
+{
+    const cJSON *x = cJSON_GetObjectItemCaseSensitive(req, key);
+    if (!x)
+        return 0;
+    const char *v = cJSON_IsString(x) ? x->valuestring : NULL;
+    size_t n = v ? strlen(v) : 0;
+    int ok = n >= 1 && n < size && n <= 64;
+    for (size_t i = 0; ok && i < n; i++)
+        ok = (v[i] >= 'a' && v[i] <= 'z') || (v[i] >= 'A' && v[i] <= 'Z') ||
+             (v[i] >= '0' && v[i] <= '9') || v[i] == '-' || v[i] == '_';
+    if (!ok) {
+        tippe_serve_respond_error(out, 400, key,
+                                  "%s: a name for the files: 1 to 64 letters, digits, '-' or "
+                                  "'_' (it never names a file of the server)", key);
+        return -1;
+    }
+    snprintf(stem, size, "%s", v);
+    return 0;
 }

@@ -440,7 +440,8 @@ async function film() {
 async function build() {
   const st = $('build-status');
   st.textContent = 'building…';
-  const r = await api('/api/build', { design: state.design });
+  const name = (state.name || 'design').replace(/[^A-Za-z0-9_-]/g, '-').slice(0, 64);
+  const r = await api('/api/build', { design: state.design, name });
   if (!r.ok || !r.blob) { st.textContent = r.json ? r.json.error : 'HTTP ' + r.status; return; }
   const a = document.createElement('a');
   a.href = URL.createObjectURL(r.blob);
