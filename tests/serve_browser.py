@@ -138,6 +138,17 @@ with Server(tippe) as srv:
         check(len(driver.find_elements(By.CSS_SELECTOR, "#theta-plot svg path")) == 1,
               "theta(t) is drawn")
 
+        # a film of that launch
+        driver.find_element(By.ID, "film").click()
+        wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, "#film-box video") or
+                   "error" in d.find_element(By.ID, "film-box").text)
+        ok = driver.execute_script(
+            "const v = document.querySelector('#film-box video');"
+            "return v ? new Promise(r => { if (v.readyState >= 1) r(v.duration);"
+            " v.onloadedmetadata = () => r(v.duration); v.onerror = () => r(-1);"
+            " setTimeout(() => r(-2), 10000); }) : -3;")
+        check(ok and ok > 0, "the film plays in the page (WebM, %.1f s)" % (ok or 0))
+
         # the build zip
         driver.find_element(By.ID, "build").click()
         deadline = time.time() + 60
@@ -167,6 +178,25 @@ with Server(tippe) as srv:
         check(not logs, "no console errors or warnings%s" %
               ("" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])))
 
+        # pin, edit, compare
+        driver.find_element(By.ID, "pin").click()
+        box = driver.find_element(By.ID, "f-parts_0__print_infill")
+        box.send_keys(Keys.CONTROL, "a")
+        box.send_keys("0.6")
+        wait.until(lambda d: d.execute_script(
+            "return state.sweep && state.pinned && state.sweep.narrowest_zone_mm !== "
+            "state.pinned.sweep.narrowest_zone_mm"))
+        time.sleep(0.3)
+        cells = [c.text for c in driver.find_elements(By.CSS_SELECTOR, "#diff td")]
+        cli6 = cli_json("sweep", "designs/m12-setscrew-printed.json",
+                        "--set", "parts.body.print.infill=0.6")
+        check(len(driver.find_elements(By.CSS_SELECTOR, "#zonebar-pinned svg")) == 1 and
+              ("%.3f" % cli6["narrowest_zone_mm"]) in cells,
+              "pinned 0.4, now 0.6: two zone bars and the differences (narrowest %.3f mm)" %
+              cli6["narrowest_zone_mm"])
+        driver.save_screenshot(os.path.join(artefacts, "6-compare.png"))
+        driver.find_element(By.ID, "unpin").click()
+
         # a bad value: the loader's message beside the field, the last result kept
         box = driver.find_element(By.ID, "f-parts_2__height_mm")
         box.send_keys(Keys.CONTROL, "a")
@@ -180,6 +210,15 @@ with Server(tippe) as srv:
         check(driver.find_element(By.ID, "verdict").text == "3-in-1: yes",
               "the last valid result stays on screen")
         driver.save_screenshot(os.path.join(artefacts, "5-bad-value.png"))
+
+        # a phone's width: one column, nothing wider than the screen
+        driver.set_window_size(390, 844)
+        time.sleep(0.5)
+        wide, view = driver.execute_script("return [document.documentElement.scrollWidth, "
+                                           "document.documentElement.clientWidth]")
+        check(wide <= view, "at a phone's width the page is %d px wide in a %d px view" %
+              (wide, view))
+        driver.save_screenshot(os.path.join(artefacts, "7-phone.png"))
 
         # Chromium logs the refused request itself (a 400 is not a script error)
         logs = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "WARNING")

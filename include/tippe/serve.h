@@ -32,7 +32,7 @@ typedef struct {
     const char *listen;      /* "HOST:PORT" (IPv4, "[IPv6]" or localhost); NULL: the default */
     const char *designs_dir; /* the shipped designs, materials and catalogue */
     int threads;             /* workers; 0: one per core */
-    int queue;               /* requests waiting for a worker; 0: 4 per worker */
+    int queue;               /* requests waiting for a worker; 0: 16 per worker */
     double budget_s;         /* wall clock per request; 0: the default */
     const char *token;       /* the access token; NULL: random when not on loopback */
     FILE *log;               /* the URL to open, then one line per refused or failed

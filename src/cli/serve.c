@@ -27,7 +27,7 @@ int tippe_cli_serve(int argc, char **argv)
         {.name = "threads", .kind = TIPPE_CLI_LONG, .value = &threads, .arg = "N", .min = 1,
          .max = 256, .def = "one per core", .help = "worker threads computing requests"},
         {.name = "queue", .kind = TIPPE_CLI_LONG, .value = &queue, .arg = "N", .min = 1,
-         .max = 4096, .def = "4 per worker",
+         .max = 4096, .def = "16 per worker",
          .help = "requests that may wait for a worker; more get 503 with Retry-After"},
         {.name = "budget", .kind = TIPPE_CLI_DOUBLE, .value = &budget, .arg = "S", .unit = "s",
          .min = 0.1, .max = 3600, .def = TIPPE_CLI_STR(TIPPE_SERVE_DEFAULT_BUDGET_S),

@@ -154,7 +154,7 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
         s->o.budget_s = TIPPE_SERVE_DEFAULT_BUDGET_S;
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     s->n_workers = s->o.threads > 0 ? s->o.threads : cores > 0 ? (int)cores : 1;
-    s->queue_max = s->o.queue > 0 ? s->o.queue : 4 * s->n_workers;
+    s->queue_max = s->o.queue > 0 ? s->o.queue : 16 * s->n_workers;
     snprintf(s->designs_dir, sizeof s->designs_dir, "%s", s->o.designs_dir ? s->o.designs_dir
                                                                            : "designs");
     pthread_mutex_init(&s->lock, NULL);

@@ -207,6 +207,9 @@ function showFieldError(field, message) {
 let timer = null;
 function schedule() {
   clearTimeout(timer);
+  // a launch, a film or a build shown was of the design before this edit
+  for (const id of ['check-result', 'theta-plot', 'film-box', 'build-status']) $(id).textContent = '';
+  delete $('check-result').dataset.verdict;
   timer = setTimeout(refresh, 150);
 }
 
