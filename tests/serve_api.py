@@ -221,7 +221,7 @@ with Server(tippe, listen="127.0.0.2:0") as srv:
     check(st == 200, "the cookie opens the API")
 
 # ---- a full queue and the budget
-with Server(tippe, "--threads", "1", "--queue", "1", "--budget", "0.3") as srv:
+with Server(tippe, "--workers", "1", "--queue", "1", "--budget", "0.3") as srv:
     results = []
 
     def slow():
@@ -240,7 +240,7 @@ with Server(tippe, "--threads", "1", "--queue", "1", "--budget", "0.3") as srv:
           "4 builds at once on 1 worker and a queue of 1: 503 busy with Retry-After (%s)" % codes)
     check(over, "a build over a 0.3 s budget: 503 over budget")
     time.sleep(1.5)
-    st, _, _ = srv.post("/api/sweep", {"design": "m12-setscrew"})
+    st, _, _ = srv.post("/api/eval", {"design": "m12-setscrew", "z2_mm": 5})
     check(st == 200, "then it serves again")
     code, left = srv.stop()
     check(code == 0 and not left, "SIGTERM after cut builds: exit 0, no temporary left (%s)" % left)

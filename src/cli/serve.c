@@ -24,7 +24,7 @@ int tippe_cli_serve(int argc, char **argv)
          .def = "the repository's designs/",
          .help = "the shipped designs the page lists, with their materials table and\n"
                  "catalogue: the only files the server reads"},
-        {.name = "threads", .kind = TIPPE_CLI_LONG, .value = &threads, .arg = "N", .min = 1,
+        {.name = "workers", .kind = TIPPE_CLI_LONG, .value = &threads, .arg = "N", .min = 1,
          .max = 256, .def = "one per core", .help = "worker threads computing requests"},
         {.name = "queue", .kind = TIPPE_CLI_LONG, .value = &queue, .arg = "N", .min = 1,
          .max = 4096, .def = "16 per worker",
@@ -39,7 +39,7 @@ int tippe_cli_serve(int argc, char **argv)
     };
     tippe_cli_spec spec = {
         .verb = VERB,
-        .synopsis = "[--listen HOST:PORT] [--designs DIR] [--threads N] [--queue N]\n"
+        .synopsis = "[--listen HOST:PORT] [--designs DIR] [--workers N] [--queue N]\n"
                     "                   [--budget S] [--token TEXT]",
         .about = "Serves the calculator as a local web page: open a shipped design or your\n"
                  "own, change its numbers and see the zones, the 3-in-1 verdict and the zone\n"

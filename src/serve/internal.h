@@ -106,7 +106,8 @@ void tippe_serve_http_stop(serve_server *s);
  * caller checked that it has room), the watchdog's check (under no lock). */
 int tippe_serve_work_start(serve_server *s, tippe_error *err);
 void tippe_serve_work_stop(serve_server *s);
-void tippe_serve_work_join(serve_server *s);
+/* Joins the workers: how many are still computing (detached, cut at exit). */
+int tippe_serve_work_join(serve_server *s);
 int tippe_serve_work_busy(serve_server *s);
 void tippe_serve_tmp_remove_all(serve_server *s);
 void tippe_serve_enqueue(serve_server *s, serve_job *j);

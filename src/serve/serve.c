@@ -225,7 +225,7 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
         nanosleep(&t, NULL);
     }
     tippe_serve_http_stop(s);
-    tippe_serve_work_join(s);
+    const int still_working = tippe_serve_work_join(s);
     tippe_serve_tmp_remove_all(s);
     if (s->o.log && sig > 0) {
         fprintf(s->o.log, "tippe serve: stopped by %s (%ld answered, %ld refused, %ld over "
@@ -235,7 +235,13 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
         fflush(s->o.log);
     }
     pthread_sigmask(SIG_SETMASK, &old, NULL);
-    server_free(s);
-    /* s itself stays: a detached worker may still read it until the process ends */
+    if (!still_working) {
+        server_free(s);
+        pthread_mutex_destroy(&s->lock);
+        pthread_mutex_destroy(&s->exclusive);
+        pthread_mutex_destroy(&s->tmp_lock);
+        pthread_cond_destroy(&s->wake);
+        free(s);
+    } /* else s stays: a worker cut at exit may still read it */
     return rc;
 }

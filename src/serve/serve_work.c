@@ -206,16 +206,20 @@ void tippe_serve_work_stop(serve_server *s)
     pthread_mutex_unlock(&s->lock);
 }
 
-void tippe_serve_work_join(serve_server *s)
+int tippe_serve_work_join(serve_server *s)
 {
     /* workers still computing past their budget are cut with the process */
+    int left = 0;
     for (int i = 0; i < s->n_started; i++) {
         struct timespec until;
         clock_gettime(CLOCK_REALTIME, &until);
         until.tv_sec += 1;
-        if (pthread_timedjoin_np(s->workers[i], NULL, &until))
+        if (pthread_timedjoin_np(s->workers[i], NULL, &until)) {
             pthread_detach(s->workers[i]);
+            left++;
+        }
     }
+    return left;
 }
 
 int tippe_serve_work_busy(serve_server *s)
