@@ -215,6 +215,12 @@ tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, cons
                                     &err);
     free(text);
     if (rc) {
+        /* the server's folders are nobody's business: its designs folder is "designs/" */
+        const size_t dl = strlen(s->designs_dir);
+        for (char *at = err.msg; dl > 7 && (at = strstr(at, s->designs_dir)) != NULL; at += 7) {
+            memmove(at + 7, at + dl, strlen(at + dl) + 1); /* shorter: stays in msg */
+            memcpy(at, "designs", 7);
+        }
         /* the loader names the field: "design: parts[0].radius_mm: ..." */
         char field[160] = "";
         const char *p = err.msg;
