@@ -18,8 +18,8 @@ int tippe_cli_serve(int argc, char **argv)
     tippe_cli_opt opts[] = {
         {.name = "listen", .kind = TIPPE_CLI_STRING, .value = &o.listen, .arg = "HOST:PORT",
          .def = TIPPE_SERVE_DEFAULT_LISTEN,
-         .help = "address and port to listen on (port 0: a free one). Any address\n"
-                 "but loopback needs the access token printed in the URL at start"},
+         .help = "address and port to listen on (port 0: a free one). Any address but\n"
+                 "127.0.0.1 and [::1] needs the access token printed in the URL at start"},
         {.name = "designs", .kind = TIPPE_CLI_STRING, .value = &o.designs_dir, .arg = "DIR",
          .def = "the repository's designs/",
          .help = "the shipped designs the page lists, with their materials table and\n"
