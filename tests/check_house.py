@@ -42,6 +42,7 @@ OWNS = {
     "plot": ["plot", "sweep_plot", "launch_plot", "optimise_plot"],
     "export": ["export", "mesh", "drawing", "scad", "slice"],
     "animate": ["animate", "film", "scene", "encode"],
+    "serve": ["serve"],
 }
 
 failures, checks = [], 0

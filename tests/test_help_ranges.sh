@@ -20,6 +20,7 @@ declare -A base=(
     [launch]="$nofile --z2 0" [map]="$nofile --z2 0:1:2 --spin 1:2:2"
     [animate]="$nofile -o $tmp/film.gif" [export]="$nofile -o $tmp/export"
     [optimise]="$nofile" [materials]="$nofile" [build]="$nofile -o $tmp/build" [slice]="$nofile -o $tmp/slice"
+    [serve]="--designs $nofile"
 )
 # Options that only make sense with another (said in their help): given it too.
 declare -A with=([export --split-z]="--split" [animate --frame]="-o $tmp/frame.png")

@@ -5,7 +5,8 @@ set -euo pipefail
 TIPPE_DEBS=(build-essential cmake pkg-config libgsl-dev libcjson-dev libplplot-dev
             plplot-driver-cairo libopenmpi-dev openmpi-bin python3 python3-numpy python3-scipy
             libnlopt-dev lib3mf-dev libgeos-dev admesh python3-stl libcairo2-dev
-            libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg)
+            libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
+            libmicrohttpd-dev libzip-dev)
 # CI also renders the OpenSCAD export (tests/test_export_cli.sh): measured on this
 # machine, installing openscad adds 13 packages (24 MiB) beyond the list above and
 # took 26 s; the render check takes ~15 s. Users get it only if they ask.
@@ -18,6 +19,13 @@ fi
 # Users get it only if they ask (TIPPE_WITH_SLICER=1).
 if [ "${CI:-}" = "true" ] || [ "${TIPPE_WITH_SLICER:-}" = "1" ]; then
   TIPPE_DEBS+=(prusa-slicer)
+fi
+# CI also drives tippe serve's page in a real headless Chromium (tests/test_serve_browser.sh,
+# selenium with Debian's chromedriver: no browser download, no npm). Measured on this
+# machine: 21 packages beyond the list above, 125 MB to fetch, 399 MB on disk, 31 s to
+# install; the browser test takes ~10 s. Users get them only if they ask.
+if [ "${CI:-}" = "true" ] || [ "${TIPPE_WITH_BROWSER:-}" = "1" ]; then
+  TIPPE_DEBS+=(chromium chromium-driver python3-selenium)
 fi
 missing=()
 for p in "${TIPPE_DEBS[@]}"; do

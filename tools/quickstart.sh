@@ -16,3 +16,7 @@ design=${1:-designs/m12-setscrew.json}
 mkdir -p out
 ./build/tippe sweep "$design" --plot out/zones.png
 echo "zone plot: out/zones.png"
+echo
+echo "The same as a web page, live as you change the design: run"
+echo "    ./build/tippe serve"
+echo "and open http://127.0.0.1:8765/ (docs/serve.md)."

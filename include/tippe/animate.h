@@ -10,6 +10,7 @@
 #include "tippe/base.h"
 #include "tippe/physics.h"
 #include "tippe/design.h"
+#include "tippe/sweep.h"
 
 /* ==== from tippe/encode.h ==== */
 /* Encode: a film from frames drawn one at a time, with FFmpeg's libraries.
@@ -229,5 +230,11 @@ int tippe_film_write_png(const tippe_film *film, FILE *out, tippe_error *err);
  * the design has no moving part. */
 void tippe_animate_design_weight(const tippe_design *d, double z2_mm, const tippe_top *top,
                                  double *offset_m, double *radius_m);
+
+/* The launch tippe check integrates (tippe_sweep_check_run with options o) as a
+ * film's launch: its model, initial state, t_end and accuracy, the design's
+ * weight for the picture, and a title naming the design and Z2. */
+int tippe_animate_check_launch(const tippe_sweep_check *c, const tippe_launch_options *o,
+                               tippe_animate_launch *out);
 
 #endif

@@ -161,8 +161,6 @@ int tippe_build_design_fit(const tippe_design *d, double clearance_mm, int *part
 
 typedef struct {
     tippe_build_hole_fit hole_fit;
-    const char *const *sets; /* the design's overrides (as loaded), for the 3-in-1 search */
-    int n_sets;
     double clearance_mm;     /* export's radial clearance of holes for hardware */
     const char *catalogue;   /* hardware catalogue file; NULL: none */
     /* the catalogue read already (the command reads it before any work, so that

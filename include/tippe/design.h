@@ -305,6 +305,19 @@ typedef struct tippe_design tippe_design; /* opaque */
 int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
                       tippe_design **out, tippe_error *err);
 
+/* The same for a design file's text in memory (len bytes; tippe serve's
+ * requests): name stands for the file in every message ("the design"), and the
+ * materials table is materials_dir/materials.json (a "materials" field naming
+ * any other file is refused: a design from memory names no file on disk). */
+int tippe_design_load_text(const char *name, const char *text, size_t len,
+                           const char *materials_dir, const char *const *overrides,
+                           int n_overrides, tippe_design **out, tippe_error *err);
+
+/* d loaded again from its file or text with its overrides and then extra ones,
+ * checked in full as at load (tippe_design_derive skips the layout). */
+int tippe_design_reload(const tippe_design *d, const char *const *extra, int n_extra,
+                        tippe_design **out, tippe_error *err);
+
 /* The top with the moving weight's midpoint at z2_mm; TIPPE_EINPUT if z2 is
  * outside the stated travel (closed interval, 1e-9 mm slack for a sweep's
  * rounded steps) or not finite. */
@@ -354,6 +367,11 @@ int tippe_design_protrusion_at(const tippe_design *d, double z2_mm, tippe_design
 /* "part 'screw' stands out of the sphere by 0.598 mm near the +z pole: the top
  * rests on it, not on its sphere, for theta 0 .. 24.8 deg", for reports. */
 void tippe_design_protrusion_text(const tippe_design_protrusion *p, char *buf, size_t size);
+
+/* The same as JSON fields of o: "model_valid" (true/false) and "protrusion"
+ * (null, or {part, protrusion_mm, pole ("+z"/"-z"), theta_range_rad}). */
+struct cJSON;
+void tippe_design_protrusion_json(struct cJSON *o, const tippe_design_protrusion *p);
 
 /* What limits the physical travel at each end, e.g. "part 'weight' touches part
  * 'shell'"; for messages. */
@@ -506,6 +524,11 @@ int tippe_materials_count(const tippe_materials *t);
 /* Entry i (0 .. count - 1) in the file's order; its strings live as long as t. */
 void tippe_materials_get(const tippe_materials *t, int i, tippe_material *out);
 void tippe_materials_free(tippe_materials *t);
+/* The table as tippe materials --json gives it: {materials: [{name,
+ * density_g_cm3, printable, source, notes}], file} (no "file" when file is
+ * NULL). NULL if out of memory. */
+struct cJSON;
+struct cJSON *tippe_materials_json(const tippe_materials *t, const char *file);
 /* The materials table the design file at design_path reads: its "materials"
  * field (default "materials.json") relative to the design's directory.
  * TIPPE_EINPUT if the file is not a design (a JSON object with "parts"). */

@@ -91,4 +91,25 @@ int tippe_export_gauge_write(const tippe_build_sheet *s, int family, const char 
 int tippe_export_sheet_write(const tippe_design *d, const tippe_build_sheet *s, const char *path,
                             tippe_error *err);
 
+/* ==== tippe build's files (tippe build, tippe serve's /api/build) ==== */
+/* The sheet's files in dir, named by the design's stem (tippe_build_stem):
+ * STEM-build.json, -build.md, -sheet.pdf, -sheet.svg, -sheet.png (the first
+ * TIPPE_EXPORT_BUILD_SHEET), then the gauges -gauge-stays-up.stl, -flips.stl,
+ * -hangs.stl (written where tippe_build_gauge_applies). */
+enum { TIPPE_EXPORT_BUILD_SHEET = 5, TIPPE_EXPORT_BUILD_FILES = 8 };
+void tippe_export_build_paths(const tippe_design *d, const char *dir, char (*out)[4096]);
+/* The export request of a build into dir (q->profile: tippe_profile_defaults or
+ * the caller's): every format, split, joined on a ring and with rod sockets
+ * when the printed body closes around its hardware, the weight mid-travel
+ * until the sheet's settings are known. */
+void tippe_export_build_request(const tippe_design *d, double clearance_mm, const char *dir,
+                                tippe_export_request *q);
+/* Writes the sheet s of d to paths (tippe_export_build_paths) and, with q (NULL:
+ * the sheet only), tippe export's files into r: the drawing with the weight at
+ * the flip's setting (else the first setting there is), the screw's hole at the
+ * sheet's tap drill or insert pilot (fit_note, fit_note_size: room for why). */
+int tippe_export_build_write(const tippe_design *d, const tippe_build_sheet *s,
+                             char (*paths)[4096], tippe_export_request *q, char *fit_note,
+                             size_t fit_note_size, tippe_export_result *r, tippe_error *err);
+
 #endif

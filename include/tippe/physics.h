@@ -583,6 +583,13 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
                              const tippe_dynamics_initial *ic, tippe_launch_record *rec,
                              tippe_error *err);
 
+/* The tilt theta(t) of a launch (ic) sampled every t_end_s / (n - 1) from 0
+ * to t_end_s (trajectory level; the samples stop early where the contact is
+ * lost): t_s[0 .. *n_out - 1], theta_rad[...]. For a plot of one launch. */
+int tippe_launch_trace(const tippe_top *top, const tippe_launch_options *o,
+                       const tippe_dynamics_initial *ic, double t_end_s, int n, double *t_s,
+                       double *theta_rad, int *n_out, tippe_error *err);
+
 /* Many launches in groups: group i has top tops[i] and, if spin_rad_s is not
  * NULL, the fixed spin spin_rad_s[i] (a map cell). Launch number `index`
  * (0 <= index < n_groups * per_group) belongs to group index / per_group and
@@ -786,5 +793,19 @@ double tippe_contact_rolling_resistance(double N, double arm, double w_s, const 
  * fraction of the elastic work lost per cycle (Johnson 1985, section 9.2, after Tabor
  * 1955). */
 double tippe_contact_rolling_arm_hysteresis(double alpha, double a);
+/* ==== reports of launches (tippe's --json, tippe serve) ==== */
+struct cJSON;
+/* The model of a launch's options: law, coefficients, g (no top). */
+void tippe_launch_friction_model(const tippe_launch_options *o, tippe_dynamics_model *m);
+/* Adds "friction": {"law", "mu_s_m" | "mu" and "slip_scale_m_s"} to o, and the
+ * older "mu_s_m" (the viscous coefficient; null under a Coulomb law). */
+void tippe_dynamics_friction_json(struct cJSON *o, const tippe_dynamics_model *m);
+/* Adds {"preset": preset, "stepper": ..., "rtol": ...} to o as "accuracy", the
+ * same object in every verb that integrates. */
+void tippe_dynamics_accuracy_json(struct cJSON *o, const char *preset,
+                                  const tippe_dynamics_accuracy *acc);
+/* A launch's options: the hand-launch distribution (without the spin's when
+ * fixed_spin), the friction, g, t_end and the accuracy. NULL if out of memory. */
+struct cJSON *tippe_launch_options_json(const tippe_launch_options *o, int fixed_spin);
 
 #endif

@@ -295,4 +295,62 @@ struct cJSON;
 int tippe_sweep_json_add_bands(struct cJSON *o, const tippe_design *d,
                                const tippe_sweep_result *r, const tippe_sweep_bands_result *b);
 
+/* ==== reports both front ends give (tippe --json, tippe serve) ==== */
+/* tippe sweep --json: tippe_sweep_json with the bands added
+ * (tippe_sweep_json_add_bands) and the printed parts and bodies
+ * (tippe_profile_printed_parts_json). NULL if out of memory. */
+struct cJSON *tippe_sweep_report_json(const tippe_design *d, const tippe_sweep_result *r,
+                                      const tippe_sweep_bands_result *b);
+/* tippe eval --json: the design with its weight at z2_mm (top: tippe_design_top
+ * there): design, file, z2_mm, mass_kg, moving_mass_kg, R_m, eps_m,
+ * eps_over_R, A_kg_m2, C_kg_m2, A_over_C, com_side, group, subgroup, boundary
+ * (Theorem 5.1), travel_mm, physical_travel_mm, parts [{name, shape, role,
+ * material, density_g_cm3, mass_kg, printed}], model_valid, protrusion and the
+ * printed parts. NULL if out of memory. */
+struct cJSON *tippe_sweep_eval_json(const tippe_design *d, double z2_mm, const tippe_top *t);
+/* The design's path through the phase diagram sampled at n (>= 2) evenly spaced
+ * Z2 over [from_mm, to_mm], for a page that draws the zone plot (the paper's
+ * Figure 7: A/C - 1 against +-eps/R over Z2): {z2_mm: [...], A_over_C: [...],
+ * eps_over_R_signed: [...] (the sign of tippe_sweep_path's e_signed),
+ * mass_kg: [...]}. NULL if out of memory. */
+struct cJSON *tippe_sweep_samples_json(const tippe_design *d, double from_mm, double to_mm,
+                                       int n);
+
+
+/* ==== one launch beside its zone (tippe check, tippe serve's /api/check) ==== */
+/* The zone of the design's sweep (over its stated travel) that contains z2. */
+typedef struct {
+    int ok;
+    tippe_group group;
+    double from_mm, to_mm;
+} tippe_sweep_point_zone;
+void tippe_sweep_zone_at(const tippe_design *d, double z2, tippe_sweep_point_zone *z);
+
+/* Theory for a top beside launches: group, subgroup, A/C, eps/R, the zone
+ * (zone_mm), the spin thresholds n-, n*; with a tally tl (may be NULL) what
+ * Theorem 5.1 predicts for its launches and how many agree. NULL if out of
+ * memory. */
+struct cJSON *tippe_sweep_theory_json(const tippe_top *t, double g,
+                                      const tippe_sweep_point_zone *z,
+                                      const tippe_launch_tally *tl);
+
+/* One central hand launch (tippe_launch_central) of d at z2_mm with the given
+ * spin, integrated, beside the sweep's zone there. */
+typedef struct {
+    const tippe_design *d;
+    double z2_mm;
+    tippe_top top;
+    tippe_dynamics_initial ic;
+    tippe_launch_record rec;
+    tippe_sweep_point_zone zone;
+} tippe_sweep_check;
+int tippe_sweep_check_run(const tippe_design *d, double z2_mm, const tippe_launch_options *o,
+                          double spin_rad_s, tippe_sweep_check *out, tippe_error *err);
+/* tippe check --json: design, file, set (sets[0 .. n_sets - 1]), z2_mm, initial,
+ * verdict, model_valid, protrusion, t_s, decided_by, margin_J, barrier_gap_J,
+ * theta_range_rad, Rn_bound_N, t_flip_s, theta_final_rad, spin_final_rad_s,
+ * J0_kg_m3_s, jellett_rel_drift, options, theory. NULL if out of memory. */
+struct cJSON *tippe_sweep_check_json(const tippe_sweep_check *c, const tippe_launch_options *o,
+                                     const char *const *sets, int n_sets);
+
 #endif

@@ -38,3 +38,21 @@ void tippe_animate_design_weight(const tippe_design *d, double z2_mm, const tipp
     *offset_m = side * moment / volume_m3;
     *radius_m = cbrt(3 * volume_m3 / (4 * M_PI));
 }
+
+/* ---- the launch of tippe check, as a film -------------------------------------- */
+
+int tippe_animate_check_launch(const tippe_sweep_check *c, const tippe_launch_options *o,
+                               tippe_animate_launch *out)
+{
+    memset(out, 0, sizeof *out);
+    snprintf(out->title, sizeof out->title, "%s at Z2 = %g mm, central hand launch",
+             tippe_design_name(c->d), c->z2_mm);
+    tippe_launch_friction_model(o, &out->model);
+    out->model.top = c->top;
+    out->initial = c->ic;
+    out->t_end = o->t_end;
+    out->accuracy = o->accuracy;
+    tippe_animate_design_weight(c->d, c->z2_mm, &c->top, &out->weight_offset_m,
+                                &out->weight_radius_m);
+    return TIPPE_OK;
+}

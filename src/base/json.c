@@ -109,6 +109,26 @@ static int parse(const char *path, const char *text, cJSON **out, tippe_error *e
                            "after '%s')", path, line, col, line, col, line_text);
 }
 
+int tippe_json_parse_text(const tippe_json_reader *r, const char *text, size_t len,
+                          int max_mib, const char *what, cJSON **root)
+{
+    *root = NULL;
+    if (len > ((size_t)max_mib << 20))
+        return tippe_error_set(r->err, TIPPE_EINPUT, "%s: larger than %d MiB: not a %s",
+                               r->file, max_mib, what);
+    if (memchr(text, '\0', len))
+        return tippe_error_set(r->err, TIPPE_EINPUT, "%s: contains a NUL byte: not a JSON text",
+                               r->file);
+    char *copy = malloc(len + 1);
+    if (!copy)
+        return tippe_error_set(r->err, TIPPE_ECOMPUTE, "%s: out of memory", r->file);
+    memcpy(copy, text, len);
+    copy[len] = '\0';
+    int rc = parse(r->file, copy, root, r->err);
+    free(copy);
+    return rc;
+}
+
 int tippe_json_load(const tippe_json_reader *r, int max_mib, const char *what, cJSON **root)
 {
     *root = NULL;

@@ -52,6 +52,11 @@ tippe_json_reader *tippe_json_reader_new(const char *file, tippe_error *err,
  * too large to be one. On success the caller owns *root (cJSON_Delete). */
 int tippe_json_load(const tippe_json_reader *r, int max_mib, const char *what, cJSON **root);
 
+/* The same for a text in memory (len bytes, not NUL-terminated; at most
+ * max_mib MiB, no NUL byte), r->file naming it in messages ("request"). */
+int tippe_json_parse_text(const tippe_json_reader *r, const char *text, size_t len,
+                          int max_mib, const char *what, cJSON **root);
+
 /* A check made before any JSON file is read: 0 to read it, or a status with err
  * set to refuse it. The command uses it to refuse an output that names a file
  * the run reads however the file is reached (a design's materials table, a

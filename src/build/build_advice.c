@@ -20,16 +20,13 @@
 static int three_in_one_at(const tippe_design *d, const tippe_build_options *o,
                            const char *field, double value)
 {
-    const char *ov[TIPPE_JSON_MAX_SETS];
-    int n = 0;
-    for (int k = 0; k < o->n_sets && n < TIPPE_JSON_MAX_SETS - 1; k++)
-        ov[n++] = o->sets[k];
+    /* d's own overrides (o->sets, as loaded) come with it */
     char set[512];
     snprintf(set, sizeof set, "%s=%.10g", field, value);
-    ov[n++] = set;
+    const char *ov[1] = {set};
     tippe_design *v = NULL;
     tippe_error e = {0};
-    if (tippe_design_load(tippe_design_path(d), ov, n, &v, &e))
+    if (tippe_design_reload(d, ov, 1, &v, &e))
         return -1;
     tippe_sweep_result r;
     int yes = -1;

@@ -208,7 +208,7 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
             if (isfinite(f->t_settled))
                 cJSON_AddNumberToObject(o, "t_settled_s", f->t_settled);
             cJSON_AddNumberToObject(o, "jellett_rel_drift", r->jellett_rel_drift);
-            tippe_cli_json_model_validity(o, &a->protrusion);
+            tippe_design_protrusion_json(o, &a->protrusion);
             if (bytes >= 0)
                 cJSON_AddNumberToObject(o, "bytes", (double)bytes);
             else

@@ -104,64 +104,16 @@ static const char *default_catalogue(const char *design, char *buf, size_t size)
     return access(buf, R_OK) == 0 ? buf : NULL;
 }
 
-/* The sheet's files: JSON, Markdown, the page as PDF, SVG and PNG, then the
- * depth gauges of the three settings (those that apply are written). */
-enum { N_SHEET = 5, N_OUT = 8 };
-static const char *const sheet_tails[N_OUT] = {
-    "-build.json", "-build.md", "-sheet.pdf", "-sheet.svg", "-sheet.png",
-    "-gauge-stays-up.stl", "-gauge-flips.stl", "-gauge-hangs.stl"};
-
-static void sheet_paths(const tippe_design *d, const char *dir, char (*out)[4096])
-{
-    char stem[1024];
-    tippe_build_stem(tippe_design_path(d), stem, sizeof stem);
-    const char *sep = dir[0] && dir[strlen(dir) - 1] != '/' ? "/" : "";
-    for (int k = 0; k < N_OUT; k++)
-        snprintf(out[k], 4096, "%s%s%s%s", dir, sep, stem, sheet_tails[k]);
-}
-
-static int write_sheet(const tippe_design *d, const tippe_build_sheet *s,
-                       char (*paths)[4096], tippe_error *err)
-{
-    const char *json = paths[0], *md = paths[1];
-    tippe_report_file rf;
-    cJSON *o = tippe_build_json(s);
-    char *text = o ? cJSON_Print(o) : NULL;
-    cJSON_Delete(o);
-    if (!text)
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
-    int rc = tippe_report_open(&rf, json, "the build sheet (JSON)", err);
-    if (!rc) {
-        fputs(text, rf.f);
-        fputc('\n', rf.f);
-        rc = tippe_report_commit(&rf, err);
-    }
-    free(text);
-    if (!rc && !(rc = tippe_report_open(&rf, md, "the build sheet (Markdown)", err))) {
-        tippe_build_markdown(rf.f, s);
-        rc = tippe_report_commit(&rf, err);
-    }
-    for (int k = 2; !rc && k < N_SHEET; k++)
-        rc = tippe_export_sheet_write(d, s, paths[k], err);
-    double pin;
-    for (int f = 0; !rc && f < 3; f++)
-        if (tippe_build_gauge_applies(s, f, &pin))
-            rc = tippe_export_gauge_write(s, f, paths[N_SHEET + f], err);
-    return rc;
-}
-
 static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096]);
 
 static int run(build_args *a, const tippe_design *d)
 {
     tippe_error err = {0};
-    char sheet[N_OUT][4096], cat[4096];
+    char sheet[TIPPE_EXPORT_BUILD_FILES][4096], cat[4096];
     if (!a->catalogue)
         a->catalogue = default_catalogue(a->path, cat, sizeof cat);
     a->o.catalogue = a->catalogue;
-    a->o.sets = a->sets.item;
-    a->o.n_sets = a->sets.n;
-    sheet_paths(d, a->dir, sheet);
+    tippe_export_build_paths(d, a->dir, sheet);
     /* the catalogue is input: a bad one is refused before any work or output */
     tippe_build_catalogue *catalogue = NULL;
     if (a->catalogue && tippe_build_catalogue_load(a->catalogue, &catalogue, &err))
@@ -180,20 +132,11 @@ static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096]
     char fit_note[64];
     /* every output checked before any work */
     int rc = tippe_cli_make_output_dir(VERB, "-o", a->dir);
-    for (int k = 0; !rc && k < N_OUT; k++)
+    for (int k = 0; !rc && k < TIPPE_EXPORT_BUILD_FILES; k++)
         rc = tippe_cli_check_output(VERB, "-o", sheet[k], 0);
     char(*paths)[4096] = NULL;
     if (!rc && !a->no_export) {
-        a->q.profile.clearance_mm = a->o.clearance_mm;
-        a->q.dir = a->dir;
-        a->q.formats = TIPPE_EXPORT_ALL;
-        /* a body that closes around its hardware is printed in halves */
-        a->q.profile.split = tippe_build_needs_split(d, a->o.clearance_mm);
-        a->q.profile.joint = a->q.profile.split; /* and joined on a ring */
-        a->q.profile.sockets = a->q.profile.split; /* a rod spanning it held at the poles */
-        double t0, t1;
-        tippe_design_travel_mm(d, &t0, &t1);
-        a->q.z2_mm = 0.5 * (t0 + t1);
+        tippe_export_build_request(d, a->o.clearance_mm, a->dir, &a->q);
         int np = tippe_export_plan(d, &a->q, &paths, &err);
         if (np < 0)
             rc = tippe_cli_fail(VERB, &err, err.code ? err.code : TIPPE_EINPUT);
@@ -201,7 +144,7 @@ static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096]
             /* a printed body named like a sheet file ("gauge-flips") would
              * overwrite it: both are -o, which tippe_cli_check_output does not
              * compare with each other */
-            for (int j = 0; !rc && j < N_OUT; j++)
+            for (int j = 0; !rc && j < TIPPE_EXPORT_BUILD_FILES; j++)
                 if (!strcmp(paths[k], sheet[j]))
                     rc = tippe_cli_usage_error(VERB, "-o %s: tippe export's file %s is also "
                                                "the sheet's (a printed body named like a sheet "
@@ -220,25 +163,10 @@ static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096]
         return fprintf(stderr, "tippe %s: out of memory\n", VERB), 1;
     }
     rc = tippe_build_compute(d, &a->o, s, &err);
-    if (!rc) {
-        /* the drawing shows the weight where the flip is set, else at the first
-         * setting there is */
-        for (int f = 2; f >= 0; f--)
-            if (s->set[f].reachable)
-                a->q.z2_mm = s->set[f].set_z2_mm;
-        if (s->set[1].reachable)
-            a->q.z2_mm = s->set[1].set_z2_mm;
-        rc = write_sheet(d, s, sheet, &err);
-        if (s->hole_tapped || s->hole_insert) {
-            a->q.profile.fit_part = s->hole_part;
-            a->q.profile.fit_diameter_mm = s->hole_diameter_mm;
-            snprintf(fit_note, sizeof fit_note, "%s", s->fit_note);
-            a->q.fit_note = fit_note;
-        }
-    }
     tippe_export_result r = {0};
-    if (!rc && !a->no_export)
-        rc = tippe_export_run(d, &a->q, &r, &err);
+    if (!rc)
+        rc = tippe_export_build_write(d, s, sheet, a->no_export ? NULL : &a->q, fit_note,
+                                      sizeof fit_note, &r, &err);
     if (rc) {
         tippe_export_result_free(&r);
         free(s);
@@ -250,8 +178,8 @@ static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096]
         cJSON *files = o ? cJSON_AddArrayToObject(o, "files") : NULL;
         if (files) {
             double pin;
-            for (int k = 0; k < N_OUT; k++)
-                if (k < N_SHEET || tippe_build_gauge_applies(s, k - N_SHEET, &pin))
+            for (int k = 0; k < TIPPE_EXPORT_BUILD_FILES; k++)
+                if (k < TIPPE_EXPORT_BUILD_SHEET || tippe_build_gauge_applies(s, k - TIPPE_EXPORT_BUILD_SHEET, &pin))
                     cJSON_AddItemToArray(files, cJSON_CreateString(sheet[k]));
             for (int k = 0; k < r.n_files; k++)
                 cJSON_AddItemToArray(files, cJSON_CreateString(r.file[k]));
@@ -261,8 +189,8 @@ static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096]
         tippe_build_markdown(stdout, s);
         printf("\n");
         double pin;
-        for (int k = 0; k < N_OUT; k++)
-            if (k < N_SHEET || tippe_build_gauge_applies(s, k - N_SHEET, &pin))
+        for (int k = 0; k < TIPPE_EXPORT_BUILD_FILES; k++)
+            if (k < TIPPE_EXPORT_BUILD_SHEET || tippe_build_gauge_applies(s, k - TIPPE_EXPORT_BUILD_SHEET, &pin))
                 printf("wrote      %s\n", sheet[k]);
         for (int k = 0; k < r.n_files; k++)
             printf("wrote      %s\n", r.file[k]);

@@ -3,6 +3,7 @@
 #include "hands.h"
 
 #include "tippe/physics.h"
+#include "tippe/sweep.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -34,81 +35,6 @@ static int check_parse(hands_args *a, int argc, char **argv)
         .own = own,
     };
     return hands_parse(&v, a, argc, argv);
-}
-
-/* One check's result: the launch and the calculator's zone for its Z2. */
-typedef struct {
-    const tippe_design *d;
-    tippe_top top;
-    tippe_dynamics_initial ic;
-    tippe_launch_record rec;
-    hands_zone zone;
-} check_result;
-
-static cJSON *theory_json(const hands_args *a, const check_result *r)
-{
-    cJSON *th = hands_json_theory(&r->top, a->o.g, &r->zone, NULL);
-    if (!th)
-        return NULL;
-    if (r->rec.theory_ok) {
-        cJSON_AddStringToObject(th, "prediction", tippe_launch_predicted_name(r->rec.predicted));
-        if (isfinite(r->rec.hang_theta_rad))
-            cJSON_AddNumberToObject(th, "hang_theta_rad", r->rec.hang_theta_rad);
-    } else {
-        cJSON_AddNullToObject(th, "prediction");
-    }
-    if (r->rec.agrees < 0)
-        cJSON_AddNullToObject(th, "agrees");
-    else
-        cJSON_AddBoolToObject(th, "agrees", r->rec.agrees);
-    return th;
-}
-
-/* How the verdict was reached (docs/dynamics.md, "Proved verdicts"). */
-/* How the verdict was reached, with null where a field does not apply. */
-static void add_decision_json(cJSON *o, const tippe_launch_record *rec)
-{
-    cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(rec->how));
-    tippe_cli_json_number_or_null(o, "margin_J", rec->margin_J);
-    tippe_cli_json_number_or_null(o, "barrier_gap_J", rec->barrier_gap_J);
-    tippe_cli_json_range(o, "theta_range_rad", rec->theta_lo_rad, rec->theta_hi_rad);
-    tippe_cli_json_number_or_null(o, "Rn_bound_N", rec->Rn_bound_N);
-    tippe_cli_json_number_or_null(o, "t_flip_s", rec->t_flip_s);
-}
-
-static int check_json(const hands_args *a, const check_result *r)
-{
-    const tippe_dynamics_initial *ic = &r->ic;
-    const tippe_launch_record *rec = &r->rec;
-    cJSON *o = cJSON_CreateObject();
-    if (o) {
-        cJSON_AddStringToObject(o, "design", tippe_design_name(r->d));
-        cJSON_AddStringToObject(o, "file", tippe_design_path(r->d));
-        tippe_cli_json_sets(o, &a->sets);
-        cJSON_AddNumberToObject(o, "z2_mm", a->z2_mm);
-        cJSON *ini = cJSON_AddObjectToObject(o, "initial");
-        if (ini) {
-            cJSON_AddNumberToObject(ini, "theta_rad", ic->theta);
-            cJSON_AddNumberToObject(ini, "phi_dot_rad_s", ic->phi_dot);
-            cJSON_AddStringToObject(ini, "phi_dot_rule", "steady");
-            cJSON_AddNumberToObject(ini, "spin_rad_s", ic->spin);
-            cJSON_AddNumberToObject(ini, "U_m_s", ic->U);
-            cJSON_AddNumberToObject(ini, "V_m_s", ic->V);
-        }
-        cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(rec->verdict));
-        tippe_design_protrusion pr;
-        tippe_design_protrusion_at(r->d, a->z2_mm, &pr);
-        tippe_cli_json_model_validity(o, &pr);
-        cJSON_AddNumberToObject(o, "t_s", rec->t_s);
-        add_decision_json(o, rec);
-        tippe_cli_json_number_or_null(o, "theta_final_rad", rec->theta_final_rad);
-        tippe_cli_json_number_or_null(o, "spin_final_rad_s", rec->spin_final_rad_s);
-        cJSON_AddNumberToObject(o, "J0_kg_m3_s", rec->J0);
-        cJSON_AddNumberToObject(o, "jellett_rel_drift", rec->jellett_rel_drift);
-        cJSON_AddItemToObject(o, "options", hands_json_options(&a->o, 1));
-        cJSON_AddItemToObject(o, "theory", theory_json(a, r));
-    }
-    return tippe_cli_print_json(a->verb, o);
 }
 
 /* What the launch does: an end state, a range (bounded), the lift-off, or the
@@ -149,7 +75,7 @@ static void print_verdict_line(const tippe_launch_record *rec)
     }
 }
 
-static void check_text(const hands_args *a, const check_result *r)
+static void check_text(const hands_args *a, const tippe_sweep_check *r)
 {
     const tippe_dynamics_initial *ic = &r->ic;
     const tippe_launch_record *rec = &r->rec;
@@ -167,7 +93,7 @@ static void check_text(const hands_args *a, const check_result *r)
          * and it stays one; with friction, only a launch exactly on an unstable
          * steady state (--tilt 0) stays. */
         tippe_dynamics_model law;
-        tippe_cli_launch_friction(&a->o, &law);
+        tippe_launch_friction_model(&a->o, &law);
         if (tippe_dynamics_frictionless(&law))
             printf("           (t_end or the step budget came first: without friction this "
                    "launch, a steady precession, dissipates nothing and never leaves it)\n");
@@ -227,16 +153,13 @@ int tippe_cli_check(int argc, char **argv)
     if ((rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err)) != 0)
         return tippe_cli_fail(a.verb, &err, rc);
     tippe_cli_design_warnings(a.verb, d);
-    check_result r = {.d = d};
-    if ((rc = tippe_design_top(d, a.z2_mm, &r.top, &err)) != 0 ||
-        (rc = tippe_launch_central(&r.top, &a.o, a.spin.from, &r.ic, &err)) != 0 ||
-        (rc = tippe_launch_run_initial(&r.top, &a.o, &r.ic, &r.rec, &err)) != 0) {
+    tippe_sweep_check r;
+    if ((rc = tippe_sweep_check_run(d, a.z2_mm, &a.o, a.spin.from, &r, &err)) != 0) {
         tippe_design_free(d);
         return tippe_cli_fail(a.verb, &err, rc);
     }
-    hands_find_zone(d, a.z2_mm, &r.zone);
     if (a.json)
-        rc = check_json(&a, &r);
+        rc = tippe_cli_print_json(a.verb, tippe_sweep_check_json(&r, &a.o, a.sets.item, a.sets.n));
     else
         check_text(&a, &r);
     tippe_design_free(d);

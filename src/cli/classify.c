@@ -269,7 +269,7 @@ int tippe_cli_classify(int argc, char **argv)
             cJSON_AddStringToObject(o, "file", a.design);
             cJSON_AddNumberToObject(o, "z2_mm", a.z2_mm);
             tippe_cli_json_sets(o, &a.sets);
-            tippe_cli_json_model_validity(o, &a.protrusion);
+            tippe_design_protrusion_json(o, &a.protrusion);
         }
         return tippe_cli_print_json(VERB, o);
     }

@@ -47,6 +47,7 @@ int tippe_cli_animate(int argc, char **argv);
 int tippe_cli_export(int argc, char **argv);
 int tippe_cli_build(int argc, char **argv);
 int tippe_cli_slice(int argc, char **argv);
+int tippe_cli_serve(int argc, char **argv);
 /* Under mpirun with more than one rank (OMPI_COMM_WORLD_SIZE > 1), replaces the
  * process by tippe-mpi from the same directory with the same arguments; returns
  * only if it cannot (2, with a message) or if not under mpirun (0). */
@@ -257,19 +258,6 @@ void tippe_cli_design_warnings(const char *verb, const struct tippe_design *d);
  * deletes it: 0, or 1 after "tippe VERB: out of memory while writing JSON". */
 int tippe_cli_print_json(const char *verb, struct cJSON *o);
 
-/* ---- printed parts (src/cli/printed.c), for eval and sweep ---- */
-struct tippe_design;
-/* One entry per printed part: its settings, infill (calibrated or not) and
- * masses; or a line saying every part is solid. */
-void tippe_cli_print_printed_parts(FILE *out, const struct tippe_design *d);
-/* Adds "printed_parts": [...] to o (an empty array when all parts are solid);
- * -1 when out of memory. */
-int tippe_cli_printed_parts_json(struct cJSON *o, const struct tippe_design *d);
-
-/* Adds {"preset": preset, "stepper": ..., "rtol": ...} to o as "accuracy", the
- * same object in every verb that integrates. */
-void tippe_cli_json_accuracy(struct cJSON *o, const char *preset,
-                             const tippe_dynamics_accuracy *acc);
 
 /* How a dynamics verdict was reached (src/cli/verdict_out.c), the same words in
  * simulate, check and launch: the final state, the decision (trapped,
@@ -289,17 +277,9 @@ int tippe_cli_print_model_validity(const tippe_design_protrusion *p, double z2_m
 /* The same onto out (a report that gives standard output to a '-' file). */
 int tippe_cli_fprint_model_validity(FILE *out, const tippe_design_protrusion *p, double z2_mm,
                                     const char *prefix, const char *what);
-/* The same as JSON fields of o: "model_valid" (true/false) and "protrusion"
- * (null, or {part, protrusion_mm, pole ("+z"/"-z"), theta_range_rad}). */
-void tippe_cli_json_model_validity(struct cJSON *o, const tippe_design_protrusion *p);
 /* The friction law in words ("Coulomb mu_c 0.3 with sticking (sliding regularised
  * below 0.0001 m/s)", "viscous mu 2.3 s/m (eq 3.12)") into buf; returns buf. */
 const char *tippe_cli_friction_text(const tippe_dynamics_model *m, char *buf, size_t size);
-/* Adds "friction": {"law", "mu_s_m" | "mu" and "slip_scale_m_s"} to o, and the
- * older "mu_s_m" (the viscous coefficient; null under a Coulomb law). */
-void tippe_cli_json_friction(struct cJSON *o, const tippe_dynamics_model *m);
-/* The model of a launch's options (law, coefficients, g; no top). */
-void tippe_cli_launch_friction(const tippe_launch_options *o, tippe_dynamics_model *m);
 
 /* v, or null where it is not finite (not applicable). */
 void tippe_cli_json_number_or_null(struct cJSON *o, const char *key, double v);

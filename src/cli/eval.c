@@ -2,6 +2,8 @@
 #include "cli.h"
 
 #include "tippe/design.h"
+#include "tippe/profile.h"
+#include "tippe/sweep.h"
 #include "tippe/physics.h"
 
 #include <cjson/cJSON.h>
@@ -68,80 +70,7 @@ static void print_table(const tippe_design *d, double z2_mm, const tippe_top *t,
         printf("\n");
     }
     printf("\n");
-    tippe_cli_print_printed_parts(stdout, d);
-}
-
-static cJSON *to_json(const tippe_design *d, double z2_mm, const tippe_top *t)
-{
-    double from, to, cfrom, cto;
-    tippe_design_travel_mm(d, &from, &to);
-    tippe_design_contact_travel_mm(d, &cfrom, &cto);
-    cJSON *o = cJSON_CreateObject();
-    if (!o)
-        return NULL;
-    int ok = cJSON_AddStringToObject(o, "design", tippe_design_name(d)) &&
-             cJSON_AddStringToObject(o, "file", tippe_design_path(d)) &&
-             cJSON_AddNumberToObject(o, "z2_mm", z2_mm) &&
-             cJSON_AddNumberToObject(o, "mass_kg", t->m) &&
-             cJSON_AddNumberToObject(o, "moving_mass_kg", tippe_design_moving_mass_kg(d)) &&
-             cJSON_AddNumberToObject(o, "R_m", t->R) &&
-             cJSON_AddNumberToObject(o, "eps_m", t->eps) &&
-             cJSON_AddNumberToObject(o, "eps_over_R", t->eps / t->R) &&
-             cJSON_AddNumberToObject(o, "A_kg_m2", t->A) &&
-             cJSON_AddNumberToObject(o, "C_kg_m2", t->C) &&
-             cJSON_AddNumberToObject(o, "A_over_C", t->A / t->C) &&
-             cJSON_AddNumberToObject(o, "com_side", t->com_side);
-    tippe_theory_class cls;
-    if (ok && tippe_theory_classify(t->A / t->C, t->eps / t->R, &cls) == TIPPE_OK)
-        ok = cJSON_AddStringToObject(o, "group", tippe_group_family(cls.group)) &&
-             cJSON_AddStringToObject(o, "subgroup", tippe_group_name(cls.group)) &&
-             (cls.boundary ? cJSON_AddStringToObject(o, "boundary", cls.boundary)
-                           : cJSON_AddNullToObject(o, "boundary")) != NULL;
-    double tr[2] = {from, to}, ct[2] = {cfrom, cto};
-    cJSON *a1 = cJSON_CreateDoubleArray(tr, 2);
-    if (a1 && !cJSON_AddItemToObject(o, "travel_mm", a1)) {
-        cJSON_Delete(a1);
-        a1 = NULL;
-    }
-    cJSON *a2 = cJSON_CreateDoubleArray(ct, 2);
-    if (a2 && !cJSON_AddItemToObject(o, "physical_travel_mm", a2)) {
-        cJSON_Delete(a2);
-        a2 = NULL;
-    }
-    if (!ok || !a1 || !a2) {
-        cJSON_Delete(o);
-        return NULL;
-    }
-    cJSON *parts = cJSON_AddArrayToObject(o, "parts");
-    int n = tippe_design_n_parts(d);
-    for (int i = 0; parts && i < n; i++) {
-        tippe_design_part_info p;
-        cJSON *po = cJSON_CreateObject();
-        if (!po || tippe_design_part(d, i, &p) || !cJSON_AddItemToArray(parts, po)) {
-            cJSON_Delete(po);
-            ok = 0;
-            break;
-        }
-        ok = cJSON_AddStringToObject(po, "name", p.name) &&
-             cJSON_AddStringToObject(po, "shape", p.shape) &&
-             cJSON_AddStringToObject(po, "role", p.role) &&
-             cJSON_AddStringToObject(po, "material", p.material) &&
-             cJSON_AddNumberToObject(po, "density_g_cm3", p.density_g_cm3) &&
-             cJSON_AddNumberToObject(po, "mass_kg", p.mass_kg);
-        tippe_design_print_info pi;
-        ok = ok && !tippe_design_part_print(d, i, &pi) &&
-             cJSON_AddBoolToObject(po, "printed", pi.printed);
-        if (!ok)
-            break;
-    }
-    tippe_design_protrusion pr;
-    tippe_design_protrusion_at(d, z2_mm, &pr);
-    tippe_cli_json_model_validity(o, &pr);
-    if (!ok || !parts || tippe_cli_printed_parts_json(o, d)) {
-        cJSON_Delete(o);
-        return NULL;
-    }
-    return o;
+    tippe_profile_print_printed_parts(stdout, d);
 }
 
 int tippe_cli_eval(int argc, char **argv)
@@ -196,7 +125,7 @@ int tippe_cli_eval(int argc, char **argv)
         return tippe_cli_fail(VERB, &err, rc);
     }
     if (json) {
-        cJSON *o = to_json(d, z2_mm, &top);
+        cJSON *o = tippe_sweep_eval_json(d, z2_mm, &top);
         if (o)
             tippe_cli_json_sets(o, &sets);
         rc = tippe_cli_print_json(VERB, o);

@@ -207,22 +207,6 @@ int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
     return rc;
 }
 
-void hands_find_zone(const tippe_design *d, double z2, hands_zone *z)
-{
-    memset(z, 0, sizeof *z);
-    tippe_sweep_result r;
-    tippe_error e;
-    if (tippe_sweep_design(d, 0.0, 0.0, NULL, &r, &e) == TIPPE_OK)
-        for (int i = 0; i < r.n_zones; i++)
-            if (z2 >= r.zones[i].z2_from_mm && z2 <= r.zones[i].z2_to_mm) {
-                z->ok = 1;
-                z->group = r.zones[i].group;
-                z->from_mm = r.zones[i].z2_from_mm;
-                z->to_mm = r.zones[i].z2_to_mm;
-                break;
-            }
-    tippe_sweep_result_free(&r);
-}
 
 const char *hands_group_meaning(tippe_group g)
 {
@@ -238,7 +222,7 @@ const char *hands_group_meaning(tippe_group g)
 }
 
 void hands_print_top(const tippe_design *d, double z2, const tippe_top *t, double g,
-                      const hands_zone *z)
+                      const tippe_sweep_point_zone *z)
 {
     tippe_theory_class cls;
     tippe_theory_classify(t->A / t->C, t->eps / t->R, &cls);
@@ -283,34 +267,13 @@ void hands_print_model(const tippe_launch_options *o)
 {
     tippe_dynamics_model m;
     char fr[160];
-    tippe_cli_launch_friction(o, &m);
+    tippe_launch_friction_model(o, &m);
     printf("model      friction %s, g %g m/s^2, t_end %g s, accuracy %s (%s, rtol %g), verdict "
            "level\n",
            tippe_cli_friction_text(&m, fr, sizeof fr), o->g, o->t_end, o->accuracy_name,
            o->accuracy.stepper, o->accuracy.rtol);
 }
 
-cJSON *hands_json_options(const tippe_launch_options *o, int fixed_spin)
-{
-    cJSON *d = cJSON_CreateObject();
-    if (!d)
-        return NULL;
-    if (!fixed_spin) {
-        double sp[2] = {2 * M_PI * o->spin_from_rev_s, 2 * M_PI * o->spin_to_rev_s};
-        cJSON_AddItemToObject(d, "spin_uniform_rad_s", cJSON_CreateDoubleArray(sp, 2));
-    }
-    cJSON_AddNumberToObject(d, "tilt_half_normal_scale_rad", o->tilt_sd_rad);
-    cJSON_AddNumberToObject(d, "tilt_max_rad", o->tilt_max_rad);
-    cJSON_AddNumberToObject(d, "precession_rel_sd", o->precession_sd_rel);
-    cJSON_AddNumberToObject(d, "slide_half_normal_scale_m_s", o->slide_sd_m_s);
-    tippe_dynamics_model m;
-    tippe_cli_launch_friction(o, &m);
-    tippe_cli_json_friction(d, &m);
-    cJSON_AddNumberToObject(d, "g_m_s2", o->g);
-    cJSON_AddNumberToObject(d, "t_end_s", o->t_end);
-    tippe_cli_json_accuracy(d, o->accuracy_name, &o->accuracy);
-    return d;
-}
 
 static cJSON *json_counts(const tippe_launch_tally *t)
 {
@@ -368,52 +331,3 @@ cJSON *hands_json_tally(const tippe_launch_tally *t)
     return o;
 }
 
-cJSON *hands_json_theory(const tippe_top *t, double g, const hands_zone *z,
-                          const tippe_launch_tally *tl)
-{
-    cJSON *o = cJSON_CreateObject();
-    if (!o)
-        return NULL;
-    tippe_theory_class cls;
-    tippe_theory_classify(t->A / t->C, t->eps / t->R, &cls);
-    cJSON_AddStringToObject(o, "group", tippe_group_family(cls.group));
-    cJSON_AddStringToObject(o, "subgroup", tippe_group_name(cls.group));
-    cJSON_AddNumberToObject(o, "A_over_C", t->A / t->C);
-    cJSON_AddNumberToObject(o, "eps_over_R", t->eps / t->R);
-    if (z->ok) {
-        double b[2] = {z->from_mm, z->to_mm};
-        cJSON_AddItemToObject(o, "zone_mm", cJSON_CreateDoubleArray(b, 2));
-    } else {
-        cJSON_AddNullToObject(o, "zone_mm");
-    }
-    tippe_theory_thresholds th;
-    tippe_error e;
-    if (tippe_theory_compute_thresholds(t, g, &th, &e) == TIPPE_OK) {
-        if (th.has_n_minus)
-            cJSON_AddNumberToObject(o, "n_minus_rad_s", th.n_minus_rad_s);
-        else
-            cJSON_AddNullToObject(o, "n_minus_rad_s");
-        if (th.has_n_star)
-            cJSON_AddNumberToObject(o, "n_star_rad_s", th.n_star_rad_s);
-        else
-            cJSON_AddNullToObject(o, "n_star_rad_s");
-    }
-    if (tl) {
-        cJSON *p = cJSON_AddObjectToObject(o, "predicted");
-        for (unsigned m = 0; p && m < 8; m++)
-            if (tl->predicted[m])
-                cJSON_AddNumberToObject(p, tippe_launch_predicted_name(m), (double)tl->predicted[m]);
-        cJSON_AddNumberToObject(o, "agree", (double)tl->agree);
-        cJSON_AddNumberToObject(o, "comparable", (double)tl->comparable);
-        double lo, hi;
-        tippe_launch_wilson(tl->agree, tl->comparable, TIPPE_LAUNCH_Z95, &lo, &hi);
-        if (tl->comparable)
-            cJSON_AddNumberToObject(o, "agreement", (double)tl->agree / (double)tl->comparable);
-        else
-            cJSON_AddNullToObject(o, "agreement");
-        double b[2] = {lo, hi};
-        cJSON_AddItemToObject(o, "agreement_ci95", cJSON_CreateDoubleArray(b, 2));
-        cJSON_AddNumberToObject(o, "hang_tolerance_rad", TIPPE_LAUNCH_HANG_AGREE_RAD);
-    }
-    return o;
-}

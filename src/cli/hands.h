@@ -7,6 +7,7 @@
 #define TIPPE_CLI_HANDS_H
 
 #include "cli.h"
+#include "tippe/sweep.h"
 
 #include "tippe/design.h"
 #include "tippe/physics.h"
@@ -45,27 +46,18 @@ typedef struct {
  * 0, TIPPE_CLI_HELP after --help (printed by rank 0 only), or 2. */
 int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv);
 
-/* The zone of the design's sweep that contains z2 (over the stated travel). */
-typedef struct {
-    int ok;
-    tippe_group group;
-    double from_mm, to_mm;
-} hands_zone;
-void hands_find_zone(const tippe_design *d, double z2, hands_zone *z);
 const char *hands_group_meaning(tippe_group g);
 
 /* The text lines: the top at z2 (with its zone and thresholds), the launch
  * distribution (fixed_spin: the spin is not drawn) and the model. */
 void hands_print_top(const tippe_design *d, double z2, const tippe_top *t, double g,
-                     const hands_zone *z);
+                     const tippe_sweep_point_zone *z);
 void hands_print_distribution(const tippe_launch_options *o, int fixed_spin);
 void hands_print_model(const tippe_launch_options *o);
 
-/* The JSON pieces: the options, one tally, and theory beside a tally (tl may be NULL). */
-struct cJSON *hands_json_options(const tippe_launch_options *o, int fixed_spin);
+/* The JSON of one tally (the options: tippe_launch_options_json; theory beside
+ * a tally: tippe_sweep_theory_json). */
 struct cJSON *hands_json_tally(const tippe_launch_tally *t);
-struct cJSON *hands_json_theory(const tippe_top *t, double g, const hands_zone *z,
-                                const tippe_launch_tally *tl);
 
 extern const char *const hands_verdict_names[TIPPE_LAUNCH_N_VERDICTS];
 

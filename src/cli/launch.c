@@ -167,7 +167,7 @@ static int launch_parse(hands_args *a, int argc, char **argv)
 }
 
 static void launch_json(const hands_args *a, const tippe_design *d, const tippe_top *top,
-                        const tippe_launch_tally *t, const hands_zone *z, int *rc)
+                        const tippe_launch_tally *t, const tippe_sweep_point_zone *z, int *rc)
 {
     /* No timings or thread counts: the JSON is the same on any machine
      * layout, byte for byte. */
@@ -180,9 +180,9 @@ static void launch_json(const hands_args *a, const tippe_design *d, const tippe_
         cJSON_AddNumberToObject(o, "seed", (double)a->seed);
         tippe_design_protrusion pr;
         tippe_design_protrusion_at(d, a->z2_mm, &pr);
-        tippe_cli_json_model_validity(o, &pr);
-        cJSON_AddItemToObject(o, "theory", hands_json_theory(top, a->o.g, z, t));
-        cJSON_AddItemToObject(o, "distribution", hands_json_options(&a->o, 0));
+        tippe_design_protrusion_json(o, &pr);
+        cJSON_AddItemToObject(o, "theory", tippe_sweep_theory_json(top, a->o.g, z, t));
+        cJSON_AddItemToObject(o, "distribution", tippe_launch_options_json(&a->o, 0));
         cJSON_AddNumberToObject(o, "max_jellett_rel_drift", t->max_jellett_rel_drift);
         cJSON_AddNumberToObject(o, "rhs_evals", t->rhs_evals);
     }
@@ -190,7 +190,7 @@ static void launch_json(const hands_args *a, const tippe_design *d, const tippe_
 }
 
 static void launch_text(const hands_args *a, const tippe_design *d, const tippe_top *top,
-                        const tippe_launch_tally *t, const hands_zone *z, double elapsed)
+                        const tippe_launch_tally *t, const tippe_sweep_point_zone *z, double elapsed)
 {
     hands_print_top(d, a->z2_mm, top, a->o.g, z);
     char sets[1024];
@@ -232,8 +232,8 @@ static int launch_run(const hands_args *a, const tippe_design *d, const tippe_to
         rc = write_launch_csv(a->csv, rec, a->n, &err);
     if (rc)
         return tippe_cli_fail(a->verb, &err, rc);
-    hands_zone z;
-    hands_find_zone(d, a->z2_mm, &z);
+    tippe_sweep_point_zone z;
+    tippe_sweep_zone_at(d, a->z2_mm, &z);
     if (a->json)
         launch_json(a, d, top, &t, &z, &rc);
     else

@@ -264,7 +264,7 @@ static int map_json(const hands_args *a, const tippe_design *d, const map_grid *
         cJSON *sp = cJSON_AddArrayToObject(o, "spin_rad_s");
         for (int j = 0; sp && j < g->sn; j++)
             cJSON_AddItemToArray(sp, cJSON_CreateNumber(2 * M_PI * g->spin_rev_s[j]));
-        cJSON_AddItemToObject(o, "distribution", hands_json_options(&a->o, 1));
+        cJSON_AddItemToObject(o, "distribution", tippe_launch_options_json(&a->o, 1));
         cJSON_AddItemToObject(o, "zones", zones_json(d, g));
         cJSON_AddItemToObject(o, "cells", cells_json(g));
     }

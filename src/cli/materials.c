@@ -52,30 +52,6 @@ static void print_table(const tippe_materials *t, const char *file, const char *
            "materials.json next to it).\n");
 }
 
-static cJSON *to_json(const tippe_materials *t, const char *file)
-{
-    cJSON *o = cJSON_CreateObject();
-    cJSON *arr = o ? cJSON_AddArrayToObject(o, "materials") : NULL;
-    if (!arr || !cJSON_AddStringToObject(o, "file", file)) {
-        cJSON_Delete(o);
-        return NULL;
-    }
-    for (int i = 0; i < tippe_materials_count(t); i++) {
-        tippe_material m;
-        tippe_materials_get(t, i, &m);
-        cJSON *e = cJSON_CreateObject();
-        if (!e || !cJSON_AddItemToArray(arr, e) || !cJSON_AddStringToObject(e, "name", m.name) ||
-            !cJSON_AddNumberToObject(e, "density_g_cm3", m.density_g_cm3) ||
-            !cJSON_AddBoolToObject(e, "printable", m.printable) ||
-            !cJSON_AddStringToObject(e, "source", m.source) ||
-            !cJSON_AddStringToObject(e, "notes", m.notes)) {
-            cJSON_Delete(o);
-            return NULL;
-        }
-    }
-    return o;
-}
-
 /* The table to show: FILE (a table or a design), else the repository's. Fills
  * file and why; 0, or 2 after a message that says how to fix it. */
 static int find_table(const char *arg, char *file, size_t size, const char **why)
@@ -156,7 +132,7 @@ int tippe_cli_materials(int argc, char **argv)
         return rc == TIPPE_EINPUT ? 2 : 1;
     }
     if (json)
-        rc = tippe_cli_print_json(VERB, to_json(t, file));
+        rc = tippe_cli_print_json(VERB, tippe_materials_json(t, file));
     else
         print_table(t, file, why);
     tippe_materials_free(t);

@@ -306,15 +306,6 @@ int tippe_cli_print_json(const char *verb, cJSON *o)
     return 0;
 }
 
-void tippe_cli_json_accuracy(cJSON *o, const char *preset, const tippe_dynamics_accuracy *acc)
-{
-    cJSON *a = cJSON_AddObjectToObject(o, "accuracy");
-    if (a) {
-        cJSON_AddStringToObject(a, "preset", preset);
-        cJSON_AddStringToObject(a, "stepper", acc->stepper);
-        cJSON_AddNumberToObject(a, "rtol", acc->rtol);
-    }
-}
 
 double tippe_cli_now_s(void)
 {

@@ -221,7 +221,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
         cJSON_AddStringToObject(top, "group", tippe_group_name(tc->cls.group));
     }
     cJSON_AddNumberToObject(o, "g_m_s2", sc->model.g);
-    tippe_cli_json_friction(o, &sc->model);
+    tippe_dynamics_friction_json(o, &sc->model);
     cJSON *ini = cJSON_AddObjectToObject(o, "initial");
     if (ini) {
         cJSON_AddNumberToObject(ini, "theta_rad", sc->initial.theta);
@@ -234,7 +234,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
         cJSON_AddNumberToObject(ini, "V_m_s", sc->initial.V);
     }
     cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(r->verdict));
-    tippe_cli_json_model_validity(o, &sc->protrusion);
+    tippe_design_protrusion_json(o, &sc->protrusion);
     cJSON_AddNumberToObject(o, "t_s", r->t_verdict);
     json_sample_fields(o, &r->final);
     tippe_cli_json_verdict_proof(o, r);
@@ -256,7 +256,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
     cJSON_AddBoolToObject(o, "budget_exhausted", r->budget_exhausted);
     cJSON_AddNumberToObject(o, "state_dim", r->state_dim);
     cJSON_AddNumberToObject(o, "elapsed_s", elapsed_s);
-    tippe_cli_json_accuracy(o, sc->accuracy_name, &sc->accuracy);
+    tippe_dynamics_accuracy_json(o, sc->accuracy_name, &sc->accuracy);
     cJSON *th = cJSON_AddObjectToObject(o, "theory");
     if (th) {
         cJSON_AddStringToObject(th, "group", tippe_group_name(tc->cls.group));

@@ -9,6 +9,7 @@
 #include "tippe/build.h"
 #include "tippe/design.h"
 #include "tippe/export.h"
+#include "tippe/profile.h"
 #include "tippe/sweep.h"
 
 #include <cjson/cJSON.h>
@@ -276,7 +277,7 @@ int tippe_cli_slice(int argc, char **argv)
         cJSON_AddItemToObject(o, "model", tippe_sweep_json(&rm, d));
         cJSON *sp = cJSON_AddObjectToObject(o, "sliced_parts");
         if (sp)
-            tippe_cli_printed_parts_json(sp, s);
+            tippe_profile_printed_parts_json(sp, s);
         rc = tippe_cli_print_json(VERB, o);
     } else {
         printf("design   %s\nG-code   %s (profile %s)\n", a.path, gcode, profile);

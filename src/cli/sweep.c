@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include "tippe/design.h"
+#include "tippe/profile.h"
 #include "tippe/plot.h"
 #include "tippe/sweep.h"
 
@@ -234,11 +235,7 @@ static int sweep_run(const sweep_args *a, const tippe_design *d, const char *tit
     if (rc) {
         rc = tippe_cli_fail(VERB, &err, rc);
     } else if (a->json) {
-        cJSON *o = tippe_sweep_json(&r, d);
-        if (o && (tippe_sweep_json_add_bands(o, d, &r, &b) || tippe_cli_printed_parts_json(o, d))) {
-            cJSON_Delete(o);
-            o = NULL;
-        }
+        cJSON *o = tippe_sweep_report_json(d, &r, &b);
         if (o)
             tippe_cli_json_sets(o, &a->sets);
         rc = tippe_cli_print_json(VERB, o);
@@ -249,7 +246,7 @@ static int sweep_run(const sweep_args *a, const tippe_design *d, const char *tit
         tippe_sweep_print_table(stdout, &r, d);
         tippe_sweep_print_bands(stdout, d, &r, &b);
         printf("\n");
-        tippe_cli_print_printed_parts(stdout, d);
+        tippe_profile_print_printed_parts(stdout, d);
     }
     tippe_sweep_bands_free(&b);
     tippe_sweep_result_free(&r);

@@ -33,6 +33,8 @@ const tippe_cli_verb tippe_cli_verbs[] = {
      0},
     {"slice", tippe_cli_slice, "slice the printed body with PrusaSlicer and read its G-code back",
      0},
+    {"serve", tippe_cli_serve, "the calculator as a local web page, live as you edit a design",
+     0},
 };
 const int tippe_cli_n_verbs = (int)(sizeof tippe_cli_verbs / sizeof tippe_cli_verbs[0]);
 

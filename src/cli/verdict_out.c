@@ -118,35 +118,7 @@ const char *tippe_cli_friction_text(const tippe_dynamics_model *m, char *buf, si
     return buf;
 }
 
-void tippe_cli_json_friction(cJSON *o, const tippe_dynamics_model *m)
-{
-    if (m->law == TIPPE_FRICTION_VISCOUS)
-        cJSON_AddNumberToObject(o, "mu_s_m", m->mu);
-    else
-        cJSON_AddNullToObject(o, "mu_s_m");
-    cJSON *f = cJSON_AddObjectToObject(o, "friction");
-    if (!f)
-        return;
-    cJSON_AddStringToObject(f, "law", tippe_friction_law_name(m->law));
-    if (m->law == TIPPE_FRICTION_VISCOUS) {
-        cJSON_AddNumberToObject(f, "mu_s_m", m->mu);
-        return;
-    }
-    cJSON_AddNumberToObject(f, "mu", m->mu_c);
-    cJSON_AddNumberToObject(f, "slip_scale_m_s", m->slip_scale_m_s > 0
-                                                     ? m->slip_scale_m_s
-                                                     : TIPPE_COULOMB_SLIP_SCALE_M_S);
-}
 
-void tippe_cli_launch_friction(const tippe_launch_options *o, tippe_dynamics_model *m)
-{
-    memset(m, 0, sizeof *m);
-    m->g = o->g;
-    m->law = o->law;
-    m->mu = o->mu;
-    m->mu_c = o->mu_c;
-    m->slip_scale_m_s = o->slip_scale_m_s;
-}
 
 int tippe_cli_fprint_model_validity(FILE *out, const tippe_design_protrusion *p, double z2_mm,
                                     const char *prefix, const char *what)
@@ -166,21 +138,4 @@ int tippe_cli_print_model_validity(const tippe_design_protrusion *p, double z2_m
                                    const char *prefix, const char *what)
 {
     return tippe_cli_fprint_model_validity(stdout, p, z2_mm, prefix, what);
-}
-
-void tippe_cli_json_model_validity(cJSON *o, const tippe_design_protrusion *p)
-{
-    const int out = p->protrusion_mm > 0;
-    cJSON_AddBoolToObject(o, "model_valid", !out);
-    if (!out) {
-        cJSON_AddNullToObject(o, "protrusion");
-        return;
-    }
-    cJSON *po = cJSON_AddObjectToObject(o, "protrusion");
-    if (!po)
-        return;
-    cJSON_AddStringToObject(po, "part", p->part);
-    cJSON_AddNumberToObject(po, "protrusion_mm", p->protrusion_mm);
-    cJSON_AddStringToObject(po, "pole", p->pole > 0 ? "+z" : "-z");
-    tippe_cli_json_range(po, "theta_range_rad", p->theta_from_rad, p->theta_to_rad);
 }

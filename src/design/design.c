@@ -169,7 +169,15 @@ static int resolve_materials(const tippe_json_reader *c, const char *path, const
         return TIPPE_OK;
     char mat_file[1024];
     const char *slash = strrchr(path, '/');
-    if (mat_rel[0] == '/' || !slash)
+    if (d->materials_dir) {
+        /* a design from memory names no file: the shipped table only */
+        if (strcmp(mat_rel, "materials.json"))
+            return tippe_json_fail(c, "materials",
+                                   "'%s': a design sent as text uses the materials table "
+                                   "materials.json of the designs folder and names no other "
+                                   "file", mat_rel);
+        snprintf(mat_file, sizeof mat_file, "%s/materials.json", d->materials_dir);
+    } else if (mat_rel[0] == '/' || !slash)
         snprintf(mat_file, sizeof mat_file, "%s", mat_rel);
     else
         snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
@@ -411,8 +419,11 @@ int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tipp
 /* Keeps the overrides a design was built with (src/design/design.c, below), so that
  * tippe_design_derive can rebuild it with more. */
 
-static int load(const char *path, const char *const *overrides, int n_overrides, int check,
-                tippe_design **out, tippe_error *err)
+/* A design read from a file (text NULL) or from text in memory (path then only
+ * names it in messages, and its materials table is materials_dir's). */
+static int load(const char *path, const char *text, size_t text_len, const char *materials_dir,
+                const char *const *overrides, int n_overrides, int check, tippe_design **out,
+                tippe_error *err)
 {
     /* The geometry module may call GSL: report, never abort. */
     tippe_gsl_errors_as_codes();
@@ -430,7 +441,18 @@ static int load(const char *path, const char *const *overrides, int n_overrides,
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
     }
     cJSON *root = NULL;
-    int rc = tippe_json_load(c, MAX_FILE_MIB, "design", &root);
+    int rc = TIPPE_OK;
+    if (text && (!(d->text = malloc(text_len + 1)) ||
+                 !(d->materials_dir = tippe_design_dup_string(materials_dir))))
+        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    else if (text) {
+        memcpy(d->text, text, text_len);
+        d->text[text_len] = '\0';
+        d->text_len = text_len;
+    }
+    if (!rc)
+        rc = text ? tippe_json_parse_text(c, text, text_len, MAX_FILE_MIB, "design", &root)
+                  : tippe_json_load(c, MAX_FILE_MIB, "design", &root);
     if (!rc)
         rc = tippe_json_check_duplicates(c, root, "");
     for (int i = 0; !rc && i < n_overrides; i++)
@@ -452,11 +474,22 @@ static int load(const char *path, const char *const *overrides, int n_overrides,
 int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
                       tippe_design **out, tippe_error *err)
 {
-    return load(path, overrides, n_overrides, 1, out, err);
+    return load(path, NULL, 0, NULL, overrides, n_overrides, 1, out, err);
 }
 
-int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_extra,
-                        tippe_design **out, tippe_error *err)
+int tippe_design_load_text(const char *name, const char *text, size_t len,
+                           const char *materials_dir, const char *const *overrides,
+                           int n_overrides, tippe_design **out, tippe_error *err)
+{
+    *out = NULL;
+    if (!text || !materials_dir)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: no design text given", name);
+    return load(name, text, len, materials_dir, overrides, n_overrides, 1, out, err);
+}
+
+/* d's file or text again, with d's overrides and then extra ones. */
+static int reload(const tippe_design *d, const char *const *extra, int n_extra, int check,
+                  tippe_design **out, tippe_error *err)
 {
     *out = NULL;
     if (n_extra < 0)
@@ -468,9 +501,22 @@ int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_e
         all[i] = d->overrides[i];
     for (int i = 0; i < n_extra; i++)
         all[d->n_overrides + i] = extra[i];
-    int rc = load(d->path, all, d->n_overrides + n_extra, 0, out, err);
+    int rc = load(d->path, d->text, d->text_len, d->materials_dir, all, d->n_overrides + n_extra,
+                  check, out, err);
     free(all);
     return rc;
+}
+
+int tippe_design_reload(const tippe_design *d, const char *const *extra, int n_extra,
+                        tippe_design **out, tippe_error *err)
+{
+    return reload(d, extra, n_extra, 1, out, err);
+}
+
+int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_extra,
+                        tippe_design **out, tippe_error *err)
+{
+    return reload(d, extra, n_extra, 0, out, err);
 }
 
 /* Part i's length fields below LENGTH_HINT_MM, one at a time (*k counts them
@@ -595,6 +641,8 @@ void tippe_design_free(tippe_design *d)
     free(d->tolerances);
     free(d->rs);
     free(d->path);
+    free(d->text);
+    free(d->materials_dir);
     free(d->name);
     free(d->parts);
     free(d);

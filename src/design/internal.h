@@ -90,6 +90,11 @@ typedef struct {
 
 struct tippe_design {
     char *path, *name;
+    /* A design loaded from memory (tippe_design_load_text): its text, kept for
+     * tippe_design_derive and _reload, and the folder of its materials table;
+     * NULL for a file. */
+    char *text, *materials_dir;
+    size_t text_len;
     double radius_mm;
     double travel_mm[2], contact_mm[2];
     char contact_limit[2][256];

@@ -479,3 +479,45 @@ int tippe_launch_dominant(const tippe_launch_tally *t)
             best = v;
     return best;
 }
+
+typedef struct {
+    double *t, *theta;
+    int n, cap;
+} trace_ctx;
+
+static int trace_sample(const tippe_dynamics_sample *s, void *ctx)
+{
+    trace_ctx *c = ctx;
+    if (c->n < c->cap) {
+        c->t[c->n] = s->t;
+        c->theta[c->n] = s->theta;
+        c->n++;
+    }
+    return 0;
+}
+
+int tippe_launch_trace(const tippe_top *top, const tippe_launch_options *o,
+                       const tippe_dynamics_initial *ic, double t_end_s, int n, double *t_s,
+                       double *theta_rad, int *n_out, tippe_error *err)
+{
+    *n_out = 0;
+    if (n < 2 || !(t_end_s > 0) || !isfinite(t_end_s))
+        return tippe_error_set(err, TIPPE_EINPUT, "a trace needs 2 samples or more over a "
+                                                  "positive time");
+    tippe_dynamics_model m;
+    model_of(top, o, &m);
+    tippe_dynamics_options opt;
+    tippe_dynamics_options_default(&opt);
+    opt.level = TIPPE_LEVEL_TRAJECTORY;
+    opt.t_end = t_end_s;
+    opt.accuracy = o->accuracy;
+    opt.sample_dt = t_end_s / (n - 1);
+    opt.run_to_t_end = 1;
+    trace_ctx c = {t_s, theta_rad, 0, n};
+    opt.on_sample = trace_sample;
+    opt.sample_ctx = &c;
+    tippe_dynamics_result res;
+    int rc = tippe_dynamics_run(&m, ic, &opt, &res, err);
+    *n_out = c.n;
+    return rc;
+}

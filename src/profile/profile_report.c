@@ -1,7 +1,7 @@
-/* How a design's parts are printed, for eval and sweep (text and JSON). */
-#include "cli.h"
-
-#include "tippe/design.h"
+/* How a design's parts are printed, as a report (text and JSON) for eval and
+ * sweep, with the bodies tippe export writes. Apart from profile.c, in the
+ * library's core: it calls the profile builder (GEOS) through the command's
+ * stub, so that a command loads GEOS only when it reports. */
 #include "tippe/profile.h"
 
 #include <cjson/cJSON.h>
@@ -64,7 +64,7 @@ static int bodies_json(struct cJSON *o, const tippe_design *d)
     return ok ? 0 : -1;
 }
 
-void tippe_cli_print_printed_parts(FILE *out, const tippe_design *d)
+void tippe_profile_print_printed_parts(FILE *out, const tippe_design *d)
 {
     int any = 0;
     for (int i = 0; i < tippe_design_n_parts(d); i++) {
@@ -125,7 +125,7 @@ void tippe_cli_print_printed_parts(FILE *out, const tippe_design *d)
     print_bodies(out, d);
 }
 
-int tippe_cli_printed_parts_json(struct cJSON *o, const tippe_design *d)
+int tippe_profile_printed_parts_json(struct cJSON *o, const tippe_design *d)
 {
     cJSON *arr = cJSON_AddArrayToObject(o, "printed_parts");
     if (!arr)

@@ -1,0 +1,47 @@
+/* tippe/serve.h: tippe serve, the calculator as a local web page.
+ *
+ * A front end like the command (layer 7, docs/architecture.md): a small HTTP
+ * server (libmicrohttpd) that serves one page, built into the program, and a
+ * JSON API over the library (docs/serve.md). It parses requests, checks their
+ * limits, calls the library and writes responses; it never computes physics and
+ * never opens a file a request names (it reads only the shipped designs folder).
+ *
+ * Requests that compute run on a bounded pool of worker threads with a bounded
+ * queue (beyond it: 503 with Retry-After); each has a wall-clock budget (past
+ * it: 503, a JSON error). SIGINT and SIGTERM stop the server: it stops
+ * accepting, lets the requests in flight finish within their budget, removes
+ * its temporary files and returns. */
+#ifndef TIPPE_SERVE_H
+#define TIPPE_SERVE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "tippe/base.h"
+
+/* Defaults and limits (docs/serve.md, "Limits"). */
+#define TIPPE_SERVE_DEFAULT_LISTEN "127.0.0.1:8765"
+#define TIPPE_SERVE_MAX_BODY_BYTES (1 << 20)  /* a request's body: 1 MiB */
+#define TIPPE_SERVE_MAX_DEPTH 32              /* JSON nesting of a request */
+#define TIPPE_SERVE_DEFAULT_BUDGET_S 30.0     /* wall clock per request */
+#define TIPPE_SERVE_MAX_FILM_S 8.0            /* model time of a film */
+#define TIPPE_SERVE_MAX_FILM_PX 480           /* a film's width and height */
+#define TIPPE_SERVE_MAX_FILM_FPS 25
+
+typedef struct {
+    const char *listen;      /* "HOST:PORT" (IPv4, "[IPv6]" or localhost); NULL: the default */
+    const char *designs_dir; /* the shipped designs, materials and catalogue */
+    int threads;             /* workers; 0: one per core */
+    int queue;               /* requests waiting for a worker; 0: 16 per worker */
+    double budget_s;         /* wall clock per request; 0: the default */
+    const char *token;       /* the access token; NULL: random when not on loopback */
+    FILE *log;               /* the URL to open, then one line per refused or failed
+                                request; NULL: nothing */
+} tippe_serve_options;
+
+/* Serves until SIGINT or SIGTERM (blocked in the calling thread and the
+ * server's threads, and waited for here). TIPPE_EINPUT for a bad --listen or
+ * designs folder, TIPPE_ECOMPUTE if the server cannot start (address in use). */
+int tippe_serve_run(const tippe_serve_options *o, tippe_error *err);
+
+#endif

@@ -1,0 +1,52 @@
+/* A design's reports shared by every verb that places the weight at one Z2. */
+#include "tippe/design.h"
+
+#include <cjson/cJSON.h>
+
+#include <math.h>
+
+void tippe_design_protrusion_json(cJSON *o, const tippe_design_protrusion *p)
+{
+    const int out = p->protrusion_mm > 0;
+    cJSON_AddBoolToObject(o, "model_valid", !out);
+    if (!out) {
+        cJSON_AddNullToObject(o, "protrusion");
+        return;
+    }
+    cJSON *po = cJSON_AddObjectToObject(o, "protrusion");
+    if (!po)
+        return;
+    cJSON_AddStringToObject(po, "part", p->part);
+    cJSON_AddNumberToObject(po, "protrusion_mm", p->protrusion_mm);
+    cJSON_AddStringToObject(po, "pole", p->pole > 0 ? "+z" : "-z");
+    if (!isfinite(p->theta_from_rad) || !isfinite(p->theta_to_rad)) {
+        cJSON_AddNullToObject(po, "theta_range_rad");
+        return;
+    }
+    const double range[2] = {p->theta_from_rad, p->theta_to_rad};
+    cJSON_AddItemToObject(po, "theta_range_rad", cJSON_CreateDoubleArray(range, 2));
+}
+
+cJSON *tippe_materials_json(const tippe_materials *t, const char *file)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON *arr = o ? cJSON_AddArrayToObject(o, "materials") : NULL;
+    if (!arr || (file && !cJSON_AddStringToObject(o, "file", file))) {
+        cJSON_Delete(o);
+        return NULL;
+    }
+    for (int i = 0; i < tippe_materials_count(t); i++) {
+        tippe_material m;
+        tippe_materials_get(t, i, &m);
+        cJSON *e = cJSON_CreateObject();
+        if (!e || !cJSON_AddItemToArray(arr, e) || !cJSON_AddStringToObject(e, "name", m.name) ||
+            !cJSON_AddNumberToObject(e, "density_g_cm3", m.density_g_cm3) ||
+            !cJSON_AddBoolToObject(e, "printable", m.printable) ||
+            !cJSON_AddStringToObject(e, "source", m.source) ||
+            !cJSON_AddStringToObject(e, "notes", m.notes)) {
+            cJSON_Delete(o);
+            return NULL;
+        }
+    }
+    return o;
+}

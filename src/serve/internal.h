@@ -1,0 +1,167 @@
+/* serve/internal.h: what the files of tippe serve share (src/serve/):
+ * serve.c runs the server (options, address, signals, workers, the watchdog),
+ * serve_http.c speaks HTTP (libmicrohttpd: routes, the checks every request
+ * passes, bodies, suspended requests), serve_request.c reads a request's JSON
+ * strictly, serve_api.c answers the endpoints by calling the library, and
+ * serve_zip.c packs the build's files; the page's files are built in
+ * (serve_page.c, generated from src/serve/page/ by cmake/embed.cmake). */
+#ifndef TIPPE_SERVE_INTERNAL_H
+#define TIPPE_SERVE_INTERNAL_H
+
+#include "tippe/design.h"
+#include "tippe/serve.h"
+
+#include <cjson/cJSON.h>
+#include <pthread.h>
+#include <stddef.h>
+
+struct MHD_Connection;
+
+/* ---- a response ---- */
+typedef struct {
+    int status;              /* HTTP status; 0: not set */
+    const char *type;        /* Content-Type */
+    char *body;              /* malloc'd (owned), or NULL */
+    size_t len;
+    char filename[128];      /* Content-Disposition: attachment; "" for none */
+    int retry_after_s;       /* Retry-After on a 503; 0: none */
+} serve_response;
+
+/* o (taken, may be NULL: out of memory) as the JSON body of status. */
+void tippe_serve_respond_json(serve_response *r, int status, cJSON *o);
+/* {"error": message, "field": field (or null), "status": status}. */
+void tippe_serve_respond_error(serve_response *r, int status, const char *field, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+void tippe_serve_response_free(serve_response *r);
+
+/* ---- the shipped designs, read once at start ---- */
+typedef struct {
+    char name[96];   /* the file's stem: "m12-setscrew" */
+    char title[256]; /* its "name" field */
+    char *text;
+    size_t len;
+} serve_design;
+
+/* ---- the server ---- */
+typedef struct serve_server serve_server;
+
+typedef struct {
+    const char *path;   /* "/api/sweep" */
+    int compute;        /* 1: runs on a worker (POST, JSON body); 0: answered at once (GET) */
+    int exclusive;      /* 1: one at a time (writes files through tippe/base.h's reports) */
+    void (*answer)(serve_server *s, const cJSON *req, serve_response *out);
+} serve_route;
+
+struct serve_server {
+    tippe_serve_options o;
+    char designs_dir[4096];
+    int loopback;        /* listening on a loopback address only */
+    char token[65];      /* "" on loopback without --token */
+    int port;
+    char host[300];      /* the address as the URL gives it: "127.0.0.1", "[::1]" */
+    serve_design *designs;
+    int n_designs;
+    char *materials_json; /* GET /api/materials, built at start */
+    size_t materials_len;
+    /* work: a bounded queue, a pool of workers and the requests in flight */
+    pthread_mutex_t lock;
+    pthread_cond_t wake;
+    pthread_mutex_t exclusive; /* routes with exclusive set */
+    struct serve_job *queue_head, *queue_tail, *in_flight;
+    int queued, queue_max;
+    int stopping;
+    int n_workers, n_started;
+    pthread_t *workers;
+    /* hands a suspended request back to libmicrohttpd (serve_http.c sets it) */
+    void (*resume)(struct MHD_Connection *con);
+    /* temporaries (build folders): removed after sending and at stop */
+    pthread_mutex_t tmp_lock;
+    char tmp_dirs[64][4096];
+    int n_tmp;
+    /* counts, for the log */
+    long served, refused, over_budget;
+    struct MHD_Daemon *daemon;
+};
+
+/* A request that computes: queued, then run by a worker, then answered. */
+typedef enum { JOB_QUEUED, JOB_RUNNING, JOB_DONE, JOB_ANSWERED } serve_job_state;
+typedef struct serve_job {
+    int refs; /* the connection's and the queue's or worker's */
+    serve_job_state state;
+    double t_queued_s;
+    const serve_route *route;
+    cJSON *req;
+    serve_response resp;      /* the worker's */
+    serve_response timeout;   /* the watchdog's, when the budget ran out */
+    struct MHD_Connection *con;
+    struct serve_job *next, *next_in_flight;
+} serve_job;
+
+double tippe_serve_now_s(void);
+/* serve_http.c */
+int tippe_serve_http_start(serve_server *s, tippe_error *err);
+void tippe_serve_http_stop(serve_server *s);
+
+/* serve_work.c: the workers (start, stop taking work, join), the queue (the
+ * caller checked that it has room), the watchdog's check (under no lock). */
+int tippe_serve_work_start(serve_server *s, tippe_error *err);
+void tippe_serve_work_stop(serve_server *s);
+/* Joins the workers: how many are still computing (detached, cut at exit). */
+int tippe_serve_work_join(serve_server *s);
+int tippe_serve_work_busy(serve_server *s);
+void tippe_serve_tmp_remove_all(serve_server *s);
+void tippe_serve_enqueue(serve_server *s, serve_job *j);
+void tippe_serve_job_release(serve_server *s, serve_job *j);
+void tippe_serve_watchdog(serve_server *s);
+const serve_route *tippe_serve_find_route(const char *path);
+/* A temporary folder for one request (mkdtemp under TMPDIR), recorded so that
+ * a stop removes it: 0 or -1. tippe_serve_tmp_remove removes it and its files. */
+int tippe_serve_tmp_make(serve_server *s, char *dir, size_t size);
+void tippe_serve_tmp_remove(serve_server *s, const char *dir);
+
+/* ---- serve_request.c: a request's JSON, strictly ---- */
+/* Parses body (len bytes): a JSON object nested at most TIPPE_SERVE_MAX_DEPTH
+ * deep. NULL with a 400 in out when it is not. */
+cJSON *tippe_serve_request_parse(const char *body, size_t len, serve_response *out);
+/* Refuses a key of req not in allowed (NULL-terminated): 0, or -1 with a 400
+ * naming the field. */
+int tippe_serve_request_keys(const cJSON *req, const char *const *allowed, serve_response *out);
+/* A number at key in [min, max]; absent: *v keeps its default unless required.
+ * 0, or -1 with a 400 naming the field and what is wrong. */
+int tippe_serve_request_number(const cJSON *req, const char *key, double min, double max,
+                         int required, double *v, serve_response *out);
+/* A string at key that is one of words (NULL-terminated): its index, or -1
+ * with a 400; absent: def (or a 400 when def < 0). */
+int tippe_serve_request_word(const cJSON *req, const char *key, const char *const *words, int def,
+                       serve_response *out);
+/* The design at key: an object (a design file's content) or the name of a
+ * shipped design; loaded with the shipped materials table under the name stem
+ * (NULL: key), which its messages and the files of a build start with. NULL
+ * with a 400 naming the field (the loader's message: field and what is wrong). */
+tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, const char *key,
+                                         const char *stem, serve_response *out);
+/* The string at key as a file stem (letters, digits, '-', '_'; at most 64) into
+ * stem, left as it was when absent: 0, or -1 with a 400. */
+int tippe_serve_request_stem(const cJSON *req, const char *key, char *stem, size_t size,
+                             serve_response *out);
+/* The shipped design called name, or NULL. */
+const serve_design *tippe_serve_find_design(const serve_server *s, const char *name);
+
+/* ---- serve_api.c: the endpoints ---- */
+extern const serve_route tippe_serve_routes[];
+
+/* ---- serve_zip.c: files of a folder into one zip in memory (libzip) ---- */
+int tippe_serve_zip_folder(const char *dir, const char *const *names, int n, char **out,
+                     size_t *len, tippe_error *err);
+
+/* ---- serve_page.c (generated): the page's files ---- */
+typedef struct {
+    const char *path; /* "/app.js" */
+    const char *type;
+    const unsigned char *data;
+    size_t len;
+} serve_asset;
+extern const serve_asset tippe_serve_assets[];
+extern const int tippe_serve_n_assets;
+
+#endif

@@ -1,0 +1,549 @@
+// tippe serve's page: a form made from the design, and the zones, the plot, a
+// launch, a film and the build zip drawn from the API's JSON (docs/serve.md).
+// Plain JavaScript, no library: it works offline.
+'use strict';
+
+const $ = (id) => document.getElementById(id);
+const SVG = 'http://www.w3.org/2000/svg';
+const token = new URLSearchParams(location.search).get('token');
+const GROUP_COLOR = { I: '#3f8f4f', Ia: '#3f8f4f', Ib: '#3f8f4f', IIa: '#d9a51b', IIb: '#e07b24',
+                      IIc: '#c4541c', III: '#a23a8f' };
+const GROUP_MEANING = { I: 'stays up', IIa: 'flips (II)', IIb: 'flips (II)', IIc: 'flips (II)',
+                        III: 'hangs' };
+
+const state = {
+  design: null,       // the design as edited (a design file's JSON)
+  name: '',           // the shipped design it came from, if any
+  sweep: null,        // the last valid sweep
+  pinned: null,       // {design, sweep, title}
+  materials: [],
+  seq: 0,             // the latest request sent: older answers are dropped
+  z2: null,
+};
+
+// ------------------------------------------------------------------ API
+
+async function api(path, body) {
+  const headers = { 'Content-Type': 'application/json' };
+  if (token) headers['X-Tippe-Token'] = token;
+  const init = body === undefined ? { headers } : { method: 'POST', headers, body: JSON.stringify(body) };
+  const r = await fetch(path, init);
+  const type = r.headers.get('Content-Type') || '';
+  if (type.startsWith('application/json')) return { ok: r.ok, status: r.status, json: await r.json() };
+  return { ok: r.ok, status: r.status, blob: await r.blob(), type };
+}
+
+// ------------------------------------------------------------------ SVG helpers
+
+function el(name, attrs, parent, text) {
+  const e = document.createElementNS(SVG, name);
+  for (const k in attrs) e.setAttribute(k, attrs[k]);
+  if (text !== undefined) e.textContent = text;
+  if (parent) parent.appendChild(e);
+  return e;
+}
+
+let tip = null;
+function showTip(ev, text) {
+  if (!tip) { tip = document.createElement('div'); tip.className = 'tip'; document.body.appendChild(tip); }
+  tip.textContent = text;
+  tip.style.left = (ev.clientX + 12) + 'px';
+  tip.style.top = (ev.clientY + 12) + 'px';
+  tip.hidden = false;
+}
+function hideTip() { if (tip) tip.hidden = true; }
+
+const fmt = (x, d = 2) => (x === null || x === undefined || !isFinite(x)) ? '—' : Number(x).toFixed(d);
+
+// ------------------------------------------------------------------ the form
+
+// Fields a page may edit, with their units and slider ranges (the loader
+// checks every value; these only bound the sliders).
+function lengthRange(d) { const R = Number(d.radius_mm) || 25; return [0, 2 * R]; }
+const PRINT_FIELDS = [
+  ['perimeters', 'perimeters', 0, 10, 1, ''],
+  ['line_width_mm', 'line width', 0.2, 1.0, 0.01, 'mm'],
+  ['top_bottom_layers', 'top/bottom layers', 0, 20, 1, ''],
+  ['layer_height_mm', 'layer height', 0.05, 0.6, 0.01, 'mm'],
+  ['infill', 'infill', 0, 1, 0.01, 'fraction'],
+];
+const PRINT_DEFAULTS = { perimeters: 2, line_width_mm: 0.45, top_bottom_layers: 4, layer_height_mm: 0.2, infill: 0.15 };
+const PART_LENGTHS = ['radius_mm', 'inner_radius_mm', 'thickness_mm', 'height_mm', 'centre_radius_mm',
+                      'radial_semi_mm', 'axial_semi_mm'];
+
+function getPath(obj, path) {
+  return path.split('.').reduce((o, k) => {
+    if (o === undefined || o === null) return undefined;
+    const m = k.match(/^(\w+)\[(\d+)\]$/);
+    return m ? (o[m[1]] || [])[+m[2]] : o[k];
+  }, obj);
+}
+function setPath(obj, path, value) {
+  const keys = path.split('.');
+  let o = obj;
+  for (let i = 0; i < keys.length; i++) {
+    const m = keys[i].match(/^(\w+)\[(\d+)\]$/);
+    const last = i === keys.length - 1;
+    if (m) {
+      if (last) { o[m[1]][+m[2]] = value; return; }
+      o = o[m[1]][+m[2]];
+    } else {
+      if (last) { o[keys[i]] = value; return; }
+      if (typeof o[keys[i]] !== 'object' || o[keys[i]] === null) o[keys[i]] = {};
+      o = o[keys[i]];
+    }
+  }
+}
+
+function numberField(form, path, label, unit, lo, hi, step, value) {
+  const row = document.createElement('div');
+  row.className = 'field';
+  row.dataset.path = path;
+  const id = 'f-' + path.replace(/[^\w]/g, '_');
+  const lab = document.createElement('label');
+  lab.htmlFor = id; lab.textContent = label;
+  const num = document.createElement('input');
+  num.type = 'number'; num.id = id; num.step = step; num.value = value;
+  num.setAttribute('aria-describedby', id + '-msg');
+  num.title = `${label}: ${lo} .. ${hi} ${unit} on the slider; the loader checks any value`;
+  const slider = document.createElement('input');
+  slider.type = 'range'; slider.min = Math.min(lo, value); slider.max = Math.max(hi, value);
+  slider.step = step; slider.value = value;
+  slider.setAttribute('aria-label', label + ' (slider)');
+  slider.tabIndex = -1; // the number box is the keyboard's
+  const u = document.createElement('span'); u.className = 'unit'; u.textContent = unit;
+  const msg = document.createElement('div'); msg.className = 'msg'; msg.id = id + '-msg'; msg.hidden = true;
+  const changed = (v) => {
+    const x = Number(v);
+    setPath(state.design, path, v === '' || !isFinite(x) ? v : x);
+    schedule();
+  };
+  num.addEventListener('input', () => { slider.value = num.value; changed(num.value); });
+  slider.addEventListener('input', () => { num.value = slider.value; changed(slider.value); });
+  row.append(lab, slider, num, u, msg);
+  form.appendChild(row);
+}
+
+function selectField(form, path, label, options, value) {
+  const row = document.createElement('div');
+  row.className = 'field';
+  row.dataset.path = path;
+  const id = 'f-' + path.replace(/[^\w]/g, '_');
+  const lab = document.createElement('label');
+  lab.htmlFor = id; lab.textContent = label;
+  const sel = document.createElement('select');
+  sel.id = id;
+  for (const [v, text] of options) {
+    const o = document.createElement('option'); o.value = v; o.textContent = text; sel.appendChild(o);
+  }
+  sel.value = value;
+  const msg = document.createElement('div'); msg.className = 'msg'; msg.hidden = true;
+  sel.addEventListener('change', () => { setPath(state.design, path, sel.value); schedule(); });
+  row.append(lab, sel, msg);
+  form.appendChild(row);
+}
+
+function buildForm() {
+  const d = state.design;
+  const form = $('form');
+  form.textContent = '';
+  $('design-title').textContent = d.name || '(unnamed design)';
+  const [, big] = lengthRange(d);
+  let fs = document.createElement('fieldset');
+  let lg = document.createElement('legend'); lg.textContent = 'Sphere and travel'; fs.appendChild(lg);
+  numberField(fs, 'radius_mm', 'sphere radius', 'mm', 5, 60, 0.1, d.radius_mm);
+  if (Array.isArray(d.travel_mm)) {
+    numberField(fs, 'travel_mm[0]', 'travel from', 'mm', -big / 2, big / 2, 0.1, d.travel_mm[0]);
+    numberField(fs, 'travel_mm[1]', 'travel to', 'mm', -big / 2, big / 2, 0.1, d.travel_mm[1]);
+  }
+  form.appendChild(fs);
+  const mats = state.materials.map((m) => [m.name, `${m.name} (${m.density_g_cm3} g/cm³${m.printable ? ', printable' : ''})`]);
+  (d.parts || []).forEach((p, i) => {
+    fs = document.createElement('fieldset');
+    lg = document.createElement('legend');
+    lg.textContent = `${p.name} — ${p.shape}${p.void ? ', void' : ''}${p.moving ? ', moving' : ''}`;
+    fs.appendChild(lg);
+    for (const k of PART_LENGTHS)
+      if (typeof p[k] === 'number')
+        numberField(fs, `parts[${i}].${k}`, k.replace(/_mm$/, '').replace(/_/g, ' '), 'mm', 0, big, 0.1, p[k]);
+    if (typeof p.z_mm === 'number' || p.moving)
+      numberField(fs, `parts[${i}].z_mm`, p.moving ? 'z (from Z2)' : 'z', 'mm', -big / 2, big / 2, 0.1, p.z_mm || 0);
+    if (typeof p.material === 'string' && !p.void)
+      selectField(fs, `parts[${i}].material`, 'material', mats, p.material);
+    if (typeof p.density_g_cm3 === 'number')
+      numberField(fs, `parts[${i}].density_g_cm3`, 'density', 'g/cm³', 0.1, 22.6, 0.01, p.density_g_cm3);
+    if (p.void && typeof p.fit === 'string')
+      selectField(fs, `parts[${i}].fit`, 'hole fit', [['tap', 'tap (tap drill)'], ['insert', 'heat-set insert'], ['slide', 'sliding fit']], p.fit);
+    if (p.print) {
+      if (p.print === true) p.print = Object.assign({}, PRINT_DEFAULTS);
+      for (const [k, label, lo, hi, step, unit] of PRINT_FIELDS)
+        numberField(fs, `parts[${i}].print.${k}`, label, unit, lo, hi, step,
+                    p.print[k] !== undefined ? p.print[k] : PRINT_DEFAULTS[k]);
+    }
+    form.appendChild(fs);
+  });
+}
+
+function showFieldError(field, message) {
+  for (const row of document.querySelectorAll('.field')) {
+    row.classList.remove('bad');
+    const m = row.querySelector('.msg'); if (m) { m.hidden = true; m.textContent = ''; }
+  }
+  const box = $('design-error');
+  box.hidden = true;
+  if (!message) return;
+  const path = (field || '').replace(/^design\./, '');
+  const row = path && document.querySelector(`.field[data-path="${CSS.escape(path)}"]`);
+  if (row) {
+    row.classList.add('bad');
+    const m = row.querySelector('.msg'); m.textContent = message; m.hidden = false;
+  } else {
+    box.textContent = message; box.hidden = false;
+  }
+}
+
+// ------------------------------------------------------------------ live sweep
+
+let timer = null;
+function schedule() {
+  clearTimeout(timer);
+  // a launch, a film or a build shown was of the design before this edit
+  for (const id of ['check-result', 'theta-plot', 'film-box', 'build-status']) $(id).textContent = '';
+  delete $('check-result').dataset.verdict;
+  timer = setTimeout(refresh, 150);
+}
+
+async function refresh() {
+  const seq = ++state.seq;
+  $('busy').hidden = false;
+  let r;
+  try { r = await api('/api/sweep', { design: state.design }); }
+  catch (e) { if (seq === state.seq) { $('busy').hidden = true; showFieldError(null, 'the server does not answer: ' + e.message); } return; }
+  if (seq !== state.seq) return; // a newer edit is on its way
+  $('busy').hidden = true;
+  if (!r.ok) { showFieldError(r.json && r.json.field, (r.json && r.json.error) || ('HTTP ' + r.status)); return; }
+  showFieldError(null, null);
+  state.sweep = r.json;
+  drawAll();
+  if (state.z2 !== null) evalAt(state.z2);
+}
+
+function drawAll() {
+  const s = state.sweep;
+  const v = $('verdict');
+  v.textContent = '3-in-1: ' + (s.three_in_one ? 'yes' : 'no');
+  v.className = 'verdict ' + (s.three_in_one ? 'yes' : 'no');
+  $('narrowest').textContent = s.three_in_one
+    ? `narrowest zone ${fmt(s.narrowest_zone_mm)} mm (${s.narrowest_zone_family}); robust ${fmt(s.robust_narrowest_zone_mm)} mm`
+    : `widest zones: I ${fmt(s.zone_widths_mm.I)} mm, II ${fmt(s.zone_widths_mm.II)} mm, III ${fmt(s.zone_widths_mm.III)} mm`;
+  drawBar($('zonebar'), s, true);
+  drawTable(s);
+  drawPlot(s);
+  if (state.pinned) drawPinned();
+}
+
+// The zone bar: zones along Z2, tolerance bands at their boundaries, the
+// travel beyond the physical one and where the model does not apply hatched.
+function drawBar(box, s, clickable) {
+  box.textContent = '';
+  const W = 900, H = 92, L = 40, R = 20, top = 18, h = 34;
+  const [a, b] = s.sweep_mm;
+  const x = (z) => L + (W - L - R) * (z - a) / (b - a);
+  const svg = el('svg', { viewBox: `0 0 ${W} ${H}`, role: 'img', 'aria-label': 'zones along Z2' }, box);
+  const defs = el('defs', {}, svg);
+  const pat = el('pattern', { id: 'hatch' + box.id, width: 6, height: 6, patternUnits: 'userSpaceOnUse', patternTransform: 'rotate(45)' }, defs);
+  el('rect', { width: 6, height: 6, fill: '#ffffff99' }, pat);
+  el('line', { x1: 0, y1: 0, x2: 0, y2: 6, stroke: '#555', 'stroke-width': 2 }, pat);
+  for (const z of s.zones) {
+    const r = el('rect', { x: x(z.z2_from_mm), y: top, width: Math.max(0.5, x(z.z2_to_mm) - x(z.z2_from_mm)), height: h,
+                           fill: GROUP_COLOR[z.group] || '#999', opacity: z.within_travel ? 1 : 0.35 }, svg);
+    r.addEventListener('mousemove', (ev) => showTip(ev, `${z.group} (${GROUP_MEANING[z.group] || ''}) ${fmt(z.z2_from_mm)} .. ${fmt(z.z2_to_mm)} mm, width ${fmt(z.width_mm)} mm, robust ${fmt(z.robust_width_mm)} mm`));
+    r.addEventListener('mouseleave', hideTip);
+    if (x(z.z2_to_mm) - x(z.z2_from_mm) > 26)
+      el('text', { x: (x(z.z2_from_mm) + x(z.z2_to_mm)) / 2, y: top + h / 2 + 4, 'text-anchor': 'middle', fill: '#fff', 'font-weight': 600, class: 'on-zone' }, svg, z.group);
+    for (const [f, t] of z.model_invalid_mm || [])
+      el('rect', { x: x(f), y: top, width: Math.max(0.5, x(t) - x(f)), height: h, fill: `url(#hatch${box.id})` }, svg);
+  }
+  for (const bd of s.bands || []) {
+    if (!isFinite(bd.band_mm)) continue;
+    const r = el('rect', { x: x(bd.z2_mm - bd.band_mm), y: top - 5, width: Math.max(1, x(bd.z2_mm + bd.band_mm) - x(bd.z2_mm - bd.band_mm)),
+                           height: h + 10, fill: '#1d232a', opacity: 0.28 }, svg);
+    r.addEventListener('mousemove', (ev) => showTip(ev, `${bd.boundary} at ${fmt(bd.z2_mm)} mm ± ${fmt(bd.band_mm)} mm (tolerances)`));
+    r.addEventListener('mouseleave', hideTip);
+  }
+  const [pa, pb] = s.physical_travel_mm;
+  for (const [f, t] of [[a, Math.min(pa, b)], [Math.max(pb, a), b]])
+    if (t > f) el('rect', { x: x(f), y: top, width: x(t) - x(f), height: h, fill: '#fff', opacity: 0.6 }, svg);
+  // axis
+  const step = niceStep((b - a) / 8);
+  for (let z = Math.ceil(a / step) * step; z <= b + 1e-9; z += step) {
+    el('line', { x1: x(z), x2: x(z), y1: top + h, y2: top + h + 5, stroke: '#555' }, svg);
+    el('text', { x: x(z), y: top + h + 18, 'text-anchor': 'middle' }, svg, fmt(z, step < 1 ? 1 : 0));
+  }
+  el('text', { x: W - R, y: top - 5, 'text-anchor': 'end' }, svg, 'Z2 mm');
+  if (state.z2 !== null && clickable)
+    el('line', { x1: x(state.z2), x2: x(state.z2), y1: top - 8, y2: top + h + 8, stroke: '#000', 'stroke-width': 2 }, svg);
+  if (clickable) {
+    svg.addEventListener('click', (ev) => {
+      const p = svg.createSVGPoint(); p.x = ev.clientX; p.y = ev.clientY;
+      const q = p.matrixTransform(svg.getScreenCTM().inverse());
+      const z = a + (b - a) * (q.x - L) / (W - L - R);
+      if (z >= a && z <= b) pointAt(Math.round(z * 100) / 100);
+    });
+  }
+}
+
+function niceStep(raw) {
+  const p = Math.pow(10, Math.floor(Math.log10(raw)));
+  for (const m of [1, 2, 5, 10]) if (m * p >= raw) return m * p;
+  return 10 * p;
+}
+
+function drawTable(s) {
+  const t = $('zones');
+  t.textContent = '';
+  const head = t.insertRow();
+  for (const h of ['zone', 'from mm', 'to mm', 'width mm', 'robust mm', 'band from ± mm', 'band to ± mm'])
+    head.appendChild(Object.assign(document.createElement('th'), { textContent: h }));
+  for (const z of s.zones) {
+    const r = t.insertRow();
+    const c = r.insertCell();
+    c.innerHTML = '<span class="swatch"></span>';
+    c.firstChild.style.background = GROUP_COLOR[z.group] || '#999';
+    c.appendChild(document.createTextNode(`${z.group} ${GROUP_MEANING[z.group] || ''}${z.within_travel ? '' : ' (beyond the travel)'}`));
+    for (const v of [z.z2_from_mm, z.z2_to_mm, z.width_mm, z.robust_width_mm, z.band_from_mm, z.band_to_mm])
+      r.insertCell().textContent = fmt(v, 3);
+    if (!z.within_travel) r.classList.add('out');
+  }
+}
+
+// Figure 7: A/C - 1 and the lines +-eps/R, -(eps/R)^2 over Z2.
+function drawPlot(s) {
+  const box = $('plot');
+  box.textContent = '';
+  const c = s.curve;
+  const W = 900, H = 300, L = 60, R = 20, T = 12, B = 34;
+  const [a, b] = s.sweep_mm;
+  const k1 = c.A_over_C.map((k) => k - 1);
+  const e = c.eps_over_R_signed.map(Math.abs);
+  const all = k1.concat(e, e.map((v) => -v));
+  let lo = Math.min(...all), hi = Math.max(...all);
+  const pad = 0.05 * (hi - lo || 1); lo -= pad; hi += pad;
+  const x = (z) => L + (W - L - R) * (z - a) / (b - a);
+  const y = (v) => T + (H - T - B) * (hi - v) / (hi - lo);
+  const svg = el('svg', { viewBox: `0 0 ${W} ${H}`, role: 'img', 'aria-label': 'A/C - 1 and eps/R along Z2' }, box);
+  el('line', { x1: L, x2: W - R, y1: y(0), y2: y(0), stroke: '#aaa' }, svg);
+  const line = (vals, color, dash, label) => {
+    const d = vals.map((v, i) => `${i ? 'L' : 'M'}${x(c.z2_mm[i]).toFixed(1)},${y(v).toFixed(1)}`).join('');
+    el('path', { d, fill: 'none', stroke: color, 'stroke-width': 2, 'stroke-dasharray': dash || '' }, svg);
+    return label;
+  };
+  line(k1, '#1f5fa8', '', 'A/C - 1');
+  line(e, '#a23a8f', '6 4', '+eps/R');
+  line(e.map((v) => -v), '#3f8f4f', '6 4', '-eps/R');
+  line(e.map((v) => -v * v), '#777', '2 3', '-(eps/R)^2');
+  const keys = [['A/C − 1', '#1f5fa8', ''], ['+eps/R', '#a23a8f', '6 4'], ['−eps/R', '#3f8f4f', '6 4'], ['−(eps/R)²', '#777', '2 3']];
+  keys.forEach(([t, col, dash], i) => {
+    el('line', { x1: L + 10 + i * 120, x2: L + 40 + i * 120, y1: T + 10, y2: T + 10, stroke: col, 'stroke-width': 2, 'stroke-dasharray': dash }, svg);
+    el('text', { x: L + 46 + i * 120, y: T + 14 }, svg, t);
+  });
+  const step = niceStep((b - a) / 8);
+  for (let z = Math.ceil(a / step) * step; z <= b + 1e-9; z += step)
+    el('text', { x: x(z), y: H - B + 16, 'text-anchor': 'middle' }, svg, fmt(z, step < 1 ? 1 : 0));
+  el('text', { x: W - R, y: H - 4, 'text-anchor': 'end' }, svg, 'Z2 mm');
+  const vstep = niceStep((hi - lo) / 6);
+  for (let v = Math.ceil(lo / vstep) * vstep; v <= hi; v += vstep)
+    el('text', { x: L - 6, y: y(v) + 4, 'text-anchor': 'end' }, svg, fmt(v, vstep < 0.01 ? 3 : 2));
+  const cursor = el('line', { x1: 0, x2: 0, y1: T, y2: H - B, stroke: '#000', opacity: 0 }, svg);
+  svg.addEventListener('mousemove', (ev) => {
+    const p = svg.createSVGPoint(); p.x = ev.clientX; p.y = ev.clientY;
+    const q = p.matrixTransform(svg.getScreenCTM().inverse());
+    const i = Math.max(0, Math.min(c.z2_mm.length - 1, Math.round((q.x - L) / (W - L - R) * (c.z2_mm.length - 1))));
+    cursor.setAttribute('x1', x(c.z2_mm[i])); cursor.setAttribute('x2', x(c.z2_mm[i])); cursor.setAttribute('opacity', 0.5);
+    showTip(ev, `Z2 ${fmt(c.z2_mm[i])} mm: A/C − 1 = ${fmt(k1[i], 4)}, eps/R = ${fmt(e[i], 4)}, mass ${fmt(c.mass_kg[i] * 1e3, 1)} g`);
+  });
+  svg.addEventListener('mouseleave', () => { cursor.setAttribute('opacity', 0); hideTip(); });
+}
+
+// ------------------------------------------------------------------ a point
+
+function pointAt(z2) {
+  state.z2 = z2;
+  $('z2').value = z2;
+  drawBar($('zonebar'), state.sweep, true);
+  evalAt(z2);
+}
+
+async function evalAt(z2) {
+  const r = await api('/api/eval', { design: state.design, z2_mm: z2 });
+  if (!r.ok) { $('point').textContent = r.json ? r.json.error : 'HTTP ' + r.status; return; }
+  const o = r.json;
+  $('point').textContent = `Z2 ${fmt(z2)} mm: group ${o.subgroup} (${GROUP_MEANING[o.subgroup] || GROUP_MEANING[o.group] || ''}), ` +
+    `mass ${fmt(o.mass_kg * 1e3, 1)} g, A/C ${fmt(o.A_over_C, 4)}, eps/R ${fmt(o.eps_over_R, 4)}` +
+    (o.model_valid ? '' : ` — model invalid here: ${o.protrusion.part} stands out of the sphere`);
+}
+
+// ------------------------------------------------------------------ a launch
+
+function launchRequest() {
+  const z2 = Number($('z2').value);
+  return { design: state.design, z2_mm: z2, spin_rev_s: Number($('spin').value), friction: $('friction').value };
+}
+
+async function checkLaunch() {
+  const out = $('check-result');
+  out.textContent = 'integrating…';
+  const r = await api('/api/check', launchRequest());
+  if (!r.ok) { out.textContent = r.json ? r.json.error : 'HTTP ' + r.status; return; }
+  const o = r.json;
+  out.textContent = `verdict: ${o.verdict}` + (o.t_flip_s !== null ? `, flips at t = ${fmt(o.t_flip_s, 2)} s` : '') +
+    ` (decided by ${o.decided_by} at ${fmt(o.t_s, 2)} s); theory: ${o.theory.prediction || '—'}`;
+  out.dataset.verdict = o.verdict;
+  drawTheta(o.theta_samples);
+}
+
+function drawTheta(ts) {
+  const box = $('theta-plot');
+  box.textContent = '';
+  if (!ts || !ts.t_s.length) return;
+  const W = 900, H = 200, L = 60, R = 20, T = 10, B = 30;
+  const t1 = ts.t_s[ts.t_s.length - 1] || 1;
+  const x = (t) => L + (W - L - R) * t / t1;
+  const y = (th) => T + (H - T - B) * (1 - th / Math.PI);
+  const svg = el('svg', { viewBox: `0 0 ${W} ${H}`, role: 'img', 'aria-label': 'theta over time' }, box);
+  for (const deg of [0, 90, 180]) {
+    el('line', { x1: L, x2: W - R, y1: y(deg * Math.PI / 180), y2: y(deg * Math.PI / 180), stroke: '#ddd' }, svg);
+    el('text', { x: L - 6, y: y(deg * Math.PI / 180) + 4, 'text-anchor': 'end' }, svg, deg + '°');
+  }
+  const d = ts.t_s.map((t, i) => `${i ? 'L' : 'M'}${x(t).toFixed(1)},${y(ts.theta_rad[i]).toFixed(1)}`).join('');
+  el('path', { d, fill: 'none', stroke: '#1f5fa8', 'stroke-width': 2 }, svg);
+  el('text', { x: W - R, y: H - 6, 'text-anchor': 'end' }, svg, `t s (0 .. ${fmt(t1, 1)})`);
+  el('text', { x: L + 6, y: T + 12 }, svg, 'theta (tilt)');
+}
+
+async function film() {
+  const box = $('film-box');
+  box.textContent = 'filming…';
+  const req = launchRequest();
+  const r = await api('/api/animate', req);
+  if (!r.ok || !r.blob) { box.textContent = r.json ? r.json.error : 'HTTP ' + r.status; return; }
+  box.textContent = '';
+  const url = URL.createObjectURL(r.blob);
+  if (r.type.startsWith('video/')) {
+    const v = document.createElement('video');
+    v.src = url; v.controls = true; v.autoplay = true; v.loop = true; v.muted = true;
+    box.appendChild(v);
+  } else {
+    const img = document.createElement('img'); img.src = url; img.alt = 'the launch as a film'; box.appendChild(img);
+  }
+}
+
+// ------------------------------------------------------------------ build
+
+async function build() {
+  const st = $('build-status');
+  st.textContent = 'building…';
+  const name = (state.name || 'design').replace(/[^A-Za-z0-9_-]/g, '-').slice(0, 64);
+  const r = await api('/api/build', { design: state.design, name });
+  if (!r.ok || !r.blob) { st.textContent = r.json ? r.json.error : 'HTTP ' + r.status; return; }
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(r.blob);
+  a.download = (state.name || 'design') + '-build.zip';
+  document.body.appendChild(a); a.click(); a.remove();
+  st.textContent = `downloaded ${a.download} (${Math.round(r.blob.size / 1024)} KiB)`;
+}
+
+// ------------------------------------------------------------------ compare
+
+function pin() {
+  if (!state.sweep) return;
+  state.pinned = { design: JSON.parse(JSON.stringify(state.design)), sweep: state.sweep, title: state.design.name };
+  $('pinned').hidden = false;
+  drawPinned();
+}
+
+function drawPinned() {
+  const p = state.pinned, s = state.sweep;
+  $('pinned-title').textContent = `(${p.title})`;
+  drawBar($('zonebar-pinned'), p.sweep, false);
+  const t = $('diff');
+  t.textContent = '';
+  const head = t.insertRow();
+  for (const h of ['', 'pinned', 'now', 'change']) head.appendChild(Object.assign(document.createElement('th'), { textContent: h }));
+  const rows = [
+    ['3-in-1', p.sweep.three_in_one ? 'yes' : 'no', s.three_in_one ? 'yes' : 'no', ''],
+    ['narrowest zone mm', p.sweep.narrowest_zone_mm, s.narrowest_zone_mm],
+    ['robust narrowest mm', p.sweep.robust_narrowest_zone_mm, s.robust_narrowest_zone_mm],
+  ];
+  for (const g of ['I', 'II', 'III'])
+    rows.push([`zone ${g} mm (robust)`, p.sweep.robust_zone_widths_mm[g], s.robust_zone_widths_mm[g]]);
+  for (const [name, a, b, c] of rows) {
+    const r = t.insertRow();
+    r.insertCell().textContent = name;
+    r.insertCell().textContent = typeof a === 'number' ? fmt(a, 3) : a;
+    r.insertCell().textContent = typeof b === 'number' ? fmt(b, 3) : b;
+    r.insertCell().textContent = c !== undefined ? c : (typeof a === 'number' && typeof b === 'number' ? (b - a >= 0 ? '+' : '') + fmt(b - a, 3) : '');
+  }
+}
+
+// ------------------------------------------------------------------ designs
+
+async function openShipped(name) {
+  const r = await api('/api/designs/' + encodeURIComponent(name));
+  if (!r.ok) { showFieldError(null, r.json ? r.json.error : 'HTTP ' + r.status); return; }
+  openDesign(r.json, name);
+}
+
+function openDesign(d, name) {
+  state.design = d;
+  state.name = name || '';
+  state.z2 = null;
+  buildForm();
+  refresh();
+}
+
+function loadText(text, name) {
+  let d;
+  try { d = JSON.parse(text); } catch (e) { showFieldError(null, 'not valid JSON: ' + e.message); return; }
+  openDesign(d, name);
+}
+
+function save() {
+  const blob = new Blob([JSON.stringify(state.design, null, 2) + '\n'], { type: 'application/json' });
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = (state.name || 'design') + '-edited.json';
+  document.body.appendChild(a); a.click(); a.remove();
+}
+
+async function start() {
+  $('form').addEventListener('submit', (ev) => ev.preventDefault());
+  const [list, mats] = await Promise.all([api('/api/designs'), api('/api/materials')]);
+  state.materials = mats.ok ? mats.json.materials : [];
+  const pick = $('design-pick');
+  for (const d of list.json.designs) {
+    const o = document.createElement('option'); o.value = d.name; o.textContent = `${d.name} — ${d.title}`; pick.appendChild(o);
+  }
+  pick.addEventListener('change', () => openShipped(pick.value));
+  $('design-file').addEventListener('change', async (ev) => {
+    const f = ev.target.files[0]; if (f) loadText(await f.text(), f.name.replace(/\.json$/, ''));
+  });
+  $('design-file-label').addEventListener('keydown', (ev) => { if (ev.key === 'Enter' || ev.key === ' ') { ev.preventDefault(); $('design-file').click(); } });
+  $('design-paste').addEventListener('click', () => { $('paste-box').hidden = false; $('paste-text').focus(); });
+  $('paste-cancel').addEventListener('click', () => { $('paste-box').hidden = true; });
+  $('paste-load').addEventListener('click', () => { $('paste-box').hidden = true; loadText($('paste-text').value, 'pasted'); });
+  $('design-save').addEventListener('click', save);
+  $('pin').addEventListener('click', pin);
+  $('unpin').addEventListener('click', () => { state.pinned = null; $('pinned').hidden = true; });
+  $('check').addEventListener('click', checkLaunch);
+  $('film').addEventListener('click', film);
+  $('build').addEventListener('click', build);
+  $('z2').addEventListener('change', () => { const z = Number($('z2').value); if (isFinite(z)) pointAt(z); });
+  const want = new URLSearchParams(location.search).get('design');
+  const first = list.json.designs.find((d) => d.name === want) ? want
+    : (list.json.designs.find((d) => d.name === 'm12-setscrew') ? 'm12-setscrew' : list.json.designs[0].name);
+  pick.value = first;
+  openShipped(first);
+}
+
+start();

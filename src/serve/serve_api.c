@@ -1,0 +1,411 @@
+/* tippe serve's endpoints: each reads its request strictly, calls the library
+ * and answers with the JSON the command's --json gives for the same verb (the
+ * same builders, tippe/sweep.h's reports), plus what only a page needs (the
+ * sampled path of the zone plot). docs/serve.md lists every field. */
+#include "serve/internal.h"
+
+#include "tippe/animate.h"
+#include "tippe/build.h"
+#include "tippe/export.h"
+#include "tippe/physics.h"
+#include "tippe/sweep.h"
+
+#include <dirent.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Samples of the zone plot's path a sweep answer carries. */
+enum { CURVE_SAMPLES = 241 };
+
+/* The sweep of d as tippe sweep --json gives it (range: the stated travel
+ * unless from_mm < to_mm), with "curve" for the plot. NULL with out set. */
+static cJSON *sweep_answer(const tippe_design *d, double from_mm, double to_mm,
+                           serve_response *out)
+{
+    tippe_error err = {0};
+    tippe_sweep_result r;
+    tippe_sweep_bands_result b = {0};
+    int rc = tippe_sweep_design(d, from_mm, to_mm, NULL, &r, &err);
+    if (!rc)
+        rc = tippe_sweep_bands(d, &r, &b, &err);
+    cJSON *o = NULL;
+    if (rc) {
+        tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, "design", "%s", err.msg);
+    } else if (!(o = tippe_sweep_report_json(d, &r, &b))) {
+        tippe_serve_respond_error(out, 503, NULL, "out of memory");
+    } else {
+        cJSON *curve = tippe_sweep_samples_json(d, r.from_mm, r.to_mm, CURVE_SAMPLES);
+        if (!curve || !cJSON_AddItemToObject(o, "curve", curve)) {
+            cJSON_Delete(curve);
+            cJSON_Delete(o);
+            o = NULL;
+            tippe_serve_respond_error(out, 503, NULL, "out of memory");
+        }
+    }
+    tippe_sweep_bands_free(&b);
+    tippe_sweep_result_free(&r);
+    return o;
+}
+
+/* The optional sweep range of a request: 0, or -1 with out set. */
+static int sweep_range(const cJSON *req, double *from_mm, double *to_mm, serve_response *out)
+{
+    const double big = 1000.0; /* as the command's --from, --to */
+    *from_mm = *to_mm = 0.0;
+    if (tippe_serve_request_number(req, "from_mm", -big, big, 0, from_mm, out) ||
+        tippe_serve_request_number(req, "to_mm", -big, big, 0, to_mm, out))
+        return -1;
+    const int has_from = cJSON_HasObjectItem(req, "from_mm"),
+              has_to = cJSON_HasObjectItem(req, "to_mm");
+    if (has_from != has_to) {
+        tippe_serve_respond_error(out, 400, has_from ? "to_mm" : "from_mm",
+                            "from_mm and to_mm go together (neither: the design's travel)");
+        return -1;
+    }
+    if (has_from && !(*from_mm < *to_mm)) {
+        tippe_serve_respond_error(out, 400, "from_mm", "from_mm %g must be below to_mm %g", *from_mm,
+                            *to_mm);
+        return -1;
+    }
+    return 0;
+}
+
+/* POST /api/sweep {design, from_mm?, to_mm?}: tippe sweep --json, and curve. */
+static void api_sweep(serve_server *s, const cJSON *req, serve_response *out)
+{
+    static const char *const keys[] = {"design", "from_mm", "to_mm", NULL};
+    double from, to;
+    if (tippe_serve_request_keys(req, keys, out) || sweep_range(req, &from, &to, out))
+        return;
+    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
+    if (!d)
+        return;
+    cJSON *o = sweep_answer(d, from, to, out);
+    if (o)
+        tippe_serve_respond_json(out, 200, o);
+    tippe_design_free(d);
+}
+
+/* POST /api/eval {design, z2_mm}: tippe eval --json. */
+static void api_eval(serve_server *s, const cJSON *req, serve_response *out)
+{
+    static const char *const keys[] = {"design", "z2_mm", NULL};
+    double z2 = 0;
+    if (tippe_serve_request_keys(req, keys, out) ||
+        tippe_serve_request_number(req, "z2_mm", -1000, 1000, 1, &z2, out))
+        return;
+    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
+    if (!d)
+        return;
+    tippe_error err = {0};
+    tippe_top top;
+    if (tippe_design_top(d, z2, &top, &err))
+        tippe_serve_respond_error(out, 400, "z2_mm", "%s", err.msg);
+    else
+        tippe_serve_respond_json(out, 200, tippe_sweep_eval_json(d, z2, &top));
+    tippe_design_free(d);
+}
+
+/* POST /api/compare {designs: [A, B]}: each design's sweep, as /api/sweep. */
+static void api_compare(serve_server *s, const cJSON *req, serve_response *out)
+{
+    static const char *const keys[] = {"designs", NULL};
+    if (tippe_serve_request_keys(req, keys, out))
+        return;
+    const cJSON *list = cJSON_GetObjectItemCaseSensitive(req, "designs");
+    if (!cJSON_IsArray(list) || cJSON_GetArraySize(list) < 1 || cJSON_GetArraySize(list) > 4) {
+        tippe_serve_respond_error(out, 400, "designs",
+                            "designs: must be an array of 1 to 4 designs (objects or shipped "
+                            "names)");
+        return;
+    }
+    cJSON *o = cJSON_CreateObject();
+    cJSON *arr = o ? cJSON_AddArrayToObject(o, "designs") : NULL;
+    if (!arr) {
+        cJSON_Delete(o);
+        tippe_serve_respond_error(out, 503, NULL, "out of memory");
+        return;
+    }
+    int i = 0;
+    for (const cJSON *x = list->child; x; x = x->next, i++) {
+        char key[32];
+        snprintf(key, sizeof key, "designs[%d]", i);
+        cJSON *one = cJSON_CreateObject();
+        if (!one || !cJSON_AddItemReferenceToObject(one, key, (cJSON *)x)) {
+            cJSON_Delete(one);
+            cJSON_Delete(o);
+            tippe_serve_respond_error(out, 503, NULL, "out of memory");
+            return;
+        }
+        tippe_design *d = tippe_serve_request_design(s, one, key, NULL, out);
+        cJSON_Delete(one);
+        cJSON *sw = d ? sweep_answer(d, 0, 0, out) : NULL;
+        tippe_design_free(d);
+        if (!sw) {
+            cJSON_Delete(o);
+            return;
+        }
+        cJSON_AddItemToArray(arr, sw);
+    }
+    tippe_serve_respond_json(out, 200, o);
+}
+
+/* The launch of a request: z2_mm, spin (spin_rev_s or spin_rad_s; default 15
+ * rev/s, as tippe check) and friction (viscous, coulomb, coulomb-creep; default
+ * viscous). 0, or -1 with out set. */
+static int launch_request(const cJSON *req, double *z2, double *spin_rad_s,
+                          tippe_launch_options *o, serve_response *out)
+{
+    static const char *const laws[] = {"viscous", "coulomb", "coulomb-creep", NULL};
+    double rev = 15.0, rad = NAN;
+    tippe_launch_options_default(o);
+    if (tippe_serve_request_number(req, "z2_mm", -1000, 1000, 1, z2, out) ||
+        tippe_serve_request_number(req, "spin_rev_s", 0.1, 100, 0, &rev, out) ||
+        tippe_serve_request_number(req, "spin_rad_s", 0.5, 2 * M_PI * 100, 0, &rad, out))
+        return -1;
+    if (cJSON_HasObjectItem(req, "spin_rev_s") && cJSON_HasObjectItem(req, "spin_rad_s")) {
+        tippe_serve_respond_error(out, 400, "spin_rad_s",
+                                  "spin_rev_s and spin_rad_s are one spin: give one");
+        return -1;
+    }
+    *spin_rad_s = isfinite(rad) ? rad : 2 * M_PI * rev;
+    const int law = tippe_serve_request_word(req, "friction", laws, 0, out);
+    if (law < 0)
+        return -1;
+    o->law = law == 0 ? TIPPE_FRICTION_VISCOUS
+                      : law == 1 ? TIPPE_FRICTION_COULOMB : TIPPE_FRICTION_COULOMB_CREEP;
+    return 0;
+}
+
+/* Samples of theta(t) a check answer carries for its plot. */
+enum { THETA_SAMPLES = 301 };
+
+/* POST /api/check {design, z2_mm, spin_rev_s | spin_rad_s, friction}: tippe
+ * check --json, and theta_samples {t_s, theta_rad} over the launch (to past
+ * its flip, or its decision). */
+static void api_check(serve_server *s, const cJSON *req, serve_response *out)
+{
+    static const char *const keys[] = {"design", "z2_mm", "spin_rev_s", "spin_rad_s",
+                                       "friction", NULL};
+    double z2 = 0, spin = 0;
+    tippe_launch_options o;
+    if (tippe_serve_request_keys(req, keys, out) || launch_request(req, &z2, &spin, &o, out))
+        return;
+    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
+    if (!d)
+        return;
+    tippe_error err = {0};
+    tippe_sweep_check c;
+    int rc = tippe_sweep_check_run(d, z2, &o, spin, &c, &err);
+    cJSON *j = rc ? NULL : tippe_sweep_check_json(&c, &o, NULL, 0);
+    if (rc) {
+        tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500,
+                                  strstr(err.msg, "Z2") ? "z2_mm" : NULL, "%s", err.msg);
+        tippe_design_free(d);
+        return;
+    }
+    /* theta(t) to half as far again past the flip, or to the decision */
+    const double flip = c.rec.t_flip_s;
+    double t_end = isfinite(flip) ? fmax(1.5 * flip, flip + 1.0) : fmax(c.rec.t_s, 2.0);
+    t_end = fmin(t_end, 60.0);
+    double t[THETA_SAMPLES], th[THETA_SAMPLES];
+    int n = 0;
+    tippe_error terr = {0};
+    tippe_launch_trace(&c.top, &o, &c.ic, t_end, THETA_SAMPLES, t, th, &n, &terr);
+    cJSON *ts = cJSON_CreateObject();
+    if (j && ts && cJSON_AddItemToObject(j, "theta_samples", ts)) {
+        cJSON_AddItemToObject(ts, "t_s", cJSON_CreateDoubleArray(t, n));
+        cJSON_AddItemToObject(ts, "theta_rad", cJSON_CreateDoubleArray(th, n));
+    } else {
+        cJSON_Delete(ts);
+    }
+    tippe_serve_respond_json(out, 200, j);
+    tippe_design_free(d);
+}
+
+/* POST /api/animate {design, z2_mm, spin_rev_s | spin_rad_s, friction, format?
+ * (webm, gif), seconds?, width_px?, height_px?, fps?}: the check's launch as a
+ * short film (tippe animate's), the whole launch in `seconds` of film. The
+ * film is encoded into an anonymous temporary file (tmpfile: it has no name,
+ * so nothing is left whatever happens) and sent from memory. */
+static void api_animate(serve_server *s, const cJSON *req, serve_response *out)
+{
+    static const char *const keys[] = {"design", "z2_mm", "spin_rev_s", "spin_rad_s", "friction",
+                                       "format", "seconds", "width_px", "height_px", "fps",
+                                       NULL};
+    static const char *const formats[] = {"webm", "gif", NULL};
+    double z2 = 0, spin = 0, seconds = 6, w = 320, h = 240, fps = 15;
+    tippe_launch_options o;
+    if (tippe_serve_request_keys(req, keys, out) || launch_request(req, &z2, &spin, &o, out) ||
+        tippe_serve_request_number(req, "seconds", 1, TIPPE_SERVE_MAX_FILM_S, 0, &seconds, out) ||
+        tippe_serve_request_number(req, "width_px", 64, TIPPE_SERVE_MAX_FILM_PX, 0, &w, out) ||
+        tippe_serve_request_number(req, "height_px", 64, TIPPE_SERVE_MAX_FILM_PX, 0, &h, out) ||
+        tippe_serve_request_number(req, "fps", 5, TIPPE_SERVE_MAX_FILM_FPS, 0, &fps, out))
+        return;
+    const int format = tippe_serve_request_word(req, "format", formats, 0, out);
+    if (format < 0)
+        return;
+    if ((int)w % 2 || (int)h % 2 || w != (int)w || h != (int)h || fps != (int)fps) {
+        tippe_serve_respond_error(out, 400, (int)w % 2 || w != (int)w ? "width_px"
+                                            : (int)h % 2 || h != (int)h ? "height_px" : "fps",
+                                  "width_px and height_px must be even whole numbers, fps whole");
+        return;
+    }
+    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
+    if (!d)
+        return;
+    tippe_error err = {0};
+    tippe_sweep_check c;
+    tippe_animate_launch launch;
+    tippe_animate_options ao;
+    tippe_animate_options_default(&ao);
+    ao.speed = 0;
+    ao.film_s = seconds;
+    ao.fps = (int)fps;
+    ao.width_px = (int)w;
+    ao.height_px = (int)h;
+    tippe_film film = {0};
+    FILE *f = NULL;
+    int rc = tippe_sweep_check_run(d, z2, &o, spin, &c, &err);
+    if (!rc)
+        rc = tippe_animate_check_launch(&c, &o, &launch);
+    if (!rc)
+        rc = tippe_film_make(&launch, &ao, &film, &err);
+    if (!rc && !(f = tmpfile()))
+        rc = tippe_error_set(&err, TIPPE_ECOMPUTE, "cannot make a temporary file for the film");
+    if (!rc)
+        rc = tippe_film_write(&film, format ? TIPPE_FILM_GIF : TIPPE_FILM_WEBM, f, NULL, &err);
+    long len = -1;
+    char *body = NULL;
+    if (!rc && (fflush(f) || fseek(f, 0, SEEK_END) || (len = ftell(f)) < 0 ||
+                fseek(f, 0, SEEK_SET) || !(body = malloc((size_t)len + 1)) ||
+                fread(body, 1, (size_t)len, f) != (size_t)len))
+        rc = tippe_error_set(&err, TIPPE_ECOMPUTE, "cannot read the film back");
+    if (f)
+        fclose(f);
+    tippe_film_free(&film);
+    if (rc) {
+        free(body);
+        tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, NULL, "%s", err.msg);
+    } else {
+        tippe_serve_response_free(out);
+        out->status = 200;
+        out->type = format ? "image/gif" : "video/webm";
+        out->body = body;
+        out->len = (size_t)len;
+        snprintf(out->filename, sizeof out->filename, "launch.%s", format ? "gif" : "webm");
+    }
+    tippe_design_free(d);
+}
+
+static int by_string(const void *a, const void *b)
+{
+    return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+/* POST /api/build {design, name?, hole?, clearance_mm?}: what tippe build -o DIR writes
+ * (the sheet as JSON, Markdown, PDF, SVG, PNG, the gauges, tippe export's STL,
+ * 3MF, OpenSCAD and drawing) as one zip. The files go to a temporary folder
+ * (removed before the answer leaves, and at a stop); only one build runs at a
+ * time (the library's file writer keeps one table of temporaries). */
+static void api_build(serve_server *s, const cJSON *req, serve_response *out)
+{
+    static const char *const keys[] = {"design", "name", "hole", "clearance_mm", NULL};
+    static const char *const fits[] = {"design", "tap", "insert", "slide", NULL};
+    tippe_build_options o;
+    tippe_build_options_default(&o);
+    if (tippe_serve_request_keys(req, keys, out) ||
+        tippe_serve_request_number(req, "clearance_mm", 0, 2, 0, &o.clearance_mm, out))
+        return;
+    const int fit = tippe_serve_request_word(req, "hole", fits, 0, out);
+    if (fit < 0)
+        return;
+    o.hole_fit = fit == 0 ? TIPPE_BUILD_HOLE_DESIGN
+                 : fit == 1 ? TIPPE_BUILD_HOLE_TAP
+                 : fit == 2 ? TIPPE_BUILD_HOLE_INSERT : TIPPE_BUILD_HOLE_SLIDE;
+    /* the files' stem: "name", else the shipped design's, else "design" */
+    char stem[80] = "design";
+    const cJSON *given = cJSON_GetObjectItemCaseSensitive(req, "design");
+    if (cJSON_IsString(given) && tippe_serve_find_design(s, given->valuestring))
+        snprintf(stem, sizeof stem, "%s", given->valuestring);
+    if (tippe_serve_request_stem(req, "name", stem, sizeof stem, out))
+        return;
+    tippe_design *d = tippe_serve_request_design(s, req, "design", stem, out);
+    if (!d)
+        return;
+    char cat[4096 + 32], dir[4096];
+    snprintf(cat, sizeof cat, "%s/catalogue.json", s->designs_dir);
+    o.catalogue = cat;
+    tippe_build_sheet *sheet = malloc(sizeof *sheet);
+    char(*paths)[4096] = malloc(TIPPE_EXPORT_BUILD_FILES * sizeof *paths);
+    if (!sheet || !paths || tippe_serve_tmp_make(s, dir, sizeof dir)) {
+        tippe_serve_respond_error(out, 503, NULL, "cannot make a temporary folder for the build");
+        free(sheet);
+        free(paths);
+        tippe_design_free(d);
+        return;
+    }
+    tippe_error err = {0};
+    tippe_export_request q = {.profile = tippe_profile_defaults()};
+    tippe_export_result r = {0};
+    char fit_note[64];
+    tippe_export_build_request(d, o.clearance_mm, dir, &q);
+    tippe_export_build_paths(d, dir, paths);
+    int rc = tippe_build_compute(d, &o, sheet, &err);
+    if (!rc)
+        rc = tippe_export_build_write(d, sheet, paths, &q, fit_note, sizeof fit_note, &r, &err);
+    /* every file the build wrote, by name (the export's and the sheet's) */
+    const int cap = r.n_files + TIPPE_EXPORT_BUILD_FILES;
+    tippe_export_result_free(&r);
+    char **names = calloc((size_t)cap, sizeof *names);
+    int n = 0;
+    DIR *dd = rc || !names ? NULL : opendir(dir);
+    for (struct dirent *e; dd && (e = readdir(dd)) && n < cap;)
+        if (e->d_name[0] != '.' && (names[n] = strdup(e->d_name)))
+            n++;
+    if (dd)
+        closedir(dd);
+    qsort(names, (size_t)n, sizeof *names, by_string);
+    char *zip = NULL;
+    size_t len = 0;
+    if (!rc)
+        rc = tippe_serve_zip_folder(dir, (const char *const *)names, n, &zip, &len, &err);
+    tippe_serve_tmp_remove(s, dir);
+    for (int i = 0; i < n; i++)
+        free(names[i]);
+    free(names);
+    if (rc) {
+        tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, NULL, "%s", err.msg);
+    } else {
+        tippe_serve_response_free(out);
+        out->status = 200;
+        out->type = "application/zip";
+        out->body = zip;
+        out->len = len;
+        snprintf(out->filename, sizeof out->filename, "%s-build.zip", stem);
+    }
+    free(sheet);
+    free(paths);
+    tippe_design_free(d);
+}
+
+const serve_route tippe_serve_routes[] = {
+    {"/api/sweep", 1, 0, api_sweep},
+    {"/api/eval", 1, 0, api_eval},
+    {"/api/compare", 1, 0, api_compare},
+    {"/api/check", 1, 0, api_check},
+    {"/api/build", 1, 1, api_build},
+    {"/api/animate", 1, 1, api_animate},
+    {NULL, 0, 0, NULL},
+};
+
+const serve_route *tippe_serve_find_route(const char *path)
+{
+    for (const serve_route *r = tippe_serve_routes; r->path; r++)
+        if (!strcmp(r->path, path))
+            return r;
+    return NULL;
+}

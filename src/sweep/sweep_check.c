@@ -1,0 +1,189 @@
+/* One central hand launch at one Z2 beside the zone the sweep puts it in
+ * (tippe check), and its report for both front ends (tippe check --json,
+ * tippe serve's /api/check); theory beside launches. */
+#include "tippe/physics.h"
+#include "tippe/sweep.h"
+
+#include <cjson/cJSON.h>
+
+#include <math.h>
+#include <string.h>
+
+static void number_or_null(cJSON *o, const char *key, double v)
+{
+    if (isfinite(v))
+        cJSON_AddNumberToObject(o, key, v);
+    else
+        cJSON_AddNullToObject(o, key);
+}
+
+static void range_or_null(cJSON *o, const char *key, double lo, double hi)
+{
+    if (!isfinite(lo) || !isfinite(hi)) {
+        cJSON_AddNullToObject(o, key);
+        return;
+    }
+    cJSON *range = cJSON_AddArrayToObject(o, key);
+    if (range) {
+        cJSON_AddItemToArray(range, cJSON_CreateNumber(lo));
+        cJSON_AddItemToArray(range, cJSON_CreateNumber(hi));
+    }
+}
+
+/* "set": the overrides the report reflects (an empty array without any). */
+static void add_sets(cJSON *o, const char *const *sets, int n)
+{
+    cJSON *a = cJSON_AddArrayToObject(o, "set");
+    for (int i = 0; a && i < n; i++)
+        cJSON_AddItemToArray(a, cJSON_CreateString(sets[i]));
+}
+
+void tippe_sweep_zone_at(const tippe_design *d, double z2, tippe_sweep_point_zone *z)
+{
+    memset(z, 0, sizeof *z);
+    tippe_sweep_result r;
+    tippe_error e;
+    if (tippe_sweep_design(d, 0.0, 0.0, NULL, &r, &e) == TIPPE_OK)
+        for (int i = 0; i < r.n_zones; i++)
+            if (z2 >= r.zones[i].z2_from_mm && z2 <= r.zones[i].z2_to_mm) {
+                z->ok = 1;
+                z->group = r.zones[i].group;
+                z->from_mm = r.zones[i].z2_from_mm;
+                z->to_mm = r.zones[i].z2_to_mm;
+                break;
+            }
+    tippe_sweep_result_free(&r);
+}
+
+cJSON *tippe_sweep_theory_json(const tippe_top *t, double g, const tippe_sweep_point_zone *z,
+                               const tippe_launch_tally *tl)
+{
+    cJSON *o = cJSON_CreateObject();
+    if (!o)
+        return NULL;
+    tippe_theory_class cls;
+    tippe_theory_classify(t->A / t->C, t->eps / t->R, &cls);
+    cJSON_AddStringToObject(o, "group", tippe_group_family(cls.group));
+    cJSON_AddStringToObject(o, "subgroup", tippe_group_name(cls.group));
+    cJSON_AddNumberToObject(o, "A_over_C", t->A / t->C);
+    cJSON_AddNumberToObject(o, "eps_over_R", t->eps / t->R);
+    if (z->ok) {
+        double b[2] = {z->from_mm, z->to_mm};
+        cJSON_AddItemToObject(o, "zone_mm", cJSON_CreateDoubleArray(b, 2));
+    } else {
+        cJSON_AddNullToObject(o, "zone_mm");
+    }
+    tippe_theory_thresholds th;
+    tippe_error e;
+    if (tippe_theory_compute_thresholds(t, g, &th, &e) == TIPPE_OK) {
+        if (th.has_n_minus)
+            cJSON_AddNumberToObject(o, "n_minus_rad_s", th.n_minus_rad_s);
+        else
+            cJSON_AddNullToObject(o, "n_minus_rad_s");
+        if (th.has_n_star)
+            cJSON_AddNumberToObject(o, "n_star_rad_s", th.n_star_rad_s);
+        else
+            cJSON_AddNullToObject(o, "n_star_rad_s");
+    }
+    if (tl) {
+        cJSON *p = cJSON_AddObjectToObject(o, "predicted");
+        for (unsigned m = 0; p && m < 8; m++)
+            if (tl->predicted[m])
+                cJSON_AddNumberToObject(p, tippe_launch_predicted_name(m), (double)tl->predicted[m]);
+        cJSON_AddNumberToObject(o, "agree", (double)tl->agree);
+        cJSON_AddNumberToObject(o, "comparable", (double)tl->comparable);
+        double lo, hi;
+        tippe_launch_wilson(tl->agree, tl->comparable, TIPPE_LAUNCH_Z95, &lo, &hi);
+        if (tl->comparable)
+            cJSON_AddNumberToObject(o, "agreement", (double)tl->agree / (double)tl->comparable);
+        else
+            cJSON_AddNullToObject(o, "agreement");
+        double b[2] = {lo, hi};
+        cJSON_AddItemToObject(o, "agreement_ci95", cJSON_CreateDoubleArray(b, 2));
+        cJSON_AddNumberToObject(o, "hang_tolerance_rad", TIPPE_LAUNCH_HANG_AGREE_RAD);
+    }
+    return o;
+}
+
+int tippe_sweep_check_run(const tippe_design *d, double z2_mm, const tippe_launch_options *o,
+                          double spin_rad_s, tippe_sweep_check *out, tippe_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->d = d;
+    out->z2_mm = z2_mm;
+    int rc;
+    if ((rc = tippe_design_top(d, z2_mm, &out->top, err)) != 0 ||
+        (rc = tippe_launch_central(&out->top, o, spin_rad_s, &out->ic, err)) != 0 ||
+        (rc = tippe_launch_run_initial(&out->top, o, &out->ic, &out->rec, err)) != 0)
+        return rc;
+    tippe_sweep_zone_at(d, z2_mm, &out->zone);
+    return TIPPE_OK;
+}
+
+static cJSON *theory_json(const tippe_sweep_check *r, const tippe_launch_options *o)
+{
+    cJSON *th = tippe_sweep_theory_json(&r->top, o->g, &r->zone, NULL);
+    if (!th)
+        return NULL;
+    if (r->rec.theory_ok) {
+        cJSON_AddStringToObject(th, "prediction", tippe_launch_predicted_name(r->rec.predicted));
+        if (isfinite(r->rec.hang_theta_rad))
+            cJSON_AddNumberToObject(th, "hang_theta_rad", r->rec.hang_theta_rad);
+    } else {
+        cJSON_AddNullToObject(th, "prediction");
+    }
+    if (r->rec.agrees < 0)
+        cJSON_AddNullToObject(th, "agrees");
+    else
+        cJSON_AddBoolToObject(th, "agrees", r->rec.agrees);
+    return th;
+}
+
+/* How the verdict was reached (docs/dynamics.md, "Proved verdicts"). */
+/* How the verdict was reached, with null where a field does not apply. */
+static void add_decision_json(cJSON *o, const tippe_launch_record *rec)
+{
+    cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(rec->how));
+    number_or_null(o, "margin_J", rec->margin_J);
+    number_or_null(o, "barrier_gap_J", rec->barrier_gap_J);
+    range_or_null(o, "theta_range_rad", rec->theta_lo_rad, rec->theta_hi_rad);
+    number_or_null(o, "Rn_bound_N", rec->Rn_bound_N);
+    number_or_null(o, "t_flip_s", rec->t_flip_s);
+}
+
+cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_options *opt,
+                              const char *const *sets, int n_sets)
+{
+    const tippe_dynamics_initial *ic = &r->ic;
+    const tippe_launch_record *rec = &r->rec;
+    cJSON *o = cJSON_CreateObject();
+    if (o) {
+        cJSON_AddStringToObject(o, "design", tippe_design_name(r->d));
+        cJSON_AddStringToObject(o, "file", tippe_design_path(r->d));
+        add_sets(o, sets, n_sets);
+        cJSON_AddNumberToObject(o, "z2_mm", r->z2_mm);
+        cJSON *ini = cJSON_AddObjectToObject(o, "initial");
+        if (ini) {
+            cJSON_AddNumberToObject(ini, "theta_rad", ic->theta);
+            cJSON_AddNumberToObject(ini, "phi_dot_rad_s", ic->phi_dot);
+            cJSON_AddStringToObject(ini, "phi_dot_rule", "steady");
+            cJSON_AddNumberToObject(ini, "spin_rad_s", ic->spin);
+            cJSON_AddNumberToObject(ini, "U_m_s", ic->U);
+            cJSON_AddNumberToObject(ini, "V_m_s", ic->V);
+        }
+        cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(rec->verdict));
+        tippe_design_protrusion pr;
+        tippe_design_protrusion_at(r->d, r->z2_mm, &pr);
+        tippe_design_protrusion_json(o, &pr);
+        cJSON_AddNumberToObject(o, "t_s", rec->t_s);
+        add_decision_json(o, rec);
+        number_or_null(o, "theta_final_rad", rec->theta_final_rad);
+        number_or_null(o, "spin_final_rad_s", rec->spin_final_rad_s);
+        cJSON_AddNumberToObject(o, "J0_kg_m3_s", rec->J0);
+        cJSON_AddNumberToObject(o, "jellett_rel_drift", rec->jellett_rel_drift);
+        cJSON_AddItemToObject(o, "options", tippe_launch_options_json(opt, 1));
+        cJSON_AddItemToObject(o, "theory", theory_json(r, opt));
+    }
+    return o;
+}
+

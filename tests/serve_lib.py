@@ -1,0 +1,84 @@
+"""What the tests of tippe serve share: a server started on a free loopback port
+(its URL read from what it prints), stopped with SIGTERM, and a small HTTP
+client that sends what a test wants (headers, bodies) and returns the status,
+headers and body."""
+import http.client
+import json
+import os
+import re
+import signal
+import subprocess
+import tempfile
+import time
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+class Server:
+    """tippe serve on 127.0.0.1 with a free port and a private TMPDIR (so that a
+    test can see that no temporary is left)."""
+
+    def __init__(self, tippe, *args, listen="127.0.0.1:0"):
+        self.tippe, self.args, self.listen = tippe, list(args), listen
+        self.tmp = tempfile.mkdtemp(prefix="tippe-serve-test.")
+        self.log = os.path.join(self.tmp, "server.log")
+
+    def __enter__(self):
+        env = dict(os.environ, TMPDIR=self.tmp)
+        self.logf = open(self.log, "w")
+        self.proc = subprocess.Popen([self.tippe, "serve", "--listen", self.listen] + self.args,
+                                     stdout=subprocess.DEVNULL, stderr=self.logf, cwd=REPO,
+                                     env=env)
+        deadline = time.time() + 20
+        while time.time() < deadline:
+            text = open(self.log).read()
+            m = re.search(r"(http://([0-9.]+|\[[0-9a-f:]+\]):(\d+)/(\?token=\w+)?)", text)
+            if m:
+                self.url, self.host, self.port = m.group(1), m.group(2), int(m.group(3))
+                self.token = m.group(4)[7:] if m.group(4) else None
+                return self
+            if self.proc.poll() is not None:
+                raise RuntimeError("tippe serve exited: " + text)
+            time.sleep(0.05)
+        raise RuntimeError("tippe serve printed no URL: " + open(self.log).read())
+
+    def stop(self):
+        """SIGTERM; returns the exit status and the temporaries left."""
+        if self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGTERM)
+            try:
+                self.proc.wait(timeout=60)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+        self.logf.close()
+        left = [f for f in os.listdir(self.tmp) if f != "server.log"]
+        return self.proc.returncode, left
+
+    def __exit__(self, *exc):
+        self.stop()
+
+    def request(self, method, path, body=None, headers=None, raw=False, timeout=120):
+        """(status, headers, body as JSON, or bytes when raw or not JSON)."""
+        c = http.client.HTTPConnection(self.host.strip("[]"), self.port, timeout=timeout)
+        h = {"Host": "%s:%d" % (self.host, self.port)}
+        if body is not None and not isinstance(body, (bytes, str)):
+            body = json.dumps(body)
+        if body is not None:
+            h["Content-Type"] = "application/json"
+        if self.token:
+            h["X-Tippe-Token"] = self.token
+        h.update(headers or {})
+        for k in [k for k, v in h.items() if v is None]:
+            del h[k]
+        c.request(method, path, body=body, headers=h)
+        r = c.getresponse()
+        data = r.read()
+        hdrs = {k.lower(): v for k, v in r.getheaders()}
+        c.close()
+        if not raw and hdrs.get("content-type", "").startswith("application/json"):
+            return r.status, hdrs, json.loads(data)
+        return r.status, hdrs, data
+
+    def post(self, path, body, **kw):
+        return self.request("POST", path, body, **kw)
