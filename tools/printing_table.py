@@ -7,7 +7,7 @@ import json
 import subprocess
 import sys
 
-TIPPE = "build/tippe"
+TIPPE = __import__("os").environ.get("TIPPE", "build/tippe")
 DESIGNS = ["m12-setscrew", "m3-setscrew", "drilled-ball-blind", "shell-rod-iron",
            "shell-rod-nylon", "shell-rod-through", "shell-band"]
 INFILLS = [0.15, 0.20, 0.40, 1.00]

@@ -174,6 +174,10 @@ typedef struct {
      * flow factor); the tolerance bands span the two readings */
     double calibration;
     double flow;                   /* extrusion multiplier */
+    /* printed in two halves cut at split_z_mm, each standing on its cut face (as
+     * tippe export --split writes them): solid layers on both faces */
+    int split;
+    double split_z_mm;
 } tippe_print_settings;
 
 /* PrusaSlicer 2.5's: 2 x 0.45 mm perimeters, 4 x 0.2 mm top/bottom (at least

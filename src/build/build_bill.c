@@ -233,11 +233,15 @@ void tippe_build_steps(tippe_build_sheet *s)
     tippe_build_file_stem(s, stem, sizeof stem);
     if (s->needs_split)
         tippe_build_step(s, "Print the body in two halves (%s-*-lower.stl and %s-*-upper.stl, each standing "
-                "on its flat cut face at the equator: no supports) with the print settings.",
+                "on its flat cut face at the equator) with the print settings. A hollow half "
+                "needs support inside its dome (PrusaSlicer: about 8 cm^3 for a 50 mm shell, "
+                "docs/printing.md); keep it out of the joint's groove with a support blocker.",
              stem, stem);
     else
         tippe_build_step(s, "Print the body with the print settings, its axis vertical (the mass model "
-                "assumes it), no supports inside the hole.");
+                "assumes it). A ball printed whole stands on a few mm^2 and needs support "
+                "under its lower hemisphere (PrusaSlicer: about 3 cm^3 for a 50 mm ball), none "
+                "inside the hole; printed in halves (tippe export --split) a solid ball needs none.");
     if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
         double bite = 0.5 * (s->thread.d_mm - s->hole_diameter_mm);
         if (s->hole_insert)

@@ -246,7 +246,8 @@ static int export_parse(export_args *a, int argc, char **argv)
          .help = "warn about printed walls thinner than this (two 0.45 mm perimeters)"},
         {.name = "split", .kind = TIPPE_CLI_FLAG, .value = &q->profile.split,
          .help = "cut each body at a plane across the axis into two halves, each\n"
-                 "written standing on its flat cut face (no supports needed)"},
+                 "written standing on its flat cut face (a solid body's halves need no\n"
+                 "support; a shell's need it inside the dome: docs/printing.md)"},
         {.name = "split-z", .kind = TIPPE_CLI_DOUBLE, .value = &q->profile.split_z_mm,
          .arg = "MM", .unit = "mm", .min = -TIPPE_CLI_Z2_MAX_MM, .max = TIPPE_CLI_Z2_MAX_MM,
          .def = "0", .help = "height of the cut plane above the sphere's centre (with --split)"},

@@ -161,12 +161,17 @@ static double spacing(double w, double t) { return w - t * (1.0 - M_PI / 4.0); }
 typedef struct {
     const tippe_solid *part, *voids;
     int n_voids, flip;
+    int half;   /* 0: the whole part; +1: only z >= cut; -1: only z <= cut (a split half) */
+    double cut; /* m, design frame */
 } slicer_part;
 
 static void outline_at(const slicer_part *p, double z_print, rings *out)
 {
     double z = p->flip ? -z_print : z_print;
     double lo[MAX_RINGS], hi[MAX_RINGS];
+    out->n = 0;
+    if ((p->half > 0 && z < p->cut) || (p->half < 0 && z > p->cut))
+        return;
     int n = tippe_print_section(p->part, p->voids, p->n_voids, z, lo, hi, MAX_RINGS);
     out->n = 0;
     for (int i = 0; i < n; i++)
@@ -400,20 +405,17 @@ int tippe_print_slice_moments(const tippe_solid *part, const tippe_solid *voids,
     return tippe_print_slice_layers(part, voids, n_voids, s, flip, out, NULL, 0, err);
 }
 
-int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, int n_voids,
-                             const tippe_print_settings *s, int flip, tippe_print_sliced *out,
-                             tippe_print_layer *rows, int cap, tippe_error *err)
+/* One piece printed standing on the bed: the whole part, or a split half. */
+static int slice_piece(const slicer_part *Pp, const tippe_print_settings *s,
+                       tippe_print_sliced *out, tippe_print_layer *rows, int cap,
+                       tippe_error *err)
 {
+    const slicer_part P = *Pp;
+    const int flip = P.flip;
     memset(out, 0, sizeof *out);
     double bulk = tippe_print_pattern_bulk(s->pattern);
-    if (!(bulk > 0))
-        return tippe_error_set(err, TIPPE_EINPUT,
-                               "infill pattern '%s' deposits a shape-dependent amount (no bulk "
-                               "fraction to model): slice the part and give its G-code",
-                               tippe_print_pattern_name(s->pattern));
-    slicer_part P = {part, voids, n_voids, flip};
     double zlo, zhi;
-    if (!tippe_print_extent(part, &zlo, &zhi))
+    if (!tippe_print_extent(P.part, &zlo, &zhi))
         return TIPPE_OK;
     if (flip) {
         double t = zlo;
@@ -497,6 +499,44 @@ int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, 
     out->bed_z_m = flip ? -bed : bed;
     out->top_z_m = flip ? -top : top;
     free(L);
+    return TIPPE_OK;
+}
+
+int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, int n_voids,
+                             const tippe_print_settings *s, int flip, tippe_print_sliced *out,
+                             tippe_print_layer *rows, int cap, tippe_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (!(tippe_print_pattern_bulk(s->pattern) > 0))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "infill pattern '%s' deposits a shape-dependent amount (no bulk "
+                               "fraction to model): slice the part and give its G-code",
+                               tippe_print_pattern_name(s->pattern));
+    if (!s->split) {
+        slicer_part P = {part, voids, n_voids, flip, 0, 0};
+        return slice_piece(&P, s, out, rows, cap, err);
+    }
+    /* in two halves, each standing on its cut face (tippe export --split): the
+     * upper half as designed, the lower one upside down; the cut face is each
+     * half's first layer, a bottom surface like any other */
+    const double cut = s->split_z_mm * 1e-3;
+    slicer_part up = {part, voids, n_voids, 0, +1, cut}, down = {part, voids, n_voids, 1, -1, cut};
+    tippe_print_sliced a, b;
+    int rc = slice_piece(&up, s, &a, rows, cap, err);
+    if (!rc)
+        rc = slice_piece(&down, s, &b, rows && cap > a.n_layers ? rows + a.n_layers : NULL,
+                         cap - a.n_layers, err);
+    if (rc)
+        return rc;
+    out->fixed = tippe_moments_add(a.fixed, b.fixed);
+    out->sparse_region = tippe_moments_add(a.sparse_region, b.sparse_region);
+    out->sparse_band = tippe_moments_add(a.sparse_band, b.sparse_band);
+    out->wall_m3 = a.wall_m3 + b.wall_m3;
+    out->solid_m3 = a.solid_m3 + b.solid_m3;
+    out->n_layers = a.n_layers + b.n_layers;
+    out->s_fill_m = a.s_fill_m > 0 ? a.s_fill_m : b.s_fill_m;
+    out->bed_z_m = out->top_z_m = cut;
+    out->deposit = tippe_print_sliced_at(out, s, s->infill, &out->sparse_m3, &out->anchor_m3);
     return TIPPE_OK;
 }
 
