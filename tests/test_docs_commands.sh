@@ -13,7 +13,7 @@
 # or the benchmarks (cmake, tools/quickstart.sh, tools/run-tests.sh,
 # tools/bench/run.sh), any block right after the line
 # <!-- docs-test: skip REASON --> in the Markdown, and a command that needs an
-# optional tool which is missing here: openscad (not installed by default,
+# optional tool which is missing here: prusa-slicer (tippe slice), openscad (not installed by default,
 # tools/deps.sh), mpirun, or build/tippe-mpi (built only when Open MPI was found;
 # any mpirun command needs it, since tippe hands over to it). Such a command is
 # recognised wherever the tool stands as a program: first, after `time` or
@@ -36,7 +36,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 # The optional tools that are missing here, for the Markdown reader below.
 missing=()
-for tool in openscad mpirun; do
+for tool in openscad mpirun prusa-slicer; do
     command -v "$tool" >/dev/null 2>&1 || missing+=("$tool")
 done
 [ -x "$bindir/tippe-mpi" ] || missing+=(tippe-mpi)
@@ -54,6 +54,8 @@ MISSING = set(os.environ.get("DOCS_MISSING", "").split())
 # a program's place: the start, after `time` or VAR=value, or after | ; & ( {
 PROGRAM = r"(?:^|[|;&({]\s*)(?:(?:time|env|nice)\s+|[A-Za-z_][A-Za-z0-9_]*=\S*\s+)*"
 NEEDS = {"openscad": re.compile(PROGRAM + r"openscad\b"),
+         # tippe slice and tools/slice.sh run PrusaSlicer's command line
+         "prusa-slicer": re.compile(r"(?:^|[\s/])(?:tippe slice\b|slice\.sh\b)|" + PROGRAM + r"prusa-slicer\b"),
          "mpirun": re.compile(PROGRAM + r"(?:mpirun|mpiexec)\b")}
 
 def needs(cmd):
