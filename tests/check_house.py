@@ -88,6 +88,8 @@ for folder, name, path in objs:
         checks += 1
         if sym.startswith(".gomp_critical_user_tippe_"):
             continue  # an OpenMP named critical section: tippe_ by its name
+        if sym.startswith(("__odr_asan", "__asan_", "__ubsan_", "__sancov_")):
+            continue  # a sanitizer's own symbol (TIPPE_SANITIZE, TIPPE_FUZZ builds)
         if not sym.startswith("tippe_"):
             fail("names: src/%s/%s exports %s (no tippe_ prefix)" % (folder, name, sym))
         elif not any(sym[6:] == own or sym[6:].startswith(own + "_") for own in OWNS[folder]):
