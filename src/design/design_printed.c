@@ -5,6 +5,7 @@
 
 #include <libgen.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -43,6 +44,84 @@ static tippe_solid print_solid(const part *p)
     return s;
 }
 
+/* The layers of a part do not depend on its infill, its calibration or its
+ * density (tippe_print_sliced_at applies the infill), and the tolerance bands
+ * and an optimiser's candidates reload a design many times changing only those
+ * (or another part): a few recent slicings are kept, keyed by everything that
+ * shapes the layers. Shared by the threads of tippe serve and the OpenMP loops,
+ * hence the lock. */
+#define SLICE_CACHE 8
+typedef struct {
+    int used, n_voids;
+    tippe_solid part, voids[MAX_PARTS];
+    tippe_print_settings s; /* infill and calibration zeroed: not part of the key */
+    tippe_print_sliced out;
+} slice_entry;
+static slice_entry slice_cache[SLICE_CACHE];
+static int slice_next;
+static pthread_mutex_t slice_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static int same_solid(const tippe_solid *a, const tippe_solid *b)
+{
+    return a->kind == b->kind && a->z_centre == b->z_centre && a->radius == b->radius &&
+           a->inner_radius == b->inner_radius && a->height == b->height &&
+           a->centre_radius == b->centre_radius && a->radial_semi == b->radial_semi &&
+           a->axial_semi == b->axial_semi && a->clip_outer == b->clip_outer &&
+           a->clip_inner == b->clip_inner;
+}
+
+static int same_settings(const tippe_print_settings *a, const tippe_print_settings *b)
+{
+    return a->perimeters == b->perimeters && a->line_width_mm == b->line_width_mm &&
+           a->top_bottom_layers == b->top_bottom_layers &&
+           a->layer_height_mm == b->layer_height_mm && a->model == b->model &&
+           a->pattern == b->pattern && a->external_width_mm == b->external_width_mm &&
+           a->infill_width_mm == b->infill_width_mm &&
+           a->first_layer_height_mm == b->first_layer_height_mm &&
+           a->first_layer_width_mm == b->first_layer_width_mm && a->top_min_mm == b->top_min_mm &&
+           a->bottom_min_mm == b->bottom_min_mm && a->infill_overlap == b->infill_overlap &&
+           a->anchor_mm == b->anchor_mm && a->anchor_max_mm == b->anchor_max_mm &&
+           a->nozzle_mm == b->nozzle_mm && a->flow == b->flow && a->split == b->split &&
+           a->split_z_mm == b->split_z_mm;
+}
+
+static int sliced_cached(const tippe_solid *shape, const tippe_solid *holes, int n_holes,
+                         const tippe_print_settings *s, tippe_print_sliced *out, tippe_error *err)
+{
+    pthread_mutex_lock(&slice_lock);
+    for (int k = 0; k < SLICE_CACHE; k++) {
+        const slice_entry *e = &slice_cache[k];
+        int hit = e->used && e->n_voids == n_holes && same_solid(&e->part, shape) &&
+                  same_settings(&e->s, s);
+        for (int j = 0; hit && j < n_holes; j++)
+            hit = same_solid(&e->voids[j], &holes[j]);
+        if (hit) {
+            *out = e->out;
+            pthread_mutex_unlock(&slice_lock);
+            /* the infill is the caller's: the deposit at it */
+            out->deposit = tippe_print_sliced_at(out, s, s->infill, &out->sparse_m3,
+                                                 &out->anchor_m3);
+            return TIPPE_OK;
+        }
+    }
+    pthread_mutex_unlock(&slice_lock);
+    int rc = tippe_print_slice_moments(shape, holes, n_holes, s, 0, out, err);
+    if (rc || n_holes > MAX_PARTS)
+        return rc;
+    pthread_mutex_lock(&slice_lock);
+    slice_entry *e = &slice_cache[slice_next];
+    slice_next = (slice_next + 1) % SLICE_CACHE;
+    e->used = 1;
+    e->n_voids = n_holes;
+    e->part = *shape;
+    for (int j = 0; j < n_holes; j++)
+        e->voids[j] = holes[j];
+    e->s = *s;
+    e->out = *out;
+    pthread_mutex_unlock(&slice_lock);
+    return TIPPE_OK;
+}
+
 /* The printed part under the slicer's rules (print_slicer.c), layer by layer.
  * A weighed mass says how much, not where: the nominal reading puts the
  * difference in the sparse infill (the infill that gives that mass, found by
@@ -56,7 +135,7 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
     char pth[64];
     snprintf(pth, sizeof pth, "parts[%d].print", i);
     tippe_error perr;
-    int rc = tippe_print_slice_moments(shape, holes, n_holes, &p->print, 0, &p->sliced, &perr);
+    int rc = sliced_cached(shape, holes, n_holes, &p->print, &p->sliced, &perr);
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", perr.msg)
                                   : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,
