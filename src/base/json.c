@@ -480,3 +480,16 @@ void tippe_json_note_set(tippe_json_reader *r, const char *path, const char *tex
     r->set_text[r->n_set] = text;
     r->n_set++;
 }
+
+void tippe_json_add_range(cJSON *o, const char *key, double lo, double hi)
+{
+    if (!isfinite(lo) || !isfinite(hi)) {
+        cJSON_AddNullToObject(o, key);
+        return;
+    }
+    cJSON *range = cJSON_AddArrayToObject(o, key);
+    if (range) {
+        cJSON_AddItemToArray(range, cJSON_CreateNumber(lo));
+        cJSON_AddItemToArray(range, cJSON_CreateNumber(hi));
+    }
+}

@@ -127,4 +127,8 @@ int tippe_json_bool(const tippe_json_reader *r, const cJSON *obj, const char *pa
 int tippe_json_put(const tippe_json_reader *r, cJSON *obj, const char *key, cJSON *item);
 void tippe_json_note_set(tippe_json_reader *r, const char *path, const char *text);
 
+/* Adds key: [lo, hi], or key: null when either end is not finite (a range the
+ * caller could not bound). */
+void tippe_json_add_range(cJSON *o, const char *key, double lo, double hi);
+
 #endif

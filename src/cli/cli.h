@@ -284,7 +284,6 @@ const char *tippe_cli_friction_text(const tippe_dynamics_model *m, char *buf, si
 /* v, or null where it is not finite (not applicable). */
 void tippe_cli_json_number_or_null(struct cJSON *o, const char *key, double v);
 /* [lo, hi], or null where either is not finite. */
-void tippe_cli_json_range(struct cJSON *o, const char *key, double lo, double hi);
 
 /* ---- one launch, from a scenario file or a design (tippe simulate, animate) ---- */
 

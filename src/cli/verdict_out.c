@@ -1,6 +1,7 @@
 /* The words and JSON fields that say how a dynamics verdict was reached, shared by
  * simulate, check and launch (docs/dynamics.md, "Proved verdicts"). */
 #include "cli.h"
+#include "base/json.h"
 
 #include <cjson/cJSON.h>
 
@@ -64,19 +65,6 @@ void tippe_cli_json_number_or_null(cJSON *o, const char *key, double v)
         cJSON_AddNullToObject(o, key);
 }
 
-void tippe_cli_json_range(cJSON *o, const char *key, double lo, double hi)
-{
-    if (!isfinite(lo) || !isfinite(hi)) {
-        cJSON_AddNullToObject(o, key);
-        return;
-    }
-    cJSON *range = cJSON_AddArrayToObject(o, key);
-    if (range) {
-        cJSON_AddItemToArray(range, cJSON_CreateNumber(lo));
-        cJSON_AddItemToArray(range, cJSON_CreateNumber(hi));
-    }
-}
-
 void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
 {
     cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(r->how));
@@ -85,7 +73,7 @@ void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
     tippe_cli_json_number_or_null(o, "spin_final_rad_s", r->spin_final_rad_s);
     tippe_cli_json_number_or_null(o, "phi_dot_final_rad_s", r->phi_dot_final_rad_s);
     if (r->how == TIPPE_DECIDED_TRAPPED || r->how == TIPPE_DECIDED_ROLLING)
-        tippe_cli_json_range(o, "theta_range_rad", r->theta_lo_rad, r->theta_hi_rad);
+        tippe_json_add_range(o, "theta_range_rad", r->theta_lo_rad, r->theta_hi_rad);
     else
         cJSON_AddNullToObject(o, "theta_range_rad");
     /* an infinite gap (a single well) is null, with barrier false */

@@ -459,6 +459,16 @@ static int load(const char *path, const char *text, size_t text_len, const char 
         rc = tippe_design_apply_override(c, root, overrides[i]);
     if (!rc)
         rc = tippe_design_build(c, root, path, d, check);
+    return tippe_design_finish(c, root, d, overrides, n_overrides, rc, out, err);
+}
+
+/* The end of every load (a file, a text, a source's variant): the design
+ * remembers its overrides, the parse is freed, and the design is handed out or,
+ * on failure, freed. */
+int tippe_design_finish(tippe_json_reader *c, cJSON *root, tippe_design *d,
+                        const char *const *overrides, int n_overrides, int rc,
+                        tippe_design **out, tippe_error *err)
+{
     if (!rc)
         rc = tippe_design_remember_overrides(d, overrides, n_overrides, err);
     cJSON_Delete(root);

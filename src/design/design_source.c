@@ -91,16 +91,7 @@ int tippe_design_source_build(const tippe_design_source *s, const char *const *o
         rc = tippe_design_build(c, root, s->path, d, 1);
         d->source = NULL;
     }
-    if (!rc)
-        rc = tippe_design_remember_overrides(d, overrides, n_overrides, err);
-    cJSON_Delete(root);
-    free(c);
-    if (rc) {
-        tippe_design_free(d);
-        return rc;
-    }
-    *out = d;
-    return TIPPE_OK;
+    return tippe_design_finish(c, root, d, overrides, n_overrides, rc, out, err);
 }
 
 void tippe_design_source_free(tippe_design_source *s)

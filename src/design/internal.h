@@ -135,6 +135,9 @@ typedef struct {
 /* design.c: the loader's pieces that design sources reuse. */
 int tippe_design_remember_overrides(tippe_design *d, const char *const *overrides, int n,
                                     tippe_error *err);
+int tippe_design_finish(tippe_json_reader *c, cJSON *root, tippe_design *d,
+                        const char *const *overrides, int n_overrides, int rc,
+                        tippe_design **out, tippe_error *err);
 char *tippe_design_dup_string(const char *s);
 int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tippe_design *d,
                        int check);

@@ -2,6 +2,7 @@
  * (tippe check), and its report for both front ends (tippe check --json,
  * tippe serve's /api/check); theory beside launches. */
 #include "tippe/physics.h"
+#include "base/json.h"
 #include "tippe/sweep.h"
 
 #include <cjson/cJSON.h>
@@ -15,19 +16,6 @@ static void number_or_null(cJSON *o, const char *key, double v)
         cJSON_AddNumberToObject(o, key, v);
     else
         cJSON_AddNullToObject(o, key);
-}
-
-static void range_or_null(cJSON *o, const char *key, double lo, double hi)
-{
-    if (!isfinite(lo) || !isfinite(hi)) {
-        cJSON_AddNullToObject(o, key);
-        return;
-    }
-    cJSON *range = cJSON_AddArrayToObject(o, key);
-    if (range) {
-        cJSON_AddItemToArray(range, cJSON_CreateNumber(lo));
-        cJSON_AddItemToArray(range, cJSON_CreateNumber(hi));
-    }
 }
 
 /* "set": the overrides the report reflects (an empty array without any). */
@@ -146,7 +134,7 @@ static void add_decision_json(cJSON *o, const tippe_launch_record *rec)
     cJSON_AddStringToObject(o, "decided_by", tippe_decision_name(rec->how));
     number_or_null(o, "margin_J", rec->margin_J);
     number_or_null(o, "barrier_gap_J", rec->barrier_gap_J);
-    range_or_null(o, "theta_range_rad", rec->theta_lo_rad, rec->theta_hi_rad);
+    tippe_json_add_range(o, "theta_range_rad", rec->theta_lo_rad, rec->theta_hi_rad);
     number_or_null(o, "Rn_bound_N", rec->Rn_bound_N);
     number_or_null(o, "t_flip_s", rec->t_flip_s);
 }
