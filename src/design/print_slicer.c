@@ -15,9 +15,9 @@
 
 /* Rings per layer: the part's one ring less up to one per void, times two for the
  * differences taken below. */
-#define MAX_RINGS 128
-/* Layers at most: a 1 m ball at 0.05 mm layers. */
-#define MAX_LAYERS 50000
+#define MAX_RINGS 64
+/* Layers at most: a 1 m ball at 0.1 mm layers (each layer keeps ~5 kB of rings). */
+#define MAX_LAYERS 20000
 /* The extremes of the printed part in z are found to this (m). */
 #define EDGE_TOL_M 1e-12
 /* PrusaSlicer 2.5 grows top and bottom fill surfaces by 3 mm into the infill
