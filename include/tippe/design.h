@@ -486,6 +486,26 @@ int tippe_design_part_lengths(const tippe_design *d, int i, const char **keys, i
  * the top rolls on (radius radius_mm, centred). */
 int tippe_design_forms_sphere(const tippe_design *d, int i);
 
+/* A pole where the surface is not the sphere: a hole opens there, and a top
+ * tilted less than half_angle_rad on that pole stands on the hole's rim. */
+typedef struct {
+    int pole;              /* +1 or -1: the z side */
+    double half_angle_rad; /* 0: the sphere is whole there */
+    double radius_mm;      /* of the opening */
+    char part[64];         /* the void that opens there */
+} tippe_design_cap;
+
+/* The caps at both poles (caps[0] +z, caps[1] -z) with the weight at Z2 (a
+ * moving void travels with it); returns how many poles are open. */
+int tippe_design_polar_caps(const tippe_design *d, double z2_mm, tippe_design_cap caps[2]);
+/* The pole (+1, -1) whose opening a top at tilt theta rests on, 0 if it rests
+ * on its sphere; rest_side is the z side down at theta = 0 (tippe_top.com_side
+ * gives the side of the centre of mass, which is down). */
+int tippe_design_cap_at_tilt(const tippe_design_cap caps[2], int rest_side, double theta_rad);
+struct cJSON;
+/* Adds "polar_caps": [{pole, part, opening_mm, half_angle_rad}] (the open poles). */
+void tippe_design_caps_json(struct cJSON *o, const tippe_design_cap caps[2]);
+
 /* Warning i (0, 1, ...) about a probable unit mistake in a design that loaded:
  * a part length below 0.01 mm (metres typed for mm: the message says what it
  * would be). Writes the message (naming the field) into buf and returns 1, or

@@ -51,6 +51,18 @@ static void print_table(const tippe_design *d, double z2_mm, const tippe_top *t,
     tippe_design_protrusion pr;
     tippe_design_protrusion_at(d, z2_mm, &pr);
     tippe_cli_print_model_validity(&pr, z2_mm, "contact  ", "the group above is");
+    tippe_design_cap caps[2];
+    if (tippe_design_polar_caps(d, z2_mm, caps))
+        for (int k = 0; k < 2; k++)
+            if (caps[k].half_angle_rad > 0)
+                printf("pole     %s: the opening of '%s' (%.2f mm): tilted less than %.1f deg on "
+                       "this pole the top stands on its rim, not on its sphere (%s)\n",
+                       caps[k].pole > 0 ? "+z" : "-z", caps[k].part, 2 * caps[k].radius_mm,
+                       caps[k].half_angle_rad * 180 / M_PI,
+                       caps[k].pole == (t->com_side ? t->com_side : 1)
+                           ? "the pole it stands on at theta = 0: upright and a hand launch's "
+                             "small tilt are there, and the model does not apply"
+                           : "the pole it stands on when inverted");
     printf("\n%-12s %-9s %-7s %-12s %9s %12s\n", "part", "shape", "role", "material",
            "g/cm^3", "mass g");
     int n = tippe_design_n_parts(d);

@@ -27,6 +27,24 @@ void tippe_design_protrusion_json(cJSON *o, const tippe_design_protrusion *p)
     cJSON_AddItemToObject(po, "theta_range_rad", cJSON_CreateDoubleArray(range, 2));
 }
 
+void tippe_design_caps_json(cJSON *o, const tippe_design_cap caps[2])
+{
+    cJSON *arr = cJSON_AddArrayToObject(o, "polar_caps");
+    for (int k = 0; arr && k < 2; k++) {
+        if (!(caps[k].half_angle_rad > 0))
+            continue;
+        cJSON *c = cJSON_CreateObject();
+        if (!c || !cJSON_AddItemToArray(arr, c)) {
+            cJSON_Delete(c);
+            return;
+        }
+        cJSON_AddStringToObject(c, "pole", caps[k].pole > 0 ? "+z" : "-z");
+        cJSON_AddStringToObject(c, "part", caps[k].part);
+        cJSON_AddNumberToObject(c, "opening_mm", 2 * caps[k].radius_mm);
+        cJSON_AddNumberToObject(c, "half_angle_rad", caps[k].half_angle_rad);
+    }
+}
+
 cJSON *tippe_materials_json(const tippe_materials *t, const char *file)
 {
     cJSON *o = cJSON_CreateObject();

@@ -83,6 +83,9 @@ cJSON *tippe_sweep_eval_json(const tippe_design *d, double z2_mm, const tippe_to
     tippe_design_protrusion pr;
     tippe_design_protrusion_at(d, z2_mm, &pr);
     tippe_design_protrusion_json(o, &pr);
+    tippe_design_cap caps[2];
+    tippe_design_polar_caps(d, z2_mm, caps);
+    tippe_design_caps_json(o, caps);
     if (!ok || !parts || tippe_profile_printed_parts_json(o, d)) {
         cJSON_Delete(o);
         return NULL;

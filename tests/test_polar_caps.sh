@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Poles where the surface is not the sphere (issue 25.7): a hole that opens at a pole removes
+# the cap within asin(r / R) of it, where a tilted top stands on the hole's rim. The M12's
+# through hole (r 5.5 mm, R 25 mm) opens both poles; the blind hole only its open end; the
+# band shell neither. The half-angle is the closed form to rounding (1e-12).
+source "$(dirname "$0")/lib.sh"
+setup "$@"
+
+"$tippe" eval designs/m12-setscrew.json --z2 10 --json >"$tmp/m12.json"
+check "M12: both poles open, 12.7 degrees" json_ok "$tmp/m12.json" \
+    "len(o['polar_caps']) == 2 and all(abs(c['half_angle_rad'] - math.asin(5.5 / 25)) < 1e-12 and c['opening_mm'] == 11 for c in o['polar_caps'])"
+"$tippe" eval designs/drilled-ball-blind.json --z2 0 --json >"$tmp/blind.json"
+check "blind hole: only its open pole" json_ok "$tmp/blind.json" \
+    "[c['pole'] for c in o['polar_caps']] == ['+z']"
+"$tippe" eval designs/shell-band.json --z2 5 --json >"$tmp/band.json"
+check "band shell: the sphere is whole" json_ok "$tmp/band.json" "o['polar_caps'] == []"
+"$tippe" eval designs/m12-setscrew.json --z2 10 >"$tmp/m12.txt"
+check "eval says which pole the top stands on upright" grep -q \
+    "^pole     +z: the opening of 'hole' (11.00 mm): tilted less than 12.7 deg .*the pole it stands on at theta = 0" "$tmp/m12.txt"
+finish
