@@ -116,6 +116,21 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
     tippe_design_protrusion pr;
     tippe_design_protrusion_at(r->d, a->z2_mm, &pr);
     tippe_cli_print_model_validity(&pr, a->z2_mm, "contact    ", "the verdict above is");
+    tippe_design_cap caps[2];
+    tippe_design_polar_caps(r->d, a->z2_mm, caps);
+    const int side = r->top.com_side ? r->top.com_side : 1;
+    const double th[2] = {r->ic.theta, rec->theta_final_rad};
+    for (int k = 0; k < 2; k++) {
+        int pole = isfinite(th[k]) ? tippe_design_cap_at_tilt(caps, side, th[k]) : 0;
+        if (!pole)
+            continue;
+        const tippe_design_cap *c = &caps[pole > 0 ? 0 : 1];
+        printf("pole       the launch %s %.1f deg from the %s pole, within the opening of '%s' "
+               "(%.1f deg): the top stands on its rim there, not on its sphere, which the "
+               "verdict assumes\n",
+               k ? "ends" : "starts", (pole == side ? th[k] : M_PI - th[k]) * 180 / M_PI,
+               pole > 0 ? "+z" : "-z", c->part, c->half_angle_rad * 180 / M_PI);
+    }
     if (isfinite(rec->t_flip_s))
         printf("flip       theta passed 90 deg at t = %.4g s of model time (%s)\n",
                rec->t_flip_s, a->o.law == TIPPE_FRICTION_VISCOUS ? "viscous friction"

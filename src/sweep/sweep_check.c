@@ -163,6 +163,26 @@ cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_opt
         tippe_design_protrusion pr;
         tippe_design_protrusion_at(r->d, r->z2_mm, &pr);
         tippe_design_protrusion_json(o, &pr);
+        /* a launch that starts or ends within a hole's opening at a pole stands on
+         * its rim there, not on the sphere the model rolls (issue 25.7) */
+        tippe_design_cap caps[2];
+        tippe_design_polar_caps(r->d, r->z2_mm, caps);
+        int side = r->top.com_side ? r->top.com_side : 1;
+        int at_start = tippe_design_cap_at_tilt(caps, side, ic->theta);
+        int at_end = isfinite(rec->theta_final_rad)
+                         ? tippe_design_cap_at_tilt(caps, side, rec->theta_final_rad)
+                         : 0;
+        cJSON *oc = cJSON_AddObjectToObject(o, "on_polar_cap");
+        if (oc) {
+            if (at_start)
+                cJSON_AddStringToObject(oc, "start", at_start > 0 ? "+z" : "-z");
+            else
+                cJSON_AddNullToObject(oc, "start");
+            if (at_end)
+                cJSON_AddStringToObject(oc, "end", at_end > 0 ? "+z" : "-z");
+            else
+                cJSON_AddNullToObject(oc, "end");
+        }
         cJSON_AddNumberToObject(o, "t_s", rec->t_s);
         add_decision_json(o, rec);
         number_or_null(o, "theta_final_rad", rec->theta_final_rad);
