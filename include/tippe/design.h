@@ -98,8 +98,11 @@ tippe_inertia tippe_moments_inertia(tippe_moments a);
  * The part is printed with the top's axis vertical (z up): the only
  * orientation in which every layer is a set of concentric annuli, so the
  * printed part stays a solid of revolution and the top's A, C and eps keep
- * their meaning. The printed part P is the part's region minus the voids cut
- * from it. A point of P is solid material when
+ * their meaning. Two models: the slicer's rules applied layer by layer (the
+ * default; tippe_print_slice_moments below, print_slicer.c), and the continuous
+ * rule described here (print.c; "model": "skins"). The printed part P is the
+ * part's region minus the voids cut from it. Under the continuous rule a point
+ * of P is solid material when
  *   - (walls) in the horizontal layer through it, its radial distance to a
  *     circle bounding the annulus that contains it is at most wall_m
  *     (= perimeters x line width); the axis is not a boundary, so a layer that

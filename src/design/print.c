@@ -1,4 +1,6 @@
-/* print.c: the sparse core of a printed part (see include/tippe/design.h).
+/* print.c: the sparse core of a printed part under the continuous rule (the
+ * print block's "model": "skins"; the default is the slicer's rules,
+ * print_slicer.c; see include/tippe/design.h).
  *
  * Notation: P is the printed part (the part minus its voids) in the (r, z)
  * half-plane; w is the wall thickness, t the skin thickness. A point is in
