@@ -151,6 +151,7 @@ typedef struct {
     double w_ext;       /* the external perimeter's width, m */
     double s_ext, s_per, s_fill; /* spacings of its lines, m */
     rings outline, walls, infill, surface;
+    rings slice_surface; /* the slice's own top and bottom (perimeters' area included) */
     rings bridge;       /* bottom surfaces over air, grown onto their support: bridged */
 } layer_t;
 
@@ -244,6 +245,22 @@ static void surfaces(const tippe_print_settings *s, layer_t *layers, int n_layer
     if (s->top_bottom_layers == 0)
         both.n = 0; /* no solid layers: surfaces are filled as the rest (PrintObject.cpp) */
     double d = 0.5 * SURFACE_OPENING_FACTOR * L->w_ext;
+    /* the same surfaces of the whole slice, the perimeters' area included: the
+     * vertical shells take these too (discover_vertical_shells' cache of
+     * layerm.slices' stTop and stBottom, beside the fill surfaces'), and a step
+     * wider than d_f - 1.05 s reaches further in than the fill surfaces do */
+    {
+        rings st, sb, sboth;
+        rings_subtract(&L->outline, i + 1 < n_layers ? &layers[i + 1].outline : &none, &st);
+        if (i == 0)
+            sb = L->outline;
+        else
+            rings_subtract(&L->outline, &layers[i - 1].outline, &sb);
+        rings_union(&st, &sb, &sboth);
+        if (s->top_bottom_layers == 0)
+            sboth.n = 0;
+        rings_opening(&sboth, d, d, &L->slice_surface);
+    }
     rings_opening(&both, d, d, &open);
     rings grown;
     rings_offset(&open, open.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &grown);
@@ -298,9 +315,11 @@ static void solid_infill(const tippe_print_settings *s, const layer_t *layers, i
             continue;
         rings_intersect(&common, &layers[j].infill, &t);
         common = t;
-        rings g;
+        rings g, g2, both;
         rings_offset(&layers[j].surface, sp, &g);
-        rings_union(&cover, &g, &t);
+        rings_offset(&layers[j].slice_surface, sp, &g2);
+        rings_union(&g, &g2, &both);
+        rings_union(&cover, &both, &t);
         cover = t;
     }
     rings shell, opened;
