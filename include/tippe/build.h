@@ -86,6 +86,12 @@ const tippe_build_catalogue_item *tippe_build_catalogue_match(const tippe_build_
                                                               double radius_mm, double height_mm,
                                                               const tippe_build_catalogue_set **set);
 
+/* The first item (in file order) named name, and its set in *set (if not
+ * NULL); NULL when none is. */
+const tippe_build_catalogue_item *tippe_build_catalogue_find(const tippe_build_catalogue *c,
+                                                             const char *name,
+                                                             const tippe_build_catalogue_set **set);
+
 /* How the weight's place is measured. */
 typedef enum {
     TIPPE_BUILD_MEASURE_NONE, /* no hole or rod on the axis found: Z2 only */
@@ -171,7 +177,8 @@ int tippe_build_design_fit(const tippe_design *d, double clearance_mm, int *part
 typedef struct {
     tippe_build_hole_fit hole_fit;
     double clearance_mm;     /* export's radial clearance of holes for hardware */
-    const char *catalogue;   /* hardware catalogue file; NULL: none */
+    const char *catalogue;   /* hardware catalogue file; NULL: the design's "catalogue",
+                                if it names one, else none */
     /* the catalogue read already (the command reads it before any work, so that
      * a bad one is refused first); NULL: tippe_build_compute reads catalogue */
     const tippe_build_catalogue *catalogue_read;

@@ -287,22 +287,57 @@ static double depth_at(const tippe_build_sheet *s, double z2_mm)
 
 /* --------------------------------------------------------- catalogue */
 
-/* The catalogue item with the screw's radius and height: 1 matched, 0 not,
- * or a status < 0 with err set if the file does not read. */
-static int match_catalogue(const tippe_build_options *o, double r_mm, double h_mm,
-                           tippe_build_sheet *out, tippe_error *err)
+/* The catalogue item the weight is: the one its part names ("catalogue_item",
+ * which must be in the catalogue and of the part's radius and height), else
+ * the one with the screw's radius and height. 1 matched, 0 not, or a status
+ * < 0 with err set if the file does not read or the named item is wrong. */
+static int match_catalogue(const tippe_design *d, const tippe_build_options *o, int named,
+                           double r_mm, double h_mm, tippe_build_sheet *out, tippe_error *err)
 {
     tippe_build_catalogue *own = NULL;
     const tippe_build_catalogue *c = o->catalogue_read;
+    const char *file = o->catalogue ? o->catalogue : tippe_design_catalogue(d);
+    const char *name = named >= 0 ? tippe_design_part_catalogue_item(d, named) : NULL;
+    if (!c && !file)
+        return -tippe_error_set(err, TIPPE_EINPUT,
+                                "%s: parts[%d].catalogue_item: '%s' names an item, but no "
+                                "catalogue is given (the design's \"catalogue\", --catalogue "
+                                "or catalogue.json beside the design)",
+                                tippe_design_path(d), named, name);
     if (!c) {
-        int rc = tippe_build_catalogue_load(o->catalogue, &own, err);
+        int rc = tippe_build_catalogue_load(file, &own, err);
         if (rc)
             return -rc;
         c = own;
     }
     const tippe_build_catalogue_set *set = NULL;
-    const tippe_build_catalogue_item *it = tippe_build_catalogue_match(c, r_mm, h_mm, &set);
-    if (it) {
+    const tippe_build_catalogue_item *it = NULL;
+    int rc = TIPPE_OK;
+    tippe_design_solid ws;
+    if (name && !tippe_design_part_solid(d, named, &ws)) {
+        /* the named part itself (the weight may have more parts) */
+        r_mm = ws.radius_mm;
+        h_mm = ws.height_mm;
+    }
+    if (name) {
+        it = tippe_build_catalogue_find(c, name, &set);
+        if (!it)
+            rc = tippe_error_set(err, TIPPE_EINPUT,
+                                 "%s: parts[%d].catalogue_item: '%s' is not an item of the "
+                                 "catalogue %s",
+                                 tippe_design_path(d), named, name, c->file);
+        else if (fabs(it->radius_mm - r_mm) > 1e-6 || fabs(it->height_mm - h_mm) > 1e-6)
+            rc = tippe_error_set(err, TIPPE_EINPUT,
+                                 "%s: parts[%d].catalogue_item: '%s' of %s is modelled %g mm in "
+                                 "radius and %g mm long, the part %g and %g mm: change the part "
+                                 "or name another item (--set parts.NAME.catalogue_item=null "
+                                 "to name none)",
+                                 tippe_design_path(d), named, name, c->file, it->radius_mm,
+                                 it->height_mm, r_mm, h_mm);
+    } else {
+        it = tippe_build_catalogue_match(c, r_mm, h_mm, &set);
+    }
+    if (!rc && it) {
         const tippe_build_thread *iso = tippe_build_thread_by_diameter(it->d_mm);
         snprintf(out->thread_name, sizeof out->thread_name, "%s", iso ? iso->name : it->thread);
         out->thread.d_mm = it->d_mm;
@@ -311,7 +346,19 @@ static int match_catalogue(const tippe_build_options *o, double r_mm, double h_m
         snprintf(out->catalogue_title, sizeof out->catalogue_title, "%s", set->title);
     }
     tippe_build_catalogue_free(own);
-    return it != NULL;
+    return rc ? -rc : it != NULL;
+}
+
+/* The weight's part that names a catalogue item, or -1. */
+static int named_weight(const tippe_design *d)
+{
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_solid s;
+        if (!tippe_design_part_solid(d, i, &s) && s.moving && !s.is_void &&
+            tippe_design_part_catalogue_item(d, i)[0])
+            return i;
+    }
+    return -1;
 }
 
 /* ------------------------------------------------------------- spins */
@@ -525,10 +572,11 @@ static int compute_thread(compute_ctx *c, tippe_error *err)
 {
     tippe_build_sheet *out = c->out;
     if (out->measure == TIPPE_BUILD_MEASURE_HOLE) {
-        int m = 0;
+        int m = 0, named = named_weight(c->d);
         double h = c->top - c->bottom;
-        if ((c->o->catalogue || c->o->catalogue_read) &&
-            (m = match_catalogue(c->o, c->r_weight, h, out, err)) < 0)
+        if ((c->o->catalogue || c->o->catalogue_read || tippe_design_catalogue(c->d) ||
+             named >= 0) &&
+            (m = match_catalogue(c->d, c->o, named, c->r_weight, h, out, err)) < 0)
             return -m;
         if (!m) {
             /* the screw is modelled as a cylinder of its pitch diameter (the

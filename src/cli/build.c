@@ -34,7 +34,7 @@ static int build_parse(build_args *a, int argc, char **argv)
          .arg = "DIR", .required = 1,
          .help = "output directory (created if missing; its parent must exist)"},
         {.name = "catalogue", .kind = TIPPE_CLI_STRING, .value = &a->catalogue, .arg = "FILE",
-         .def = "catalogue.json beside the design, if there is one",
+         .def = "the design's \"catalogue\", else catalogue.json beside the design, if there is one",
          .help = "hardware catalogue the weight is looked up in (designs/catalogue.json)"},
         {.name = "clearance-mm", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.clearance_mm,
          .arg = "MM", .unit = "mm", .min = 0, .max = 2, .def = "0.2",
@@ -117,7 +117,8 @@ static int run(build_args *a, const tippe_design *d)
     tippe_error err = {0};
     char sheet[TIPPE_EXPORT_BUILD_FILES][4096], cat[4096];
     if (!a->catalogue)
-        a->catalogue = default_catalogue(a->path, cat, sizeof cat);
+        a->catalogue = tippe_design_catalogue(d) ? tippe_design_catalogue(d)
+                                                 : default_catalogue(a->path, cat, sizeof cat);
     a->o.catalogue = a->catalogue;
     tippe_export_build_paths(d, a->dir, sheet);
     /* the catalogue is input: a bad one is refused before any work or output */
