@@ -86,6 +86,12 @@ const tippe_build_catalogue_item *tippe_build_catalogue_match(const tippe_build_
                                                               double radius_mm, double height_mm,
                                                               const tippe_build_catalogue_set **set);
 
+/* The first item (in file order) named name, and its set in *set (if not
+ * NULL); NULL when none is. */
+const tippe_build_catalogue_item *tippe_build_catalogue_find(const tippe_build_catalogue *c,
+                                                             const char *name,
+                                                             const tippe_build_catalogue_set **set);
+
 /* How the weight's place is measured. */
 typedef enum {
     TIPPE_BUILD_MEASURE_NONE, /* no hole or rod on the axis found: Z2 only */
@@ -115,6 +121,15 @@ typedef struct {
     int launch_status;             /* TIPPE_OK or the dynamics' error */
     int verdict_ok;                /* the verdict is the behaviour's */
     double launch_t_s;             /* when it was decided */
+    /* settable: a robust width of at least the sheet's min_setting_mm */
+    double robust_width_mm;        /* robust_to - robust_from, 0 when none is robust */
+    int settable;
+    /* flips and hangs: the part of the range (robust, else nominal) whose needed
+     * spin a hand reaches (at most the launch options' spin_to_rev_s): the
+     * longest such run, its ends bisected; NAN when no part is (and for stays
+     * up, which needs no spin) */
+    double hand_from_mm, hand_to_mm;             /* Z2 */
+    double depth_hand_from_mm, depth_hand_to_mm; /* as depth_from_mm, depth_to_mm */
 } tippe_build_setting;
 
 /* One line of the bill of materials. */
@@ -162,18 +177,31 @@ int tippe_build_design_fit(const tippe_design *d, double clearance_mm, int *part
 typedef struct {
     tippe_build_hole_fit hole_fit;
     double clearance_mm;     /* export's radial clearance of holes for hardware */
-    const char *catalogue;   /* hardware catalogue file; NULL: none */
+    const char *catalogue;   /* hardware catalogue file; NULL: the design's "catalogue",
+                                if it names one, else none */
     /* the catalogue read already (the command reads it before any work, so that
      * a bad one is refused first); NULL: tippe_build_compute reads catalogue */
     const tippe_build_catalogue *catalogue_read;
+    /* the narrowest robust width a maker can set, mm; 0: a quarter turn of the
+     * weight's thread (pitch / 4), or TIPPE_BUILD_MIN_SETTING_MM without one */
+    double min_setting_mm;
     tippe_launch_options launch;
 } tippe_build_options;
+
+/* The narrowest settable width where the weight has no thread, mm. */
+#define TIPPE_BUILD_MIN_SETTING_MM 0.5
 
 typedef struct {
     char design_name[256], design_file[1024];
     double radius_mm;
     double travel_from_mm, travel_to_mm; /* physical travel */
     int three_in_one;
+    /* 3-in-1 and every behaviour settable (its robust width at least
+     * min_setting_mm); 3-in-1 without it is "3-in-1 on paper only" */
+    int settable;
+    double min_setting_mm;               /* the one used (options, else the rule) */
+    char min_setting_rule[96];           /* "a quarter turn of the M12 x 1.75 thread" */
+    double hand_spin_rev_s;              /* the fastest hand spin (launch options' spin_to) */
     tippe_build_setting set[3];          /* I stays up, II flips, III hangs */
     /* measuring */
     tippe_build_measure measure;
@@ -235,6 +263,10 @@ typedef struct {
     } advice[6];
     int n_steps;
     char step[10][400];                  /* assembly steps, in order */
+    /* each setting narrower than min_setting_mm, and each flips or hangs range
+     * whose part a hand's spin reaches is narrower */
+    int n_warnings;
+    char warning[6][400];
 } tippe_build_sheet;
 
 /* The design file's name without directory and extension: the stem tippe build
@@ -252,6 +284,17 @@ void tippe_build_options_default(tippe_build_options *o);
  * setting (launch_status), not returned. */
 int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                         tippe_build_sheet *out, tippe_error *err);
+
+/* The sheet's verdict: "3-in-1 and settable", "3-in-1 on paper only" or
+ * "not 3-in-1". */
+const char *tippe_build_verdict(const tippe_build_sheet *s);
+/* The verdict as a sentence with its reason (Markdown, the page). */
+void tippe_build_verdict_text(const tippe_build_sheet *s, char *buf, size_t size);
+
+/* The settings table's spin cell of family f: "any", or "above 7.2 rev/s (29.9
+ * at the range's worst end); a hand (up to 25 rev/s) reaches it at depth 1.03
+ * .. 9.10 mm". */
+void tippe_build_spin_text(const tippe_build_sheet *s, int f, char *buf, size_t size);
 
 /* "stays up", "flips", "hangs" for 0, 1, 2; the group's name "I", "II", "III". */
 const char *tippe_build_behaviour(int family);

@@ -424,6 +424,12 @@ enum {
 };
 /* Part i's fit (NONE for i out of range). */
 int tippe_design_part_fit(const tippe_design *d, int i);
+/* A part's "catalogue_item": the name of the hardware catalogue's item it is
+ * (tippe/build.h), or "" when it names none. */
+const char *tippe_design_part_catalogue_item(const tippe_design *d, int i);
+/* The design's "catalogue": the hardware catalogue file, resolved from the
+ * design file's folder (checked readable at load); NULL when not given. */
+const char *tippe_design_catalogue(const tippe_design *d);
 
 /* How part i is printed (docs/design-format.md, "Printed parts"). A part
  * without a print block is solid: printed = 0 and the rest is zero. */

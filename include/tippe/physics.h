@@ -240,6 +240,13 @@ typedef enum {
                                    for ever in [theta_lo_rad, theta_hi_rad] */
 } tippe_verdict;
 
+/* With Coulomb sticking (nothing dissipates while the top rolls) a tip is the
+ * inverted state reached: theta proved to stay within this of pi for ever (30
+ * deg: the M12 ball at Z2 = 15 mm launched at 300 rad/s sticks and rolls for ever
+ * at 155.5 deg, upside down; at 30 rev/s it rolls at 137.8 deg, tilted 42 deg off
+ * inverted: bounded, with its range). */
+#define TIPPE_INVERTED_TOL_RAD 0.52359877559829882 /* 30 deg */
+
 /* "no_tip", "tip", "hang", "lost_contact", "undecided", "bounded". */
 const char *tippe_verdict_name(tippe_verdict v);
 

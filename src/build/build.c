@@ -287,22 +287,57 @@ static double depth_at(const tippe_build_sheet *s, double z2_mm)
 
 /* --------------------------------------------------------- catalogue */
 
-/* The catalogue item with the screw's radius and height: 1 matched, 0 not,
- * or a status < 0 with err set if the file does not read. */
-static int match_catalogue(const tippe_build_options *o, double r_mm, double h_mm,
-                           tippe_build_sheet *out, tippe_error *err)
+/* The catalogue item the weight is: the one its part names ("catalogue_item",
+ * which must be in the catalogue and of the part's radius and height), else
+ * the one with the screw's radius and height. 1 matched, 0 not, or a status
+ * < 0 with err set if the file does not read or the named item is wrong. */
+static int match_catalogue(const tippe_design *d, const tippe_build_options *o, int named,
+                           double r_mm, double h_mm, tippe_build_sheet *out, tippe_error *err)
 {
     tippe_build_catalogue *own = NULL;
     const tippe_build_catalogue *c = o->catalogue_read;
+    const char *file = o->catalogue ? o->catalogue : tippe_design_catalogue(d);
+    const char *name = named >= 0 ? tippe_design_part_catalogue_item(d, named) : NULL;
+    if (!c && !file)
+        return -tippe_error_set(err, TIPPE_EINPUT,
+                                "%s: parts[%d].catalogue_item: '%s' names an item, but no "
+                                "catalogue is given (the design's \"catalogue\", --catalogue "
+                                "or catalogue.json beside the design)",
+                                tippe_design_path(d), named, name);
     if (!c) {
-        int rc = tippe_build_catalogue_load(o->catalogue, &own, err);
+        int rc = tippe_build_catalogue_load(file, &own, err);
         if (rc)
             return -rc;
         c = own;
     }
     const tippe_build_catalogue_set *set = NULL;
-    const tippe_build_catalogue_item *it = tippe_build_catalogue_match(c, r_mm, h_mm, &set);
-    if (it) {
+    const tippe_build_catalogue_item *it = NULL;
+    int rc = TIPPE_OK;
+    tippe_design_solid ws;
+    if (name && !tippe_design_part_solid(d, named, &ws)) {
+        /* the named part itself (the weight may have more parts) */
+        r_mm = ws.radius_mm;
+        h_mm = ws.height_mm;
+    }
+    if (name) {
+        it = tippe_build_catalogue_find(c, name, &set);
+        if (!it)
+            rc = tippe_error_set(err, TIPPE_EINPUT,
+                                 "%s: parts[%d].catalogue_item: '%s' is not an item of the "
+                                 "catalogue %s",
+                                 tippe_design_path(d), named, name, c->file);
+        else if (fabs(it->radius_mm - r_mm) > 1e-6 || fabs(it->height_mm - h_mm) > 1e-6)
+            rc = tippe_error_set(err, TIPPE_EINPUT,
+                                 "%s: parts[%d].catalogue_item: '%s' of %s is modelled %g mm in "
+                                 "radius and %g mm long, the part %g and %g mm: change the part "
+                                 "or name another item (--set parts.NAME.catalogue_item=null "
+                                 "to name none)",
+                                 tippe_design_path(d), named, name, c->file, it->radius_mm,
+                                 it->height_mm, r_mm, h_mm);
+    } else {
+        it = tippe_build_catalogue_match(c, r_mm, h_mm, &set);
+    }
+    if (!rc && it) {
         const tippe_build_thread *iso = tippe_build_thread_by_diameter(it->d_mm);
         snprintf(out->thread_name, sizeof out->thread_name, "%s", iso ? iso->name : it->thread);
         out->thread.d_mm = it->d_mm;
@@ -311,7 +346,19 @@ static int match_catalogue(const tippe_build_options *o, double r_mm, double h_m
         snprintf(out->catalogue_title, sizeof out->catalogue_title, "%s", set->title);
     }
     tippe_build_catalogue_free(own);
-    return it != NULL;
+    return rc ? -rc : it != NULL;
+}
+
+/* The weight's part that names a catalogue item, or -1. */
+static int named_weight(const tippe_design *d)
+{
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_solid s;
+        if (!tippe_design_part_solid(d, i, &s) && s.moving && !s.is_void &&
+            tippe_design_part_catalogue_item(d, i)[0])
+            return i;
+    }
+    return -1;
 }
 
 /* ------------------------------------------------------------- spins */
@@ -346,12 +393,71 @@ static int spin_needed(const tippe_design *d, int f, double z2_mm, double g, dou
     return TIPPE_OK;
 }
 
+/* The needed spin (rad/s) of family f at Z2; NAN where it cannot be computed. */
+static double needed_at(const tippe_design *d, int f, double z2_mm, double g)
+{
+    double n = NAN;
+    const char *rule;
+    tippe_error e = {0};
+    if (spin_needed(d, f, z2_mm, g, &n, &rule, &e) != TIPPE_OK)
+        return NAN;
+    return n;
+}
+
+/* The part of [a, b] whose needed spin is at most hand (rad/s), from the 21
+ * samples n[] over it: the longest run of samples within reach, each end that
+ * borders a sample beyond it bisected to 1e-9 of the range. NAN: none. */
+static void hand_part(const tippe_design *d, int f, double g, double a, double b,
+                      const double n[21], double hand, double *from, double *to)
+{
+    int best = -1, best_len = 0;
+    for (int k = 0; k <= 20;) {
+        if (!(n[k] <= hand)) {
+            k++;
+            continue;
+        }
+        int j = k;
+        while (j + 1 <= 20 && n[j + 1] <= hand)
+            j++;
+        if (j - k + 1 > best_len) {
+            best = k;
+            best_len = j - k + 1;
+        }
+        k = j + 1;
+    }
+    *from = *to = NAN;
+    if (best < 0)
+        return;
+    int lo = best, hi = best + best_len - 1;
+    double z_lo = a + (b - a) * lo / 20.0, z_hi = a + (b - a) * hi / 20.0;
+    if (lo > 0) { /* between lo - 1 (beyond) and lo (within) */
+        double x = a + (b - a) * (lo - 1) / 20.0, y = z_lo;
+        while (y - x > 1e-9 * (b - a))
+            if (needed_at(d, f, 0.5 * (x + y), g) <= hand)
+                y = 0.5 * (x + y);
+            else
+                x = 0.5 * (x + y);
+        z_lo = y;
+    }
+    if (hi < 20) { /* between hi (within) and hi + 1 (beyond) */
+        double x = z_hi, y = a + (b - a) * (hi + 1) / 20.0;
+        while (y - x > 1e-9 * (b - a))
+            if (needed_at(d, f, 0.5 * (x + y), g) <= hand)
+                x = 0.5 * (x + y);
+            else
+                y = 0.5 * (x + y);
+        z_hi = x;
+    }
+    *from = z_lo;
+    *to = z_hi;
+}
+
 static void spins_and_launch(const tippe_design *d, const tippe_build_options *o, int f,
                              tippe_build_setting *s)
 {
     const double rev = 2 * M_PI;
     tippe_error e = {0};
-    double n_set = NAN, n_max = 0;
+    double n_set = NAN, n_max = 0, n_at[21];
     if (spin_needed(d, f, s->set_z2_mm, o->launch.g, &n_set, &s->spin_rule, &e))
         n_set = NAN;
     double a = s->robust ? s->robust_from_mm : s->from_mm;
@@ -359,11 +465,13 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
     /* 21 points: the thresholds are smooth in Z2 and monotone over a zone's
      * middle; their maximum is at an end or near it */
     for (int k = 0; k <= 20; k++) {
-        double n = 0;
-        const char *rule;
-        if (spin_needed(d, f, a + (b - a) * k / 20.0, o->launch.g, &n, &rule, &e) == TIPPE_OK)
-            n_max = fmax(n_max, n);
+        n_at[k] = needed_at(d, f, a + (b - a) * k / 20.0, o->launch.g);
+        n_max = fmax(n_max, n_at[k]); /* fmax skips a NAN (not computed) */
     }
+    s->hand_from_mm = s->hand_to_mm = NAN;
+    if (f > 0)
+        hand_part(d, f, o->launch.g, a, b, n_at, o->launch.spin_to_rev_s * rev, &s->hand_from_mm,
+                  &s->hand_to_mm);
     s->spin_needed_rev_s = n_set / rev;
     s->spin_needed_max_rev_s = n_max / rev;
     /* The check's spin: the hand's middle spin for group I; else a quarter above
@@ -464,10 +572,11 @@ static int compute_thread(compute_ctx *c, tippe_error *err)
 {
     tippe_build_sheet *out = c->out;
     if (out->measure == TIPPE_BUILD_MEASURE_HOLE) {
-        int m = 0;
+        int m = 0, named = named_weight(c->d);
         double h = c->top - c->bottom;
-        if ((c->o->catalogue || c->o->catalogue_read) &&
-            (m = match_catalogue(c->o, c->r_weight, h, out, err)) < 0)
+        if ((c->o->catalogue || c->o->catalogue_read || tippe_design_catalogue(c->d) ||
+             named >= 0) &&
+            (m = match_catalogue(c->d, c->o, named, c->r_weight, h, out, err)) < 0)
             return -m;
         if (!m) {
             /* the screw is modelled as a cylinder of its pitch diameter (the
@@ -558,6 +667,66 @@ static void compute_settings(compute_ctx *c)
         s->turns_set = s->depth_set_mm / p;
         s->turns_to = s->depth_to_mm / p;
         spins_and_launch(c->d, c->o, f, s);
+        s->depth_hand_from_mm = depth_at(out, s->hand_from_mm);
+        s->depth_hand_to_mm = depth_at(out, s->hand_to_mm);
+    }
+}
+
+/* Step 5b: which settings a maker can set (a robust width of at least a
+ * quarter turn of the thread, 0.5 mm without one, or the option's), the
+ * verdict, and a warning on each setting narrower than that or whose part a
+ * hand's spin reaches is. */
+static void compute_settable(compute_ctx *c)
+{
+    tippe_build_sheet *out = c->out;
+    const tippe_build_options *o = c->o;
+    double p = out->has_thread ? out->thread.pitch_mm : NAN;
+    if (o->min_setting_mm > 0) {
+        out->min_setting_mm = o->min_setting_mm;
+        snprintf(out->min_setting_rule, sizeof out->min_setting_rule, "--min-setting-mm %g",
+                 o->min_setting_mm);
+    } else if (out->has_thread) {
+        out->min_setting_mm = p / 4;
+        snprintf(out->min_setting_rule, sizeof out->min_setting_rule,
+                 "a quarter turn of the %s x %g thread", out->thread_name, p);
+    } else {
+        out->min_setting_mm = TIPPE_BUILD_MIN_SETTING_MM;
+        snprintf(out->min_setting_rule, sizeof out->min_setting_rule,
+                 "%g mm: the weight has no thread", TIPPE_BUILD_MIN_SETTING_MM);
+    }
+    out->settable = out->three_in_one;
+    out->hand_spin_rev_s = o->launch.spin_to_rev_s;
+    for (int f = 0; f < 3; f++) {
+        tippe_build_setting *s = &out->set[f];
+        s->robust_width_mm = s->reachable && s->robust ? s->robust_to_mm - s->robust_from_mm : 0;
+        s->settable = s->reachable && s->robust_width_mm >= out->min_setting_mm;
+        out->settable = out->settable && s->settable;
+        if (!s->reachable || out->n_warnings >= 6)
+            continue;
+        char turn[64] = "";
+        if (out->has_thread)
+            snprintf(turn, sizeof turn, " (%.2f of a turn)", s->robust_width_mm / p);
+        if (!s->settable && !s->robust)
+            snprintf(out->warning[out->n_warnings++], sizeof out->warning[0],
+                     "The %s setting has no robust range (the tolerance bands of its zone, "
+                     "%.2f mm wide, overlap), narrower than %.2f mm (%s): it holds on paper "
+                     "only.",
+                     behaviours[f], s->to_mm - s->from_mm, out->min_setting_mm,
+                     out->min_setting_rule);
+        else if (!s->settable)
+            snprintf(out->warning[out->n_warnings++], sizeof out->warning[0],
+                     "The %s setting's robust range is %.2f mm wide%s, narrower than %.2f mm "
+                     "(%s): too narrow to set by hand; it holds on paper only.",
+                     behaviours[f], s->robust_width_mm, turn, out->min_setting_mm,
+                     out->min_setting_rule);
+        else if (f > 0 && !(s->hand_to_mm - s->hand_from_mm >= out->min_setting_mm))
+            snprintf(out->warning[out->n_warnings++], sizeof out->warning[0],
+                     "The %s setting's robust range is %.2f mm wide, but the spin it needs is "
+                     "within a hand's %g rev/s over %s%.2f mm of it, narrower than %.2f mm (%s).",
+                     behaviours[f], s->robust_width_mm, o->launch.spin_to_rev_s,
+                     isfinite(s->hand_from_mm) ? "" : "none: ",
+                     isfinite(s->hand_from_mm) ? s->hand_to_mm - s->hand_from_mm : 0.0,
+                     out->min_setting_mm, out->min_setting_rule);
     }
 }
 
@@ -656,6 +825,7 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     if (!(rc = compute_thread(&c, err)) && !(rc = compute_hole_fit(&c, err))) {
         tippe_build_weigh_offset(d, out);
         compute_settings(&c);
+        compute_settable(&c);
         compute_bill_and_steps(&c);
         compute_notes(&c);
     }

@@ -228,3 +228,17 @@ const tippe_build_catalogue_item *tippe_build_catalogue_match(const tippe_build_
         }
     return NULL;
 }
+
+const tippe_build_catalogue_item *tippe_build_catalogue_find(const tippe_build_catalogue *c,
+                                                             const char *name,
+                                                             const tippe_build_catalogue_set **set)
+{
+    for (int k = 0; c && name && k < c->n_sets; k++)
+        for (int i = 0; i < c->sets[k].n_items; i++)
+            if (!strcmp(c->sets[k].items[i].name, name)) {
+                if (set)
+                    *set = &c->sets[k];
+                return &c->sets[k].items[i];
+            }
+    return NULL;
+}

@@ -14,6 +14,73 @@
 
 /* ------------------------------------------------------------ reports */
 
+const char *tippe_build_verdict(const tippe_build_sheet *s)
+{
+    return !s->three_in_one ? "not 3-in-1"
+           : s->settable    ? "3-in-1 and settable"
+                            : "3-in-1 on paper only";
+}
+
+void tippe_build_verdict_text(const tippe_build_sheet *s, char *buf, size_t size)
+{
+    if (!s->three_in_one) {
+        snprintf(buf, size, "It is not 3-in-1: not every behaviour is reachable within the travel "
+                            "where the model applies.");
+        return;
+    }
+    if (s->settable) {
+        snprintf(buf, size, "It is 3-in-1 and settable: every behaviour's robust range is at "
+                            "least %.2f mm wide (%s).",
+                 s->min_setting_mm, s->min_setting_rule);
+        return;
+    }
+    char which[64] = "";
+    for (int f = 0, n = 0; f < 3; f++)
+        if (!s->set[f].settable)
+            snprintf(which + strlen(which), sizeof which - strlen(which), "%s%s",
+                     n++ ? ", " : "", behaviours[f]);
+    snprintf(buf, size, "It is 3-in-1 on paper only: all three behaviours are reachable within "
+                        "the travel where the model applies, but the robust range of %s is "
+                        "narrower than %.2f mm (%s), too narrow to set by hand.",
+             which, s->min_setting_mm, s->min_setting_rule);
+}
+
+/* A flips or hangs row's part a hand's spin reaches: "; a hand (up to 25
+ * rev/s) reaches it at depth 1.03 .. 9.10 mm" (at Z2 without a reference). */
+static void hand_text(const tippe_build_sheet *s, int f, char *buf, size_t size)
+{
+    const tippe_build_setting *x = &s->set[f];
+    buf[0] = '\0';
+    if (f == 0 || !x->reachable)
+        return;
+    if (!isfinite(x->hand_from_mm)) {
+        snprintf(buf, size, "; a hand (up to %g rev/s) reaches it nowhere in the range",
+                 s->hand_spin_rev_s);
+        return;
+    }
+    if (isfinite(x->depth_hand_from_mm))
+        snprintf(buf, size, "; a hand (up to %g rev/s) reaches it at depth %.2f .. %.2f mm",
+                 s->hand_spin_rev_s, fmin(x->depth_hand_from_mm, x->depth_hand_to_mm),
+                 fmax(x->depth_hand_from_mm, x->depth_hand_to_mm));
+    else
+        snprintf(buf, size, "; a hand (up to %g rev/s) reaches it at Z2 %.2f .. %.2f mm",
+                 s->hand_spin_rev_s, x->hand_from_mm, x->hand_to_mm);
+}
+
+void tippe_build_spin_text(const tippe_build_sheet *s, int f, char *buf, size_t size)
+{
+    const tippe_build_setting *x = &s->set[f];
+    char hand[160];
+    hand_text(s, f, hand, sizeof hand);
+    if (f == 0)
+        snprintf(buf, size, "any");
+    else if (isfinite(x->spin_needed_max_rev_s))
+        snprintf(buf, size, "above %.1f rev/s (%.1f at the range's worst end)%s",
+                 x->spin_needed_rev_s, x->spin_needed_max_rev_s, hand);
+    else
+        snprintf(buf, size, "no spin suffices%s", hand);
+}
+
 static cJSON *num(double x) { return isfinite(x) ? cJSON_CreateNumber(x) : cJSON_CreateNull(); }
 
 static const char *measure_name(tippe_build_measure m)
@@ -33,6 +100,11 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
     cJSON_AddItemToArray(t, num(s->travel_from_mm));
     cJSON_AddItemToArray(t, num(s->travel_to_mm));
     cJSON_AddBoolToObject(o, "three_in_one", s->three_in_one);
+    cJSON_AddBoolToObject(o, "settable", s->settable);
+    cJSON_AddStringToObject(o, "verdict", tippe_build_verdict(s));
+    cJSON_AddNumberToObject(o, "min_setting_mm", s->min_setting_mm);
+    cJSON_AddStringToObject(o, "min_setting_rule", s->min_setting_rule);
+    cJSON_AddNumberToObject(o, "hand_spin_max_rev_s", s->hand_spin_rev_s);
     cJSON *m = cJSON_AddObjectToObject(o, "measure");
     if (m) {
         cJSON_AddStringToObject(m, "kind", measure_name(s->measure));
@@ -95,8 +167,8 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         cJSON_AddNumberToObject(j, "band_to_mm", x->band_to_mm);
         cJSON_AddNumberToObject(j, "robust_from_mm", x->robust_from_mm);
         cJSON_AddNumberToObject(j, "robust_to_mm", x->robust_to_mm);
-        cJSON_AddNumberToObject(j, "robust_width_mm",
-                                x->robust ? x->robust_to_mm - x->robust_from_mm : 0);
+        cJSON_AddNumberToObject(j, "robust_width_mm", x->robust_width_mm);
+        cJSON_AddBoolToObject(j, "settable", x->settable);
         cJSON_AddNumberToObject(j, "set_z2_mm", x->set_z2_mm);
         cJSON_AddItemToObject(j, "depth_from_mm", num(x->depth_from_mm));
         cJSON_AddItemToObject(j, "depth_set_mm", num(x->depth_set_mm));
@@ -107,6 +179,12 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         cJSON_AddItemToObject(j, "spin_needed_rev_s", num(x->spin_needed_rev_s));
         cJSON_AddItemToObject(j, "spin_needed_max_rev_s", num(x->spin_needed_max_rev_s));
         cJSON_AddStringToObject(j, "spin_rule", x->spin_rule ? x->spin_rule : "");
+        if (f > 0) {
+            cJSON_AddItemToObject(j, "hand_z2_from_mm", num(x->hand_from_mm));
+            cJSON_AddItemToObject(j, "hand_z2_to_mm", num(x->hand_to_mm));
+            cJSON_AddItemToObject(j, "hand_depth_from_mm", num(x->depth_hand_from_mm));
+            cJSON_AddItemToObject(j, "hand_depth_to_mm", num(x->depth_hand_to_mm));
+        }
         cJSON_AddItemToObject(j, "launch_spin_rev_s", num(x->spin_launch_rev_s));
         cJSON_AddBoolToObject(j, "beyond_hand_spin", x->beyond_hand);
         if (x->launch_status == TIPPE_OK) {
@@ -174,6 +252,9 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
     cJSON *stp = cJSON_AddArrayToObject(o, "steps");
     for (int k = 0; stp && k < s->n_steps; k++)
         cJSON_AddItemToArray(stp, cJSON_CreateString(s->step[k]));
+    cJSON *wa = cJSON_AddArrayToObject(o, "warnings");
+    for (int k = 0; wa && k < s->n_warnings; k++)
+        cJSON_AddItemToArray(wa, cJSON_CreateString(s->warning[k]));
     cJSON *n = cJSON_AddArrayToObject(o, "notes");
     for (int k = 0; n && k < s->n_notes; k++)
         cJSON_AddItemToArray(n, cJSON_CreateString(s->note[k]));
@@ -236,19 +317,13 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
                     behaviours[k], families[k]);
             continue;
         }
-        char range[80], spin[96], check[120];
+        char range[80], spin[320], check[120];
         if (x->robust)
             snprintf(range, sizeof range, "%.2f .. %.2f mm", x->robust_from_mm, x->robust_to_mm);
         else
             snprintf(range, sizeof range, "none robust (zone %.2f .. %.2f mm)", x->from_mm,
                      x->to_mm);
-        if (k == 0)
-            snprintf(spin, sizeof spin, "any");
-        else if (isfinite(x->spin_needed_max_rev_s))
-            snprintf(spin, sizeof spin, "above %.1f rev/s (%.1f at the range's worst end)",
-                     x->spin_needed_rev_s, x->spin_needed_max_rev_s);
-        else
-            snprintf(spin, sizeof spin, "no spin suffices");
+        tippe_build_spin_text(s, k, spin, sizeof spin);
         if (x->launch_status == TIPPE_OK)
             snprintf(check, sizeof check, "%s at %.1f rev/s%s%s", tippe_verdict_name(x->verdict),
                      x->spin_launch_rev_s, x->verdict_ok ? " (as expected)" : " (NOT as expected)",
@@ -264,9 +339,11 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     }
     (void)e;
     (void)g;
-    fprintf(f, "\n%s 3-in-1: %s.\n", s->three_in_one ? "It is" : "It is not",
-            s->three_in_one ? "all three behaviours are reachable within the travel where the model applies"
-                            : "not every behaviour is reachable within the travel where the model applies");
+    char verdict[512];
+    tippe_build_verdict_text(s, verdict, sizeof verdict);
+    fprintf(f, "\n%s\n", verdict);
+    for (int k = 0; k < s->n_warnings; k++)
+        fprintf(f, "%s- **Warning**: %s\n", k ? "" : "\n", md(s->warning[k], m1, sizeof m1));
     if (!s->three_in_one) {
         fprintf(f, "\nWhat would make it 3-in-1 (one change at a time, found by sweeping the "
                    "zones at each value; at the edge given the missing zone is just born, so go "

@@ -34,7 +34,7 @@ static int build_parse(build_args *a, int argc, char **argv)
          .arg = "DIR", .required = 1,
          .help = "output directory (created if missing; its parent must exist)"},
         {.name = "catalogue", .kind = TIPPE_CLI_STRING, .value = &a->catalogue, .arg = "FILE",
-         .def = "catalogue.json beside the design, if there is one",
+         .def = "the design's \"catalogue\", else catalogue.json beside the design, if there is one",
          .help = "hardware catalogue the weight is looked up in (designs/catalogue.json)"},
         {.name = "clearance-mm", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.clearance_mm,
          .arg = "MM", .unit = "mm", .min = 0, .max = 2, .def = "0.2",
@@ -44,6 +44,12 @@ static int build_parse(build_args *a, int argc, char **argv)
          .help = "the screw's hole, overriding the design's fit: tap (printed at the\n"
                  "thread's tap drill, d - P, and tapped), insert (at a heat-set insert's\n"
                  "pilot hole, M3 .. M6) or slide (the design's hole plus the clearance)"},
+        {.name = "min-setting-mm", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.min_setting_mm,
+         .arg = "MM", .unit = "mm", .min = 0.001, .max = 100,
+         .def = "a quarter turn of the weight's thread, or 0.5 without one",
+         .help = "the narrowest robust range a maker can set: a behaviour whose robust\n"
+                 "range is narrower is warned about, and a 3-in-1 top with one is\n"
+                 "\"3-in-1 on paper only\" rather than \"3-in-1 and settable\""},
         {.name = "no-export", .kind = TIPPE_CLI_FLAG, .value = &a->no_export,
          .help = "write the sheet only, not the files to print"},
         {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
@@ -55,7 +61,7 @@ static int build_parse(build_args *a, int argc, char **argv)
     tippe_cli_spec spec = {
         .verb = VERB,
         .synopsis = "DESIGN.json -o DIR [--catalogue FILE] [--clearance-mm MM] [--hole FIT]\n"
-                    "       [--no-export] [--json] [--set FIELD=VALUE]",
+                    "       [--min-setting-mm MM] [--no-export] [--json] [--set FIELD=VALUE]",
         .about = "What a maker follows, from the design's numbers: for each behaviour (stays\n"
                  "up, flips, hangs) the robust range of Z2 (the widest zone within the travel\n"
                  "where the model applies, less its tolerance bands) as the depth of the\n"
@@ -111,7 +117,8 @@ static int run(build_args *a, const tippe_design *d)
     tippe_error err = {0};
     char sheet[TIPPE_EXPORT_BUILD_FILES][4096], cat[4096];
     if (!a->catalogue)
-        a->catalogue = default_catalogue(a->path, cat, sizeof cat);
+        a->catalogue = tippe_design_catalogue(d) ? tippe_design_catalogue(d)
+                                                 : default_catalogue(a->path, cat, sizeof cat);
     a->o.catalogue = a->catalogue;
     tippe_export_build_paths(d, a->dir, sheet);
     /* the catalogue is input: a bad one is refused before any work or output */
@@ -173,6 +180,8 @@ static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096]
         free(paths);
         return tippe_cli_fail(VERB, &err, rc);
     }
+    for (int k = 0; k < s->n_warnings; k++)
+        fprintf(stderr, "tippe %s: warning: %s\n", VERB, s->warning[k]);
     if (a->json) {
         cJSON *o = tippe_build_json(s);
         cJSON *files = o ? cJSON_AddArrayToObject(o, "files") : NULL;

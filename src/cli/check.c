@@ -44,6 +44,15 @@ static void print_verdict_line(const tippe_launch_record *rec)
     const double th = rec->theta_final_rad, deg = 180 / M_PI;
     switch (rec->verdict) {
     case TIPPE_VERDICT_BOUNDED:
+        if (rec->how == TIPPE_DECIDED_ROLLING) {
+            printf("\nverdict    bounded: sticks and rolls without slipping for ever (nothing "
+                   "dissipates), theta in [%.4f, %.4f] rad ([%.1f, %.1f] deg): %s\n",
+                   rec->theta_lo_rad, rec->theta_hi_rad, rec->theta_lo_rad * deg,
+                   rec->theta_hi_rad * deg,
+                   rec->theta_lo_rad > 0.5 * M_PI ? "over, but not inverted (no flip)"
+                                                  : "across 90 deg (no flip)");
+            break;
+        }
         printf("\nverdict    bounded (no rest state is forced: no friction, eps = 0, or rolling "
                "without slipping): theta stays for ever in [%.4f, %.4f] rad ([%.1f, %.1f] deg)\n",
                rec->theta_lo_rad, rec->theta_hi_rad, rec->theta_lo_rad * deg,
@@ -102,7 +111,10 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
                    "steady state, as with --tilt 0, nothing ever decides)\n");
     } else {
         printf("           decided by %s at t = %.4g s", tippe_decision_name(rec->how), rec->t_s);
-        if (rec->verdict == TIPPE_VERDICT_BOUNDED)
+        if (rec->how == TIPPE_DECIDED_ROLLING)
+            printf(" (over one whole nutation period the force rolling needs stayed inside "
+                   "the friction cone: the motion repeats)");
+        else if (rec->verdict == TIPPE_VERDICT_BOUNDED)
             printf(" (energy below the well's escape level, margin %.3g J)", rec->margin_J);
         else if (rec->how == TIPPE_DECIDED_TRAPPED && isinf(rec->barrier_gap_J))
             printf(" (a well with no barrier; energy margin %.3g J)", rec->margin_J);

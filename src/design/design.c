@@ -18,12 +18,14 @@
 #include "base/json.h"
 
 #include <cjson/cJSON.h>
+#include <errno.h>
 #include <gsl/gsl_errno.h>
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 
 /* "0.025 m is 25 mm" / "25000 um is 25 mm": what a length would be in mm if it
@@ -98,6 +100,39 @@ static int parse_travel(const tippe_json_reader *c, const cJSON *root, tippe_des
     return TIPPE_OK;
 }
 
+/* "catalogue": the hardware catalogue file (tippe/build.h), relative to the
+ * design file; it must be readable (its contents are read where they are
+ * used). A design from memory names only the designs folder's catalogue.json. */
+static int parse_catalogue(const tippe_json_reader *c, const cJSON *root, const char *path,
+                           tippe_design *d)
+{
+    char rel[512], file[1024];
+    int has = 0;
+    int rc = tippe_json_string(c, root, "", "catalogue", 0, rel, sizeof rel, &has);
+    if (rc || !has)
+        return rc;
+    if (!rel[0])
+        return tippe_json_fail(c, "catalogue", "must be a file name (relative to the design file)");
+    const char *slash = strrchr(path, '/');
+    if (d->materials_dir) {
+        if (strcmp(rel, "catalogue.json"))
+            return tippe_json_fail(c, "catalogue",
+                                   "'%s': a design sent as text uses the catalogue "
+                                   "catalogue.json of the designs folder and names no other "
+                                   "file", rel);
+        snprintf(file, sizeof file, "%s/catalogue.json", d->materials_dir);
+    } else if (rel[0] == '/' || !slash)
+        snprintf(file, sizeof file, "%s", rel);
+    else
+        snprintf(file, sizeof file, "%.*s/%s", (int)(slash - path), path, rel);
+    if (access(file, R_OK) != 0)
+        return tippe_json_fail(c, "catalogue", "%s: cannot be read (%s)", file, strerror(errno));
+    free(d->catalogue);
+    if (!(d->catalogue = tippe_design_dup_string(file)))
+        return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
+    return TIPPE_OK;
+}
+
 /* The top-level fields other than parts; mat_rel gets the materials file as
  * written (default materials.json), *has_mat_file whether it was given. */
 static int parse_header(const tippe_json_reader *c, const cJSON *root, const char *path,
@@ -123,7 +158,7 @@ static int parse_header(const tippe_json_reader *c, const cJSON *root, const cha
         return rc;
     if (*has_mat_file && !mat_rel[0])
         return tippe_json_fail(c, "materials", "must be a file name (relative to the design file)");
-    return TIPPE_OK;
+    return parse_catalogue(c, root, path, d);
 }
 
 /* parts: 1 to MAX_PARTS parts with unique names. */
@@ -653,6 +688,7 @@ void tippe_design_free(tippe_design *d)
     free(d->path);
     free(d->text);
     free(d->materials_dir);
+    free(d->catalogue);
     free(d->name);
     free(d->parts);
     free(d);

@@ -137,6 +137,13 @@ int tippe_design_part_fit(const tippe_design *d, int i)
     return i < 0 || i >= d->n_parts ? TIPPE_DESIGN_FIT_NONE : d->parts[i].fit;
 }
 
+const char *tippe_design_part_catalogue_item(const tippe_design *d, int i)
+{
+    return i < 0 || i >= d->n_parts ? "" : d->parts[i].catalogue_item;
+}
+
+const char *tippe_design_catalogue(const tippe_design *d) { return d->catalogue; }
+
 /* A/C of unit-density moments alone: A about a transverse axis through their
  * own centre of mass, C about the axis; NAN for no material. */
 static double body_a_over_c(tippe_moments m)

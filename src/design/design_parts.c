@@ -51,13 +51,15 @@ int tippe_design_read_length(const tippe_json_reader *c, const cJSON *obj, const
 /* ---------------------------------------------------------------- schema */
 
 const char *const tippe_design_top_keys[] = {"name", "notes", "radius_mm", "travel_mm", "materials",
-                                       "parts", "tolerances", NULL};
-const char *const tippe_design_top_string_keys[] = {"name", "notes", "materials", NULL};
+                                       "catalogue", "parts", "tolerances", NULL};
+const char *const tippe_design_top_string_keys[] = {"name", "notes", "materials", "catalogue",
+                                                    NULL};
 static const char *const part_common_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from",
-    "clip", "moving", "may_protrude", "print", "fit", NULL};
+    "clip", "moving", "may_protrude", "print", "fit", "catalogue_item", NULL};
 const char *const tippe_design_part_string_keys[] = {"name", "shape", "notes", "material",
-                                               "cut_from", "clip", "fit", NULL};
+                                               "cut_from", "clip", "fit", "catalogue_item",
+                                               NULL};
 static const char *const ball_keys[] = {"radius_mm", NULL};
 static const char *const shell_keys[] = {"radius_mm", "thickness_mm", NULL};
 static const char *const cylinder_keys[] = {"radius_mm", "inner_radius_mm", "height_mm", NULL};
@@ -67,7 +69,8 @@ static const char *const *const shape_keys[N_SHAPES] = {ball_keys, shell_keys, c
                                                         cylinder_keys, torus_keys};
 const char *const tippe_design_all_part_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from", "clip",
-    "moving", "may_protrude", "print", "fit", "radius_mm", "inner_radius_mm", "thickness_mm",
+    "moving", "may_protrude", "print", "fit", "catalogue_item", "radius_mm", "inner_radius_mm",
+    "thickness_mm",
     "height_mm", "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
 const char *const tippe_design_print_keys[] = {
     "perimeters", "line_width_mm", "top_bottom_layers", "layer_height_mm", "infill",
@@ -237,6 +240,27 @@ static int parse_part_fit(const tippe_json_reader *c, const cJSON *obj, const ch
     return TIPPE_OK;
 }
 
+/* The hardware catalogue's item a part is ("catalogue_item",
+ * docs/design-format.md): a name, on a part that is not a void; the item
+ * itself is looked up where the catalogue is read (tippe/build.h). */
+static int parse_part_catalogue_item(const tippe_json_reader *c, const cJSON *obj,
+                                     const char *pre, part *p)
+{
+    char path[64];
+    int has = 0;
+    int rc = tippe_json_string(c, obj, pre, "catalogue_item", 0, p->catalogue_item,
+                               sizeof p->catalogue_item, &has);
+    if (rc || !has)
+        return rc;
+    tippe_json_path(path, sizeof path, pre, "catalogue_item");
+    if (!p->catalogue_item[0])
+        return tippe_json_fail(c, path, "must not be empty (an item's name in the catalogue)");
+    if (p->is_void)
+        return tippe_json_fail(c, path,
+                               "only hardware (a part that is not a void) is a catalogue item");
+    return TIPPE_OK;
+}
+
 /* What part p is made of and how it is cut: material or density, void and
  * cut_from, clip (has_moving, has_protrude: whether the file gave those). */
 static int parse_part_material(const tippe_json_reader *c, const cJSON *obj, const char *pre,
@@ -310,7 +334,9 @@ static int parse_part_material(const tippe_json_reader *c, const cJSON *obj, con
                                    "a moving part cannot be clipped (its shape would change as "
                                    "it moves)");
     }
-    return parse_part_fit(c, obj, pre, p);
+    if ((rc = parse_part_fit(c, obj, pre, p)))
+        return rc;
+    return parse_part_catalogue_item(c, obj, pre, p);
 }
 
 /* The dimensions of part p's shape. */

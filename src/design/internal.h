@@ -74,6 +74,7 @@ typedef struct {
     double solid_mass_kg, skin_mass_kg, print_rel_error;
     double mass_kg;         /* signed contribution */
     int fit;                /* a hole's "fit": TIPPE_DESIGN_FIT_* (NONE when not given) */
+    char catalogue_item[64];/* "catalogue_item": the hardware catalogue's item it is, or "" */
     char gcode[1024];       /* print.gcode as given (relative to the design file), or "" */
     double printed_mass_kg; /* as printed, at `infill` */
     tippe_print_sliced sliced; /* the slicer model's layers (print.model slicer) */
@@ -95,6 +96,7 @@ struct tippe_design {
      * NULL for a file. */
     char *text, *materials_dir;
     size_t text_len;
+    char *catalogue; /* "catalogue": the hardware catalogue file, resolved; NULL: not given */
     double radius_mm;
     double travel_mm[2], contact_mm[2];
     char contact_limit[2][256];

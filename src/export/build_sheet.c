@@ -141,7 +141,7 @@ static double settings_table(cairo_t *cr, const tippe_build_sheet *s, double x, 
     y = row(cr, head, widths, 8, x, y, 9.5, 1, 1);
     for (int f = 0; f < 3; f++) {
         const tippe_build_setting *t = &s->set[f];
-        char c[8][200], a1[32], a2[32];
+        char c[8][320], a1[32], a2[32];
         snprintf(c[0], sizeof c[0], "%s (%s)", tippe_build_behaviour(f), tippe_build_family(f));
         if (!t->reachable) {
             snprintf(c[1], sizeof c[1], "not within the travel");
@@ -149,7 +149,8 @@ static double settings_table(cairo_t *cr, const tippe_build_sheet *s, double x, 
                 c[k][0] = '\0';
         } else {
             if (t->robust)
-                snprintf(c[1], sizeof c[1], "%.2f .. %.2f", t->robust_from_mm, t->robust_to_mm);
+                snprintf(c[1], sizeof c[1], "%.2f .. %.2f%s", t->robust_from_mm, t->robust_to_mm,
+                         t->settable ? "" : " (too narrow to set)");
             else
                 snprintf(c[1], sizeof c[1], "none robust (zone %.2f .. %.2f)", t->from_mm,
                          t->to_mm);
@@ -164,11 +165,8 @@ static double settings_table(cairo_t *cr, const tippe_build_sheet *s, double x, 
                 snprintf(c[5], sizeof c[5], "-");
             if (f == 0)
                 snprintf(c[6], sizeof c[6], "any spin");
-            else if (isfinite(t->spin_needed_rev_s))
-                snprintf(c[6], sizeof c[6], "above %.1f rev/s (%.1f at the range's worst end)",
-                         t->spin_needed_rev_s, t->spin_needed_max_rev_s);
             else
-                snprintf(c[6], sizeof c[6], "no spin suffices");
+                tippe_build_spin_text(s, f, c[6], sizeof c[6]);
             if (t->launch_status == TIPPE_OK)
                 snprintf(c[7], sizeof c[7], "%s at %.1f rev/s: %s%s", tippe_verdict_name(t->verdict),
                          t->spin_launch_rev_s, t->verdict_ok ? "as expected" : "NOT as expected",
@@ -236,13 +234,20 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
     snprintf(t, sizeof t, "Build sheet: %s", s->design_name);
     /* a long name or path wraps: what follows moves down, not under it */
     double y_sub = wrapped(cr, t, M, M + 14, SHEET_W - 2 * M, 18, 1) - 0.5;
+    char verdict[512];
+    tippe_build_verdict_text(s, verdict, sizeof verdict);
     snprintf(t, sizeof t,
              "%s; sphere radius %g mm; the weight's physical travel Z2 = %.2f .. %.2f mm (Z2: "
              "its midpoint above the sphere's centre). %s",
-             s->design_file, s->radius_mm, s->travel_from_mm, s->travel_to_mm,
-             s->three_in_one ? "3-in-1: it can stay up, flip and hang."
-                             : "Not 3-in-1: not every behaviour is within the travel.");
+             s->design_file, s->radius_mm, s->travel_from_mm, s->travel_to_mm, verdict);
     double y_head = wrapped(cr, t, M, y_sub, SHEET_W - 2 * M, 10.5, 0);
+    /* the settings too narrow to set, in red under the verdict */
+    cairo_set_source_rgb(cr, 0.75, 0.05, 0.05);
+    for (int k = 0; k < s->n_warnings; k++) {
+        snprintf(t, sizeof t, "Warning: %s", s->warning[k]);
+        y_head = wrapped(cr, t, M, y_head, SHEET_W - 2 * M, 10, 0);
+    }
+    cairo_set_source_rgb(cr, 0, 0, 0);
 
     /* the section, with the weight at the flip's setting (else the first there is) */
     double z2 = NAN;

@@ -65,6 +65,9 @@ struct tippe_optimise_spec {
     polish_t polish;
     long evals, polish_evals;
     int n_choices;
+    /* a catalogue choice's file (the spec's "catalogue", else catalogue.json
+     * beside the base design), which the best design names; "" without one */
+    char catalogue_file[1024];
 };
 
 /* optimise_candidate.c */

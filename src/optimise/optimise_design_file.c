@@ -97,6 +97,22 @@ cJSON *tippe_optimise_design_json(const tippe_optimise_spec *s, const tippe_opti
             ok = put_string(root, "materials", rel);
         }
     }
+    /* catalogue: the one a catalogue choice took its items from (the parts name
+     * them), else the base design's; seen from where the file is written, as
+     * materials is. */
+    const cJSON *cat = cJSON_GetObjectItemCaseSensitive(root, "catalogue");
+    if (ok && (s->catalogue_file[0] || cJSON_IsString(cat)) && abs_dir(out_path, out_dir)) {
+        if (s->catalogue_file[0])
+            snprintf(mat_join, sizeof mat_join, "%s", s->catalogue_file);
+        else if (cat->valuestring[0] == '/' || !abs_dir(s->design_path, base_dir))
+            snprintf(mat_join, sizeof mat_join, "%s", cat->valuestring);
+        else
+            snprintf(mat_join, sizeof mat_join, "%s/%s", base_dir, cat->valuestring);
+        if (realpath(mat_join, mat_abs)) {
+            relative_path(out_dir, mat_abs, rel, sizeof rel);
+            ok = put_string(root, "catalogue", rel);
+        }
+    }
     if (ok)
         ok = cJSON_ReplaceItemInObjectCaseSensitive(root, "travel_mm", travel);
     else

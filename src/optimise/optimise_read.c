@@ -182,7 +182,9 @@ static int catalogue_options(tippe_json_reader *c, const char *cpath, const cJSO
         snprintf(o->label, sizeof o->label, "%s", it->name);
         snprintf(o->set[0], sizeof o->set[0], "%s.radius_mm=%.17g", part_path, it->radius_mm);
         snprintf(o->set[1], sizeof o->set[1], "%s.height_mm=%.17g", part_path, it->height_mm);
-        o->n_set = 2;
+        /* the part is the item: tippe build names it (docs/design-format.md) */
+        snprintf(o->set[2], sizeof o->set[2], "%s.catalogue_item=%s", part_path, it->name);
+        o->n_set = 3;
     }
     for (const cJSON *w = want ? want->child : NULL; !rc && w; w = w->next) {
         int found = 0;
@@ -226,6 +228,7 @@ static int parse_choose(tippe_json_reader *c, const cJSON *choose, const char *c
             rc = catalogue_options(c, p, v, v->string, catalogue_file, ch);
             if (rc)
                 return rc;
+            snprintf(s->catalogue_file, sizeof s->catalogue_file, "%s", catalogue_file);
             continue;
         }
         int n = cJSON_IsArray(v) ? cJSON_GetArraySize(v) : 0;

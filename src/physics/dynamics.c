@@ -407,9 +407,12 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
     /* With sticking the top can roll for ever anywhere in [lo, hi] (nothing dissipates
      * while it rolls), so only the range is proved: tip needs all of it above pi/2,
      * no_tip all of it below. */
+    /* A tip is the inverted state reached: with sticking, all of the range within
+     * TIPPE_INVERTED_TOL_RAD of pi (a top that sticks and rolls for ever at 138 deg
+     * has not flipped: run_try_rolling gives its range). */
     const double th_min = rs->vc.wells.well[tr.well].theta_min_rad;
     const int side_ok = !rs->c.stick_law || !tr.trapped ||
-                        (th_min == M_PI ? tr.lo > 0.5 * M_PI
+                        (th_min == M_PI ? tr.lo >= M_PI - TIPPE_INVERTED_TOL_RAD
                                         : th_min == 0.0 ? tr.hi < 0.5 * M_PI : 1);
     /* a twentieth of m g: room for the variation of the bound between its nodes */
     if (!(Rn_bound > 0.05 * rs->c.m * rs->c.g) || !side_ok) {
@@ -528,9 +531,11 @@ static int run_try_rolling(run_state *rs, tippe_dynamics_result *res)
         const double lo = fmax(0.0, rs->roll_lo - 0.5 * rs->roll_dtheta);
         const double hi = fmin(M_PI, rs->roll_hi + 0.5 * rs->roll_dtheta);
         res->how = TIPPE_DECIDED_ROLLING;
-        res->verdict = hi < 0.5 * M_PI   ? TIPPE_VERDICT_NO_TIP
-                       : lo > 0.5 * M_PI ? TIPPE_VERDICT_TIP
-                                         : TIPPE_VERDICT_BOUNDED;
+        /* rolling dissipates nothing: a tip only where the whole range is the
+         * inverted state (within TIPPE_INVERTED_TOL_RAD of pi), else a range */
+        res->verdict = hi < 0.5 * M_PI                        ? TIPPE_VERDICT_NO_TIP
+                       : lo >= M_PI - TIPPE_INVERTED_TOL_RAD ? TIPPE_VERDICT_TIP
+                                                              : TIPPE_VERDICT_BOUNDED;
         res->t_verdict = rs->t;
         res->final = *s;
         res->theta_final_rad = s->theta;
