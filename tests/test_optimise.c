@@ -125,12 +125,12 @@ static void test_spec_errors(void)
 }
 
 /* The sweep of a design file, summarised (full resolution, its stated travel). */
-static int summarise_file(const char *path, tippe_sweep_summary *s)
+static int summarise_file(const char *path, const char *set, tippe_sweep_summary *s)
 {
     tippe_design *d = NULL;
     tippe_error err = {0};
     tippe_sweep_result r;
-    int rc = tippe_design_load(path, NULL, 0, &d, &err);
+    int rc = tippe_design_load(path, set ? &set : NULL, set ? 1 : 0, &d, &err);
     if (!rc)
         rc = tippe_sweep_design(d, 0, 0, NULL, &r, &err);
     CHECK(rc == TIPPE_OK, "%s: %s", path, err.msg);
@@ -143,14 +143,15 @@ static int summarise_file(const char *path, tippe_sweep_summary *s)
 }
 
 /* Issue 19.9: sweep's narrowest zone is the optimiser's measure. A top that is not
- * 3-in-1 (the printed M12 ball reaches II and III only) has 0, however wide its
+ * 3-in-1 (the printed M12 ball at 20 % infill reaches II and III only: III, IIb
+ * 2.99 .. 9.01 mm, III; at 15 % it hangs everywhere) has 0, however wide its
  * zones; the drilled ball's optimum has what the optimiser scores for the same
  * candidate (its overrides, swept at full resolution): 1e-6 mm, as zone ends are
  * root-found to 1e-7 mm and the file's travel is rounded inward by 1e-9 mm. */
 static void test_narrowest_is_the_objective(void)
 {
     tippe_sweep_summary s;
-    if (!summarise_file("designs/m12-setscrew-printed.json", &s)) {
+    if (!summarise_file("designs/m12-setscrew-printed.json", "parts.body.print.infill=0.2", &s)) {
         CHECK(!s.three_in_one && s.widest_mm[1] > 1 && s.widest_mm[2] > 1,
               "the printed M12 ball should reach II and III only");
         CHECK(s.narrowest_zone_mm == 0.0 && !s.narrowest_family,
@@ -160,7 +161,7 @@ static void test_narrowest_is_the_objective(void)
     tippe_error err = {0};
     int rc = tippe_optimise_spec_load("designs/optimise/drilled-ball.json", &spec, &err);
     CHECK(rc == TIPPE_OK, "spec: %s", err.msg);
-    if (rc || summarise_file("designs/drilled-ball-best.json", &s)) {
+    if (rc || summarise_file("designs/drilled-ball-best.json", NULL, &s)) {
         tippe_optimise_spec_free(spec);
         return;
     }
