@@ -94,6 +94,18 @@ check "vary plot is a PNG" png_ok "$tmp/vary.png"
 "$tippe" sweep "$m12" --vary parts.screw.height_mm=5:15:3 --json >"$tmp/vary.json"
 check "vary --json has three steps" python3 -c \
     'import json,sys; assert len(json.load(open(sys.argv[1]))["steps"]) == 3' "$tmp/vary.json"
+# issue 25.5: a value whose part would hit another (a screw wider than its 5.5 mm hole)
+# is marked and the other rows kept, in the table, the JSON and the plot; exit 0
+out=$("$tippe" sweep "$m12" --vary parts.screw.radius_mm=5:6:3 --plot "$tmp/vary-collide.png" 2>"$tmp/err")
+check "vary with a colliding value exits 0" test $? -eq 0
+check "vary keeps the rows whose value works" grep -qE '^ +5\.5  yes +0\.527 \(III\) +Ia 0\.000\.\.5\.531' <<<"$out"
+check "vary marks the row whose part collides" grep -qE '^ +6  - +- +part collides' <<<"$out"
+check "vary says why it collides" grep -qF "parts.screw.radius_mm = 6: part collides: designs/m12-setscrew.json: travel_mm: at Z2 = 10 mm (the middle of the travel) moving part 'screw' overlaps part 'body'" <<<"$out"
+check "vary plot with a collision is a PNG" png_ok "$tmp/vary-collide.png"
+"$tippe" sweep "$m12" --vary parts.screw.radius_mm=5:6:3 --json >"$tmp/vary-collide.json"
+check "vary --json: null zones and the collision for the bad value" json_ok "$tmp/vary-collide.json" \
+    '[s["value"] for s in o["steps"]] == [5, 5.5, 6] and o["steps"][2]["zones"] is None and "overlaps part" in o["steps"][2]["collision"] and "collision" not in o["steps"][1] and o["steps"][1]["three_in_one"]'
+expect_fail "vary where every value collides" 2 "at every value of parts.screw.radius_mm the parts collide" -- sweep "$m12" --vary parts.screw.radius_mm=6:7:2
 rm -f "$tmp"/*
 
 # --- compare -------------------------------------------------------------------

@@ -186,11 +186,18 @@ typedef struct {
     double *values;                        /* the field's value at each step */
     tippe_sweep_result *results;           /* physical travel marked */
     double *travel_from_mm, *travel_to_mm; /* each step's stated travel */
+    /* NULL, or why step i's design does not hold together: its value is a valid
+     * one, but a part then overlaps or touches another, leaves the sphere or the
+     * stated travel leaves the physical one (the layout check's message). Such a step
+     * is kept, not swept: its result has no zones and its travel is 0 .. 0. */
+    char **collision;
+    int n_collisions;
 } tippe_sweep_vary_result;
 
 /* TIPPE_EINPUT if steps < 1 (or steps = 1 with from != to), a bound is not
- * finite, or a step's design does not load (the message names the step's
- * override). *out must be freed with tippe_sweep_vary_free() whatever the return. */
+ * finite, every step's parts collide, or a step's design does not load for a reason
+ * other than where its parts are (the message names the step's override: a bad field
+ * or value). *out must be freed with tippe_sweep_vary_free() whatever the return. */
 int tippe_sweep_vary(const char *design_path, const char *const *overrides, int n_overrides,
                      const char *field, double from, double to, int steps, double z2_from_mm,
                      double z2_to_mm, const tippe_sweep_options *opt,

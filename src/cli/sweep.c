@@ -42,6 +42,10 @@ static void print_vary_table(const tippe_design *d, const tippe_sweep_vary_resul
            "the sphere: model invalid)");
     for (int i = 0; i < v->n; i++) {
         const tippe_sweep_result *r = &v->results[i];
+        if (v->collision[i]) { /* kept, not swept: the reason is below the table */
+            printf("%*.6g  %-6s %-16spart collides (see below)\n", w, v->values[i], "-", "-");
+            continue;
+        }
         tippe_sweep_summary s;
         tippe_sweep_summarise(r, &s);
         char narrow[40] = "0";
@@ -58,6 +62,11 @@ static void print_vary_table(const tippe_design *d, const tippe_sweep_vary_resul
         }
         printf("\n");
     }
+    if (v->n_collisions)
+        printf("\n");
+    for (int i = 0; i < v->n; i++)
+        if (v->collision[i])
+            printf("%s = %g: part collides: %s\n", field, v->values[i], v->collision[i]);
 }
 
 static cJSON *vary_json(const tippe_design *d, const tippe_sweep_vary_result *v,
@@ -72,6 +81,21 @@ static cJSON *vary_json(const tippe_design *d, const tippe_sweep_vary_result *v,
         return NULL;
     }
     for (int i = 0; i < v->n; i++) {
+        if (v->collision[i]) { /* {value, result: null, reason}: kept, not swept */
+            cJSON *s = cJSON_CreateObject();
+            if (!s || !cJSON_AddItemToArray(steps, s)) {
+                cJSON_Delete(s);
+                cJSON_Delete(o);
+                return NULL;
+            }
+            if (!cJSON_AddNumberToObject(s, "value", v->values[i]) ||
+                !cJSON_AddNullToObject(s, "zones") ||
+                !cJSON_AddStringToObject(s, "collision", v->collision[i])) {
+                cJSON_Delete(o);
+                return NULL;
+            }
+            continue;
+        }
         cJSON *s = tippe_sweep_json(&v->results[i], NULL);
         double tr[2] = {v->travel_from_mm[i], v->travel_to_mm[i]};
         cJSON *t = s ? cJSON_CreateDoubleArray(tr, 2) : NULL;
