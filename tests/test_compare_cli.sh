@@ -56,4 +56,19 @@ import sys; assert open(sys.argv[1], 'rb').read(8) == b'\x89PNG\r\n\x1a\n'" "$tm
 expect_fail "--set to a design that is not there" 2 "--set '3:radius_mm=26'" "1 .. 2" -- \
     compare "$a" "$b" --set 3:radius_mm=26
 expect_fail "compare plot format" 2 "--plot" -- compare "$a" --plot "$tmp/z.gif"
+# issue 25.5: names alike in their first 40 characters are not cut alike: the summary
+# widens its name column to the whole names (a name cut says so with "~"), and --wide
+# names its columns whole above the table
+one=(--set "1:name=M12 setscrew in a solid ABS ball, printed at 15 % infill, variant one")
+two=(--set "2:name=M12 setscrew in a solid ABS ball, printed at 15 % infill, variant two")
+"$tippe" compare "$a" "$a" "${one[@]}" "${two[@]}" >"$tmp/long.txt" 2>&1
+check "compare: two long names alike at 40 characters stay whole in the summary" \
+    bash -c 'grep -qE "^\[1 \] M12 setscrew .* variant one +yes" "$1" && grep -qE "^\[2 \] M12 setscrew .* variant two +yes" "$1"' _ "$tmp/long.txt"
+"$tippe" compare "$a" "$a" "${one[@]}" "${two[@]}" --wide >"$tmp/longw.txt" 2>&1
+check "compare --wide: the cut columns named whole" \
+    bash -c 'grep -q "^column 1: .*variant one$" "$1" && grep -q "^column 2: .*variant two$" "$1"' _ "$tmp/longw.txt"
+"$tippe" compare "$a" "$a" "${one[@]}" --set "2:name=B: M12 setscrew in a solid ABS ball, printed at 15 % infill" >"$tmp/longd.txt" 2>&1
+check "compare: long names that differ early are cut with ~, summary rows within 100 columns" \
+    bash -c 'grep -qE "^\[1 \] M12 setscrew in a solid ABS ball, print~ +yes" "$1" && ! grep -E "^\[[0-9] +\] " "$1" | awk "length > 100" | grep -q .' _ "$tmp/longd.txt"
+
 finish

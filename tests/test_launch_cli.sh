@@ -158,6 +158,8 @@ refused "map Z2 beyond the travel" "outside the design's travel" \
 refused "map without --spin" "--spin FROM:TO:STEPS" map "$m12" --z2 10:15:2 --plot "$tmp/out.png"
 refused "check spin" "--spin 'fast'" check "$m12" --z2 10 --spin fast
 refused "no design" "no design file" check --z2 10
+refused "check --csv into a missing directory" "no/such" check "$m12" --z2 10 --csv "$tmp/no/such/out.csv" --plot "$tmp/out.png"
+refused "check --plot of a .gif" "--plot" check "$m12" --z2 10 --plot "$tmp/out.gif" --csv "$tmp/out.csv"
 refused "unknown friction law" "--friction 'dry'" check "$m12" --z2 10 --friction dry
 refused "Coulomb coefficient with the viscous law" "--mu-c is the Coulomb coefficient" \
     launch "$m12" --z2 10 --friction viscous --mu-c 0.3 --csv "$tmp/out.csv"
@@ -209,4 +211,18 @@ out=$("$tippe" check "$m12" --z2 15 --mu 0 --t-end 5 --accuracy fast)
 check "check --mu 0: undecided, the steady precession without friction named" \
     bash -c 'grep -q "^verdict    undecided" <<<"$1" && grep -q "without friction this launch" <<<"$1"' _ "$out"
 
+# issue 25.5: check --csv and --plot, as simulate has them: the check's launch integrated
+# to t_end and written by simulate's writers, so the CSV is simulate's for the same design
+# launch byte for byte (the default viscous launch, and a Coulomb one)
+out=$("$tippe" check "$m12" --z2 10 --accuracy fast --csv "$tmp/check.csv" --plot "$tmp/check.png")
+check "check --csv --plot exits 0 and names both" \
+    bash -c 'grep -q "^csv        .*check.csv (" <<<"$1" && grep -q "^plot       .*check.png" <<<"$1"' _ "$out"
+check "check --plot is a PNG" python3 -c "import sys; assert open(sys.argv[1], 'rb').read(8) == b'\x89PNG\r\n\x1a\n'" "$tmp/check.png"
+"$tippe" simulate "$m12" --z2 10 --accuracy fast --csv "$tmp/sim.csv" >/dev/null
+check "check --csv is simulate's trajectory of the same launch" cmp -s "$tmp/check.csv" "$tmp/sim.csv"
+"$tippe" check "$m12" --z2 15 --spin 30rev/s --friction coulomb --accuracy fast --csv "$tmp/check-c.csv" --json >"$tmp/check-c.json"
+"$tippe" simulate "$m12" --z2 15 --spin 30rev/s --friction coulomb --accuracy fast --csv "$tmp/sim-c.csv" >/dev/null
+check "check --csv --json under Coulomb friction: simulate's trajectory, JSON on stdout" \
+    bash -c 'cmp -s "$1" "$2" && python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$3"' _ "$tmp/check-c.csv" "$tmp/sim-c.csv" "$tmp/check-c.json"
+rm -f "$tmp"/check* "$tmp"/sim*
 finish

@@ -162,6 +162,24 @@ expect_fail "radius_mm=25000: did you mean um" 2 \
 "$tippe" eval "$m12" --z2 1 --set parts.screw.radius_mm=0.0055 >/dev/null 2>"$tmp/err"
 check "a screw radius of 0.0055 mm: warned, did you mean metres (5.5 mm)" \
     grep -q "warning: .*parts\[2\].radius_mm: 0.0055 mm (part 'screw').*did you mean metres? 0.0055 m is 5.5 mm" "$tmp/err"
+# issue 25.5: a length above 0.01 mm but under 1 % of the radius, which in metres fits
+# the ball (a 16 mm screw typed 0.016), and a travel typed in metres: warned with the hint;
+# a 0.2 mm hole (200 mm would not fit) is not
+"$tippe" eval "$m12" --z2 10 --set parts.screw.height_mm=0.016 >/dev/null 2>"$tmp/err"
+check "a screw of 0.016 mm: warned, did you mean metres (16 mm)" \
+    grep -q "warning: .*parts\[2\].height_mm: 0.016 mm (part 'screw') is under 1 % of the sphere's radius (25 mm.*did you mean metres? 0.016 m is 16 mm" "$tmp/err"
+"$tippe" eval "$m12" --z2 0.01 --set 'travel_mm=[0,0.02]' >/dev/null 2>"$tmp/err"
+check "a travel of 0 .. 0.02 mm: warned, did you mean metres (0 .. 20 mm)" \
+    grep -q "warning: .*travel_mm: 0 .. 0.02 mm is under 1 % .*did you mean metres? 0 .. 0.02 m is 0 .. 20 mm" "$tmp/err"
+"$tippe" eval designs/shell-rod-nylon.json --z2 1 --set parts.rod.radius_mm=0.2 --set parts.weight.inner_radius_mm=0.2 >/dev/null 2>"$tmp/err"
+check "a 0.2 mm rod is no metres" sh -c "! grep -q metres '$tmp/err'"
+# and a moving weight under 1 % of the top's mass (the M3 paper design's 0.167 g screw),
+# with the centre of mass's shift over the travel
+"$tippe" eval designs/m3-setscrew.json --z2 3 >/dev/null 2>"$tmp/err"
+check "the M3's 0.167 g screw: a negligible moving weight" \
+    grep -q "warning: .*the moving weight is 0.167 g, 0.24 % of the top's 70.47 g (under 1 %): over the whole travel it moves the centre of mass by 0.0554 mm" "$tmp/err"
+"$tippe" eval "$m12" --z2 10 >/dev/null 2>"$tmp/err"
+check "the M12's iron screw: no warning" test ! -s "$tmp/err"
 expect_fail "a density of 7850 g/cm^3 is an error (kg/m^3? 7.85 g/cm^3)" 2 \
     "parts[2].density_g_cm3: 7850 g/cm^3 is denser than any solid (osmium" \
     "did you mean kg/m^3? 7850 kg/m^3 is 7.85 g/cm^3" -- \

@@ -97,6 +97,44 @@ check "vary plot is a PNG" png_ok "$tmp/vary.png"
 "$tippe" sweep "$m12" --vary parts.screw.height_mm=5:15:3 --json >"$tmp/vary.json"
 check "vary --json has three steps" python3 -c \
     'import json,sys; assert len(json.load(open(sys.argv[1]))["steps"]) == 3' "$tmp/vary.json"
+# issue 25.5: a value whose part would hit another (a screw wider than its 5.5 mm hole)
+# is marked and the other rows kept, in the table, the JSON and the plot; exit 0
+out=$("$tippe" sweep "$m12" --vary parts.screw.radius_mm=5:6:3 --plot "$tmp/vary-collide.png" 2>"$tmp/err")
+check "vary with a colliding value exits 0" test $? -eq 0
+check "vary keeps the rows whose value works" grep -qE '^ +5\.5  yes +0\.527 \(III\) +Ia 0\.000\.\.5\.531' <<<"$out"
+check "vary marks the row whose part collides" grep -qE '^ +6  - +- +part collides' <<<"$out"
+check "vary says why it collides" grep -qF "parts.screw.radius_mm = 6: part collides: designs/m12-setscrew.json: travel_mm: at Z2 = 10 mm (the middle of the travel) moving part 'screw' overlaps part 'body'" <<<"$out"
+check "vary plot with a collision is a PNG" png_ok "$tmp/vary-collide.png"
+"$tippe" sweep "$m12" --vary parts.screw.radius_mm=5:6:3 --json >"$tmp/vary-collide.json"
+check "vary --json: null zones and the collision for the bad value" json_ok "$tmp/vary-collide.json" \
+    '[s["value"] for s in o["steps"]] == [5, 5.5, 6] and o["steps"][2]["zones"] is None and "overlaps part" in o["steps"][2]["collision"] and "collision" not in o["steps"][1] and o["steps"][1]["three_in_one"]'
+# issue 25.5: sweep --csv, the zone table as CSV: the same zones, widths and robust widths
+# as --json; with --vary one row per step and zone, and the collision's reason
+"$tippe" sweep "$m12" --csv "$tmp/zones.csv" >/dev/null
+check "sweep --csv: the zones of --json, to 1e-9 mm" python3 - "$tmp/zones.csv" "$tmp/m12.json" <<'EOF2'
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+o = json.load(open(sys.argv[2]))
+assert len(rows) == len(o["zones"]), (len(rows), len(o["zones"]))
+for r, z in zip(rows, o["zones"]):
+    assert r["group"] == z["group"] or [r["group"]] == z["subgroups"], (r["group"], z)
+    for k in ("z2_from_mm", "z2_to_mm", "width_mm", "robust_width_mm"):
+        assert abs(float(r[k]) - z[k]) < 1e-9, (k, r[k], z[k])
+    assert r["within_travel"] == ("yes" if z["within_travel"] else "no")
+assert rows[-1]["model_valid"] == "partly" and rows[0]["model_valid"] == "yes"  # the screw out past 16.887 mm
+EOF2
+"$tippe" sweep "$m12" --vary parts.screw.radius_mm=5:6:3 --csv "$tmp/vary.csv" >/dev/null
+check "sweep --vary --csv: a row per step and zone, the collision's reason" python3 - "$tmp/vary.csv" "$tmp/vary-collide.json" <<'EOF2'
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+o = json.load(open(sys.argv[2]))
+want = [(s["value"], z["subgroups"][0] if z["group"] == "I" else z["group"], z["z2_to_mm"]) for s in o["steps"] if s["zones"] for z in s["zones"]]
+got = [(float(r["parts.screw.radius_mm"]), r["group"], float(r["z2_to_mm"])) for r in rows if not r["collision"]]
+assert len(got) == len(want) and all(g[:2] == w[:2] and abs(g[2] - w[2]) < 1e-9 for g, w in zip(got, want)), (got, want)
+bad = [r for r in rows if r["collision"]]
+assert len(bad) == 1 and float(bad[0]["parts.screw.radius_mm"]) == 6 and "overlaps part 'body'" in bad[0]["collision"]
+EOF2
+expect_fail "vary where every value collides" 2 "at every value of parts.screw.radius_mm the parts collide" -- sweep "$m12" --vary parts.screw.radius_mm=6:7:2
 rm -f "$tmp"/*
 
 # --- compare -------------------------------------------------------------------
@@ -137,6 +175,8 @@ refused "sweep with a bad --vary" sweep "$m12" --vary parts.screw.height_mm=5:15
 refused "sweep --vary of an unknown part" sweep "$m12" --vary parts.nosuch.height_mm=5:15:3 --plot "$p"
 refused "sweep --vary to an impossible value" sweep "$m12" --vary parts.screw.height_mm=-5:15:3 --plot "$p"
 refused "sweep --vary with a phase plot" sweep "$m12" --vary parts.screw.height_mm=5:15:3 --phase-plot "$p"
+refused "sweep --csv into a missing directory" sweep "$m12" --csv "$tmp/no/such/z.csv" --plot "$p"
+refused "sweep --csv and --plot one file" sweep "$m12" --csv "$p" --plot "$p"
 refused "compare without designs" compare
 refused "compare with a missing file" compare "$m12" "$tmp/missing.json"
 refused "compare with a broken file" compare "$tmp/broken.json" "$m12"

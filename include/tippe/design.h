@@ -516,8 +516,9 @@ struct cJSON;
 void tippe_design_caps_json(struct cJSON *o, const tippe_design_cap caps[2]);
 
 /* Warning i (0, 1, ...) about a probable unit mistake in a design that loaded:
- * a part length below 0.01 mm (metres typed for mm: the message says what it
- * would be). Writes the message (naming the field) into buf and returns 1, or
+ * a part length below 0.01 mm, or one (or a travel) under 1 % of the sphere's radius
+ * that in metres would fit the ball (metres typed for mm: the message says what it
+ * would be); and a moving weight under 1 % of the top's mass. Writes the message (naming the field) into buf and returns 1, or
  * returns 0 past the last. (A sphere radius outside 1 .. 1000 mm and a density
  * above osmium's are errors at load, with the likely unit.) */
 int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size);

@@ -395,6 +395,25 @@ typedef struct {
     long max_steps;
 } tippe_dynamics_options;
 
+/* Trajectory samples kept in memory (simulate's and check's --csv and --plot): pass
+ * tippe_dynamics_samples_keep as on_sample and a zeroed tippe_dynamics_samples as
+ * sample_ctx; free with tippe_dynamics_samples_free. keep returns 1 when out of memory. */
+typedef struct {
+    int n, cap;
+    tippe_dynamics_sample *s;
+} tippe_dynamics_samples;
+int tippe_dynamics_samples_keep(const tippe_dynamics_sample *s, void *ctx);
+void tippe_dynamics_samples_free(tippe_dynamics_samples *b);
+/* The default sample interval of a trajectory of ic on a top of radius R_m under g:
+ * 16 samples per turn at the launch's rotation rate (so that plots resolve the
+ * precession), within t_end/10^5 .. t_end/10^4 s. */
+double tippe_dynamics_default_sample_dt(const tippe_dynamics_initial *ic, double g,
+                                        double R_m, double t_end);
+/* The samples as CSV, a header with units and one row per sample (%.10g):
+ * t_s,theta_rad,theta_dot_rad_s,phi_dot_rad_s,spin_rad_s,U_m_s,V_m_s,Rn_N,slip_speed_m_s,
+ * E_J,J_kg_m3_s,dissipated_J,phi_rad,psi_rad,x_m,y_m. */
+void tippe_dynamics_write_csv(FILE *out, const tippe_dynamics_sample *s, int n);
+
 /* Defaults: verdict level, t_end 100 s, preset "balanced", margin_factor 10,
  * sample_dt 0, no callback, until_flip 0, max_steps 1e7 (a few seconds of one
  * core at the verdict level with rk8pd; docs/performance.md). */

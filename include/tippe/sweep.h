@@ -186,16 +186,27 @@ typedef struct {
     double *values;                        /* the field's value at each step */
     tippe_sweep_result *results;           /* physical travel marked */
     double *travel_from_mm, *travel_to_mm; /* each step's stated travel */
+    /* NULL, or why step i's design does not hold together: its value is a valid
+     * one, but a part then overlaps or touches another, leaves the sphere or the
+     * stated travel leaves the physical one (the layout check's message). Such a step
+     * is kept, not swept: its result has no zones and its travel is 0 .. 0. */
+    char **collision;
+    int n_collisions;
 } tippe_sweep_vary_result;
 
 /* TIPPE_EINPUT if steps < 1 (or steps = 1 with from != to), a bound is not
- * finite, or a step's design does not load (the message names the step's
- * override). *out must be freed with tippe_sweep_vary_free() whatever the return. */
+ * finite, every step's parts collide, or a step's design does not load for a reason
+ * other than where its parts are (the message names the step's override: a bad field
+ * or value). *out must be freed with tippe_sweep_vary_free() whatever the return. */
 int tippe_sweep_vary(const char *design_path, const char *const *overrides, int n_overrides,
                      const char *field, double from, double to, int steps, double z2_from_mm,
                      double z2_to_mm, const tippe_sweep_options *opt,
                      tippe_sweep_vary_result *out, tippe_error *err);
 void tippe_sweep_vary_free(tippe_sweep_vary_result *v);
+/* A vary's zone tables as one CSV: tippe_sweep_write_csv's columns after a first one
+ * named field (the step's value), and a last one, collision: empty, or for a step whose
+ * parts collide (its only row, with the zone columns empty) the reason. */
+void tippe_sweep_vary_write_csv(FILE *out, const tippe_sweep_vary_result *v, const char *field);
 
 /* Reports. d may be NULL for a path that is not a design. */
 struct cJSON;
@@ -290,6 +301,17 @@ void tippe_sweep_robust_widths(const tippe_sweep_result *r, const tippe_sweep_ba
  * The JSON function returns 0, or -1 if out of memory. */
 void tippe_sweep_print_bands(FILE *out, const tippe_design *d, const tippe_sweep_result *r,
                              const tippe_sweep_bands_result *b);
+
+/* The zone table as CSV (tippe sweep --csv): the header
+ *   zone,group,family,z2_from_mm,z2_to_mm,width_mm,robust_width_mm,ends_on,within_travel,
+ *   model_valid
+ * then one row per zone: its index (1-based), group (Ia ... III), family (I, II, III), ends
+ * and width in mm (%.12g), robust width (empty when b is NULL), the boundaries that end it
+ * ("b=-1; A/C-1=+eps/R", quoted; empty at the end of the sweep or the physical travel),
+ * yes/no whether it lies within the physical travel, and yes/no/partly whether no part
+ * stands out of the sphere there. */
+void tippe_sweep_write_csv(FILE *out, const tippe_sweep_result *r,
+                           const tippe_sweep_bands_result *b);
 
 struct cJSON;
 int tippe_sweep_json_add_bands(struct cJSON *o, const tippe_design *d,

@@ -3,11 +3,14 @@
 #include "hands.h"
 
 #include "tippe/physics.h"
+#include "tippe/plot.h"
+#include "tippe/scenario.h"
 #include "tippe/sweep.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 static int check_parse(hands_args *a, int argc, char **argv)
 {
@@ -18,6 +21,13 @@ static int check_parse(hands_args *a, int argc, char **argv)
         {.name = "spin", .kind = TIPPE_CLI_DOUBLE, .value = &a->spin.from, .arg = "RATE",
          .unit = "rad/s", .min = 0, .max = HANDS_SPIN_MAX_RAD_S, .def = "15rev/s",
          .help = "launch spin (the default is the middle of tippe launch's range)"},
+        {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
+         .help = "write the launch's trajectory, integrated to --t-end as tippe simulate\n"
+                 "does (t, theta, theta_dot, phi_dot, n, U, V, Rn, |V_Q|, E, J, ...;\n"
+                 "units in the header)"},
+        {.name = "plot", .kind = TIPPE_CLI_STRING, .value = &a->plot, .arg = "FILE",
+         .help = "theta, spin and contact speed against time and the (phi_dot, theta, n)\n"
+                 "path, as tippe simulate draws them; .png, .svg or .pdf"},
         {NULL},
     };
     hands_verb v = {
@@ -34,7 +44,67 @@ static int check_parse(hands_args *a, int argc, char **argv)
                           "usage or design, 1 the launch could not be computed."},
         .own = own,
     };
-    return hands_parse(&v, a, argc, argv);
+    int rc = hands_parse(&v, a, argc, argv);
+    /* before the launch, so that a bad output path costs nothing */
+    if (!rc && ((a->csv && tippe_cli_check_output(a->verb, "--csv", a->csv, 0)) ||
+                (a->plot && tippe_cli_check_output(a->verb, "--plot", a->plot, 1))))
+        return 2;
+    if (!rc && a->csv && a->plot && !strcmp(a->csv, a->plot))
+        return tippe_cli_usage_error(a->verb, "--csv and --plot name the same file '%s'", a->csv);
+    return rc;
+}
+
+/* --csv and --plot: the check's launch as a scenario (its top, friction, initial
+ * state, t_end and accuracy), integrated at the trajectory level to t_end and
+ * written by the writers tippe simulate uses (tippe_dynamics_write_csv,
+ * tippe_plot_sim). 0, or the status after saying why. */
+static int check_trajectory(const hands_args *a, const tippe_sweep_check *r, int *n_samples)
+{
+    tippe_scenario sc;
+    memset(&sc, 0, sizeof sc);
+    snprintf(sc.path, sizeof sc.path, "%s", tippe_design_path(r->d));
+    snprintf(sc.design_path, sizeof sc.design_path, "%s", tippe_design_path(r->d));
+    snprintf(sc.name, sizeof sc.name, "%s: tippe check at Z2 = %g mm", tippe_design_name(r->d),
+             a->z2_mm);
+    sc.z2_mm = a->z2_mm;
+    tippe_design_protrusion_at(r->d, a->z2_mm, &sc.protrusion);
+    tippe_launch_friction_model(&a->o, &sc.model);
+    sc.model.top = r->top;
+    sc.initial = r->ic;
+    sc.phi_dot_rule = TIPPE_PHI_DOT_GIVEN;
+    sc.t_end = a->o.t_end;
+    sc.accuracy = a->o.accuracy;
+    snprintf(sc.accuracy_name, sizeof sc.accuracy_name, "%s", a->o.accuracy_name);
+
+    tippe_dynamics_options opt;
+    tippe_dynamics_options_default(&opt);
+    opt.level = TIPPE_LEVEL_TRAJECTORY;
+    opt.t_end = sc.t_end;
+    opt.accuracy = sc.accuracy;
+    opt.run_to_t_end = 1;
+    opt.until_flip = 1;
+    opt.sample_dt = tippe_dynamics_default_sample_dt(&sc.initial, sc.model.g, sc.model.top.R,
+                                                     sc.t_end);
+    tippe_dynamics_samples buf = {0, 0, NULL};
+    opt.on_sample = tippe_dynamics_samples_keep;
+    opt.sample_ctx = &buf;
+    tippe_dynamics_result res;
+    tippe_error err = {0};
+    int rc = tippe_dynamics_run(&sc.model, &sc.initial, &opt, &res, &err);
+    if (!rc && a->csv) {
+        tippe_report_file rf;
+        if ((rc = tippe_report_open(&rf, a->csv, "the CSV file", &err)) == 0) {
+            tippe_dynamics_write_csv(rf.f, buf.s, buf.n);
+            rc = tippe_report_commit(&rf, &err);
+        }
+    }
+    if (!rc && a->plot) /* one set with the CSV (tippe_cli_run): both or neither */
+        rc = tippe_plot_sim(a->plot, &sc, &res, buf.s, buf.n, &err);
+    if (rc)
+        rc = tippe_cli_fail(a->verb, &err, rc);
+    *n_samples = buf.n;
+    tippe_dynamics_samples_free(&buf);
+    return rc;
 }
 
 /* What the launch does: an end state, a range (bounded), the lift-off, or the
@@ -185,10 +255,20 @@ int tippe_cli_check(int argc, char **argv)
         tippe_design_free(d);
         return tippe_cli_fail(a.verb, &err, rc);
     }
-    if (a.json)
+    int n_samples = 0;
+    if ((a.csv || a.plot) && (rc = check_trajectory(&a, &r, &n_samples)) != 0) {
+        tippe_design_free(d);
+        return rc;
+    }
+    if (a.json) {
         rc = tippe_cli_print_json(a.verb, tippe_sweep_check_json(&r, &a.o, a.sets.item, a.sets.n));
-    else
+    } else {
         check_text(&a, &r);
+        if (a.csv)
+            printf("csv        %s (%d samples, to t = %g s)\n", a.csv, n_samples, a.o.t_end);
+        if (a.plot)
+            printf("plot       %s\n", a.plot);
+    }
     tippe_design_free(d);
     return rc;
 }

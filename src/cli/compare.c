@@ -36,6 +36,33 @@ static void cell(const char *s)
 
 static double clean(double x) { return fabs(x) < 5e-4 ? 0.0 : x; }
 
+/* Whether the designs' names, cut to width characters, still differ wherever the
+ * whole names differ (issue 25.5: two long names alike in their first 40
+ * characters made two rows look alike). */
+static int names_cut_distinct(int n, tippe_design **d, int width)
+{
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++) {
+            const char *a = tippe_design_name(d[i]), *b = tippe_design_name(d[j]);
+            if (strcmp(a, b) && !strncmp(a, b, (size_t)width))
+                return 0;
+        }
+    return 1;
+}
+
+/* The width of the summary's name column: 40, or the longest name when cutting
+ * to 40 would make two different names alike. */
+static int name_width(int n, tippe_design **d)
+{
+    if (names_cut_distinct(n, d, 39))
+        return 40;
+    int w = 40;
+    for (int i = 0; i < n; i++)
+        if ((int)strlen(tippe_design_name(d[i])) > w)
+            w = (int)strlen(tippe_design_name(d[i]));
+    return w;
+}
+
 /* "!" for a zone where some part stands out of the sphere (the model does not
  * apply there: docs/design-format.md). */
 static const char *invalid_mark(const tippe_sweep_result *r, const tippe_sweep_zone *z)
@@ -64,6 +91,9 @@ static void print_wide(int n, tippe_design **d, tippe_sweep_result *r,
                                const tippe_sweep_bands_result *b)
 {
     char buf[256];
+    if (!names_cut_distinct(n, d, COL - 3)) /* the columns cut them alike: say them whole */
+        for (int i = 0; i < n; i++)
+            printf("column %d: %s\n", i + 1, tippe_design_name(d[i]));
     for (int i = 0; i < n; i++)
         cell(tippe_design_name(d[i]));
     printf("\n");
@@ -148,7 +178,8 @@ static void print_stacked(int n, tippe_design **d, tippe_sweep_result *r,
         }
         printf("\n");
     }
-    printf("%-4s %-40s %-15s %-18s %s\n", "", "design", "3-in-1", "narrowest (mm)",
+    int nw = name_width(n, d);
+    printf("%-4s %-*s %-15s %-18s %s\n", "", nw, "design", "3-in-1", "narrowest (mm)",
            "robust narrowest");
     for (int i = 0; i < n; i++) {
         tippe_sweep_summary s;
@@ -161,8 +192,11 @@ static void print_stacked(int n, tippe_design **d, tippe_sweep_result *r,
             snprintf(nar, sizeof nar, "%.3f (%s)", s.narrowest_zone_mm, s.narrowest_family);
         else
             snprintf(nar, sizeof nar, "0");
-        printf("[%-2d] %-40.40s %-15s %-18s %.3f\n", i + 1, tippe_design_name(d[i]), groups, nar,
-               narrow);
+        const char *name = tippe_design_name(d[i]);
+        if ((int)strlen(name) > nw) /* cut, and said so */
+            printf("[%-2d] %.*s~ %-15s %-18s %.3f\n", i + 1, nw - 1, name, groups, nar, narrow);
+        else
+            printf("[%-2d] %-*s %-15s %-18s %.3f\n", i + 1, nw, name, groups, nar, narrow);
     }
     printf("\n(robust: less the tolerance bands of the zone's ends, see tippe sweep; * beyond "
            "the physical\ntravel, where a moving part would pass through a fixed one; ! a part "

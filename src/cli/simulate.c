@@ -17,25 +17,7 @@
 static const char *const VERB = "simulate";
 
 
-typedef struct {
-    int n, cap;
-    tippe_dynamics_sample *s;
-} samples;
-
-static int keep_sample(const tippe_dynamics_sample *s, void *ctx)
-{
-    samples *b = ctx;
-    if (b->n == b->cap) {
-        int cap = b->cap ? 2 * b->cap : 1024;
-        tippe_dynamics_sample *p = realloc(b->s, (size_t)cap * sizeof *p);
-        if (!p)
-            return 1;
-        b->s = p;
-        b->cap = cap;
-    }
-    b->s[b->n++] = *s;
-    return 0;
-}
+typedef tippe_dynamics_samples samples;
 
 static int write_csv(const char *path, const samples *b, tippe_error *err)
 {
@@ -43,15 +25,7 @@ static int write_csv(const char *path, const samples *b, tippe_error *err)
     int rc = tippe_report_open(&rf, path, "the CSV file", err);
     if (rc)
         return rc;
-    fprintf(rf.f, "t_s,theta_rad,theta_dot_rad_s,phi_dot_rad_s,spin_rad_s,U_m_s,V_m_s,Rn_N,"
-                  "slip_speed_m_s,E_J,J_kg_m3_s,dissipated_J,phi_rad,psi_rad,x_m,y_m\n");
-    for (int i = 0; i < b->n; i++) {
-        const tippe_dynamics_sample *s = &b->s[i];
-        fprintf(rf.f, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-                      "%.10g,%.10g,%.10g,%.10g\n",
-                s->t, s->theta, s->theta_dot, s->phi_dot, s->spin, s->U, s->V, s->Rn,
-                s->slip_speed, s->E, s->J, s->D, s->phi, s->psi, s->x, s->y);
-    }
+    tippe_dynamics_write_csv(rf.f, b->s, b->n);
     return tippe_report_commit(&rf, err);
 }
 
@@ -372,15 +346,9 @@ static int plan_samples(const simulate_args *a, const tippe_scenario *sc,
     if (!a->csv && !a->plot)
         return 0;
     double dt = a->sample_dt;
-    if (dt <= 0) {
-        /* 16 samples per turn at the launch's rotation rate, so that the
-         * plots resolve the precession, but no more than 10^5 samples */
-        const tippe_dynamics_initial *ic = &sc->initial;
-        double w = sqrt(ic->theta_dot * ic->theta_dot + ic->spin * ic->spin +
-                        pow(ic->phi_dot * sin(ic->theta), 2)) +
-                   sqrt(sc->model.g / sc->model.top.R);
-        dt = fmax(sc->t_end * 1e-5, fmin(sc->t_end * 1e-4, 2 * M_PI / (16 * w)));
-    }
+    if (dt <= 0) /* 16 per turn, no more than 10^5 samples */
+        dt = tippe_dynamics_default_sample_dt(&sc->initial, sc->model.g, sc->model.top.R,
+                                              sc->t_end);
     if (sc->t_end / dt > MAX_SAMPLES)
         return tippe_cli_usage_error(VERB,
                                      "--sample-dt %g s over t_end = %g s is %.3g samples; at "
@@ -390,7 +358,7 @@ static int plan_samples(const simulate_args *a, const tippe_scenario *sc,
                                      MAX_SAMPLES * sizeof(tippe_dynamics_sample) / 1e6);
     opt->level = TIPPE_LEVEL_TRAJECTORY;
     opt->sample_dt = dt;
-    opt->on_sample = keep_sample;
+    opt->on_sample = tippe_dynamics_samples_keep;
     opt->sample_ctx = buf;
     return 0;
 }
@@ -453,6 +421,6 @@ int tippe_cli_simulate(int argc, char **argv)
         fprintf(stderr, "tippe simulate: %s: %s\n", a.file, err.msg);
     else
         rc = simulate_report(&a, &sc, &res, &buf, elapsed);
-    free(buf.s);
+    tippe_dynamics_samples_free(&buf);
     return rc;
 }

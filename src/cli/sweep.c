@@ -42,6 +42,10 @@ static void print_vary_table(const tippe_design *d, const tippe_sweep_vary_resul
            "the sphere: model invalid)");
     for (int i = 0; i < v->n; i++) {
         const tippe_sweep_result *r = &v->results[i];
+        if (v->collision[i]) { /* kept, not swept: the reason is below the table */
+            printf("%*.6g  %-6s %-16spart collides (see below)\n", w, v->values[i], "-", "-");
+            continue;
+        }
         tippe_sweep_summary s;
         tippe_sweep_summarise(r, &s);
         char narrow[40] = "0";
@@ -58,6 +62,11 @@ static void print_vary_table(const tippe_design *d, const tippe_sweep_vary_resul
         }
         printf("\n");
     }
+    if (v->n_collisions)
+        printf("\n");
+    for (int i = 0; i < v->n; i++)
+        if (v->collision[i])
+            printf("%s = %g: part collides: %s\n", field, v->values[i], v->collision[i]);
 }
 
 static cJSON *vary_json(const tippe_design *d, const tippe_sweep_vary_result *v,
@@ -72,6 +81,21 @@ static cJSON *vary_json(const tippe_design *d, const tippe_sweep_vary_result *v,
         return NULL;
     }
     for (int i = 0; i < v->n; i++) {
+        if (v->collision[i]) { /* {value, result: null, reason}: kept, not swept */
+            cJSON *s = cJSON_CreateObject();
+            if (!s || !cJSON_AddItemToArray(steps, s)) {
+                cJSON_Delete(s);
+                cJSON_Delete(o);
+                return NULL;
+            }
+            if (!cJSON_AddNumberToObject(s, "value", v->values[i]) ||
+                !cJSON_AddNullToObject(s, "zones") ||
+                !cJSON_AddStringToObject(s, "collision", v->collision[i])) {
+                cJSON_Delete(o);
+                return NULL;
+            }
+            continue;
+        }
         cJSON *s = tippe_sweep_json(&v->results[i], NULL);
         double tr[2] = {v->travel_from_mm[i], v->travel_to_mm[i]};
         cJSON *t = s ? cJSON_CreateDoubleArray(tr, 2) : NULL;
@@ -91,7 +115,7 @@ static cJSON *vary_json(const tippe_design *d, const tippe_sweep_vary_result *v,
 }
 
 typedef struct {
-    const char *design, *plot, *phase, *vary;
+    const char *design, *plot, *phase, *vary, *csv;
     double from, to; /* from >= to: the design's stated travel */
     int has_from, has_to, json;
     tippe_cli_sets sets;
@@ -118,6 +142,10 @@ static int sweep_parse(sweep_args *a, int argc, char **argv)
                  "PNG, SVG or PDF by the file's extension"},
         {.name = "phase-plot", .kind = TIPPE_CLI_STRING, .value = &a->phase, .arg = "FILE",
          .help = "the design's path through the phase diagram (Figure 2)"},
+        {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
+         .help = "the zone table as CSV: one row per zone (group, family, from, to, width,\n"
+                 "robust width in mm, ends on, within the travel, model valid); with\n"
+                 "--vary, one row per step and zone after a column of FIELD's value"},
         {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
          .help = "change a field of the design before it is checked (repeatable), e.g.\n"
                  "--set parts.rod.material=nylon  --set radius_mm=30"},
@@ -131,7 +159,7 @@ static int sweep_parse(sweep_args *a, int argc, char **argv)
     tippe_cli_spec spec = {
         .verb = VERB,
         .synopsis = "DESIGN.json [--from MM] [--to MM] [--json] [--plot FILE]\n"
-                    "                   [--phase-plot FILE] [--set FIELD=VALUE ...]\n"
+                    "                   [--phase-plot FILE] [--csv FILE] [--set FIELD=VALUE ...]\n"
                     "                   [--vary FIELD=FROM:TO:STEPS]",
         .about = "Where along the travel of the moving weight (its midpoint at height Z2 above\n"
                  "the sphere's centre) the top is of group Ia, Ib, IIa, IIb, IIc or III\n"
@@ -161,9 +189,14 @@ static int sweep_parse(sweep_args *a, int argc, char **argv)
     if ((a->plot && tippe_cli_check_output(VERB, "--plot", a->plot, 1)) ||
         (a->phase && tippe_cli_check_output(VERB, "--phase-plot", a->phase, 1)))
         return 2;
+    if (a->csv && tippe_cli_check_output(VERB, "--csv", a->csv, 0))
+        return 2;
     if (a->plot && a->phase && !strcmp(a->plot, a->phase))
         return tippe_cli_usage_error(VERB, "--plot and --phase-plot name the same file '%s'",
                                      a->plot);
+    if (a->csv && ((a->plot && !strcmp(a->csv, a->plot)) ||
+                   (a->phase && !strcmp(a->csv, a->phase))))
+        return tippe_cli_usage_error(VERB, "--csv names the same file '%s' as a plot", a->csv);
     if (a->vary &&
         !parse_vary(a->vary, a->field, sizeof a->field, &a->vfrom, &a->vto, &a->vsteps))
         return tippe_cli_usage_error(VERB,
@@ -195,6 +228,22 @@ static int sweep_ends(sweep_args *a, const tippe_design *d)
     return 0;
 }
 
+/* --csv: the zone table (or a vary's tables), written whole or not at all. */
+static int write_zone_csv(const char *path, const tippe_sweep_result *r,
+                          const tippe_sweep_bands_result *b, const tippe_sweep_vary_result *v,
+                          const char *field, tippe_error *err)
+{
+    tippe_report_file rf;
+    int rc = tippe_report_open(&rf, path, "the CSV file", err);
+    if (rc)
+        return rc;
+    if (v)
+        tippe_sweep_vary_write_csv(rf.f, v, field);
+    else
+        tippe_sweep_write_csv(rf.f, r, b);
+    return tippe_report_commit(&rf, err);
+}
+
 static int sweep_vary_run(const sweep_args *a, const tippe_design *d, const char *title)
 {
     tippe_error err = {0};
@@ -203,6 +252,8 @@ static int sweep_vary_run(const sweep_args *a, const tippe_design *d, const char
                               a->vsteps, a->from, a->to, NULL, &v, &err);
     if (!rc && a->plot)
         rc = tippe_sweep_plot_vary(a->plot, &v, a->field, title, &err);
+    if (!rc && a->csv)
+        rc = write_zone_csv(a->csv, NULL, NULL, &v, a->field, &err);
     if (!rc) {
         if (a->json) {
             cJSON *o = vary_json(d, &v, a->field);
@@ -232,6 +283,8 @@ static int sweep_run(const sweep_args *a, const tippe_design *d, const char *tit
         rc = tippe_sweep_plot_zones_banded(a->plot, &p, &r, &b, title, &err);
     if (!rc && a->phase) /* one set with the plot (tippe_cli_run): both or neither */
         rc = tippe_sweep_plot_phase(a->phase, &p, &r, title, &err);
+    if (!rc && a->csv)
+        rc = write_zone_csv(a->csv, &r, &b, NULL, NULL, &err);
     if (rc) {
         rc = tippe_cli_fail(VERB, &err, rc);
     } else if (a->json) {

@@ -564,9 +564,10 @@ int tippe_design_derive(const tippe_design *d, const char *const *extra, int n_e
     return reload(d, extra, n_extra, 0, out, err);
 }
 
-/* Part i's length fields below LENGTH_HINT_MM, one at a time (*k counts them
+/* Part i's length fields below LENGTH_HINT_MM or that look like metres, one at a time (*k counts them
  * across parts): the key, or NULL past the last. */
-static const char *small_length(const part *p, int which, double *value)
+static int looks_like_metres(double v, double R);
+static const char *small_length(const part *p, int which, double R, double *value)
 {
     const struct {
         const char *key;
@@ -584,31 +585,72 @@ static const char *small_length(const part *p, int which, double *value)
         {"axial_semi_mm", p->axial_semi_mm, p->shape == SHAPE_TORUS},
     };
     for (size_t j = 0; j < sizeof f / sizeof f[0]; j++)
-        if (f[j].on && f[j].v < LENGTH_HINT_MM && which-- == 0) {
+        if (f[j].on && (f[j].v < LENGTH_HINT_MM || looks_like_metres(f[j].v, R)) &&
+            which-- == 0) {
             *value = f[j].v;
             return f[j].key;
         }
     return NULL;
 }
 
+/* Whether a length of v mm in a sphere of radius R mm reads as metres typed for mm
+ * (issue 25.5): under METRES_HINT_SHARE of the radius, and 1000 v a length that
+ * fits the ball (1 mm .. its diameter). A 16 mm screw typed 0.016 in a 25 mm ball
+ * is caught; a 0.2 mm hole is not (200 mm would not fit). */
+static int looks_like_metres(double v, double R)
+{
+    return v > 0 && v < METRES_HINT_SHARE * R && v * 1e3 >= 1.0 && v * 1e3 <= 2 * R;
+}
+
 int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size)
 {
     int k = 0;
+    const double R = d->radius_mm;
     for (int j = 0; j < d->n_parts; j++) {
         const part *p = &d->parts[j];
         double v;
         const char *key;
-        for (int w = 0; (key = small_length(p, w, &v)) != NULL; w++) {
+        for (int w = 0; (key = small_length(p, w, R, &v)) != NULL; w++) {
             if (k++ != i)
                 continue;
             char hint[160];
-            unit_hint(v, LENGTH_HINT_MM, 2 * d->radius_mm, hint, sizeof hint);
-            snprintf(buf, size,
-                     "parts[%d].%s: %g mm (part '%s') is finer than anything printed or "
-                     "machined (lengths in a design are in mm)%s",
-                     j, key, v, p->name, hint);
+            if (v < LENGTH_HINT_MM) {
+                unit_hint(v, LENGTH_HINT_MM, 2 * R, hint, sizeof hint);
+                snprintf(buf, size,
+                         "parts[%d].%s: %g mm (part '%s') is finer than anything printed or "
+                         "machined (lengths in a design are in mm)%s",
+                         j, key, v, p->name, hint);
+            } else {
+                snprintf(buf, size,
+                         "parts[%d].%s: %g mm (part '%s') is under %g %% of the sphere's "
+                         "radius (%g mm; lengths in a design are in mm); did you mean metres? "
+                         "%g m is %g mm",
+                         j, key, v, p->name, 100 * METRES_HINT_SHARE, R, v, v * 1e3);
+            }
             return 1;
         }
+    }
+    /* a travel typed in metres: [0, 0.02] for 0 .. 20 mm */
+    double t0 = d->travel_mm[0], t1 = d->travel_mm[1];
+    if (!d->travel_physical && t1 > t0 && looks_like_metres(t1 - t0, R) &&
+        fmax(fabs(t0), fabs(t1)) < METRES_HINT_SHARE * R && k++ == i) {
+        snprintf(buf, size,
+                 "travel_mm: %g .. %g mm is under %g %% of the sphere's radius (%g mm; "
+                 "lengths in a design are in mm); did you mean metres? %g .. %g m is "
+                 "%g .. %g mm",
+                 t0, t1, 100 * METRES_HINT_SHARE, R, t0, t1, t0 * 1e3, t1 * 1e3);
+        return 1;
+    }
+    /* a moving weight too light to move the centre of mass (issue 25.5) */
+    double mm = d->moving.m, mt = d->fixed.m + d->moving.m;
+    if (mt > 0 && mm < LIGHT_WEIGHT_SHARE * mt && k++ == i) {
+        snprintf(buf, size,
+                 "the moving weight is %.3g g, %.2g %% of the top's %.4g g (under %g %%): "
+                 "over the whole travel it moves the centre of mass by %.3g mm, so its "
+                 "zones hang on hundredths of a millimetre (a wrong material or density?)",
+                 mm * 1e3, 100 * mm / mt, mt * 1e3, 100 * LIGHT_WEIGHT_SHARE,
+                 mm / mt * (t1 - t0));
+        return 1;
     }
     return 0;
 }

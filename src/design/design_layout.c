@@ -13,6 +13,9 @@
 
 static double widest_free_gap_mid(const tippe_design *d, const double *rs, int nr);
 
+/* limit_by_contact's answer when asked quietly: a moving part overlaps a fixed one there. */
+#define BLOCKED (-1)
+
 /* ------------------------------------------------------ z intervals at r */
 
 
@@ -376,8 +379,8 @@ static void limit_by_protrusion(tippe_design *d, const part *p, double lim[2])
  * the sphere). A moving interval [lo, hi] (at Z2 = 0) and a fixed one
  * [flo, fhi] share volume exactly for shifts in (flo - hi, fhi - lo); the
  * physical travel is the gap between such forbidden shifts around mid. Fails
- * if mid itself is forbidden. */
-static int limit_by_contact(const layout *L, int i, int j, double mid, double lim[2])
+ * if mid itself is forbidden (BLOCKED, with no message, unless report). */
+static int limit_by_contact(const layout *L, int i, int j, double mid, double lim[2], int report)
 {
     tippe_design *d = L->d;
     const part *p = &d->parts[i];
@@ -395,6 +398,8 @@ static int limit_by_contact(const layout *L, int i, int j, double mid, double li
                 double f0 = b.lo[w] - a.hi[u], f1 = b.hi[w] - a.lo[u];
                 int s = -1;
                 if (f0 < mid && mid < f1) {
+                    if (!report)
+                        return BLOCKED;
                     if (j < 0)
                         return tippe_json_fail(L->c, "travel_mm",
                                                "at Z2 = %g mm (the middle of the travel) moving "
@@ -425,12 +430,11 @@ static int limit_by_contact(const layout *L, int i, int j, double mid, double li
 /* The physical travel (d->contact_mm, d->contact_limit) around the middle of
  * the stated travel, or for a travel_physical design (an optimiser's
  * candidate) the widest free stretch, which then becomes its travel. */
-static int find_physical_travel(const layout *L)
+static int physical_travel_around(const layout *L, double mid, double lim[2], int report)
 {
     tippe_design *d = L->d;
-    double mid = d->travel_physical ? widest_free_gap_mid(d, L->rs, L->nr)
-                                    : 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
-    double lim[2] = {-BIG_MM, BIG_MM};
+    lim[0] = -BIG_MM;
+    lim[1] = BIG_MM;
     snprintf(d->contact_limit[0], sizeof d->contact_limit[0], "nothing");
     snprintf(d->contact_limit[1], sizeof d->contact_limit[1], "nothing");
     int rc = TIPPE_OK;
@@ -443,9 +447,27 @@ static int find_physical_travel(const layout *L)
         for (int j = -1; j < d->n_parts && !rc; j++) {
             if (j < 0 ? p->may_protrude : (d->parts[j].is_void || d->parts[j].moving))
                 continue;
-            rc = limit_by_contact(L, i, j, mid, lim);
+            rc = limit_by_contact(L, i, j, mid, lim, report);
         }
     }
+    return rc;
+}
+
+/* A stated travel whose middle is forbidden (a huge end: travel_mm [0, 100] in a
+ * ball of radius 25) is measured against the free stretch around its start, else its
+ * end, so that check_travel says "ends at 100 mm, beyond the physical travel A .. B mm"
+ * (issue 25.5); only when neither end is free does the message name the middle. */
+static int find_physical_travel(const layout *L)
+{
+    tippe_design *d = L->d;
+    double mid = d->travel_physical ? widest_free_gap_mid(d, L->rs, L->nr)
+                                    : 0.5 * (d->travel_mm[0] + d->travel_mm[1]);
+    double lim[2];
+    int rc = physical_travel_around(L, mid, lim, 0);
+    for (int e = 0; rc == BLOCKED && !d->travel_physical && e < 2; e++)
+        rc = physical_travel_around(L, d->travel_mm[e], lim, 0);
+    if (rc == BLOCKED)
+        rc = physical_travel_around(L, mid, lim, 1);
     d->contact_mm[0] = lim[0];
     d->contact_mm[1] = lim[1];
     if (!rc && d->travel_physical) {

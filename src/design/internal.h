@@ -38,6 +38,12 @@
  * down to a picometre: below that (a subnormal 1e-320, ...) no part is that
  * thin, and its mass moments would underflow to nothing. */
 #define LENGTH_HINT_MM 0.01
+/* A part length or travel under 1 % of the sphere's radius whose value in metres
+ * would fit the ball (1 mm .. its diameter) was probably typed in metres: a warning
+ * with the hint. A moving weight under 1 % of the top's mass moves its centre of mass
+ * by under R / 100 over the whole ball: a warning (issue 25.5). */
+#define METRES_HINT_SHARE 0.01
+#define LIGHT_WEIGHT_SHARE 0.01
 #define LENGTH_MIN_MM 1e-9
 /* Intervals per r: a part gives at most 2, each void removes at most 2 more. */
 #define MAX_IV (4 + 4 * MAX_PARTS)

@@ -306,7 +306,9 @@ static const char *part_name(const tippe_design *d, int i)
 }
 
 /* Horizontal diameter dimension above the sphere, at height y_line, with
- * extension lines down to the part's edge at height y_edge. */
+ * extension lines down to the part's edge at height y_edge. The diameter is marked
+ * U+00D8, not the diameter sign U+2300, which common sans-serif fonts (Noto Sans) lack:
+ * cairo's toy font API has no fallback and drew it as a box (tests/test_glyphs.sh). */
 static void diameter_dim(dlist *L, const char *name, double radius, double y_edge, double y_line,
                          const char *fmt_extra)
 {
@@ -315,7 +317,7 @@ static void diameter_dim(dlist *L, const char *name, double radius, double y_edg
     line(L, -radius, y_line, radius, y_line, DIM, 1, 0, 1, 1);
     char what[100];
     snprintf(what, sizeof what, "%s.diameter_mm", name);
-    dim_text(L, radius + 1.2, y_line - 0.2, 0, what, 2 * radius, "\u2300%.4g %s%s", 2 * radius,
+    dim_text(L, radius + 1.2, y_line - 0.2, 0, what, 2 * radius, "\u00d8%.4g %s%s", 2 * radius,
              name, fmt_extra ? fmt_extra : "");
 }
 
@@ -438,7 +440,7 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
                             double ra = o->socket_r_mm[q];
                             line(L, ra, o->socket_floor_z_mm[q], R * 0.45, R + 3, DIM, 0.8, 0, 1, 0);
                             dim_text(L, R * 0.45 + 0.8, R + 2.6, 0, what, 2 * ra,
-                                     "socket \u2300%.4g, %.4g deep", 2 * ra,
+                                     "socket \u00d8%.4g, %.4g deep", 2 * ra,
                                      o->socket_floor_z_mm[q] - o->socket_rim_z_mm[q]);
                         }
                     }

@@ -17,6 +17,7 @@
 #define C_BMINUS 0x9a6a1eu
 #define C_TRAVEL 0x555555u
 #define C_INVALID 0xC00000u /* a part stands out of the sphere: the model does not apply */
+#define C_COLLIDE 0x8a5a00u /* a --vary step whose parts collide: not swept */
 #define C_BAND 0x202020u
 #define BAND_ALPHA 0.30
 
@@ -717,19 +718,28 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
     double dv = v->n > 1 ? (x1 - x0) / (v->n - 1) : 1.0;
     double zmin = INFINITY, zmax = -INFINITY;
     for (int i = 0; i < v->n; i++) {
+        if (v->collision && v->collision[i])
+            continue; /* not swept: its column is hatched grey below */
         zmin = fmin(zmin, v->results[i].from_mm);
         zmax = fmax(zmax, v->results[i].to_mm);
     }
+    if (!(zmin < zmax))
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: nothing to plot", file);
     double xa = fmin(x0, x1) - 0.5 * fabs(dv), xb = fmax(x0, x1) + 0.5 * fabs(dv);
     tippe_plot *p;
     int st = tippe_plot_open(file, 1100, 660, &p, err);
     if (st != TIPPE_OK)
         return st;
     tippe_plot_panel(0.09, 0.70, 0.11, 0.88, xa, xb, zmin, zmax);
-    int present[6] = {0}, beyond = 0, invalid = 0;
+    int present[6] = {0}, beyond = 0, invalid = 0, collide = 0;
     for (int i = 0; i < v->n; i++) {
         const tippe_sweep_result *r = &v->results[i];
         double c0 = v->values[i] - 0.5 * fabs(dv), c1 = v->values[i] + 0.5 * fabs(dv);
+        if (v->collision && v->collision[i]) {
+            tippe_plot_hatch(c0, c1, zmin, zmax, C_COLLIDE);
+            collide = 1;
+            continue;
+        }
         for (int j = 0; j < r->n_zones; j++) {
             const tippe_sweep_zone *zn = &r->zones[j];
             present[zn->group] = 1;
@@ -756,14 +766,20 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
     double *tx = malloc((size_t)v->n * 3 * sizeof *tx);
     if (tx) {
         double *ty0 = tx + v->n, *ty1 = tx + 2 * v->n;
-        for (int i = 0; i < v->n; i++) {
-            tx[i] = v->values[i];
-            ty0[i] = v->results[i].travel_from_mm;
-            ty1[i] = v->results[i].travel_to_mm;
-        }
-        if (v->n >= 2) {
-            tippe_plot_line(v->n, tx, ty0, 0x000000u, 2.0, TIPPE_PLOT_DASHED);
-            tippe_plot_line(v->n, tx, ty1, 0x000000u, 2.0, TIPPE_PLOT_DASHED);
+        int m = 0; /* a run of swept steps, drawn when a collision or the end breaks it */
+        for (int i = 0; i <= v->n; i++) {
+            if (i < v->n && !(v->collision && v->collision[i])) {
+                tx[m] = v->values[i];
+                ty0[m] = v->results[i].travel_from_mm;
+                ty1[m] = v->results[i].travel_to_mm;
+                m++;
+                continue;
+            }
+            if (m >= 2) {
+                tippe_plot_line(m, tx, ty0, 0x000000u, 2.0, TIPPE_PLOT_DASHED);
+                tippe_plot_line(m, tx, ty1, 0x000000u, 2.0, TIPPE_PLOT_DASHED);
+            }
+            m = 0;
         }
         free(tx);
     }
@@ -787,8 +803,13 @@ int tippe_sweep_plot_vary(const char *file, const tippe_sweep_vary_result *v,
     if (invalid)
         keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "part out: model invalid",
                                       C_INVALID, 1.0, 0, 0};
+    if (collide)
+        keys[nk++] = (tippe_plot_key){TIPPE_PLOT_KEY_HATCH, "parts collide: not swept",
+                                      C_COLLIDE, 1.0, 0, 0};
     int travel_shown = 0;
     for (int i = 0; i < v->n; i++) {
+        if (v->collision && v->collision[i])
+            continue;
         double a = v->results[i].travel_from_mm, b = v->results[i].travel_to_mm;
         travel_shown |= (a >= zmin && a <= zmax) || (b >= zmin && b <= zmax);
     }

@@ -592,6 +592,9 @@ void tippe_sweep_vary_free(tippe_sweep_vary_result *v)
     free(v->values);
     free(v->travel_from_mm);
     free(v->travel_to_mm);
+    for (int i = 0; v->collision && i < v->n; i++)
+        free(v->collision[i]);
+    free(v->collision);
     memset(v, 0, sizeof *v);
 }
 
@@ -617,12 +620,19 @@ int tippe_sweep_vary(const char *design_path, const char *const *overrides, int 
     out->results = calloc((size_t)steps, sizeof *out->results);
     out->travel_from_mm = calloc((size_t)steps, sizeof(double));
     out->travel_to_mm = calloc((size_t)steps, sizeof(double));
-    if (!ov || !out->values || !out->results || !out->travel_from_mm || !out->travel_to_mm) {
+    out->collision = calloc((size_t)steps, sizeof *out->collision);
+    if (!ov || !out->values || !out->results || !out->travel_from_mm || !out->travel_to_mm ||
+        !out->collision) {
         free(ov);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "vary: out of memory");
     }
     for (int i = 0; i < n_overrides; i++)
         ov[i] = overrides[i];
+    /* The design as given: a step that fails to load is one whose parts collide if
+     * the same value passes every check but the layout's (tippe_design_derive). */
+    tippe_design *base = NULL;
+    tippe_error be = {0};
+    int base_ok = tippe_design_load(design_path, ov, n_overrides, &base, &be) == TIPPE_OK;
     int st = TIPPE_OK;
     for (int i = 0; i < steps && st == TIPPE_OK; i++) {
         double v = steps == 1 ? from : from + (to - from) * i / (steps - 1);
@@ -635,7 +645,25 @@ int tippe_sweep_vary(const char *design_path, const char *const *overrides, int 
         ov[n_overrides] = set;
         tippe_design *d = NULL;
         tippe_error e = {0};
+        out->values[i] = v;
+        out->n = i + 1;
         st = tippe_design_load(design_path, ov, n_overrides + 1, &d, &e);
+        if (st == TIPPE_EINPUT && base_ok) {
+            const char *one[1] = {set};
+            tippe_design *loose = NULL;
+            tippe_error le = {0};
+            if (tippe_design_derive(base, one, 1, &loose, &le) == TIPPE_OK) {
+                tippe_design_free(loose);
+                out->collision[i] = strdup(e.msg);
+                if (!out->collision[i]) {
+                    st = tippe_error_set(err, TIPPE_ECOMPUTE, "vary: out of memory");
+                    break;
+                }
+                out->n_collisions++;
+                st = TIPPE_OK;
+                continue;
+            }
+        }
         if (st == TIPPE_OK) {
             tippe_design_travel_mm(d, &out->travel_from_mm[i], &out->travel_to_mm[i]);
             st = tippe_sweep_design(d, z2_from_mm, z2_to_mm, opt, &out->results[i], &e);
@@ -643,10 +671,16 @@ int tippe_sweep_vary(const char *design_path, const char *const *overrides, int 
         }
         if (st != TIPPE_OK)
             tippe_error_set(err, st, "with %s: %s", set, e.msg);
-        out->values[i] = v;
-        out->n = i + 1;
     }
+    tippe_design_free(base);
     free(ov);
+    if (st == TIPPE_OK && out->n_collisions == out->n) {
+        int last = out->n - 1;
+        char msg[sizeof err->msg];
+        snprintf(msg, sizeof msg, "%s", out->collision[last]);
+        return tippe_error_set(err, TIPPE_EINPUT, "vary: at every value of %s the parts collide "
+                               "(with %s=%.10g: %s)", field, field, out->values[last], msg);
+    }
     return st;
 }
 

@@ -5,6 +5,9 @@
 #include "tippe/sweep.h"
 
 #include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
 
 cJSON *tippe_sweep_report_json(const tippe_design *d, const tippe_sweep_result *r,
                                const tippe_sweep_bands_result *b)
@@ -123,4 +126,68 @@ cJSON *tippe_sweep_samples_json(const tippe_design *d, double from_mm, double to
         }
     }
     return o;
+}
+
+/* ---- the zone table as CSV (tippe sweep --csv) ---------------------------- */
+
+/* mm with no "-0" (as the tables print them). */
+static double csv_mm(double x) { return fabs(x) < 5e-13 ? 0.0 : x; }
+
+static const char CSV_HEADER[] = "zone,group,family,z2_from_mm,z2_to_mm,width_mm,"
+                                 "robust_width_mm,ends_on,within_travel,model_valid";
+
+/* One zone's CSV cells, without a line end. */
+static void csv_zone(FILE *out, const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
+                     int i)
+{
+    const tippe_sweep_zone *z = &r->zones[i];
+    char ends[160] = "", robust[40] = "";
+    for (int k = 0; k < 32; k++) /* the boundaries that end it, "; " between them */
+        if (z->to_boundaries & (1u << k)) {
+            size_t len = strlen(ends);
+            snprintf(ends + len, sizeof ends - len, "%s%s", len ? "; " : "",
+                     tippe_sweep_boundary_name((tippe_sweep_boundary)k));
+        }
+    if (b)
+        snprintf(robust, sizeof robust, "%.12g", tippe_sweep_zone_robust_mm(r, b, i));
+    double bf[2], bt[2];
+    int n_bad = tippe_sweep_zone_model_invalid(r, z, bf, bt);
+    const char *valid = !n_bad ? "yes"
+                        : (n_bad == 1 && bf[0] <= z->z2_from_mm && bt[0] >= z->z2_to_mm) ? "no"
+                                                                                        : "partly";
+    fprintf(out, "%d,%s,%s,%.12g,%.12g,%.12g,%s,\"%s\",%s,%s", i + 1, tippe_group_name(z->group),
+            tippe_group_family(z->group), csv_mm(z->z2_from_mm), csv_mm(z->z2_to_mm),
+            z->z2_to_mm - z->z2_from_mm, robust, ends, z->within_travel ? "yes" : "no", valid);
+}
+
+void tippe_sweep_write_csv(FILE *out, const tippe_sweep_result *r,
+                           const tippe_sweep_bands_result *b)
+{
+    fprintf(out, "%s\n", CSV_HEADER);
+    for (int i = 0; i < r->n_zones; i++) {
+        csv_zone(out, r, b, i);
+        fputc('\n', out);
+    }
+}
+
+void tippe_sweep_vary_write_csv(FILE *out, const tippe_sweep_vary_result *v, const char *field)
+{
+    fprintf(out, "%s,%s,collision\n", field, CSV_HEADER);
+    for (int s = 0; s < v->n; s++) {
+        if (v->collision && v->collision[s]) {
+            fprintf(out, "%.10g,,,,,,,,,,,\"", v->values[s]);
+            for (const char *c = v->collision[s]; *c; c++) { /* a quote doubled */
+                if (*c == '"')
+                    fputc('"', out);
+                fputc(*c, out);
+            }
+            fputs("\"\n", out);
+            continue;
+        }
+        for (int i = 0; i < v->results[s].n_zones; i++) {
+            fprintf(out, "%.10g,", v->values[s]);
+            csv_zone(out, &v->results[s], NULL, i);
+            fputs(",\n", out);
+        }
+    }
 }
