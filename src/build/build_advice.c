@@ -96,9 +96,10 @@ void tippe_build_advise(const tippe_design *d, const tippe_build_options *o, tip
             snprintf(field, sizeof field, "parts.%s.print.infill", p.name);
             if (search(d, o, field, pr.infill, 0, 1, s))
                 snprintf(s->advice[k].text, sizeof s->advice[k].text,
-                         "3-in-1 at %s %.1f %% infill of '%s' (the slicer's %.0f %%): weigh the "
-                         "print (a print's real infill often differs from the slicer's) and give "
-                         "measured_mass_g, or print at that infill",
+                         "3-in-1 at %s %.1f %% infill of '%s' (the slicer's %.0f %%): print at "
+                         "that infill (weighing a print says how much plastic it holds, not "
+                         "where: it cannot show that this one is 3-in-1; its G-code can, "
+                         "tippe slice)",
                          s->advice[k].at_least ? "or above" : "or below",
                          100 * s->advice[k].value, p.name, 100 * pr.infill);
         } else if (pr.printed) {
