@@ -180,18 +180,25 @@ static int plastic(tippe_gcode_state *g, double de, double *vol)
     return TIPPE_OK;
 }
 
+/* The move's start a and end b (physical, mm): X, Y, Z given, absolute or
+ * relative (G90/G91), from the current position. Shared by lines and arcs. */
+static void advance(tippe_gcode_state *g, const tippe_gcode_words *w, double a[3], double b[3])
+{
+    static const char axes[3] = {'X', 'Y', 'Z'};
+    physical(g, a);
+    for (int i = 0; i < 3; i++)
+        if (has(w, axes[i]))
+            g->pos[i] = g->rel_xyz ? g->pos[i] + w->v[axes[i] - 'A'] : w->v[axes[i] - 'A'];
+    physical(g, b);
+}
+
 static int do_move(tippe_gcode_state *g, const tippe_gcode_words *w, const char *line, const char *line_end)
 {
     int rc = need_numbers(g, w, "XYZE", line, line_end);
     if (rc)
         return rc;
     double a[3], b[3];
-    physical(g, a);
-    static const char axes[3] = {'X', 'Y', 'Z'};
-    for (int i = 0; i < 3; i++)
-        if (has(w, axes[i]))
-            g->pos[i] = g->rel_xyz ? g->pos[i] + w->v[axes[i] - 'A'] : w->v[axes[i] - 'A'];
-    physical(g, b);
+    advance(g, w, a, b);
     double de = 0;
     if (has(w, 'E')) {
         double x = w->v['E' - 'A'];
@@ -214,12 +221,7 @@ static int do_arc(tippe_gcode_state *g, const tippe_gcode_words *w, int ccw, con
     if (rc)
         return rc;
     double a[3], b[3];
-    physical(g, a);
-    static const char axes[3] = {'X', 'Y', 'Z'};
-    for (int i = 0; i < 3; i++)
-        if (has(w, axes[i]))
-            g->pos[i] = g->rel_xyz ? g->pos[i] + w->v[axes[i] - 'A'] : w->v[axes[i] - 'A'];
-    physical(g, b);
+    advance(g, w, a, b);
     double cx, cy;
     if (has(w, 'I') || has(w, 'J')) {
         cx = a[0] + (has(w, 'I') ? w->v['I' - 'A'] : 0);
