@@ -68,8 +68,13 @@ int tippe_launch_options_check(const tippe_launch_options *o, tippe_error *err)
     if (!(o->mu >= 0 && isfinite(o->mu)))
         return tippe_error_set(err, TIPPE_EINPUT, "mu = %g s/m must be >= 0", o->mu);
     if (o->law != TIPPE_FRICTION_VISCOUS && o->law != TIPPE_FRICTION_COULOMB &&
-        o->law != TIPPE_FRICTION_COULOMB_CREEP)
+        o->law != TIPPE_FRICTION_COULOMB_CREEP && o->law != TIPPE_FRICTION_PATCH)
         return tippe_error_set(err, TIPPE_EINPUT, "unknown friction law %d", (int)o->law);
+    if (!(o->patch_radius_m >= 0 && o->patch_radius_m <= 1e-2) ||
+        !(o->patch_E_star_pa >= 0 && isfinite(o->patch_E_star_pa)))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "patch radius %g m must be in [0, 0.01] and E* %g Pa >= 0",
+                               o->patch_radius_m, o->patch_E_star_pa);
     if (!(o->mu_c >= 0 && o->mu_c <= 10))
         return tippe_error_set(err, TIPPE_EINPUT,
                                "Coulomb friction coefficient mu_c = %g must be in [0, 10]",
@@ -116,6 +121,8 @@ static void model_of(const tippe_top *top, const tippe_launch_options *o, tippe_
     m->law = o->law;
     m->mu_c = o->mu_c;
     m->slip_scale_m_s = o->slip_scale_m_s;
+    m->patch_radius_m = o->patch_radius_m;
+    m->patch_E_star_pa = o->patch_E_star_pa;
 }
 
 /* The steady precession (theta_dot = 0 at launch, eq 3.15 with Rn = m g) for
