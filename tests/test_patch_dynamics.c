@@ -46,13 +46,14 @@ static void test_energy(void)
 
 /* Radius -> 0: the patch law tends to the regularised point law (coulomb-creep) with the
  * same v_s; at a = 0 it is that law exactly (tippe_contact_patch_friction's limit), so the
- * run matches to rounding. Cohen's launch, theta at 0.5 s. */
+ * run matches to rounding with the same stepper. Cohen's launch, theta at 0.5 s. */
 static void test_point_limit(void)
 {
     tippe_dynamics_model cr = friction_model(cohen_ball(0.005), 0.0,
                                              TIPPE_FRICTION_COULOMB_CREEP, 0.3, 0.0);
     tippe_dynamics_initial ic = {0.1, 0, 0, 100, 0, 0};
-    tippe_dynamics_options o = run_options(0.5, NULL, NULL, 0.0);
+    /* the patch law's stepper (the presets' rk8pd becomes msbdf under it) for both */
+    tippe_dynamics_options o = run_options(0.5, NULL, "msbdf", 0.0);
     o.run_to_t_end = 1;
     tippe_dynamics_result rc;
     CHECK(run_with(&cr, &ic, o, &rc) == TIPPE_OK, "creep run");
@@ -66,8 +67,10 @@ static void test_point_limit(void)
         printf("  point limit: a = %g m: |theta - theta_creep| at 0.5 s = %.3g rad\n", as[i], d);
         /* a = 0: the same law to rounding; a > 0: the drilling torque mu N a m0 is
          * linear in a, and so is the departure (measured 200-530 rad/m) */
+        /* a = 0: the same forces up to the order of the products (rk8pd: 2e-16 rad);
+         * msbdf's step control turns that rounding into its tolerance (2.9e-7 rad) */
         if (i == 0)
-            CHECK(d < 1e-9, "a = 0 differs from the creep law by %g rad", d);
+            CHECK(d < 1e-5, "a = 0 differs from the creep law by %g rad", d);
         else
             CHECK(d < 1e3 * as[i] && d > prev, "a = %g m: departure %g rad (previous %g)",
                   as[i], d, prev);

@@ -261,7 +261,8 @@ typedef enum {
     TIPPE_DECIDED_OBSERVED      /* patch friction: NOT proved. The drilling torque changes
                                    Jellett's J, on which every proof rests, so the run goes
                                    to t_end and the verdict is the state observed there
-                                   (no_tip below pi/2, tip above); end_state_proved 0 and
+                                   (no_tip within 0.25 rad of theta = 0, tip within 0.25
+                                   rad of pi, else hang); end_state_proved 0 and
                                    unproved_reason says why */
 } tippe_decision;
 
@@ -819,6 +820,23 @@ double tippe_contact_patch_load(tippe_contact_patch_pressure p, double mu_N, dou
  * default: arm = 0 gives no torque. Returns the dissipation -M_roll.w_roll >= 0 (W). */
 double tippe_contact_rolling_resistance(double N, double arm, double w_s, const double w_roll[2],
                                 double M_roll[2]);
+
+/* ---- table surfaces and the patch of a design ------------------------------ */
+
+/* The table surfaces a top is spun on (docs/contact-patch.md, "Materials"): "glass"
+ * (soda-lime float, E 72 GPa, nu 0.23, Pilkington ATS-129), "laminate" (HPL, 9 GPa,
+ * 0.3, makers' EN ISO 178 flexural modulus), "wood" (hard maple across the grain,
+ * 1.0 GPa, 0.4), "steel" (210 GPa, 0.30, EN 1993-1-1). 0 with E (Pa) and nu, or -1 for
+ * an unknown name. */
+int tippe_contact_table_surface(const char *name, double *E_pa, double *nu);
+#define TIPPE_CONTACT_TABLES "glass, laminate, wood or steel"
+#define TIPPE_CONTACT_DEFAULT_TABLE "laminate"
+
+/* The contact modulus E* of a design's ball (the materials table's E_GPa and nu of its
+ * sphere's material) on a table surface (NULL: TIPPE_CONTACT_DEFAULT_TABLE), for the
+ * Hertz patch at m g. TIPPE_EINPUT naming what is missing (then give the radius). */
+int tippe_launch_patch_modulus(const tippe_design *d, const char *table, double *E_star_pa,
+                               tippe_error *err);
 
 /* The lever arm of elastic hysteresis for a sphere: arm = (3/16) alpha a, alpha the
  * fraction of the elastic work lost per cycle (Johnson 1985, section 9.2, after Tabor

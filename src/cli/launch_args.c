@@ -59,9 +59,13 @@ static int check_words(const char *verb, const tippe_cli_launch_args *l)
     for (int i = 0; i < l->over.n; i++) {
         const char *it = l->over.item[i];
         if (!strncmp(it, "friction.law=", 13) && tippe_friction_law_parse(it + 13) < 0)
-            return tippe_cli_usage_error(verb, "--friction '%s': expected viscous, coulomb or "
-                                               "coulomb-creep",
+            return tippe_cli_usage_error(verb, "--friction '%s': expected viscous, coulomb, "
+                                               "coulomb-creep or patch",
                                          it + 13);
+        double E, nu;
+        if (!strncmp(it, "friction.table=", 15) && tippe_contact_table_surface(it + 15, &E, &nu))
+            return tippe_cli_usage_error(verb, "--table '%s': expected " TIPPE_CONTACT_TABLES,
+                                         it + 15);
         if (!strncmp(it, "accuracy=", 9) && tippe_dynamics_accuracy_preset(it + 9, &acc, NULL))
             return tippe_cli_usage_error(verb, "--accuracy '%s': expected fast, balanced or "
                                                "precise",

@@ -80,7 +80,7 @@ static void check_theory(const tippe_scenario *sc, const tippe_dynamics_result *
     }
     tc->ok = 1;
     if (r->verdict == TIPPE_VERDICT_LOST_CONTACT || r->verdict == TIPPE_VERDICT_UNDECIDED ||
-        r->verdict == TIPPE_VERDICT_BOUNDED) {
+        r->verdict == TIPPE_VERDICT_BOUNDED || r->how == TIPPE_DECIDED_OBSERVED) {
         tc->agrees = -1;
         return;
     }
@@ -177,7 +177,10 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
     }
     printf("accuracy  %s rtol %g (%s): Jellett drift %.2g, energy balance error %.2g, "
            "%ld steps (%ld rejected), %ld RHS evaluations, %.3g s\n",
-           sc->accuracy.stepper, sc->accuracy.rtol, sc->accuracy_name, r->jellett_rel_drift,
+           sc->model.law == TIPPE_FRICTION_PATCH && !strcmp(sc->accuracy.stepper, "rk8pd")
+               ? "msbdf (the patch law's stiff stepper)"
+               : sc->accuracy.stepper,
+           sc->accuracy.rtol, sc->accuracy_name, r->jellett_rel_drift,
            r->energy_rel_error, r->steps, r->rejected_steps, r->rhs_evals, elapsed_s);
 }
 

@@ -311,7 +311,16 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
     rs->sys = (gsl_odeiv2_system){tippe_dynamics_rhs, tippe_dynamics_jacobian, c->dim, c};
     /* A first step of 1e-4 of the fastest period; the controller grows it. */
     rs->h = 1e-4 * 2.0 * M_PI / omega_scale;
-    rs->drv = gsl_odeiv2_driver_alloc_scaled_new(&rs->sys, tippe_dynamics_stepper_type(opt->accuracy.stepper),
+    /* The patch law turns stiff as the spin about the vertical drains: its small-slip
+     * drag mu_c c1 / (a |omega_n|) relaxes the slip at ~ mu_c g c1 / (a |omega_n|)
+     * (2e4 /s for the M12 on glass at 1 rad/s, up to mu_c g / v_s = 3e5 /s), where rk8pd
+     * crawls at its stability limit (an M12 check: 1.7e8 evaluations for 117 s). So the
+     * presets' rk8pd becomes msbdf (BDF, implicit) under the patch law, at the same
+     * rtol: 2.4e5 evaluations for 120 s (docs/dynamics.md, "Patch friction"). */
+    const char *stepper = opt->accuracy.stepper;
+    if (c->patch && !strcmp(stepper, "rk8pd"))
+        stepper = "msbdf";
+    rs->drv = gsl_odeiv2_driver_alloc_scaled_new(&rs->sys, tippe_dynamics_stepper_type(stepper),
                                                  rs->h, opt->accuracy.rtol, opt->accuracy.rtol,
                                                  1.0, 0.0, c->scale);
     if (!rs->drv)
@@ -686,11 +695,17 @@ static int run_may_stop(const run_state *rs, const tippe_dynamics_result *res)
     return 1;
 }
 
-/* Patch law at t_end: the state there as the verdict, marked not proved. */
+/* Patch law at t_end: the state there as the verdict, marked not proved: no_tip within
+ * this of theta = 0, tip within it of pi, else hang. */
+#define PATCH_POLE_RAD 0.25
 static void run_set_observed(run_state *rs, tippe_dynamics_result *res)
 {
     res->how = TIPPE_DECIDED_OBSERVED;
-    res->verdict = rs->smp.theta < 0.5 * M_PI ? TIPPE_VERDICT_NO_TIP : TIPPE_VERDICT_TIP;
+    /* near a pole: that pole's verdict; in between: hang (the angle reported) */
+    const double th = rs->smp.theta;
+    res->verdict = th < PATCH_POLE_RAD          ? TIPPE_VERDICT_NO_TIP
+                   : th > M_PI - PATCH_POLE_RAD ? TIPPE_VERDICT_TIP
+                                                : TIPPE_VERDICT_HANG;
     res->end_state_proved = 0;
     res->unproved_reason = TIPPE_PATCH_UNPROVED_REASON;
 }

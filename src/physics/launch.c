@@ -205,8 +205,10 @@ static void compare_with_theory(const tippe_top *top, double g, tippe_launch_rec
         if (p.state[i].kind == TIPPE_FINAL_HANG)
             rec->hang_theta_rad = p.state[i].theta_rad;
     }
+    /* theory is for J0, which a drilling patch does not keep: an observed verdict is not
+     * compared */
     if (rec->verdict == TIPPE_VERDICT_LOST_CONTACT || rec->verdict == TIPPE_VERDICT_UNDECIDED ||
-        rec->verdict == TIPPE_VERDICT_BOUNDED)
+        rec->verdict == TIPPE_VERDICT_BOUNDED || rec->how == TIPPE_DECIDED_OBSERVED)
         return;
     rec->agrees = 0;
     for (int i = 0; i < p.n; i++)
@@ -527,4 +529,40 @@ int tippe_launch_trace(const tippe_top *top, const tippe_launch_options *o,
     int rc = tippe_dynamics_run(&m, ic, &opt, &res, err);
     *n_out = c.n;
     return rc;
+}
+
+int tippe_contact_table_surface(const char *name, double *E_pa, double *nu)
+{
+    /* docs/contact-patch.md, "Materials", gives each value's source */
+    static const struct {
+        const char *name;
+        double E_GPa, nu;
+    } tables[] = {{"glass", 72.0, 0.23}, {"laminate", 9.0, 0.3}, {"wood", 1.0, 0.4},
+                  {"steel", 210.0, 0.30}};
+    for (size_t i = 0; i < sizeof tables / sizeof tables[0]; i++)
+        if (name && !strcmp(name, tables[i].name)) {
+            *E_pa = tables[i].E_GPa * 1e9;
+            *nu = tables[i].nu;
+            return 0;
+        }
+    return -1;
+}
+
+int tippe_launch_patch_modulus(const tippe_design *d, const char *table, double *E_star_pa,
+                               tippe_error *err)
+{
+    double Et, nut, Eb = 0.0, nub = 0.0;
+    const char *mat = "";
+    if (!table)
+        table = TIPPE_CONTACT_DEFAULT_TABLE;
+    if (tippe_contact_table_surface(table, &Et, &nut))
+        return tippe_error_set(err, TIPPE_EINPUT, "unknown table '%s' (" TIPPE_CONTACT_TABLES ")",
+                               table);
+    if (!tippe_design_ball_elastic(d, &Eb, &nub, &mat))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "the ball's material '%s' has no E_GPa and nu in the materials "
+                               "table, so the Hertz patch is unknown: give the patch radius "
+                               "(--patch-mm)",
+                               mat[0] ? mat : "(inline density)");
+    return tippe_contact_hertz_modulus(Eb, nub, Et, nut, E_star_pa, err);
 }
