@@ -209,4 +209,20 @@ out=$("$tippe" check "$m12" --z2 15 --mu 0 --t-end 5 --accuracy fast)
 check "check --mu 0: undecided, the steady precession without friction named" \
     bash -c 'grep -q "^verdict    undecided" <<<"$1" && grep -q "without friction this launch" <<<"$1"' _ "$out"
 
+
+# issue 27: the patch law through the hand-launch verbs
+"$tippe" check designs/m12-setscrew.json --z2 10 --friction patch --table glass --t-end 5 \
+    >"$tmp/pc.txt" 2>&1
+check "check --friction patch: not proved" grep -q "observed at t = 5 s, NOT proved" "$tmp/pc.txt"
+check "check --friction patch: msbdf" grep -q "msbdf for the stiff patch law" "$tmp/pc.txt"
+"$tippe" launch designs/m12-setscrew.json --z2 10 -n 2 --seed 1 --friction patch --patch-mm 0.2 \
+    --t-end 3 --json >"$tmp/pl.json" 2>/dev/null
+check "launch --friction patch --json" json_ok "$tmp/pl.json" \
+    'o["distribution"]["friction"]["law"] == "patch" and abs(o["distribution"]["friction"]["patch_mm"] - 0.2) < 1e-12' \
+    || head -c 600 "$tmp/pl.json"
+expect_fail "--table without the patch law" 2 "--table belongs to the patch law" -- \
+    check designs/m12-setscrew.json --z2 10 --table glass
+expect_fail "--table unknown" 2 "--table 'marble': expected glass, laminate, wood or steel" -- \
+    launch designs/m12-setscrew.json --z2 10 -n 2 --friction patch --table marble
+
 finish
