@@ -204,6 +204,51 @@ static void test_validation(void)
            "viscous %ld RHS, %.3f s CPU (flip %.3g s)\n", ep, cp, tp, evv, cv, tv);
 }
 
+/* The extremes (issue 27): spin 1e4 rad/s, mu_c 0 and 10, tops of radius 1 mm and 1 m, each
+ * with a Hertz-sized patch (a = 0.0069 R, the M12's on glass scaled): decided (observed at
+ * t_end) or refused with a clear error, never a crash or a silent NaN. */
+static void test_extremes(void)
+{
+    struct {
+        const char *name;
+        double s, mu_c, spin, t_end;
+    } cases[] = {{"spin 1e4 rad/s", 1.0, 0.3, 1e4, 0.2}, {"mu_c 0", 1.0, 0.0, 94.0, 1.0},
+                 {"mu_c 10", 1.0, 10.0, 94.0, 1.0},      {"radius 1 mm", 0.04, 0.3, 94.0 / 0.04, 0.2},
+                 {"radius 1 m", 40.0, 0.3, 94.0 / sqrt(40.0), 5.0}};
+    for (int i = 0; i < 5; i++) {
+        tippe_dynamics_model md = patch_model(m12_ball(cases[i].s), cases[i].mu_c,
+                                              0.173e-3 * cases[i].s);
+        tippe_dynamics_initial ic = m12_launch(&md, cases[i].spin);
+        tippe_dynamics_result r;
+        tippe_dynamics_options o = run_options(cases[i].t_end, NULL, NULL, 0.0);
+        tippe_error e;
+        clock_t c0 = clock();
+        const int st = tippe_dynamics_run(&md, &ic, &o, &r, &e);
+        const double cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
+        if (st == TIPPE_OK)
+            printf("  extreme %s: %s (%s) at %.3g s, theta %.3g rad, energy balance %.2g, %ld RHS, "
+                   "%.3f s CPU\n", cases[i].name, tippe_verdict_name(r.verdict),
+                   tippe_decision_name(r.how), r.t_verdict, r.last.theta, r.energy_rel_error,
+                   r.rhs_evals, cpu);
+        else
+            printf("  extreme %s: refused (%d): %s\n", cases[i].name, st, e.msg);
+        CHECK(st == TIPPE_OK || (st == TIPPE_ECOMPUTE && strlen(e.msg) > 20),
+              "%s: status %d", cases[i].name, st);
+        if (st == TIPPE_OK) {
+            CHECK(isfinite(r.last.theta) && isfinite(r.last.E), "%s: not finite", cases[i].name);
+            /* mu_c 0: no friction, nothing drills; a steady precession stays one (t_end, as
+             * under the other laws), never an observed verdict */
+            CHECK(cases[i].mu_c > 0 ? r.how == TIPPE_DECIDED_OBSERVED ||
+                                          r.how == TIPPE_DECIDED_LOST_CONTACT ||
+                                          r.how == TIPPE_DECIDED_BUDGET
+                                    : r.how != TIPPE_DECIDED_OBSERVED && !r.unproved_reason,
+                  "%s: decided by %s", cases[i].name, tippe_decision_name(r.how));
+            CHECK(cases[i].mu_c > 0 || r.end_state_proved || r.verdict == TIPPE_VERDICT_BOUNDED,
+                  "%s: a frictionless run keeps its proof", cases[i].name);
+        }
+    }
+}
+
 int main(void)
 {
     test_energy();
@@ -211,5 +256,6 @@ int main(void)
     test_verdict_not_proved();
     test_hertz_radius();
     test_validation();
+    test_extremes();
     return check_summary("test_patch_dynamics");
 }
