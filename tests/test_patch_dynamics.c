@@ -249,6 +249,32 @@ static void test_extremes(void)
     }
 }
 
+/* After the flip (issue 27): drilling drains the spin and the inverted top falls back.
+ * Cohen's sphere on patches of 0.1 mm (Hertz) and 0.2 mm, 60 s: the time it stays above
+ * pi/2 (t_fall, inverted_time_s). */
+static void test_after_flip(void)
+{
+    for (int k = 0; k < 2; k++) {
+        tippe_dynamics_model md = patch_model(cohen_ball(0.005), 0.3, k ? 0.2e-3 : 0.1e-3);
+        tippe_dynamics_initial ic = {0.1, 0, 0, 100, 0, 0};
+        tippe_dynamics_options o = run_options(60.0, NULL, NULL, 0.0);
+        o.run_to_t_end = 1;
+        tippe_dynamics_result r;
+        CHECK(run_with(&md, &ic, o, &r) == TIPPE_OK, "run");
+        printf("  Cohen after the flip, patch %.1f mm: flip %.3f s, back below pi/2 at %.3f s, "
+               "above pi/2 for %.2f s of 60 s; theta %.3f rad, spin %.3g rad/s at 60 s\n",
+               md.patch_radius_m * 1e3, r.t_flip, r.t_fall, r.inverted_time_s, r.last.theta,
+               r.last.spin);
+        CHECK(isfinite(r.t_flip) && r.inverted_time_s > 0 && r.inverted_time_s <= 60 - r.t_flip + 1e-9,
+              "inverted %g s after a flip at %g s", r.inverted_time_s, r.t_flip);
+        if (k == 0)
+            CHECK(isnan(r.t_fall) && fabs(r.inverted_time_s - (60 - r.t_flip)) < 0.05 /* a step */,
+                  "0.1 mm: fell back at %g s", r.t_fall);
+        else
+            CHECK(isfinite(r.t_fall) && r.t_fall > r.t_flip, "0.2 mm: no fall back");
+    }
+}
+
 int main(void)
 {
     test_energy();
@@ -257,5 +283,6 @@ int main(void)
     test_hertz_radius();
     test_validation();
     test_extremes();
+    test_after_flip();
     return check_summary("test_patch_dynamics");
 }

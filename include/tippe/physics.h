@@ -438,6 +438,11 @@ typedef struct {
     double theta_lo_rad, theta_hi_rad, barrier_gap_J, margin_J, Rn_bound_N;
     double t_flip;               /* s, first time theta passed pi/2 upwards (NAN if it did
                                     not), linear between accepted steps */
+    double t_fall;               /* s, first time after t_flip that theta came back below
+                                    pi/2 (NAN if it did not): a patch-law top that drains
+                                    its spin falls back */
+    double inverted_time_s;      /* s, model time spent above pi/2 (between accepted steps
+                                    on the same side, up to the end of the run) */
     tippe_dynamics_sample last;  /* state where integration stopped */
     double J0, E0;               /* at launch */
     double jellett_rel_drift;    /* max |J - J0| / max(|J0|, 1e-6 C W R),

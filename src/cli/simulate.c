@@ -150,6 +150,12 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                r->last.slip_speed);
     if (!isnan(r->t_flip))
         printf("flip      theta passed 90 deg at t = %.6g s (model time)\n", r->t_flip);
+    if (!isnan(r->t_fall))
+        printf("fall      back below 90 deg at t = %.6g s: above 90 deg for %.6g s in all\n",
+               r->t_fall, r->inverted_time_s);
+    else if (!isnan(r->t_flip))
+        printf("inverted  above 90 deg for %.6g s, to t = %.6g s\n", r->inverted_time_s,
+               r->last.t);
     if (sc->model.law == TIPPE_FRICTION_COULOMB)
         printf("contact   stuck %ld time%s and broke loose %ld time%s; rolled without slipping "
                "for %.6g s of the %.6g s integrated\n",

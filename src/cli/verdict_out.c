@@ -102,6 +102,8 @@ void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
     tippe_cli_json_number_or_null(o, "margin_J", r->margin_J);
     tippe_cli_json_number_or_null(o, "Rn_bound_N", r->Rn_bound_N);
     tippe_cli_json_number_or_null(o, "t_flip_s", r->t_flip);
+    tippe_cli_json_number_or_null(o, "t_fall_s", r->t_fall);
+    cJSON_AddNumberToObject(o, "inverted_time_s", r->inverted_time_s);
     cJSON_AddBoolToObject(o, "rolling", r->rolling);
     cJSON_AddBoolToObject(o, "end_state_proved", r->end_state_proved);
     if (r->unproved_reason)

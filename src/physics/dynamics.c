@@ -475,6 +475,12 @@ static void run_monitor(run_state *rs, tippe_dynamics_result *res)
         /* linear in between the steps */
         res->t_flip = rs->t_prev + (rs->t - rs->t_prev) * (0.5 * M_PI - rs->theta_prev) /
                                        (s->theta - rs->theta_prev);
+    else if (!isnan(res->t_flip) && isnan(res->t_fall) && rs->theta_prev > 0.5 * M_PI &&
+             s->theta <= 0.5 * M_PI)
+        res->t_fall = rs->t_prev + (rs->t - rs->t_prev) * (rs->theta_prev - 0.5 * M_PI) /
+                                       (rs->theta_prev - s->theta);
+    if (rs->theta_prev > 0.5 * M_PI && s->theta > 0.5 * M_PI)
+        res->inverted_time_s += rs->t - rs->t_prev;
     rs->theta_prev = s->theta;
 }
 
@@ -718,6 +724,7 @@ static void run_result_init(tippe_dynamics_result *res)
     res->theta_lo_rad = res->theta_hi_rad = NAN;
     res->barrier_gap_J = res->margin_J = res->Rn_bound_N = NAN;
     res->t_flip = NAN;
+    res->t_fall = NAN;
 }
 
 int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_initial *ic,
