@@ -228,7 +228,11 @@ int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
                                    "%g; give --tilt-max %g or more", a->o.tilt_sd_rad,
                                    a->o.tilt_max_rad, 0.5 * a->o.tilt_max_rad,
                                    2 * a->o.tilt_sd_rad);
-    if (!rc && tippe_launch_options_check(&a->o, &e))
+    /* the patch law's Hertz modulus comes with the design (hands_patch), later */
+    tippe_launch_options chk = a->o;
+    if (chk.law == TIPPE_FRICTION_PATCH && !(chk.patch_radius_m > 0))
+        chk.patch_E_star_pa = 1.0;
+    if (!rc && tippe_launch_options_check(&chk, &e))
         rc = tippe_cli_usage_error(a->verb, "%s", e.msg);
     if (!rc && a->threads > 0)
         omp_set_num_threads((int)a->threads);

@@ -75,6 +75,12 @@ int tippe_launch_options_check(const tippe_launch_options *o, tippe_error *err)
         return tippe_error_set(err, TIPPE_EINPUT,
                                "patch radius %g m must be in [0, 0.01] and E* %g Pa >= 0",
                                o->patch_radius_m, o->patch_E_star_pa);
+    /* a design's launches get the radius or Hertz's modulus (tippe_launch_patch_modulus):
+     * neither would silently be the point limit */
+    if (o->law == TIPPE_FRICTION_PATCH && !(o->patch_radius_m > 0) && !(o->patch_E_star_pa > 0))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "the patch law needs the patch radius or the contact modulus "
+                               "E* (Hertz at m g)");
     if (!(o->mu_c >= 0 && o->mu_c <= 10))
         return tippe_error_set(err, TIPPE_EINPUT,
                                "Coulomb friction coefficient mu_c = %g must be in [0, 10]",
