@@ -256,7 +256,12 @@ expect_fail "patch: explicit top, no radius" 2 "friction.patch_mm" "give \"patch
     simulate designs/scenarios/cohen-1977.json --friction patch
 expect_fail "patch: unknown table" 2 "--table 'marble': expected glass, laminate, wood or steel" -- \
     simulate designs/m12-setscrew.json --z2 10 --friction patch --table marble
-expect_fail "patch: --patch-mm needs the patch law" 2 "friction.patch_mm" "belongs to the patch law" -- \
-    simulate designs/m12-setscrew.json --z2 10 --patch-mm 0.2
+expect_fail "patch: --patch-mm is not Coulomb's" 2 "--patch-mm belongs to the patch law, not coulomb" -- \
+    simulate designs/m12-setscrew.json --z2 10 --friction coulomb --patch-mm 0.2
+# a patch radius alone names its law, as --mu-c does Coulomb's
+"$tippe" simulate designs/m12-setscrew.json --z2 10 --patch-mm 0.2 --t-end 1 >"$tmp/patch3.txt" 2>&1
+check "--patch-mm alone selects the patch law" grep -q "friction patch (Coulomb-Contensou) mu_c 0.3 on a patch of radius 0.2 mm" "$tmp/patch3.txt"
+"$tippe" simulate designs/scenarios/cohen-1977.json --patch-mm 0.1 --mu-c 0.4 --t-end 1 >"$tmp/patch4.txt" 2>&1
+check "--patch-mm on a Coulomb scenario keeps its mu" grep -q "patch (Coulomb-Contensou) mu_c 0.4 on a patch of radius 0.1 mm" "$tmp/patch4.txt" || cat "$tmp/patch4.txt"
 
 finish

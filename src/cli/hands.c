@@ -38,11 +38,13 @@ static int model_options(hands_args *a, tippe_cli_opt *t)
         {.name = "patch-mm", .kind = TIPPE_CLI_DOUBLE, .value = &a->patch_mm, .arg = "A",
          .unit = "mm", .min = 1e-6, .max = 10, .def = "Hertz at m g",
          .help = "patch law: the contact patch's radius (default: Hertz's from the\n"
-                 "ball's and the table's E and nu at the static load m g)"},
+                 "ball's and the table's E and nu at the static load m g; given alone,\n"
+                 "it selects --friction patch)"},
         {.name = "table", .kind = TIPPE_CLI_STRING, .value = &a->table, .arg = "SURFACE",
          .def = TIPPE_CONTACT_DEFAULT_TABLE,
          .help = "patch law: the table's surface for the Hertz patch: glass, laminate,\n"
-                 "wood or steel (docs/contact-patch.md)"},
+                 "wood or steel (docs/contact-patch.md; given alone, it selects\n"
+                 "--friction patch)"},
         {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu_c, .arg = "X", .min = 0,
          .max = 10, .def = TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C),
          .help = "Coulomb friction coefficient (given alone, it selects --friction\n"
@@ -163,6 +165,8 @@ static int apply_friction(hands_args *a, const tippe_cli_spec *spec)
         return tippe_cli_usage_error(a->verb, "--mu (s/m, viscous) and --mu-c or --slip-scale "
                                               "(Coulomb) name different laws: give one, or "
                                               "--friction");
+    } else if ((a->patch_mm > 0 || a->table) && !mu_seen) {
+        o->law = TIPPE_FRICTION_PATCH; /* the patch's radius names its law, as --mu-c does */
     } else if (coulomb_seen) {
         o->law = TIPPE_FRICTION_COULOMB;
     } else if (mu_seen) {

@@ -104,6 +104,11 @@ static int check_friction_opts(const char *verb, tippe_cli_spec *spec,
                                      mu_c_seen ? "--mu-c is the Coulomb coefficient"
                                                : "--slip-scale is the Coulomb law's "
                                                  "regularisation");
+    const tippe_cli_opt *pm = tippe_cli_find_opt(spec, "patch-mm");
+    const tippe_cli_opt *tb = tippe_cli_find_opt(spec, "table");
+    if (law && strcmp(law, "patch") != 0 && ((pm && pm->seen) || (tb && tb->seen)))
+        return tippe_cli_usage_error(verb, "--%s belongs to the patch law, not %s",
+                                     pm && pm->seen ? "patch-mm" : "table", law);
     if (law && strcmp(law, "viscous") != 0 && mu_seen)
         return tippe_cli_usage_error(verb, "--mu (s/m) is the viscous coefficient: with the "
                                            "%s law give --mu-c",

@@ -64,6 +64,24 @@ static int friction_before(cJSON *root, const char *field)
         cJSON *f = cJSON_AddObjectToObject(root, "friction");
         return f && cJSON_AddStringToObject(f, "law", "coulomb") ? TIPPE_OK : TIPPE_ECOMPUTE;
     }
+    if ((!strcmp(field, "friction.patch_mm") || !strcmp(field, "friction.table")) &&
+        !(fr && cJSON_IsObject(fr) &&
+          cJSON_IsString(cJSON_GetObjectItemCaseSensitive(fr, "law")) &&
+          !strcmp(cJSON_GetObjectItemCaseSensitive(fr, "law")->valuestring, "patch"))) {
+        /* the patch's radius names its law; a Coulomb block's mu carries over */
+        double mu_c = TIPPE_LAUNCH_DEFAULT_MU_C;
+        const cJSON *old = fr && cJSON_IsObject(fr) && !viscous_block(fr)
+                               ? cJSON_GetObjectItemCaseSensitive(fr, "mu")
+                               : NULL;
+        if (cJSON_IsNumber(old))
+            mu_c = old->valuedouble;
+        if (fr || mu)
+            cJSON_DeleteItemFromObjectCaseSensitive(root, fr ? "friction" : "mu");
+        cJSON *f = cJSON_AddObjectToObject(root, "friction");
+        return f && cJSON_AddStringToObject(f, "law", "patch") && cJSON_AddNumberToObject(f, "mu", mu_c)
+                   ? TIPPE_OK
+                   : TIPPE_ECOMPUTE;
+    }
     if (!mu || cJSON_GetObjectItemCaseSensitive(root, "friction"))
         return TIPPE_OK;
     cJSON *f = cJSON_CreateObject();
