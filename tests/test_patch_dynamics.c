@@ -275,6 +275,39 @@ static void test_after_flip(void)
     }
 }
 
+/* Rolling resistance (off by default; docs/contact-patch.md, section 5): the energy books
+ * with it on, and Cohen's sphere after the flip with the hysteresis arm (3/16) alpha a of
+ * alpha = 0.05 (a glassy polymer, from memory: docs/contact-patch.md). */
+static void test_rolling_resistance(void)
+{
+    tippe_dynamics_model md = patch_model(m12_ball(1.0), 0.3, 2e-4);
+    md.rolling_arm_m = 2e-6;
+    tippe_dynamics_initial ic = m12_launch(&md, 2.0 * M_PI * 20.0);
+    ic.U = 0.05;
+    tippe_dynamics_result r;
+    tippe_dynamics_options o = run_options(3.0, NULL, NULL, 0.0);
+    o.run_to_t_end = 1;
+    CHECK(run_with(&md, &ic, o, &r) == TIPPE_OK, "run");
+    printf("  rolling resistance (arm 2 um): |E + D - E0|/E0 = %.2g, E rose by %.2g J, D %.4g J\n",
+           r.energy_rel_error, r.energy_max_rise, r.last.D);
+    CHECK(r.energy_rel_error < 1e-6, "energy balance %g", r.energy_rel_error);
+    CHECK(r.energy_max_rise < 1e-9 * r.E0, "E rose by %g J", r.energy_max_rise);
+    const double as[] = {0.1e-3, 0.2e-3};
+    for (int k = 0; k < 2; k++) {
+        tippe_dynamics_model co = patch_model(cohen_ball(0.005), 0.3, as[k]);
+        co.rolling_arm_m = tippe_contact_rolling_arm_hysteresis(0.05, as[k]);
+        tippe_dynamics_initial ci = {0.1, 0, 0, 100, 0, 0};
+        tippe_dynamics_options oc = run_options(60.0, NULL, NULL, 0.0);
+        oc.run_to_t_end = 1;
+        CHECK(run_with(&co, &ci, oc, &r) == TIPPE_OK, "Cohen run");
+        printf("  Cohen, patch %.1f mm, rolling arm %.3g um: flip %.3f s, back below pi/2 at %.3f s, "
+               "above pi/2 %.2f s of 60; theta %.3f rad, spin %.3g rad/s at 60 s\n",
+               as[k] * 1e3, co.rolling_arm_m * 1e6, r.t_flip, r.t_fall, r.inverted_time_s,
+               r.last.theta, r.last.spin);
+        CHECK(isfinite(r.t_flip), "Cohen with rolling resistance does not flip");
+    }
+}
+
 int main(void)
 {
     test_energy();
@@ -284,5 +317,6 @@ int main(void)
     test_validation();
     test_extremes();
     test_after_flip();
+    test_rolling_resistance();
     return check_summary("test_patch_dynamics");
 }

@@ -315,6 +315,10 @@ typedef struct {
                                 (tippe_contact_hertz_radius); both 0: a point (a = 0) */
     double patch_E_star_pa;  /* law patch: the contact modulus E* of ball and table, Pa
                                 (tippe_contact_hertz_modulus), or 0 */
+    double rolling_arm_m;    /* law patch: rolling resistance, a couple -Rn arm w_roll /
+                                sqrt(|w_roll|^2 + w_s^2) against the horizontal angular
+                                velocity (tippe_contact_rolling_resistance, w_s 1e-3 rad/s);
+                                m, >= 0; 0 (the default): off */
 } tippe_dynamics_model;
 
 /* The patch radius a model's run uses (m): patch_radius_m if > 0, else Hertz's at

@@ -124,6 +124,14 @@ const char *tippe_cli_friction_text(const tippe_dynamics_model *m, char *buf, si
                  "%g m/s)", m->mu_c, vs);
         break;
     case TIPPE_FRICTION_PATCH:
+        if (m->rolling_arm_m > 0) {
+            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
+                     "(%s), rolling resistance arm %g um, regularised below %g m/s", m->mu_c,
+                     tippe_dynamics_patch_radius(m) * 1e3,
+                     m->patch_radius_m > 0 ? "given" : "Hertz at m g", m->rolling_arm_m * 1e6,
+                     vs);
+            break;
+        }
         if (m->patch_radius_m > 0 || !(m->patch_E_star_pa > 0))
             snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
                      "(Hertz pressure), regularised below %g m/s", m->mu_c,

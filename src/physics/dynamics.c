@@ -45,6 +45,10 @@ static int check_inputs(const tippe_dynamics_model *model, const tippe_dynamics_
             return tippe_error_set(err, TIPPE_EINPUT,
                                    "patch radius %g m must be in [0, R/2 = %g m]",
                                    model->patch_radius_m, 0.5 * t->R);
+        if (!(model->rolling_arm_m >= 0 && model->rolling_arm_m <= 0.1 * t->R))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "rolling resistance arm %g m must be in [0, R/10 = %g m]",
+                                   model->rolling_arm_m, 0.1 * t->R);
         if (!(model->patch_E_star_pa >= 0 && isfinite(model->patch_E_star_pa)))
             return tippe_error_set(err, TIPPE_EINPUT, "contact modulus E* = %g Pa must be >= 0",
                                    model->patch_E_star_pa);
@@ -105,6 +109,7 @@ static void ctx_init(dyn_ctx *c, const tippe_dynamics_model *model, size_t dim)
                  model->law == TIPPE_FRICTION_COULOMB_CREEP || model->law == TIPPE_FRICTION_PATCH;
     c->patch = model->law == TIPPE_FRICTION_PATCH;
     c->patch_a = tippe_dynamics_patch_radius(model);
+    c->roll_arm = c->patch ? model->rolling_arm_m : 0.0;
     c->stick_law = model->law == TIPPE_FRICTION_COULOMB && model->mu_c > 0.0;
     c->mu_c = model->mu_c;
     c->vs = model->slip_scale_m_s > 0.0 ? model->slip_scale_m_s : TIPPE_COULOMB_SLIP_SCALE_M_S;

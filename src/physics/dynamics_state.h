@@ -33,6 +33,7 @@ typedef struct {
     int stick_law;        /* Coulomb with the event-driven stick (rolling) phase */
     int patch;            /* Coulomb-Contensou on a patch of radius patch_a (m) */
     double patch_a;
+    double roll_arm;      /* patch law: rolling resistance lever arm, m (0: off) */
     int stick;            /* current phase: 1 rolling without slipping (V_Q = 0) */
     double mu_c, vs, vs2; /* Coulomb coefficient, its slip scale v_s and v_s^2 */
     double min_stage_stick; /* smallest mu_c Rn - |F| met by a stage since reset (rolling) */

@@ -44,6 +44,7 @@ void tippe_dynamics_friction_json(cJSON *o, const tippe_dynamics_model *m)
         else
             cJSON_AddNumberToObject(f, "E_star_GPa", m->patch_E_star_pa * 1e-9);
         cJSON_AddStringToObject(f, "pressure", "hertz");
+        cJSON_AddNumberToObject(f, "rolling_arm_um", m->rolling_arm_m * 1e6);
     }
 }
 

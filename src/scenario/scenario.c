@@ -21,7 +21,7 @@
 static const char *const top_level_keys[] = {"name", "notes", "top", "g", "mu", "friction",
                                               "initial", "t_end", "accuracy", NULL};
 static const char *const friction_keys[] = {"law", "mu_s_m", "mu", "slip_scale_m_s",
-                                            "patch_mm", "table", NULL};
+                                            "patch_mm", "table", "rolling_arm_um", NULL};
 static const char *const top_explicit_keys[] = {"m", "R", "eps", "A", "C", NULL};
 static const char *const top_design_keys[] = {"design", "z2_mm", "set", NULL};
 static const char *const top_all_keys[] = {"m", "R", "eps", "A", "C", "design", "z2_mm",
@@ -381,12 +381,21 @@ static int read_patch(tippe_json_reader *c, const cJSON *f, tippe_scenario *s)
     tippe_dynamics_model *m = &s->model;
     const cJSON *pm = cJSON_GetObjectItemCaseSensitive(f, "patch_mm");
     const cJSON *tb = cJSON_GetObjectItemCaseSensitive(f, "table");
+    const cJSON *ra = cJSON_GetObjectItemCaseSensitive(f, "rolling_arm_um");
     int rc;
     if (m->law != TIPPE_FRICTION_PATCH) {
-        if (pm || tb)
-            return tippe_json_fail(c, pm ? "friction.patch_mm" : "friction.table",
+        if (pm || tb || ra)
+            return tippe_json_fail(c, pm ? "friction.patch_mm" : tb ? "friction.table"
+                                                                    : "friction.rolling_arm_um",
                                    "belongs to the patch law (\"law\": \"patch\")");
         return TIPPE_OK;
+    }
+    if (ra) {
+        double um = 0.0;
+        if ((rc = tippe_json_number(c, f, "friction", "rolling_arm_um", 1, &um, NULL)) ||
+            (rc = check_range(c, "friction.rolling_arm_um", um, 0, 1000, "um")))
+            return rc;
+        m->rolling_arm_m = um * 1e-6;
     }
     if (pm && tb)
         return tippe_json_fail(c, "friction.patch_mm",
