@@ -225,4 +225,20 @@ check "check --csv is simulate's trajectory of the same launch" cmp -s "$tmp/che
 check "check --csv --json under Coulomb friction: simulate's trajectory, JSON on stdout" \
     bash -c 'cmp -s "$1" "$2" && python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$3"' _ "$tmp/check-c.csv" "$tmp/sim-c.csv" "$tmp/check-c.json"
 rm -f "$tmp"/check* "$tmp"/sim*
+
+# issue 27: the patch law through the hand-launch verbs
+"$tippe" check designs/m12-setscrew.json --z2 10 --friction patch --table glass --t-end 5 \
+    >"$tmp/pc.txt" 2>&1
+check "check --friction patch: not proved" grep -q "observed at t = 5 s, NOT proved" "$tmp/pc.txt"
+check "check --friction patch: msbdf" grep -q "msbdf for the stiff patch law" "$tmp/pc.txt"
+"$tippe" launch designs/m12-setscrew.json --z2 10 -n 2 --seed 1 --friction patch --patch-mm 0.2 \
+    --t-end 3 --json >"$tmp/pl.json" 2>/dev/null
+check "launch --friction patch --json" json_ok "$tmp/pl.json" \
+    'o["distribution"]["friction"]["law"] == "patch" and abs(o["distribution"]["friction"]["patch_mm"] - 0.2) < 1e-12' \
+    || head -c 600 "$tmp/pl.json"
+expect_fail "--table with another law" 2 "--table belongs to the patch law" -- \
+    check designs/m12-setscrew.json --z2 10 --friction coulomb --table glass
+expect_fail "--table unknown" 2 "--table 'marble': expected glass, laminate, wood or steel" -- \
+    launch designs/m12-setscrew.json --z2 10 -n 2 --friction patch --table marble
+
 finish

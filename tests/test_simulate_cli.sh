@@ -214,7 +214,7 @@ expect_fail "mu_c out of range" 2 "friction.mu" "0 .. 10" -- simulate "$tmp/x.js
 mutate "$tmp/x.json" 'del d["mu"]; d["friction"] = {"law": "coulomb", "mu_c": 0.3}'
 expect_fail "unknown friction key" 2 "friction.mu_c" "unknown key" -- simulate "$tmp/x.json"
 # issue 28.8: a bad word is the option's fault, not the file's; the message lists the words
-expect_fail "bad --friction" 2 "--friction 'dry': expected viscous, coulomb or coulomb-creep" -- simulate "$base" --friction dry
+expect_fail "bad --friction" 2 "--friction 'dry': expected viscous, coulomb, coulomb-creep or patch" -- simulate "$base" --friction dry
 expect_fail "--friction COULOMB on a design" 2 "--friction 'COULOMB'" "coulomb-creep" -- \
     simulate designs/m12-setscrew.json --z2 12 --friction COULOMB
 if grep -q "m12-setscrew.json" "$tmp/err"; then bad "--friction COULOMB blames the design file"; else ok; fi
@@ -236,5 +236,32 @@ expect_fail "plot format" 2 ".png, .svg or .pdf" -- simulate "$base" --plot "$tm
 expect_fail "plot directory" 2 "nodir" -- simulate "$base" --plot "$tmp/nodir/p.png"
 expect_fail "csv directory" 2 "nodir" -- simulate "$base" --csv "$tmp/nodir/t.csv"
 [ -e "$tmp/p.txt" ] || [ -e "$tmp/nodir" ] && bad "a failed run left files" || ok
+
+
+# issue 27: the patch law. Its verdicts are observed at t_end, never proved, and say why.
+"$tippe" simulate designs/scenarios/cohen-1977.json --friction patch --patch-mm 0.1 --t-end 3 \
+    >"$tmp/patch.txt" 2>&1
+check "patch: observed, not proved" grep -q "tip (observed, NOT proved)\|hang (observed, NOT proved)" "$tmp/patch.txt"
+check "patch: the reason" grep -q "J changes under drilling friction: not proved" "$tmp/patch.txt"
+check "patch: the flip" grep -q "theta passed 90 deg at t = 1.3" "$tmp/patch.txt"
+"$tippe" simulate designs/scenarios/cohen-1977.json --friction patch --patch-mm 0.1 --t-end 3 \
+    --json >"$tmp/patch.json" 2>/dev/null
+check "patch --json: observed, not proved" json_ok "$tmp/patch.json" \
+    'o["decided_by"] == "observed" and o["end_state_proved"] is False and o["unproved_reason"].startswith("J changes")' \
+    || python3 -c "import json,sys; o=json.load(open(sys.argv[1])); print(list(o), o.get('verdict'))" "$tmp/patch.json"
+"$tippe" simulate designs/m12-setscrew.json --z2 10 --friction patch --table glass --t-end 2 \
+    >"$tmp/patch2.txt" 2>&1
+check "patch: Hertz on glass from the ball's material" grep -q "E\* 2.72 GPa" "$tmp/patch2.txt"
+expect_fail "patch: explicit top, no radius" 2 "friction.patch_mm" "give \"patch_mm\"" -- \
+    simulate designs/scenarios/cohen-1977.json --friction patch
+expect_fail "patch: unknown table" 2 "--table 'marble': expected glass, laminate, wood or steel" -- \
+    simulate designs/m12-setscrew.json --z2 10 --friction patch --table marble
+expect_fail "patch: --patch-mm is not Coulomb's" 2 "--patch-mm belongs to the patch law, not coulomb" -- \
+    simulate designs/m12-setscrew.json --z2 10 --friction coulomb --patch-mm 0.2
+# a patch radius alone names its law, as --mu-c does Coulomb's
+"$tippe" simulate designs/m12-setscrew.json --z2 10 --patch-mm 0.2 --t-end 1 >"$tmp/patch3.txt" 2>&1
+check "--patch-mm alone selects the patch law" grep -q "friction patch (Coulomb-Contensou) mu_c 0.3 on a patch of radius 0.2 mm" "$tmp/patch3.txt"
+"$tippe" simulate designs/scenarios/cohen-1977.json --patch-mm 0.1 --mu-c 0.4 --t-end 1 >"$tmp/patch4.txt" 2>&1
+check "--patch-mm on a Coulomb scenario keeps its mu" grep -q "patch (Coulomb-Contensou) mu_c 0.4 on a patch of radius 0.1 mm" "$tmp/patch4.txt" || cat "$tmp/patch4.txt"
 
 finish

@@ -470,6 +470,12 @@ int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_inf
  * inline and for i out of range. */
 int tippe_design_part_printable(const tippe_design *d, int i);
 
+/* The elastic constants of the material the table touches: the first fixed ball or
+ * shell part's (the sphere's surface), from the materials table's E_GPa and nu (Pa and
+ * dimensionless), and its material's name. 1 if the table gives them, else 0. */
+int tippe_design_ball_elastic(const tippe_design *d, double *E_pa, double *nu,
+                              const char **material);
+
 /* d's file loaded again with d's overrides and then extra ones, every field
  * checked but not the layout (overlaps, travel, the sphere's surface): for
  * sensitivities, where a tolerance may move a part a fraction of a mm into

@@ -259,15 +259,21 @@ typedef enum {
                                    that is flat, or whose barrier above its minimum is
                                    within the energy margin (which never shrinks) */
     TIPPE_DECIDED_BUDGET,       /* not decided: the step budget ran out before t_end */
-    TIPPE_DECIDED_ROLLING       /* Coulomb friction: the top rolls without slipping, and
+    TIPPE_DECIDED_ROLLING,      /* Coulomb friction: the top rolls without slipping, and
                                    over one whole period of its nutation (the rolling
                                    sphere is integrable: the motion repeats) the force
                                    that rolling needs stayed inside the friction cone,
                                    so it rolls for ever, theta within the period's range
                                    (no_tip below pi/2, tip above, else bounded) */
+    TIPPE_DECIDED_OBSERVED      /* patch friction: NOT proved. The drilling torque changes
+                                   Jellett's J, on which every proof rests, so the run goes
+                                   to t_end and the verdict is the state observed there
+                                   (no_tip within 0.25 rad of theta = 0, tip within 0.25
+                                   rad of pi, else hang); end_state_proved 0 and
+                                   unproved_reason says why */
 } tippe_decision;
 
-/* "t_end", "trapped", "lost_contact", "flat_well", "budget", "rolling". */
+/* "t_end", "trapped", "lost_contact", "flat_well", "budget", "rolling", "observed". */
 const char *tippe_decision_name(tippe_decision d);
 
 /* The friction law. Zero (viscous) is the paper's, so a model initialised with
@@ -278,13 +284,21 @@ typedef enum {
                                    (Coulomb's |Rf| = mu_c Rn against the slip for
                                    |V_Q| >> v_s); sticking once |V_Q| < 30 v_s and rolling
                                    needs |Rf| <= mu_c Rn, until it needs more */
-    TIPPE_FRICTION_COULOMB_CREEP = 2 /* the regularised sliding law alone, no sticking:
+    TIPPE_FRICTION_COULOMB_CREEP = 2, /* the regularised sliding law alone, no sticking:
                                    below v_s the contact creeps (|Rf| < mu_c Rn) and
                                    dissipates; kept to measure what the stick phase
                                    changes (docs/dynamics.md) */
+    TIPPE_FRICTION_PATCH = 3    /* Coulomb-Contensou (issue 27): Coulomb's law mu_c over a
+                                   circular patch of radius patch_radius_m (Hertz pressure)
+                                   that slides and drills: the force and the drilling torque
+                                   M about e3 of tippe_contact_patch_friction (v_s
+                                   regularises the point v = 0, omega_n = 0). Smooth through
+                                   slip 0 while the patch spins: no stick phase. Radius 0:
+                                   coulomb-creep. Verdicts are observed, not proved
+                                   (TIPPE_DECIDED_OBSERVED) */
 } tippe_friction_law;
 
-/* "viscous", "coulomb", "coulomb-creep"; tippe_friction_law_parse returns -1 for an
+/* "viscous", "coulomb", "coulomb-creep", "patch"; tippe_friction_law_parse returns -1 for an
  * unknown name. */
 const char *tippe_friction_law_name(tippe_friction_law law);
 int tippe_friction_law_parse(const char *name);
@@ -302,7 +316,24 @@ typedef struct {
     double mu_c;             /* Coulomb friction coefficient (dimensionless), >= 0 */
     double slip_scale_m_s;   /* Coulomb's regularisation speed v_s, m/s (0: the default
                                 TIPPE_COULOMB_SLIP_SCALE_M_S) */
+    double patch_radius_m;   /* law patch: the contact patch's radius a, m, >= 0, held
+                                constant through the run; 0 with patch_E_star_pa > 0:
+                                Hertz's radius at the static load m g
+                                (tippe_contact_hertz_radius); both 0: a point (a = 0) */
+    double patch_E_star_pa;  /* law patch: the contact modulus E* of ball and table, Pa
+                                (tippe_contact_hertz_modulus), or 0 */
+    double rolling_arm_m;    /* law patch: rolling resistance, a couple -Rn arm w_roll /
+                                sqrt(|w_roll|^2 + w_s^2) against the horizontal angular
+                                velocity (tippe_contact_rolling_resistance, w_s 1e-3 rad/s);
+                                m, >= 0; 0 (the default): off */
 } tippe_dynamics_model;
+
+/* The patch radius a model's run uses (m): patch_radius_m if > 0, else Hertz's at
+ * N = m g if patch_E_star_pa > 0, else 0. 0 for the other laws. */
+double tippe_dynamics_patch_radius(const tippe_dynamics_model *model);
+
+/* The reason a patch-law verdict is not proved (tippe_dynamics_result.unproved_reason). */
+#define TIPPE_PATCH_UNPROVED_REASON "J changes under drilling friction: not proved"
 
 /* Whether the model's friction is zero (no dissipation at all). */
 int tippe_dynamics_frictionless(const tippe_dynamics_model *model);
@@ -437,6 +468,11 @@ typedef struct {
     double theta_lo_rad, theta_hi_rad, barrier_gap_J, margin_J, Rn_bound_N;
     double t_flip;               /* s, first time theta passed pi/2 upwards (NAN if it did
                                     not), linear between accepted steps */
+    double t_fall;               /* s, first time after t_flip that theta came back below
+                                    pi/2 (NAN if it did not): a patch-law top that drains
+                                    its spin falls back */
+    double inverted_time_s;      /* s, model time spent above pi/2 (between accepted steps
+                                    on the same side, up to the end of the run) */
     tippe_dynamics_sample last;  /* state where integration stopped */
     double J0, E0;               /* at launch */
     double jellett_rel_drift;    /* max |J - J0| / max(|J0|, 1e-6 C W R),
@@ -457,6 +493,9 @@ typedef struct {
     double rolling_time_s;
     int rolling;
     int end_state_proved;
+    /* Why the verdict is not proved where a proof is out of reach (a static string,
+     * TIPPE_PATCH_UNPROVED_REASON under the patch law), NULL otherwise. */
+    const char *unproved_reason;
 } tippe_dynamics_result;
 
 /* Integrates one launch. TIPPE_EINPUT for an invalid model, launch or option,
@@ -512,6 +551,8 @@ typedef struct {
     double mu;                /* s/m, viscous sliding friction (eq 3.12), law viscous */
     double mu_c;              /* Coulomb coefficient, the Coulomb laws */
     double slip_scale_m_s;    /* Coulomb's regularisation speed v_s (0: the default) */
+    double patch_radius_m;    /* law patch: the patch radius, m (0: Hertz from E*) */
+    double patch_E_star_pa;   /* law patch: contact modulus for Hertz at m g, Pa (or 0) */
     double g;                 /* m/s^2 */
     double t_end;             /* s, bound on each launch's simulated time */
     int until_flip;           /* 1: follow a tip to its flip (t_flip_s), 0: stop at the proof */
@@ -814,6 +855,23 @@ double tippe_contact_patch_load(tippe_contact_patch_pressure p, double mu_N, dou
  * default: arm = 0 gives no torque. Returns the dissipation -M_roll.w_roll >= 0 (W). */
 double tippe_contact_rolling_resistance(double N, double arm, double w_s, const double w_roll[2],
                                 double M_roll[2]);
+
+/* ---- table surfaces and the patch of a design ------------------------------ */
+
+/* The table surfaces a top is spun on (docs/contact-patch.md, "Materials"): "glass"
+ * (soda-lime float, E 72 GPa, nu 0.23, Pilkington ATS-129), "laminate" (HPL, 9 GPa,
+ * 0.3, makers' EN ISO 178 flexural modulus), "wood" (hard maple across the grain,
+ * 1.0 GPa, 0.4), "steel" (210 GPa, 0.30, EN 1993-1-1). 0 with E (Pa) and nu, or -1 for
+ * an unknown name. */
+int tippe_contact_table_surface(const char *name, double *E_pa, double *nu);
+#define TIPPE_CONTACT_TABLES "glass, laminate, wood or steel"
+#define TIPPE_CONTACT_DEFAULT_TABLE "laminate"
+
+/* The contact modulus E* of a design's ball (the materials table's E_GPa and nu of its
+ * sphere's material) on a table surface (NULL: TIPPE_CONTACT_DEFAULT_TABLE), for the
+ * Hertz patch at m g. TIPPE_EINPUT naming what is missing (then give the radius). */
+int tippe_launch_patch_modulus(const tippe_design *d, const char *table, double *E_star_pa,
+                               tippe_error *err);
 
 /* The lever arm of elastic hysteresis for a sphere: arm = (3/16) alpha a, alpha the
  * fraction of the elastic work lost per cycle (Johnson 1985, section 9.2, after Tabor

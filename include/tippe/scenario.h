@@ -30,6 +30,10 @@ typedef struct {
      * not apply there: tippe_design_protrusion_at); zero for an explicit top */
     tippe_design_protrusion protrusion;
     tippe_dynamics_model model;
+    /* a design top: its ball's elastic constants (Pa; 0 if the materials table has none)
+     * and material, for the patch law's Hertz radius */
+    double ball_E_pa, ball_nu;
+    char ball_material[64];
     tippe_dynamics_initial initial; /* phi_dot resolved from its rule */
     int phi_dot_rule;               /* TIPPE_PHI_DOT_GIVEN or a tippe_precession_rule */
     double t_end;                   /* s */

@@ -353,6 +353,13 @@ static int verdict_lines(const tippe_film *f, char *l1, char *l2, size_t size)
 {
     const tippe_dynamics_result *r = &f->result;
     const double deg = 180 / M_PI;
+    if (r->how == TIPPE_DECIDED_OBSERVED) {
+        /* the patch law: what the run saw at its end, never a proof */
+        snprintf(l1, size, "observed at t = %.4g s: %s, \xce\xb8 = %.1f\xc2\xb0 (NOT proved)",
+                 r->t_verdict, tippe_verdict_name(r->verdict), r->theta_final_rad * deg);
+        snprintf(l2, size, "%s", r->unproved_reason ? r->unproved_reason : "not proved");
+        return 2;
+    }
     switch (r->verdict) {
     case TIPPE_VERDICT_NO_TIP:
     case TIPPE_VERDICT_TIP:

@@ -236,6 +236,10 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
         fprintf(out, "verdict   bounded, decided (%s) at t = %.6g s: theta stays in "
                 "[%.4g, %.4g] rad (no end state)\n",
                 tippe_decision_name(r->how), r->t_verdict, r->theta_lo_rad, r->theta_hi_rad);
+    else if (r->how == TIPPE_DECIDED_OBSERVED)
+        fprintf(out, "verdict   %s, observed at t = %.6g s (NOT proved): theta %.4g rad; %s\n",
+                tippe_verdict_name(r->verdict), r->t_verdict, r->theta_final_rad,
+                r->unproved_reason ? r->unproved_reason : "not proved");
     else if (r->how == TIPPE_DECIDED_ROLLING)
         fprintf(out, "verdict   %s, decided (rolling) at t = %.6g s: rolls without slipping for "
                 "ever, theta in [%.4g, %.4g] rad\n",

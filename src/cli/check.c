@@ -137,7 +137,12 @@ static void print_verdict_line(const tippe_launch_record *rec)
                "spin %.4g rad/s\n", th, th * deg, rec->spin_final_rad_s);
         break;
     default:
-        if (rec->how == TIPPE_DECIDED_ROLLING)
+        if (rec->how == TIPPE_DECIDED_OBSERVED)
+            printf("\nverdict    %s (observed at t = %.4g s, NOT proved): theta %.4f rad (%.1f "
+                   "deg), spin %.4g rad/s; " TIPPE_PATCH_UNPROVED_REASON "\n",
+                   tippe_verdict_name(rec->verdict), rec->t_s, th, th * deg,
+                   rec->spin_final_rad_s);
+        else if (rec->how == TIPPE_DECIDED_ROLLING)
             printf("\nverdict    %s: rolls without slipping for ever, theta in [%.4f, %.4f] rad "
                    "([%.1f, %.1f] deg)\n",
                    tippe_verdict_name(rec->verdict), rec->theta_lo_rad, rec->theta_hi_rad,
@@ -216,6 +221,7 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
     if (isfinite(rec->t_flip_s))
         printf("flip       theta passed 90 deg at t = %.4g s of model time (%s)\n",
                rec->t_flip_s, a->o.law == TIPPE_FRICTION_VISCOUS ? "viscous friction"
+                              : a->o.law == TIPPE_FRICTION_PATCH ? "patch friction"
                                                                  : "Coulomb friction");
     tippe_theory_class cls;
     tippe_theory_classify(r->top.A / r->top.C, r->top.eps / r->top.R, &cls);
@@ -250,6 +256,10 @@ int tippe_cli_check(int argc, char **argv)
     if ((rc = tippe_design_load(a.design, a.sets.item, a.sets.n, &d, &err)) != 0)
         return tippe_cli_fail(a.verb, &err, rc);
     tippe_cli_design_warnings(a.verb, d);
+    if ((rc = hands_patch(&a, d, &err)) != 0) {
+        tippe_design_free(d);
+        return tippe_cli_fail(a.verb, &err, rc);
+    }
     tippe_sweep_check r;
     if ((rc = tippe_sweep_check_run(d, a.z2_mm, &a.o, a.spin.from, &r, &err)) != 0) {
         tippe_design_free(d);

@@ -334,7 +334,16 @@ typedef struct {
     {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &(L)->over,                         \
      .field = "friction.law", .arg = "LAW",                                                       \
      .help = "friction law: viscous (eq 3.12), coulomb (sliding |F| = mu_c Rn, sticking\n"       \
-             "and rolling) or coulomb-creep (no sticking); design: viscous"},                    \
+             "and rolling), coulomb-creep (no sticking) or patch (Coulomb-Contensou on a\n"     \
+             "spinning contact patch; verdicts observed, not proved); design: viscous"},         \
+    {.name = "patch-mm", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over,                           \
+     .field = "friction.patch_mm", .arg = "A", .unit = "mm", .min = 0, .max = 10,                 \
+     .help = "patch law: the contact patch's radius (friction.patch_mm; default: Hertz's\n"      \
+             "at m g from the ball's material and --table; alone, it selects patch)"},            \
+    {.name = "table", .kind = TIPPE_CLI_STRING, .value = &(L)->over, .field = "friction.table",  \
+     .arg = "SURFACE",                                                                             \
+     .help = "patch law: the table's surface for the Hertz patch (friction.table):\n"           \
+             "glass, laminate, wood or steel; default laminate; alone, it selects patch"},       \
     {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "friction.mu",      \
      .arg = "X", .min = 0, .max = 10,                                                              \
      .help = "Coulomb friction coefficient (friction.mu; given alone on a viscous\nlaw, it selects coulomb; default " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C) ")"}, \

@@ -31,8 +31,20 @@ static int model_options(hands_args *a, tippe_cli_opt *t)
         {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &a->friction, .arg = "LAW",
          .def = "viscous",
          .help = "friction law: viscous (eq 3.12, the paper's), coulomb (sliding\n"
-                 "|F| = mu_c Rn, sticking and rolling without slipping) or coulomb-creep\n"
-                 "(regularised, no sticking); docs/dynamics.md"},
+                 "|F| = mu_c Rn, sticking and rolling without slipping), coulomb-creep\n"
+                 "(regularised, no sticking) or patch (Coulomb-Contensou on a spinning\n"
+                 "contact patch: --patch-mm, or Hertz on --table; verdicts observed, not\n"
+                 "proved); docs/dynamics.md"},
+        {.name = "patch-mm", .kind = TIPPE_CLI_DOUBLE, .value = &a->patch_mm, .arg = "A",
+         .unit = "mm", .min = 1e-6, .max = 10, .def = "Hertz at m g",
+         .help = "patch law: the contact patch's radius (default: Hertz's from the\n"
+                 "ball's and the table's E and nu at the static load m g; given alone,\n"
+                 "it selects --friction patch)"},
+        {.name = "table", .kind = TIPPE_CLI_STRING, .value = &a->table, .arg = "SURFACE",
+         .def = TIPPE_CONTACT_DEFAULT_TABLE,
+         .help = "patch law: the table's surface for the Hertz patch: glass, laminate,\n"
+                 "wood or steel (docs/contact-patch.md; given alone, it selects\n"
+                 "--friction patch)"},
         {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu_c, .arg = "X", .min = 0,
          .max = 10, .def = TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C),
          .help = "Coulomb friction coefficient (given alone, it selects --friction\n"
@@ -145,14 +157,16 @@ static int apply_friction(hands_args *a, const tippe_cli_spec *spec)
         const int law = tippe_friction_law_parse(a->friction);
         if (law < 0)
             return tippe_cli_usage_error(a->verb,
-                                         "--friction '%s': expected viscous, coulomb or "
-                                         "coulomb-creep",
+                                         "--friction '%s': expected viscous, coulomb, "
+                                         "coulomb-creep or patch",
                                          a->friction);
         o->law = (tippe_friction_law)law;
     } else if (mu_seen && coulomb_seen) {
         return tippe_cli_usage_error(a->verb, "--mu (s/m, viscous) and --mu-c or --slip-scale "
                                               "(Coulomb) name different laws: give one, or "
                                               "--friction");
+    } else if ((a->patch_mm > 0 || a->table) && !mu_seen) {
+        o->law = TIPPE_FRICTION_PATCH; /* the patch's radius names its law, as --mu-c does */
     } else if (coulomb_seen) {
         o->law = TIPPE_FRICTION_COULOMB;
     } else if (mu_seen) {
@@ -167,7 +181,26 @@ static int apply_friction(hands_args *a, const tippe_cli_spec *spec)
         return tippe_cli_usage_error(a->verb, "--mu (s/m) is the viscous coefficient: with "
                                               "the %s law give --mu-c",
                                      tippe_friction_law_name(o->law));
+    double E, nu;
+    if (o->law != TIPPE_FRICTION_PATCH && (a->patch_mm > 0 || a->table))
+        return tippe_cli_usage_error(a->verb, "--%s belongs to the patch law: give --friction "
+                                              "patch",
+                                     a->patch_mm > 0 ? "patch-mm" : "table");
+    if (a->table && tippe_contact_table_surface(a->table, &E, &nu))
+        return tippe_cli_usage_error(a->verb, "--table '%s': expected " TIPPE_CONTACT_TABLES,
+                                     a->table);
+    if (a->table && a->patch_mm > 0)
+        return tippe_cli_usage_error(a->verb, "--patch-mm gives the radius, --table derives it: "
+                                              "give one");
+    o->patch_radius_m = a->patch_mm * 1e-3;
     return 0;
+}
+
+int hands_patch(hands_args *a, const tippe_design *d, tippe_error *err)
+{
+    if (a->o.law != TIPPE_FRICTION_PATCH || a->o.patch_radius_m > 0)
+        return TIPPE_OK;
+    return tippe_launch_patch_modulus(d, a->table, &a->o.patch_E_star_pa, err);
 }
 
 int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
@@ -199,7 +232,11 @@ int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
                                    "%g; give --tilt-max %g or more", a->o.tilt_sd_rad,
                                    a->o.tilt_max_rad, 0.5 * a->o.tilt_max_rad,
                                    2 * a->o.tilt_sd_rad);
-    if (!rc && tippe_launch_options_check(&a->o, &e))
+    /* the patch law's Hertz modulus comes with the design (hands_patch), later */
+    tippe_launch_options chk = a->o;
+    if (chk.law == TIPPE_FRICTION_PATCH && !(chk.patch_radius_m > 0))
+        chk.patch_E_star_pa = 1.0;
+    if (!rc && tippe_launch_options_check(&chk, &e))
         rc = tippe_cli_usage_error(a->verb, "%s", e.msg);
     if (!rc && a->threads > 0)
         omp_set_num_threads((int)a->threads);
@@ -266,12 +303,13 @@ void hands_print_distribution(const tippe_launch_options *o, int fixed_spin)
 void hands_print_model(const tippe_launch_options *o)
 {
     tippe_dynamics_model m;
-    char fr[160];
+    char fr[320];
     tippe_launch_friction_model(o, &m);
+    const int bdf = o->law == TIPPE_FRICTION_PATCH && !strcmp(o->accuracy.stepper, "rk8pd");
     printf("model      friction %s, g %g m/s^2, t_end %g s, accuracy %s (%s, rtol %g), verdict "
            "level\n",
            tippe_cli_friction_text(&m, fr, sizeof fr), o->g, o->t_end, o->accuracy_name,
-           o->accuracy.stepper, o->accuracy.rtol);
+           bdf ? "msbdf for the stiff patch law" : o->accuracy.stepper, o->accuracy.rtol);
 }
 
 

@@ -31,6 +31,8 @@ typedef struct {
     long n, threads, seed;
     int json;
     const char *csv, *plot, *accuracy, *stepper, *friction;
+    const char *table;         /* --table (patch law) */
+    double patch_mm;           /* --patch-mm (patch law; 0: Hertz from the materials) */
     tippe_launch_options o;    /* the distributions and the model */
     tippe_cli_sets sets;       /* --set */
 } hands_args;
@@ -45,6 +47,10 @@ typedef struct {
 /* Parses argv for v into a (whose verb, n and spin defaults the caller set):
  * 0, TIPPE_CLI_HELP after --help (printed by rank 0 only), or 2. */
 int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv);
+
+/* Under the patch law without --patch-mm: the Hertz contact modulus of the design's
+ * ball on --table into a->o (tippe_launch_patch_modulus). A library status. */
+int hands_patch(hands_args *a, const tippe_design *d, tippe_error *err);
 
 const char *hands_group_meaning(tippe_group g);
 

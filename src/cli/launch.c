@@ -256,6 +256,8 @@ int tippe_cli_launch(int argc, char **argv)
         rc = tippe_cli_fail(a.verb, &err, rc);
     if (!rc && hands_mpi_rank() == 0)
         tippe_cli_design_warnings(a.verb, d);
+    if (!rc && (rc = hands_patch(&a, d, &err)) != 0)
+        rc = tippe_cli_fail(a.verb, &err, rc);
     if (!rc && (rc = tippe_design_top(d, a.z2_mm, &top, &err)) != 0)
         rc = tippe_cli_fail(a.verb, &err, rc);
     tippe_launch_record *rec = NULL;

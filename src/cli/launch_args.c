@@ -59,9 +59,13 @@ static int check_words(const char *verb, const tippe_cli_launch_args *l)
     for (int i = 0; i < l->over.n; i++) {
         const char *it = l->over.item[i];
         if (!strncmp(it, "friction.law=", 13) && tippe_friction_law_parse(it + 13) < 0)
-            return tippe_cli_usage_error(verb, "--friction '%s': expected viscous, coulomb or "
-                                               "coulomb-creep",
+            return tippe_cli_usage_error(verb, "--friction '%s': expected viscous, coulomb, "
+                                               "coulomb-creep or patch",
                                          it + 13);
+        double E, nu;
+        if (!strncmp(it, "friction.table=", 15) && tippe_contact_table_surface(it + 15, &E, &nu))
+            return tippe_cli_usage_error(verb, "--table '%s': expected " TIPPE_CONTACT_TABLES,
+                                         it + 15);
         if (!strncmp(it, "accuracy=", 9) && tippe_dynamics_accuracy_preset(it + 9, &acc, NULL))
             return tippe_cli_usage_error(verb, "--accuracy '%s': expected fast, balanced or "
                                                "precise",
@@ -100,6 +104,11 @@ static int check_friction_opts(const char *verb, tippe_cli_spec *spec,
                                      mu_c_seen ? "--mu-c is the Coulomb coefficient"
                                                : "--slip-scale is the Coulomb law's "
                                                  "regularisation");
+    const tippe_cli_opt *pm = tippe_cli_find_opt(spec, "patch-mm");
+    const tippe_cli_opt *tb = tippe_cli_find_opt(spec, "table");
+    if (law && strcmp(law, "patch") != 0 && ((pm && pm->seen) || (tb && tb->seen)))
+        return tippe_cli_usage_error(verb, "--%s belongs to the patch law, not %s",
+                                     pm && pm->seen ? "patch-mm" : "table", law);
     if (law && strcmp(law, "viscous") != 0 && mu_seen)
         return tippe_cli_usage_error(verb, "--mu (s/m) is the viscous coefficient: with the "
                                            "%s law give --mu-c",

@@ -344,6 +344,8 @@ int tippe_cli_map(int argc, char **argv)
         rc = tippe_cli_fail(a.verb, &err, rc);
     if (!rc && hands_mpi_rank() == 0)
         tippe_cli_design_warnings(a.verb, d);
+    if (!rc && (rc = hands_patch(&a, d, &err)) != 0)
+        rc = tippe_cli_fail(a.verb, &err, rc);
     if (!rc)
         rc = grid_make(&a, d, &g);
     if (!rc && g.total >= 100000 && hands_mpi_rank() == 0)

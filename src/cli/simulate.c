@@ -54,7 +54,7 @@ static void check_theory(const tippe_scenario *sc, const tippe_dynamics_result *
     }
     tc->ok = 1;
     if (r->verdict == TIPPE_VERDICT_LOST_CONTACT || r->verdict == TIPPE_VERDICT_UNDECIDED ||
-        r->verdict == TIPPE_VERDICT_BOUNDED) {
+        r->verdict == TIPPE_VERDICT_BOUNDED || r->how == TIPPE_DECIDED_OBSERVED) {
         tc->agrees = -1;
         return;
     }
@@ -124,6 +124,12 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                r->last.slip_speed);
     if (!isnan(r->t_flip))
         printf("flip      theta passed 90 deg at t = %.6g s (model time)\n", r->t_flip);
+    if (!isnan(r->t_fall))
+        printf("fall      back below 90 deg at t = %.6g s: above 90 deg for %.6g s in all\n",
+               r->t_fall, r->inverted_time_s);
+    else if (!isnan(r->t_flip))
+        printf("inverted  above 90 deg for %.6g s, to t = %.6g s\n", r->inverted_time_s,
+               r->last.t);
     if (sc->model.law == TIPPE_FRICTION_COULOMB)
         printf("contact   stuck %ld time%s and broke loose %ld time%s; rolled without slipping "
                "for %.6g s of the %.6g s integrated\n",
@@ -151,7 +157,10 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
     }
     printf("accuracy  %s rtol %g (%s): Jellett drift %.2g, energy balance error %.2g, "
            "%ld steps (%ld rejected), %ld RHS evaluations, %.3g s\n",
-           sc->accuracy.stepper, sc->accuracy.rtol, sc->accuracy_name, r->jellett_rel_drift,
+           sc->model.law == TIPPE_FRICTION_PATCH && !strcmp(sc->accuracy.stepper, "rk8pd")
+               ? "msbdf (the patch law's stiff stepper)"
+               : sc->accuracy.stepper,
+           sc->accuracy.rtol, sc->accuracy_name, r->jellett_rel_drift,
            r->energy_rel_error, r->steps, r->rejected_steps, r->rhs_evals, elapsed_s);
 }
 

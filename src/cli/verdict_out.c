@@ -12,6 +12,15 @@
 void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *prefix)
 {
     const double th = r->theta_final_rad;
+    if (r->how == TIPPE_DECIDED_OBSERVED) {
+        printf("%s%s (observed, NOT proved): theta %.6g rad (%.2f deg), spin %.6g rad/s at "
+               "t = %.6g s\n",
+               prefix, tippe_verdict_name(r->verdict), th, th * 180 / M_PI, r->spin_final_rad_s,
+               r->t_verdict);
+        printf("%*s%s\n", (int)strlen(prefix), "",
+               r->unproved_reason ? r->unproved_reason : "not proved");
+        return;
+    }
     if (r->how == TIPPE_DECIDED_ROLLING) {
         printf("%s%s: rolls without slipping for ever (nothing dissipates), theta in [%.6g, "
                "%.6g] rad ([%.2f, %.2f] deg)\n",
@@ -81,8 +90,14 @@ void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
     tippe_cli_json_number_or_null(o, "margin_J", r->margin_J);
     tippe_cli_json_number_or_null(o, "Rn_bound_N", r->Rn_bound_N);
     tippe_cli_json_number_or_null(o, "t_flip_s", r->t_flip);
+    tippe_cli_json_number_or_null(o, "t_fall_s", r->t_fall);
+    cJSON_AddNumberToObject(o, "inverted_time_s", r->inverted_time_s);
     cJSON_AddBoolToObject(o, "rolling", r->rolling);
     cJSON_AddBoolToObject(o, "end_state_proved", r->end_state_proved);
+    if (r->unproved_reason)
+        cJSON_AddStringToObject(o, "unproved_reason", r->unproved_reason);
+    else
+        cJSON_AddNullToObject(o, "unproved_reason");
     cJSON_AddNumberToObject(o, "stick_events", (double)r->stick_events);
     cJSON_AddNumberToObject(o, "slip_events", (double)r->slip_events);
     cJSON_AddNumberToObject(o, "rolling_time_s", r->rolling_time_s);
@@ -95,6 +110,24 @@ const char *tippe_cli_friction_text(const tippe_dynamics_model *m, char *buf, si
     case TIPPE_FRICTION_COULOMB:
         snprintf(buf, size, "Coulomb mu_c %g, sliding and sticking (sliding regularised below "
                  "%g m/s)", m->mu_c, vs);
+        break;
+    case TIPPE_FRICTION_PATCH:
+        if (m->rolling_arm_m > 0) {
+            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
+                     "(%s), rolling resistance arm %g um, regularised below %g m/s", m->mu_c,
+                     tippe_dynamics_patch_radius(m) * 1e3,
+                     m->patch_radius_m > 0 ? "given" : "Hertz at m g", m->rolling_arm_m * 1e6,
+                     vs);
+            break;
+        }
+        if (m->patch_radius_m > 0 || !(m->patch_E_star_pa > 0))
+            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
+                     "(Hertz pressure), regularised below %g m/s", m->mu_c,
+                     m->patch_radius_m * 1e3, vs);
+        else
+            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on Hertz's patch at m g "
+                     "(E* %.3g GPa, Hertz pressure), regularised below %g m/s", m->mu_c,
+                     m->patch_E_star_pa * 1e-9, vs);
         break;
     case TIPPE_FRICTION_COULOMB_CREEP:
         snprintf(buf, size, "Coulomb mu_c %g regularised below %g m/s, no sticking (creep)",

@@ -234,7 +234,7 @@ static int resolve_materials(const tippe_json_reader *c, const char *path, const
             continue;
         snprintf(pth, sizeof pth, "parts[%d].material", i);
         rc = tippe_design_lookup_material(c, table, mat_file, p->material, pth, &p->density_g_cm3,
-                             &p->printable);
+                             &p->printable, &p->E_pa, &p->nu);
     }
     cJSON_Delete(table);
     return rc;

@@ -203,6 +203,22 @@ int tippe_design_part_printable(const tippe_design *d, int i)
     return i >= 0 && i < d->n_parts && d->parts[i].printable;
 }
 
+int tippe_design_ball_elastic(const tippe_design *d, double *E_pa, double *nu,
+                              const char **material)
+{
+    for (int i = 0; i < d->n_parts; i++) {
+        const part *p = &d->parts[i];
+        if (p->is_void || p->moving || (p->shape != SHAPE_BALL && p->shape != SHAPE_SHELL))
+            continue;
+        *material = p->material;
+        *E_pa = p->E_pa;
+        *nu = p->nu;
+        return p->E_pa > 0.0;
+    }
+    *material = "";
+    return 0;
+}
+
 /* ------------------------------------------------------ numeric fields */
 
 /* The length fields a part of this shape has, and where each lives. */

@@ -80,7 +80,7 @@ const char *const tippe_design_print_keys[] = {
 /* The print settings that are text (--set writes them as strings). */
 const char *const tippe_design_print_string_keys[] = {"notes", "model", "pattern", "gcode", NULL};
 static const char *const material_keys[] = {"density_g_cm3", "source", "printable", "notes",
-                                             NULL};
+                                             "E_GPa", "nu", "elastic_source", NULL};
 
 /* ----------------------------------------------------------------- parts */
 
@@ -444,7 +444,8 @@ int tippe_design_parse_part(const tippe_json_reader *c, const cJSON *obj, int in
 /* --------------------------------------------------------- materials table */
 
 int tippe_design_lookup_material(const tippe_json_reader *c, const cJSON *table, const char *mat_file,
-                           const char *name, const char *path, double *density, int *printable)
+                           const char *name, const char *path, double *density, int *printable,
+                           double *E_pa, double *nu)
 {
     const cJSON *m = cJSON_GetObjectItemCaseSensitive(table, name);
     if (!m) {
@@ -459,6 +460,10 @@ int tippe_design_lookup_material(const tippe_json_reader *c, const cJSON *table,
     }
     *density = cJSON_GetObjectItemCaseSensitive(m, "density_g_cm3")->valuedouble;
     *printable = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(m, "printable"));
+    const cJSON *E = cJSON_GetObjectItemCaseSensitive(m, "E_GPa");
+    const cJSON *n = cJSON_GetObjectItemCaseSensitive(m, "nu");
+    *E_pa = cJSON_IsNumber(E) ? E->valuedouble * 1e9 : 0.0;
+    *nu = cJSON_IsNumber(n) ? n->valuedouble : 0.0;
     return TIPPE_OK;
 }
 
@@ -494,6 +499,32 @@ int tippe_design_load_materials(const char *mat_file, cJSON **out, tippe_error *
             (rc = tippe_json_bool(mc, m, m->string, "printable", &printable, NULL)) ||
             (rc = tippe_json_text(mc, m, m->string, "notes", 0, NULL, 0, NULL)))
             goto done;
+        /* the elastic constants (issue 27, the Hertz patch): both with their source, or
+         * none */
+        {
+            double E = 0, nu = 0;
+            char ep[256];
+            const int hasE = cJSON_GetObjectItemCaseSensitive(m, "E_GPa") != NULL;
+            const int hasnu = cJSON_GetObjectItemCaseSensitive(m, "nu") != NULL;
+            const int hassrc = cJSON_GetObjectItemCaseSensitive(m, "elastic_source") != NULL;
+            if ((rc = tippe_json_number(mc, m, m->string, "E_GPa", 0, &E, NULL)) ||
+                (rc = tippe_json_number(mc, m, m->string, "nu", 0, &nu, NULL)) ||
+                (rc = tippe_json_string(mc, m, m->string, "elastic_source", 0, NULL, 0, NULL)))
+                goto done;
+            if (hasE != hasnu || hasE != hassrc) {
+                tippe_json_path(ep, sizeof ep, m->string, hasE ? "nu" : "E_GPa");
+                rc = tippe_json_fail(mc, ep, "E_GPa, nu and elastic_source come together "
+                                            "(the Hertz patch needs both constants and their "
+                                            "source)");
+                goto done;
+            }
+            if (hasE && (!(E > 0 && E <= 1e4) || !(nu > -1 && nu <= 0.5))) {
+                tippe_json_path(ep, sizeof ep, m->string, !(E > 0 && E <= 1e4) ? "E_GPa" : "nu");
+                rc = tippe_json_fail(mc, ep, "E_GPa must be in (0, 1e4] and nu in (-1, 0.5], got "
+                                            "%g and %g", E, nu);
+                goto done;
+            }
+        }
         char p[256];
         tippe_json_path(p, sizeof p, m->string, "density_g_cm3");
         if (dens <= 0) {

@@ -66,6 +66,7 @@ typedef struct {
     double density_g_cm3;   /* voids: the parent's */
     int is_void, moving, may_protrude;
     int printable;          /* the material's "printable" flag (voids: the parent's) */
+    double E_pa, nu;        /* the material's elastic constants (E 0: not in the table) */
     int has_height, has_radius;
     int parent;             /* voids: index of the part cut from; else -1 */
     int clip;               /* CLIP_NONE, CLIP_SPHERE, CLIP_CAVITY, CLIP_SHELL */
@@ -173,7 +174,7 @@ int tippe_design_parse_part(const tippe_json_reader *c, const cJSON *obj, int in
 int tippe_design_load_materials(const char *mat_file, cJSON **out, tippe_error *err);
 int tippe_design_lookup_material(const tippe_json_reader *c, const cJSON *table,
                                  const char *mat_file, const char *name, const char *path,
-                                 double *density, int *printable);
+                                 double *density, int *printable, double *E_pa, double *nu);
 
 /* design_overrides.c: --set overrides. */
 int tippe_design_apply_override(tippe_json_reader *c, cJSON *root, const char *text);

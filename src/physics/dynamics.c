@@ -36,8 +36,29 @@ static int check_inputs(const tippe_dynamics_model *model, const tippe_dynamics_
     if (!(model->mu >= 0 && isfinite(model->mu)))
         return tippe_error_set(err, TIPPE_EINPUT, "mu = %g s/m must be >= 0", model->mu);
     if (model->law != TIPPE_FRICTION_VISCOUS && model->law != TIPPE_FRICTION_COULOMB &&
-        model->law != TIPPE_FRICTION_COULOMB_CREEP)
+        model->law != TIPPE_FRICTION_COULOMB_CREEP && model->law != TIPPE_FRICTION_PATCH)
         return tippe_error_set(err, TIPPE_EINPUT, "unknown friction law %d", (int)model->law);
+    if (model->law == TIPPE_FRICTION_PATCH) {
+        /* a patch larger than the sphere is no patch: a < R/2 keeps Hertz's small-contact
+         * assumption within reach, and refuses a nonsensical input at once */
+        if (!(model->patch_radius_m >= 0 && model->patch_radius_m <= 0.5 * t->R))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "patch radius %g m must be in [0, R/2 = %g m]",
+                                   model->patch_radius_m, 0.5 * t->R);
+        if (!(model->rolling_arm_m >= 0 && model->rolling_arm_m <= 0.1 * t->R))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "rolling resistance arm %g m must be in [0, R/10 = %g m]",
+                                   model->rolling_arm_m, 0.1 * t->R);
+        if (!(model->patch_E_star_pa >= 0 && isfinite(model->patch_E_star_pa)))
+            return tippe_error_set(err, TIPPE_EINPUT, "contact modulus E* = %g Pa must be >= 0",
+                                   model->patch_E_star_pa);
+        if (!(tippe_dynamics_patch_radius(model) <= 0.5 * t->R))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "Hertz patch radius %g m (E* %g Pa, load m g) exceeds R/2 = "
+                                   "%g m: the table or ball is too soft for the model",
+                                   tippe_dynamics_patch_radius(model), model->patch_E_star_pa,
+                                   0.5 * t->R);
+    }
     if (model->law != TIPPE_FRICTION_VISCOUS) {
         if (!(model->mu_c >= 0 && model->mu_c <= 1e6))
             return tippe_error_set(err, TIPPE_EINPUT,
@@ -85,7 +106,10 @@ static void ctx_init(dyn_ctx *c, const tippe_dynamics_model *model, size_t dim)
     c->g = model->g;
     c->mu = model->mu;
     c->coulomb = model->law == TIPPE_FRICTION_COULOMB ||
-                 model->law == TIPPE_FRICTION_COULOMB_CREEP;
+                 model->law == TIPPE_FRICTION_COULOMB_CREEP || model->law == TIPPE_FRICTION_PATCH;
+    c->patch = model->law == TIPPE_FRICTION_PATCH;
+    c->patch_a = tippe_dynamics_patch_radius(model);
+    c->roll_arm = c->patch ? model->rolling_arm_m : 0.0;
     c->stick_law = model->law == TIPPE_FRICTION_COULOMB && model->mu_c > 0.0;
     c->mu_c = model->mu_c;
     c->vs = model->slip_scale_m_s > 0.0 ? model->slip_scale_m_s : TIPPE_COULOMB_SLIP_SCALE_M_S;
@@ -292,7 +316,16 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
     rs->sys = (gsl_odeiv2_system){tippe_dynamics_rhs, tippe_dynamics_jacobian, c->dim, c};
     /* A first step of 1e-4 of the fastest period; the controller grows it. */
     rs->h = 1e-4 * 2.0 * M_PI / omega_scale;
-    rs->drv = gsl_odeiv2_driver_alloc_scaled_new(&rs->sys, tippe_dynamics_stepper_type(opt->accuracy.stepper),
+    /* The patch law turns stiff as the spin about the vertical drains: its small-slip
+     * drag mu_c c1 / (a |omega_n|) relaxes the slip at ~ mu_c g c1 / (a |omega_n|)
+     * (2e4 /s for the M12 on glass at 1 rad/s, up to mu_c g / v_s = 3e5 /s), where rk8pd
+     * crawls at its stability limit (an M12 check: 1.7e8 evaluations for 117 s). So the
+     * presets' rk8pd becomes msbdf (BDF, implicit) under the patch law, at the same
+     * rtol: 2.4e5 evaluations for 120 s (docs/dynamics.md, "Patch friction"). */
+    const char *stepper = opt->accuracy.stepper;
+    if (c->patch && !strcmp(stepper, "rk8pd"))
+        stepper = "msbdf";
+    rs->drv = gsl_odeiv2_driver_alloc_scaled_new(&rs->sys, tippe_dynamics_stepper_type(stepper),
                                                  rs->h, opt->accuracy.rtol, opt->accuracy.rtol,
                                                  1.0, 0.0, c->scale);
     if (!rs->drv)
@@ -388,6 +421,13 @@ static void run_set_trapped(run_state *rs, const tippe_dynamics_verdict_trap *tr
  * well that can never be resolved (undecided, flat_well). */
 static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
 {
+    /* Patch friction drills: its couple M e3 changes Jellett's J = -L.q at the rate
+     * dJ/dt = -M e3.q = M (R - eps cos theta), nonzero while the patch spins (the force's
+     * part stays 0 as for a point contact), and every proof below (the wells of V(theta; J0), the contact
+     * bound on the Jellett line) assumes J = J0. No proof, then: the run goes on to
+     * t_end and reports what it observes there (run_set_observed). */
+    if (rs->c.patch && rs->vc.dissipative)
+        return 0;
     const double margin = tippe_dynamics_verdict_margin(&rs->vc, rs->opt->margin_factor, rs->energy_abs_err,
                                          rs->J_abs_err, res->E0);
     const tippe_dynamics_sample *s = &rs->smp;
@@ -443,6 +483,12 @@ static void run_monitor(run_state *rs, tippe_dynamics_result *res)
         /* linear in between the steps */
         res->t_flip = rs->t_prev + (rs->t - rs->t_prev) * (0.5 * M_PI - rs->theta_prev) /
                                        (s->theta - rs->theta_prev);
+    else if (!isnan(res->t_flip) && isnan(res->t_fall) && rs->theta_prev > 0.5 * M_PI &&
+             s->theta <= 0.5 * M_PI)
+        res->t_fall = rs->t_prev + (rs->t - rs->t_prev) * (rs->theta_prev - 0.5 * M_PI) /
+                                       (rs->theta_prev - s->theta);
+    if (rs->theta_prev > 0.5 * M_PI && s->theta > 0.5 * M_PI)
+        res->inverted_time_s += rs->t - rs->t_prev;
     rs->theta_prev = s->theta;
 }
 
@@ -665,6 +711,21 @@ static int run_may_stop(const run_state *rs, const tippe_dynamics_result *res)
     return 1;
 }
 
+/* Patch law at t_end: the state there as the verdict, marked not proved: no_tip within
+ * this of theta = 0, tip within it of pi, else hang. */
+#define PATCH_POLE_RAD 0.25
+static void run_set_observed(run_state *rs, tippe_dynamics_result *res)
+{
+    res->how = TIPPE_DECIDED_OBSERVED;
+    /* near a pole: that pole's verdict; in between: hang (the angle reported) */
+    const double th = rs->smp.theta;
+    res->verdict = th < PATCH_POLE_RAD          ? TIPPE_VERDICT_NO_TIP
+                   : th > M_PI - PATCH_POLE_RAD ? TIPPE_VERDICT_TIP
+                                                : TIPPE_VERDICT_HANG;
+    res->end_state_proved = 0;
+    res->unproved_reason = TIPPE_PATCH_UNPROVED_REASON;
+}
+
 static void run_result_init(tippe_dynamics_result *res)
 {
     memset(res, 0, sizeof *res);
@@ -673,6 +734,7 @@ static void run_result_init(tippe_dynamics_result *res)
     res->theta_lo_rad = res->theta_hi_rad = NAN;
     res->barrier_gap_J = res->margin_J = res->Rn_bound_N = NAN;
     res->t_flip = NAN;
+    res->t_fall = NAN;
 }
 
 int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_initial *ic,
@@ -691,7 +753,9 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
     }
     rs.i_sample = 1;
     run_fill_sample(&rs);
-    res->end_state_proved = !rs.c.stick_law;
+    res->end_state_proved = !rs.c.stick_law && !(rs.c.patch && rs.vc.dissipative);
+    if (rs.c.patch && rs.vc.dissipative)
+        res->unproved_reason = TIPPE_PATCH_UNPROVED_REASON;
     run_try_stick(&rs, res);
     rs.theta_prev = rs.theta_launch = rs.smp.theta;
     res->min_Rn = rs.ct.Rn;
@@ -738,6 +802,8 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
         res->spin_final_rad_s = rs.smp.spin;
         res->phi_dot_final_rad_s = rs.smp.phi_dot;
         res->rolling = rs.c.stick;
+        if (res->how == TIPPE_DECIDED_T_END && rs.c.patch && rs.vc.dissipative && !status)
+            run_set_observed(&rs, res);
     }
     res->jellett_rel_drift = rs.J_abs_err / rs.J_scale;
     res->energy_rel_error = rs.energy_abs_err / res->E0;

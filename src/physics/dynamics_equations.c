@@ -11,6 +11,9 @@
 #include <stdio.h>
 #include <string.h>
 
+/* The rolling resistance's regularisation speed, rad/s: the sign law smoothed below it. */
+#define ROLL_W_S 1e-3
+
 /* The angular acceleration that a torque tau about the centre of mass adds:
  * A omega' = tau - (1 - A/C)(tau.k) k (the lab form of eq 3.13, L = A omega + (C - A) n k). */
 void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3])
@@ -115,6 +118,7 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
         o->F[1] = Fc[1];
         o->den = 1.0;
         o->mu_eff = 0.0;
+        o->M = 0.0;
         /* exact rolling dissipates nothing: any change of E while rolling is
          * integration error, and shows in the energy balance |E + D - E0| */
         o->power = 0.0;
@@ -126,9 +130,38 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
      * mu_c / sqrt(|V_Q|^2 + v_s^2), so |F| -> mu_c Rn for |V_Q| >> v_s. */
     o->mu_eff = c->coulomb ? c->mu_c / sqrt(slip2 + c->vs2) : c->mu;
     /* F = Rn (e3 - mu_eff V_Q): force and torque are linear in Rn. */
-    const double f[3] = {-o->mu_eff * o->VQ[0], -o->mu_eff * o->VQ[1], 1.0};
+    double f[3] = {-o->mu_eff * o->VQ[0], -o->mu_eff * o->VQ[1], 1.0};
+    double M1 = 0.0, diss1 = 0.0; /* patch law: drilling torque and power per unit Rn */
+    double Mroll[2] = {0.0, 0.0}; /* patch law: rolling resistance couple per unit Rn */
+    if (c->patch) {
+        /* Coulomb-Contensou on the patch (docs/contact-patch.md): with the radius held
+         * constant the force and the drilling torque are mu_c Rn times functions of
+         * (V_Q, omega_n) alone, so linear in Rn as above. omega_n = omega.e3, the
+         * table being at rest. */
+        tippe_contact_patch_wrench pw;
+        tippe_contact_patch_friction(TIPPE_CONTACT_PATCH_HERTZ, c->mu_c, c->patch_a, c->vs, o->VQ,
+                                     w[2], &pw);
+        f[0] = pw.F[0];
+        f[1] = pw.F[1];
+        M1 = pw.M;
+        diss1 = pw.dissipation;
+        if (c->roll_arm > 0.0) {
+            /* rolling resistance: a couple against the horizontal angular velocity
+             * (docs/contact-patch.md, section 5), per unit Rn */
+            double Mr[2];
+            diss1 += tippe_contact_rolling_resistance(1.0, c->roll_arm, ROLL_W_S, w, Mr);
+            Mroll[0] = Mr[0];
+            Mroll[1] = Mr[1];
+        }
+        o->mu_eff = NAN; /* not a viscous multiple of V_Q */
+    }
     double tau[3];
     cross3(o->q, f, tau); /* torque per unit Rn about the CoM (eq 3.13) */
+    tau[2] += M1;         /* the drilling couple about e3 (patch law) */
+    if (c->roll_arm > 0.0) {
+        tau[0] += Mroll[0];
+        tau[1] += Mroll[1];
+    }
     const double tk = dot3(tau, k);
     /* A omega' = tau - (C - A)(n' k + n omega x k) with C n' = tau.k (eq 3.13 in
      * the lab frame): omega' = Rn a1 + a0. */
@@ -151,6 +184,14 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
     o->Rn = c->m * (c->g - c->eps * (a0k[2] + wwk[2])) / o->den;
     for (int i = 0; i < 3; i++)
         o->wdot[i] = o->Rn * a1[i] + a0[i];
+    if (c->patch) {
+        o->F[0] = o->Rn * f[0];
+        o->F[1] = o->Rn * f[1];
+        o->M = o->Rn * M1;
+        o->power = o->Rn * diss1; /* -(F.V_Q + M omega_n) >= 0 */
+        return 0;
+    }
+    o->M = 0.0;
     o->F[0] = -o->mu_eff * o->Rn * o->VQ[0];
     o->F[1] = -o->mu_eff * o->Rn * o->VQ[1];
     o->power = o->mu_eff * o->Rn * slip2; /* eq 4.1; Coulomb: mu_c Rn |V_Q| for |V_Q| >> v_s */

@@ -61,6 +61,7 @@ const char *tippe_decision_name(tippe_decision d)
     case TIPPE_DECIDED_FLAT_WELL: return "flat_well";
     case TIPPE_DECIDED_BUDGET: return "budget";
     case TIPPE_DECIDED_ROLLING: return "rolling";
+    case TIPPE_DECIDED_OBSERVED: return "observed";
     }
     return "?";
 }
@@ -71,6 +72,7 @@ const char *tippe_friction_law_name(tippe_friction_law law)
     case TIPPE_FRICTION_VISCOUS: return "viscous";
     case TIPPE_FRICTION_COULOMB: return "coulomb";
     case TIPPE_FRICTION_COULOMB_CREEP: return "coulomb-creep";
+    case TIPPE_FRICTION_PATCH: return "patch";
     }
     return "?";
 }
@@ -83,12 +85,28 @@ int tippe_friction_law_parse(const char *name)
         return TIPPE_FRICTION_COULOMB;
     if (!strcmp(name, "coulomb-creep"))
         return TIPPE_FRICTION_COULOMB_CREEP;
+    if (!strcmp(name, "patch"))
+        return TIPPE_FRICTION_PATCH;
     return -1;
 }
 
 int tippe_dynamics_frictionless(const tippe_dynamics_model *model)
 {
     return model->law == TIPPE_FRICTION_VISCOUS ? !(model->mu > 0.0) : !(model->mu_c > 0.0);
+}
+
+double tippe_dynamics_patch_radius(const tippe_dynamics_model *model)
+{
+    if (model->law != TIPPE_FRICTION_PATCH)
+        return 0.0;
+    if (model->patch_radius_m > 0.0)
+        return model->patch_radius_m;
+    double a = 0.0;
+    if (model->patch_E_star_pa > 0.0 &&
+        tippe_contact_hertz_radius(model->top.R, model->top.m * model->g, model->patch_E_star_pa,
+                                   &a, NULL) != TIPPE_OK)
+        a = 0.0;
+    return a;
 }
 
 int tippe_dynamics_n_presets(void) { return N_PRESETS; }

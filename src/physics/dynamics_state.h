@@ -31,6 +31,9 @@ typedef struct {
     double m, R, eps, A, C, g, mu;
     int coulomb;          /* friction law: 0 viscous (mu), 1 Coulomb (regularised slip) */
     int stick_law;        /* Coulomb with the event-driven stick (rolling) phase */
+    int patch;            /* Coulomb-Contensou on a patch of radius patch_a (m) */
+    double patch_a;
+    double roll_arm;      /* patch law: rolling resistance lever arm, m (0: off) */
     int stick;            /* current phase: 1 rolling without slipping (V_Q = 0) */
     double mu_c, vs, vs2; /* Coulomb coefficient, its slip scale v_s and v_s^2 */
     double min_stage_stick; /* smallest mu_c Rn - |F| met by a stage since reset (rolling) */
@@ -46,6 +49,7 @@ typedef struct {
 typedef struct {
     double k[3], w[3], v[3], q[3], VQ[3];
     double n, Rn, den, power;
+    double M;       /* N m, drilling torque about e3 (patch law; 0 otherwise) */
     double mu_eff;  /* s/m: mu (viscous) or mu_c / sqrt(|V_Q|^2 + v_s^2) (Coulomb) */
     double F[2];    /* N, horizontal friction force */
     double K[3][3]; /* contact compliance (Delassus) matrix, rolling phase only */

@@ -15,6 +15,8 @@ void tippe_launch_friction_model(const tippe_launch_options *o, tippe_dynamics_m
     m->mu = o->mu;
     m->mu_c = o->mu_c;
     m->slip_scale_m_s = o->slip_scale_m_s;
+    m->patch_radius_m = o->patch_radius_m;
+    m->patch_E_star_pa = o->patch_E_star_pa;
 }
 
 void tippe_dynamics_friction_json(cJSON *o, const tippe_dynamics_model *m)
@@ -35,6 +37,15 @@ void tippe_dynamics_friction_json(cJSON *o, const tippe_dynamics_model *m)
     cJSON_AddNumberToObject(f, "slip_scale_m_s", m->slip_scale_m_s > 0
                                                      ? m->slip_scale_m_s
                                                      : TIPPE_COULOMB_SLIP_SCALE_M_S);
+    if (m->law == TIPPE_FRICTION_PATCH) {
+        /* the radius given, or the contact modulus Hertz's radius comes from (at m g) */
+        if (m->patch_radius_m > 0 || !(m->patch_E_star_pa > 0))
+            cJSON_AddNumberToObject(f, "patch_mm", m->patch_radius_m * 1e3);
+        else
+            cJSON_AddNumberToObject(f, "E_star_GPa", m->patch_E_star_pa * 1e-9);
+        cJSON_AddStringToObject(f, "pressure", "hertz");
+        cJSON_AddNumberToObject(f, "rolling_arm_um", m->rolling_arm_m * 1e6);
+    }
 }
 
 void tippe_dynamics_accuracy_json(cJSON *o, const char *preset, const tippe_dynamics_accuracy *acc)

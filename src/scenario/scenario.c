@@ -20,7 +20,8 @@
 
 static const char *const top_level_keys[] = {"name", "notes", "top", "g", "mu", "friction",
                                               "initial", "t_end", "accuracy", NULL};
-static const char *const friction_keys[] = {"law", "mu_s_m", "mu", "slip_scale_m_s", NULL};
+static const char *const friction_keys[] = {"law", "mu_s_m", "mu", "slip_scale_m_s",
+                                            "patch_mm", "table", "rolling_arm_um", NULL};
 static const char *const top_explicit_keys[] = {"m", "R", "eps", "A", "C", NULL};
 static const char *const top_design_keys[] = {"design", "z2_mm", "set", NULL};
 static const char *const top_all_keys[] = {"m", "R", "eps", "A", "C", "design", "z2_mm",
@@ -63,6 +64,24 @@ static int friction_before(cJSON *root, const char *field)
         cJSON *f = cJSON_AddObjectToObject(root, "friction");
         return f && cJSON_AddStringToObject(f, "law", "coulomb") ? TIPPE_OK : TIPPE_ECOMPUTE;
     }
+    if ((!strcmp(field, "friction.patch_mm") || !strcmp(field, "friction.table")) &&
+        !(fr && cJSON_IsObject(fr) &&
+          cJSON_IsString(cJSON_GetObjectItemCaseSensitive(fr, "law")) &&
+          !strcmp(cJSON_GetObjectItemCaseSensitive(fr, "law")->valuestring, "patch"))) {
+        /* the patch's radius names its law; a Coulomb block's mu carries over */
+        double mu_c = TIPPE_LAUNCH_DEFAULT_MU_C;
+        const cJSON *old = fr && cJSON_IsObject(fr) && !viscous_block(fr)
+                               ? cJSON_GetObjectItemCaseSensitive(fr, "mu")
+                               : NULL;
+        if (cJSON_IsNumber(old))
+            mu_c = old->valuedouble;
+        if (fr || mu)
+            cJSON_DeleteItemFromObjectCaseSensitive(root, fr ? "friction" : "mu");
+        cJSON *f = cJSON_AddObjectToObject(root, "friction");
+        return f && cJSON_AddStringToObject(f, "law", "patch") && cJSON_AddNumberToObject(f, "mu", mu_c)
+                   ? TIPPE_OK
+                   : TIPPE_ECOMPUTE;
+    }
     if (!mu || cJSON_GetObjectItemCaseSensitive(root, "friction"))
         return TIPPE_OK;
     cJSON *f = cJSON_CreateObject();
@@ -79,9 +98,14 @@ static int friction_before(cJSON *root, const char *field)
 
 static void friction_after(cJSON *root, const char *field)
 {
+    cJSON *f = cJSON_GetObjectItemCaseSensitive(root, "friction");
+    /* the patch's radius is given or derived: the later of the two wins */
+    if (!strcmp(field, "friction.patch_mm"))
+        cJSON_DeleteItemFromObjectCaseSensitive(f, "table");
+    if (!strcmp(field, "friction.table"))
+        cJSON_DeleteItemFromObjectCaseSensitive(f, "patch_mm");
     if (strcmp(field, "friction.law") != 0)
         return;
-    cJSON *f = cJSON_GetObjectItemCaseSensitive(root, "friction");
     const cJSON *law = cJSON_GetObjectItemCaseSensitive(f, "law");
     if (!cJSON_IsString(law))
         return;
@@ -90,6 +114,10 @@ static void friction_after(cJSON *root, const char *field)
         cJSON_DeleteItemFromObjectCaseSensitive(f, "slip_scale_m_s");
     } else {
         cJSON_DeleteItemFromObjectCaseSensitive(f, "mu_s_m");
+    }
+    if (strcmp(law->valuestring, "patch") != 0) {
+        cJSON_DeleteItemFromObjectCaseSensitive(f, "patch_mm");
+        cJSON_DeleteItemFromObjectCaseSensitive(f, "table");
     }
 }
 
@@ -313,6 +341,10 @@ static int read_design_top(tippe_json_reader *c, const cJSON *top, const cJSON *
                                   : tippe_error_set(c->err, rc, "%s", derr.msg);
     rc = tippe_design_top(d, s->z2_mm, &s->model.top, &derr);
     tippe_design_protrusion_at(d, s->z2_mm, &s->protrusion);
+    const char *mat = "";
+    if (!tippe_design_ball_elastic(d, &s->ball_E_pa, &s->ball_nu, &mat))
+        s->ball_E_pa = s->ball_nu = 0.0;
+    snprintf(s->ball_material, sizeof s->ball_material, "%s", mat);
     tippe_design_free(d);
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.z2_mm", "%s", derr.msg)
@@ -340,6 +372,65 @@ static int read_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s)
                                "give either a design (design, z2_mm) or the explicit top "
                                "(m, R, eps, A, C), not both");
     return design ? read_design_top(c, top, design, s) : read_explicit_top(c, top, s);
+}
+
+/* The patch law's radius: "patch_mm" given, or Hertz's at m g from the design ball's
+ * material (the materials table's E_GPa, nu) on "table" (default laminate). */
+static int read_patch(tippe_json_reader *c, const cJSON *f, tippe_scenario *s)
+{
+    tippe_dynamics_model *m = &s->model;
+    const cJSON *pm = cJSON_GetObjectItemCaseSensitive(f, "patch_mm");
+    const cJSON *tb = cJSON_GetObjectItemCaseSensitive(f, "table");
+    const cJSON *ra = cJSON_GetObjectItemCaseSensitive(f, "rolling_arm_um");
+    int rc;
+    if (m->law != TIPPE_FRICTION_PATCH) {
+        if (pm || tb || ra)
+            return tippe_json_fail(c, pm ? "friction.patch_mm" : tb ? "friction.table"
+                                                                    : "friction.rolling_arm_um",
+                                   "belongs to the patch law (\"law\": \"patch\")");
+        return TIPPE_OK;
+    }
+    if (ra) {
+        double um = 0.0;
+        if ((rc = tippe_json_number(c, f, "friction", "rolling_arm_um", 1, &um, NULL)) ||
+            (rc = check_range(c, "friction.rolling_arm_um", um, 0, 1000, "um")))
+            return rc;
+        m->rolling_arm_m = um * 1e-6;
+    }
+    if (pm && tb)
+        return tippe_json_fail(c, "friction.patch_mm",
+                               "gives the radius that \"table\" derives: give one");
+    if (pm) {
+        double mm = 0.0;
+        if ((rc = tippe_json_number(c, f, "friction", "patch_mm", 1, &mm, NULL)) ||
+            (rc = check_range(c, "friction.patch_mm", mm, 0, 10, "mm")))
+            return rc;
+        m->patch_radius_m = mm * 1e-3;
+        return TIPPE_OK;
+    }
+    const char *table = TIPPE_CONTACT_DEFAULT_TABLE;
+    if (tb) {
+        if (!cJSON_IsString(tb))
+            return tippe_json_wrong_type(c, "friction.table", "a surface name", tb);
+        table = tb->valuestring;
+    }
+    double Et, nut;
+    if (tippe_contact_table_surface(table, &Et, &nut))
+        return tippe_json_fail(c, "friction.table",
+                               "unknown surface '%s' (" TIPPE_CONTACT_TABLES ")", table);
+    if (!(s->ball_E_pa > 0))
+        return tippe_json_fail(c, tb ? "friction.table" : "friction.patch_mm",
+                               "%s: the Hertz patch needs the ball's E and nu%s%s%s; give "
+                               "\"patch_mm\"",
+                               tb ? "cannot derive the radius" : "missing",
+                               s->design_path[0] ? " (material '" : " (an explicit top has no "
+                                                                     "material)",
+                               s->design_path[0] ? s->ball_material : "",
+                               s->design_path[0] ? "' has none in the materials table)" : "");
+    if (tippe_contact_hertz_modulus(s->ball_E_pa, s->ball_nu, Et, nut, &m->patch_E_star_pa,
+                                    c->err))
+        return TIPPE_EINPUT;
+    return TIPPE_OK;
 }
 
 /* The friction: the top-level "mu" (viscous, s/m: the paper's eq 3.12, as every
@@ -384,7 +475,7 @@ static int read_friction(tippe_json_reader *c, const cJSON *root, tippe_scenario
         return tippe_json_fail(c, "friction.law",
                                "missing: the block names no law; give {\"law\": \"coulomb\", "
                                "\"mu\": 0.3} or {\"law\": \"viscous\", \"mu_s_m\": S_M} "
-                               "(laws: viscous, coulomb, coulomb-creep)");
+                               "(laws: viscous, coulomb, coulomb-creep, patch)");
     int l = has_viscous ? TIPPE_FRICTION_VISCOUS : TIPPE_FRICTION_COULOMB;
     if (law) {
         if (!cJSON_IsString(law))
@@ -392,7 +483,7 @@ static int read_friction(tippe_json_reader *c, const cJSON *root, tippe_scenario
         l = tippe_friction_law_parse(law->valuestring);
         if (l < 0)
             return tippe_json_fail(c, "friction.law",
-                                   "unknown law '%s' (viscous, coulomb, coulomb-creep)",
+                                   "unknown law '%s' (viscous, coulomb, coulomb-creep, patch)",
                                    law->valuestring);
     }
     m->law = (tippe_friction_law)l;
@@ -404,6 +495,8 @@ static int read_friction(tippe_json_reader *c, const cJSON *root, tippe_scenario
         if (cJSON_GetObjectItemCaseSensitive(f, "slip_scale_m_s"))
             return tippe_json_fail(c, "friction.slip_scale_m_s",
                                    "belongs to the Coulomb laws, not the viscous one");
+        if ((rc = read_patch(c, f, s)))
+            return rc;
         m->mu = TIPPE_LAUNCH_DEFAULT_MU_S_M;
         if ((rc = tippe_json_number(c, f, "friction", "mu_s_m", 0, &m->mu, NULL)))
             return rc;
@@ -419,10 +512,11 @@ static int read_friction(tippe_json_reader *c, const cJSON *root, tippe_scenario
     if ((rc = tippe_json_number(c, f, "friction", "mu", 0, &m->mu_c, NULL)) ||
         (rc = check_range(c, "friction.mu", m->mu_c, 0, MU_C_MAX, "(dimensionless)")) ||
         (rc = tippe_json_number(c, f, "friction", "slip_scale_m_s", 0, &m->slip_scale_m_s,
-                                NULL)))
+                                NULL)) ||
+        (rc = check_range(c, "friction.slip_scale_m_s", m->slip_scale_m_s, SLIP_SCALE_MIN_M_S,
+                          SLIP_SCALE_MAX_M_S, "m/s")))
         return rc;
-    return check_range(c, "friction.slip_scale_m_s", m->slip_scale_m_s, SLIP_SCALE_MIN_M_S,
-                       SLIP_SCALE_MAX_M_S, "m/s");
+    return read_patch(c, f, s);
 }
 
 static int read_accuracy(tippe_json_reader *c, const cJSON *acc, tippe_scenario *s)
