@@ -25,7 +25,7 @@
  * Commands we do not use are skipped
  * with their arguments (M117 messages), and so are extended commands
  * (Klipper's PRINT_START ...; EXCLUDE_OBJECT_START/END label objects). */
-#include "design/gcode_internal.h"
+#include "design/gcode_state.h"
 
 #include <errno.h>
 #include <math.h>

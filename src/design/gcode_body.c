@@ -10,7 +10,7 @@
  * dm h^2/12 along z (a uniform w x h rectangle's variances). Sums are kept
  * about the first deposit's (x, y, 0) so that the central moments, formed as
  * q - m c c^T, lose little to cancellation on a bed hundreds of mm wide. */
-#include "design/gcode_internal.h"
+#include "design/gcode_state.h"
 
 #include <math.h>
 #include <stdio.h>

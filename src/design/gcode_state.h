@@ -1,7 +1,7 @@
-/* gcode_internal.h: what the G-code reader (gcode.c) hands the deposit's
+/* gcode_state.h: what the G-code reader (gcode.c) hands the deposit's
  * accumulator (gcode_body.c). Lengths in mm, volumes in mm^3, masses in kg. */
-#ifndef TIPPE_GCODE_INTERNAL_H
-#define TIPPE_GCODE_INTERNAL_H
+#ifndef TIPPE_DESIGN_GCODE_STATE_H
+#define TIPPE_DESIGN_GCODE_STATE_H
 
 #include "tippe/design.h"
 
