@@ -97,9 +97,15 @@ sys.exit(0 if abs(j - want) < 1e-5 * p else 1)" "$p" "$j"
 # --- names that clashed or injected ------------------------------------------
 # shell-band's parts renamed: an OpenSCAD built-in, the file's own module
 # names, two names that differ only in punctuation (both kept apart), and a
-# name with a newline followed by code that would add a 100 mm cube.
+# name that closes a string, a comment and a module and adds a 100 mm cube. (A name
+# with a newline is refused when the design is read, issue 28.2: checked below.)
+json_edit designs/shell-band.json "$tmp/newline.json" '
+d["parts"][3]["name"] = "weight\n}\ncube(100);\nmodule x() {"
+'
+expect_fail "a part name with a newline is refused at load" 2 "parts[3].name" -- \
+    export "$tmp/newline.json" -o "$tmp/newline" --format scad
 json_edit designs/shell-band.json "$tmp/names.json" '
-names = ["printed", "cylinder", "a b", "weight\n}\ncube(100);\nmodule x() {"]
+names = ["printed", "cylinder", "a b", "weight\"; */ } cube(100); module x() { /*"]
 for p, n in zip(d["parts"], names): p["name"] = n
 d["parts"].insert(2, {"name": "a_b", "shape": "ball", "radius_mm": 1, "z_mm": 23.5, "void": True, "cut_from": "printed"})
 '
