@@ -192,6 +192,19 @@ static void advance(tippe_gcode_state *g, const tippe_gcode_words *w, double a[3
     physical(g, b);
 }
 
+/* The filament a move feeds, in mm: E is relative under G91 or M83 and
+ * absolute otherwise (RepRap G-code, G1 and M82/M83); the running E follows. */
+static double extruded_mm(tippe_gcode_state *g, const tippe_gcode_words *w)
+{
+    if (!has(w, 'E'))
+        return 0;
+    double x = w->v['E' - 'A'];
+    int relative = g->rel_xyz || g->m83;
+    double de = relative ? x : x - g->e;
+    g->e = relative ? g->e + x : x;
+    return de;
+}
+
 static int do_move(tippe_gcode_state *g, const tippe_gcode_words *w, const char *line, const char *line_end)
 {
     int rc = need_numbers(g, w, "XYZE", line, line_end);
@@ -199,12 +212,7 @@ static int do_move(tippe_gcode_state *g, const tippe_gcode_words *w, const char 
         return rc;
     double a[3], b[3];
     advance(g, w, a, b);
-    double de = 0;
-    if (has(w, 'E')) {
-        double x = w->v['E' - 'A'];
-        de = (g->rel_xyz || g->m83) ? x : x - g->e;
-        g->e = (g->rel_xyz || g->m83) ? g->e + x : x;
-    }
+    double de = extruded_mm(g, w);
     double vol;
     if ((rc = plastic(g, de, &vol)))
         return rc;
@@ -241,12 +249,7 @@ static int do_arc(tippe_gcode_state *g, const tippe_gcode_words *w, int ccw, con
     } else {
         return fail(g, "an arc needs I, J or R", line, line_end);
     }
-    double de = 0;
-    if (has(w, 'E')) {
-        double x = w->v['E' - 'A'];
-        de = (g->rel_xyz || g->m83) ? x : x - g->e;
-        g->e = (g->rel_xyz || g->m83) ? g->e + x : x;
-    }
+    double de = extruded_mm(g, w);
     double vol;
     if ((rc = plastic(g, de, &vol)))
         return rc;

@@ -120,15 +120,8 @@ uint64_t tippe_launch_mix(uint64_t seed, uint64_t draw)
 
 static void model_of(const tippe_top *top, const tippe_launch_options *o, tippe_dynamics_model *m)
 {
-    memset(m, 0, sizeof *m);
+    tippe_launch_friction_model(o, m);
     m->top = *top;
-    m->g = o->g;
-    m->mu = o->mu;
-    m->law = o->law;
-    m->mu_c = o->mu_c;
-    m->slip_scale_m_s = o->slip_scale_m_s;
-    m->patch_radius_m = o->patch_radius_m;
-    m->patch_E_star_pa = o->patch_E_star_pa;
 }
 
 /* The steady precession (theta_dot = 0 at launch, eq 3.15 with Rn = m g) for
