@@ -134,19 +134,36 @@ bom = " ".join(x["item"] + " " + x["detail"] for x in b["bill_of_materials"])
 assert "threaded rod 'rod'" in bom and "M6 x 1" in bom and "%.2f" % (2 * rod_top) in bom, bom
 EOF
 
-# --- not 3-in-1: the edge the sheet gives is where tippe sweep says 3-in-1 starts
-m=$tmp/m12-setscrew-printed.json
-check "m12-setscrew-printed is not 3-in-1 and the sheet says what would make it so" \
-    json_ok "$m" 'not o["three_in_one"] and any(a["field"] == "parts.body.print.infill" for a in o["to_make_it_three_in_one"])'
-read -r edge side < <(python3 -c "import json,sys; a=[a for a in json.load(open(sys.argv[1]))['to_make_it_three_in_one'] if a['field'] == 'parts.body.print.infill'][0]; print(a['edge'], a['side'])" "$m")
-# bisected to 1e-3 of the range 0 .. 1: 0.002 on either side decides
-for dv in -0.002 0.002; do
-    v=$(python3 -c "print($edge + $dv)")
-    "$tippe" sweep designs/m12-setscrew-printed.json --set parts.body.print.infill=$v --json >"$tmp/sw.json"
-    want=$(python3 -c "print(($dv > 0) == ('$side' == 'at_least'))")
-    check "infill $v: tippe sweep's three_in_one is $want (edge $edge, $side)" \
-        json_ok "$tmp/sw.json" "o['three_in_one'] == $want"
+# --- not settable: every change the sheet proposes as settable, applied, gives
+# a sheet that calls the design settable, with the narrowest robust range the
+# proposal gave (the same sweep with bands: equal to rounding, 1e-6 mm); the
+# printed M12 (issue 25's done criterion) gets at least one, and the infill is
+# one of PrusaSlicer's list (src/libslic3r/PrintConfig.cpp, fill_density)
+for stem in m12-setscrew-printed m12-setscrew drilled-ball-blind-printed; do
+    m=$tmp/$stem.json
+    check "$stem is not settable and the sheet proposes a settable change" \
+        json_ok "$m" 'not o["settable"] and any(a["settable"] for a in o["to_make_it_settable"])'
+    python3 -c "
+import json, sys
+for a in json.load(open(sys.argv[1]))['to_make_it_settable']:
+    if a['settable']:
+        print(' '.join('--set ' + s for s in a['set']), a['narrowest_robust_mm'])
+" "$m" >"$tmp/$stem.adv"
+    while read -r line; do
+        want=${line##* }
+        sets=${line% *}
+        # shellcheck disable=SC2086  # the --set pairs are words
+        "$tippe" build "designs/$stem.json" $sets -o "$tmp/adv" --no-export --json >"$tmp/adv.json"
+        check "$stem with $sets: the sheet calls it settable, narrowest robust range $want mm" \
+            json_ok "$tmp/adv.json" "o['settable'] and abs(min(s['robust_width_mm'] for s in o['settings']) - $want) < 1e-6"
+    done <"$tmp/$stem.adv"
 done
+check "m12-setscrew-printed: the proposed infills are the slicer's steps" \
+    json_ok "$tmp/m12-setscrew-printed.json" 'all(round(float(s.split("=")[1]) * 100) in (0,5,10,15,20,25,30,40,50,60,70,80,90,100) for a in o["to_make_it_settable"] for s in a["set"] if s.endswith(tuple("0123456789")) and ".print.infill=" in s)'
+# a screw in a thread is offered only materials set screws are sold in, and
+# catalogue screws (the solid M12 gets them: its hangs range is too narrow)
+check "m12-setscrew: proposals are catalogue screws or set-screw materials" \
+    json_ok "$tmp/m12-setscrew.json" 'all(any(".catalogue_item=M" in s or s.split("=")[1] in ("steel","stainless","brass","aluminium","nylon") for s in a["set"] if ".screw." in s) for a in o["to_make_it_settable"])'
 
 # --- weighing: the offset between the print's hole and the model's, by eval ----
 "$tippe" build designs/m12-setscrew-printed.json -o "$tmp/w" --hole slide --no-export --json >"$tmp/w.json"

@@ -251,16 +251,24 @@ typedef struct {
     int joint_ring;                      /* split, and a cut face is wide enough for tippe
                                             export's joint ring (else the halves are glued
                                             without one) */
-    /* Not 3-in-1: single changes that make it so, found by the model (each
-     * field scanned over its range with the zones swept at every value, the
-     * nearest edge of the 3-in-1 values bisected to 1e-3 of the range). */
+    /* Not settable: changes a maker can buy or set (an infill of the slicer's
+     * list, a material of the table, a catalogue screw or a length in whole
+     * mm), each tried by sweeping the changed design with its tolerance bands
+     * as the sheet is (tippe_build_advise); pairs of them where no single one
+     * makes it settable. */
     int n_advice;
     struct {
-        char field[160];
-        double now, value;   /* the design's value and the edge found */
-        int at_least;        /* 1: 3-in-1 at value and above (towards it), 0: at and below */
-        char text[400];
+        int n_set;
+        char set[6][200];     /* the --set overrides that make the change */
+        int pair;             /* two changes together */
+        int settable;         /* every behaviour's robust width >= min_setting_mm */
+        double narrowest_mm;  /* the narrowest robust width of the three with it (0 if
+                                 a behaviour is missing or has no robust range) */
+        double min_setting_mm; /* the rule with it (a new thread has its own) */
+        char text[480];
     } advice[6];
+    /* how many changed designs were swept for the advice */
+    int n_advice_tried;
     int n_steps;
     char step[10][400];                  /* assembly steps, in order */
     /* each setting narrower than min_setting_mm, and each flips or hangs range
@@ -284,6 +292,12 @@ void tippe_build_options_default(tippe_build_options *o);
  * setting (launch_status), not returned. */
 int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                         tippe_build_sheet *out, tippe_error *err);
+
+/* Advice k's overrides as a command line's options: "--set A --set B". */
+void tippe_build_advice_sets(const tippe_build_sheet *s, int k, char *buf, size_t size);
+/* The heading over the advice, and the sentence for none found. */
+const char *tippe_build_advice_heading(const tippe_build_sheet *s);
+const char *tippe_build_advice_none(void);
 
 /* The sheet's verdict: "3-in-1 and settable", "3-in-1 on paper only" or
  * "not 3-in-1". */

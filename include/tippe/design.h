@@ -554,6 +554,10 @@ typedef struct {
     const char *name, *source, *notes; /* notes "" if none */
     double density_g_cm3;
     int printable;
+    int set_screws; /* "set_screws": set screws are sold in it (what the build
+                       sheet may propose for a screw in a thread) */
+    double E_GPa, nu; /* elastic constants (the Hertz patch); NAN when not given */
+    const char *elastic_source; /* where E and nu come from; "" when not given */
 } tippe_material;
 typedef struct tippe_materials tippe_materials;
 
@@ -569,6 +573,10 @@ void tippe_materials_free(tippe_materials *t);
  * NULL). NULL if out of memory. */
 struct cJSON;
 struct cJSON *tippe_materials_json(const tippe_materials *t, const char *file);
+/* The materials table the loaded design read (resolved as at load: beside its
+ * file, or the designs folder's for a design from memory); NULL when no part
+ * names a material. */
+const char *tippe_design_materials_path(const tippe_design *d);
 /* The materials table the design file at design_path reads: its "materials"
  * field (default "materials.json") relative to the design's directory.
  * TIPPE_EINPUT if the file is not a design (a JSON object with "parts"). */

@@ -29,57 +29,6 @@ void tippe_build_options_default(tippe_build_options *o)
     tippe_launch_options_default(&o->launch);
 }
 
-/* ------------------------------------------------------------ ranges */
-
-/* The run of each family with the largest robust width (the nominal widest if
- * none is robust), as tippe_sweep_robust_widths joins runs: only the usable
- * part of each zone (as tippe_sweep_family_run: within the physical travel and
- * where no part stands out of the sphere, so the model applies). */
-static void robust_runs(const tippe_sweep_result *r, const tippe_sweep_bands_result *b,
-                        tippe_build_setting set[3])
-{
-    for (int i = 0, f; i < r->n_zones;) {
-        double from, to;
-        i = tippe_sweep_family_run(r, i, &f, &from, &to);
-        if (f >= 0) {
-            double bf = tippe_sweep_band_at(b, from), bt = tippe_sweep_band_at(b, to);
-            double w = to - from - bf - bt;
-            tippe_build_setting *s = &set[f];
-            double best_w = s->reachable ? s->robust_to_mm - s->robust_from_mm : -INFINITY;
-            int better = !s->reachable || (w > 0 && w > best_w) ||
-                         (!s->robust && w <= 0 && to - from > s->to_mm - s->from_mm);
-            if (better) {
-                s->reachable = 1;
-                s->robust = w > 0;
-                s->from_mm = from;
-                s->to_mm = to;
-                s->band_from_mm = bf;
-                s->band_to_mm = bt;
-                s->robust_from_mm = from + bf;
-                s->robust_to_mm = to - bt;
-            }
-        }
-    }
-    for (int f = 0; f < 3; f++) {
-        tippe_build_setting *s = &set[f];
-        if (!s->reachable)
-            continue;
-        double a = s->robust ? s->robust_from_mm : s->from_mm;
-        double z = s->robust ? s->robust_to_mm : s->to_mm;
-        s->set_z2_mm = 0.5 * (a + z);
-        /* A run through the balanced point (eps = 0: a balanced ball with no
-         * side to rest on, e.g. a symmetric shell's Z2 = 0) is set in the
-         * middle of its longer side. */
-        for (int k = 0; k < r->n_events; k++) {
-            const tippe_sweep_event *e = &r->events[k];
-            if (e->boundary != TIPPE_SWEEP_BALANCED || e->z2_mm <= a || e->z2_mm >= z)
-                continue;
-            s->set_z2_mm = e->z2_mm - a > z - e->z2_mm ? 0.5 * (a + e->z2_mm)
-                                                       : 0.5 * (e->z2_mm + z);
-            break;
-        }
-    }
-}
 
 /* ------------------------------------------------------------ measuring */
 
@@ -520,22 +469,10 @@ typedef struct {
 static int compute_zones(compute_ctx *c, tippe_error *err)
 {
     tippe_build_sheet *out = c->out;
-    tippe_sweep_result r;
-    tippe_sweep_bands_result b = {0};
-    int rc = tippe_sweep_design(c->d, 0, 0, NULL, &r, err);
-    if (!rc)
-        rc = tippe_sweep_bands(c->d, &r, &b, err);
-    if (rc) {
-        tippe_sweep_bands_free(&b);
-        tippe_sweep_result_free(&r);
+    int rc = tippe_build_zones(c->d, out->set, &out->travel_from_mm, &out->travel_to_mm, err);
+    if (rc)
         return rc;
-    }
-    out->travel_from_mm = r.travel_from_mm;
-    out->travel_to_mm = r.travel_to_mm;
-    robust_runs(&r, &b, out->set);
     out->three_in_one = out->set[0].reachable && out->set[1].reachable && out->set[2].reachable;
-    tippe_sweep_bands_free(&b);
-    tippe_sweep_result_free(&r);
     return TIPPE_OK;
 }
 
@@ -731,7 +668,7 @@ static void compute_settable(compute_ctx *c)
 }
 
 /* Step 6: what a maker buys and prints (bill, gauges, print settings), the
- * steps, and advice when the design is not 3-in-1. */
+ * steps, and advice when the design is not settable. */
 static void compute_bill_and_steps(compute_ctx *c)
 {
     tippe_build_sheet *out = c->out;
@@ -755,7 +692,7 @@ static void compute_bill_and_steps(compute_ctx *c)
                         which);
     tippe_build_print_settings(c->d, ps, out);
     tippe_build_steps(out);
-    if (!out->three_in_one)
+    if (!out->settable)
         tippe_build_advise(c->d, c->o, out);
 }
 

@@ -13,126 +13,365 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* ------------------------------------------------------ 3-in-1 search */
+/* ------------------------------------------------- buyable changes */
 
-/* 1 if the design with field=value is 3-in-1 within its physical travel, 0 if
- * not, -1 if it does not load (a layout the value breaks). */
-static int three_in_one_at(const tippe_design *d, const tippe_build_options *o,
-                           const char *field, double value)
+/* PrusaSlicer's list of infill densities (src/libslic3r/PrintConfig.cpp,
+ * fill_density's enum_values): the steps a maker picks from. */
+static const double slicer_infill_steps[] = {0,    0.05, 0.10, 0.15, 0.20, 0.25, 0.30,
+                                             0.40, 0.50, 0.60, 0.70, 0.80, 0.90, 1.00};
+
+enum { FAM_INFILL, FAM_MATERIAL, FAM_WEIGHT, N_FAM };
+enum { MAX_SETS = 6, MAX_CHANGES = 160 };
+
+/* One change a maker can make: the overrides that make it, what it is in
+ * words, how far it is from the design (relative, for choosing the nearest),
+ * and, once tried, what the sheet would say of the changed design. */
+typedef struct {
+    int family;
+    int n_set;
+    char set[MAX_SETS][200];
+    char what[320];
+    double change;
+    double min_setting_mm;
+    int tried, loads, settable;
+    double narrowest_mm, score;
+} change;
+
+typedef struct {
+    const tippe_design *d;
+    const tippe_build_options *o;
+    tippe_build_sheet *s;
+    change *c;
+    int n;
+} advice_ctx;
+
+static change *add_change(advice_ctx *a, int family, double change_by, double min_setting_mm)
 {
-    /* d's own overrides (o->sets, as loaded) come with it */
-    char set[512];
-    snprintf(set, sizeof set, "%s=%.10g", field, value);
-    const char *ov[1] = {set};
+    if (a->n >= MAX_CHANGES)
+        return NULL;
+    change *c = &a->c[a->n++];
+    memset(c, 0, sizeof *c);
+    c->family = family;
+    c->change = change_by;
+    c->min_setting_mm = min_setting_mm;
+    return c;
+}
+
+static void add_set(change *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void add_set(change *c, const char *fmt, ...)
+{
+    if (c->n_set >= MAX_SETS)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->set[c->n_set++], sizeof c->set[0], fmt, ap);
+    va_end(ap);
+}
+
+/* The sheet's test of a changed design: its zones with their tolerance
+ * bands, as step 1 of the sheet (tippe_build_zones); settable when every
+ * behaviour's robust width reaches the change's min_setting_mm. score counts
+ * the behaviours that do, with partial credit, for choosing which changes to
+ * pair. */
+static void try_change(advice_ctx *a, change *c)
+{
+    const char *ov[MAX_SETS];
+    for (int i = 0; i < c->n_set; i++)
+        ov[i] = c->set[i];
     tippe_design *v = NULL;
     tippe_error e = {0};
-    if (tippe_design_reload(d, ov, 1, &v, &e))
-        return -1;
-    tippe_sweep_result r;
-    int yes = -1;
-    if (tippe_sweep_design(v, 0, 0, NULL, &r, &e) == TIPPE_OK) {
-        tippe_sweep_summary sm;
-        tippe_sweep_summarise(&r, &sm);
-        yes = sm.three_in_one;
+    c->tried = 1;
+    a->s->n_advice_tried++;
+    tippe_build_setting set[3];
+    double from, to;
+    if (tippe_design_reload(a->d, ov, c->n_set, &v, &e) ||
+        tippe_build_zones(v, set, &from, &to, &e)) {
+        tippe_design_free(v);
+        return;
     }
-    tippe_sweep_result_free(&r);
     tippe_design_free(v);
-    return yes;
+    c->loads = 1;
+    c->settable = 1;
+    c->narrowest_mm = INFINITY;
+    for (int f = 0; f < 3; f++) {
+        double w = set[f].reachable && set[f].robust
+                       ? set[f].robust_to_mm - set[f].robust_from_mm
+                       : 0;
+        c->narrowest_mm = fmin(c->narrowest_mm, w);
+        c->score += fmin(w / c->min_setting_mm, 1) + (set[f].reachable ? 0.01 : 0);
+        c->settable = c->settable && w >= c->min_setting_mm;
+    }
 }
 
-/* Scans field over [lo, hi]; the 3-in-1 value nearest now, its edge bisected.
- * 1 found (advice filled), 0 none. */
-static int search(const tippe_design *d, const tippe_build_options *o, const char *field,
-                  double now, double lo, double hi, tippe_build_sheet *s)
+/* The infill steps of each printed part that is not the design's own. A
+ * weighed part's scale reading belongs to the old infill: it goes. */
+static void infill_changes(advice_ctx *a, int i, const char *name,
+                           const tippe_design_print_info *pr)
 {
-    enum { N = 24 };
-    int yes[N + 1];
-    double x[N + 1];
-    for (int i = 0; i <= N; i++) {
-        x[i] = lo + (hi - lo) * i / N;
-        yes[i] = three_in_one_at(d, o, field, x[i]);
+    for (size_t k = 0; k < sizeof slicer_infill_steps / sizeof *slicer_infill_steps; k++) {
+        double x = slicer_infill_steps[k];
+        if (fabs(x - pr->infill) < 5e-3)
+            continue;
+        change *c = add_change(a, FAM_INFILL, fabs(x - pr->infill), a->s->min_setting_mm);
+        if (!c)
+            return;
+        add_set(c, "parts.%s.print.infill=%g", name, x);
+        if (pr->calibrated)
+            add_set(c, "parts.%s.print.measured_mass_g=null", name);
+        snprintf(c->what, sizeof c->what, "print '%s' at %.0f %% infill (now %.0f %%%s)", name,
+                 100 * x, 100 * pr->infill, pr->calibrated ? ", weighed: weigh the new print" : "");
     }
-    int best = -1;
-    for (int i = 0; i <= N; i++)
-        if (yes[i] == 1 && (best < 0 || fabs(x[i] - now) < fabs(x[best] - now)))
-            best = i;
-    if (best < 0 || s->n_advice >= 6)
-        return 0;
-    /* the neighbour towards now that is not 3-in-1: bisect between them */
-    int towards = x[best] > now ? best - 1 : best + 1;
-    double edge = x[best];
-    int at_least = x[best] > now;
-    if (towards >= 0 && towards <= N && yes[towards] != 1) {
-        double a = x[towards], b = x[best]; /* a: not, b: yes */
-        while (fabs(b - a) > 1e-3 * (hi - lo)) {
-            double m = 0.5 * (a + b);
-            if (three_in_one_at(d, o, field, m) == 1)
-                b = m;
-            else
-                a = m;
+    (void)i;
+}
+
+/* The bought materials of the design's table (printable: false) for the
+ * moving part, other than its own; for a screw turned in a thread only those
+ * set screws are sold in ("set_screws"). */
+static void material_changes(advice_ctx *a, const char *name, const tippe_design_part_info *p,
+                             int screw)
+{
+    tippe_materials *t = NULL;
+    tippe_error e = {0};
+    const char *file = tippe_design_materials_path(a->d);
+    if (!file || tippe_materials_load(file, &t, &e))
+        return;
+    for (int k = 0; k < tippe_materials_count(t); k++) {
+        tippe_material m;
+        tippe_materials_get(t, k, &m);
+        if (m.printable || (screw && !m.set_screws) || !strcmp(m.name, p->material) ||
+            fabs(m.density_g_cm3 - p->density_g_cm3) < 1e-9)
+            continue;
+        change *c = add_change(a, FAM_MATERIAL,
+                               fabs(m.density_g_cm3 / p->density_g_cm3 - 1), a->s->min_setting_mm);
+        if (!c)
+            break;
+        add_set(c, "parts.%s.material=%s", name, m.name);
+        snprintf(c->what, sizeof c->what, "make '%s' of %s (%.2f g/cm^3; now %s, %.2f)", name,
+                 m.name, m.density_g_cm3, p->material, p->density_g_cm3);
+    }
+    tippe_materials_free(t);
+}
+
+/* The catalogue's screws in place of a screw in a hole: each item's size and
+ * length, the hole tied to the screw's radius (the catalogue's advice), the
+ * item named so that the sheet of the changed design names it. A new thread
+ * brings its own quarter turn. */
+static void catalogue_changes(advice_ctx *a, const char *name, const tippe_design_solid *sd,
+                              const tippe_build_catalogue *cat, const char *hole)
+{
+    double R = tippe_design_radius_mm(a->d);
+    double m_now = sd->radius_mm * sd->radius_mm * sd->height_mm;
+    for (int k = 0; k < cat->n_sets; k++)
+        for (int j = 0; j < cat->sets[k].n_items; j++) {
+            const tippe_build_catalogue_item *it = &cat->sets[k].items[j];
+            if (it->height_mm > R || it->radius_mm > R / 2 ||
+                (fabs(it->radius_mm - sd->radius_mm) < 1e-6 &&
+                 fabs(it->height_mm - sd->height_mm) < 1e-6))
+                continue;
+            double m = it->radius_mm * it->radius_mm * it->height_mm;
+            change *c = add_change(a, FAM_WEIGHT, fabs(m / m_now - 1),
+                                   a->o->min_setting_mm > 0 ? a->o->min_setting_mm
+                                                            : it->pitch_mm / 4);
+            if (!c)
+                return;
+            add_set(c, "parts.%s.radius_mm=%.10g", name, it->radius_mm);
+            add_set(c, "parts.%s.height_mm=%.10g", name, it->height_mm);
+            add_set(c, "parts.%s.catalogue_item=%s", name, it->name);
+            if (hole)
+                add_set(c, "parts.%s.radius_mm=%.10g", hole, it->radius_mm);
+            snprintf(c->what, sizeof c->what, "set screw %s (%s) as '%s'", it->name,
+                     cat->sets[k].title, name);
         }
-        edge = b;
-    }
-    int k = s->n_advice++;
-    snprintf(s->advice[k].field, sizeof s->advice[k].field, "%s", field);
-    s->advice[k].now = now;
-    s->advice[k].value = edge;
-    s->advice[k].at_least = at_least;
-    return 1;
 }
 
-void tippe_build_advise(const tippe_design *d, const tippe_build_options *o, tippe_build_sheet *s)
+/* A cylinder's or tube's length in whole millimetres, from half to double
+ * the design's (within the sphere's diameter). */
+static void length_changes(advice_ctx *a, const char *name, const tippe_design_solid *sd)
 {
-    char field[200];
-    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+    double R = tippe_design_radius_mm(a->d);
+    int lo = (int)fmax(1, ceil(sd->height_mm / 2));
+    int hi = (int)fmin(floor(2 * sd->height_mm), floor(2 * R));
+    for (int L = lo; L <= hi; L++) {
+        if (fabs(L - sd->height_mm) < 1e-9)
+            continue;
+        change *c = add_change(a, FAM_WEIGHT, fabs(L / sd->height_mm - 1), a->s->min_setting_mm);
+        if (!c)
+            return;
+        add_set(c, "parts.%s.height_mm=%d", name, L);
+        snprintf(c->what, sizeof c->what, "cut '%s' %d mm long (now %.4g mm)", name, L,
+                 sd->height_mm);
+    }
+}
+
+/* Every single change the design allows: the infill of each printed part,
+ * and for the moving weight its material, and a catalogue screw (a screw in
+ * a hole, with a catalogue) or its length in whole mm. */
+static void list_changes(advice_ctx *a, const tippe_build_catalogue *cat)
+{
+    const char *hole = NULL;
+    tippe_design_part_info hp;
+    if (a->s->measure == TIPPE_BUILD_MEASURE_HOLE && a->s->hole_part >= 0 &&
+        !tippe_design_part(a->d, a->s->hole_part, &hp))
+        hole = hp.name;
+    for (int i = 0; i < tippe_design_n_parts(a->d); i++) {
         tippe_design_part_info p;
         tippe_design_print_info pr;
         tippe_design_solid sd;
-        if (tippe_design_part(d, i, &p) || tippe_design_part_print(d, i, &pr) ||
-            tippe_design_part_solid(d, i, &sd))
+        if (tippe_design_part(a->d, i, &p) || tippe_design_part_print(a->d, i, &pr) ||
+            tippe_design_part_solid(a->d, i, &sd))
             continue;
-        int k = s->n_advice;
-        if (pr.printed && !pr.calibrated) {
-            snprintf(field, sizeof field, "parts.%s.print.infill", p.name);
-            if (search(d, o, field, pr.infill, 0, 1, s))
-                snprintf(s->advice[k].text, sizeof s->advice[k].text,
-                         "3-in-1 at %s %.1f %% infill of '%s' (the slicer's %.0f %%): print at "
-                         "that infill (weighing a print says how much plastic it holds, not "
-                         "where: it cannot show that this one is 3-in-1; its G-code can, "
-                         "tippe slice)",
-                         s->advice[k].at_least ? "or above" : "or below",
-                         100 * s->advice[k].value, p.name, 100 * pr.infill);
-        } else if (pr.printed) {
-            snprintf(field, sizeof field, "parts.%s.print.measured_mass_g", p.name);
-            if (search(d, o, field, pr.measured_mass_kg * 1e3, pr.skin_mass_kg * 1e3,
-                       pr.solid_mass_kg * 1e3, s))
-                snprintf(s->advice[k].text, sizeof s->advice[k].text,
-                         "3-in-1 if '%s' weighs %s %.2f g (weighed %.2f g): print it at a %s "
-                         "infill",
-                         p.name, s->advice[k].at_least ? "at least" : "at most",
-                         s->advice[k].value, pr.measured_mass_kg * 1e3,
-                         s->advice[k].at_least ? "denser" : "sparser");
-        } else if (sd.moving && !sd.is_void) {
-            snprintf(field, sizeof field, "parts.%s.density_g_cm3", p.name);
-            if (search(d, o, field, p.density_g_cm3, 1, 22, s))
-                snprintf(s->advice[k].text, sizeof s->advice[k].text,
-                         "3-in-1 with a %s weight: density %s %.2f g/cm^3 for '%s' (now %.2f, "
-                         "%s)",
-                         s->advice[k].at_least ? "heavier" : "lighter",
-                         s->advice[k].at_least ? "at least" : "at most", s->advice[k].value,
-                         p.name, p.density_g_cm3, p.material);
-            k = s->n_advice;
-            if ((!strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube"))) {
-                snprintf(field, sizeof field, "parts.%s.height_mm", p.name);
-                if (search(d, o, field, sd.height_mm, 0.5 * sd.height_mm, 2 * sd.height_mm, s))
-                    snprintf(s->advice[k].text, sizeof s->advice[k].text,
-                             "3-in-1 with a %s weight: '%s' %s %.2f mm long (now %.4g mm)",
-                             s->advice[k].at_least ? "longer" : "shorter", p.name,
-                             s->advice[k].at_least ? "at least" : "at most",
-                             s->advice[k].value, sd.height_mm);
-            }
+        if (pr.printed)
+            infill_changes(a, i, p.name, &pr);
+        else if (sd.moving && !sd.is_void) {
+            int cyl = !strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube");
+            material_changes(a, p.name, &p, hole && a->s->has_thread && cyl);
+            if (cyl && cat && hole && !strcmp(sd.shape, "cylinder"))
+                catalogue_changes(a, p.name, &sd, cat, hole);
+            else if (cyl)
+                length_changes(a, p.name, &sd);
         }
     }
+}
+
+/* Both changes at once (of different families). */
+static int pair_of(const change *x, const change *y, change *out)
+{
+    if (x->n_set + y->n_set > MAX_SETS || x->family == y->family)
+        return 0;
+    *out = *x;
+    out->tried = out->loads = out->settable = 0;
+    out->narrowest_mm = out->score = 0;
+    for (int i = 0; i < y->n_set; i++)
+        snprintf(out->set[out->n_set++], sizeof out->set[0], "%s", y->set[i]);
+    if (snprintf(out->what, sizeof out->what, "%s, and %s", x->what, y->what) >=
+        (int)sizeof out->what)
+        return 0;
+    out->change = x->change + y->change;
+    out->min_setting_mm = fmin(x->min_setting_mm, y->min_setting_mm);
+    if (x->family == FAM_WEIGHT || y->family == FAM_WEIGHT)
+        out->min_setting_mm = x->family == FAM_WEIGHT ? x->min_setting_mm : y->min_setting_mm;
+    out->family = -1;
+    return 1;
+}
+
+static void put_advice(tippe_build_sheet *s, const change *c, int pair)
+{
+    if (s->n_advice >= (int)(sizeof s->advice / sizeof s->advice[0]))
+        return;
+    int k = s->n_advice++;
+    s->advice[k].n_set = c->n_set;
+    for (int i = 0; i < c->n_set; i++)
+        snprintf(s->advice[k].set[i], sizeof s->advice[k].set[i], "%s", c->set[i]);
+    s->advice[k].pair = pair;
+    s->advice[k].settable = c->settable;
+    s->advice[k].narrowest_mm = c->narrowest_mm;
+    s->advice[k].min_setting_mm = c->min_setting_mm;
+    int n;
+    if (c->settable)
+        n = snprintf(s->advice[k].text, sizeof s->advice[k].text,
+                 "%s: settable, its narrowest robust range %.2f mm (at least %.2f needed)",
+                 c->what, c->narrowest_mm, c->min_setting_mm);
+    else
+        n = snprintf(s->advice[k].text, sizeof s->advice[k].text,
+                 "%s: the nearest to settable found, yet not (narrowest robust range %.2f mm, "
+                 "%.2f needed)",
+                 c->what, c->narrowest_mm, c->min_setting_mm);
+    (void)n; /* text[] holds what[] and the figures */
+}
+
+/* Index of the settable change of family f (or of pairs, f = -1) nearest the
+ * design, or widest; -1 if none. */
+static int pick(const change *c, int n, int f, int widest)
+{
+    int best = -1;
+    for (int i = 0; i < n; i++) {
+        if (!c[i].settable || c[i].family != f)
+            continue;
+        if (best < 0 ||
+            (widest ? c[i].narrowest_mm > c[best].narrowest_mm : c[i].change < c[best].change))
+            best = i;
+    }
+    return best;
+}
+
+static int by_score(const void *x, const void *y)
+{
+    const change *a = x, *b = y;
+    return a->score < b->score ? 1 : a->score > b->score ? -1 : (a->change > b->change) - (a->change < b->change);
+}
+
+/* What would make the design settable, as a maker can buy or set it: every
+ * single change is tried as the sheet would judge it (its zones with their
+ * tolerance bands, every behaviour at least min_setting_mm wide); for each
+ * family the nearest settable change and the widest are given. Where no single
+ * change is enough, pairs of the most promising changes of different families
+ * (the four best-scoring of each) are tried. Cost: one sweep with bands per
+ * change tried (n_advice_tried). */
+void tippe_build_advise(const tippe_design *d, const tippe_build_options *o, tippe_build_sheet *s)
+{
+    advice_ctx a = {.d = d, .o = o, .s = s, .c = calloc(MAX_CHANGES, sizeof(change))};
+    if (!a.c)
+        return;
+    tippe_build_catalogue *own = NULL;
+    const tippe_build_catalogue *cat = o->catalogue_read;
+    tippe_error e = {0};
+    const char *file = o->catalogue ? o->catalogue : tippe_design_catalogue(d);
+    if (!cat && file && !tippe_build_catalogue_load(file, &own, &e))
+        cat = own;
+    list_changes(&a, cat);
+    tippe_build_catalogue_free(own);
+    for (int i = 0; i < a.n; i++)
+        try_change(&a, &a.c[i]);
+    int any = 0;
+    for (int f = 0; f < N_FAM; f++) {
+        int near = pick(a.c, a.n, f, 0), wide = pick(a.c, a.n, f, 1);
+        if (near >= 0)
+            put_advice(s, &a.c[near], 0), any = 1;
+        if (wide >= 0 && wide != near && a.c[wide].narrowest_mm > 1.2 * a.c[near].narrowest_mm)
+            put_advice(s, &a.c[wide], 0);
+    }
+    if (any) {
+        free(a.c);
+        return;
+    }
+    /* pairs: the four best of each family, two families at a time */
+    qsort(a.c, (size_t)a.n, sizeof *a.c, by_score);
+    int top[N_FAM][4], nt[N_FAM] = {0};
+    for (int i = 0; i < a.n; i++) {
+        int f = a.c[i].family;
+        if (a.c[i].loads && nt[f] < 4)
+            top[f][nt[f]++] = i;
+    }
+    change *pairs = calloc(3 * 16, sizeof(change));
+    int np = 0;
+    for (int f = 0; pairs && f < N_FAM; f++)
+        for (int g = f + 1; g < N_FAM; g++)
+            for (int i = 0; i < nt[f]; i++)
+                for (int j = 0; j < nt[g]; j++)
+                    if (pair_of(&a.c[top[f][i]], &a.c[top[g][j]], &pairs[np])) {
+                        try_change(&a, &pairs[np]);
+                        np++;
+                    }
+    int near = pairs ? pick(pairs, np, -1, 0) : -1, wide = pairs ? pick(pairs, np, -1, 1) : -1;
+    if (near >= 0)
+        put_advice(s, &pairs[near], 1);
+    if (wide >= 0 && wide != near)
+        put_advice(s, &pairs[wide], 1);
+    /* none: the change that comes nearest, if it is nearer than the design */
+    double own_score = 0;
+    for (int f = 0; f < 3; f++) {
+        const tippe_build_setting *st = &s->set[f];
+        double w = st->reachable && st->robust ? st->robust_to_mm - st->robust_from_mm : 0;
+        own_score += fmin(w / s->min_setting_mm, 1) + (st->reachable ? 0.01 : 0);
+    }
+    const change *best = a.n > 0 && a.c[0].loads ? &a.c[0] : NULL;
+    for (int i = 0; i < np; i++)
+        if (pairs[i].loads && (!best || pairs[i].score > best->score))
+            best = &pairs[i];
+    if (near < 0 && best && best->score > own_score + 0.05)
+        put_advice(s, best, best->family < 0);
+    free(pairs);
+    free(a.c);
 }
 
 /* The print model's mass of the hole's part with the hole as printed, against

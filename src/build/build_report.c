@@ -236,17 +236,21 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
     }
     cJSON_AddBoolToObject(o, "split", s->needs_split);
     cJSON_AddBoolToObject(o, "joint_ring", s->joint_ring);
-    cJSON *adv = cJSON_AddArrayToObject(o, "to_make_it_three_in_one");
+    cJSON *adv = cJSON_AddArrayToObject(o, "to_make_it_settable");
+    cJSON_AddNumberToObject(o, "changes_tried", s->n_advice_tried);
     for (int k = 0; adv && k < s->n_advice; k++) {
         cJSON *j = cJSON_CreateObject();
         if (!j || !cJSON_AddItemToArray(adv, j)) {
             cJSON_Delete(j);
             break;
         }
-        cJSON_AddStringToObject(j, "field", s->advice[k].field);
-        cJSON_AddNumberToObject(j, "now", s->advice[k].now);
-        cJSON_AddNumberToObject(j, "edge", s->advice[k].value);
-        cJSON_AddStringToObject(j, "side", s->advice[k].at_least ? "at_least" : "at_most");
+        cJSON *sets = cJSON_AddArrayToObject(j, "set");
+        for (int i = 0; sets && i < s->advice[k].n_set; i++)
+            cJSON_AddItemToArray(sets, cJSON_CreateString(s->advice[k].set[i]));
+        cJSON_AddBoolToObject(j, "pair", s->advice[k].pair);
+        cJSON_AddBoolToObject(j, "settable", s->advice[k].settable);
+        cJSON_AddNumberToObject(j, "narrowest_robust_mm", s->advice[k].narrowest_mm);
+        cJSON_AddNumberToObject(j, "min_setting_mm", s->advice[k].min_setting_mm);
         cJSON_AddStringToObject(j, "advice", s->advice[k].text);
     }
     cJSON *stp = cJSON_AddArrayToObject(o, "steps");
@@ -344,16 +348,15 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     fprintf(f, "\n%s\n", verdict);
     for (int k = 0; k < s->n_warnings; k++)
         fprintf(f, "%s- **Warning**: %s\n", k ? "" : "\n", md(s->warning[k], m1, sizeof m1));
-    if (!s->three_in_one) {
-        fprintf(f, "\nWhat would make it 3-in-1 (one change at a time, found by sweeping the "
-                   "zones at each value; at the edge given the missing zone is just born, so go "
-                   "beyond it for a zone wide enough to set):\n\n");
-        for (int k = 0; k < s->n_advice; k++)
-            fprintf(f, "- %s (`--set %s=%.4g`).\n", md(s->advice[k].text, m1, sizeof m1), s->advice[k].field,
-                    s->advice[k].value);
+    if (!s->settable) {
+        fprintf(f, "\n%s:\n\n", tippe_build_advice_heading(s));
+        for (int k = 0; k < s->n_advice; k++) {
+            char sets[1400];
+            tippe_build_advice_sets(s, k, sets, sizeof sets);
+            fprintf(f, "- %s (`%s`).\n", md(s->advice[k].text, m1, sizeof m1), sets);
+        }
         if (!s->n_advice)
-            fprintf(f, "- no single change of the infill, the weight's density (1 .. 22 g/cm^3) "
-                       "or its length (half to double) makes it 3-in-1.\n");
+            fprintf(f, "- %s\n", tippe_build_advice_none());
     }
     if (s->has_thread) {
         fprintf(f, "\nThread: %s x %g mm", md(s->thread_name, m1, sizeof m1), s->thread.pitch_mm);
@@ -393,4 +396,34 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
         for (int k = 0; k < s->n_notes; k++)
             fprintf(f, "- %s\n", md(s->note[k], m1, sizeof m1));
     }
+}
+
+void tippe_build_advice_sets(const tippe_build_sheet *s, int k, char *buf, size_t size)
+{
+    size_t n = 0;
+    buf[0] = 0;
+    for (int i = 0; k >= 0 && k < s->n_advice && i < s->advice[k].n_set && n < size; i++) {
+        int w = snprintf(buf + n, size - n, "%s--set %s", i ? " " : "", s->advice[k].set[i]);
+        if (w < 0)
+            break;
+        n += (size_t)w;
+    }
+}
+
+const char *tippe_build_advice_heading(const tippe_build_sheet *s)
+{
+    int pair = s->n_advice > 0 && s->advice[0].pair;
+    return pair ? "What would make it settable (no single change is enough: pairs of changes "
+                  "a maker can buy or set, each tried by sweeping the changed design with its "
+                  "tolerance bands)"
+                : "What would make it settable (changes a maker can buy or set, one at a time, "
+                  "each tried by sweeping the changed design with its tolerance bands; the "
+                  "nearest of each kind, and the widest)";
+}
+
+const char *tippe_build_advice_none(void)
+{
+    return "No change tried makes it settable: the slicer's infill steps, the table's bought "
+           "materials, the catalogue's screws or whole-mm lengths (half to double), alone or "
+           "in pairs.";
 }

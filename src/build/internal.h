@@ -23,6 +23,10 @@ void tippe_build_step(tippe_build_sheet *s, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
 void tippe_build_steps(tippe_build_sheet *s);
 
+/* build_zones.c */
+int tippe_build_zones(const tippe_design *d, tippe_build_setting set[3], double *travel_from_mm,
+                      double *travel_to_mm, tippe_error *err);
+
 /* build_advice.c */
 void tippe_build_advise(const tippe_design *d, const tippe_build_options *o, tippe_build_sheet *s);
 double tippe_build_hole_model_radius(const tippe_design *d, int i);

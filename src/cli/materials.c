@@ -6,13 +6,14 @@
 
 #include <cjson/cJSON.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
 
 static const char *const VERB = "materials";
 
-enum { WIDTH = 100, SOURCE_COLUMN = 38 };
+enum { WIDTH = 100, SOURCE_COLUMN = 52 };
 
 /* Prints text from the current column (SOURCE_COLUMN) to WIDTH, continuing on
  * indented lines, broken at spaces. */
@@ -40,16 +41,25 @@ static void print_wrapped(const char *text)
 static void print_table(const tippe_materials *t, const char *file, const char *why)
 {
     printf("materials table %s\n(%s)\n\n", file, why);
-    printf("%-22s %7s  %-4s  %s\n", "name", "g/cm^3", "prt", "source");
+    printf("%-18s %7s  %-4s %-4s %6s %5s  %s\n", "name", "g/cm^3", "prt", "scr", "E GPa", "nu",
+           "source");
     for (int i = 0; i < tippe_materials_count(t); i++) {
         tippe_material m;
         tippe_materials_get(t, i, &m);
-        printf("%-22s %7.3f  %-4s  ", m.name, m.density_g_cm3, m.printable ? "yes" : "no");
+        char E[16] = "-", nu[16] = "-";
+        if (isfinite(m.E_GPa))
+            snprintf(E, sizeof E, "%.3g", m.E_GPa);
+        if (isfinite(m.nu))
+            snprintf(nu, sizeof nu, "%.2f", m.nu);
+        printf("%-18s %7.3f  %-4s %-4s %6s %5s  ", m.name, m.density_g_cm3,
+               m.printable ? "yes" : "no", m.set_screws ? "yes" : "no", E, nu);
         print_wrapped(m.source);
     }
-    printf("\nprt: printable (a part of it may carry a \"print\" block). A design reads the "
-           "table its\n\"materials\" field names, relative to the design file (default "
-           "materials.json next to it).\n");
+    printf("\nprt: printable (a part of it may carry a \"print\" block); scr: set screws are "
+           "sold in it\n(what tippe build proposes for a screw in a thread); E, nu: the elastic "
+           "constants of the\nHertz patch (--friction patch), with their source in the JSON "
+           "(--json). A design reads the\ntable its \"materials\" field names, relative to the "
+           "design file (default materials.json\nnext to it).\n");
 }
 
 /* The table to show: FILE (a table or a design), else the repository's. Fills

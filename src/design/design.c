@@ -237,6 +237,8 @@ static int resolve_materials(const tippe_json_reader *c, const char *path, const
                              &p->printable, &p->E_pa, &p->nu);
     }
     cJSON_Delete(table);
+    if (!rc && !(d->mat_file = tippe_design_dup_string(mat_file)))
+        rc = tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
     return rc;
 }
 
@@ -730,6 +732,7 @@ void tippe_design_free(tippe_design *d)
     free(d->path);
     free(d->text);
     free(d->materials_dir);
+    free(d->mat_file);
     free(d->catalogue);
     free(d->name);
     free(d->parts);

@@ -137,6 +137,8 @@ int tippe_design_part_fit(const tippe_design *d, int i)
     return i < 0 || i >= d->n_parts ? TIPPE_DESIGN_FIT_NONE : d->parts[i].fit;
 }
 
+const char *tippe_design_materials_path(const tippe_design *d) { return d->mat_file; }
+
 const char *tippe_design_part_catalogue_item(const tippe_design *d, int i)
 {
     return i < 0 || i >= d->n_parts ? "" : d->parts[i].catalogue_item;

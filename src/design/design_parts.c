@@ -80,7 +80,8 @@ const char *const tippe_design_print_keys[] = {
 /* The print settings that are text (--set writes them as strings). */
 const char *const tippe_design_print_string_keys[] = {"notes", "model", "pattern", "gcode", NULL};
 static const char *const material_keys[] = {"density_g_cm3", "source", "printable", "notes",
-                                             "E_GPa", "nu", "elastic_source", NULL};
+                                             "E_GPa", "nu", "elastic_source", "set_screws",
+                                             NULL};
 
 /* ----------------------------------------------------------------- parts */
 
@@ -490,13 +491,14 @@ int tippe_design_load_materials(const char *mat_file, cJSON **out, tippe_error *
             goto done;
         }
         double dens = 0;
-        int printable = 0;
+        int printable = 0, set_screws = 0;
         /* a material's name is its key: a label like a part's name */
         if ((rc = tippe_json_check_text(mc, m->string, m->string, 0)) ||
             (rc = tippe_json_check_keys(mc, m, m->string, "a material", material_keys, NULL)) ||
             (rc = tippe_json_number(mc, m, m->string, "density_g_cm3", 1, &dens, NULL)) ||
             (rc = tippe_json_string(mc, m, m->string, "source", 1, NULL, 0, NULL)) ||
             (rc = tippe_json_bool(mc, m, m->string, "printable", &printable, NULL)) ||
+            (rc = tippe_json_bool(mc, m, m->string, "set_screws", &set_screws, NULL)) ||
             (rc = tippe_json_text(mc, m, m->string, "notes", 0, NULL, 0, NULL)))
             goto done;
         /* the elastic constants (issue 27, the Hertz patch): both with their source, or
@@ -580,6 +582,13 @@ void tippe_materials_get(const tippe_materials *t, int i, tippe_material *out)
     out->notes = cJSON_IsString(notes) ? notes->valuestring : "";
     out->density_g_cm3 = cJSON_GetObjectItemCaseSensitive(m, "density_g_cm3")->valuedouble;
     out->printable = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(m, "printable"));
+    out->set_screws = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(m, "set_screws"));
+    const cJSON *E = cJSON_GetObjectItemCaseSensitive(m, "E_GPa");
+    const cJSON *nu = cJSON_GetObjectItemCaseSensitive(m, "nu");
+    out->E_GPa = cJSON_IsNumber(E) ? E->valuedouble : NAN;
+    out->nu = cJSON_IsNumber(nu) ? nu->valuedouble : NAN;
+    const cJSON *es = cJSON_GetObjectItemCaseSensitive(m, "elastic_source");
+    out->elastic_source = cJSON_IsString(es) ? es->valuestring : "";
 }
 
 void tippe_materials_free(tippe_materials *t)

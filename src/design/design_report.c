@@ -60,6 +60,12 @@ cJSON *tippe_materials_json(const tippe_materials *t, const char *file)
         if (!e || !cJSON_AddItemToArray(arr, e) || !cJSON_AddStringToObject(e, "name", m.name) ||
             !cJSON_AddNumberToObject(e, "density_g_cm3", m.density_g_cm3) ||
             !cJSON_AddBoolToObject(e, "printable", m.printable) ||
+            !cJSON_AddBoolToObject(e, "set_screws", m.set_screws) ||
+            !(isfinite(m.E_GPa) ? cJSON_AddNumberToObject(e, "E_GPa", m.E_GPa)
+                                : cJSON_AddNullToObject(e, "E_GPa")) ||
+            !(isfinite(m.nu) ? cJSON_AddNumberToObject(e, "nu", m.nu)
+                             : cJSON_AddNullToObject(e, "nu")) ||
+            !cJSON_AddStringToObject(e, "elastic_source", m.elastic_source) ||
             !cJSON_AddStringToObject(e, "source", m.source) ||
             !cJSON_AddStringToObject(e, "notes", m.notes)) {
             cJSON_Delete(o);

@@ -104,6 +104,7 @@ struct tippe_design {
     char *text, *materials_dir;
     size_t text_len;
     char *catalogue; /* "catalogue": the hardware catalogue file, resolved; NULL: not given */
+    char *mat_file;  /* the materials table read, resolved; NULL: no part names a material */
     double radius_mm;
     double travel_mm[2], contact_mm[2];
     char contact_limit[2][256];

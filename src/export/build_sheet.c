@@ -325,19 +325,21 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
     y = print_table(cr, s, rx, y + 6, rw) + 14;
     for (int k = 0; k < s->n_notes; k++)
         y = wrapped(cr, s->note[k], rx, y, rw, 9, 0) + 2;
-    if (!s->three_in_one) {
+    if (!s->settable) {
         y += 10;
-        heading(cr, "What would make it 3-in-1 (found by the model)", rx, y);
+        heading(cr, s->n_advice && s->advice[0].pair ? "What would make it settable (pairs)"
+                                                     : "What would make it settable",
+                rx, y);
         y += 16;
         for (int k = 0; k < s->n_advice; k++) {
-            snprintf(t, sizeof t, "- %s (--set %s=%.4g).", s->advice[k].text, s->advice[k].field,
-                     s->advice[k].value);
-            y = wrapped(cr, t, rx, y, rw, 9.5, 0) + 2;
+            char sets[1400];
+            tippe_build_advice_sets(s, k, sets, sizeof sets);
+            snprintf(t, sizeof t, "- %s.", s->advice[k].text);
+            y = wrapped(cr, t, rx, y, rw, 9.5, 0) + 1;
+            y = wrapped(cr, sets, rx + 8, y, rw - 8, 7.5, 0) + 3;
         }
         if (!s->n_advice)
-            y = wrapped(cr, "No single change of the infill, the weight's density (1 .. 22 "
-                            "g/cm^3) or its length (half to double) makes it 3-in-1.",
-                        rx, y, rw, 9.5, 0);
+            y = wrapped(cr, tippe_build_advice_none(), rx, y, rw, 9.5, 0);
     }
 
     /* below: the settings, then the steps */
