@@ -156,7 +156,13 @@ typedef struct {
     const char *thread;   /* "M3" */
     double pilot_mm;      /* hole diameter (tolerance -0 / +0.1 mm) */
     double outer_max_mm;  /* the insert's knurl, at most */
+    double length_mm;     /* a common insert's length (TIPPE_BUILD_INSERT_LENGTH_SOURCE):
+                             the screw is held only where its thread is within it */
 } tippe_build_insert;
+#define TIPPE_BUILD_INSERT_LENGTH_SOURCE                                                   \
+    "ruthex standard heat-set inserts M3x5.7, M4x8.1, M5x9.5, M6x12.7 (the length is in "    \
+    "the part name; tools.creative3dp.com's heat-set insert chart gives the pocket depth as " \
+    "the length plus 0.5 mm)"
 #define TIPPE_BUILD_INSERT_SOURCE                                                          \
     "Accu Ltd, 'Threaded Heat-Set Insert Pilot Hole Size Charts for 3D Printing' "          \
     "(accu.co.uk/p/488), heat-set inserts, non-flanged"
@@ -234,7 +240,7 @@ typedef struct {
     int thread_assumed;                  /* 1: no catalogue match, the nearest ISO size */
     int n_bom;
     tippe_build_bom_line bom[TIPPE_BUILD_MAX_BOM];
-    char note[4][320];                   /* facts a maker should know */
+    char note[6][480];                   /* facts a maker should know */
     int n_notes;
     /* how each printed part is printed (its print block, or solid) */
     int n_print;
@@ -269,8 +275,12 @@ typedef struct {
     } advice[6];
     /* how many changed designs were swept for the advice */
     int n_advice_tried;
+    /* a printed part not yet weighed: the step to weigh it and run again when
+     * the verdict differs within its infill tolerance, else a note that
+     * weighing would not change it ("" for none) */
+    char weigh_step[600], weigh_note[400];
     int n_steps;
-    char step[10][400];                  /* assembly steps, in order */
+    char step[10][600];                  /* assembly steps, in order */
     /* each setting narrower than min_setting_mm, and each flips or hangs range
      * whose part a hand's spin reaches is narrower */
     int n_warnings;

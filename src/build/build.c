@@ -673,7 +673,22 @@ static void compute_bill_and_steps(compute_ctx *c)
 {
     tippe_build_sheet *out = c->out;
     const tippe_profile_set *ps = c->have_ps ? &c->ps : NULL;
-    tippe_build_bill(c->d, ps, c->o, out, c->rod_r);
+    /* the bill gives the body as exported: a hole printed for its thread (a
+     * tap drill, an insert's pilot) moves the rims, hence the body's height */
+    tippe_profile_set printed;
+    int have_printed = 0;
+    if (ps && (out->hole_tapped || out->hole_insert) && out->hole_part >= 0) {
+        tippe_profile_options po = tippe_profile_defaults();
+        tippe_error perr = {0};
+        po.clearance_mm = c->o->clearance_mm;
+        po.sockets = 1;
+        po.fit_part = out->hole_part;
+        po.fit_diameter_mm = out->hole_diameter_mm;
+        have_printed = tippe_profile_build(c->d, &po, &printed, &perr) == TIPPE_OK;
+    }
+    tippe_build_bill(c->d, have_printed ? &printed : ps, c->o, out, c->rod_r);
+    if (have_printed)
+        tippe_profile_set_free(&printed);
     int n_gauges = 0;
     char which[64] = "";
     for (int f = 0; f < 3; f++) {
@@ -691,9 +706,41 @@ static void compute_bill_and_steps(compute_ctx *c)
                         "%s-gauge-*.stl, one per setting (%s), printed flat side down", stem,
                         which);
     tippe_build_print_settings(c->d, ps, out);
+    tippe_build_weigh_step(c->d, out);
     tippe_build_steps(out);
     if (!out->settable)
         tippe_build_advise(c->d, c->o, out);
+}
+
+/* A screw turned into a heat-set insert is held only by the thread within
+ * the insert: below it the pilot hole is wider than the thread. A setting
+ * whose screw top lies at or below the insert's far end (a common insert's
+ * length, TIPPE_BUILD_INSERT_LENGTH_SOURCE) has no thread engaged at all.
+ * When that is so of every setting, the top of the sheet (and stderr) says
+ * so: the insert cannot hold any setting. */
+static void insert_reach_warning(compute_ctx *c)
+{
+    tippe_build_sheet *out = c->out;
+    double L = out->insert.length_mm;
+    int any = 0, held = 0;
+    char depths[160] = "";
+    for (int f = 0; f < 3; f++) {
+        const tippe_build_setting *st = &out->set[f];
+        if (!st->reachable || !isfinite(st->depth_set_mm))
+            continue;
+        any = 1;
+        held = held || st->depth_set_mm < L;
+        size_t n = strlen(depths);
+        snprintf(depths + n, sizeof depths - n, "%s%.1f mm (%s)", n ? ", " : "", st->depth_set_mm,
+                 behaviours[f]);
+    }
+    if (!any || held || !(L > 0) || out->n_warnings >= 6)
+        return;
+    snprintf(out->warning[out->n_warnings++], sizeof out->warning[0],
+             "--hole insert: no setting lies within the %s insert's %.1f mm: the screw's top is "
+             "set %s below the rim, beyond the insert, where the pilot hole is wider than the "
+             "thread and nothing holds the screw. Tap the hole instead (--hole tap).",
+             out->insert.thread, L, depths);
 }
 
 /* Step 7: the notes on how depths are read, an insert's reach and weighing. */
@@ -711,6 +758,8 @@ static void compute_notes(compute_ctx *c)
     else
         tippe_build_note(out, "No hole or rod on the axis holds the weight: set it by Z2 "
                               "directly (its midpoint's height above the sphere's centre).");
+    if (out->hole_insert)
+        insert_reach_warning(c);
     if (out->hole_insert) {
         /* below the insert the pilot hole is wider than the thread: the screw
          * holds only while all of it is within the insert */
@@ -731,6 +780,8 @@ static void compute_notes(compute_ctx *c)
                               "the design as a fixed tube of its size and weight. Weigh the print "
                               "before pressing the insert in.");
     }
+    if (out->weigh_note[0])
+        tippe_build_note(out, out->weigh_note);
     if (isfinite(out->weigh_offset_g)) {
         char t[320];
         snprintf(t, sizeof t,

@@ -409,3 +409,91 @@ void tippe_build_weigh_offset(const tippe_design *d, tippe_build_sheet *s)
         s->weigh_offset_g = (before.printed_mass_kg - after.printed_mass_kg) * 1e3;
     tippe_design_free(v);
 }
+
+/* ------------------------------------------------------ weighing */
+
+/* The sheet's verdict for d with the overrides: 2 settable, 1 3-in-1 on paper
+ * only, 0 not 3-in-1, -1 when it does not load or sweep. */
+static int verdict_with(const tippe_design *d, const char *const *ov, int n, double min_setting_mm)
+{
+    tippe_design *v = NULL;
+    tippe_error e = {0};
+    tippe_build_setting set[3];
+    double from, to;
+    int verdict = -1;
+    if (!tippe_design_reload(d, ov, n, &v, &e) && !tippe_build_zones(v, set, &from, &to, &e)) {
+        int all = 1, wide = 1;
+        for (int f = 0; f < 3; f++) {
+            double w = set[f].reachable && set[f].robust
+                           ? set[f].robust_to_mm - set[f].robust_from_mm
+                           : 0;
+            all = all && set[f].reachable;
+            wide = wide && w >= min_setting_mm;
+        }
+        verdict = !all ? 0 : wide ? 2 : 1;
+    }
+    tippe_design_free(v);
+    return verdict;
+}
+
+static const char *verdict_name(int v)
+{
+    return v == 2 ? "3-in-1 and settable" : v == 1 ? "3-in-1 on paper only" : "not 3-in-1";
+}
+
+/* A printed part not yet weighed: its infill is the slicer's, within the
+ * slicer-infill tolerance (docs/printing.md). Where the sheet's verdict
+ * differs across that tolerance a weighing can decide (a scale says how much
+ * plastic the print holds, which pins the effective infill; not where it
+ * lies, which the G-code says: tippe slice), so the sheet gets a step to
+ * weigh the print and run it again; where it does not, a note says so. */
+void tippe_build_weigh_step(const tippe_design *d, tippe_build_sheet *s)
+{
+    for (int i = 0; i < tippe_design_n_parts(d) && !s->weigh_step[0]; i++) {
+        tippe_design_part_info p;
+        tippe_design_print_info pr;
+        if (tippe_design_part(d, i, &p) || tippe_design_part_print(d, i, &pr) || !pr.printed ||
+            pr.calibrated)
+            continue;
+        char field[200];
+        snprintf(field, sizeof field, "parts.%s.print.infill", p.name);
+        const tippe_tolerance *t = NULL;
+        for (int k = 0; k < tippe_design_n_tolerances(d) && !t; k++)
+            if (!strcmp(tippe_design_tolerance(d, k)->field, field))
+                t = tippe_design_tolerance(d, k);
+        if (!t)
+            continue;
+        double lo = fmax(0, pr.infill - t->plus_minus), hi = fmin(1, pr.infill + t->plus_minus);
+        char set_lo[260], set_hi[260];
+        snprintf(set_lo, sizeof set_lo, "%s=%.10g", field, lo);
+        snprintf(set_hi, sizeof set_hi, "%s=%.10g", field, hi);
+        const char *ov_lo[1] = {set_lo}, *ov_hi[1] = {set_hi};
+        int v_lo = verdict_with(d, ov_lo, 1, s->min_setting_mm);
+        int v_hi = verdict_with(d, ov_hi, 1, s->min_setting_mm);
+        int v_now = s->settable ? 2 : s->three_in_one ? 1 : 0;
+        if (v_lo < 0 || v_hi < 0)
+            continue;
+        char offset[160] = "";
+        if (isfinite(s->weigh_offset_g))
+            snprintf(offset, sizeof offset, " plus %+.3f g (the printed hole against the model's)",
+                     s->weigh_offset_g);
+        int n;
+        if (v_lo != v_now || v_hi != v_now)
+            n = snprintf(s->weigh_step, sizeof s->weigh_step,
+                         "Weigh the bare print of '%s' (before any hardware goes in) and run "
+                         "tippe build again with --set parts.%s.print.measured_mass_g=G, G the "
+                         "scale's reading%s: the verdict hangs on how much plastic the slicer "
+                         "laid (%s at %.1f %% infill, %s at %.1f %%, %s at the slicer's %.1f %%; "
+                         "the slicer-infill tolerance), which a weighing pins.",
+                         p.name, p.name, offset, verdict_name(v_lo), 100 * lo,
+                         verdict_name(v_hi), 100 * hi, verdict_name(v_now), 100 * pr.infill);
+        else
+            n = snprintf(s->weigh_note, sizeof s->weigh_note,
+                         "Weighing '%s' would not change the verdict: it is %s at %.1f %% and at "
+                         "%.1f %% infill too (the slicer's %.1f %% within its infill tolerance, "
+                         "%.1f %%).",
+                         p.name, verdict_name(v_now), 100 * lo, 100 * hi, 100 * pr.infill,
+                         100 * t->plus_minus);
+        (void)n; /* the buffers hold the sentences with their figures */
+    }
+}

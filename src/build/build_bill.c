@@ -45,7 +45,7 @@ void tippe_build_bom(tippe_build_sheet *s, int qty, const char *what, const char
 
 void tippe_build_note(tippe_build_sheet *s, const char *text)
 {
-    if (s->n_notes < 4)
+    if (s->n_notes < (int)(sizeof s->note / sizeof s->note[0]))
         snprintf(s->note[s->n_notes++], sizeof s->note[0], "%s", text);
 }
 
@@ -143,10 +143,10 @@ void tippe_build_bill(const tippe_design *d, const tippe_profile_set *ps, const 
     }
     if (s->hole_insert)
         tippe_build_bom(s, 1, "heat-set threaded insert, brass, non-flanged",
-            "%s (for the %s x %g screw), outer diameter at most %.1f mm; pressed into the "
-            "hole's rim, printed %.1f mm across (its vendor's pilot hole: %s)",
-            s->insert.thread, s->thread_name, s->thread.pitch_mm, s->insert.outer_max_mm,
-            s->insert.pilot_mm, TIPPE_BUILD_INSERT_SOURCE);
+            "%s (for the %s x %g screw), %.1f mm long, outer diameter at most %.1f mm; "
+            "pressed into the hole's rim, printed %.1f mm across (its vendor's pilot hole: %s)",
+            s->insert.thread, s->thread_name, s->thread.pitch_mm, s->insert.length_mm,
+            s->insert.outer_max_mm, s->insert.pilot_mm, TIPPE_BUILD_INSERT_SOURCE);
     int split = 0;
     for (int k = 0; ps && k < ps->n_warnings; k++)
         split |= strstr(ps->warning[k], "--split") != NULL;
@@ -242,6 +242,8 @@ void tippe_build_steps(tippe_build_sheet *s)
                 "assumes it). A ball printed whole stands on a few mm^2 and needs support "
                 "under its lower hemisphere (PrusaSlicer: about 3 cm^3 for a 50 mm ball), none "
                 "inside the hole; printed in halves (tippe export --split) a solid ball needs none.");
+    if (s->weigh_step[0])
+        tippe_build_step(s, "%s", s->weigh_step);
     if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {
         double bite = 0.5 * (s->thread.d_mm - s->hole_diameter_mm);
         if (s->hole_insert)

@@ -41,9 +41,13 @@ const tippe_build_thread *tippe_build_thread_by_pitch_diameter(double d2_mm)
 
 double tippe_build_tap_drill_mm(const tippe_build_thread *t) { return t->d_mm - t->pitch_mm; }
 
-/* TIPPE_BUILD_INSERT_SOURCE's chart, non-flanged inserts, pilot hole -0/+0.1 mm. */
+/* TIPPE_BUILD_INSERT_SOURCE's chart, non-flanged inserts, pilot hole -0/+0.1 mm;
+ * lengths TIPPE_BUILD_INSERT_LENGTH_SOURCE's. */
 static const tippe_build_insert inserts[] = {
-    {"M3", 4.0, 4.4}, {"M4", 5.6, 6.1}, {"M5", 6.4, 7.1}, {"M6", 8.0, 8.5},
+    {"M3", 4.0, 4.4, 5.7},
+    {"M4", 5.6, 6.1, 8.1},
+    {"M5", 6.4, 7.1, 9.5},
+    {"M6", 8.0, 8.5, 12.7},
 };
 
 const tippe_build_insert *tippe_build_insert_for(const char *thread)

@@ -31,6 +31,7 @@ int tippe_build_zones(const tippe_design *d, tippe_build_setting set[3], double 
 void tippe_build_advise(const tippe_design *d, const tippe_build_options *o, tippe_build_sheet *s);
 double tippe_build_hole_model_radius(const tippe_design *d, int i);
 void tippe_build_weigh_offset(const tippe_design *d, tippe_build_sheet *s);
+void tippe_build_weigh_step(const tippe_design *d, tippe_build_sheet *s);
 
 /* build_report.c */
 const char *tippe_build_mm(double v, char *buf, size_t size);
