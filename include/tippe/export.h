@@ -42,6 +42,14 @@ typedef struct {
     const char *title_note; /* second title line of the drawing (the zone), or NULL */
     const char *fit_note;   /* why profile.fit_part is printed at fit_diameter_mm ("M10 x 1.5
                                tap drill"), for the drawing; NULL: "for its thread" */
+    /* the section's .pdf at 1:1 on A4 landscape (the .svg and .png stay fitted) */
+    int section_one_to_one;
+    /* a setting's depth below the rim, dimensioned in the section (tippe
+     * build: the drawn setting's); has_depth 0: none */
+    int has_depth;
+    double depth_rim_z_mm, depth_end_z_mm, depth_x_mm;
+    char depth_label[64];
+    const char *depth_from; /* "the rim", "the rod's end" */
 } tippe_export_request;
 
 typedef struct {
@@ -79,6 +87,17 @@ int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
 void tippe_export_result_free(tippe_export_result *r);
 
 /* ---- the build sheet (src/export/build_sheet.c), from tippe_build_compute ---- */
+
+/* The setting the section drawings show: the flips one, else the first
+ * reachable (-1 when none). Its Z2, and for a weight measured from a rim or a
+ * rod's end its depth as a dimension: the rim's and the weight end's z, the
+ * x of the hole's wall (0 for a rod) and a label ("flips: 5.5 turns");
+ * *has_depth 0 when there is no reference. */
+int tippe_export_shown_setting(const tippe_build_sheet *s, double *z2_mm, int *has_depth,
+                               double *rim_z_mm, double *end_z_mm, double *x_mm, char *label,
+                               size_t label_size);
+/* What the sheet's depths start from: "the rim", "the rod's end". */
+const char *tippe_export_depth_from(const tippe_build_sheet *s);
 
 /* Writes setting family's gauge as binary STL (TIPPE_EINPUT if none applies). */
 int tippe_export_gauge_write(const tippe_build_sheet *s, int family, const char *path,

@@ -52,6 +52,10 @@ static int build_parse(build_args *a, int argc, char **argv)
                  "\"3-in-1 on paper only\" rather than \"3-in-1 and settable\""},
         {.name = "no-export", .kind = TIPPE_CLI_FLAG, .value = &a->no_export,
          .help = "write the sheet only, not the files to print"},
+        {.name = "one-to-one", .kind = TIPPE_CLI_FLAG, .value = &a->q.section_one_to_one,
+         .help = "write the section's PDF (STEM-section.pdf) at 1:1 on an A4 landscape\n"
+                 "page, with a 50 mm bar to check the print's scale: print it at 100 %\n"
+                 "and hold the part or a caliper against it (the SVG and PNG stay fitted)"},
         {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
          .help = "print the sheet as one JSON object"},
         {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
@@ -61,7 +65,8 @@ static int build_parse(build_args *a, int argc, char **argv)
     tippe_cli_spec spec = {
         .verb = VERB,
         .synopsis = "DESIGN.json -o DIR [--catalogue FILE] [--clearance-mm MM] [--hole FIT]\n"
-                    "       [--min-setting-mm MM] [--no-export] [--json] [--set FIELD=VALUE]",
+                    "       [--min-setting-mm MM] [--no-export] [--one-to-one] [--json]\n"
+                    "       [--set FIELD=VALUE]",
         .about = "What a maker follows, from the design's numbers: for each behaviour (stays\n"
                  "up, flips, hangs) the robust range of Z2 (the widest zone within the travel\n"
                  "where the model applies, less its tolerance bands) as the depth of the\n"
@@ -85,6 +90,9 @@ static int build_parse(build_args *a, int argc, char **argv)
     int rc = tippe_cli_parse(&spec, argc, argv, &a->path, &n);
     if (rc)
         return rc;
+    if (a->q.section_one_to_one && a->no_export)
+        return tippe_cli_usage_error(VERB, "--one-to-one draws the exported section at 1:1: "
+                                           "not with --no-export");
     if (!a->hole)
         a->o.hole_fit = TIPPE_BUILD_HOLE_DESIGN;
     else if (!strcmp(a->hole, "tap"))

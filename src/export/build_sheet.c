@@ -250,12 +250,11 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
     cairo_set_source_rgb(cr, 0, 0, 0);
 
     /* the section, with the weight at the flip's setting (else the first there is) */
-    double z2 = NAN;
-    for (int f = 2; f >= 0; f--)
-        if (s->set[f].reachable)
-            z2 = s->set[f].set_z2_mm;
-    if (s->set[1].reachable)
-        z2 = s->set[1].set_z2_mm;
+    double z2 = NAN, rim_z = 0, end_z = 0, depth_x = 0;
+    int has_depth = 0;
+    char depth_label[64] = "";
+    tippe_export_shown_setting(s, &z2, &has_depth, &rim_z, &end_z, &depth_x, depth_label,
+                               sizeof depth_label);
     if (!isfinite(z2))
         z2 = 0.5 * (s->travel_from_mm + s->travel_to_mm);
     tippe_top top;
@@ -282,7 +281,13 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
                                .has_cut = s->needs_split,
                                .joint = s->joint_ring,
                                .cut_z_mm = 0,
-                               .n_sockets = have_ps ? ps.n_sockets : 0};
+                               .n_sockets = have_ps ? ps.n_sockets : 0,
+                               .has_depth = has_depth,
+                               .depth_rim_z_mm = rim_z,
+                               .depth_end_z_mm = end_z,
+                               .depth_x_mm = depth_x,
+                               .depth_label = depth_label,
+                               .depth_from = tippe_export_depth_from(s)};
     for (int k = 0; k < o.n_sockets; k++) {
         o.socket_part[k] = ps.socket_part[k];
         o.socket_r_mm[k] = ps.socket_r_mm[k];

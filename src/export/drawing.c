@@ -20,6 +20,11 @@
 #define TITLE_PX 86
 #define LEGEND_PX 92
 #define MARGIN_PX 24
+/* A4 landscape in points, and the factor the 1200 x 1000 page is drawn at on
+ * it (its height fills the sheet). */
+#define A4_W_PT 841.89
+#define A4_H_PT 595.28
+#define A4_K (A4_H_PT / PAGE_H)
 
 typedef struct {
     double r, g, b;
@@ -51,6 +56,7 @@ typedef struct {
     item *it;
     double xmin, xmax, ymin, ymax; /* world window, mm */
     double scale, ox, oy;          /* px = ox + scale x, py = oy - scale y */
+    int too_big;                   /* a fixed scale (1:1) does not fit the page */
     int fail;
 } dlist;
 
@@ -476,6 +482,20 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
             diameter_dim(L, name, s.radius_mm, s.z_mm + dz, y_line, extra);
         }
     }
+    if (o->has_depth) {
+        /* the sheet's setting: what a caliper's depth rod on the rim reads */
+        double x_line = R + 6 + 12 * right_k++, y0 = o->depth_end_z_mm, y1 = o->depth_rim_z_mm;
+        double depth = fabs(y1 - y0), yl = label_clear_of_cut(o, 0.5 * (y0 + y1), fmin(y0, y1),
+                                                              fmax(y0, y1));
+        line(L, o->depth_x_mm, y0, x_line + 1.5, y0, MOVING, 0.7, 0, 0, 0);
+        line(L, o->depth_x_mm, y1, x_line + 1.5, y1, MOVING, 0.7, 0, 0, 0);
+        line(L, x_line, y0, x_line, y1, MOVING, 1.2, 0, 1, 1);
+        dim_text(L, x_line + 1.2, yl - 0.6, 0, "setting.depth_mm", depth, "%.2f", depth);
+        text(L, x_line + 1.2, yl - 3.2, 0, 12, MOVING, "depth below %s",
+             o->depth_from ? o->depth_from : "the rim");
+        if (o->depth_label)
+            text(L, x_line + 1.2, yl - 6.4, 0, 12, MOVING, "%s", o->depth_label);
+    }
 }
 
 static void draw_marks_and_travel(dlist *L, const tippe_design *d, const tippe_drawing_options *o)
@@ -492,7 +512,9 @@ static void draw_marks_and_travel(dlist *L, const tippe_design *d, const tippe_d
         line(L, xz, 0, xz, o->z2_mm, DIM, 1, 0, 1, 1);
     dim_text(L, xz - 1.2, 0.5 * o->z2_mm - 0.6, 2, "z2_mm", o->z2_mm, "Z2 = %.4g", o->z2_mm);
     /* travel bracket of the weight's midpoint */
-    double xb = -R - 20;
+    /* at 1:1 the labels are larger against the top: the bracket moves clear of
+     * Z2's label */
+    double xb = -R - (o->one_to_one ? 38 : 20);
     line(L, xb, t0, xb, t1, MOVING, 2.2, 0, 0, 0);
     line(L, xb, t0, xb + 2, t0, MOVING, 2.2, 0, 0, 0);
     line(L, xb, t1, xb + 2, t1, MOVING, 2.2, 0, 0, 0);
@@ -611,10 +633,10 @@ static double text_px(const item *t)
 
 /* Fits everything drawn in mm (labels included, at the scale being fitted)
  * into the page between the title and the legend. */
-static void layout(dlist *L)
+static void layout(dlist *L, double fixed_scale)
 {
     double w = PAGE_W - 2 * MARGIN_PX, h = PAGE_H - TITLE_PX - LEGEND_PX;
-    L->scale = 1;
+    L->scale = fixed_scale > 0 ? fixed_scale : 1;
     for (int pass = 0; pass < 3; pass++) {
         double x0 = 1e30, x1 = -1e30, y0 = 1e30, y1 = -1e30;
         for (int i = 0; i < L->n; i++) {
@@ -642,8 +664,10 @@ static void layout(dlist *L)
             }
         }
         L->xmin = x0, L->xmax = x1, L->ymin = y0, L->ymax = y1;
-        L->scale = fmin(w / (x1 - x0), h / (y1 - y0));
+        if (!(fixed_scale > 0))
+            L->scale = fmin(w / (x1 - x0), h / (y1 - y0));
     }
+    L->too_big = L->scale * (L->xmax - L->xmin) > w || L->scale * (L->ymax - L->ymin) > h;
     L->ox = MARGIN_PX + (w - L->scale * (L->xmax - L->xmin)) / 2 - L->scale * L->xmin;
     L->oy = TITLE_PX + (h - L->scale * (L->ymax - L->ymin)) / 2 + L->scale * L->ymax;
 }
@@ -784,11 +808,19 @@ static cairo_status_t to_file(void *closure, const unsigned char *data, unsigned
                                                               : CAIRO_STATUS_WRITE_ERROR;
 }
 
-static int write_cairo(const dlist *L, FILE *f, int pdf)
+static int write_cairo(const dlist *L, FILE *f, int pdf, int a4)
 {
-    cairo_surface_t *sf = pdf ? cairo_pdf_surface_create_for_stream(to_file, f, PAGE_W, PAGE_H)
-                              : cairo_image_surface_create(CAIRO_FORMAT_RGB24, PAGE_W, PAGE_H);
+    cairo_surface_t *sf =
+        pdf ? cairo_pdf_surface_create_for_stream(to_file, f, a4 ? A4_W_PT : PAGE_W,
+                                                  a4 ? A4_H_PT : PAGE_H)
+            : cairo_image_surface_create(CAIRO_FORMAT_RGB24, PAGE_W, PAGE_H);
     cairo_t *cr = cairo_create(sf);
+    if (a4) {
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_paint(cr);
+        cairo_translate(cr, (A4_W_PT - A4_K * PAGE_W) / 2, 0);
+        cairo_scale(cr, A4_K, A4_K);
+    }
     render_cairo(L, cr);
     int ok = cairo_status(cr) == CAIRO_STATUS_SUCCESS;
     cairo_destroy(cr);
@@ -928,14 +960,32 @@ static void dlist_free(dlist *L)
 
 /* The drawing's display list: parts, marks, dimensions, title and legend, laid
  * out; L->fail when memory ran out. */
-static void compose(dlist *L, const tippe_design *d, const tippe_drawing_options *o)
+
+/* The page's units per mm of the top at 1:1 on A4: a PDF point is 1/72 in. */
+static double one_to_one_scale(void) { return 72.0 / 25.4 / A4_K; }
+
+/* A 50 mm bar under the top at 1:1, to check the printer kept the scale. */
+static void scale_bar(dlist *L, const tippe_design *d)
+{
+    double R = tippe_design_radius_mm(d), y = -R - 10;
+    line(L, -25, y, 25, y, BLACK, 2, 0, 0, 0);
+    line(L, -25, y - 1.5, -25, y + 1.5, BLACK, 1.5, 0, 0, 0);
+    line(L, 25, y - 1.5, 25, y + 1.5, BLACK, 1.5, 0, 0, 0);
+    text(L, 0, y - 5, 1, 13, BLACK, "scale 1:1 - this bar is 50 mm when printed at 100 %% "
+                                     "(actual size, not fit to page)");
+}
+
+static void compose(dlist *L, const tippe_design *d, const tippe_drawing_options *o,
+                    int one_to_one)
 {
     material_list mats = {0};
     draw_parts(L, d, o, &mats);
     draw_marks_and_travel(L, d, o);
     draw_dimensions(L, d, o);
+    if (one_to_one)
+        scale_bar(L, d);
     draw_title_legend(L, d, o, &mats);
-    layout(L);
+    layout(L, one_to_one ? one_to_one_scale() : 0);
 }
 
 int tippe_drawing_render(const tippe_design *d, const tippe_drawing_options *o, void *cairo,
@@ -943,7 +993,7 @@ int tippe_drawing_render(const tippe_design *d, const tippe_drawing_options *o, 
 {
     cairo_t *cr = cairo;
     dlist L = {0};
-    compose(&L, d, o);
+    compose(&L, d, o, 0);
     if (L.fail) {
         dlist_free(&L);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory while drawing");
@@ -967,11 +1017,26 @@ int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, c
     int svg = !strcmp(ext, "svg"), png = !strcmp(ext, "png"), pdf = !strcmp(ext, "pdf");
     if (!svg && !png && !pdf)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: a drawing is .svg, .png or .pdf", path);
+    if (o->one_to_one && !pdf)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: a drawing at 1:1 is a .pdf (paper has "
+                                                  "a size; a screen or an SVG viewer does not)",
+                               path);
     dlist L = {0};
-    compose(&L, d, o);
+    compose(&L, d, o, o->one_to_one);
     if (L.fail) {
         dlist_free(&L);
         return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory while drawing", path);
+    }
+    if (o->one_to_one && L.too_big) {
+        double w_mm = L.xmax - L.xmin, h_mm = L.ymax - L.ymin;
+        dlist_free(&L);
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "%s: at 1:1 the drawing (with its labels) is %.0f x %.0f mm, "
+                               "larger than an A4 landscape page can hold (%.0f x %.0f mm): "
+                               "use the scaled drawing",
+                               path, w_mm, h_mm,
+                               (PAGE_W - 2 * MARGIN_PX) / one_to_one_scale(),
+                               (PAGE_H - TITLE_PX - LEGEND_PX) / one_to_one_scale());
     }
     tippe_report_file rf;
     int rc = tippe_report_open(&rf, path, "the drawing", err);
@@ -980,7 +1045,7 @@ int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, c
         if (svg)
             write_svg(&L, rf.f);
         else
-            ok = write_cairo(&L, rf.f, pdf);
+            ok = write_cairo(&L, rf.f, pdf, o->one_to_one);
         if (ok)
             rc = tippe_report_commit(&rf, err);
         else

@@ -36,6 +36,17 @@ typedef struct {
      * drawn to their floors and its length dimensioned; n_sockets 0: none */
     int n_sockets, socket_part[2];
     double socket_r_mm[2], socket_rim_z_mm[2], socket_floor_z_mm[2];
+    /* the build sheet's setting: the depth from the rim (depth_rim_z_mm) to
+     * the weight's end (depth_end_z_mm) as a dimension, at depth_x_mm from the
+     * axis (the hole's wall), labelled "depth_label"; has_depth 0: none */
+    int has_depth;
+    double depth_rim_z_mm, depth_end_z_mm, depth_x_mm;
+    const char *depth_label;
+    const char *depth_from; /* "the rim" (NULL), "the rod's end" */
+    /* a .pdf at 1:1 on an A4 landscape page (1 mm of the top is 1 mm of
+     * paper when printed at 100 %), with a 50 mm bar to check it; TIPPE_EINPUT
+     * when the drawing does not fit the page at 1:1 */
+    int one_to_one;
 } tippe_drawing_options;
 
 int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, const char *path,

@@ -143,7 +143,13 @@ static int write_drawings(const tippe_design *d, const tippe_export_request *q,
                                .has_cut = q->profile.split,
                                .joint = q->profile.joint,
                                .cut_z_mm = q->profile.split_z_mm,
-                               .n_sockets = s->n_sockets};
+                               .n_sockets = s->n_sockets,
+                               .has_depth = q->has_depth,
+                               .depth_rim_z_mm = q->depth_rim_z_mm,
+                               .depth_end_z_mm = q->depth_end_z_mm,
+                               .depth_x_mm = q->depth_x_mm,
+                               .depth_label = q->depth_label[0] ? q->depth_label : NULL,
+                               .depth_from = q->depth_from};
     for (int k = 0; k < s->n_sockets; k++) {
         o.socket_part[k] = s->socket_part[k];
         o.socket_r_mm[k] = s->socket_r_mm[k];
@@ -151,6 +157,8 @@ static int write_drawings(const tippe_design *d, const tippe_export_request *q,
         o.socket_floor_z_mm[k] = s->socket_floor_z_mm[k];
     }
     for (int k = first; k < n; k++) {
+        const char *dot = strrchr(paths[k], '.');
+        o.one_to_one = q->section_one_to_one && dot && !strcmp(dot, ".pdf");
         int rc = tippe_drawing_write(d, &o, paths[k], err);
         if (rc)
             return rc;

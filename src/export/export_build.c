@@ -8,6 +8,7 @@
 
 #include <cjson/cJSON.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -63,12 +64,13 @@ int tippe_export_build_write(const tippe_design *d, const tippe_build_sheet *s,
 {
     if (q) {
         /* the drawing shows the weight where the flip is set, else at the first
-         * setting there is */
-        for (int f = 2; f >= 0; f--)
-            if (s->set[f].reachable)
-                q->z2_mm = s->set[f].set_z2_mm;
-        if (s->set[1].reachable)
-            q->z2_mm = s->set[1].set_z2_mm;
+         * setting there is, with its depth below the rim dimensioned */
+        double z2 = NAN;
+        if (tippe_export_shown_setting(s, &z2, &q->has_depth, &q->depth_rim_z_mm,
+                                       &q->depth_end_z_mm, &q->depth_x_mm, q->depth_label,
+                                       sizeof q->depth_label) >= 0)
+            q->z2_mm = z2;
+        q->depth_from = tippe_export_depth_from(s);
     }
     int rc = write_sheet(d, s, paths, err);
     if (!q || rc)
