@@ -121,6 +121,11 @@ typedef struct {
     int launch_status;             /* TIPPE_OK or the dynamics' error */
     int verdict_ok;                /* the verdict is the behaviour's */
     double launch_t_s;             /* when it was decided */
+    /* the launch's tilt at start and at its end, and the pole (+1, -1; 0: its
+     * sphere) whose opening the top stands on then (tippe_design_cap_at_tilt);
+     * rest_pole: the pole down at theta = 0 (the centre of mass's side) */
+    double launch_theta0_rad, launch_theta_end_rad;
+    int launch_cap_start, launch_cap_end, rest_pole;
     /* settable: a robust width of at least the sheet's min_setting_mm */
     double robust_width_mm;        /* robust_to - robust_from, 0 when none is robust */
     int settable;
@@ -275,6 +280,19 @@ typedef struct {
     } advice[6];
     /* how many changed designs were swept for the advice */
     int n_advice_tried;
+    /* the poles where a hole opens (tippe_design_polar_caps at the drawn
+     * setting), and fixes for them, each tried by sweeping the changed design
+     * (verdict as tippe_build_verdict: 2 settable, 1 on paper, 0 not, -1 failed) */
+    int n_caps;
+    tippe_design_cap caps[2];
+    int n_pole_fixes;
+    struct {
+        char text[640];
+        int n_set;
+        char set[3][200];
+        int verdict;
+        double narrowest_mm;
+    } pole_fix[2];
     /* a printed part not yet weighed: the step to weigh it and run again when
      * the verdict differs within its infill tolerance, else a note that
      * weighing would not change it ("" for none) */
@@ -302,6 +320,10 @@ void tippe_build_options_default(tippe_build_options *o);
  * setting (launch_status), not returned. */
 int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                         tippe_build_sheet *out, tippe_error *err);
+
+/* "; contact INVALID: starts on the hole's rim at +z" for a launch check that
+ * starts or ends on a pole's opening, else "". */
+const char *tippe_build_cap_text(const tippe_build_setting *x);
 
 /* Advice k's overrides as a command line's options: "--set A --set B". */
 void tippe_build_advice_sets(const tippe_build_sheet *s, int k, char *buf, size_t size);

@@ -447,6 +447,18 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
         s->verdict = rec.verdict;
         s->launch_t_s = rec.t_s;
         s->verdict_ok = rec.verdict == expected_verdict(f);
+        /* where the launch starts and ends against the poles' openings (issue
+         * 25.7): on a hole's rim the model's sphere contact does not hold */
+        tippe_design_cap caps[2];
+        tippe_design_polar_caps(d, s->set_z2_mm, caps);
+        int side = top.com_side ? top.com_side : 1;
+        s->launch_theta0_rad = ic.theta;
+        s->launch_theta_end_rad = rec.theta_final_rad;
+        s->launch_cap_start = tippe_design_cap_at_tilt(caps, side, ic.theta);
+        s->launch_cap_end = isfinite(rec.theta_final_rad)
+                                ? tippe_design_cap_at_tilt(caps, side, rec.theta_final_rad)
+                                : 0;
+        s->rest_pole = side;
     }
 }
 
@@ -814,6 +826,7 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
         tippe_build_weigh_offset(d, out);
         compute_settings(&c);
         compute_settable(&c);
+        tippe_build_poles(d, out);
         compute_bill_and_steps(&c);
         compute_notes(&c);
     }

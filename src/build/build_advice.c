@@ -412,34 +412,7 @@ void tippe_build_weigh_offset(const tippe_design *d, tippe_build_sheet *s)
 
 /* ------------------------------------------------------ weighing */
 
-/* The sheet's verdict for d with the overrides: 2 settable, 1 3-in-1 on paper
- * only, 0 not 3-in-1, -1 when it does not load or sweep. */
-static int verdict_with(const tippe_design *d, const char *const *ov, int n, double min_setting_mm)
-{
-    tippe_design *v = NULL;
-    tippe_error e = {0};
-    tippe_build_setting set[3];
-    double from, to;
-    int verdict = -1;
-    if (!tippe_design_reload(d, ov, n, &v, &e) && !tippe_build_zones(v, set, &from, &to, &e)) {
-        int all = 1, wide = 1;
-        for (int f = 0; f < 3; f++) {
-            double w = set[f].reachable && set[f].robust
-                           ? set[f].robust_to_mm - set[f].robust_from_mm
-                           : 0;
-            all = all && set[f].reachable;
-            wide = wide && w >= min_setting_mm;
-        }
-        verdict = !all ? 0 : wide ? 2 : 1;
-    }
-    tippe_design_free(v);
-    return verdict;
-}
-
-static const char *verdict_name(int v)
-{
-    return v == 2 ? "3-in-1 and settable" : v == 1 ? "3-in-1 on paper only" : "not 3-in-1";
-}
+static const char *verdict_name(int v) { return tippe_build_verdict_name(v); }
 
 /* A printed part not yet weighed: its infill is the slicer's, within the
  * slicer-infill tolerance (docs/printing.md). Where the sheet's verdict
@@ -468,8 +441,8 @@ void tippe_build_weigh_step(const tippe_design *d, tippe_build_sheet *s)
         snprintf(set_lo, sizeof set_lo, "%s=%.10g", field, lo);
         snprintf(set_hi, sizeof set_hi, "%s=%.10g", field, hi);
         const char *ov_lo[1] = {set_lo}, *ov_hi[1] = {set_hi};
-        int v_lo = verdict_with(d, ov_lo, 1, s->min_setting_mm);
-        int v_hi = verdict_with(d, ov_hi, 1, s->min_setting_mm);
+        int v_lo = tippe_build_verdict_with(d, ov_lo, 1, s->min_setting_mm, NULL);
+        int v_hi = tippe_build_verdict_with(d, ov_hi, 1, s->min_setting_mm, NULL);
         int v_now = s->settable ? 2 : s->three_in_one ? 1 : 0;
         if (v_lo < 0 || v_hi < 0)
             continue;

@@ -191,6 +191,20 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
             cJSON_AddStringToObject(j, "launch_verdict", tippe_verdict_name(x->verdict));
             cJSON_AddBoolToObject(j, "launch_as_expected", x->verdict_ok);
             cJSON_AddNumberToObject(j, "launch_decided_s", x->launch_t_s);
+            cJSON_AddNumberToObject(j, "launch_theta0_rad", x->launch_theta0_rad);
+            cJSON_AddItemToObject(j, "launch_theta_end_rad", num(x->launch_theta_end_rad));
+            cJSON_AddNumberToObject(j, "rest_pole", x->rest_pole);
+            cJSON *oc = cJSON_AddObjectToObject(j, "launch_on_polar_cap");
+            if (oc) {
+                if (x->launch_cap_start)
+                    cJSON_AddStringToObject(oc, "start", x->launch_cap_start > 0 ? "+z" : "-z");
+                else
+                    cJSON_AddNullToObject(oc, "start");
+                if (x->launch_cap_end)
+                    cJSON_AddStringToObject(oc, "end", x->launch_cap_end > 0 ? "+z" : "-z");
+                else
+                    cJSON_AddNullToObject(oc, "end");
+            }
         } else {
             cJSON_AddNullToObject(j, "launch_verdict");
             cJSON_AddBoolToObject(j, "launch_as_expected", 0);
@@ -252,6 +266,26 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         cJSON_AddNumberToObject(j, "narrowest_robust_mm", s->advice[k].narrowest_mm);
         cJSON_AddNumberToObject(j, "min_setting_mm", s->advice[k].min_setting_mm);
         cJSON_AddStringToObject(j, "advice", s->advice[k].text);
+    }
+    tippe_design_caps_json(o, s->caps);
+    cJSON *pf = cJSON_AddArrayToObject(o, "pole_fixes");
+    for (int k = 0; pf && k < s->n_pole_fixes; k++) {
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(pf, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        cJSON *sets = cJSON_AddArrayToObject(j, "set");
+        for (int i = 0; sets && i < s->pole_fix[k].n_set; i++)
+            cJSON_AddItemToArray(sets, cJSON_CreateString(s->pole_fix[k].set[i]));
+        cJSON_AddStringToObject(j, "verdict", s->pole_fix[k].verdict >= 0
+                                                  ? tippe_build_verdict_name(s->pole_fix[k].verdict)
+                                                  : "failed");
+        if (isfinite(s->pole_fix[k].narrowest_mm))
+            cJSON_AddNumberToObject(j, "narrowest_robust_mm", s->pole_fix[k].narrowest_mm);
+        else
+            cJSON_AddNullToObject(j, "narrowest_robust_mm");
+        cJSON_AddStringToObject(j, "fix", s->pole_fix[k].text);
     }
     cJSON *stp = cJSON_AddArrayToObject(o, "steps");
     for (int k = 0; stp && k < s->n_steps; k++)
@@ -321,7 +355,7 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
                     behaviours[k], families[k]);
             continue;
         }
-        char range[80], spin[320], check[120];
+        char range[80], spin[320], check[200];
         if (x->robust)
             snprintf(range, sizeof range, "%.2f .. %.2f mm", x->robust_from_mm, x->robust_to_mm);
         else
@@ -329,9 +363,9 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
                      x->to_mm);
         tippe_build_spin_text(s, k, spin, sizeof spin);
         if (x->launch_status == TIPPE_OK)
-            snprintf(check, sizeof check, "%s at %.1f rev/s%s%s", tippe_verdict_name(x->verdict),
+            snprintf(check, sizeof check, "%s at %.1f rev/s%s%s%s", tippe_verdict_name(x->verdict),
                      x->spin_launch_rev_s, x->verdict_ok ? " (as expected)" : " (NOT as expected)",
-                     x->beyond_hand ? "; beyond a hand spin" : "");
+                     x->beyond_hand ? "; beyond a hand spin" : "", tippe_build_cap_text(x));
         else
             snprintf(check, sizeof check, "not run");
         double lo = fmin(x->depth_from_mm, x->depth_to_mm);
@@ -357,6 +391,25 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
         }
         if (!s->n_advice)
             fprintf(f, "- %s\n", tippe_build_advice_none());
+    }
+    if (s->n_caps) {
+        fprintf(f, "\nThe poles: ");
+        for (int k = 0; k < 2; k++)
+            if (s->caps[k].half_angle_rad > 0)
+                fprintf(f, "the hole '%s' opens at the %s pole (%.2f mm across): tilted less than "
+                           "%.1f deg on it the top stands on the hole's rim, not on its sphere. ",
+                        md(s->caps[k].part, m1, sizeof m1), k ? "-z" : "+z",
+                        2 * s->caps[k].radius_mm, s->caps[k].half_angle_rad * 180 / M_PI);
+        fprintf(f, "%s\n", s->n_pole_fixes ? "Fixes, each tried by sweeping the changed design:"
+                                           : "");
+        if (s->n_pole_fixes)
+            fprintf(f, "\n");
+        for (int k = 0; k < s->n_pole_fixes; k++) {
+            fprintf(f, "- %s (`", md(s->pole_fix[k].text, m1, sizeof m1));
+            for (int i = 0; i < s->pole_fix[k].n_set; i++)
+                fprintf(f, "%s--set %s", i ? " " : "", s->pole_fix[k].set[i]);
+            fprintf(f, "`)\n");
+        }
     }
     if (s->has_thread) {
         fprintf(f, "\nThread: %s x %g mm", md(s->thread_name, m1, sizeof m1), s->thread.pitch_mm);
@@ -426,4 +479,25 @@ const char *tippe_build_advice_none(void)
     return "No change tried makes it settable: the slicer's infill steps, the table's bought "
            "materials, the catalogue's screws or whole-mm lengths (half to double), alone or "
            "in pairs.";
+}
+
+const char *tippe_build_cap_text(const tippe_build_setting *x)
+{
+    if (x->launch_status != TIPPE_OK || (!x->launch_cap_start && !x->launch_cap_end))
+        return "";
+    if (x->launch_cap_start && x->launch_cap_end)
+        return x->launch_cap_start > 0
+                   ? (x->launch_cap_end > 0 ? "; contact INVALID: starts and ends on the hole's "
+                                              "rim at +z"
+                                            : "; contact INVALID: starts on the hole's rim at "
+                                              "+z, ends on it at -z")
+                   : (x->launch_cap_end < 0 ? "; contact INVALID: starts and ends on the hole's "
+                                              "rim at -z"
+                                            : "; contact INVALID: starts on the hole's rim at "
+                                              "-z, ends on it at +z");
+    if (x->launch_cap_start)
+        return x->launch_cap_start > 0 ? "; contact INVALID: starts on the hole's rim at +z"
+                                       : "; contact INVALID: starts on the hole's rim at -z";
+    return x->launch_cap_end > 0 ? "; contact INVALID: ends on the hole's rim at +z"
+                                 : "; contact INVALID: ends on the hole's rim at -z";
 }

@@ -81,3 +81,38 @@ int tippe_build_zones(const tippe_design *d, tippe_build_setting set[3], double 
     tippe_sweep_result_free(&r);
     return rc;
 }
+
+/* The sheet's verdict for d with the overrides: 2 settable, 1 3-in-1 on paper
+ * only, 0 not 3-in-1, -1 when it does not load or sweep; the settings in set
+ * (if not NULL) and their travel. */
+int tippe_build_verdict_with(const tippe_design *d, const char *const *ov, int n,
+                             double min_setting_mm, tippe_build_zones_of *out)
+{
+    tippe_design *v = NULL;
+    tippe_error e = {0};
+    tippe_build_zones_of z;
+    int verdict = -1;
+    if (!tippe_design_reload(d, ov, n, &v, &e) &&
+        !tippe_build_zones(v, z.set, &z.travel_from_mm, &z.travel_to_mm, &e)) {
+        int all = 1, wide = 1;
+        z.narrowest_mm = INFINITY;
+        for (int f = 0; f < 3; f++) {
+            double w = z.set[f].reachable && z.set[f].robust
+                           ? z.set[f].robust_to_mm - z.set[f].robust_from_mm
+                           : 0;
+            z.narrowest_mm = fmin(z.narrowest_mm, w);
+            all = all && z.set[f].reachable;
+            wide = wide && w >= min_setting_mm;
+        }
+        verdict = !all ? 0 : wide ? 2 : 1;
+        if (out)
+            *out = z;
+    }
+    tippe_design_free(v);
+    return verdict;
+}
+
+const char *tippe_build_verdict_name(int v)
+{
+    return v == 2 ? "3-in-1 and settable" : v == 1 ? "3-in-1 on paper only" : "not 3-in-1";
+}

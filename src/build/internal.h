@@ -26,6 +26,16 @@ void tippe_build_steps(tippe_build_sheet *s);
 /* build_zones.c */
 int tippe_build_zones(const tippe_design *d, tippe_build_setting set[3], double *travel_from_mm,
                       double *travel_to_mm, tippe_error *err);
+typedef struct {
+    tippe_build_setting set[3];
+    double travel_from_mm, travel_to_mm, narrowest_mm;
+} tippe_build_zones_of;
+int tippe_build_verdict_with(const tippe_design *d, const char *const *ov, int n,
+                             double min_setting_mm, tippe_build_zones_of *out);
+const char *tippe_build_verdict_name(int v);
+
+/* build_poles.c */
+void tippe_build_poles(const tippe_design *d, tippe_build_sheet *s);
 
 /* build_advice.c */
 void tippe_build_advise(const tippe_design *d, const tippe_build_options *o, tippe_build_sheet *s);

@@ -168,9 +168,9 @@ static double settings_table(cairo_t *cr, const tippe_build_sheet *s, double x, 
             else
                 tippe_build_spin_text(s, f, c[6], sizeof c[6]);
             if (t->launch_status == TIPPE_OK)
-                snprintf(c[7], sizeof c[7], "%s at %.1f rev/s: %s%s", tippe_verdict_name(t->verdict),
+                snprintf(c[7], sizeof c[7], "%s at %.1f rev/s: %s%s%s", tippe_verdict_name(t->verdict),
                          t->spin_launch_rev_s, t->verdict_ok ? "as expected" : "NOT as expected",
-                         t->beyond_hand ? " (beyond a hand spin)" : "");
+                         t->beyond_hand ? " (beyond a hand spin)" : "", tippe_build_cap_text(t));
             else
                 snprintf(c[7], sizeof c[7], "not run");
         }
@@ -345,6 +345,24 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
         }
         if (!s->n_advice)
             y = wrapped(cr, tippe_build_advice_none(), rx, y, rw, 9.5, 0);
+    }
+    if (s->n_caps) {
+        y += 10;
+        heading(cr, "The poles: a hole opens there", rx, y);
+        y += 16;
+        for (int k = 0; k < 2; k++)
+            if (s->caps[k].half_angle_rad > 0) {
+                snprintf(t, sizeof t,
+                         "'%s' opens at the %s pole (%.2f mm across): tilted less than %.1f deg "
+                         "on it the top stands on the hole's rim, not on its sphere.",
+                         s->caps[k].part, k ? "-z" : "+z", 2 * s->caps[k].radius_mm,
+                         s->caps[k].half_angle_rad * 180 / M_PI);
+                y = wrapped(cr, t, rx, y, rw, 9, 0) + 1;
+            }
+        for (int k = 0; k < s->n_pole_fixes; k++) {
+            snprintf(t, sizeof t, "- %s", s->pole_fix[k].text);
+            y = wrapped(cr, t, rx, y, rw, 9, 0) + 2;
+        }
     }
 
     /* below: the settings, then the steps */
