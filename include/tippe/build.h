@@ -126,6 +126,7 @@ typedef struct {
      * rest_pole: the pole down at theta = 0 (the centre of mass's side) */
     double launch_theta0_rad, launch_theta_end_rad;
     int launch_cap_start, launch_cap_end, rest_pole;
+    double launch_cap_time_s;      /* s the launch's contact spent on an opening, to launch_t_s */
     /* settable: a robust width of at least the sheet's min_setting_mm */
     double robust_width_mm;        /* robust_to - robust_from, 0 when none is robust */
     int settable;

@@ -424,6 +424,11 @@ typedef struct {
      * the work of a launch that never settles (mu = 0, or a t_end of millions of
      * periods, or a stiff law: the creep law at a small v_s). */
     long max_steps;
+    /* Where the surface is not the sphere (tippe_design_polar_caps): the half-
+     * angle of a hole's opening at the pole down at theta = 0 ([0]) and at the
+     * other pole ([1]), rad; 0 (the default) where the sphere is whole. The run
+     * records the time its contact spends within them (cap_time_s). */
+    double cap_half_angle_rad[2];
 } tippe_dynamics_options;
 
 /* Trajectory samples kept in memory (simulate's and check's --csv and --plot): pass
@@ -473,6 +478,12 @@ typedef struct {
                                     its spin falls back */
     double inverted_time_s;      /* s, model time spent above pi/2 (between accepted steps
                                     on the same side, up to the end of the run) */
+    /* s, model time the contact spent within a hole's opening at a pole
+     * (tippe_dynamics_options.cap_half_angle_rad: theta below [0] or above pi - [1]),
+     * between accepted steps both within, up to where the run stopped; the first
+     * and last times it was there (NAN: never). Where it is, the model's sphere
+     * contact does not hold. */
+    double cap_time_s, cap_first_s, cap_last_s;
     tippe_dynamics_sample last;  /* state where integration stopped */
     double J0, E0;               /* at launch */
     double jellett_rel_drift;    /* max |J - J0| / max(|J0|, 1e-6 C W R),
@@ -556,6 +567,10 @@ typedef struct {
     double g;                 /* m/s^2 */
     double t_end;             /* s, bound on each launch's simulated time */
     int until_flip;           /* 1: follow a tip to its flip (t_flip_s), 0: stop at the proof */
+    /* the holes' openings at the pole down at theta = 0 and at the other, rad
+     * (tippe_launch_polar_caps; 0: the sphere is whole): each launch records the
+     * time its contact spends there (tippe_launch_record.cap_time_s) */
+    double cap_half_angle_rad[2];
     char accuracy_name[16];   /* a preset of tippe/physics.h, or "custom" */
     tippe_dynamics_accuracy accuracy;
 } tippe_launch_options;
@@ -626,6 +641,9 @@ typedef struct {
      * Rn_bound_N (NAN otherwise); a bounded launch has no end state (NAN) */
     double theta_lo_rad, theta_hi_rad, Rn_bound_N;
     double t_flip_s;         /* s, theta first passed pi/2 (NAN: not, or not followed) */
+    /* s, time the contact spent within a hole's opening at a pole up to t_s, and
+     * the first time it was there (NAN: never): the model does not hold there */
+    double cap_time_s, cap_first_s;
     int rolling;             /* Coulomb: rolling without slipping at the decision */
     int end_state_proved;    /* 0 under Coulomb friction with sticking: a trapped verdict
                                 proves the well and range, not the rest state */
@@ -642,6 +660,14 @@ typedef struct {
      * 0 it is not, -1 not comparable (lost_contact, undecided, no prediction). */
     int agrees;
 } tippe_launch_record;
+
+/* The half-angles of the holes' openings (tippe_design_polar_caps) at the pole
+ * the top of d at z2_mm rests on at theta = 0 (its centre of mass's side,
+ * top->com_side; +z when centred) into caps_rad[0], at the other into
+ * caps_rad[1]; 0 where the sphere is whole. For tippe_launch_options and
+ * tippe_dynamics_options.cap_half_angle_rad. */
+void tippe_launch_polar_caps(const tippe_design *d, double z2_mm, const tippe_top *top,
+                             double caps_rad[2]);
 
 /* Runs the given initial state (for `tippe check`) as tippe_launch_run runs a
  * drawn one: integrated and compared with theory. Returns the dynamics' status
@@ -701,6 +727,9 @@ typedef struct {
     long trapped, trapped_no_barrier;
     long rolling; /* decided rolling for ever (Coulomb friction with sticking) */
     double min_gap_over_margin;
+    /* launches whose contact lay within a hole's opening at a pole at some time
+     * up to their verdict (cap_first_s finite): the model does not hold there */
+    long on_cap;
 } tippe_launch_tally;
 
 /* TIPPE_ECOMPUTE if out of memory. */

@@ -29,6 +29,9 @@ typedef struct {
     /* a design's material standing out of its sphere at z2_mm (the model does
      * not apply there: tippe_design_protrusion_at); zero for an explicit top */
     tippe_design_protrusion protrusion;
+    /* a design's holes' openings at the pole it rests on at theta = 0 and at the
+     * other (tippe_launch_polar_caps), rad; 0 for an explicit top */
+    double cap_half_angle_rad[2];
     tippe_dynamics_model model;
     /* a design top: its ball's elastic constants (Pa; 0 if the materials table has none)
      * and material, for the patch law's Hertz radius */

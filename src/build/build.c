@@ -437,11 +437,14 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
     tippe_top top;
     tippe_dynamics_initial ic;
     tippe_launch_record rec;
+    tippe_launch_options lo = o->launch;
     int rc = tippe_design_top(d, s->set_z2_mm, &top, &e);
+    if (!rc) {
+        tippe_launch_polar_caps(d, s->set_z2_mm, &top, lo.cap_half_angle_rad);
+        rc = tippe_launch_central(&top, &lo, s->spin_launch_rev_s * rev, &ic, &e);
+    }
     if (!rc)
-        rc = tippe_launch_central(&top, &o->launch, s->spin_launch_rev_s * rev, &ic, &e);
-    if (!rc)
-        rc = tippe_launch_run_initial(&top, &o->launch, &ic, &rec, &e);
+        rc = tippe_launch_run_initial(&top, &lo, &ic, &rec, &e);
     s->launch_status = rc;
     if (!rc) {
         s->verdict = rec.verdict;
@@ -459,6 +462,7 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
                                 ? tippe_design_cap_at_tilt(caps, side, rec.theta_final_rad)
                                 : 0;
         s->rest_pole = side;
+        s->launch_cap_time_s = rec.cap_time_s;
     }
 }
 

@@ -194,6 +194,7 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
             cJSON_AddNumberToObject(j, "launch_theta0_rad", x->launch_theta0_rad);
             cJSON_AddItemToObject(j, "launch_theta_end_rad", num(x->launch_theta_end_rad));
             cJSON_AddNumberToObject(j, "rest_pole", x->rest_pole);
+            cJSON_AddNumberToObject(j, "launch_cap_time_s", x->launch_cap_time_s);
             cJSON *oc = cJSON_AddObjectToObject(j, "launch_on_polar_cap");
             if (oc) {
                 if (x->launch_cap_start)

@@ -327,6 +327,7 @@ cJSON *hands_json_tally(const tippe_launch_tally *t)
     if (!o)
         return NULL;
     cJSON_AddNumberToObject(o, "n", (double)t->n);
+    cJSON_AddNumberToObject(o, "on_polar_cap", (double)t->on_cap);
     cJSON_AddItemToObject(o, "counts", json_counts(t));
     cJSON_AddNumberToObject(o, "flips", (double)t->flips);
     if (t->flips)

@@ -43,7 +43,7 @@ static int write_launch_csv(const char *path, const tippe_launch_record *r, long
     fprintf(f, "index,draw,spin_rad_s,tilt_rad,theta_dot_rad_s,phi_dot_rad_s,U_m_s,"
                "V_m_s,verdict,t_s,theta_final_rad,spin_final_rad_s,J0_kg_m3_s,jellett_rel_drift,"
                "rhs_evals,theory,theory_hang_theta_rad,agrees,decided_by,barrier_gap_J,margin_J,"
-               "t_flip_s\n");
+               "t_flip_s,cap_time_s,cap_first_s\n");
     for (long i = 0; i < n; i++) {
         const tippe_launch_record *x = &r[i];
         fprintf(f, "%ld,%ld,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%s,%.10g,", x->index, x->draw,
@@ -64,6 +64,8 @@ static int write_launch_csv(const char *path, const tippe_launch_record *r, long
         csv_number(f, "%.4g", x->margin_J);
         fputc(',', f);
         csv_number(f, "%.10g", x->t_flip_s);
+        fprintf(f, ",%.10g,", x->cap_time_s); /* on a hole's rim at a pole (issue 25.7) */
+        csv_number(f, "%.10g", x->cap_first_s);
         fputc('\n', f);
     }
     return tippe_report_commit(&rf, err);
@@ -203,6 +205,13 @@ static void launch_text(const hands_args *a, const tippe_design *d, const tippe_
     tippe_design_protrusion pr;
     tippe_design_protrusion_at(d, a->z2_mm, &pr);
     tippe_cli_print_model_validity(&pr, a->z2_mm, "contact    ", "the outcomes above are");
+    if (t->on_cap)
+        printf("pole       INVALID for %ld of %ld launches: their contact lay within a hole's "
+               "opening at a pole (within %.1f deg of the pole they rest on, %.1f deg of the "
+               "other) before their verdict, where the top stands on the hole's rim, not on "
+               "its sphere\n",
+               t->on_cap, t->n, a->o.cap_half_angle_rad[0] * 180 / M_PI,
+               a->o.cap_half_angle_rad[1] * 180 / M_PI);
     print_theory_summary(t);
     printf("accuracy   largest Jellett drift %.2g; %.3g RHS evaluations; %.2f s on %d "
            "thread%s x %d rank%s (%.1f launches/s)\n",
@@ -260,6 +269,8 @@ int tippe_cli_launch(int argc, char **argv)
         rc = tippe_cli_fail(a.verb, &err, rc);
     if (!rc && (rc = tippe_design_top(d, a.z2_mm, &top, &err)) != 0)
         rc = tippe_cli_fail(a.verb, &err, rc);
+    if (!rc) /* each launch records its time on a hole's rim at a pole (issue 25.7) */
+        tippe_launch_polar_caps(d, a.z2_mm, &top, a.o.cap_half_angle_rad);
     tippe_launch_record *rec = NULL;
     if (!rc && !(rec = calloc((size_t)a.n, sizeof *rec))) {
         fprintf(stderr, "tippe launch: out of memory for %ld launches\n", a.n);

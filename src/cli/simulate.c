@@ -122,6 +122,12 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                "rad/s, contact speed %.3g m/s\n",
                r->last.t, r->last.theta, r->last.theta * 180 / M_PI, r->last.spin,
                r->last.slip_speed);
+    if (!isnan(r->cap_first_s))
+        printf("pole      INVALID contact for %.4g s: theta lay within a hole's opening at a pole "
+               "(%.1f deg of the pole it rests on, %.1f deg of the other) from t = %.4g s to "
+               "%.4g s, where the top stands on the hole's rim, not on its sphere\n",
+               r->cap_time_s, sc->cap_half_angle_rad[0] * 180 / M_PI,
+               sc->cap_half_angle_rad[1] * 180 / M_PI, r->cap_first_s, r->cap_last_s);
     if (!isnan(r->t_flip))
         printf("flip      theta passed 90 deg at t = %.6g s (model time)\n", r->t_flip);
     if (!isnan(r->t_fall))
@@ -418,6 +424,8 @@ int tippe_cli_simulate(int argc, char **argv)
      * trajectory asked for runs to t_end; a flip is followed to report its time. */
     opt.run_to_t_end = a.full || a.csv || a.plot;
     opt.until_flip = 1;
+    opt.cap_half_angle_rad[0] = sc.cap_half_angle_rad[0];
+    opt.cap_half_angle_rad[1] = sc.cap_half_angle_rad[1];
     samples buf = {0, 0, NULL};
     if ((rc = plan_samples(&a, &sc, &opt, &buf)) != 0)
         return rc;

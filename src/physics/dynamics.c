@@ -101,6 +101,7 @@ static void ctx_init(dyn_ctx *c, const tippe_dynamics_model *model, size_t dim)
     c->m = model->top.m;
     c->R = model->top.R;
     c->eps = model->top.eps;
+
     c->A = model->top.A;
     c->C = model->top.C;
     c->g = model->g;
@@ -489,6 +490,16 @@ static void run_monitor(run_state *rs, tippe_dynamics_result *res)
                                        (rs->theta_prev - s->theta);
     if (rs->theta_prev > 0.5 * M_PI && s->theta > 0.5 * M_PI)
         res->inverted_time_s += rs->t - rs->t_prev;
+    /* on a hole's rim at a pole (issue 25.7) */
+    const double *cap = rs->opt->cap_half_angle_rad;
+    const int on = s->theta < cap[0] || M_PI - s->theta < cap[1];
+    if (on) {
+        if (isnan(res->cap_first_s))
+            res->cap_first_s = rs->t;
+        res->cap_last_s = rs->t;
+        if (rs->theta_prev < cap[0] || M_PI - rs->theta_prev < cap[1])
+            res->cap_time_s += rs->t - rs->t_prev;
+    }
     rs->theta_prev = s->theta;
 }
 
@@ -735,6 +746,7 @@ static void run_result_init(tippe_dynamics_result *res)
     res->barrier_gap_J = res->margin_J = res->Rn_bound_N = NAN;
     res->t_flip = NAN;
     res->t_fall = NAN;
+    res->cap_first_s = res->cap_last_s = NAN;
 }
 
 int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_initial *ic,
@@ -758,6 +770,8 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
         res->unproved_reason = TIPPE_PATCH_UNPROVED_REASON;
     run_try_stick(&rs, res);
     rs.theta_prev = rs.theta_launch = rs.smp.theta;
+    if (rs.smp.theta < opt->cap_half_angle_rad[0] || M_PI - rs.smp.theta < opt->cap_half_angle_rad[1])
+        res->cap_first_s = res->cap_last_s = rs.t; /* launched on a hole's rim */
     res->min_Rn = rs.ct.Rn;
     res->final = rs.smp;
     if (rs.traj)

@@ -231,6 +231,8 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->t_s = rec->theta_final_rad = rec->spin_final_rad_s = NAN;
     rec->how = TIPPE_DECIDED_T_END;
     rec->barrier_gap_J = rec->margin_J = rec->t_flip_s = NAN;
+    rec->cap_time_s = 0;
+    rec->cap_first_s = NAN;
     rec->theta_lo_rad = rec->theta_hi_rad = rec->Rn_bound_N = NAN;
     rec->J0 = rec->jellett_rel_drift = NAN;
     rec->rhs_evals = 0;
@@ -243,6 +245,8 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     opt.t_end = o->t_end;
     opt.accuracy = o->accuracy;
     opt.until_flip = o->until_flip;
+    opt.cap_half_angle_rad[0] = o->cap_half_angle_rad[0];
+    opt.cap_half_angle_rad[1] = o->cap_half_angle_rad[1];
     tippe_dynamics_result res;
     rec->status = tippe_dynamics_run(&m, ic, &opt, &res, err);
     if (rec->status != TIPPE_OK)
@@ -258,6 +262,8 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->theta_hi_rad = res.theta_hi_rad;
     rec->Rn_bound_N = res.Rn_bound_N;
     rec->t_flip_s = res.t_flip;
+    rec->cap_time_s = res.cap_time_s;
+    rec->cap_first_s = res.cap_first_s;
     rec->rolling = res.rolling;
     rec->end_state_proved = res.end_state_proved;
     rec->J0 = res.J0;
@@ -413,6 +419,7 @@ int tippe_launch_tally_records(const tippe_launch_record *r, long n, tippe_launc
         if (x->jellett_rel_drift > out->max_jellett_rel_drift)
             out->max_jellett_rel_drift = x->jellett_rel_drift;
         out->rhs_evals += (double)x->rhs_evals;
+        out->on_cap += x->status == TIPPE_OK && isfinite(x->cap_first_s);
     }
     long m_flip = 0;
     out->min_gap_over_margin = INFINITY;
@@ -564,4 +571,16 @@ int tippe_launch_patch_modulus(const tippe_design *d, const char *table, double 
                                "(--patch-mm)",
                                mat[0] ? mat : "(inline density)");
     return tippe_contact_hertz_modulus(Eb, nub, Et, nut, E_star_pa, err);
+}
+
+void tippe_launch_polar_caps(const tippe_design *d, double z2_mm, const tippe_top *top,
+                             double caps_rad[2])
+{
+    tippe_design_cap caps[2];
+    caps_rad[0] = caps_rad[1] = 0;
+    if (!tippe_design_polar_caps(d, z2_mm, caps))
+        return;
+    const int rest = top->com_side ? top->com_side : 1; /* caps[0] is +z, caps[1] -z */
+    caps_rad[0] = caps[rest > 0 ? 0 : 1].half_angle_rad;
+    caps_rad[1] = caps[rest > 0 ? 1 : 0].half_angle_rad;
 }

@@ -282,6 +282,7 @@ static int read_explicit_top(tippe_json_reader *c, const cJSON *top, tippe_scena
     s->design_path[0] = '\0';
     s->z2_mm = NAN;
     memset(&s->protrusion, 0, sizeof s->protrusion);
+    s->cap_half_angle_rad[0] = s->cap_half_angle_rad[1] = 0;
     return TIPPE_OK;
 }
 
@@ -341,6 +342,8 @@ static int read_design_top(tippe_json_reader *c, const cJSON *top, const cJSON *
                                   : tippe_error_set(c->err, rc, "%s", derr.msg);
     rc = tippe_design_top(d, s->z2_mm, &s->model.top, &derr);
     tippe_design_protrusion_at(d, s->z2_mm, &s->protrusion);
+    if (!rc)
+        tippe_launch_polar_caps(d, s->z2_mm, &s->model.top, s->cap_half_angle_rad);
     const char *mat = "";
     if (!tippe_design_ball_elastic(d, &s->ball_E_pa, &s->ball_nu, &mat))
         s->ball_E_pa = s->ball_nu = 0.0;

@@ -100,9 +100,13 @@ int tippe_sweep_check_run(const tippe_design *d, double z2_mm, const tippe_launc
     out->d = d;
     out->z2_mm = z2_mm;
     int rc;
-    if ((rc = tippe_design_top(d, z2_mm, &out->top, err)) != 0 ||
-        (rc = tippe_launch_central(&out->top, o, spin_rad_s, &out->ic, err)) != 0 ||
-        (rc = tippe_launch_run_initial(&out->top, o, &out->ic, &out->rec, err)) != 0)
+    if ((rc = tippe_design_top(d, z2_mm, &out->top, err)) != 0)
+        return rc;
+    /* the run records its time on a hole's rim at a pole (issue 25.7) */
+    tippe_launch_options oc = *o;
+    tippe_launch_polar_caps(d, z2_mm, &out->top, oc.cap_half_angle_rad);
+    if ((rc = tippe_launch_central(&out->top, &oc, spin_rad_s, &out->ic, err)) != 0 ||
+        (rc = tippe_launch_run_initial(&out->top, &oc, &out->ic, &out->rec, err)) != 0)
         return rc;
     tippe_sweep_zone_at(d, z2_mm, &out->zone);
     return TIPPE_OK;
@@ -174,6 +178,8 @@ cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_opt
                          : 0;
         cJSON *oc = cJSON_AddObjectToObject(o, "on_polar_cap");
         if (oc) {
+            cJSON_AddNumberToObject(oc, "time_s", rec->cap_time_s);
+            number_or_null(oc, "first_s", rec->cap_first_s);
             if (at_start)
                 cJSON_AddStringToObject(oc, "start", at_start > 0 ? "+z" : "-z");
             else
