@@ -35,8 +35,8 @@ static int check_parse(hands_args *a, int argc, char **argv)
                  .synopsis = "DESIGN.json --z2 MM [--spin RATE] [--json] [options]",
                  .about = "One realistic hand launch of the design's top with the weight at Z2:\n"
                           "the central values of tippe launch's distributions (the median tilt,\n"
-                          "steady precession, no sliding) at the given spin, integrated to its\n"
-                          "outcome. Prints the outcome beside the zone the calculator (tippe\n"
+                          "steady precession, the centre at rest: its contact point slips, at\n"
+                          "the speed printed) at the given spin, integrated to its outcome. Prints the outcome beside the zone the calculator (tippe\n"
                           "sweep) puts Z2 in and Theorem 5.1's prediction for the launch's\n"
                           "Jellett invariant.",
                  .after = "--tilt is the scale of the hand-launch distribution; the launch uses\n"
@@ -167,9 +167,11 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
     char sets[1024];
     if (a->sets.n)
         printf("changes    %s\n", tippe_cli_sets_text(&a->sets, sets, sizeof sets));
+    char slide[200];
     printf("launch     spin %.4g rad/s (%.3g rev/s), tilt %.4g rad (%.2f deg), steady "
-           "precession %.4g rad/s, no sliding\n",
-           ic->spin, ic->spin / (2 * M_PI), ic->theta, ic->theta * 180 / M_PI, ic->phi_dot);
+           "precession %.4g rad/s, %s\n",
+           ic->spin, ic->spin / (2 * M_PI), ic->theta, ic->theta * 180 / M_PI, ic->phi_dot,
+           tippe_launch_slip_text(&r->top, ic, NULL, slide, sizeof slide));
     hands_print_model(&a->o);
     print_verdict_line(rec);
     if (rec->how == TIPPE_DECIDED_T_END || rec->how == TIPPE_DECIDED_BUDGET) {

@@ -308,7 +308,7 @@ void hands_print_model(const tippe_launch_options *o)
     const int bdf = o->law == TIPPE_FRICTION_PATCH && !strcmp(o->accuracy.stepper, "rk8pd");
     printf("model      friction %s, g %g m/s^2, t_end %g s, accuracy %s (%s, rtol %g), verdict "
            "level\n",
-           tippe_cli_friction_text(&m, fr, sizeof fr), o->g, o->t_end, o->accuracy_name,
+           tippe_dynamics_friction_text(&m, fr, sizeof fr), o->g, o->t_end, o->accuracy_name,
            bdf ? "msbdf for the stiff patch law" : o->accuracy.stepper, o->accuracy.rtol);
 }
 

@@ -158,6 +158,10 @@ cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_opt
             cJSON_AddNumberToObject(ini, "spin_rad_s", ic->spin);
             cJSON_AddNumberToObject(ini, "U_m_s", ic->U);
             cJSON_AddNumberToObject(ini, "V_m_s", ic->V);
+            /* |v + omega x q| at launch (eq 3.7): the central launch's centre is at
+             * rest, its contact point is not */
+            cJSON_AddNumberToObject(ini, "contact_slip_m_s",
+                                    tippe_dynamics_launch_slip(&r->top, ic));
         }
         cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(rec->verdict));
         tippe_design_protrusion pr;
