@@ -682,6 +682,18 @@ int tippe_launch_trace(const tippe_top *top, const tippe_launch_options *o,
                        const tippe_dynamics_initial *ic, double t_end_s, int n, double *t_s,
                        double *theta_rad, int *n_out, tippe_error *err);
 
+/* One launch (ic) at the trajectory level to o->t_end, as tippe check --csv and
+ * --plot and tippe simulate --csv integrate it: the verdict is recorded and the run
+ * goes on to t_end (run_to_t_end), a tip is followed to its flip, samples every
+ * sample_dt_s (<= 0: tippe_dynamics_default_sample_dt) into *samples (zeroed by
+ * the caller; free with tippe_dynamics_samples_free, also on failure). *res has
+ * E0 and the state where the run stopped (res->last: theta, the energy dissipated
+ * D). The dynamics' status. */
+int tippe_launch_trajectory(const tippe_top *top, const tippe_launch_options *o,
+                            const tippe_dynamics_initial *ic, double sample_dt_s,
+                            tippe_dynamics_samples *samples, tippe_dynamics_result *res,
+                            tippe_error *err);
+
 /* Many launches in groups: group i has top tops[i] and, if spin_rad_s is not
  * NULL, the fixed spin spin_rad_s[i] (a map cell). Launch number `index`
  * (0 <= index < n_groups * per_group) belongs to group index / per_group and
