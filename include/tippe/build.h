@@ -214,6 +214,9 @@ typedef struct {
     double min_setting_mm;               /* the one used (options, else the rule) */
     char min_setting_rule[96];           /* "a quarter turn of the M12 x 1.75 thread" */
     double hand_spin_rev_s;              /* the fastest hand spin (launch options' spin_to) */
+    /* the launch check's friction law and its words (tippe_dynamics_friction_text) */
+    tippe_dynamics_model launch_model;
+    char launch_friction[320];
     tippe_build_setting set[3];          /* I stays up, II flips, III hangs */
     /* measuring */
     tippe_build_measure measure;

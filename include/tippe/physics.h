@@ -521,6 +521,30 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
 int tippe_dynamics_evaluate(const tippe_dynamics_model *model, const tippe_dynamics_initial *s,
                             tippe_dynamics_sample *out, tippe_error *err);
 
+/* The slip of the contact point at a launch state, m/s: |V_Q| = |v + omega x q|
+ * (eq 3.7; v the velocity of the centre of mass, q the vector from it to the
+ * contact, eq 3.6). It does not depend on the friction law or g. NAN for a top
+ * or state tippe_dynamics_evaluate refuses. */
+double tippe_dynamics_launch_slip(const tippe_top *top, const tippe_dynamics_initial *ic);
+
+/* The contact is at rest at a launch when its slip is below this fraction of the
+ * speed scale R |omega| + |v| (rounding: the terms of V_Q are of that size and
+ * cancel to ~1e-16 of it where they cancel at all). */
+#define TIPPE_LAUNCH_SLIP_ROUNDING_REL 1e-12
+
+/* How a launch state slides, in words for the launch lines of check, simulate,
+ * animate: "no sliding (contact at rest)" only where the slip
+ * (tippe_dynamics_launch_slip) is 0 to rounding; otherwise "centre at rest (U = V =
+ * 0), contact slip 0.0222 m/s" or "centre sliding at 0.05 m/s (U 0.03, V 0.04 m/s),
+ * contact slip 0.071 m/s". *slip_m_s (may be NULL) gets the slip. Returns buf. */
+const char *tippe_launch_slip_text(const tippe_top *top, const tippe_dynamics_initial *ic,
+                                   double *slip_m_s, char *buf, size_t size);
+
+/* The friction law of a model in words, with its coefficients ("viscous mu 2.3
+ * s/m (eq 3.12)", "Coulomb mu_c 0.3, sliding and sticking (...)", "patch
+ * (Coulomb-Contensou) mu_c 0.3 on Hertz's patch at m g (...)"). Returns buf. */
+const char *tippe_dynamics_friction_text(const tippe_dynamics_model *m, char *buf, size_t size);
+
 /* Reference: the paper's Euler-angle equations (3.15-3.19, derived for any m),
  * valid for 0 < theta < pi. y = (theta, theta_dot, phi_dot, spin, U, V, phi, psi),
  * dydt its derivative; *Rn the normal force. TIPPE_ECOMPUTE where sin(theta) = 0
@@ -612,7 +636,8 @@ int tippe_launch_draw(const tippe_top *top, const tippe_launch_options *o, uint6
                       tippe_error *err);
 
 /* The central hand launch (for `tippe check`): the median tilt of the
- * half-normal (0.674 tilt_sd_rad), steady precession, no sliding, and the
+ * half-normal (0.674 tilt_sd_rad), steady precession, the centre at rest
+ * (U = V = 0; the contact point slips: tippe_dynamics_launch_slip), and the
  * given spin (rad/s). */
 int tippe_launch_central(const tippe_top *top, const tippe_launch_options *o, double spin_rad_s,
                          tippe_dynamics_initial *ic, tippe_error *err);
@@ -682,6 +707,18 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
 int tippe_launch_trace(const tippe_top *top, const tippe_launch_options *o,
                        const tippe_dynamics_initial *ic, double t_end_s, int n, double *t_s,
                        double *theta_rad, int *n_out, tippe_error *err);
+
+/* One launch (ic) at the trajectory level to o->t_end, as tippe check --csv and
+ * --plot and tippe simulate --csv integrate it: the verdict is recorded and the run
+ * goes on to t_end (run_to_t_end), a tip is followed to its flip, samples every
+ * sample_dt_s (<= 0: tippe_dynamics_default_sample_dt) into *samples (zeroed by
+ * the caller; free with tippe_dynamics_samples_free, also on failure). *res has
+ * E0 and the state where the run stopped (res->last: theta, the energy dissipated
+ * D). The dynamics' status. */
+int tippe_launch_trajectory(const tippe_top *top, const tippe_launch_options *o,
+                            const tippe_dynamics_initial *ic, double sample_dt_s,
+                            tippe_dynamics_samples *samples, tippe_dynamics_result *res,
+                            tippe_error *err);
 
 /* Many launches in groups: group i has top tops[i] and, if spin_rad_s is not
  * NULL, the fixed spin spin_rad_s[i] (a map cell). Launch number `index`

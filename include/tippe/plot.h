@@ -73,4 +73,13 @@ int tippe_optimise_plot(const char *file, const tippe_optimise_spec *s, const ti
 int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynamics_result *res,
                    const tippe_dynamics_sample *samples, int n_samples, tippe_error *err);
 
+/* theta(t) of one launch under 1 to 4 friction laws, overlaid (tippe check
+ * --friction A,B --plot; src/plot/plot_sim.c): above, the launch on a linear time
+ * axis over [0, t_window_s] (<= 0: the whole run); below, the whole run on a
+ * logarithmic one; one line per law (labels[k], runs[k]'s trajectory samples) and
+ * theta = pi/2 dashed. PNG, SVG or PDF by the extension, written atomically. */
+int tippe_plot_sim_laws(const char *path, const char *title, int n_laws,
+                        const char *const *labels, const tippe_dynamics_samples *runs,
+                        double t_window_s, tippe_error *err);
+
 #endif

@@ -61,7 +61,7 @@ int tippe_scenario_load(const char *path, const char *const *overrides, int n_ov
  * without a scenario file: the design (with design_sets applied, as
  * tippe_design_load) and the defaults of tippe launch (docs/launch.md): tilt
  * TIPPE_LAUNCH_HALF_NORMAL_MEDIAN x 0.1 rad, steady precession, spin 15 rev/s,
- * no sliding, the launch options' friction (viscous mu 2.3 s/m, eq 3.12), g, t_end
+ * centre at rest, the launch options' friction (viscous mu 2.3 s/m, eq 3.12), g, t_end
  * 600 s, preset "balanced"; then the
  * overrides as for tippe_scenario_load ("initial.spin=100"). Messages name the
  * design file. */

@@ -375,4 +375,32 @@ int tippe_sweep_check_run(const tippe_design *d, double z2_mm, const tippe_launc
 struct cJSON *tippe_sweep_check_json(const tippe_sweep_check *c, const tippe_launch_options *o,
                                      const char *const *sets, int n_sets);
 
+/* The same central launch under one friction law of several (tippe check
+ * --friction viscous,patch): its check (the verdict, as tippe_sweep_check_run)
+ * and its trajectory to t_end (tippe_launch_trajectory: theta(t), the energy
+ * dissipated by the end of the run). */
+typedef struct {
+    tippe_launch_options o;        /* the law's options */
+    tippe_sweep_check check;
+    tippe_dynamics_samples samples;
+    tippe_dynamics_result run;     /* the trajectory's: E0, last (t, theta, D), t_flip */
+    char friction[320];            /* the law in words (tippe_dynamics_friction_text) */
+} tippe_sweep_check_law;
+/* Runs the launch under each o[i] into out[i] (0 <= i < n); on failure the
+ * failed law's status, its message naming the law. Free with
+ * tippe_sweep_check_laws_free in any case. */
+int tippe_sweep_check_laws(const tippe_design *d, double z2_mm, const tippe_launch_options *o,
+                           int n, double spin_rad_s, tippe_sweep_check_law *out, tippe_error *err);
+void tippe_sweep_check_laws_free(tippe_sweep_check_law *l, int n);
+/* The energy dissipated by the end of law l's run as a share of E0 (0 .. 1). */
+double tippe_sweep_check_law_energy_lost(const tippe_sweep_check_law *l);
+/* tippe check --friction A,B --json: design, file, set, z2_mm, initial (of the
+ * first law: the launch is the same), and laws: [{friction (law and coefficients),
+ * friction_text, verdict, decided_by, t_s, theta_final_rad, theta_range_rad,
+ * t_flip_s, t_fall_s, t_end_s (where the run stopped), theta_end_rad, E0_J,
+ * dissipated_J, energy_lost}], theory (of the first law's J0: the launch is the
+ * same, J0 too). NULL if out of memory. */
+struct cJSON *tippe_sweep_check_laws_json(const tippe_sweep_check_law *l, int n,
+                                          const char *const *sets, int n_sets);
+
 #endif

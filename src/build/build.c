@@ -821,8 +821,20 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     snprintf(out->design_name, sizeof out->design_name, "%s", tippe_design_name(d));
     snprintf(out->design_file, sizeof out->design_file, "%s", tippe_design_path(d));
     out->radius_mm = tippe_design_radius_mm(d);
+    /* the launch check's law: a patch without a radius gets Hertz's of the ball
+     * on the default table (tippe/physics.h), as tippe check without --table */
+    tippe_build_options ol = *o;
+    int rc;
+    if (ol.launch.law == TIPPE_FRICTION_PATCH && !(ol.launch.patch_radius_m > 0) &&
+        !(ol.launch.patch_E_star_pa > 0) &&
+        (rc = tippe_launch_patch_modulus(d, NULL, &ol.launch.patch_E_star_pa, err)) != 0)
+        return rc;
+    o = &ol;
+    tippe_launch_friction_model(&o->launch, &out->launch_model);
+    tippe_dynamics_friction_text(&out->launch_model, out->launch_friction,
+                                 sizeof out->launch_friction);
     compute_ctx c = {.d = d, .o = o, .out = out, .rod_r = 0};
-    int rc = compute_zones(&c, err);
+    rc = compute_zones(&c, err);
     if (rc)
         return rc;
     compute_reference(&c);

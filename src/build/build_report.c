@@ -105,6 +105,12 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
     cJSON_AddNumberToObject(o, "min_setting_mm", s->min_setting_mm);
     cJSON_AddStringToObject(o, "min_setting_rule", s->min_setting_rule);
     cJSON_AddNumberToObject(o, "hand_spin_max_rev_s", s->hand_spin_rev_s);
+    /* the law every setting's launch check ran under (tippe build --friction ...) */
+    cJSON *lc = cJSON_AddObjectToObject(o, "launch_check");
+    if (lc) {
+        tippe_dynamics_friction_json(lc, &s->launch_model);
+        cJSON_AddStringToObject(lc, "friction_text", s->launch_friction);
+    }
     cJSON *m = cJSON_AddObjectToObject(o, "measure");
     if (m) {
         cJSON_AddStringToObject(m, "kind", measure_name(s->measure));
@@ -378,6 +384,8 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     }
     (void)e;
     (void)g;
+    fprintf(f, "\nLaunch check: tippe check's central hand launch at the set Z2, friction %s.\n",
+            md(s->launch_friction, m1, sizeof m1));
     char verdict[512];
     tippe_build_verdict_text(s, verdict, sizeof verdict);
     fprintf(f, "\n%s\n", verdict);

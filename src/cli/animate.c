@@ -201,6 +201,10 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
                 cJSON_AddNumberToObject(o, "t_shown_s", (f->n_frames - 1) * f->frame_dt);
             }
             cJSON_AddNumberToObject(o, "samples", f->n_samples);
+            /* |v + omega x q| at launch (eq 3.7) */
+            cJSON_AddNumberToObject(o, "contact_slip_m_s",
+                                    tippe_dynamics_launch_slip(&f->launch.model.top,
+                                                               &f->launch.initial));
             cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(r->verdict));
             if (r->verdict != TIPPE_VERDICT_UNDECIDED)
                 cJSON_AddNumberToObject(o, "t_verdict_s", r->t_verdict);
@@ -232,6 +236,11 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
         fprintf(out, "time      t = 0 .. %.6g s of the launch; 1 s of film = %.4g s\n",
                (f->n_frames - 1) * f->frame_dt, f->speed);
     }
+    char slide[200];
+    fprintf(out, "launch    theta %.4g rad, spin %.4g rad/s; %s\n", f->launch.initial.theta,
+            f->launch.initial.spin,
+            tippe_launch_slip_text(&f->launch.model.top, &f->launch.initial, NULL, slide,
+                                   sizeof slide));
     if (r->verdict == TIPPE_VERDICT_BOUNDED)
         fprintf(out, "verdict   bounded, decided (%s) at t = %.6g s: theta stays in "
                 "[%.4g, %.4g] rad (no end state)\n",

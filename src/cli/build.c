@@ -1,6 +1,7 @@
 /* tippe build: the build sheet (settings a maker measures, BOM) and the files
  * to print, in one directory. */
 #include "cli.h"
+#include "hands.h"
 
 #include "tippe/build.h"
 #include "tippe/design.h"
@@ -25,11 +26,12 @@ typedef struct {
     tippe_build_options o;
     tippe_export_request q;
     tippe_cli_sets sets;
+    hands_friction fr; /* the launch check's friction (as tippe check's) */
 } build_args;
 
 static int build_parse(build_args *a, int argc, char **argv)
 {
-    tippe_cli_opt opts[] = {
+    tippe_cli_opt own[] = {
         {.name = "output", .short_name = 'o', .kind = TIPPE_CLI_STRING, .value = &a->dir,
          .arg = "DIR", .required = 1,
          .help = "output directory (created if missing; its parent must exist)"},
@@ -60,19 +62,26 @@ static int build_parse(build_args *a, int argc, char **argv)
          .help = "print the sheet as one JSON object"},
         {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
          .help = "change a field of the design before it is checked (repeatable)"},
-        {NULL},
     };
+    /* the launch check's friction options, as tippe check reads them */
+    tippe_cli_opt opts[sizeof own / sizeof own[0] + 8];
+    int n_opts = (int)(sizeof own / sizeof own[0]);
+    memcpy(opts, own, sizeof own);
+    n_opts += hands_friction_options(&a->fr, &a->o.launch, opts + n_opts);
+    opts[n_opts] = (tippe_cli_opt){NULL};
     tippe_cli_spec spec = {
         .verb = VERB,
         .synopsis = "DESIGN.json -o DIR [--catalogue FILE] [--clearance-mm MM] [--hole FIT]\n"
                     "       [--min-setting-mm MM] [--no-export] [--one-to-one] [--json]\n"
-                    "       [--set FIELD=VALUE]",
+                    "       [--set FIELD=VALUE] [--friction LAW] [--mu S_PER_M | --mu-c X]\n"
+                    "       [--patch-mm A | --table SURFACE]",
         .about = "What a maker follows, from the design's numbers: for each behaviour (stays\n"
                  "up, flips, hangs) the robust range of Z2 (the widest zone within the travel\n"
                  "where the model applies, less its tolerance bands) as the depth of the\n"
                  "weight's end below the rim of its hole (or the end of its rod) and the turns\n"
                  "of its thread, the spin it needs (Theorem 5.1) and the verdict of one\n"
-                 "central hand launch there (tippe check's); the bill of materials with the\n"
+                 "central hand launch there (tippe check's, under the friction options below:\n"
+                 "viscous, 2.3 s/m, unless told); the bill of materials with the\n"
                  "catalogue screw and tap drills; and the files tippe export writes.",
         .after = "Writes into DIR (STEM: the design file's name without .json) the sheet as\n"
                  "STEM-build.json, STEM-build.md and one A3 page STEM-sheet.pdf, .svg, .png;\n"
@@ -88,6 +97,14 @@ static int build_parse(build_args *a, int argc, char **argv)
     };
     int n = 0;
     int rc = tippe_cli_parse(&spec, argc, argv, &a->path, &n);
+    if (!rc)
+        rc = hands_friction_apply(VERB, &a->fr, &a->o.launch, &spec, 0);
+    tippe_error e;
+    tippe_launch_options chk = a->o.launch; /* a patch's Hertz modulus comes with the design */
+    if (chk.law == TIPPE_FRICTION_PATCH && !(chk.patch_radius_m > 0))
+        chk.patch_E_star_pa = 1.0;
+    if (!rc && tippe_launch_options_check(&chk, &e))
+        rc = tippe_cli_usage_error(VERB, "%s", e.msg);
     if (rc)
         return rc;
     if (a->q.section_one_to_one && a->no_export)
@@ -230,6 +247,10 @@ int tippe_cli_build(int argc, char **argv)
     if ((rc = tippe_design_load(a.path, a.sets.item, a.sets.n, &d, &err)))
         return tippe_cli_fail(VERB, &err, rc);
     tippe_cli_design_warnings(VERB, d);
+    if ((rc = hands_friction_patch(&a.fr, &a.o.launch, d, &err)) != 0) {
+        tippe_design_free(d);
+        return tippe_cli_fail(VERB, &err, rc);
+    }
     rc = run(&a, d);
     tippe_design_free(d);
     return rc;

@@ -10,6 +10,7 @@
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int check_parse(hands_args *a, int argc, char **argv)
@@ -35,16 +36,27 @@ static int check_parse(hands_args *a, int argc, char **argv)
                  .synopsis = "DESIGN.json --z2 MM [--spin RATE] [--json] [options]",
                  .about = "One realistic hand launch of the design's top with the weight at Z2:\n"
                           "the central values of tippe launch's distributions (the median tilt,\n"
-                          "steady precession, no sliding) at the given spin, integrated to its\n"
-                          "outcome. Prints the outcome beside the zone the calculator (tippe\n"
+                          "steady precession, the centre at rest: its contact point slips, at\n"
+                          "the speed printed) at the given spin, integrated to its outcome. Prints the outcome beside the zone the calculator (tippe\n"
                           "sweep) puts Z2 in and Theorem 5.1's prediction for the launch's\n"
                           "Jellett invariant.",
-                 .after = "--tilt is the scale of the hand-launch distribution; the launch uses\n"
+                 .after = "--friction LAW,LAW,... (up to 4) runs the same launch under each law\n"
+                          "and prints one table: the verdict, how and when it was decided, when\n"
+                          "theta first passed 90 deg, the end state, and theta and the share of\n"
+                          "the launch energy E0 dissipated at the end of the run (t_end); --mu\n"
+                          "applies to viscous, --mu-c to the others, --patch-mm and --table to\n"
+                          "patch; --plot draws theta(t) of every law in one figure, --json gives\n"
+                          "\"laws\". docs/launch.md, \"Friction laws side by side\".\n"
+                          "--tilt is the scale of the hand-launch distribution; the launch uses\n"
                           "its median, 0.674 SD. Exit status: 0 ok (whatever the outcome), 2 bad\n"
                           "usage or design, 1 the launch could not be computed."},
         .own = own,
+        .friction_list = 1,
     };
     int rc = hands_parse(&v, a, argc, argv);
+    if (!rc && a->fr.n_laws > 1 && a->csv)
+        return tippe_cli_usage_error(a->verb, "--csv writes one law's trajectory: give one law "
+                                              "with --friction (--plot draws theta(t) of each)");
     /* before the launch, so that a bad output path costs nothing */
     if (!rc && ((a->csv && tippe_cli_check_output(a->verb, "--csv", a->csv, 0)) ||
                 (a->plot && tippe_cli_check_output(a->verb, "--plot", a->plot, 1))))
@@ -76,21 +88,10 @@ static int check_trajectory(const hands_args *a, const tippe_sweep_check *r, int
     sc.accuracy = a->o.accuracy;
     snprintf(sc.accuracy_name, sizeof sc.accuracy_name, "%s", a->o.accuracy_name);
 
-    tippe_dynamics_options opt;
-    tippe_dynamics_options_default(&opt);
-    opt.level = TIPPE_LEVEL_TRAJECTORY;
-    opt.t_end = sc.t_end;
-    opt.accuracy = sc.accuracy;
-    opt.run_to_t_end = 1;
-    opt.until_flip = 1;
-    opt.sample_dt = tippe_dynamics_default_sample_dt(&sc.initial, sc.model.g, sc.model.top.R,
-                                                     sc.t_end);
     tippe_dynamics_samples buf = {0, 0, NULL};
-    opt.on_sample = tippe_dynamics_samples_keep;
-    opt.sample_ctx = &buf;
     tippe_dynamics_result res;
     tippe_error err = {0};
-    int rc = tippe_dynamics_run(&sc.model, &sc.initial, &opt, &res, &err);
+    int rc = tippe_launch_trajectory(&r->top, &a->o, &sc.initial, 0.0, &buf, &res, &err);
     if (!rc && a->csv) {
         tippe_report_file rf;
         if ((rc = tippe_report_open(&rf, a->csv, "the CSV file", &err)) == 0) {
@@ -167,9 +168,11 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
     char sets[1024];
     if (a->sets.n)
         printf("changes    %s\n", tippe_cli_sets_text(&a->sets, sets, sizeof sets));
+    char slide[200];
     printf("launch     spin %.4g rad/s (%.3g rev/s), tilt %.4g rad (%.2f deg), steady "
-           "precession %.4g rad/s, no sliding\n",
-           ic->spin, ic->spin / (2 * M_PI), ic->theta, ic->theta * 180 / M_PI, ic->phi_dot);
+           "precession %.4g rad/s, %s\n",
+           ic->spin, ic->spin / (2 * M_PI), ic->theta, ic->theta * 180 / M_PI, ic->phi_dot,
+           tippe_launch_slip_text(&r->top, ic, NULL, slide, sizeof slide));
     hands_print_model(&a->o);
     print_verdict_line(rec);
     if (rec->how == TIPPE_DECIDED_T_END || rec->how == TIPPE_DECIDED_BUDGET) {
@@ -249,6 +252,102 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
            rec->rhs_evals);
 }
 
+/* --friction A,B,...: the same launch under each law, one table (and one plot). */
+static int check_laws(const hands_args *a, const tippe_design *d)
+{
+    const int n = a->fr.n_laws;
+    tippe_launch_options o[HANDS_MAX_LAWS];
+    for (int i = 0; i < n; i++)
+        hands_friction_law(&a->fr, i, &a->o, &o[i]);
+    tippe_sweep_check_law *l = calloc((size_t)n, sizeof *l);
+    if (!l)
+        return fprintf(stderr, "tippe %s: out of memory\n", a->verb), 1;
+    tippe_error err = {0};
+    int rc = tippe_sweep_check_laws(d, a->z2_mm, o, n, a->spin.from, l, &err);
+    const double deg = 180 / M_PI;
+    if (!rc && a->plot) {
+        char lab[HANDS_MAX_LAWS][200], title[600];
+        const char *labels[HANDS_MAX_LAWS];
+        tippe_dynamics_samples runs[HANDS_MAX_LAWS];
+        double t_w = 0; /* the launch's window: three times its latest flip or decision */
+        for (int i = 0; i < n; i++) {
+            const tippe_launch_record *rec = &l[i].check.rec;
+            if (isfinite(l[i].run.t_flip))
+                snprintf(lab[i], sizeof lab[i], "%s: %s, over 90 deg at %.3g s",
+                         tippe_friction_law_name(o[i].law), tippe_verdict_name(rec->verdict),
+                         l[i].run.t_flip);
+            else
+                snprintf(lab[i], sizeof lab[i], "%s: %s, never over 90 deg",
+                         tippe_friction_law_name(o[i].law), tippe_verdict_name(rec->verdict));
+            labels[i] = lab[i];
+            runs[i] = l[i].samples;
+            if (isfinite(l[i].run.t_flip))
+                t_w = fmax(t_w, 3 * l[i].run.t_flip);
+            if (isfinite(rec->t_s) && rec->t_s < 0.5 * o[i].t_end)
+                t_w = fmax(t_w, 3 * rec->t_s);
+        }
+        snprintf(title, sizeof title, "%s at Z2 = %g mm, spin %.3g rev/s: theta(t) under each "
+                 "friction law", tippe_design_name(d), a->z2_mm, a->spin.from / (2 * M_PI));
+        rc = tippe_plot_sim_laws(a->plot, title, n, labels, runs, fmax(t_w, 1.0), &err);
+    }
+    if (rc) {
+        tippe_sweep_check_laws_free(l, n);
+        free(l);
+        return tippe_cli_fail(a->verb, &err, rc);
+    }
+    if (a->json) {
+        rc = tippe_cli_print_json(a->verb,
+                                  tippe_sweep_check_laws_json(l, n, a->sets.item, a->sets.n));
+    } else {
+        const tippe_sweep_check *r = &l[0].check;
+        hands_print_top(d, a->z2_mm, &r->top, a->o.g, &r->zone);
+        char sets[1024], slide[200];
+        if (a->sets.n)
+            printf("changes    %s\n", tippe_cli_sets_text(&a->sets, sets, sizeof sets));
+        printf("launch     spin %.4g rad/s (%.3g rev/s), tilt %.4g rad (%.2f deg), steady "
+               "precession %.4g rad/s, %s\n",
+               r->ic.spin, r->ic.spin / (2 * M_PI), r->ic.theta, r->ic.theta * deg,
+               r->ic.phi_dot, tippe_launch_slip_text(&r->top, &r->ic, NULL, slide, sizeof slide));
+        printf("           the same launch under each friction law, t_end %g s, accuracy %s; "
+               "energy E0 %.4g J\n\n", a->o.t_end, a->o.accuracy_name, l[0].run.E0);
+        printf("%-14s %-12s %-24s %-13s %-26s %s\n", "law", "verdict", "decided",
+               "over 90 deg", "end state", "at the end of the run: theta, energy lost");
+        for (int i = 0; i < n; i++) {
+            const tippe_launch_record *rec = &l[i].check.rec;
+            char how[64], flip[32], end[64];
+            snprintf(how, sizeof how, "%s at %.3g s", tippe_decision_name(rec->how), rec->t_s);
+            if (isfinite(l[i].run.t_flip))
+                snprintf(flip, sizeof flip, "%.3g s", l[i].run.t_flip);
+            else
+                snprintf(flip, sizeof flip, "never");
+            if (rec->verdict == TIPPE_VERDICT_BOUNDED || rec->how == TIPPE_DECIDED_ROLLING)
+                snprintf(end, sizeof end, "rolls, %.1f .. %.1f deg", rec->theta_lo_rad * deg,
+                         rec->theta_hi_rad * deg);
+            else if (rec->how == TIPPE_DECIDED_OBSERVED)
+                snprintf(end, sizeof end, "%.1f deg (not proved)", rec->theta_final_rad * deg);
+            else if (isfinite(rec->theta_final_rad))
+                snprintf(end, sizeof end, "%.1f deg", rec->theta_final_rad * deg);
+            else
+                snprintf(end, sizeof end, "-");
+            printf("%-14s %-12s %-24s %-13s %-26s %.1f deg at %.4g s, %.1f %% (%.3g J)\n",
+                   tippe_friction_law_name(o[i].law), tippe_verdict_name(rec->verdict), how, flip,
+                   end, l[i].run.last.theta * deg, l[i].run.last.t,
+                   100 * tippe_sweep_check_law_energy_lost(&l[i]), l[i].run.last.D);
+        }
+        printf("\n");
+        for (int i = 0; i < n; i++)
+            printf("%-14s %s%s\n", tippe_friction_law_name(o[i].law), l[i].friction,
+                   o[i].law == TIPPE_FRICTION_PATCH && !strcmp(o[i].accuracy.stepper, "rk8pd")
+                       ? "; msbdf for the stiff patch law"
+                       : "");
+        if (a->plot)
+            printf("plot       %s\n", a->plot);
+    }
+    tippe_sweep_check_laws_free(l, n);
+    free(l);
+    return rc;
+}
+
 int tippe_cli_check(int argc, char **argv)
 {
     hands_args a = {.verb = "check", .spin = {2 * M_PI * 15.0, 0, 0}};
@@ -264,6 +363,11 @@ int tippe_cli_check(int argc, char **argv)
     if ((rc = hands_patch(&a, d, &err)) != 0) {
         tippe_design_free(d);
         return tippe_cli_fail(a.verb, &err, rc);
+    }
+    if (a.fr.n_laws > 1) {
+        rc = check_laws(&a, d);
+        tippe_design_free(d);
+        return rc;
     }
     tippe_sweep_check r;
     if ((rc = tippe_sweep_check_run(d, a.z2_mm, &a.o, a.spin.from, &r, &err)) != 0) {

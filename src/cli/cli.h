@@ -277,9 +277,6 @@ int tippe_cli_print_model_validity(const tippe_design_protrusion *p, double z2_m
 /* The same onto out (a report that gives standard output to a '-' file). */
 int tippe_cli_fprint_model_validity(FILE *out, const tippe_design_protrusion *p, double z2_mm,
                                     const char *prefix, const char *what);
-/* The friction law in words ("Coulomb mu_c 0.3 with sticking (sliding regularised
- * below 0.0001 m/s)", "viscous mu 2.3 s/m (eq 3.12)") into buf; returns buf. */
-const char *tippe_cli_friction_text(const tippe_dynamics_model *m, char *buf, size_t size);
 
 /* v, or null where it is not finite (not applicable). */
 void tippe_cli_json_number_or_null(struct cJSON *o, const char *key, double v);

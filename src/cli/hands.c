@@ -28,37 +28,6 @@ static int model_options(hands_args *a, tippe_cli_opt *t)
         {.name = "tilt-max", .kind = TIPPE_CLI_DOUBLE, .value = &o->tilt_max_rad, .arg = "MAX",
          .unit = "rad", .min = 1e-3, .max = 1.4, .def = "1, or 2 x --tilt if more",
          .help = "largest tilt at launch: larger draws are drawn again"},
-        {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &a->friction, .arg = "LAW",
-         .def = "viscous",
-         .help = "friction law: viscous (eq 3.12, the paper's), coulomb (sliding\n"
-                 "|F| = mu_c Rn, sticking and rolling without slipping), coulomb-creep\n"
-                 "(regularised, no sticking) or patch (Coulomb-Contensou on a spinning\n"
-                 "contact patch: --patch-mm, or Hertz on --table; verdicts observed, not\n"
-                 "proved); docs/dynamics.md"},
-        {.name = "patch-mm", .kind = TIPPE_CLI_DOUBLE, .value = &a->patch_mm, .arg = "A",
-         .unit = "mm", .min = 1e-6, .max = 10, .def = "Hertz at m g",
-         .help = "patch law: the contact patch's radius (default: Hertz's from the\n"
-                 "ball's and the table's E and nu at the static load m g; given alone,\n"
-                 "it selects --friction patch)"},
-        {.name = "table", .kind = TIPPE_CLI_STRING, .value = &a->table, .arg = "SURFACE",
-         .def = TIPPE_CONTACT_DEFAULT_TABLE,
-         .help = "patch law: the table's surface for the Hertz patch: glass, laminate,\n"
-                 "wood or steel (docs/contact-patch.md; given alone, it selects\n"
-                 "--friction patch)"},
-        {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu_c, .arg = "X", .min = 0,
-         .max = 10, .def = TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C),
-         .help = "Coulomb friction coefficient (given alone, it selects --friction\n"
-                 "coulomb): a printed PLA or nylon ball on a tabletop (docs/launch.md)"},
-        {.name = "slip-scale", .kind = TIPPE_CLI_DOUBLE, .value = &o->slip_scale_m_s,
-         .arg = "V", .unit = "m/s", .min = 1e-9, .max = 1,
-         .def = TIPPE_CLI_STR(TIPPE_COULOMB_SLIP_SCALE_M_S),
-         .help = "Coulomb's regularisation speed v_s (given alone, it selects --friction\n"
-                 "coulomb): sliding below it is smoothed, and sticking is tried below\n"
-                 "30 v_s (docs/dynamics.md)"},
-        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu, .unit = "s/m", .min = 0,
-         .max = 1e6, .def = "2.3",
-         .help = "viscous sliding friction (eq 3.12), the default law's coefficient: a\n"
-                 "table's Coulomb coefficient over a typical slip speed (docs/launch.md)"},
         {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &o->g, .unit = "m/s^2", .min = 0.01,
          .max = 1000, .def = "9.81", .help = "gravity"},
         {.name = "t-end", .kind = TIPPE_CLI_DOUBLE, .value = &o->t_end, .unit = "s",
@@ -77,7 +46,7 @@ static int model_options(hands_args *a, tippe_cli_opt *t)
     };
     const int n = (int)(sizeof m / sizeof m[0]);
     memcpy(t, m, sizeof m);
-    return n;
+    return n + hands_friction_options(&a->fr, o, t + n);
 }
 
 /* The options of the drawn hand launches (launch and map). */
@@ -142,65 +111,156 @@ static void tilt_defaults(tippe_cli_spec *spec, tippe_launch_options *o)
         o->tilt_sd_rad = 0.5 * o->tilt_max_rad;
 }
 
-/* --friction, --mu, --mu-c and --slip-scale into a->o: a coefficient given without
- * --friction selects its law (--mu the viscous one, the default; --mu-c or --slip-scale
- * Coulomb's); a coefficient of the other law is a usage error. */
-static int apply_friction(hands_args *a, const tippe_cli_spec *spec)
+int hands_friction_options(hands_friction *f, tippe_launch_options *o, tippe_cli_opt *t)
 {
-    tippe_launch_options *o = &a->o;
+    tippe_cli_opt m[] = {
+        {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &f->friction, .arg = "LAW",
+         .def = "viscous",
+         .help = "friction law: viscous (eq 3.12, the paper's), coulomb (sliding\n"
+                 "|F| = mu_c Rn, sticking and rolling without slipping), coulomb-creep\n"
+                 "(regularised, no sticking) or patch (Coulomb-Contensou on a spinning\n"
+                 "contact patch: --patch-mm, or Hertz on --table; verdicts observed, not\n"
+                 "proved); docs/dynamics.md"},
+        {.name = "patch-mm", .kind = TIPPE_CLI_DOUBLE, .value = &f->patch_mm, .arg = "A",
+         .unit = "mm", .min = 1e-6, .max = 10, .def = "Hertz at m g",
+         .help = "patch law: the contact patch's radius (default: Hertz's from the\n"
+                 "ball's and the table's E and nu at the static load m g; given alone,\n"
+                 "it selects --friction patch)"},
+        {.name = "table", .kind = TIPPE_CLI_STRING, .value = &f->table, .arg = "SURFACE",
+         .def = TIPPE_CONTACT_DEFAULT_TABLE,
+         .help = "patch law: the table's surface for the Hertz patch: glass, laminate,\n"
+                 "wood or steel (docs/contact-patch.md; given alone, it selects\n"
+                 "--friction patch)"},
+        {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu_c, .arg = "X", .min = 0,
+         .max = 10, .def = TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C),
+         .help = "Coulomb friction coefficient (given alone, it selects --friction\n"
+                 "coulomb): a printed PLA or nylon ball on a tabletop (docs/launch.md)"},
+        {.name = "slip-scale", .kind = TIPPE_CLI_DOUBLE, .value = &o->slip_scale_m_s,
+         .arg = "V", .unit = "m/s", .min = 1e-9, .max = 1,
+         .def = TIPPE_CLI_STR(TIPPE_COULOMB_SLIP_SCALE_M_S),
+         .help = "Coulomb's regularisation speed v_s (given alone, it selects --friction\n"
+                 "coulomb): sliding below it is smoothed, and sticking is tried below\n"
+                 "30 v_s (docs/dynamics.md)"},
+        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu, .unit = "s/m", .min = 0,
+         .max = 1e6, .def = "2.3",
+         .help = "viscous sliding friction (eq 3.12), the default law's coefficient: a\n"
+                 "table's Coulomb coefficient over a typical slip speed (docs/launch.md)"},
+    };
+    const int n = (int)(sizeof m / sizeof m[0]);
+    memcpy(t, m, sizeof m);
+    return n;
+}
+
+/* 1 if law is among f's laws. */
+static int has_law(const hands_friction *f, tippe_friction_law law)
+{
+    for (int i = 0; i < f->n_laws; i++)
+        if (f->laws[i] == law)
+            return 1;
+    return 0;
+}
+
+/* --friction LAW (or, where the verb compares laws, LAW,LAW,...) into f->laws:
+ * 0, or 2 after a usage error. */
+static int parse_laws(const char *verb, hands_friction *f, int allow_list)
+{
+    char buf[128];
+    snprintf(buf, sizeof buf, "%s", f->friction);
+    f->n_laws = 0;
+    for (char *save = NULL, *w = strtok_r(buf, ",", &save); w; w = strtok_r(NULL, ",", &save)) {
+        const int law = tippe_friction_law_parse(w);
+        if (law < 0)
+            return tippe_cli_usage_error(verb, "--friction '%s': expected viscous, coulomb, "
+                                               "coulomb-creep or patch%s",
+                                         w, allow_list ? " (or several, comma-separated)" : "");
+        if (has_law(f, (tippe_friction_law)law))
+            return tippe_cli_usage_error(verb, "--friction '%s': %s twice", f->friction, w);
+        if (f->n_laws == HANDS_MAX_LAWS)
+            return tippe_cli_usage_error(verb, "--friction '%s': at most %d laws", f->friction,
+                                         HANDS_MAX_LAWS);
+        f->laws[f->n_laws++] = (tippe_friction_law)law;
+    }
+    if (f->n_laws == 0)
+        return tippe_cli_usage_error(verb, "--friction '%s': expected a law", f->friction);
+    if (f->n_laws > 1 && !allow_list)
+        return tippe_cli_usage_error(verb, "--friction '%s': one law (tippe check compares "
+                                           "several)", f->friction);
+    return 0;
+}
+
+int hands_friction_apply(const char *verb, hands_friction *f, tippe_launch_options *o,
+                         const tippe_cli_spec *spec, int allow_list)
+{
     const tippe_cli_opt *mu = tippe_cli_find_opt((tippe_cli_spec *)spec, "mu");
     const tippe_cli_opt *mu_c = tippe_cli_find_opt((tippe_cli_spec *)spec, "mu-c");
     const tippe_cli_opt *vs = tippe_cli_find_opt((tippe_cli_spec *)spec, "slip-scale");
     const int mu_seen = mu && mu->seen;
     const int coulomb_seen = (mu_c && mu_c->seen) || (vs && vs->seen);
-    if (a->friction) {
-        const int law = tippe_friction_law_parse(a->friction);
-        if (law < 0)
-            return tippe_cli_usage_error(a->verb,
-                                         "--friction '%s': expected viscous, coulomb, "
-                                         "coulomb-creep or patch",
-                                         a->friction);
-        o->law = (tippe_friction_law)law;
+    int rc;
+    if (f->friction) {
+        if ((rc = parse_laws(verb, f, allow_list)) != 0)
+            return rc;
     } else if (mu_seen && coulomb_seen) {
-        return tippe_cli_usage_error(a->verb, "--mu (s/m, viscous) and --mu-c or --slip-scale "
-                                              "(Coulomb) name different laws: give one, or "
-                                              "--friction");
-    } else if ((a->patch_mm > 0 || a->table) && !mu_seen) {
-        o->law = TIPPE_FRICTION_PATCH; /* the patch's radius names its law, as --mu-c does */
-    } else if (coulomb_seen) {
-        o->law = TIPPE_FRICTION_COULOMB;
-    } else if (mu_seen) {
-        o->law = TIPPE_FRICTION_VISCOUS;
+        return tippe_cli_usage_error(verb, "--mu (s/m, viscous) and --mu-c or --slip-scale "
+                                           "(Coulomb) name different laws: give one, or "
+                                           "--friction");
+    } else {
+        f->n_laws = 1;
+        f->laws[0] = o->law;
+        if ((f->patch_mm > 0 || f->table) && !mu_seen)
+            f->laws[0] = TIPPE_FRICTION_PATCH; /* the patch's radius names its law, as --mu-c does */
+        else if (coulomb_seen)
+            f->laws[0] = TIPPE_FRICTION_COULOMB;
+        else if (mu_seen)
+            f->laws[0] = TIPPE_FRICTION_VISCOUS;
     }
-    if (o->law == TIPPE_FRICTION_VISCOUS && coulomb_seen)
-        return tippe_cli_usage_error(a->verb, "%s: with the viscous law give --mu (s/m)",
+    o->law = f->laws[0];
+    /* a coefficient needs a law it belongs to among those given */
+    int other = 0; /* a law other than viscous: --mu-c and --slip-scale apply to it */
+    for (int i = 0; i < f->n_laws; i++)
+        other |= f->laws[i] != TIPPE_FRICTION_VISCOUS;
+    if (!other && coulomb_seen)
+        return tippe_cli_usage_error(verb, "%s: with the viscous law give --mu (s/m)",
                                      mu_c && mu_c->seen
                                          ? "--mu-c is the Coulomb coefficient"
                                          : "--slip-scale is the Coulomb law's regularisation");
-    if (o->law != TIPPE_FRICTION_VISCOUS && mu_seen)
-        return tippe_cli_usage_error(a->verb, "--mu (s/m) is the viscous coefficient: with "
-                                              "the %s law give --mu-c",
+    if (!has_law(f, TIPPE_FRICTION_VISCOUS) && mu_seen)
+        return tippe_cli_usage_error(verb, "--mu (s/m) is the viscous coefficient: with "
+                                           "the %s law give --mu-c",
                                      tippe_friction_law_name(o->law));
     double E, nu;
-    if (o->law != TIPPE_FRICTION_PATCH && (a->patch_mm > 0 || a->table))
-        return tippe_cli_usage_error(a->verb, "--%s belongs to the patch law: give --friction "
-                                              "patch",
-                                     a->patch_mm > 0 ? "patch-mm" : "table");
-    if (a->table && tippe_contact_table_surface(a->table, &E, &nu))
-        return tippe_cli_usage_error(a->verb, "--table '%s': expected " TIPPE_CONTACT_TABLES,
-                                     a->table);
-    if (a->table && a->patch_mm > 0)
-        return tippe_cli_usage_error(a->verb, "--patch-mm gives the radius, --table derives it: "
-                                              "give one");
-    o->patch_radius_m = a->patch_mm * 1e-3;
+    if (!has_law(f, TIPPE_FRICTION_PATCH) && (f->patch_mm > 0 || f->table))
+        return tippe_cli_usage_error(verb, "--%s belongs to the patch law: give --friction "
+                                           "patch",
+                                     f->patch_mm > 0 ? "patch-mm" : "table");
+    if (f->table && tippe_contact_table_surface(f->table, &E, &nu))
+        return tippe_cli_usage_error(verb, "--table '%s': expected " TIPPE_CONTACT_TABLES,
+                                     f->table);
+    if (f->table && f->patch_mm > 0)
+        return tippe_cli_usage_error(verb, "--patch-mm gives the radius, --table derives it: "
+                                           "give one");
+    o->patch_radius_m = f->patch_mm * 1e-3;
     return 0;
+}
+
+int hands_friction_patch(const hands_friction *f, tippe_launch_options *o, const tippe_design *d,
+                         tippe_error *err)
+{
+    if (!has_law(f, TIPPE_FRICTION_PATCH) || o->patch_radius_m > 0)
+        return TIPPE_OK;
+    return tippe_launch_patch_modulus(d, f->table, &o->patch_E_star_pa, err);
+}
+
+void hands_friction_law(const hands_friction *f, int i, const tippe_launch_options *o,
+                        tippe_launch_options *out)
+{
+    *out = *o;
+    out->law = f->laws[i];
 }
 
 int hands_patch(hands_args *a, const tippe_design *d, tippe_error *err)
 {
-    if (a->o.law != TIPPE_FRICTION_PATCH || a->o.patch_radius_m > 0)
-        return TIPPE_OK;
-    return tippe_launch_patch_modulus(d, a->table, &a->o.patch_E_star_pa, err);
+    return hands_friction_patch(&a->fr, &a->o, d, err);
 }
 
 int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
@@ -209,7 +269,7 @@ int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
     int n = 0;
     for (const tippe_cli_opt *o = v->own; o->name && n < MAX_HAND_OPTS; o++)
         opts[n++] = *o;
-    if (n + 16 >= MAX_HAND_OPTS)
+    if (n + 20 >= MAX_HAND_OPTS)
         return tippe_cli_usage_error(a->verb, "internal error: too many options");
     n += model_options(a, opts + n);
     if (v->distribution)
@@ -225,7 +285,7 @@ int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
     if (!rc)
         tilt_defaults(&v->spec, &a->o);
     if (!rc)
-        rc = apply_friction(a, &v->spec);
+        rc = hands_friction_apply(a->verb, &a->fr, &a->o, &v->spec, v->friction_list);
     tippe_error e;
     if (!rc && a->o.tilt_sd_rad > 0.5 * a->o.tilt_max_rad)
         rc = tippe_cli_usage_error(a->verb, "--tilt %g: at most half of --tilt-max (%g rad), "
@@ -308,7 +368,7 @@ void hands_print_model(const tippe_launch_options *o)
     const int bdf = o->law == TIPPE_FRICTION_PATCH && !strcmp(o->accuracy.stepper, "rk8pd");
     printf("model      friction %s, g %g m/s^2, t_end %g s, accuracy %s (%s, rtol %g), verdict "
            "level\n",
-           tippe_cli_friction_text(&m, fr, sizeof fr), o->g, o->t_end, o->accuracy_name,
+           tippe_dynamics_friction_text(&m, fr, sizeof fr), o->g, o->t_end, o->accuracy_name,
            bdf ? "msbdf for the stiff patch law" : o->accuracy.stepper, o->accuracy.rtol);
 }
 

@@ -20,6 +20,34 @@ struct cJSON;
 /* Largest launch spin (cli.h; a hand launch's spin is its size, >= 0). */
 #define HANDS_SPIN_MAX_RAD_S TIPPE_CLI_SPIN_MAX_RAD_S
 
+/* The friction options (--friction, --patch-mm, --table, --mu-c, --slip-scale,
+ * --mu): tippe launch, map, check and build read them alike. */
+enum { HANDS_MAX_LAWS = 4 };
+typedef struct {
+    const char *friction;      /* --friction: a law, or (check) laws, comma-separated */
+    const char *table;         /* --table (patch law) */
+    double patch_mm;           /* --patch-mm (patch law; 0: Hertz from the materials) */
+    int n_laws;                /* the laws chosen (1 unless a verb compares laws) */
+    tippe_friction_law laws[HANDS_MAX_LAWS];
+} hands_friction;
+
+/* The friction options into t (room for 6), writing into f and o; their count. */
+int hands_friction_options(hands_friction *f, tippe_launch_options *o, tippe_cli_opt *t);
+/* After parsing: the law(s) into f->laws and o->law (the first), the patch radius into
+ * o. A coefficient given without --friction selects its law (--mu the viscous one,
+ * --mu-c or --slip-scale Coulomb's, --patch-mm or --table the patch law); a
+ * coefficient of no law given is a usage error. allow_list: --friction may name
+ * several laws. 0, or 2 after a usage error. */
+int hands_friction_apply(const char *verb, hands_friction *f, tippe_launch_options *o,
+                         const tippe_cli_spec *spec, int allow_list);
+/* Where a patch law has no --patch-mm: the Hertz contact modulus of the design's ball
+ * on --table into o (tippe_launch_patch_modulus). A library status. */
+int hands_friction_patch(const hands_friction *f, tippe_launch_options *o, const tippe_design *d,
+                         tippe_error *err);
+/* o with law i of f (its coefficients are o's: --mu for viscous, --mu-c for the others). */
+void hands_friction_law(const hands_friction *f, int i, const tippe_launch_options *o,
+                        tippe_launch_options *out);
+
 /* The options of a hand-launch verb, filled by hands_parse. */
 typedef struct {
     const char *verb;          /* "launch", "map", "check" */
@@ -30,9 +58,8 @@ typedef struct {
                                 * check one value (from = to) */
     long n, threads, seed;
     int json;
-    const char *csv, *plot, *accuracy, *stepper, *friction;
-    const char *table;         /* --table (patch law) */
-    double patch_mm;           /* --patch-mm (patch law; 0: Hertz from the materials) */
+    const char *csv, *plot, *accuracy, *stepper;
+    hands_friction fr;         /* --friction and its coefficients */
     tippe_launch_options o;    /* the distributions and the model */
     tippe_cli_sets sets;       /* --set */
 } hands_args;
@@ -42,6 +69,7 @@ typedef struct {
     tippe_cli_spec spec;      /* verb, synopsis, about, after (opts are made here) */
     tippe_cli_opt *own;       /* the verb's own options, ending with {NULL} */
     int distribution;         /* 1: the hand-launch distribution options too */
+    int friction_list;        /* 1: --friction may name several laws (check) */
 } hands_verb;
 
 /* Parses argv for v into a (whose verb, n and spin defaults the caller set):

@@ -83,11 +83,13 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
            tippe_group_name(tc->cls.group));
     char fr[160];
     printf("model     g %.6g m/s^2, friction %s\n", sc->model.g,
-           tippe_cli_friction_text(&sc->model, fr, sizeof fr));
+           tippe_dynamics_friction_text(&sc->model, fr, sizeof fr));
     printf("launch    theta %.6g rad, theta_dot %.6g rad/s, phi_dot %.6g rad/s (%s), spin %.6g "
            "rad/s, U %.6g m/s, V %.6g m/s\n",
            ic->theta, ic->theta_dot, ic->phi_dot,
            tippe_scenario_phi_dot_rule_name(sc->phi_dot_rule), ic->spin, ic->U, ic->V);
+    char slide[200];
+    printf("          %s\n", tippe_launch_slip_text(t, ic, NULL, slide, sizeof slide));
     printf("          Jellett J0 %.6g kg m^3/s, energy E0 %.6g J\n", r->J0, r->E0);
     const tippe_dynamics_sample *f = &r->final;
     switch (r->verdict) {
@@ -221,6 +223,9 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
         cJSON_AddNumberToObject(ini, "spin_rad_s", sc->initial.spin);
         cJSON_AddNumberToObject(ini, "U_m_s", sc->initial.U);
         cJSON_AddNumberToObject(ini, "V_m_s", sc->initial.V);
+        /* |v + omega x q| at launch (eq 3.7) */
+        cJSON_AddNumberToObject(ini, "contact_slip_m_s",
+                                tippe_dynamics_launch_slip(&sc->model.top, &sc->initial));
     }
     cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(r->verdict));
     tippe_design_protrusion_json(o, &sc->protrusion);
@@ -291,7 +296,7 @@ typedef struct {
     "bounded (no rest state is forced). The launch is a scenario file\n"                 \
     "(docs/dynamics.md), or a design with --z2 and the launch options below: without\n"   \
     "them, tippe launch's central hand launch (tilt 0.0674 rad, steady precession, spin\n" \
-    "15 rev/s, no sliding, viscous friction mu " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) " s/m)."
+    "15 rev/s, centre at rest (its contact slips), viscous friction mu " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) " s/m)."
 
 static int simulate_parse(simulate_args *a, int argc, char **argv)
 {

@@ -103,44 +103,6 @@ void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
     cJSON_AddNumberToObject(o, "rolling_time_s", r->rolling_time_s);
 }
 
-const char *tippe_cli_friction_text(const tippe_dynamics_model *m, char *buf, size_t size)
-{
-    const double vs = m->slip_scale_m_s > 0 ? m->slip_scale_m_s : TIPPE_COULOMB_SLIP_SCALE_M_S;
-    switch (m->law) {
-    case TIPPE_FRICTION_COULOMB:
-        snprintf(buf, size, "Coulomb mu_c %g, sliding and sticking (sliding regularised below "
-                 "%g m/s)", m->mu_c, vs);
-        break;
-    case TIPPE_FRICTION_PATCH:
-        if (m->rolling_arm_m > 0) {
-            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
-                     "(%s), rolling resistance arm %g um, regularised below %g m/s", m->mu_c,
-                     tippe_dynamics_patch_radius(m) * 1e3,
-                     m->patch_radius_m > 0 ? "given" : "Hertz at m g", m->rolling_arm_m * 1e6,
-                     vs);
-            break;
-        }
-        if (m->patch_radius_m > 0 || !(m->patch_E_star_pa > 0))
-            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
-                     "(Hertz pressure), regularised below %g m/s", m->mu_c,
-                     m->patch_radius_m * 1e3, vs);
-        else
-            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on Hertz's patch at m g "
-                     "(E* %.3g GPa, Hertz pressure), regularised below %g m/s", m->mu_c,
-                     m->patch_E_star_pa * 1e-9, vs);
-        break;
-    case TIPPE_FRICTION_COULOMB_CREEP:
-        snprintf(buf, size, "Coulomb mu_c %g regularised below %g m/s, no sticking (creep)",
-                 m->mu_c, vs);
-        break;
-    default:
-        snprintf(buf, size, "viscous mu %g s/m (eq 3.12)", m->mu);
-    }
-    return buf;
-}
-
-
-
 int tippe_cli_fprint_model_validity(FILE *out, const tippe_design_protrusion *p, double z2_mm,
                                     const char *prefix, const char *what)
 {

@@ -135,9 +135,12 @@ static double settings_table(cairo_t *cr, const tippe_build_sheet *s, double x, 
              s->measure == TIPPE_BUILD_MEASURE_HOLE  ? "below the hole's rim"
              : s->measure == TIPPE_BUILD_MEASURE_ROD ? "below the rod's end"
                                                      : "no reference");
+    char launch_head[120];
+    snprintf(launch_head, sizeof launch_head, "hand launch at the set Z2 (tippe check), %s friction",
+             tippe_friction_law_name(s->launch_model.law));
     const char *head[8] = {"behaviour",    "robust Z2 range, mm", "set Z2, mm", depth_head,
                            "depth to set, mm", "turns from flush", "spin needed (Theorem 5.1)",
-                           "hand launch at the set Z2 (tippe check)"};
+                           launch_head};
     y = row(cr, head, widths, 8, x, y, 9.5, 1, 1);
     for (int f = 0; f < 3; f++) {
         const tippe_build_setting *t = &s->set[f];

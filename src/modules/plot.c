@@ -26,6 +26,14 @@ int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynam
     TIPPE_MODULE_CALL(&plot, tippe_plot_sim, err, path, sc, res, samples, n_samples, err);
 }
 
+int tippe_plot_sim_laws(const char *path, const char *title, int n_laws,
+                        const char *const *labels, const tippe_dynamics_samples *runs,
+                        double t_window_s, tippe_error *err)
+{
+    TIPPE_MODULE_CALL(&plot, tippe_plot_sim_laws, err, path, title, n_laws, labels, runs,
+                      t_window_s, err);
+}
+
 int tippe_sweep_plot_zones(const char *file, const tippe_sweep_path *path,
                            const tippe_sweep_result *r, const char *title, tippe_error *err)
 {

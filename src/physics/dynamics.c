@@ -167,6 +167,20 @@ int tippe_dynamics_evaluate(const tippe_dynamics_model *model, const tippe_dynam
     return TIPPE_OK;
 }
 
+double tippe_dynamics_launch_slip(const tippe_top *top, const tippe_dynamics_initial *ic)
+{
+    /* V_Q is kinematic (eq 3.7): any valid law and g give the same; the sample's
+     * slip_speed is the right-hand side's own |V_Q| */
+    tippe_dynamics_model m;
+    memset(&m, 0, sizeof m);
+    m.top = *top;
+    m.g = TIPPE_DEFAULT_G_M_S2;
+    m.law = TIPPE_FRICTION_VISCOUS;
+    tippe_dynamics_sample s;
+    tippe_error e;
+    return tippe_dynamics_evaluate(&m, ic, &s, &e) == TIPPE_OK ? s.slip_speed : NAN;
+}
+
 /* The events located by bisection: lift-off (Rn = 0) and, while rolling, the end
  * of sticking (|F| = mu_c Rn, the edge of Coulomb's friction cone). */
 enum { EVENT_LIFT_OFF = 0, EVENT_SLIP = 1 };

@@ -537,6 +537,27 @@ int tippe_launch_trace(const tippe_top *top, const tippe_launch_options *o,
     return rc;
 }
 
+int tippe_launch_trajectory(const tippe_top *top, const tippe_launch_options *o,
+                            const tippe_dynamics_initial *ic, double sample_dt_s,
+                            tippe_dynamics_samples *samples, tippe_dynamics_result *res,
+                            tippe_error *err)
+{
+    tippe_dynamics_model m;
+    model_of(top, o, &m);
+    tippe_dynamics_options opt;
+    tippe_dynamics_options_default(&opt);
+    opt.level = TIPPE_LEVEL_TRAJECTORY;
+    opt.t_end = o->t_end;
+    opt.accuracy = o->accuracy;
+    opt.run_to_t_end = 1;
+    opt.until_flip = 1;
+    opt.sample_dt = sample_dt_s > 0 ? sample_dt_s
+                                    : tippe_dynamics_default_sample_dt(ic, m.g, top->R, o->t_end);
+    opt.on_sample = tippe_dynamics_samples_keep;
+    opt.sample_ctx = samples;
+    return tippe_dynamics_run(&m, ic, &opt, res, err);
+}
+
 int tippe_contact_table_surface(const char *name, double *E_pa, double *nu)
 {
     /* docs/contact-patch.md, "Materials", gives each value's source */

@@ -5,6 +5,7 @@
 #include <cjson/cJSON.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 void tippe_launch_friction_model(const tippe_launch_options *o, tippe_dynamics_model *m)
@@ -17,6 +18,68 @@ void tippe_launch_friction_model(const tippe_launch_options *o, tippe_dynamics_m
     m->slip_scale_m_s = o->slip_scale_m_s;
     m->patch_radius_m = o->patch_radius_m;
     m->patch_E_star_pa = o->patch_E_star_pa;
+}
+
+const char *tippe_launch_slip_text(const tippe_top *top, const tippe_dynamics_initial *ic,
+                                   double *slip_m_s, char *buf, size_t size)
+{
+    const double slip = tippe_dynamics_launch_slip(top, ic);
+    if (slip_m_s)
+        *slip_m_s = slip;
+    /* the speeds V_Q is made of (eq 3.7): R |omega| and |v| */
+    const double w = fabs(ic->spin) + fabs(ic->phi_dot) + fabs(ic->theta_dot);
+    const double v = hypot(ic->U, ic->V);
+    const double scale = top->R * w + v;
+    const int at_rest = slip <= TIPPE_LAUNCH_SLIP_ROUNDING_REL * scale;
+    if (!isfinite(slip))
+        snprintf(buf, size, "contact slip unknown");
+    else if (v == 0 && at_rest)
+        snprintf(buf, size, "no sliding (centre and contact at rest)");
+    else if (v == 0)
+        snprintf(buf, size, "centre at rest (U = V = 0), contact slip %.3g m/s", slip);
+    else if (at_rest)
+        snprintf(buf, size, "centre moving at %.3g m/s (U %.3g, V %.3g m/s), no sliding "
+                 "(contact at rest)", v, ic->U, ic->V);
+    else
+        snprintf(buf, size, "centre sliding at %.3g m/s (U %.3g, V %.3g m/s), contact slip "
+                 "%.3g m/s", v, ic->U, ic->V, slip);
+    return buf;
+}
+
+const char *tippe_dynamics_friction_text(const tippe_dynamics_model *m, char *buf, size_t size)
+{
+    const double vs = m->slip_scale_m_s > 0 ? m->slip_scale_m_s : TIPPE_COULOMB_SLIP_SCALE_M_S;
+    switch (m->law) {
+    case TIPPE_FRICTION_COULOMB:
+        snprintf(buf, size, "Coulomb mu_c %g, sliding and sticking (sliding regularised below "
+                 "%g m/s)", m->mu_c, vs);
+        break;
+    case TIPPE_FRICTION_PATCH:
+        if (m->rolling_arm_m > 0) {
+            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
+                     "(%s), rolling resistance arm %g um, regularised below %g m/s", m->mu_c,
+                     tippe_dynamics_patch_radius(m) * 1e3,
+                     m->patch_radius_m > 0 ? "given" : "Hertz at m g", m->rolling_arm_m * 1e6,
+                     vs);
+            break;
+        }
+        if (m->patch_radius_m > 0 || !(m->patch_E_star_pa > 0))
+            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
+                     "(Hertz pressure), regularised below %g m/s", m->mu_c,
+                     m->patch_radius_m * 1e3, vs);
+        else
+            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on Hertz's patch at m g "
+                     "(E* %.3g GPa, Hertz pressure), regularised below %g m/s", m->mu_c,
+                     m->patch_E_star_pa * 1e-9, vs);
+        break;
+    case TIPPE_FRICTION_COULOMB_CREEP:
+        snprintf(buf, size, "Coulomb mu_c %g regularised below %g m/s, no sticking (creep)",
+                 m->mu_c, vs);
+        break;
+    default:
+        snprintf(buf, size, "viscous mu %g s/m (eq 3.12)", m->mu);
+    }
+    return buf;
 }
 
 void tippe_dynamics_friction_json(cJSON *o, const tippe_dynamics_model *m)

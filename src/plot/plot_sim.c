@@ -321,3 +321,98 @@ int tippe_plot_sim(const char *path, const tippe_scenario *sc, const tippe_dynam
     free(s.t);
     return tippe_plot_close(p, err);
 }
+
+/* ---- one launch under several friction laws (tippe check --friction A,B) ---- */
+
+/* Blue, red, green, purple: told apart in colour and, for grey print, by line style. */
+static const unsigned COL_LAW[4] = {0x1f5fbf, 0xd7301f, 0x1a9641, 0x7b3294};
+static const int STYLE_LAW[4] = {TIPPE_PLOT_SOLID, TIPPE_PLOT_DASHED, TIPPE_PLOT_SOLID,
+                                 TIPPE_PLOT_DOTTED};
+
+int tippe_plot_sim_laws(const char *path, const char *title, int n_laws,
+                        const char *const *labels, const tippe_dynamics_samples *runs,
+                        double t_window_s, tippe_error *err)
+{
+    if (n_laws < 1 || n_laws > 4)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: 1 to 4 laws to plot, not %d", path,
+                               n_laws);
+    double t_end = 0.0, t_first = INFINITY;
+    int most = 0;
+    for (int k = 0; k < n_laws; k++) {
+        if (runs[k].n < 2)
+            return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: fewer than 2 samples to plot", path);
+        t_end = fmax(t_end, runs[k].s[runs[k].n - 1].t);
+        if (runs[k].s[1].t > 0)
+            t_first = fmin(t_first, runs[k].s[1].t);
+        most = runs[k].n > most ? runs[k].n : most;
+    }
+    const double t_w = t_window_s > 0 && t_window_s < t_end ? t_window_s : t_end;
+    double *x = malloc(2 * (size_t)most * sizeof *x);
+    if (!x)
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
+    double *y = x + most;
+    tippe_plot *p = NULL;
+    int rc = tippe_plot_open(path, PAGE_W, PAGE_H, &p, err);
+    if (rc) {
+        free(x);
+        return rc;
+    }
+    const double vx0 = 0.075, vx1 = 0.70;
+    /* top: the launch itself, linear time over [0, t_w] */
+    tippe_plot_panel(vx0, vx1, 0.56, 0.90, 0.0, t_w, -0.06, M_PI + 0.06);
+    series_axes(t_w, M_PI, 1, "time t (s)", "nutation #gh (rad)");
+    hline(0.0, t_w, 0.5 * M_PI, COL_GREY);
+    for (int k = 0; k < n_laws; k++) {
+        int m = 0;
+        for (int i = 0; i < runs[k].n && runs[k].s[i].t <= t_w * (1 + 1e-12); i++, m++) {
+            x[m] = runs[k].s[i].t;
+            y[m] = runs[k].s[i].theta;
+        }
+        tippe_plot_line(m, x, y, COL_LAW[k], 2.0, STYLE_LAW[k]);
+    }
+    char head[160];
+    snprintf(head, sizeof head, "the launch: t = 0 .. %.3g s", t_w);
+    tippe_plot_margin_text("t", 0.8, 0.0, 0.0, 0.8, 0x000000, head);
+    /* bottom: the whole run to t_end on a logarithmic time axis */
+    const double l0 = floor(log10(fmax(t_first, t_end * 1e-5))), l1 = log10(t_end);
+    tippe_plot_panel(vx0, vx1, 0.10, 0.44, l0, l1, -0.06, M_PI + 0.06);
+    colour_3d(0xc8c8c8);
+    pllsty(2);
+    plbox("gl", 1.0, 0, "g", 0.5, 0);
+    pllsty(1);
+    colour_3d(0x000000);
+    plschr(0.0, 0.62);
+    plbox("bclnst", 1.0, 0, "bcnstv", 0.5, 0);
+    plmtex("b", 2.8, 0.5, 0.5, "time t (s), logarithmic");
+    plmtex("l", 6.5, 0.5, 0.5, "nutation #gh (rad)");
+    plschr(0.0, 1.0);
+    hline(l0, l1, 0.5 * M_PI, COL_GREY);
+    for (int k = 0; k < n_laws; k++) {
+        int m = 0;
+        for (int i = 0; i < runs[k].n; i++)
+            if (runs[k].s[i].t > 0 && log10(runs[k].s[i].t) >= l0) {
+                x[m] = log10(runs[k].s[i].t);
+                y[m] = runs[k].s[i].theta;
+                m++;
+            }
+        tippe_plot_line(m, x, y, COL_LAW[k], 2.0, STYLE_LAW[k]);
+    }
+    snprintf(head, sizeof head, "the whole run: t = %.3g .. %.4g s", pow(10.0, l0), t_end);
+    tippe_plot_margin_text("t", 0.8, 0.0, 0.0, 0.8, 0x000000, head);
+    /* the key: one line per law, and the 90 degree line */
+    tippe_plot_key keys[5];
+    char esc[4][400];
+    for (int k = 0; k < n_laws; k++) {
+        tippe_plot_escape(labels[k], esc[k], sizeof esc[k]);
+        keys[k] = (tippe_plot_key){TIPPE_PLOT_KEY_LINE, esc[k], COL_LAW[k], 1, 2.5, STYLE_LAW[k]};
+    }
+    keys[n_laws] = (tippe_plot_key){TIPPE_PLOT_KEY_LINE, "#gh = #gp/2 (a flip passes it)",
+                                    COL_GREY, 1, 1.5, TIPPE_PLOT_DASHED};
+    tippe_plot_panel(0.715, 0.995, 0.10, 0.90, 0, 1, 0, 1);
+    tippe_plot_legend(keys, n_laws + 1, "tl", 1, 0.62);
+    char t[600];
+    tippe_plot_escape(title, t, sizeof t);
+    tippe_plot_page_title(t, fmin(1.1, 110.0 / (double)strlen(t)));
+    free(x);
+    return tippe_plot_close(p, err);
+}

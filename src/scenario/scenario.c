@@ -744,7 +744,7 @@ int tippe_scenario_load(const char *path, const char *const *overrides, int n_ov
 
 /* The scenario of a design's central hand launch (the defaults of tippe
  * launch, docs/launch.md): the median tilt of the half-normal, steady
- * precession, the middle of the spin range, no sliding; its mu, g and t_end. */
+ * precession, the middle of the spin range, centre at rest; its mu, g and t_end. */
 static cJSON *design_root(const char *design_path, double z2_mm, const char *const *sets,
                           int n_sets)
 {

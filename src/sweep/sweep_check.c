@@ -143,6 +143,105 @@ static void add_decision_json(cJSON *o, const tippe_launch_record *rec)
     number_or_null(o, "t_flip_s", rec->t_flip_s);
 }
 
+int tippe_sweep_check_laws(const tippe_design *d, double z2_mm, const tippe_launch_options *o,
+                           int n, double spin_rad_s, tippe_sweep_check_law *out, tippe_error *err)
+{
+    memset(out, 0, (size_t)n * sizeof *out);
+    for (int i = 0; i < n; i++) {
+        tippe_sweep_check_law *l = &out[i];
+        l->o = o[i];
+        tippe_dynamics_model m;
+        tippe_launch_friction_model(&o[i], &m);
+        tippe_dynamics_friction_text(&m, l->friction, sizeof l->friction);
+        int rc = tippe_sweep_check_run(d, z2_mm, &o[i], spin_rad_s, &l->check, err);
+        if (!rc)
+            rc = tippe_launch_trajectory(&l->check.top, &o[i], &l->check.ic, 0.0, &l->samples,
+                                         &l->run, err);
+        if (rc) {
+            char msg[sizeof err->msg];
+            snprintf(msg, sizeof msg, "%s", err->msg);
+            return tippe_error_set(err, rc, "under %s friction: %s",
+                                   tippe_friction_law_name(o[i].law), msg);
+        }
+    }
+    return TIPPE_OK;
+}
+
+void tippe_sweep_check_laws_free(tippe_sweep_check_law *l, int n)
+{
+    for (int i = 0; i < n; i++)
+        tippe_dynamics_samples_free(&l[i].samples);
+}
+
+double tippe_sweep_check_law_energy_lost(const tippe_sweep_check_law *l)
+{
+    /* D, the integral of the dissipation (eq 4.1), over E0 (section 4) */
+    return l->run.E0 > 0 ? l->run.last.D / l->run.E0 : NAN;
+}
+
+cJSON *tippe_sweep_check_laws_json(const tippe_sweep_check_law *l, int n,
+                                   const char *const *sets, int n_sets)
+{
+    if (n < 1)
+        return NULL;
+    /* the first law's report gives the design, the launch and theory: the
+     * launch (and with it J0) does not depend on the law */
+    cJSON *o = tippe_sweep_check_json(&l[0].check, &l[0].o, sets, n_sets);
+    if (!o)
+        return NULL;
+    static const char *const per_law[] = {
+        "verdict", "model_valid", "on_polar_cap", "t_s", "decided_by", "margin_J",
+        "barrier_gap_J", "theta_range_rad", "Rn_bound_N", "t_flip_s", "theta_final_rad",
+        "spin_final_rad_s", "jellett_rel_drift", "options"};
+    for (size_t k = 0; k < sizeof per_law / sizeof per_law[0]; k++)
+        if (strcmp(per_law[k], "model_valid") != 0) /* the design's at Z2: kept */
+            cJSON_DeleteItemFromObjectCaseSensitive(o, per_law[k]);
+    cJSON *th = cJSON_GetObjectItemCaseSensitive(o, "theory");
+    if (th) /* agreement is per law */
+        cJSON_DeleteItemFromObjectCaseSensitive(th, "agrees");
+    cJSON *arr = cJSON_AddArrayToObject(o, "laws");
+    for (int i = 0; arr && i < n; i++) {
+        const tippe_sweep_check_law *x = &l[i];
+        const tippe_launch_record *rec = &x->check.rec;
+        cJSON *j = cJSON_CreateObject();
+        if (!j || !cJSON_AddItemToArray(arr, j)) {
+            cJSON_Delete(j);
+            break;
+        }
+        tippe_dynamics_model m;
+        tippe_launch_friction_model(&x->o, &m);
+        tippe_dynamics_friction_json(j, &m);
+        cJSON_DeleteItemFromObjectCaseSensitive(j, "mu_s_m"); /* in "friction" */
+        cJSON_AddStringToObject(j, "friction_text", x->friction);
+        cJSON_AddStringToObject(j, "verdict", tippe_verdict_name(rec->verdict));
+        cJSON_AddNumberToObject(j, "t_s", rec->t_s);
+        add_decision_json(j, rec);
+        number_or_null(j, "theta_final_rad", rec->theta_final_rad);
+        number_or_null(j, "spin_final_rad_s", rec->spin_final_rad_s);
+        if (rec->agrees < 0)
+            cJSON_AddNullToObject(j, "agrees");
+        else
+            cJSON_AddBoolToObject(j, "agrees", rec->agrees);
+        /* the trajectory to t_end: when theta first passed and came back below
+         * pi/2, where and with what energy the run ended */
+        cJSON *r = cJSON_AddObjectToObject(j, "run");
+        if (r) {
+            number_or_null(r, "t_flip_s", x->run.t_flip);
+            number_or_null(r, "t_fall_s", x->run.t_fall);
+            cJSON_AddNumberToObject(r, "t_end_s", x->run.last.t);
+            cJSON_AddNumberToObject(r, "theta_end_rad", x->run.last.theta);
+            cJSON_AddNumberToObject(r, "E0_J", x->run.E0);
+            cJSON_AddNumberToObject(r, "E_end_J", x->run.last.E);
+            cJSON_AddNumberToObject(r, "dissipated_J", x->run.last.D);
+            number_or_null(r, "energy_lost", tippe_sweep_check_law_energy_lost(x));
+            cJSON_AddNumberToObject(r, "energy_rel_error", x->run.energy_rel_error);
+            cJSON_AddNumberToObject(r, "samples", x->samples.n);
+        }
+        cJSON_AddItemToObject(j, "options", tippe_launch_options_json(&x->o, 1));
+    }
+    return o;
+}
+
 cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_options *opt,
                               const char *const *sets, int n_sets)
 {
@@ -162,6 +261,10 @@ cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_opt
             cJSON_AddNumberToObject(ini, "spin_rad_s", ic->spin);
             cJSON_AddNumberToObject(ini, "U_m_s", ic->U);
             cJSON_AddNumberToObject(ini, "V_m_s", ic->V);
+            /* |v + omega x q| at launch (eq 3.7): the central launch's centre is at
+             * rest, its contact point is not */
+            cJSON_AddNumberToObject(ini, "contact_slip_m_s",
+                                    tippe_dynamics_launch_slip(&r->top, ic));
         }
         cJSON_AddStringToObject(o, "verdict", tippe_verdict_name(rec->verdict));
         tippe_design_protrusion pr;
