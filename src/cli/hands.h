@@ -30,6 +30,7 @@ typedef struct {
                                 * check one value (from = to) */
     long n, threads, seed;
     int json;
+    int no_radius_sensitivity; /* check, launch: --no-radius-sensitivity */
     const char *csv, *plot, *accuracy, *stepper, *friction;
     const char *table;         /* --table (patch law) */
     double patch_mm;           /* --patch-mm (patch law; 0: Hertz from the materials) */
