@@ -198,7 +198,16 @@ static int apply_friction(hands_args *a, const tippe_cli_spec *spec)
 
 int hands_patch(hands_args *a, const tippe_design *d, tippe_error *err)
 {
-    if (a->o.law != TIPPE_FRICTION_PATCH || a->o.patch_radius_m > 0)
+    if (a->o.law != TIPPE_FRICTION_PATCH)
+        return TIPPE_OK;
+    /* the dynamics' bound (a patch wider than R/2 is no patch), said with the option */
+    const double R_mm = tippe_design_radius_mm(d);
+    if (a->o.patch_radius_m > 0 && a->patch_mm > 0.5 * R_mm)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "--patch-mm %g: wider than half the ball's radius (R/2 = %g mm); "
+                               "a contact patch is small beside the ball (Hertz: a << R)",
+                               a->patch_mm, 0.5 * R_mm);
+    if (a->o.patch_radius_m > 0)
         return TIPPE_OK;
     return tippe_launch_patch_modulus(d, a->table, &a->o.patch_E_star_pa, err);
 }

@@ -228,6 +228,8 @@ static void print_radius_sensitivity(const tippe_launch_radius_sensitivity *s, l
     if (s->robust)
         printf("           robust to the radius: every launch gives the same verdict, flip and "
                "fall back at all three\n");
+    else if (s->changed == 0) /* a radius was not run */
+        printf("           robustness to the radius not known: a radius was not run\n");
     else
         printf("           NOT robust to the radius: %ld of %ld launches change verdict, flip or "
                "fall back between 0.5x and 2x the radius\n", s->changed, n);
