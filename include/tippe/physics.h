@@ -669,6 +669,9 @@ typedef struct {
     /* s, time the contact spent within a hole's opening at a pole up to t_s, and
      * the first time it was there (NAN: never): the model does not hold there */
     double cap_time_s, cap_first_s;
+    double t_fall_s;         /* s, first came back below pi/2 after t_flip_s (NAN: did not) */
+    double inverted_time_s;  /* s, model time spent above pi/2 */
+    double energy_rel_error; /* max |E + D - E0| / E0 over the run */
     int rolling;             /* Coulomb: rolling without slipping at the decision */
     int end_state_proved;    /* 0 under Coulomb friction with sticking: a trapped verdict
                                 proves the well and range, not the rest state */
@@ -795,6 +798,56 @@ typedef struct {
 
 /* The index of the most frequent verdict of a cell (the lowest on a tie). */
 int tippe_launch_dominant(const tippe_launch_tally *t);
+
+/* ---- Sensitivity to the patch radius (issue 27; docs/dynamics.md, "Radius sensitivity")
+ * The patch radius is uncertain (surface finish, the table, wear): under the patch law a
+ * launch (or a batch of launches, with the same draws) is run again at 0.5x and 2x the
+ * radius it used, and called robust to the radius only when every launch gives the same
+ * verdict, the same passage over pi/2 (t_flip set or not) and the same fall back (t_fall
+ * set or not) at all three radii. */
+enum { TIPPE_LAUNCH_RADIUS_RUNS = 3 };
+/* The factors on the used radius, in run order: 0.5, 1 (the plain run), 2. */
+double tippe_launch_radius_factor(int i);
+
+/* The patch radius a launch of top under o uses, m: o->patch_radius_m if > 0, else Hertz's
+ * at m g from o->patch_E_star_pa; 0 for the other laws. */
+double tippe_launch_patch_radius(const tippe_top *top, const tippe_launch_options *o);
+
+/* *out = *o with the patch radius factor times the used one (given, not Hertz). 1 if that
+ * radius is beyond what the dynamics accepts (R/2: not run), else 0. */
+int tippe_launch_radius_options(const tippe_top *top, const tippe_launch_options *o,
+                                double factor, tippe_launch_options *out);
+
+typedef struct {
+    double factor, radius_m;
+    int ran;                 /* 0: not run, the radius exceeds R/2 */
+    long n;                  /* launches */
+    long counts[TIPPE_LAUNCH_N_VERDICTS];
+    long passed, fell;       /* launches that passed pi/2; of those, came back below */
+    double median_t_flip_s, median_t_fall_s; /* over those (NAN if none) */
+    tippe_launch_record first; /* launch 0: tippe check's one launch */
+} tippe_launch_radius_run;
+
+typedef struct {
+    tippe_launch_radius_run run[TIPPE_LAUNCH_RADIUS_RUNS]; /* 0.5x, 1x, 2x */
+    long changed; /* launches whose outcome (verdict, flip, fall) differs between radii */
+    int robust;   /* all three ran and changed == 0 */
+} tippe_launch_radius_sensitivity;
+
+/* Summarises three runs of the same n launches (rec[i] at radius_m[i], rec[i] NULL: not
+ * run). TIPPE_ECOMPUTE if out of memory. */
+int tippe_launch_radius_summary(const tippe_launch_record *const rec[TIPPE_LAUNCH_RADIUS_RUNS],
+                                long n, const double radius_m[TIPPE_LAUNCH_RADIUS_RUNS],
+                                tippe_launch_radius_sensitivity *out, tippe_error *err);
+
+/* One launch ic (tippe check) at the three radii. plain: the launch already run under o
+ * (used as the middle run), or NULL to run it here. TIPPE_EINPUT if o is not the patch
+ * law; otherwise the status of a run that failed. */
+int tippe_launch_radius_sensitivity_initial(const tippe_top *top, const tippe_launch_options *o,
+                                            const tippe_dynamics_initial *ic,
+                                            const tippe_launch_record *plain,
+                                            tippe_launch_radius_sensitivity *out,
+                                            tippe_error *err);
 
 /* ==== from tippe/contact_patch.h ==== */
 /* Contact patch: the contact of the sphere on the table as a small circular
@@ -957,5 +1010,10 @@ void tippe_dynamics_accuracy_json(struct cJSON *o, const char *preset,
 /* A launch's options: the hand-launch distribution (without the spin's when
  * fixed_spin), the friction, g, t_end and the accuracy. NULL if out of memory. */
 struct cJSON *tippe_launch_options_json(const tippe_launch_options *o, int fixed_spin);
+/* The radius sensitivity as JSON: {"robust", "changed", "runs": [{"factor", "patch_mm",
+ * "ran", and for one launch (one_launch) "verdict", "t_s", "theta_final_rad", "t_flip_s",
+ * "t_fall_s", "inverted_time_s", else "counts" {verdict: n}, "passed_pi_2", "fell_back",
+ * "median_t_flip_s", "median_t_fall_s"}]}. NULL if out of memory. */
+struct cJSON *tippe_launch_radius_json(const tippe_launch_radius_sensitivity *s, int one_launch);
 
 #endif

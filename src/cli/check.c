@@ -29,6 +29,10 @@ static int check_parse(hands_args *a, int argc, char **argv)
         {.name = "plot", .kind = TIPPE_CLI_STRING, .value = &a->plot, .arg = "FILE",
          .help = "theta, spin and contact speed against time and the (phi_dot, theta, n)\n"
                  "path, as tippe simulate draws them; .png, .svg or .pdf"},
+        {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,
+         .value = &a->no_radius_sensitivity,
+         .help = "patch law: skip the launch's reruns at 0.5x and 2x the patch radius\n"
+                 "(by default the outcome is given at all three, docs/dynamics.md)"},
         {NULL},
     };
     hands_verb v = {
@@ -160,6 +164,38 @@ static void print_verdict_line(const tippe_launch_record *rec)
     }
 }
 
+/* The outcome at 0.5x, 1x and 2x the patch radius (tippe_launch_radius_sensitivity_initial). */
+static void print_radius_sensitivity(const tippe_launch_radius_sensitivity *s)
+{
+    printf("radius     the patch radius is uncertain (surface, table, wear): the same launch at\n");
+    for (int i = 0; i < TIPPE_LAUNCH_RADIUS_RUNS; i++) {
+        const tippe_launch_radius_run *r = &s->run[i];
+        printf("           %-4s %.4g mm: ", i == 0 ? "0.5x" : i == 1 ? "1x" : "2x",
+               r->radius_m * 1e3);
+        if (!r->ran) {
+            printf("not run (wider than half the ball's radius)\n");
+            continue;
+        }
+        const tippe_launch_record *q = &r->first;
+        printf("%s", tippe_verdict_name(q->verdict));
+        if (isfinite(q->t_flip_s))
+            printf(", over 90 deg at %.4g s", q->t_flip_s);
+        else
+            printf(", never over 90 deg");
+        if (isfinite(q->t_fall_s))
+            printf(", back below at %.4g s", q->t_fall_s);
+        printf("\n");
+    }
+    if (s->robust)
+        printf("           robust to the radius: the same verdict, flip and fall back at all "
+               "three\n");
+    else if (s->changed == 0) /* a radius was not run */
+        printf("           robustness to the radius not known: a radius was not run\n");
+    else
+        printf("           NOT robust to the radius: the outcome changes between 0.5x and 2x "
+               "the radius\n");
+}
+
 static void check_text(const hands_args *a, const tippe_sweep_check *r)
 {
     const tippe_dynamics_initial *ic = &r->ic;
@@ -248,8 +284,24 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
     } else {
         printf("theory     no prediction for J0 = %.4g kg m^3/s\n", rec->J0);
     }
-    printf("accuracy   Jellett drift %.2g, %ld RHS evaluations\n", rec->jellett_rel_drift,
-           rec->rhs_evals);
+    printf("accuracy   Jellett drift %.2g, energy balance %.2g, %ld RHS evaluations\n",
+           rec->jellett_rel_drift, rec->energy_rel_error, rec->rhs_evals);
+}
+
+/* Under the patch law (unless --no-radius-sensitivity): the launch again at 0.5x and 2x
+ * its patch radius. 0 and *done 1, or the status after saying why. */
+static int check_radius(const hands_args *a, const tippe_sweep_check *r,
+                        tippe_launch_radius_sensitivity *s, int *done)
+{
+    *done = 0;
+    if (a->o.law != TIPPE_FRICTION_PATCH || a->no_radius_sensitivity)
+        return 0;
+    tippe_error err;
+    int rc = tippe_launch_radius_sensitivity_initial(&r->top, &a->o, &r->ic, &r->rec, s, &err);
+    if (rc)
+        return tippe_cli_fail(a->verb, &err, rc);
+    *done = 1;
+    return 0;
 }
 
 /* --friction A,B,...: the same launch under each law, one table (and one plot). */
@@ -379,10 +431,23 @@ int tippe_cli_check(int argc, char **argv)
         tippe_design_free(d);
         return rc;
     }
+    tippe_launch_radius_sensitivity sens;
+    int sens_done = 0;
+    if ((rc = check_radius(&a, &r, &sens, &sens_done)) != 0) {
+        tippe_design_free(d);
+        return rc;
+    }
     if (a.json) {
-        rc = tippe_cli_print_json(a.verb, tippe_sweep_check_json(&r, &a.o, a.sets.item, a.sets.n));
+        cJSON *o = tippe_sweep_check_json(&r, &a.o, a.sets.item, a.sets.n);
+        if (o && a.o.law == TIPPE_FRICTION_PATCH)
+            cJSON_AddItemToObject(o, "radius_sensitivity",
+                                  sens_done ? tippe_launch_radius_json(&sens, 1)
+                                            : cJSON_CreateNull());
+        rc = tippe_cli_print_json(a.verb, o);
     } else {
         check_text(&a, &r);
+        if (sens_done)
+            print_radius_sensitivity(&sens);
         if (a.csv)
             printf("csv        %s (%d samples, to t = %g s)\n", a.csv, n_samples, a.o.t_end);
         if (a.plot)

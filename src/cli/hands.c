@@ -260,6 +260,15 @@ void hands_friction_law(const hands_friction *f, int i, const tippe_launch_optio
 
 int hands_patch(hands_args *a, const tippe_design *d, tippe_error *err)
 {
+    if (!has_law(&a->fr, TIPPE_FRICTION_PATCH))
+        return TIPPE_OK;
+    /* the dynamics' bound (a patch wider than R/2 is no patch), said with the option */
+    const double R_mm = tippe_design_radius_mm(d);
+    if (a->o.patch_radius_m > 0 && a->fr.patch_mm > 0.5 * R_mm)
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "--patch-mm %g: wider than half the ball's radius (R/2 = %g mm); "
+                               "a contact patch is small beside the ball (Hertz: a << R)",
+                               a->fr.patch_mm, 0.5 * R_mm);
     return hands_friction_patch(&a->fr, &a->o, d, err);
 }
 

@@ -58,6 +58,7 @@ typedef struct {
                                 * check one value (from = to) */
     long n, threads, seed;
     int json;
+    int no_radius_sensitivity; /* check, launch: --no-radius-sensitivity */
     const char *csv, *plot, *accuracy, *stepper;
     hands_friction fr;         /* --friction and its coefficients */
     tippe_launch_options o;    /* the distributions and the model */

@@ -146,6 +146,11 @@ static int launch_parse(hands_args *a, int argc, char **argv)
          .help = "one row per launch: initial state, verdict, t_s, theta_final,\n"
                  "Jellett drift, theory's prediction, how it was decided (barrier gap,\n"
                  "margin) and the flip time (- for stdout)"},
+        {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,
+         .value = &a->no_radius_sensitivity,
+         .help = "patch law: skip the reruns of the same launches at 0.5x and 2x the\n"
+                 "patch radius (by default the summary is given at all three, which\n"
+                 "triples the work; docs/dynamics.md)"},
         {NULL},
     };
     hands_verb v = {
@@ -169,7 +174,8 @@ static int launch_parse(hands_args *a, int argc, char **argv)
 }
 
 static void launch_json(const hands_args *a, const tippe_design *d, const tippe_top *top,
-                        const tippe_launch_tally *t, const tippe_sweep_point_zone *z, int *rc)
+                        const tippe_launch_tally *t, const tippe_sweep_point_zone *z,
+                        const tippe_launch_radius_sensitivity *sens, int *rc)
 {
     /* No timings or thread counts: the JSON is the same on any machine
      * layout, byte for byte. */
@@ -187,8 +193,48 @@ static void launch_json(const hands_args *a, const tippe_design *d, const tippe_
         cJSON_AddItemToObject(o, "distribution", tippe_launch_options_json(&a->o, 0));
         cJSON_AddNumberToObject(o, "max_jellett_rel_drift", t->max_jellett_rel_drift);
         cJSON_AddNumberToObject(o, "rhs_evals", t->rhs_evals);
+        if (a->o.law == TIPPE_FRICTION_PATCH)
+            cJSON_AddItemToObject(o, "radius_sensitivity",
+                                  sens ? tippe_launch_radius_json(sens, 0) : cJSON_CreateNull());
     }
     *rc = tippe_cli_print_json(a->verb, o);
+}
+
+/* The summary at 0.5x, 1x and 2x the patch radius, the same draws at each. */
+static void print_radius_sensitivity(const tippe_launch_radius_sensitivity *s, long n)
+{
+    printf("radius     the patch radius is uncertain (surface, table, wear): the same %ld "
+           "launches at\n", n);
+    for (int i = 0; i < TIPPE_LAUNCH_RADIUS_RUNS; i++) {
+        const tippe_launch_radius_run *r = &s->run[i];
+        printf("           %-4s %.4g mm: ", i == 0 ? "0.5x" : i == 1 ? "1x" : "2x",
+               r->radius_m * 1e3);
+        if (!r->ran) {
+            printf("not run (wider than half the ball's radius)\n");
+            continue;
+        }
+        const char *sep = "";
+        for (int v = 0; v < TIPPE_LAUNCH_N_VERDICTS; v++)
+            if (r->counts[v]) {
+                printf("%s%s %ld", sep, tippe_verdict_name((tippe_verdict)v), r->counts[v]);
+                sep = ", ";
+            }
+        printf("; over 90 deg %ld", r->passed);
+        if (r->passed)
+            printf(" (median %.3g s)", r->median_t_flip_s);
+        printf(", back below %ld", r->fell);
+        if (r->fell)
+            printf(" (median %.3g s)", r->median_t_fall_s);
+        printf("\n");
+    }
+    if (s->robust)
+        printf("           robust to the radius: every launch gives the same verdict, flip and "
+               "fall back at all three\n");
+    else if (s->changed == 0) /* a radius was not run */
+        printf("           robustness to the radius not known: a radius was not run\n");
+    else
+        printf("           NOT robust to the radius: %ld of %ld launches change verdict, flip or "
+               "fall back between 0.5x and 2x the radius\n", s->changed, n);
 }
 
 static void launch_text(const hands_args *a, const tippe_design *d, const tippe_top *top,
@@ -222,17 +268,50 @@ static void launch_text(const hands_args *a, const tippe_design *d, const tippe_
         printf("csv        %s (%ld launches)\n", a->csv, a->n);
 }
 
-/* Runs the launches (every rank) and, on rank 0, writes and prints the results. */
+/* Under the patch law (unless --no-radius-sensitivity): the same launches at 0.5x and 2x
+ * the patch radius into rec + n and rec + 2n (every rank), summarised beside the plain run
+ * rec on rank 0 into *s. */
+static int launch_radius_runs(const hands_args *a, const tippe_top *top,
+                              tippe_launch_record *rec, tippe_progress *prog,
+                              tippe_launch_radius_sensitivity *s, tippe_error *err)
+{
+    tippe_launch_plan plan = {1, a->n, top, NULL};
+    const tippe_launch_record *ptr[TIPPE_LAUNCH_RADIUS_RUNS];
+    double radius_m[TIPPE_LAUNCH_RADIUS_RUNS];
+    for (int i = 0; i < TIPPE_LAUNCH_RADIUS_RUNS; i++) {
+        tippe_launch_options oi;
+        const int beyond = tippe_launch_radius_options(top, &a->o, tippe_launch_radius_factor(i),
+                                                       &oi);
+        radius_m[i] = oi.patch_radius_m;
+        tippe_launch_record *ri = i == 1 ? rec : rec + (i == 0 ? 1 : 2) * a->n;
+        ptr[i] = beyond ? NULL : ri;
+        if (i == 1 || beyond)
+            continue;
+        int rc = hands_run_plan(&plan, &oi, (uint64_t)a->seed, ri, prog, err);
+        if (rc)
+            return rc;
+    }
+    if (hands_mpi_rank() != 0)
+        return 0;
+    return tippe_launch_radius_summary(ptr, a->n, radius_m, s, err);
+}
+
+/* Runs the launches (every rank) and, on rank 0, writes and prints the results. rec has
+ * room for 3 n records when the radius sensitivity runs. */
 static int launch_run(const hands_args *a, const tippe_design *d, const tippe_top *top,
-                      tippe_launch_record *rec)
+                      tippe_launch_record *rec, int radius_runs)
 {
     tippe_error err;
     tippe_launch_plan plan = {1, a->n, top, NULL};
     tippe_progress prog;
-    tippe_progress_start(&prog, stderr, "tippe launch", a->n, tippe_cli_progress_mode());
+    tippe_progress_start(&prog, stderr, "tippe launch", radius_runs ? 3 * a->n : a->n,
+                         tippe_cli_progress_mode());
     const double t0 = tippe_cli_now_s();
     int rc = hands_run_plan(&plan, &a->o, (uint64_t)a->seed, rec, &prog, &err);
     const double elapsed = tippe_cli_now_s() - t0;
+    tippe_launch_radius_sensitivity sens;
+    if (!rc && radius_runs)
+        rc = launch_radius_runs(a, top, rec, &prog, &sens, &err);
     tippe_progress_finish(&prog);
     if (hands_mpi_rank() != 0)
         return 0;
@@ -243,10 +322,13 @@ static int launch_run(const hands_args *a, const tippe_design *d, const tippe_to
         return tippe_cli_fail(a->verb, &err, rc);
     tippe_sweep_point_zone z;
     tippe_sweep_zone_at(d, a->z2_mm, &z);
-    if (a->json)
-        launch_json(a, d, top, &t, &z, &rc);
-    else
+    if (a->json) {
+        launch_json(a, d, top, &t, &z, radius_runs ? &sens : NULL, &rc);
+    } else {
         launch_text(a, d, top, &t, &z, elapsed);
+        if (radius_runs)
+            print_radius_sensitivity(&sens, a->n);
+    }
     return rc;
 }
 
@@ -272,7 +354,8 @@ int tippe_cli_launch(int argc, char **argv)
     if (!rc) /* each launch records its time on a hole's rim at a pole (issue 25.7) */
         tippe_launch_polar_caps(d, a.z2_mm, &top, a.o.cap_half_angle_rad);
     tippe_launch_record *rec = NULL;
-    if (!rc && !(rec = calloc((size_t)a.n, sizeof *rec))) {
+    const int radius_runs = a.o.law == TIPPE_FRICTION_PATCH && !a.no_radius_sensitivity;
+    if (!rc && !(rec = calloc((size_t)a.n * (radius_runs ? 3 : 1), sizeof *rec))) {
         fprintf(stderr, "tippe launch: out of memory for %ld launches\n", a.n);
         rc = 1;
     }
@@ -280,7 +363,7 @@ int tippe_cli_launch(int argc, char **argv)
         fprintf(stderr, "tippe launch: %ld launches ahead; this takes a while (progress below)\n",
                 a.n);
     if ((rc = hands_mpi_agree(rc)) == 0)
-        rc = launch_run(&a, d, &top, rec);
+        rc = launch_run(&a, d, &top, rec, radius_runs);
     free(rec);
     tippe_design_free(d);
     return rc;

@@ -70,10 +70,11 @@ int tippe_launch_options_check(const tippe_launch_options *o, tippe_error *err)
     if (o->law != TIPPE_FRICTION_VISCOUS && o->law != TIPPE_FRICTION_COULOMB &&
         o->law != TIPPE_FRICTION_COULOMB_CREEP && o->law != TIPPE_FRICTION_PATCH)
         return tippe_error_set(err, TIPPE_EINPUT, "unknown friction law %d", (int)o->law);
-    if (!(o->patch_radius_m >= 0 && o->patch_radius_m <= 1e-2) ||
+    /* the dynamics refuses a patch wider than R/2 (it knows R); here only a number */
+    if (!(o->patch_radius_m >= 0 && isfinite(o->patch_radius_m)) ||
         !(o->patch_E_star_pa >= 0 && isfinite(o->patch_E_star_pa)))
         return tippe_error_set(err, TIPPE_EINPUT,
-                               "patch radius %g m must be in [0, 0.01] and E* %g Pa >= 0",
+                               "patch radius %g m and E* %g Pa must be >= 0 and finite",
                                o->patch_radius_m, o->patch_E_star_pa);
     /* a design's launches get the radius or Hertz's modulus (tippe_launch_patch_modulus):
      * neither would silently be the point limit */
@@ -230,7 +231,8 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->agrees = -1;
     rec->t_s = rec->theta_final_rad = rec->spin_final_rad_s = NAN;
     rec->how = TIPPE_DECIDED_T_END;
-    rec->barrier_gap_J = rec->margin_J = rec->t_flip_s = NAN;
+    rec->barrier_gap_J = rec->margin_J = rec->t_flip_s = rec->t_fall_s = NAN;
+    rec->inverted_time_s = rec->energy_rel_error = NAN;
     rec->cap_time_s = 0;
     rec->cap_first_s = NAN;
     rec->theta_lo_rad = rec->theta_hi_rad = rec->Rn_bound_N = NAN;
@@ -262,6 +264,9 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->theta_hi_rad = res.theta_hi_rad;
     rec->Rn_bound_N = res.Rn_bound_N;
     rec->t_flip_s = res.t_flip;
+    rec->t_fall_s = res.t_fall;
+    rec->inverted_time_s = res.inverted_time_s;
+    rec->energy_rel_error = res.energy_rel_error;
     rec->cap_time_s = res.cap_time_s;
     rec->cap_first_s = res.cap_first_s;
     rec->rolling = res.rolling;

@@ -141,6 +141,8 @@ static void add_decision_json(cJSON *o, const tippe_launch_record *rec)
     tippe_json_add_range(o, "theta_range_rad", rec->theta_lo_rad, rec->theta_hi_rad);
     number_or_null(o, "Rn_bound_N", rec->Rn_bound_N);
     number_or_null(o, "t_flip_s", rec->t_flip_s);
+    number_or_null(o, "t_fall_s", rec->t_fall_s);
+    number_or_null(o, "inverted_time_s", rec->inverted_time_s);
 }
 
 int tippe_sweep_check_laws(const tippe_design *d, double z2_mm, const tippe_launch_options *o,
@@ -298,6 +300,7 @@ cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_opt
         number_or_null(o, "spin_final_rad_s", rec->spin_final_rad_s);
         cJSON_AddNumberToObject(o, "J0_kg_m3_s", rec->J0);
         cJSON_AddNumberToObject(o, "jellett_rel_drift", rec->jellett_rel_drift);
+        number_or_null(o, "energy_rel_error", rec->energy_rel_error);
         cJSON_AddItemToObject(o, "options", tippe_launch_options_json(opt, 1));
         cJSON_AddItemToObject(o, "theory", theory_json(r, opt));
     }
