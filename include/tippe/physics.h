@@ -265,12 +265,17 @@ typedef enum {
                                    that rolling needs stayed inside the friction cone,
                                    so it rolls for ever, theta within the period's range
                                    (no_tip below pi/2, tip above, else bounded) */
-    TIPPE_DECIDED_OBSERVED      /* patch friction: NOT proved. The drilling torque changes
+    TIPPE_DECIDED_OBSERVED,     /* patch friction: NOT proved. The drilling torque changes
                                    Jellett's J, on which every proof rests, so the run goes
                                    to t_end and the verdict is the state observed there
                                    (no_tip within 0.25 rad of theta = 0, tip within 0.25
                                    rad of pi, else hang); end_state_proved 0 and
                                    unproved_reason says why */
+    TIPPE_DECIDED_ENERGY_CONE   /* patch friction: no_tip proved without J. The energy only
+                                   falls and E >= m g (R - eps cos theta), so once E and its
+                                   margin are below that height at 0.25 rad, theta stays
+                                   below theta_hi_rad (< 0.25 rad) for ever; the rest state
+                                   within it is not proved (end_state_proved 0) */
 } tippe_decision;
 
 /* "t_end", "trapped", "lost_contact", "flat_well", "budget", "rolling", "observed". */

@@ -353,6 +353,12 @@ static int verdict_lines(const tippe_film *f, char *l1, char *l2, size_t size)
 {
     const tippe_dynamics_result *r = &f->result;
     const double deg = 180 / M_PI;
+    if (r->how == TIPPE_DECIDED_ENERGY_CONE) {
+        snprintf(l1, size, "proved at t = %.4g s: no_tip, within %.1f\xc2\xb0 of upright for ever",
+                 r->t_verdict, r->theta_hi_rad * deg);
+        snprintf(l2, size, "by the energy alone (the rest state is not proved)");
+        return 2;
+    }
     if (r->how == TIPPE_DECIDED_OBSERVED) {
         /* the patch law: what the run saw at its end, never a proof */
         snprintf(l1, size, "observed at t = %.4g s: %s, \xce\xb8 = %.1f\xc2\xb0 (NOT proved)",

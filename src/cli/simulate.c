@@ -54,7 +54,8 @@ static void check_theory(const tippe_scenario *sc, const tippe_dynamics_result *
     }
     tc->ok = 1;
     if (r->verdict == TIPPE_VERDICT_LOST_CONTACT || r->verdict == TIPPE_VERDICT_UNDECIDED ||
-        r->verdict == TIPPE_VERDICT_BOUNDED || r->how == TIPPE_DECIDED_OBSERVED) {
+        r->verdict == TIPPE_VERDICT_BOUNDED || r->how == TIPPE_DECIDED_OBSERVED ||
+        r->how == TIPPE_DECIDED_ENERGY_CONE) {
         tc->agrees = -1;
         return;
     }

@@ -434,6 +434,7 @@ static void run_set_trapped(run_state *rs, const tippe_dynamics_verdict_trap *tr
  * halved since its last failure (it only gets easier as E falls). 1 if decided:
  * trapped; bounded (mu = 0 or eps = 0, confined: E never rises); or stopped early in a
  * well that can never be resolved (undecided, flat_well). */
+static int run_try_energy_cone(run_state *rs, tippe_dynamics_result *res);
 static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
 {
     /* Patch friction drills: its couple M e3 changes Jellett's J = -L.q at the rate
@@ -442,7 +443,7 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
      * bound on the Jellett line) assumes J = J0. No proof, then: the run goes on to
      * t_end and reports what it observes there (run_set_observed). */
     if (rs->c.patch && rs->vc.dissipative)
-        return 0;
+        return run_try_energy_cone(rs, res);
     const double margin = tippe_dynamics_verdict_margin(&rs->vc, rs->opt->margin_factor, rs->energy_abs_err,
                                          rs->J_abs_err, res->E0);
     const tippe_dynamics_sample *s = &rs->smp;
@@ -739,6 +740,40 @@ static int run_may_stop(const run_state *rs, const tippe_dynamics_result *res)
 /* Patch law at t_end: the state there as the verdict, marked not proved: no_tip within
  * this of theta = 0, tip within it of pi, else hang. */
 #define PATCH_POLE_RAD 0.25
+
+/* Patch friction, the one proof that needs no J: the patch's sliding and drilling
+ * and the rolling couple only take energy (contact_patch.c: a dissipation
+ * potential, its power >= 0), and E = T + m g (R - eps cos theta) with T >= 0 (the
+ * centre of mass R - eps cos theta above the table, paper section 3). So theta can
+ * never again reach an angle where m g (R - eps cos theta) exceeds E: once E plus
+ * its margin (margin_factor times the energy balance's error so far) is below the
+ * height at PATCH_POLE_RAD, the top stays within theta_hi < PATCH_POLE_RAD of
+ * upright for ever: no_tip, proved, however J drifts. A top that flipped and fell
+ * back ends here too. */
+static int run_try_energy_cone(run_state *rs, tippe_dynamics_result *res)
+{
+    const dyn_ctx *c = &rs->c;
+    if (!(c->eps > 0) || rs->opt->run_to_t_end)
+        return 0;
+    const double margin = rs->opt->margin_factor * rs->energy_abs_err + 1e-12 * res->E0;
+    const double E = rs->smp.E + margin, mg = c->m * c->g;
+    if (!(E < mg * (c->R - c->eps * cos(PATCH_POLE_RAD))))
+        return 0;
+    /* the highest theta that energy reaches: m g (R - eps cos theta_hi) = E */
+    const double cos_hi = (c->R - E / mg) / c->eps;
+    res->verdict = TIPPE_VERDICT_NO_TIP;
+    res->how = TIPPE_DECIDED_ENERGY_CONE;
+    res->t_verdict = rs->t;
+    res->final = rs->smp;
+    res->theta_final_rad = rs->smp.theta;
+    res->spin_final_rad_s = rs->smp.spin;
+    res->phi_dot_final_rad_s = rs->smp.phi_dot;
+    res->theta_lo_rad = 0.0;
+    res->theta_hi_rad = cos_hi >= 1.0 ? 0.0 : acos(cos_hi);
+    res->margin_J = margin;
+    res->end_state_proved = 0;
+    return 1;
+}
 static void run_set_observed(run_state *rs, tippe_dynamics_result *res)
 {
     res->how = TIPPE_DECIDED_OBSERVED;

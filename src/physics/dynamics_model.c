@@ -62,6 +62,7 @@ const char *tippe_decision_name(tippe_decision d)
     case TIPPE_DECIDED_BUDGET: return "budget";
     case TIPPE_DECIDED_ROLLING: return "rolling";
     case TIPPE_DECIDED_OBSERVED: return "observed";
+    case TIPPE_DECIDED_ENERGY_CONE: return "energy_cone";
     }
     return "?";
 }

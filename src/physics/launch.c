@@ -208,7 +208,8 @@ static void compare_with_theory(const tippe_top *top, double g, tippe_launch_rec
     /* theory is for J0, which a drilling patch does not keep: an observed verdict is not
      * compared */
     if (rec->verdict == TIPPE_VERDICT_LOST_CONTACT || rec->verdict == TIPPE_VERDICT_UNDECIDED ||
-        rec->verdict == TIPPE_VERDICT_BOUNDED || rec->how == TIPPE_DECIDED_OBSERVED)
+        rec->verdict == TIPPE_VERDICT_BOUNDED || rec->how == TIPPE_DECIDED_OBSERVED ||
+        rec->how == TIPPE_DECIDED_ENERGY_CONE)
         return;
     rec->agrees = 0;
     for (int i = 0; i < p.n; i++)
