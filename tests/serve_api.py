@@ -97,6 +97,18 @@ with Server(tippe) as srv:
               (name, z2, ck.get("verdict"), "" if not bad else " except " + ", ".join(bad[:4])))
     print("     (%d designs in %.1f s)" % (len(names), time.time() - t0))
 
+    # ---- the patch law: as tippe check --friction patch (Hertz on the table, or a radius)
+    for extra, flags in (({"table": "glass"}, ["--table", "glass"]),
+                         ({"patch_mm": 0.3}, ["--patch-mm", "0.3"])):
+        req = dict({"design": "m12-setscrew", "z2_mm": 5, "spin_rev_s": 15, "friction": "patch"},
+                   **extra)
+        st, _, ck = srv.post("/api/check", req)
+        ref = cli("check", "designs/m12-setscrew.json", "--z2", "5", "--spin", "15rev/s",
+                  "--friction", "patch", "--no-radius-sensitivity", "--t-end", "600", *flags)
+        bad = same(ck, ref) if st == 200 else ["status %d: %s" % (st, ck)]
+        check(not bad, "check, patch law %s: as tippe check --json%s" %
+              (extra, "" if not bad else " except " + ", ".join(map(str, bad[:4]))))
+
     # ---- compare: each design's sweep
     st, _, cmp = srv.post("/api/compare", {"designs": ["m12-setscrew", "m3-setscrew"]})
     ok = st == 200 and len(cmp["designs"]) == 2
@@ -159,6 +171,13 @@ with Server(tippe) as srv:
                                               "width_px": 4000}, 400, "width_px"),
         ("a Z2 outside the travel", "/api/check", {"design": "m12-setscrew", "z2_mm": 500}, 400,
          "z2_mm"),
+        ("a table without the patch law", "/api/check",
+         {"design": "m12-setscrew", "z2_mm": 5, "table": "glass"}, 400, "table"),
+        ("an unknown table", "/api/check",
+         {"design": "m12-setscrew", "z2_mm": 5, "friction": "patch", "table": "ice"}, 400, "table"),
+        ("a patch of 1 m", "/api/check",
+         {"design": "m12-setscrew", "z2_mm": 5, "friction": "patch", "patch_mm": 1000}, 400,
+         "patch_mm"),
         ("too many designs to compare", "/api/compare", {"designs": ["m12-setscrew"] * 9}, 400,
          "designs"),
     ]

@@ -159,7 +159,7 @@ static void api_compare(serve_server *s, const cJSON *req, serve_response *out)
 static int launch_request(const cJSON *req, double *z2, double *spin_rad_s,
                           tippe_launch_options *o, serve_response *out)
 {
-    static const char *const laws[] = {"viscous", "coulomb", "coulomb-creep", NULL};
+    static const char *const laws[] = {"viscous", "coulomb", "coulomb-creep", "patch", NULL};
     double rev = 15.0, rad = NAN;
     tippe_launch_options_default(o);
     if (tippe_serve_request_number(req, "z2_mm", -1000, 1000, 1, z2, out) ||
@@ -175,8 +175,49 @@ static int launch_request(const cJSON *req, double *z2, double *spin_rad_s,
     const int law = tippe_serve_request_word(req, "friction", laws, 0, out);
     if (law < 0)
         return -1;
-    o->law = law == 0 ? TIPPE_FRICTION_VISCOUS
-                      : law == 1 ? TIPPE_FRICTION_COULOMB : TIPPE_FRICTION_COULOMB_CREEP;
+    o->law = law == 0   ? TIPPE_FRICTION_VISCOUS
+             : law == 1 ? TIPPE_FRICTION_COULOMB
+             : law == 2 ? TIPPE_FRICTION_COULOMB_CREEP
+                        : TIPPE_FRICTION_PATCH;
+    /* the patch law: a radius (mm), or Hertz's on a table (tippe check's --patch-mm,
+     * --table); either names the patch law */
+    double patch_mm = 0;
+    if (tippe_serve_request_number(req, "patch_mm", 1e-3, 10, 0, &patch_mm, out))
+        return -1;
+    const int has_patch = cJSON_HasObjectItem(req, "patch_mm"), has_table =
+                                                                    cJSON_HasObjectItem(req, "table");
+    if ((has_patch || has_table) && o->law != TIPPE_FRICTION_PATCH) {
+        tippe_serve_respond_error(out, 400, has_patch ? "patch_mm" : "table",
+                                  "%s belongs to the patch law: give \"friction\": \"patch\"",
+                                  has_patch ? "patch_mm" : "table");
+        return -1;
+    }
+    if (has_patch && has_table) {
+        tippe_serve_respond_error(out, 400, "table",
+                                  "patch_mm and table are two ways to the patch's radius: give "
+                                  "one");
+        return -1;
+    }
+    o->patch_radius_m = patch_mm * 1e-3;
+    return 0;
+}
+
+/* The patch law's table (Hertz at m g from the design's ball and the table's E
+ * and nu) when no radius was given; 0, or -1 after an answer. */
+static int patch_request(const cJSON *req, const tippe_design *d, tippe_launch_options *o,
+                         serve_response *out)
+{
+    static const char *const tables[] = {"laminate", "glass", "wood", "steel", NULL};
+    if (o->law != TIPPE_FRICTION_PATCH || o->patch_radius_m > 0)
+        return 0;
+    const int t = tippe_serve_request_word(req, "table", tables, 0, out);
+    if (t < 0)
+        return -1;
+    tippe_error err = {0};
+    if (tippe_launch_patch_modulus(d, tables[t], &o->patch_E_star_pa, &err)) {
+        tippe_serve_respond_error(out, 400, "friction", "%s", err.msg);
+        return -1;
+    }
     return 0;
 }
 
@@ -188,8 +229,8 @@ enum { THETA_SAMPLES = 301 };
  * its flip, or its decision). */
 static void api_check(serve_server *s, const cJSON *req, serve_response *out)
 {
-    static const char *const keys[] = {"design", "z2_mm", "spin_rev_s", "spin_rad_s",
-                                       "friction", NULL};
+    static const char *const keys[] = {"design",   "z2_mm", "spin_rev_s", "spin_rad_s",
+                                       "friction", "patch_mm", "table",    NULL};
     double z2 = 0, spin = 0;
     tippe_launch_options o;
     if (tippe_serve_request_keys(req, keys, out) || launch_request(req, &z2, &spin, &o, out))
@@ -197,6 +238,10 @@ static void api_check(serve_server *s, const cJSON *req, serve_response *out)
     tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
     if (!d)
         return;
+    if (patch_request(req, d, &o, out)) {
+        tippe_design_free(d);
+        return;
+    }
     tippe_error err = {0};
     tippe_sweep_check c;
     int rc = tippe_sweep_check_run(d, z2, &o, spin, &c, &err);
@@ -234,8 +279,8 @@ static void api_check(serve_server *s, const cJSON *req, serve_response *out)
 static void api_animate(serve_server *s, const cJSON *req, serve_response *out)
 {
     static const char *const keys[] = {"design", "z2_mm", "spin_rev_s", "spin_rad_s", "friction",
-                                       "format", "seconds", "width_px", "height_px", "fps",
-                                       NULL};
+                                       "patch_mm", "table", "format", "seconds", "width_px",
+                                       "height_px", "fps", NULL};
     static const char *const formats[] = {"webm", "gif", NULL};
     double z2 = 0, spin = 0, seconds = 6, w = 320, h = 240, fps = 15;
     tippe_launch_options o;
@@ -257,6 +302,10 @@ static void api_animate(serve_server *s, const cJSON *req, serve_response *out)
     tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
     if (!d)
         return;
+    if (patch_request(req, d, &o, out)) {
+        tippe_design_free(d);
+        return;
+    }
     tippe_error err = {0};
     tippe_sweep_check c;
     tippe_animate_launch launch;

@@ -387,7 +387,11 @@ async function evalAt(z2) {
 
 function launchRequest() {
   const z2 = Number($('z2').value);
-  return { design: state.design, z2_mm: z2, spin_rev_s: Number($('spin').value), friction: $('friction').value };
+  // "patch:TABLE": the spinning contact patch, Hertz's radius on that table
+  const [law, table] = $('friction').value.split(':');
+  const req = { design: state.design, z2_mm: z2, spin_rev_s: Number($('spin').value), friction: law };
+  if (table) req.table = table;
+  return req;
 }
 
 async function checkLaunch() {
