@@ -24,4 +24,11 @@ check "check: a flip starts and ends on the M12's openings" json_ok "$tmp/c10.js
     "o['verdict'] == 'tip' and o['on_polar_cap']['start'] == '+z' and o['on_polar_cap']['end'] == '-z'"
 "$tippe" check designs/m12-setscrew.json --z2 10 >"$tmp/c10.txt"
 check "check says so in words" grep -q "^pole       the launch starts 3.9 deg from the +z pole" "$tmp/c10.txt"
+# sweep names the open poles too, in words and JSON (issue 25.7: eval, sweep, check, the sheet)
+"$tippe" sweep designs/m12-setscrew.json --json >"$tmp/sw.json" 2>/dev/null
+check "sweep: the M12's two open poles, asin(5.5/25)" json_ok "$tmp/sw.json" \
+    "sorted(c['pole'] for c in o['polar_caps']) == ['+z', '-z'] and all(abs(c['half_angle_rad'] - __import__('math').asin(0.22)) < 1e-12 for c in o['polar_caps'])"
+check "sweep says so in words" bash -c '"$1" sweep designs/m12-setscrew.json 2>/dev/null | grep -q "^pole     +z: the opening of .hole. (11.00 mm across)"' _ "$tippe"
+"$tippe" sweep designs/shell-band.json --json >"$tmp/swb.json" 2>/dev/null
+check "sweep: the band shell has no open pole" json_ok "$tmp/swb.json" "o['polar_caps'] == []"
 finish

@@ -654,6 +654,25 @@ static void print_sphere_only(FILE *out, const tippe_sweep_result *r, const tipp
     }
 }
 
+/* The poles where a hole opens (issue 25.7): a top tilted on such a pole less
+ * than the opening's half-angle stands on the hole's rim, not on its sphere, at
+ * every Z2 (a fixed hole; a moving one is taken at the sweep's middle). */
+static void print_polar_caps(FILE *out, const tippe_sweep_result *r, const tippe_design *d)
+{
+    tippe_design_cap caps[2];
+    if (!d || !tippe_design_polar_caps(d, 0.5 * (r->from_mm + r->to_mm), caps))
+        return;
+    for (int k = 0; k < 2; k++)
+        if (caps[k].half_angle_rad > 0)
+            fprintf(out,
+                    "pole     %s: the opening of '%s' (%.2f mm across): a top tilted less than "
+                    "%.1f deg on this pole\n"
+                    "         stands on the hole's rim, not on its sphere, and the model does "
+                    "not apply there\n",
+                    k ? "-z" : "+z", caps[k].part, 2 * caps[k].radius_mm,
+                    caps[k].half_angle_rad * 180 / M_PI);
+}
+
 static const char *side_down(int com_side)
 {
     return com_side > 0 ? "+z side down" : com_side < 0 ? "-z side down" : "balanced";
@@ -673,6 +692,7 @@ void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe
     }
     fprintf(out, "sweep    Z2 = %.3f .. %.3f mm\n", clean(r->from_mm), clean(r->to_mm));
     print_sphere_only(out, r, d);
+    print_polar_caps(out, r, d);
     fprintf(out, "\n");
     fprintf(out, "%-5s %10s %10s %11s  %-22s %s\n", "zone", "from (mm)", "to (mm)",
             "width (mm)", "ends on", "notes");
@@ -805,6 +825,9 @@ cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *d)
         add_obj(o, cJSON_CreateString(tippe_design_name(d)), "design", &ok);
         add_obj(o, cJSON_CreateString(tippe_design_path(d)), "file", &ok);
         add_pair(o, "travel_mm", f, t, &ok);
+        tippe_design_cap caps[2];
+        tippe_design_polar_caps(d, 0.5 * (r->from_mm + r->to_mm), caps);
+        tippe_design_caps_json(o, caps);
     }
     add_pair(o, "sweep_mm", r->from_mm, r->to_mm, &ok);
     if (r->has_travel)
