@@ -178,20 +178,25 @@ got = w["measure"]["weigh_offset_g"]
 assert abs(got - want) < 1e-9, (got, want)
 EOF
 
-# --- the one-page sheet: PDF of one page, SVG and PNG of the page's size -------
-sh=$tmp/drilled-ball-catalogue-best/drilled-ball-catalogue-best-sheet
-python3 - "$sh" <<'EOF' && ok || bad "the sheet's PDF, SVG or PNG"
+# --- the one-page sheet: PDF of one page, A3 wide and at least A3 tall (longer
+# when the advice and the poles need it), SVG and PNG of the page's size ---------
+for stem in drilled-ball-catalogue-best m12-setscrew; do
+    python3 - "$tmp/$stem/$stem-sheet" <<'EOF' && ok || bad "$stem: the sheet's PDF, SVG or PNG"
 import re, struct, sys, xml.etree.ElementTree as ET
 b = sys.argv[1]
 pdf = open(b + ".pdf", "rb").read()
 assert pdf.startswith(b"%PDF-") and re.search(rb"/Count 1\b", pdf), "one page"
 box = re.search(rb"/MediaBox \[ ?0 0 ([0-9.]+) ([0-9.]+) ?\]", pdf)
-assert box and abs(float(box.group(1)) - 1191) < 1 and abs(float(box.group(2)) - 842) < 1  # A3 landscape
+w, h = float(box.group(1)), float(box.group(2))
+assert abs(w - 1191) < 1 and h > 841, (w, h)  # A3 landscape's width, at least its height
 svg = ET.parse(b + ".svg").getroot()
-assert svg.get("width").startswith("1191") and svg.get("height").startswith("842")
+assert svg.get("width").startswith("1191") and abs(float(svg.get("height").rstrip("pt")) - h) < 1
 png = open(b + ".png", "rb").read(24)
-assert png[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", png[16:24]) == (1905, 1347)
+pw, ph = struct.unpack(">II", png[16:24])
+# the PNG is the page at 1905 / 1191 px per pt
+assert png[:8] == b"\x89PNG\r\n\x1a\n" and pw == 1905 and abs(ph - h * 1905 / 1191) < 2, (pw, ph, h)
 EOF
+done
 
 # --- the depth gauges: pin (sleeve) length = the sheet's depth ----------------
 # numpy-stl reads the binary STL; float32 coordinates near 30 mm round by

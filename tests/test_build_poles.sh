@@ -20,6 +20,7 @@ python3 - "$tmp/m.json" <<'PY' && ok || bad "m12: a launch's polar-cap mark disa
 import json, math, sys
 o = json.load(open(sys.argv[1]))
 caps = {(1 if c["pole"] == "+z" else -1): c["half_angle_rad"] for c in o["polar_caps"]}
+side = lambda p: 1 if p == "+z" else -1
 def pole_at(rest, theta):
     if theta < caps.get(rest, 0):
         return "+z" if rest > 0 else "-z"
@@ -31,9 +32,9 @@ for s in o["settings"]:
     if not s["reachable"] or s["launch_verdict"] is None:
         continue
     m = s["launch_on_polar_cap"]
-    assert m["start"] == pole_at(s["rest_pole"], s["launch_theta0_rad"]), s
+    assert m["start"] == pole_at(side(s["rest_pole"]), s["launch_theta0_rad"]), s
     end = s["launch_theta_end_rad"]
-    assert m["end"] == (pole_at(s["rest_pole"], end) if end is not None else None), s
+    assert m["end"] == (pole_at(side(s["rest_pole"]), end) if end is not None else None), s
     n += m["start"] is not None
 assert n >= 1  # the hand launch's 3.9 deg tilt is within 12.7 deg
 PY

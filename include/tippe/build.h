@@ -205,8 +205,13 @@ typedef struct {
 
 typedef struct {
     char design_name[256], design_file[1024];
+    /* the overrides the design was loaded with (--set), so that the sheet says
+     * what it was made of and a step that runs it again repeats them */
+    int n_overrides;
+    char override[16][256];
     double radius_mm;
     double travel_from_mm, travel_to_mm; /* physical travel */
+    double design_travel_from_mm, design_travel_to_mm; /* the design's travel_mm */
     int three_in_one;
     /* 3-in-1 and every behaviour settable (its robust width at least
      * min_setting_mm); 3-in-1 without it is "3-in-1 on paper only" */
@@ -274,7 +279,7 @@ typedef struct {
     int n_advice;
     struct {
         int n_set;
-        char set[6][200];     /* the --set overrides that make the change */
+        char set[8][200];     /* the --set overrides that make the change */
         int pair;             /* two changes together */
         int settable;         /* every behaviour's robust width >= min_setting_mm */
         double narrowest_mm;  /* the narrowest robust width of the three with it (0 if
@@ -289,9 +294,12 @@ typedef struct {
      * (verdict as tippe_build_verdict: 2 settable, 1 on paper, 0 not, -1 failed) */
     int n_caps;
     tippe_design_cap caps[2];
+    /* the opening as made when the hole is tapped (the thread's diameter) or
+     * takes an insert (its knurl): diameter and half-angle; 0 when as modelled */
+    double cap_made_mm[2], cap_made_half_angle_rad[2];
     int n_pole_fixes;
     struct {
-        char text[640];
+        char text[900];
         int n_set;
         char set[3][200];
         int verdict;
@@ -300,9 +308,9 @@ typedef struct {
     /* a printed part not yet weighed: the step to weigh it and run again when
      * the verdict differs within its infill tolerance, else a note that
      * weighing would not change it ("" for none) */
-    char weigh_step[600], weigh_note[400];
+    char weigh_step[1600], weigh_note[400];
     int n_steps;
-    char step[10][600];                  /* assembly steps, in order */
+    char step[10][1600];                /* assembly steps, in order */
     /* each setting narrower than min_setting_mm, and each flips or hangs range
      * whose part a hand's spin reaches is narrower */
     int n_warnings;
@@ -325,6 +333,10 @@ void tippe_build_options_default(tippe_build_options *o);
 int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                         tippe_build_sheet *out, tippe_error *err);
 
+/* The sheet's first line after its title: the file, the --set changes, the
+ * sphere and the weight's travel (the design's, and what its parts allow). */
+void tippe_build_header_text(const tippe_build_sheet *s, char *buf, size_t size);
+
 /* "; contact INVALID: starts on the hole's rim at +z" for a launch check that
  * starts or ends on a pole's opening, else "". */
 const char *tippe_build_cap_text(const tippe_build_setting *x);
@@ -334,6 +346,10 @@ void tippe_build_advice_sets(const tippe_build_sheet *s, int k, char *buf, size_
 /* The heading over the advice, and the sentence for none found. */
 const char *tippe_build_advice_heading(const tippe_build_sheet *s);
 const char *tippe_build_advice_none(void);
+
+/* 1 when a launch check starts or ends on a hole's opening at a pole, where
+ * the model (zones and launches) does not hold: the verdict's sentence says so. */
+int tippe_build_poles_invalid(const tippe_build_sheet *s);
 
 /* The sheet's verdict: "3-in-1 and settable", "3-in-1 on paper only" or
  * "not 3-in-1". */

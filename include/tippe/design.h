@@ -577,6 +577,10 @@ struct cJSON *tippe_materials_json(const tippe_materials *t, const char *file);
  * file, or the designs folder's for a design from memory); NULL when no part
  * names a material. */
 const char *tippe_design_materials_path(const tippe_design *d);
+/* The overrides ("FIELD=VALUE") the design was loaded with, in order; what a
+ * report of it repeats so that the same design can be loaded again. */
+int tippe_design_n_overrides(const tippe_design *d);
+const char *tippe_design_override(const tippe_design *d, int i);
 /* The materials table the design file at design_path reads: its "materials"
  * field (default "materials.json") relative to the design's directory.
  * TIPPE_EINPUT if the file is not a design (a JSON object with "parts"). */

@@ -103,7 +103,7 @@ const char *tippe_export_depth_from(const tippe_build_sheet *s);
 int tippe_export_gauge_write(const tippe_build_sheet *s, int family, const char *path,
                              tippe_error *err);
 
-/* The sheet on one page (A3 landscape): the section drawing with the weight
+/* The sheet on one page (A3 landscape, longer when its text needs it): the section drawing with the weight
  * at the flip's setting, the settings table, bill of materials, thread, print
  * settings, notes and steps. The format follows path's extension: .pdf, .svg
  * (cairo; text as glyphs) or .png (1906 x 1347 px). Written atomically. */

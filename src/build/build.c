@@ -778,18 +778,26 @@ static void compute_notes(compute_ctx *c)
         insert_reach_warning(c);
     if (out->hole_insert) {
         /* below the insert the pilot hole is wider than the thread: the screw
-         * holds only while all of it is within the insert */
-        char t[320];
-        int n = snprintf(t, sizeof t, "The screw holds only within the insert (below it the "
-                                      "pilot hole is wider than the thread): its far end lies");
-        for (int f = 0, k = 0; f < 3; f++)
-            if (out->set[f].reachable && n > 0 && (size_t)n < sizeof t)
-                n += snprintf(t + n, sizeof t - (size_t)n, "%s %.1f mm (%s)", k++ ? "," : "",
-                              out->set[f].depth_set_mm + (c->top - c->bottom), behaviours[f]);
+         * holds only by the thread within the insert: the length of the screw
+         * between the rim and the insert's far end */
+        char t[480];
+        const double L = out->insert.length_mm, h = c->top - c->bottom;
+        int n = snprintf(t, sizeof t, "The screw holds only by its thread within the %.1f mm "
+                                      "insert (below it the pilot hole is wider than the thread): "
+                                      "thread engaged",
+                         L);
+        for (int f = 0, k = 0; f < 3; f++) {
+            const double top = out->set[f].depth_set_mm;
+            if (!out->set[f].reachable || !(n > 0 && (size_t)n < sizeof t) || !isfinite(top))
+                continue;
+            const double engaged = fmax(0, fmin(L, top + h) - fmax(0, top));
+            n += snprintf(t + n, sizeof t - (size_t)n, "%s %.1f mm (%s%s)", k++ ? "," : "",
+                          engaged, behaviours[f], engaged > 0 ? "" : ": not held");
+        }
         if (n > 0 && (size_t)n < sizeof t)
             snprintf(t + n, sizeof t - (size_t)n,
-                     " below the rim: an insert shorter than that lets the screw fall; tap "
-                     "the hole instead.");
+                     ". A setting with little or none of its thread in the insert lets the "
+                     "screw fall: tap the hole instead.");
         tippe_build_note(out, t);
         tippe_build_note(out, "The insert's brass is not in the mass model (the zones are the "
                               "design's): for a top whose zones hold with it, add the insert to "
@@ -820,7 +828,11 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     out->weigh_offset_g = NAN;
     snprintf(out->design_name, sizeof out->design_name, "%s", tippe_design_name(d));
     snprintf(out->design_file, sizeof out->design_file, "%s", tippe_design_path(d));
+    for (int i = 0; i < tippe_design_n_overrides(d) && out->n_overrides < 16; i++)
+        snprintf(out->override[out->n_overrides++], sizeof out->override[0], "%s",
+                 tippe_design_override(d, i));
     out->radius_mm = tippe_design_radius_mm(d);
+    tippe_design_travel_mm(d, &out->design_travel_from_mm, &out->design_travel_to_mm);
     /* the launch check's law: a patch without a radius gets Hertz's of the ball
      * on the default table (tippe/physics.h), as tippe check without --table */
     tippe_build_options ol = *o;

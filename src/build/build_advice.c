@@ -21,7 +21,7 @@ static const double slicer_infill_steps[] = {0,    0.05, 0.10, 0.15, 0.20, 0.25,
                                              0.40, 0.50, 0.60, 0.70, 0.80, 0.90, 1.00};
 
 enum { FAM_INFILL, FAM_MATERIAL, FAM_WEIGHT, N_FAM };
-enum { MAX_SETS = 6, MAX_CHANGES = 160 };
+enum { MAX_SETS = 8, MAX_CHANGES = 160 };
 
 /* One change a maker can make: the overrides that make it, what it is in
  * words, how far it is from the design (relative, for choosing the nearest),
@@ -157,8 +157,26 @@ static void material_changes(advice_ctx *a, const char *name, const tippe_design
  * item named so that the sheet of the changed design names it. A new thread
  * brings its own quarter turn. */
 static void catalogue_changes(advice_ctx *a, const char *name, const tippe_design_solid *sd,
-                              const tippe_build_catalogue *cat, const char *hole)
+                              const tippe_build_catalogue *cat, const char *hole,
+                              const char *material)
 {
+    /* a catalogue screw is bought in a material set screws are sold in: the
+     * design's, if it is one, else steel (ISO 4026's usual grade 45H) */
+    const char *buy = NULL;
+    tippe_materials *t = NULL;
+    tippe_error e = {0};
+    const char *file = tippe_design_materials_path(a->d);
+    if (file && !tippe_materials_load(file, &t, &e)) {
+        int own = 0, steel = 0;
+        for (int k = 0; k < tippe_materials_count(t); k++) {
+            tippe_material m;
+            tippe_materials_get(t, k, &m);
+            own |= m.set_screws && !strcmp(m.name, material);
+            steel |= m.set_screws && !strcmp(m.name, "steel");
+        }
+        buy = !own && steel ? "steel" : NULL;
+    }
+    tippe_materials_free(t);
     double R = tippe_design_radius_mm(a->d);
     double m_now = sd->radius_mm * sd->radius_mm * sd->height_mm;
     for (int k = 0; k < cat->n_sets; k++)
@@ -179,8 +197,12 @@ static void catalogue_changes(advice_ctx *a, const char *name, const tippe_desig
             add_set(c, "parts.%s.catalogue_item=%s", name, it->name);
             if (hole)
                 add_set(c, "parts.%s.radius_mm=%.10g", hole, it->radius_mm);
-            snprintf(c->what, sizeof c->what, "set screw %s (%s) as '%s'", it->name,
-                     cat->sets[k].title, name);
+            if (buy)
+                add_set(c, "parts.%s.material=%s", name, buy);
+            if (snprintf(c->what, sizeof c->what, "set screw %s (%s)%s%s as '%s'", it->name,
+                         cat->sets[k].title, buy ? " in " : "", buy ? buy : "",
+                         name) >= (int)sizeof c->what)
+                a->n--; /* no room to say it: not offered */
         }
 }
 
@@ -226,7 +248,7 @@ static void list_changes(advice_ctx *a, const tippe_build_catalogue *cat)
             int cyl = !strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube");
             material_changes(a, p.name, &p, hole && a->s->has_thread && cyl);
             if (cyl && cat && hole && !strcmp(sd.shape, "cylinder"))
-                catalogue_changes(a, p.name, &sd, cat, hole);
+                catalogue_changes(a, p.name, &sd, cat, hole, p.material);
             else if (cyl)
                 length_changes(a, p.name, &sd);
         }
@@ -450,15 +472,21 @@ void tippe_build_weigh_step(const tippe_design *d, tippe_build_sheet *s)
         if (isfinite(s->weigh_offset_g))
             snprintf(offset, sizeof offset, " plus %+.3f g (the printed hole against the model's)",
                      s->weigh_offset_g);
+        /* the run again repeats the sheet's own changes (but an old weighing) */
+        char again[1200] = "", mass[260];
+        snprintf(mass, sizeof mass, "parts.%s.print.measured_mass_g=", p.name);
+        for (int k = 0, m = 0; k < s->n_overrides && m < (int)sizeof again; k++)
+            if (strncmp(s->override[k], mass, strlen(mass)))
+                m += snprintf(again + m, sizeof again - (size_t)m, "--set %s ", s->override[k]);
         int n;
         if (v_lo != v_now || v_hi != v_now)
             n = snprintf(s->weigh_step, sizeof s->weigh_step,
                          "Weigh the bare print of '%s' (before any hardware goes in) and run "
-                         "tippe build again with --set parts.%s.print.measured_mass_g=G, G the "
-                         "scale's reading%s: the verdict hangs on how much plastic the slicer "
-                         "laid (%s at %.1f %% infill, %s at %.1f %%, %s at the slicer's %.1f %%; "
-                         "the slicer-infill tolerance), which a weighing pins.",
-                         p.name, p.name, offset, verdict_name(v_lo), 100 * lo,
+                         "tippe build again with %s--set %sG, G the scale's reading%s: the "
+                         "verdict hangs on how much plastic the slicer laid (%s at %.1f %% "
+                         "infill, %s at %.1f %%, %s at the slicer's %.1f %%; the slicer-infill "
+                         "tolerance), which a weighing pins.",
+                         p.name, again, mass, offset, verdict_name(v_lo), 100 * lo,
                          verdict_name(v_hi), 100 * hi, verdict_name(v_now), 100 * pr.infill);
         else
             n = snprintf(s->weigh_note, sizeof s->weigh_note,

@@ -96,7 +96,9 @@ static void try_fix(const tippe_design *d, tippe_build_sheet *s, const char *hol
     else
         n = snprintf(x->text, sizeof x->text,
                      "%s (the hole then spans z = %.2f .. %.2f mm): the weight's travel becomes "
-                     "%.2f .. %.2f mm and the top %s (robust ranges: %s).",
+                     "%.2f .. %.2f mm and the top %s (robust ranges: %s). Set the screw by this "
+                     "sheet's depths before the plug goes in: the changed design models the plug "
+                     "as part of the body, so its own sheet has no rim to measure from.",
                      what, lo, hi, t0, t1,
                      tippe_build_verdict_name(x->verdict), widths);
     (void)n; /* text[] holds the sentence; a cut one still reads */
@@ -113,6 +115,18 @@ void tippe_build_poles(const tippe_design *d, tippe_build_sheet *s)
     s->n_caps = tippe_design_polar_caps(d, z2, s->caps);
     if (!s->n_caps)
         return;
+    /* the model's hole is the design's; a tapped hole opens at the thread's
+     * diameter, one with an insert at the insert's knurl (what the top stands on) */
+    tippe_design_part_info hp;
+    double made = s->hole_tapped && s->has_thread ? s->thread.d_mm
+                  : s->hole_insert                ? s->insert.outer_max_mm
+                                                  : 0;
+    for (int k = 0; k < 2 && made > 0 && made < 2 * s->radius_mm; k++)
+        if (s->caps[k].half_angle_rad > 0 && s->hole_part >= 0 &&
+            !tippe_design_part(d, s->hole_part, &hp) && !strcmp(hp.name, s->caps[k].part)) {
+            s->cap_made_mm[k] = made;
+            s->cap_made_half_angle_rad[k] = asin(0.5 * made / s->radius_mm);
+        }
     /* the launch checks that start or end on an opening's rim */
     char which[200] = "";
     int rest = 0;

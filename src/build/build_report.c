@@ -21,7 +21,31 @@ const char *tippe_build_verdict(const tippe_build_sheet *s)
                             : "3-in-1 on paper only";
 }
 
+int tippe_build_poles_invalid(const tippe_build_sheet *s)
+{
+    for (int f = 0; f < 3; f++)
+        if (s->set[f].reachable && s->set[f].launch_status == TIPPE_OK &&
+            (s->set[f].launch_cap_start || s->set[f].launch_cap_end))
+            return 1;
+    return 0;
+}
+
+/* The verdict's sentence, and where the poles undo it a second one: the
+ * zones assume the sphere at the pole a top stands on, and a hole's rim there
+ * is not it. */
+static void verdict_sentence(const tippe_build_sheet *s, char *buf, size_t size);
 void tippe_build_verdict_text(const tippe_build_sheet *s, char *buf, size_t size)
+{
+    verdict_sentence(s, buf, size);
+    size_t n = strlen(buf);
+    if (tippe_build_poles_invalid(s) && n < size)
+        snprintf(buf + n, size - n,
+                 " But a hole opens at a pole the top stands or spins on: there it stands on the "
+                 "hole's rim, not on its sphere, and the model (the zones and the launch checks) "
+                 "does not hold; see the poles' fixes.");
+}
+
+static void verdict_sentence(const tippe_build_sheet *s, char *buf, size_t size)
 {
     if (!s->three_in_one) {
         snprintf(buf, size, "It is not 3-in-1: not every behaviour is reachable within the travel "
@@ -95,13 +119,20 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         return NULL;
     cJSON_AddStringToObject(o, "design", s->design_name);
     cJSON_AddStringToObject(o, "file", s->design_file);
+    cJSON *ov = cJSON_AddArrayToObject(o, "set");
+    for (int i = 0; ov && i < s->n_overrides; i++)
+        cJSON_AddItemToArray(ov, cJSON_CreateString(s->override[i]));
     cJSON_AddNumberToObject(o, "radius_mm", s->radius_mm);
+    cJSON *dt = cJSON_AddArrayToObject(o, "travel_mm");
+    cJSON_AddItemToArray(dt, num(s->design_travel_from_mm));
+    cJSON_AddItemToArray(dt, num(s->design_travel_to_mm));
     cJSON *t = cJSON_AddArrayToObject(o, "physical_travel_mm");
     cJSON_AddItemToArray(t, num(s->travel_from_mm));
     cJSON_AddItemToArray(t, num(s->travel_to_mm));
     cJSON_AddBoolToObject(o, "three_in_one", s->three_in_one);
     cJSON_AddBoolToObject(o, "settable", s->settable);
     cJSON_AddStringToObject(o, "verdict", tippe_build_verdict(s));
+    cJSON_AddBoolToObject(o, "model_holds_at_poles", !tippe_build_poles_invalid(s));
     cJSON_AddNumberToObject(o, "min_setting_mm", s->min_setting_mm);
     cJSON_AddStringToObject(o, "min_setting_rule", s->min_setting_rule);
     cJSON_AddNumberToObject(o, "hand_spin_max_rev_s", s->hand_spin_rev_s);
@@ -199,7 +230,7 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
             cJSON_AddNumberToObject(j, "launch_decided_s", x->launch_t_s);
             cJSON_AddNumberToObject(j, "launch_theta0_rad", x->launch_theta0_rad);
             cJSON_AddItemToObject(j, "launch_theta_end_rad", num(x->launch_theta_end_rad));
-            cJSON_AddNumberToObject(j, "rest_pole", x->rest_pole);
+            cJSON_AddStringToObject(j, "rest_pole", x->rest_pole > 0 ? "+z" : "-z");
             cJSON_AddNumberToObject(j, "launch_cap_time_s", x->launch_cap_time_s);
             cJSON *oc = cJSON_AddObjectToObject(j, "launch_on_polar_cap");
             if (oc) {
@@ -345,9 +376,10 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
 {
     char m1[2048], m2[2048];
     char a[32], b[32], c[32], d[32], e[32], g[32];
-    fprintf(f, "# Build sheet: %s\n\nDesign file `%s`; sphere radius %g mm; the weight's "
-               "physical travel Z2 = %.2f .. %.2f mm.\n\n",
-            md(s->design_name, m1, sizeof m1), s->design_file, s->radius_mm, s->travel_from_mm, s->travel_to_mm);
+    char head[4400];
+    tippe_build_header_text(s, head, sizeof head);
+    fprintf(f, "# Build sheet: %s\n\nDesign file %s.\n\n", md(s->design_name, m1, sizeof m1),
+            md(head, m2, sizeof m2));
     fprintf(f, "## Settings\n\n");
     if (s->measure != TIPPE_BUILD_MEASURE_NONE)
         fprintf(f, "Measure from %s.\n\n", md(s->reference, m1, sizeof m1));
@@ -403,12 +435,20 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
     }
     if (s->n_caps) {
         fprintf(f, "\nThe poles: ");
-        for (int k = 0; k < 2; k++)
-            if (s->caps[k].half_angle_rad > 0)
-                fprintf(f, "the hole '%s' opens at the %s pole (%.2f mm across): tilted less than "
-                           "%.1f deg on it the top stands on the hole's rim, not on its sphere. ",
-                        md(s->caps[k].part, m1, sizeof m1), k ? "-z" : "+z",
-                        2 * s->caps[k].radius_mm, s->caps[k].half_angle_rad * 180 / M_PI);
+        for (int k = 0; k < 2; k++) {
+            if (!(s->caps[k].half_angle_rad > 0))
+                continue;
+            char made[160] = "";
+            if (s->cap_made_mm[k] > 0)
+                snprintf(made, sizeof made, "; %s, %.2f mm across, within %.1f deg",
+                         s->hole_tapped ? "tapped" : "with its insert", s->cap_made_mm[k],
+                         s->cap_made_half_angle_rad[k] * 180 / M_PI);
+            fprintf(f, "The hole '%s' opens at the %s pole (%.2f mm across as modelled%s): tilted "
+                       "less than %.1f deg on it the top stands on the hole's rim, not on its "
+                       "sphere. ",
+                    md(s->caps[k].part, m1, sizeof m1), k ? "-z" : "+z", 2 * s->caps[k].radius_mm,
+                    made, s->caps[k].half_angle_rad * 180 / M_PI);
+        }
         fprintf(f, "%s\n", s->n_pole_fixes ? "Fixes, each tried by sweeping the changed design:"
                                            : "");
         if (s->n_pole_fixes)
@@ -474,13 +514,22 @@ void tippe_build_advice_sets(const tippe_build_sheet *s, int k, char *buf, size_
 
 const char *tippe_build_advice_heading(const tippe_build_sheet *s)
 {
-    int pair = s->n_advice > 0 && s->advice[0].pair;
-    return pair ? "What would make it settable (no single change is enough: pairs of changes "
-                  "a maker can buy or set, each tried by sweeping the changed design with its "
-                  "tolerance bands)"
-                : "What would make it settable (changes a maker can buy or set, one at a time, "
-                  "each tried by sweeping the changed design with its tolerance bands; the "
-                  "nearest of each kind, and the widest)";
+    int pair = s->n_advice > 0 && s->advice[0].pair, poles = tippe_build_poles_invalid(s);
+    if (pair)
+        return poles ? "What would make it settable (no single change is enough: pairs of "
+                       "changes a maker can buy or set, each tried by sweeping the changed "
+                       "design with its tolerance bands; none of them closes the open poles, "
+                       "below)"
+                     : "What would make it settable (no single change is enough: pairs of "
+                       "changes a maker can buy or set, each tried by sweeping the changed "
+                       "design with its tolerance bands)";
+    return poles ? "What would make it settable (changes a maker can buy or set, one at a time, "
+                   "each tried by sweeping the changed design with its tolerance bands; the "
+                   "nearest of each kind, and the widest; none of them closes the open poles, "
+                   "below)"
+                 : "What would make it settable (changes a maker can buy or set, one at a time, "
+                   "each tried by sweeping the changed design with its tolerance bands; the "
+                   "nearest of each kind, and the widest)";
 }
 
 const char *tippe_build_advice_none(void)
@@ -509,4 +558,25 @@ const char *tippe_build_cap_text(const tippe_build_setting *x)
                                        : "; contact INVALID: starts on the hole's rim at -z";
     return x->launch_cap_end > 0 ? "; contact INVALID: ends on the hole's rim at +z"
                                  : "; contact INVALID: ends on the hole's rim at -z";
+}
+
+void tippe_build_header_text(const tippe_build_sheet *s, char *buf, size_t size)
+{
+    size_t n = 0;
+    int w = snprintf(buf, size, "%s", s->design_file);
+    for (int i = 0; w >= 0 && (n += (size_t)w) < size && i < s->n_overrides; i++)
+        w = snprintf(buf + n, size - n, "%s--set %s", i ? " " : " changed by ", s->override[i]);
+    if (n >= size)
+        return;
+    const int same = fabs(s->design_travel_from_mm - s->travel_from_mm) < 5e-3 &&
+                     fabs(s->design_travel_to_mm - s->travel_to_mm) < 5e-3;
+    if (same)
+        snprintf(buf + n, size - n, "; sphere radius %g mm; the weight's travel Z2 = %.2f .. %.2f mm",
+                 s->radius_mm, s->design_travel_from_mm, s->design_travel_to_mm);
+    else
+        snprintf(buf + n, size - n,
+                 "; sphere radius %g mm; the weight's travel Z2 = %.2f .. %.2f mm (the design's "
+                 "travel_mm; its parts would allow %.2f .. %.2f)",
+                 s->radius_mm, s->design_travel_from_mm, s->design_travel_to_mm,
+                 s->travel_from_mm, s->travel_to_mm);
 }

@@ -84,7 +84,7 @@ static int build_parse(build_args *a, int argc, char **argv)
                  "viscous, 2.3 s/m, unless told); the bill of materials with the\n"
                  "catalogue screw and tap drills; and the files tippe export writes.",
         .after = "Writes into DIR (STEM: the design file's name without .json) the sheet as\n"
-                 "STEM-build.json, STEM-build.md and one A3 page STEM-sheet.pdf, .svg, .png;\n"
+                 "STEM-build.json, STEM-build.md and one A3-wide page STEM-sheet.pdf, .svg, .png;\n"
                  "a depth gauge STEM-gauge-stays-up.stl, -flips.stl, -hangs.stl per setting\n"
                  "deeper than 1 mm; and, unless --no-export, tippe export's files (STL, 3MF,\n"
                  "OpenSCAD, section drawing; split into halves when the printed body closes\n"

@@ -139,6 +139,13 @@ int tippe_design_part_fit(const tippe_design *d, int i)
 
 const char *tippe_design_materials_path(const tippe_design *d) { return d->mat_file; }
 
+int tippe_design_n_overrides(const tippe_design *d) { return d->n_overrides; }
+
+const char *tippe_design_override(const tippe_design *d, int i)
+{
+    return i >= 0 && i < d->n_overrides ? d->overrides[i] : "";
+}
+
 const char *tippe_design_part_catalogue_item(const tippe_design *d, int i)
 {
     return i < 0 || i >= d->n_parts ? "" : d->parts[i].catalogue_item;

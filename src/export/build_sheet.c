@@ -228,21 +228,20 @@ static double print_table(cairo_t *cr, const tippe_build_sheet *s, double x, dou
 }
 
 static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t *cr,
-                     tippe_error *err)
+                     double *bottom, tippe_error *err)
 {
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
-    char t[2048];
+    char t[6144];
     snprintf(t, sizeof t, "Build sheet: %s", s->design_name);
     /* a long name or path wraps: what follows moves down, not under it */
     double y_sub = wrapped(cr, t, M, M + 14, SHEET_W - 2 * M, 18, 1) - 0.5;
     char verdict[512];
     tippe_build_verdict_text(s, verdict, sizeof verdict);
-    snprintf(t, sizeof t,
-             "%s; sphere radius %g mm; the weight's physical travel Z2 = %.2f .. %.2f mm (Z2: "
-             "its midpoint above the sphere's centre). %s",
-             s->design_file, s->radius_mm, s->travel_from_mm, s->travel_to_mm, verdict);
+    char head[4400];
+    tippe_build_header_text(s, head, sizeof head);
+    snprintf(t, sizeof t, "%s (Z2: its midpoint above the sphere's centre). %s", head, verdict);
     double y_head = wrapped(cr, t, M, y_sub, SHEET_W - 2 * M, 10.5, 0);
     /* the settings too narrow to set, in red under the verdict */
     cairo_set_source_rgb(cr, 0.75, 0.05, 0.05);
@@ -355,16 +354,27 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
         y += 16;
         for (int k = 0; k < 2; k++)
             if (s->caps[k].half_angle_rad > 0) {
+                char made[160] = "";
+                if (s->cap_made_mm[k] > 0)
+                    snprintf(made, sizeof made, "; %s, %.2f mm across, within %.1f deg",
+                             s->hole_tapped ? "tapped" : "with its insert", s->cap_made_mm[k],
+                             s->cap_made_half_angle_rad[k] * 180 / M_PI);
                 snprintf(t, sizeof t,
-                         "'%s' opens at the %s pole (%.2f mm across): tilted less than %.1f deg "
-                         "on it the top stands on the hole's rim, not on its sphere.",
-                         s->caps[k].part, k ? "-z" : "+z", 2 * s->caps[k].radius_mm,
+                         "'%s' opens at the %s pole (%.2f mm across as modelled%s): tilted less "
+                         "than %.1f deg on it the top stands on the hole's rim, not on its "
+                         "sphere.",
+                         s->caps[k].part, k ? "-z" : "+z", 2 * s->caps[k].radius_mm, made,
                          s->caps[k].half_angle_rad * 180 / M_PI);
                 y = wrapped(cr, t, rx, y, rw, 9, 0) + 1;
             }
         for (int k = 0; k < s->n_pole_fixes; k++) {
             snprintf(t, sizeof t, "- %s", s->pole_fix[k].text);
-            y = wrapped(cr, t, rx, y, rw, 9, 0) + 2;
+            y = wrapped(cr, t, rx, y, rw, 9, 0) + 1;
+            int n = 0;
+            for (int i = 0; i < s->pole_fix[k].n_set && n < (int)sizeof t; i++)
+                n += snprintf(t + n, sizeof t - (size_t)n, "%s--set %s", i ? " " : "",
+                              s->pole_fix[k].set[i]);
+            y = wrapped(cr, t, rx + 8, y, rw - 8, 7.5, 0) + 3;
         }
     }
 
@@ -384,6 +394,7 @@ static int draw_page(const tippe_design *d, const tippe_build_sheet *s, cairo_t 
         snprintf(t, sizeof t, "%d. %s", k + 1, s->step[k]);
         y = wrapped(cr, t, M, y, SHEET_W - 2 * M, 9.5, 0) + 1;
     }
+    *bottom = y;
     return cairo_status(cr) == CAIRO_STATUS_SUCCESS
                ? TIPPE_OK
                : tippe_error_set(err, TIPPE_ECOMPUTE, "cairo could not draw the build sheet");
@@ -403,19 +414,30 @@ int tippe_export_sheet_write(const tippe_design *d, const tippe_build_sheet *s, 
     int pdf = !strcmp(ext, "pdf"), svg = !strcmp(ext, "svg"), png = !strcmp(ext, "png");
     if (!pdf && !svg && !png)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: a build sheet is .pdf, .svg or .png", path);
+    /* A3 landscape, longer when the sheet holds more than a page (advice, the
+     * poles' fixes): laid out once on a recording surface to measure it */
+    double bottom = SHEET_H;
+    cairo_surface_t *probe = cairo_recording_surface_create(CAIRO_CONTENT_COLOR, NULL);
+    cairo_t *pc = cairo_create(probe);
+    int rc = draw_page(d, s, pc, &bottom, err);
+    cairo_destroy(pc);
+    cairo_surface_destroy(probe);
+    if (rc)
+        return rc;
+    const double H = fmax(SHEET_H, ceil(bottom + 30));
     tippe_report_file rf;
-    int rc = tippe_report_open(&rf, path, "the build sheet", err);
+    rc = tippe_report_open(&rf, path, "the build sheet", err);
     if (rc)
         return rc;
     cairo_surface_t *sf =
-        pdf   ? cairo_pdf_surface_create_for_stream(to_file, rf.f, SHEET_W, SHEET_H)
-        : svg ? cairo_svg_surface_create_for_stream(to_file, rf.f, SHEET_W, SHEET_H)
+        pdf   ? cairo_pdf_surface_create_for_stream(to_file, rf.f, SHEET_W, H)
+        : svg ? cairo_svg_surface_create_for_stream(to_file, rf.f, SHEET_W, H)
               : cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)(SHEET_W * PNG_SCALE),
-                                           (int)(SHEET_H * PNG_SCALE));
+                                           (int)(H * PNG_SCALE));
     cairo_t *cr = cairo_create(sf);
     if (png)
         cairo_scale(cr, PNG_SCALE, PNG_SCALE);
-    rc = draw_page(d, s, cr, err);
+    rc = draw_page(d, s, cr, &bottom, err);
     cairo_destroy(cr);
     int ok = !rc;
     if (ok && png)

@@ -491,10 +491,11 @@ static void draw_dimensions(dlist *L, const tippe_design *d, const tippe_drawing
         line(L, o->depth_x_mm, y1, x_line + 1.5, y1, MOVING, 0.7, 0, 0, 0);
         line(L, x_line, y0, x_line, y1, MOVING, 1.2, 0, 1, 1);
         dim_text(L, x_line + 1.2, yl - 0.6, 0, "setting.depth_mm", depth, "%.2f", depth);
-        text(L, x_line + 1.2, yl - 3.2, 0, 12, MOVING, "depth below %s",
+        /* the dimensions' ink, a size up from the parts' names: a maker reads it */
+        text(L, x_line + 1.2, yl - 3.4, 0, 14, DIM, "depth below %s",
              o->depth_from ? o->depth_from : "the rim");
         if (o->depth_label)
-            text(L, x_line + 1.2, yl - 6.4, 0, 12, MOVING, "%s", o->depth_label);
+            text(L, x_line + 1.2, yl - 6.8, 0, 14, DIM, "%s", o->depth_label);
     }
 }
 
