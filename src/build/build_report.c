@@ -112,6 +112,21 @@ static const char *measure_name(tippe_build_measure m)
     return m == TIPPE_BUILD_MEASURE_HOLE ? "hole" : m == TIPPE_BUILD_MEASURE_ROD ? "rod" : "none";
 }
 
+/* A change's JSON entry in arr, with its --set lines as "set": the advice's
+ * and the poles' fixes alike; NULL if out of memory. */
+static cJSON *entry_with_sets(cJSON *arr, const char (*set)[200], int n)
+{
+    cJSON *j = cJSON_CreateObject();
+    if (!j || !cJSON_AddItemToArray(arr, j)) {
+        cJSON_Delete(j);
+        return NULL;
+    }
+    cJSON *sets = cJSON_AddArrayToObject(j, "set");
+    for (int i = 0; sets && i < n; i++)
+        cJSON_AddItemToArray(sets, cJSON_CreateString(set[i]));
+    return j;
+}
+
 cJSON *tippe_build_json(const tippe_build_sheet *s)
 {
     cJSON *o = cJSON_CreateObject();
@@ -291,14 +306,9 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
     cJSON *adv = cJSON_AddArrayToObject(o, "to_make_it_settable");
     cJSON_AddNumberToObject(o, "changes_tried", s->n_advice_tried);
     for (int k = 0; adv && k < s->n_advice; k++) {
-        cJSON *j = cJSON_CreateObject();
-        if (!j || !cJSON_AddItemToArray(adv, j)) {
-            cJSON_Delete(j);
+        cJSON *j = entry_with_sets(adv, s->advice[k].set, s->advice[k].n_set);
+        if (!j)
             break;
-        }
-        cJSON *sets = cJSON_AddArrayToObject(j, "set");
-        for (int i = 0; sets && i < s->advice[k].n_set; i++)
-            cJSON_AddItemToArray(sets, cJSON_CreateString(s->advice[k].set[i]));
         cJSON_AddBoolToObject(j, "pair", s->advice[k].pair);
         cJSON_AddBoolToObject(j, "settable", s->advice[k].settable);
         cJSON_AddNumberToObject(j, "narrowest_robust_mm", s->advice[k].narrowest_mm);
@@ -308,14 +318,9 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
     tippe_design_caps_json(o, s->caps);
     cJSON *pf = cJSON_AddArrayToObject(o, "pole_fixes");
     for (int k = 0; pf && k < s->n_pole_fixes; k++) {
-        cJSON *j = cJSON_CreateObject();
-        if (!j || !cJSON_AddItemToArray(pf, j)) {
-            cJSON_Delete(j);
+        cJSON *j = entry_with_sets(pf, s->pole_fix[k].set, s->pole_fix[k].n_set);
+        if (!j)
             break;
-        }
-        cJSON *sets = cJSON_AddArrayToObject(j, "set");
-        for (int i = 0; sets && i < s->pole_fix[k].n_set; i++)
-            cJSON_AddItemToArray(sets, cJSON_CreateString(s->pole_fix[k].set[i]));
         cJSON_AddStringToObject(j, "verdict", s->pole_fix[k].verdict >= 0
                                                   ? tippe_build_verdict_name(s->pole_fix[k].verdict)
                                                   : "failed");
