@@ -44,6 +44,12 @@ check "m12 printed at 15 %: weighing cannot change 'not 3-in-1' (a note, no step
     --no-export --json >"$tmp/w.json" 2>/dev/null
 check "m12 printed at 50 %: a step to weigh the print and run again, with the hole's offset" \
     json_ok "$tmp/w.json" 'any("Weigh the bare print of \x27body\x27" in s and "measured_mass_g=G" in s and " g (the printed hole against the model" in s for s in o["steps"])'
+# the sheet says what it was made of, and the run again repeats it (a weighing
+# checked against the 15 % design would be judged with another tolerance)
+check "m12 printed at 50 %: the sheet records its --set" \
+    json_ok "$tmp/w.json" 'o["set"] == ["parts.body.print.infill=0.5"]'
+check "m12 printed at 50 %: the weigh step repeats it" \
+    json_ok "$tmp/w.json" 'any("--set parts.body.print.infill=0.5 --set parts.body.print.measured_mass_g=G" in s for s in o["steps"])'
 # the verdicts the step quotes at the tolerance's ends are tippe build's there
 python3 - "$tmp/w.json" >"$tmp/ends" <<'PY'
 import json, re, sys

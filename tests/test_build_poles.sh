@@ -42,6 +42,14 @@ check "m12: the sheet warns that the contact is INVALID" \
     json_ok "$tmp/m.json" 'any(w.startswith("Contact INVALID in the launch checks") for w in o["warnings"])'
 check "m12: ... and so does stderr" grep -q "Contact INVALID in the launch checks" "$tmp/m.err"
 check "m12: the Markdown's launch cell says so" grep -q "contact INVALID: starts" "$tmp/m/m12-setscrew-build.md"
+check "m12: the verdict says the model does not hold at the poles" \
+    json_ok "$tmp/m.json" 'o["model_holds_at_poles"] is False'
+check "m12: ... in the verdict's sentence too" grep -q "^It is .* But a hole opens at a pole" "$tmp/m/m12-setscrew-build.md"
+# a tapped M12 hole opens at the thread's 12 mm: asin(6 / 25) = 13.9 deg
+check "m12: the tapped opening's size and angle" grep -q "tapped, 12.00 mm across, within 13.9 deg" "$tmp/m/m12-setscrew-build.md"
+# catalogue screws are bought in a set-screw material: steel for the iron design
+check "m12: catalogue proposals are bought in steel" \
+    json_ok "$tmp/m.json" 'all("parts.screw.material=steel" in a["set"] for a in o["to_make_it_settable"] if any(".catalogue_item=" in x for x in a["set"]))'
 
 # the fixes: applied, tippe build gives the verdict each states, and the plugged
 # openings are closed (both: no polar cap; the blind hole: only the -z one)
@@ -70,5 +78,5 @@ check "blind hole: only the +z pole is open, one fix" \
 # a shell with a rod: no hole opens at a pole, no mark, no fix
 "$tippe" build designs/shell-rod-iron.json -o "$tmp/r" --no-export --json >"$tmp/r.json" 2>/dev/null
 check "shell with a rod: no open pole, nothing marked" \
-    json_ok "$tmp/r.json" 'o["polar_caps"] == [] and o["pole_fixes"] == [] and all(s.get("launch_on_polar_cap", {}).get("start") is None for s in o["settings"])'
+    json_ok "$tmp/r.json" 'o["model_holds_at_poles"] and o["polar_caps"] == [] and o["pole_fixes"] == [] and all(s.get("launch_on_polar_cap", {}).get("start") is None for s in o["settings"])'
 finish
