@@ -68,8 +68,8 @@ static void add_set(change *c, const char *fmt, ...)
     va_end(ap);
 }
 
-/* The sheet's test of a changed design: its zones with their tolerance
- * bands, as step 1 of the sheet (tippe_build_zones); settable when every
+/* The sheet's test of a changed design (tippe_build_verdict_with: its zones
+ * with their tolerance bands, as step 1 of the sheet); settable when every
  * behaviour's robust width reaches the change's min_setting_mm. score counts
  * the behaviours that do, with partial credit, for choosing which changes to
  * pair. */
@@ -78,34 +78,25 @@ static void try_change(advice_ctx *a, change *c)
     const char *ov[MAX_SETS];
     for (int i = 0; i < c->n_set; i++)
         ov[i] = c->set[i];
-    tippe_design *v = NULL;
-    tippe_error e = {0};
     c->tried = 1;
     a->s->n_advice_tried++;
-    tippe_build_setting set[3];
-    double from, to;
-    if (tippe_design_reload(a->d, ov, c->n_set, &v, &e) ||
-        tippe_build_zones(v, set, &from, &to, &e)) {
-        tippe_design_free(v);
+    tippe_build_zones_of z;
+    const int verdict = tippe_build_verdict_with(a->d, ov, c->n_set, c->min_setting_mm, &z);
+    if (verdict < 0)
         return;
-    }
-    tippe_design_free(v);
     c->loads = 1;
-    c->settable = 1;
-    c->narrowest_mm = INFINITY;
+    c->settable = verdict == 2;
+    c->narrowest_mm = z.narrowest_mm;
     for (int f = 0; f < 3; f++) {
-        double w = set[f].reachable && set[f].robust
-                       ? set[f].robust_to_mm - set[f].robust_from_mm
-                       : 0;
-        c->narrowest_mm = fmin(c->narrowest_mm, w);
-        c->score += fmin(w / c->min_setting_mm, 1) + (set[f].reachable ? 0.01 : 0);
-        c->settable = c->settable && w >= c->min_setting_mm;
+        const tippe_build_setting *st = &z.set[f];
+        double w = st->reachable && st->robust ? st->robust_to_mm - st->robust_from_mm : 0;
+        c->score += fmin(w / c->min_setting_mm, 1) + (st->reachable ? 0.01 : 0);
     }
 }
 
 /* The infill steps of each printed part that is not the design's own. A
  * weighed part's scale reading belongs to the old infill: it goes. */
-static void infill_changes(advice_ctx *a, int i, const char *name,
+static void infill_changes(advice_ctx *a, const char *name,
                            const tippe_design_print_info *pr)
 {
     for (size_t k = 0; k < sizeof slicer_infill_steps / sizeof *slicer_infill_steps; k++) {
@@ -121,7 +112,6 @@ static void infill_changes(advice_ctx *a, int i, const char *name,
         snprintf(c->what, sizeof c->what, "print '%s' at %.0f %% infill (now %.0f %%%s)", name,
                  100 * x, 100 * pr->infill, pr->calibrated ? ", weighed: weigh the new print" : "");
     }
-    (void)i;
 }
 
 /* The bought materials of the design's table (printable: false) for the
@@ -243,7 +233,7 @@ static void list_changes(advice_ctx *a, const tippe_build_catalogue *cat)
             tippe_design_part_solid(a->d, i, &sd))
             continue;
         if (pr.printed)
-            infill_changes(a, i, p.name, &pr);
+            infill_changes(a, p.name, &pr);
         else if (sd.moving && !sd.is_void) {
             int cyl = !strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube");
             material_changes(a, p.name, &p, hole && a->s->has_thread && cyl);
