@@ -10,9 +10,8 @@
 #include <string.h>
 
 /* A printed plug pressed into an opening reaches this far below the hole's
- * rim: its top is shaped to the sphere, the rest grips the hole's wall (a
- * judgement, about two perimeters' worth of grip either side of a press fit;
- * not from a standard). */
+ * rim: its top is shaped to the sphere, the rest grips the hole's wall. A
+ * judgement, not from a standard: the sheet says so. */
 #define PLUG_GRIP_MM 3.0
 
 static const char *pole_name(int pole) { return pole > 0 ? "+z" : "-z"; }
@@ -104,6 +103,11 @@ static void try_fix(const tippe_design *d, tippe_build_sheet *s, const char *hol
     (void)n; /* text[] holds the sentence; a cut one still reads */
 }
 
+/* The open poles at the drawn setting, the warning when a launch check starts
+ * or ends on one (the zones and the checks assume the sphere there), and the
+ * fixes: plug every opening, or, for a hole open at both poles, only the one
+ * the top rests on (a blind hole from the other pole). Each fix is judged by
+ * the sheet's own test, so its verdict is what the changed design's sheet says. */
 void tippe_build_poles(const tippe_design *d, tippe_build_sheet *s)
 {
     double z2 = NAN;
