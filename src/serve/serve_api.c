@@ -221,6 +221,19 @@ static int patch_request(const cJSON *req, const tippe_design *d, tippe_launch_o
     return 0;
 }
 
+/* A launch's design, with the patch law's Hertz modulus resolved for it
+ * (patch_request); NULL after an answer. */
+static tippe_design *launch_design(serve_server *s, const cJSON *req, tippe_launch_options *o,
+                                   serve_response *out)
+{
+    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
+    if (d && patch_request(req, d, o, out)) {
+        tippe_design_free(d);
+        return NULL;
+    }
+    return d;
+}
+
 /* Samples of theta(t) a check answer carries for its plot. */
 enum { THETA_SAMPLES = 301 };
 
@@ -235,13 +248,9 @@ static void api_check(serve_server *s, const cJSON *req, serve_response *out)
     tippe_launch_options o;
     if (tippe_serve_request_keys(req, keys, out) || launch_request(req, &z2, &spin, &o, out))
         return;
-    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
+    tippe_design *d = launch_design(s, req, &o, out);
     if (!d)
         return;
-    if (patch_request(req, d, &o, out)) {
-        tippe_design_free(d);
-        return;
-    }
     tippe_error err = {0};
     tippe_sweep_check c;
     int rc = tippe_sweep_check_run(d, z2, &o, spin, &c, &err);
@@ -299,13 +308,9 @@ static void api_animate(serve_server *s, const cJSON *req, serve_response *out)
                                   "width_px and height_px must be even whole numbers, fps whole");
         return;
     }
-    tippe_design *d = tippe_serve_request_design(s, req, "design", NULL, out);
+    tippe_design *d = launch_design(s, req, &o, out);
     if (!d)
         return;
-    if (patch_request(req, d, &o, out)) {
-        tippe_design_free(d);
-        return;
-    }
     tippe_error err = {0};
     tippe_sweep_check c;
     tippe_animate_launch launch;
