@@ -82,8 +82,8 @@ if "$tippe" simulate "$base" --csv "$tmp/traj.csv" --plot "$tmp/traj.png" >"$tmp
         ok || bad "CSV header: $(head -1 "$tmp/traj.csv")"
     rows=$(($(wc -l <"$tmp/traj.csv") - 1))
     [ "$rows" -gt 100 ] && ok || bad "CSV has $rows rows"
-    awk -F, 'NR > 1 && NF != 16 { bad = 1 } END { exit bad }' "$tmp/traj.csv" && ok ||
-        bad "CSV rows without 16 fields"
+    awk -F, 'NR > 1 && NF != 18 { bad = 1 } END { exit bad }' "$tmp/traj.csv" && ok ||
+        bad "CSV rows without 18 fields"
     [ "$(head -c 4 "$tmp/traj.png" | od -An -c | tr -d ' ')" = "211PNG" ] && ok ||
         bad "plot is not a PNG"
     ls "$tmp" | grep -q "\.tmp\." && bad "temporary files left: $(ls "$tmp")" || ok

@@ -321,10 +321,15 @@ typedef struct {
     double mu_c;             /* Coulomb friction coefficient (dimensionless), >= 0 */
     double slip_scale_m_s;   /* Coulomb's regularisation speed v_s, m/s (0: the default
                                 TIPPE_COULOMB_SLIP_SCALE_M_S) */
-    double patch_radius_m;   /* law patch: the contact patch's radius a, m, >= 0, held
-                                constant through the run; 0 with patch_E_star_pa > 0:
-                                Hertz's radius at the static load m g
-                                (tippe_contact_hertz_radius); both 0: a point (a = 0) */
+    double patch_radius_m;   /* law patch: the contact patch's radius a at the static load
+                                m g, m, >= 0; 0 with patch_E_star_pa > 0: Hertz's radius
+                                at m g (tippe_contact_hertz_radius); both 0: a point
+                                (a = 0). During the run it follows the normal force unless
+                                patch_radius_fixed */
+    int patch_radius_fixed;  /* law patch: 1: the radius is held constant through the run
+                                (Leine and Glocker's model); 0 (the default): it follows
+                                the normal force, a (Rn / m g)^(1/3), as Hertz's radius of
+                                an elastic sphere on a flat does (Johnson 1985, eq 4.22) */
     double patch_E_star_pa;  /* law patch: the contact modulus E* of ball and table, Pa
                                 (tippe_contact_hertz_modulus), or 0 */
     double rolling_arm_m;    /* law patch: rolling resistance, a couple -Rn arm w_roll /
@@ -401,6 +406,9 @@ typedef struct {
     double E;               /* J, energy (sec 4) */
     double D;               /* J, energy dissipated so far (integral of eq 4.1) */
     double J;               /* kg m^2/s, Jellett -L.q (eq 3.20) */
+    double patch_radius;    /* m, the contact patch's radius at this Rn (patch law; 0 else) */
+    double drill_torque;    /* N m, the drilling couple about the table's normal (patch law;
+                               0 else): what changes J (docs/dynamics.md) */
 } tippe_dynamics_sample;
 
 /* Called for each sample; a nonzero return stops the run (TIPPE_ECOMPUTE,
@@ -452,7 +460,7 @@ double tippe_dynamics_default_sample_dt(const tippe_dynamics_initial *ic, double
                                         double R_m, double t_end);
 /* The samples as CSV, a header with units and one row per sample (%.10g):
  * t_s,theta_rad,theta_dot_rad_s,phi_dot_rad_s,spin_rad_s,U_m_s,V_m_s,Rn_N,slip_speed_m_s,
- * E_J,J_kg_m3_s,dissipated_J,phi_rad,psi_rad,x_m,y_m. */
+ * E_J,J_kg_m3_s,dissipated_J,phi_rad,psi_rad,x_m,y_m,patch_radius_m,drill_torque_N_m. */
 void tippe_dynamics_write_csv(FILE *out, const tippe_dynamics_sample *s, int n);
 
 /* Defaults: verdict level, t_end 100 s, preset "balanced", margin_factor 10,

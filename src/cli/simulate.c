@@ -185,6 +185,10 @@ static cJSON *json_sample_fields(cJSON *o, const tippe_dynamics_sample *s)
     cJSON_AddNumberToObject(o, "slip_speed_m_s", s->slip_speed);
     cJSON_AddNumberToObject(o, "E_J", s->E);
     cJSON_AddNumberToObject(o, "dissipated_J", s->D);
+    if (s->patch_radius > 0.0) {
+        cJSON_AddNumberToObject(o, "patch_mm", s->patch_radius * 1e3);
+        cJSON_AddNumberToObject(o, "drill_torque_N_m", s->drill_torque);
+    }
     return o;
 }
 

@@ -110,6 +110,8 @@ static void ctx_init(dyn_ctx *c, const tippe_dynamics_model *model, size_t dim)
                  model->law == TIPPE_FRICTION_COULOMB_CREEP || model->law == TIPPE_FRICTION_PATCH;
     c->patch = model->law == TIPPE_FRICTION_PATCH;
     c->patch_a = tippe_dynamics_patch_radius(model);
+    c->patch_follow = c->patch && c->patch_a > 0.0 && !model->patch_radius_fixed;
+    c->inv_mg = 1.0 / (model->top.m * model->g);
     c->roll_arm = c->patch ? model->rolling_arm_m : 0.0;
     c->stick_law = model->law == TIPPE_FRICTION_COULOMB && model->mu_c > 0.0;
     c->mu_c = model->mu_c;

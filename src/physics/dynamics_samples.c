@@ -42,10 +42,12 @@ double tippe_dynamics_default_sample_dt(const tippe_dynamics_initial *ic, double
 void tippe_dynamics_write_csv(FILE *out, const tippe_dynamics_sample *s, int n)
 {
     fprintf(out, "t_s,theta_rad,theta_dot_rad_s,phi_dot_rad_s,spin_rad_s,U_m_s,V_m_s,Rn_N,"
-                 "slip_speed_m_s,E_J,J_kg_m3_s,dissipated_J,phi_rad,psi_rad,x_m,y_m\n");
+                 "slip_speed_m_s,E_J,J_kg_m3_s,dissipated_J,phi_rad,psi_rad,x_m,y_m,patch_radius_m,"
+                 "drill_torque_N_m\n");
     for (int i = 0; i < n; i++, s++)
         fprintf(out, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-                     "%.10g,%.10g,%.10g,%.10g\n",
+                     "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n",
                 s->t, s->theta, s->theta_dot, s->phi_dot, s->spin, s->U, s->V, s->Rn,
-                s->slip_speed, s->E, s->J, s->D, s->phi, s->psi, s->x, s->y);
+                s->slip_speed, s->E, s->J, s->D, s->phi, s->psi, s->x, s->y, s->patch_radius,
+                s->drill_torque);
 }

@@ -32,7 +32,9 @@ typedef struct {
     int coulomb;          /* friction law: 0 viscous (mu), 1 Coulomb (regularised slip) */
     int stick_law;        /* Coulomb with the event-driven stick (rolling) phase */
     int patch;            /* Coulomb-Contensou on a patch of radius patch_a (m) */
-    double patch_a;
+    double patch_a;       /* its radius at the static load m g, m */
+    int patch_follow;     /* 1: the radius follows Rn as patch_a (Rn / m g)^(1/3) */
+    double inv_mg;        /* 1 / (m g), N^-1 */
     double roll_arm;      /* patch law: rolling resistance lever arm, m (0: off) */
     int stick;            /* current phase: 1 rolling without slipping (V_Q = 0) */
     double mu_c, vs, vs2; /* Coulomb coefficient, its slip scale v_s and v_s^2 */
@@ -50,6 +52,7 @@ typedef struct {
     double k[3], w[3], v[3], q[3], VQ[3];
     double n, Rn, den, power;
     double M;       /* N m, drilling torque about e3 (patch law; 0 otherwise) */
+    double patch_a; /* m, the patch radius at this Rn (patch law) */
     double mu_eff;  /* s/m: mu (viscous) or mu_c / sqrt(|V_Q|^2 + v_s^2) (Coulomb) */
     double F[2];    /* N, horizontal friction force */
     double K[3][3]; /* contact compliance (Delassus) matrix, rolling phase only */

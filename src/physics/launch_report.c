@@ -65,12 +65,15 @@ const char *tippe_dynamics_friction_text(const tippe_dynamics_model *m, char *bu
         }
         if (m->patch_radius_m > 0 || !(m->patch_E_star_pa > 0))
             snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
-                     "(Hertz pressure), regularised below %g m/s", m->mu_c,
-                     m->patch_radius_m * 1e3, vs);
+                     "at m g (Hertz pressure, %s), regularised below %g m/s", m->mu_c,
+                     m->patch_radius_m * 1e3,
+                     m->patch_radius_fixed ? "held" : "following the load as Rn^(1/3)", vs);
         else
-            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on Hertz's patch at m g "
-                     "(E* %.3g GPa, Hertz pressure), regularised below %g m/s", m->mu_c,
-                     m->patch_E_star_pa * 1e-9, vs);
+            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on Hertz's patch "
+                     "(E* %.3g GPa, Hertz pressure, %s), regularised below %g m/s", m->mu_c,
+                     m->patch_E_star_pa * 1e-9,
+                     m->patch_radius_fixed ? "held at m g's" : "following the load as Rn^(1/3)",
+                     vs);
         break;
     case TIPPE_FRICTION_COULOMB_CREEP:
         snprintf(buf, size, "Coulomb mu_c %g regularised below %g m/s, no sticking (creep)",
@@ -107,6 +110,7 @@ void tippe_dynamics_friction_json(cJSON *o, const tippe_dynamics_model *m)
         else
             cJSON_AddNumberToObject(f, "E_star_GPa", m->patch_E_star_pa * 1e-9);
         cJSON_AddStringToObject(f, "pressure", "hertz");
+        cJSON_AddBoolToObject(f, "radius_follows_load", !m->patch_radius_fixed);
         cJSON_AddNumberToObject(f, "rolling_arm_um", m->rolling_arm_m * 1e6);
     }
 }
