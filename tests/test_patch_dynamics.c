@@ -174,6 +174,41 @@ static void test_radius_follows_load(void)
     }
 }
 
+/* Jellett's J under drilling (docs/dynamics.md, "Verdicts are observed"): J(t) - J0 equals
+ * the integral of M (R - eps cos theta) (trapezoid over 1e-4 s samples: its error is
+ * ~dt^2 |d2(dJ/dt)/dt2| t / 12, below 1e-4 of the change here), and the result's
+ * jellett_drift_time_s is |J0| over (3 pi / 16) mu_c m g a0 (R + eps). */
+static void test_jellett_change(void)
+{
+    const double a0 = 2e-4, mu_c = 0.3;
+    tippe_dynamics_model md = patch_model(m12_ball(1.0), mu_c, a0);
+    tippe_dynamics_initial ic = m12_launch(&md, 2.0 * M_PI * 20.0);
+    ic.U = 0.05;
+    sample_buf b = {0};
+    tippe_dynamics_result r;
+    CHECK(run_samples(&md, &ic, 2.0, 1e-4, "precise", &b, &r) == TIPPE_OK, "run");
+    double integral = 0.0;
+    const tippe_top *t = &md.top;
+    for (int i = 1; i < b.n; i++) {
+        const tippe_dynamics_sample *p = &b.s[i - 1], *s = &b.s[i];
+        const double rate_p = p->drill_torque * (t->R - t->eps * cos(p->theta));
+        const double rate_s = s->drill_torque * (t->R - t->eps * cos(s->theta));
+        integral += 0.5 * (rate_p + rate_s) * (s->t - p->t);
+    }
+    const double change = b.s[b.n - 1].J - b.s[0].J;
+    const double want_time = fabs(r.J0) / (3.0 * M_PI / 16.0 * mu_c * t->m * md.g * a0 *
+                                           (t->R + t->eps));
+    printf("  Jellett's J under drilling (M12, 2 s): J - J0 = %.6g, integral of M (R - eps cos "
+           "theta) = %.6g kg m^3/s (relative difference %.2g); J0 could all go in %.4g s\n",
+           change, integral, fabs(change - integral) / fabs(change), r.jellett_drift_time_s);
+    CHECK(fabs(change) > 1e-3 * fabs(r.J0), "J hardly moved: %g of %g", change, r.J0);
+    CHECK(fabs(change - integral) < 1e-4 * fabs(change), "dJ/dt != M (R - eps cos theta): %g "
+          "against %g", change, integral);
+    CHECK(fabs(r.jellett_drift_time_s - want_time) < 1e-12 * want_time,
+          "drift time %g s, want %g s", r.jellett_drift_time_s, want_time);
+    free(b.s);
+}
+
 /* Validation (docs/dynamics.md, "Patch friction"): Leine and Glocker's tippe top and
  * Cohen's sphere. Figures printed, beside their anchors; asserted only loosely (the
  * anchors are read off published figures, and nothing here is tuned). */
@@ -364,6 +399,7 @@ int main(void)
     test_verdict_not_proved();
     test_hertz_radius();
     test_radius_follows_load();
+    test_jellett_change();
     test_validation();
     test_extremes();
     test_after_flip();

@@ -342,6 +342,12 @@ typedef struct {
  * N = m g if patch_E_star_pa > 0, else 0. 0 for the other laws. */
 double tippe_dynamics_patch_radius(const tippe_dynamics_model *model);
 
+/* The bound on |dJ/dt| under the patch law at the static load, kg m^3/s^2: the drilling
+ * couple changes J at dJ/dt = M (R - eps cos theta) (docs/dynamics.md), and Hertz's
+ * pressure bounds |M| by (3 pi / 16) mu_c Rn a, so |dJ/dt| <= (3 pi / 16) mu_c m g a (R + eps)
+ * at Rn = m g (the radius a at m g). 0 under the other laws. */
+double tippe_dynamics_jellett_rate_bound(const tippe_dynamics_model *model);
+
 /* The reason a patch-law verdict is not proved (tippe_dynamics_result.unproved_reason). */
 #define TIPPE_PATCH_UNPROVED_REASON "J changes under drilling friction: not proved"
 
@@ -405,7 +411,7 @@ typedef struct {
     double slip_speed;      /* m/s, |V_Q| (eq 3.9) */
     double E;               /* J, energy (sec 4) */
     double D;               /* J, energy dissipated so far (integral of eq 4.1) */
-    double J;               /* kg m^2/s, Jellett -L.q (eq 3.20) */
+    double J;               /* kg m^3/s, Jellett -L.q (eq 3.20) */
     double patch_radius;    /* m, the contact patch's radius at this Rn (patch law; 0 else) */
     double drill_torque;    /* N m, the drilling couple about the table's normal (patch law;
                                0 else): what changes J (docs/dynamics.md) */
@@ -500,7 +506,11 @@ typedef struct {
     tippe_dynamics_sample last;  /* state where integration stopped */
     double J0, E0;               /* at launch */
     double jellett_rel_drift;    /* max |J - J0| / max(|J0|, 1e-6 C W R),
-                                                       W = |omega0| + sqrt(g/R) */
+                                                       W = |omega0| + sqrt(g/R); under the
+                                    patch law the drilling's change, not an error */
+    double jellett_drift_time_s; /* patch law: |J0| / tippe_dynamics_jellett_rate_bound, how
+                                    soon drilling at m g could change J by all of J0
+                                    (NAN under the other laws, or with mu_c or a 0) */
     double energy_rel_error;     /* max |E + D - E0| / E0 */
     double energy_max_rise;      /* J, max over steps of E(t_i) - min_{j<i} E(t_j) (>= 0) */
     double min_Rn;               /* N, smallest normal force at an accepted step */
@@ -690,6 +700,7 @@ typedef struct {
                                 proves the well and range, not the rest state */
     double J0;               /* kg m^3/s, Jellett invariant at launch (eq 3.20) */
     double jellett_rel_drift;
+    double jellett_drift_time_s; /* patch law: how soon drilling could change J by J0 (s) */
     long rhs_evals;
     /* Theorem 5.1 for J0: theory_ok = 0 where it gives no prediction (J0 = 0,
      * or a neutral balanced ball). predicted is a bit set of (1 << tippe_final_kind);

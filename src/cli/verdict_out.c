@@ -19,6 +19,10 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
                r->t_verdict);
         printf("%*s%s\n", (int)strlen(prefix), "",
                r->unproved_reason ? r->unproved_reason : "not proved");
+        if (isfinite(r->jellett_drift_time_s))
+            printf("%*sJ moved by up to %.3g %% of J0 in the run; drilling at m g can move it by "
+                   "all of J0 in %.3g s (|dJ/dt| <= (3 pi/16) mu_c m g a (R + eps))\n",
+                   (int)strlen(prefix), "", 100 * r->jellett_rel_drift, r->jellett_drift_time_s);
         return;
     }
     if (r->how == TIPPE_DECIDED_ENERGY_CONE) {
@@ -108,6 +112,7 @@ void tippe_cli_json_verdict_proof(cJSON *o, const tippe_dynamics_result *r)
         cJSON_AddStringToObject(o, "unproved_reason", r->unproved_reason);
     else
         cJSON_AddNullToObject(o, "unproved_reason");
+    tippe_cli_json_number_or_null(o, "jellett_drift_time_s", r->jellett_drift_time_s);
     cJSON_AddNumberToObject(o, "stick_events", (double)r->stick_events);
     cJSON_AddNumberToObject(o, "slip_events", (double)r->slip_events);
     cJSON_AddNumberToObject(o, "rolling_time_s", r->rolling_time_s);

@@ -797,6 +797,7 @@ static void run_result_init(tippe_dynamics_result *res)
     res->barrier_gap_J = res->margin_J = res->Rn_bound_N = NAN;
     res->t_flip = NAN;
     res->t_fall = NAN;
+    res->jellett_drift_time_s = NAN;
     res->cap_first_s = res->cap_last_s = NAN;
 }
 
@@ -871,6 +872,9 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
             run_set_observed(&rs, res);
     }
     res->jellett_rel_drift = rs.J_abs_err / rs.J_scale;
+    const double J_rate = tippe_dynamics_jellett_rate_bound(model);
+    if (J_rate > 0.0)
+        res->jellett_drift_time_s = fabs(res->J0) / J_rate;
     res->energy_rel_error = rs.energy_abs_err / res->E0;
     res->rhs_evals = rs.c.nevals;
     res->rejected_steps = (long)rs.drv->e->failed_steps;

@@ -110,6 +110,16 @@ double tippe_dynamics_patch_radius(const tippe_dynamics_model *model)
     return a;
 }
 
+double tippe_dynamics_jellett_rate_bound(const tippe_dynamics_model *model)
+{
+    if (model->law != TIPPE_FRICTION_PATCH)
+        return 0.0;
+    /* m1 = 3 pi / 16, the pure-drilling limit of Hertz's pressure (docs/contact-patch.md) */
+    const double m1 = tippe_contact_patch_limits_of(TIPPE_CONTACT_PATCH_HERTZ).m0;
+    return m1 * model->mu_c * model->top.m * model->g * tippe_dynamics_patch_radius(model) *
+           (model->top.R + model->top.eps);
+}
+
 int tippe_dynamics_n_presets(void) { return N_PRESETS; }
 
 const char *tippe_dynamics_preset_name(int i)

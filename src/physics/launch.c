@@ -237,7 +237,7 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->cap_time_s = 0;
     rec->cap_first_s = NAN;
     rec->theta_lo_rad = rec->theta_hi_rad = rec->Rn_bound_N = NAN;
-    rec->J0 = rec->jellett_rel_drift = NAN;
+    rec->J0 = rec->jellett_rel_drift = rec->jellett_drift_time_s = NAN;
     rec->rhs_evals = 0;
 
     tippe_dynamics_model m;
@@ -274,6 +274,7 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->end_state_proved = res.end_state_proved;
     rec->J0 = res.J0;
     rec->jellett_rel_drift = res.jellett_rel_drift;
+    rec->jellett_drift_time_s = res.jellett_drift_time_s;
     rec->rhs_evals = res.rhs_evals;
     compare_with_theory(top, o->g, rec);
     return TIPPE_OK;

@@ -194,7 +194,7 @@ cJSON *tippe_sweep_check_laws_json(const tippe_sweep_check_law *l, int n,
     static const char *const per_law[] = {
         "verdict", "model_valid", "on_polar_cap", "t_s", "decided_by", "margin_J",
         "barrier_gap_J", "theta_range_rad", "Rn_bound_N", "t_flip_s", "theta_final_rad",
-        "spin_final_rad_s", "jellett_rel_drift", "options"};
+        "spin_final_rad_s", "jellett_rel_drift", "jellett_drift_time_s", "options"};
     for (size_t k = 0; k < sizeof per_law / sizeof per_law[0]; k++)
         if (strcmp(per_law[k], "model_valid") != 0) /* the design's at Z2: kept */
             cJSON_DeleteItemFromObjectCaseSensitive(o, per_law[k]);
@@ -300,6 +300,7 @@ cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_opt
         number_or_null(o, "spin_final_rad_s", rec->spin_final_rad_s);
         cJSON_AddNumberToObject(o, "J0_kg_m3_s", rec->J0);
         cJSON_AddNumberToObject(o, "jellett_rel_drift", rec->jellett_rel_drift);
+        number_or_null(o, "jellett_drift_time_s", rec->jellett_drift_time_s);
         number_or_null(o, "energy_rel_error", rec->energy_rel_error);
         cJSON_AddItemToObject(o, "options", tippe_launch_options_json(opt, 1));
         cJSON_AddItemToObject(o, "theory", theory_json(r, opt));
