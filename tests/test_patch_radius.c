@@ -119,6 +119,33 @@ static void test_robust(void)
         CHECK(s.run[i].ran && s.run[i].first.verdict == TIPPE_VERDICT_NO_TIP, "run %d", i);
 }
 
+/* The span F (a design's tolerance contact.patch_radius, --radius-span): the runs are
+ * at a/F and a F, and report those factors (to rounding: a ratio of two doubles). A
+ * short t_end: only the radii are tested. */
+static void test_span(void)
+{
+    tippe_top top;
+    tippe_launch_options o;
+    tippe_dynamics_initial ic;
+    CHECK(m12_setup(5.0, 15.0, &top, &o, &ic) == TIPPE_OK, "setup");
+    o.t_end = 0.5;
+    o.patch_radius_span = 3.0;
+    tippe_launch_radius_sensitivity s;
+    tippe_error e;
+    CHECK(tippe_launch_radius_sensitivity_initial(&top, &o, &ic, NULL, &s, &e) == TIPPE_OK,
+          "sensitivity");
+    const double a = tippe_launch_patch_radius(&top, &o);
+    const double want[TIPPE_LAUNCH_RADIUS_RUNS] = {1.0 / 3.0, 1.0, 3.0};
+    for (int i = 0; i < TIPPE_LAUNCH_RADIUS_RUNS; i++) {
+        CHECK(same_rel(s.run[i].radius_m, want[i] * a, 1e-15), "run %d: radius %g, want %g", i,
+              s.run[i].radius_m, want[i] * a);
+        CHECK(same_rel(s.run[i].factor, want[i], 1e-15), "run %d: factor %g", i, s.run[i].factor);
+    }
+    o.patch_radius_span = 0.0; /* the default: 0.5x and 2x */
+    CHECK(tippe_launch_radius_factor(&o, 0) == 0.5 && tippe_launch_radius_factor(&o, 2) == 2.0,
+          "default factors");
+}
+
 /* A given radius whose double exceeds R/2 (the dynamics' bound): that run is not made,
  * and the launch is not called robust. A short t_end: only the bookkeeping is tested. */
 static void test_beyond(void)
@@ -176,6 +203,7 @@ int main(void)
     test_summary();
     test_beyond();
     test_robust();
+    test_span();
     test_middle_is_plain_and_not_robust();
     return check_summary("test_patch_radius");
 }

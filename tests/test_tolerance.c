@@ -74,6 +74,8 @@ static void check_parsing(void)
         {"{\"parts.hole.height_mm\": 0.1}", "the clip decides it"},
         {"{\"parts.body.radius_mm\": 0.1}", "forms the sphere"},
         {"{\"parts.hole.density_g_cm3\": 0.1}", "a void has its part's density"},
+        {"{\"contact.patch_radius\": 1}", "outside (1, 10]"},
+        {"{\"contact.patch_radius\": \"50%\"}", "a number F"},
         {"[0.1]", "tolerances: must be an object"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
@@ -105,7 +107,23 @@ static void check_parsing(void)
                   fabs(t->plus_minus - 0.02 * 7.87) < 1e-15,
               "hardware mass default");
         CHECK(!find_tol(d, "parts.screw.height_mm"), "a bought screw's height is exact by default");
+        /* the patch radius's factor: the default, and not a per-field (zone) tolerance */
+        CHECK(tippe_design_patch_radius_span(d) == TIPPE_TOL_PATCH_RADIUS_FACTOR,
+              "patch radius factor %g", tippe_design_patch_radius_span(d));
+        CHECK(!find_tol(d, TIPPE_TOL_PATCH_RADIUS_KEY), "the patch radius is not a zone tolerance");
         tippe_design_free(d);
+    }
+    {
+        const char *pp = m12_with("{\"contact.patch_radius\": 3}");
+        tippe_design *dp = NULL;
+        CHECK(tippe_design_load(pp, NULL, 0, &dp, &err) == TIPPE_OK, "%s", err.msg);
+        if (dp) {
+            CHECK(tippe_design_patch_radius_span(dp) == 3.0, "patch radius factor %g, want 3",
+                  tippe_design_patch_radius_span(dp));
+            CHECK(tippe_design_n_tolerances(dp) == 4, "%d tolerances: the factor joined the list",
+                  tippe_design_n_tolerances(dp));
+        }
+        tippe_design_free(dp);
     }
     /* A block adds, replaces and (with 0) removes. */
     const char *path = m12_with("{\"parts[2].height_mm\": 0.05, \"parts.hole.radius_mm\": 0, "

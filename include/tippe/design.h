@@ -655,6 +655,13 @@ void tippe_design_source_free(tippe_design_source *s);
  * the reading of a 0.1 g kitchen scale when the part was weighed. */
 #define TIPPE_TOL_INFILL_PERCENT 25.0
 #define TIPPE_TOL_WEIGHED_G 0.1
+/* The contact patch's radius (the patch friction law's a, tippe/physics.h) is known
+ * only within a factor: surface finish, the table and wear move it (docs/contact-patch.md).
+ * The block's "contact.patch_radius": F (1 < F <= 10) says a lies in [a/F, a F]; it moves
+ * no zone boundary (the zones do not depend on friction), so it is not in the per-field
+ * list: check and launch run the patch law there (their radius sensitivity). */
+#define TIPPE_TOL_PATCH_RADIUS_FACTOR 2.0
+#define TIPPE_TOL_PATCH_RADIUS_KEY "contact.patch_radius"
 
 typedef struct {
     char field[TIPPE_TOLERANCE_FIELD_LEN]; /* canonical: parts by name */
@@ -668,6 +675,9 @@ typedef struct {
 } tippe_tolerance;
 
 int tippe_design_n_tolerances(const tippe_design *d);
+/* The factor F of the patch radius's tolerance (the block's contact.patch_radius, else
+ * TIPPE_TOL_PATCH_RADIUS_FACTOR). */
+double tippe_design_patch_radius_span(const tippe_design *d);
 /* Tolerance i (0-based), NULL out of range. */
 const tippe_tolerance *tippe_design_tolerance(const tippe_design *d, int i);
 

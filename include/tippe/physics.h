@@ -611,6 +611,10 @@ typedef struct {
     double slip_scale_m_s;    /* Coulomb's regularisation speed v_s (0: the default) */
     double patch_radius_m;    /* law patch: the patch radius, m (0: Hertz from E*) */
     double patch_E_star_pa;   /* law patch: contact modulus for Hertz at m g, Pa (or 0) */
+    double patch_radius_span; /* law patch: the radius sensitivity runs at a/F and a F with
+                                 this F (> 1; 0: TIPPE_LAUNCH_RADIUS_SPAN); a design's is its
+                                 tolerance on contact.patch_radius
+                                 (tippe_design_patch_radius_span) */
     double g;                 /* m/s^2 */
     double t_end;             /* s, bound on each launch's simulated time */
     int until_flip;           /* 1: follow a tip to its flip (t_flip_s), 0: stop at the proof */
@@ -825,13 +829,17 @@ int tippe_launch_dominant(const tippe_launch_tally *t);
 
 /* ---- Sensitivity to the patch radius (issue 27; docs/dynamics.md, "Radius sensitivity")
  * The patch radius is uncertain (surface finish, the table, wear): under the patch law a
- * launch (or a batch of launches, with the same draws) is run again at 0.5x and 2x the
- * radius it used, and called robust to the radius only when every launch gives the same
+ * launch (or a batch of launches, with the same draws) is run again at 1/F and F times the
+ * radius it used (F the options' span, 2 by default: 0.5x and 2x), and called robust to the radius only when every launch gives the same
  * verdict, the same passage over pi/2 (t_flip set or not) and the same fall back (t_fall
  * set or not) at all three radii. */
 enum { TIPPE_LAUNCH_RADIUS_RUNS = 3 };
-/* The factors on the used radius, in run order: 0.5, 1 (the plain run), 2. */
-double tippe_launch_radius_factor(int i);
+/* The span F when the options leave it 0: runs at 0.5x and 2x. */
+#define TIPPE_LAUNCH_RADIUS_SPAN 2.0
+/* The span F of o (o->patch_radius_span if > 1, else TIPPE_LAUNCH_RADIUS_SPAN). */
+double tippe_launch_radius_span(const tippe_launch_options *o);
+/* The factors on the used radius, in run order: 1/F, 1 (the plain run), F. */
+double tippe_launch_radius_factor(const tippe_launch_options *o, int i);
 
 /* The patch radius a launch of top under o uses, m: o->patch_radius_m if > 0, else Hertz's
  * at m g from o->patch_E_star_pa; 0 for the other laws. */
@@ -853,7 +861,7 @@ typedef struct {
 } tippe_launch_radius_run;
 
 typedef struct {
-    tippe_launch_radius_run run[TIPPE_LAUNCH_RADIUS_RUNS]; /* 0.5x, 1x, 2x */
+    tippe_launch_radius_run run[TIPPE_LAUNCH_RADIUS_RUNS]; /* 1/F, 1x, F */
     long changed; /* launches whose outcome (verdict, flip, fall) differs between radii */
     int robust;   /* all three ran and changed == 0 */
 } tippe_launch_radius_sensitivity;

@@ -29,9 +29,13 @@ static int check_parse(hands_args *a, int argc, char **argv)
         {.name = "plot", .kind = TIPPE_CLI_STRING, .value = &a->plot, .arg = "FILE",
          .help = "theta, spin and contact speed against time and the (phi_dot, theta, n)\n"
                  "path, as tippe simulate draws them; .png, .svg or .pdf"},
+        {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.patch_radius_span,
+         .arg = "F", .min = 1.01, .max = 10,
+         .def = "the design's tolerance contact.patch_radius, else 2",
+         .help = "patch law: the radius sensitivity's reruns at a/F and a F"},
         {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,
          .value = &a->no_radius_sensitivity,
-         .help = "patch law: skip the launch's reruns at 0.5x and 2x the patch radius\n"
+         .help = "patch law: skip the launch's reruns at 1/F and F times the patch radius\n"
                  "(by default the outcome is given at all three, docs/dynamics.md)"},
         {NULL},
     };
@@ -174,14 +178,15 @@ static void print_verdict_line(const tippe_launch_record *rec)
     }
 }
 
-/* The outcome at 0.5x, 1x and 2x the patch radius (tippe_launch_radius_sensitivity_initial). */
+/* The outcome at 1/F, 1 and F times the patch radius (tippe_launch_radius_sensitivity_initial). */
 static void print_radius_sensitivity(const tippe_launch_radius_sensitivity *s)
 {
     printf("radius     the patch radius is uncertain (surface, table, wear): the same launch at\n");
     for (int i = 0; i < TIPPE_LAUNCH_RADIUS_RUNS; i++) {
         const tippe_launch_radius_run *r = &s->run[i];
-        printf("           %-4s %.4g mm: ", i == 0 ? "0.5x" : i == 1 ? "1x" : "2x",
-               r->radius_m * 1e3);
+        char factor[16];
+        snprintf(factor, sizeof factor, "%.3gx", r->factor);
+        printf("           %-5s %.4g mm: ", factor, r->radius_m * 1e3);
         if (!r->ran) {
             printf("not run (wider than half the ball's radius)\n");
             continue;
@@ -202,8 +207,8 @@ static void print_radius_sensitivity(const tippe_launch_radius_sensitivity *s)
     else if (s->changed == 0) /* a radius was not run */
         printf("           robustness to the radius not known: a radius was not run\n");
     else
-        printf("           NOT robust to the radius: the outcome changes between 0.5x and 2x "
-               "the radius\n");
+        printf("           NOT robust to the radius: the outcome changes between %.3gx and %.3gx "
+               "the radius\n", s->run[0].factor, s->run[2].factor);
 }
 
 static void check_text(const hands_args *a, const tippe_sweep_check *r)
@@ -303,7 +308,7 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
                rec->jellett_rel_drift, rec->energy_rel_error, rec->rhs_evals);
 }
 
-/* Under the patch law (unless --no-radius-sensitivity): the launch again at 0.5x and 2x
+/* Under the patch law (unless --no-radius-sensitivity): the launch again at 1/F and F times
  * its patch radius. 0 and *done 1, or the status after saying why. */
 static int check_radius(const hands_args *a, const tippe_sweep_check *r,
                         tippe_launch_radius_sensitivity *s, int *done)

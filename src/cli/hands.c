@@ -246,7 +246,11 @@ int hands_friction_apply(const char *verb, hands_friction *f, tippe_launch_optio
 int hands_friction_patch(const hands_friction *f, tippe_launch_options *o, const tippe_design *d,
                          tippe_error *err)
 {
-    if (!has_law(f, TIPPE_FRICTION_PATCH) || o->patch_radius_m > 0)
+    if (!has_law(f, TIPPE_FRICTION_PATCH))
+        return TIPPE_OK;
+    if (!(o->patch_radius_span > 0)) /* --radius-span, else the design's tolerance */
+        o->patch_radius_span = tippe_design_patch_radius_span(d);
+    if (o->patch_radius_m > 0)
         return TIPPE_OK;
     return tippe_launch_patch_modulus(d, f->table, &o->patch_E_star_pa, err);
 }

@@ -146,10 +146,14 @@ static int launch_parse(hands_args *a, int argc, char **argv)
          .help = "one row per launch: initial state, verdict, t_s, theta_final,\n"
                  "Jellett drift, theory's prediction, how it was decided (barrier gap,\n"
                  "margin) and the flip time (- for stdout)"},
+        {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.patch_radius_span,
+         .arg = "F", .min = 1.01, .max = 10,
+         .def = "the design's tolerance contact.patch_radius, else 2",
+         .help = "patch law: the radius sensitivity's reruns at a/F and a F"},
         {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,
          .value = &a->no_radius_sensitivity,
-         .help = "patch law: skip the reruns of the same launches at 0.5x and 2x the\n"
-                 "patch radius (by default the summary is given at all three, which\n"
+         .help = "patch law: skip the reruns of the same launches at 1/F and F times\n"
+                 "the patch radius (by default the summary is given at all three, which\n"
                  "triples the work; docs/dynamics.md)"},
         {NULL},
     };
@@ -200,15 +204,16 @@ static void launch_json(const hands_args *a, const tippe_design *d, const tippe_
     *rc = tippe_cli_print_json(a->verb, o);
 }
 
-/* The summary at 0.5x, 1x and 2x the patch radius, the same draws at each. */
+/* The summary at 1/F, 1 and F times the patch radius, the same draws at each. */
 static void print_radius_sensitivity(const tippe_launch_radius_sensitivity *s, long n)
 {
     printf("radius     the patch radius is uncertain (surface, table, wear): the same %ld "
            "launches at\n", n);
     for (int i = 0; i < TIPPE_LAUNCH_RADIUS_RUNS; i++) {
         const tippe_launch_radius_run *r = &s->run[i];
-        printf("           %-4s %.4g mm: ", i == 0 ? "0.5x" : i == 1 ? "1x" : "2x",
-               r->radius_m * 1e3);
+        char factor[16];
+        snprintf(factor, sizeof factor, "%.3gx", r->factor);
+        printf("           %-5s %.4g mm: ", factor, r->radius_m * 1e3);
         if (!r->ran) {
             printf("not run (wider than half the ball's radius)\n");
             continue;
@@ -234,7 +239,8 @@ static void print_radius_sensitivity(const tippe_launch_radius_sensitivity *s, l
         printf("           robustness to the radius not known: a radius was not run\n");
     else
         printf("           NOT robust to the radius: %ld of %ld launches change verdict, flip or "
-               "fall back between 0.5x and 2x the radius\n", s->changed, n);
+               "fall back between %.3gx and %.3gx the radius\n", s->changed, n, s->run[0].factor,
+               s->run[2].factor);
 }
 
 static void launch_text(const hands_args *a, const tippe_design *d, const tippe_top *top,
@@ -268,7 +274,7 @@ static void launch_text(const hands_args *a, const tippe_design *d, const tippe_
         printf("csv        %s (%ld launches)\n", a->csv, a->n);
 }
 
-/* Under the patch law (unless --no-radius-sensitivity): the same launches at 0.5x and 2x
+/* Under the patch law (unless --no-radius-sensitivity): the same launches at 1/F and F times
  * the patch radius into rec + n and rec + 2n (every rank), summarised beside the plain run
  * rec on rank 0 into *s. */
 static int launch_radius_runs(const hands_args *a, const tippe_top *top,
@@ -280,8 +286,8 @@ static int launch_radius_runs(const hands_args *a, const tippe_top *top,
     double radius_m[TIPPE_LAUNCH_RADIUS_RUNS];
     for (int i = 0; i < TIPPE_LAUNCH_RADIUS_RUNS; i++) {
         tippe_launch_options oi;
-        const int beyond = tippe_launch_radius_options(top, &a->o, tippe_launch_radius_factor(i),
-                                                       &oi);
+        const int beyond = tippe_launch_radius_options(
+            top, &a->o, tippe_launch_radius_factor(&a->o, i), &oi);
         radius_m[i] = oi.patch_radius_m;
         tippe_launch_record *ri = i == 1 ? rec : rec + (i == 0 ? 1 : 2) * a->n;
         ptr[i] = beyond ? NULL : ri;

@@ -450,7 +450,7 @@ int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tipp
     if (!check) /* a derived design (a field moved by a tolerance) needs no tolerances */
         return TIPPE_OK;
     return tippe_tolerances_read(c, cJSON_GetObjectItemCaseSensitive(root, "tolerances"), d,
-                                 &d->tolerances, &d->n_tolerances);
+                                 &d->tolerances, &d->n_tolerances, &d->patch_radius_span);
 }
 
 /* Keeps the overrides a design was built with (src/design/design.c, below), so that

@@ -393,6 +393,11 @@ int tippe_design_forms_sphere(const tippe_design *d, int i)
 
 int tippe_design_n_tolerances(const tippe_design *d) { return d->n_tolerances; }
 
+double tippe_design_patch_radius_span(const tippe_design *d)
+{
+    return d->patch_radius_span > 1.0 ? d->patch_radius_span : TIPPE_TOL_PATCH_RADIUS_FACTOR;
+}
+
 const tippe_tolerance *tippe_design_tolerance(const tippe_design *d, int i)
 {
     return i >= 0 && i < d->n_tolerances ? &d->tolerances[i] : NULL;

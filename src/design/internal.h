@@ -120,6 +120,7 @@ struct tippe_design {
     int n_overrides;
     tippe_tolerance *tolerances; /* the tolerances block and the defaults */
     int n_tolerances;
+    double patch_radius_span;    /* the block's contact.patch_radius, or 0: the default */
     /* Set only while a tippe_design_source builds it: the source's parsed
      * materials table (not owned) and whether the travel is the physical one. */
     const struct tippe_design_source *source;

@@ -218,11 +218,28 @@ static int read_amount(const tippe_json_reader *c, const cJSON *item, const char
     return TIPPE_OK;
 }
 
+/* The patch radius's tolerance: a factor F, a in [a/F, a F] (tippe/design.h). */
+static int read_patch_span(const tippe_json_reader *c, const cJSON *item, const char *path,
+                           double *span)
+{
+    if (!cJSON_IsNumber(item))
+        return tippe_json_wrong_type(c, path, "a number F (the radius lies in [a/F, a F])",
+                                     item);
+    const double f = item->valuedouble;
+    if (!(f > 1.0 && f <= 10.0))
+        return tippe_json_fail(c, path, "factor %g is outside (1, 10] (the radius lies in "
+                                        "[a/F, a F]; the default is %g)",
+                               f, TIPPE_TOL_PATCH_RADIUS_FACTOR);
+    *span = f;
+    return TIPPE_OK;
+}
+
 int tippe_tolerances_read(const tippe_json_reader *c, const cJSON *block, const tippe_design *d,
-                          tippe_tolerance **out, int *n_out)
+                          tippe_tolerance **out, int *n_out, double *patch_radius_span)
 {
     *out = NULL;
     *n_out = 0;
+    *patch_radius_span = 0.0;
     tol_list l = {calloc(TIPPE_TOLERANCE_MAX, sizeof(tippe_tolerance)), 0};
     if (!l.v)
         return tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
@@ -236,6 +253,11 @@ int tippe_tolerances_read(const tippe_json_reader *c, const cJSON *block, const 
     for (const cJSON *it = block ? block->child : NULL; it && !rc; it = it->next) {
         char path[TIPPE_TOLERANCE_FIELD_LEN + 20], canon[TIPPE_TOLERANCE_FIELD_LEN];
         snprintf(path, sizeof path, "tolerances[\"%s\"]", it->string);
+        if (!strcmp(it->string, TIPPE_TOL_PATCH_RADIUS_KEY)) {
+            if ((rc = read_patch_span(c, it, path, patch_radius_span)))
+                break;
+            continue;
+        }
         double value = 0, pm = 0, pct = 0;
         const char *unit = "mm";
         if ((rc = resolve(c, d, it->string, path, canon, sizeof canon, &value, &unit)) ||

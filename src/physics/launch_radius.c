@@ -8,13 +8,18 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* 0.5x and 2x: the span the issue asks for (surface finish, the table, wear move the
- * radius by about that much; docs/contact-patch.md). */
-static const double factors[TIPPE_LAUNCH_RADIUS_RUNS] = {0.5, 1.0, 2.0};
-
-double tippe_launch_radius_factor(int i)
+/* The span F of the runs a/F, a, a F: the options' (the design's tolerance
+ * contact.patch_radius, or --radius-span), else 2, the span the issue asks for (surface
+ * finish, the table, wear move the radius by about that much; docs/contact-patch.md). */
+double tippe_launch_radius_span(const tippe_launch_options *o)
 {
-    return i >= 0 && i < TIPPE_LAUNCH_RADIUS_RUNS ? factors[i] : NAN;
+    return o->patch_radius_span > 1.0 ? o->patch_radius_span : TIPPE_LAUNCH_RADIUS_SPAN;
+}
+
+double tippe_launch_radius_factor(const tippe_launch_options *o, int i)
+{
+    const double span = tippe_launch_radius_span(o);
+    return i == 0 ? 1.0 / span : i == 1 ? 1.0 : i == 2 ? span : NAN;
 }
 
 double tippe_launch_patch_radius(const tippe_top *top, const tippe_launch_options *o)
@@ -67,7 +72,7 @@ int tippe_launch_radius_summary(const tippe_launch_record *const rec[TIPPE_LAUNC
     int all_ran = 1;
     for (int i = 0; i < TIPPE_LAUNCH_RADIUS_RUNS; i++) {
         tippe_launch_radius_run *r = &out->run[i];
-        r->factor = factors[i];
+        r->factor = radius_m[1] > 0 ? radius_m[i] / radius_m[1] : NAN;
         r->radius_m = radius_m[i];
         r->median_t_flip_s = r->median_t_fall_s = NAN;
         r->ran = rec[i] != NULL;
@@ -124,7 +129,8 @@ int tippe_launch_radius_sensitivity_initial(const tippe_top *top, const tippe_la
     for (int i = 0; i < TIPPE_LAUNCH_RADIUS_RUNS; i++) {
         tippe_launch_options oi;
         ptr[i] = NULL;
-        const int beyond = tippe_launch_radius_options(top, o, factors[i], &oi);
+        const int beyond = tippe_launch_radius_options(top, o, tippe_launch_radius_factor(o, i),
+                                                       &oi);
         radius_m[i] = oi.patch_radius_m;
         if (beyond)
             continue;

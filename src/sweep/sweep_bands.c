@@ -275,6 +275,11 @@ void tippe_sweep_print_bands(FILE *out, const tippe_design *d, const tippe_sweep
         fprintf(out, "  %-34s %9.4g +/- %-8.3g %-7s%s  %s\n", t->field, t->value, t->plus_minus,
                 t->unit, pct, t->rule);
     }
+    /* the zones do not depend on friction: listed, not combined (tippe/design.h) */
+    fprintf(out, "  %-34s within a factor %g (patch friction's radius: check and launch rerun "
+                 "at a/%g and %g a; moves no zone)\n",
+            TIPPE_TOL_PATCH_RADIUS_KEY, tippe_design_patch_radius_span(d),
+            tippe_design_patch_radius_span(d), tippe_design_patch_radius_span(d));
     fprintf(out, "\n%-18s %10s %12s %12s  %s\n", "boundary", "Z2 (mm)", "band +/- mm",
             "worst +/- mm", "moved most by");
     for (int k = 0; k < b->n; k++) {
@@ -355,6 +360,8 @@ int tippe_sweep_json_add_bands(cJSON *o, const tippe_design *d, const tippe_swee
         put(to, "unit", cJSON_CreateString(t->unit), &ok);
         put(to, "rule", cJSON_CreateString(t->rule), &ok);
     }
+    /* a factor on the patch radius, for launches only: moves no zone (tippe/design.h) */
+    put(o, "patch_radius_factor", num(tippe_design_patch_radius_span(d)), &ok);
     cJSON *bands = put(o, "bands", cJSON_CreateArray(), &ok);
     for (int k = 0; bands && k < b->n; k++) {
         const tippe_sweep_band *bd = &b->bands[k];
