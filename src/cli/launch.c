@@ -43,7 +43,7 @@ static int write_launch_csv(const char *path, const tippe_launch_record *r, long
     fprintf(f, "index,draw,spin_rad_s,tilt_rad,theta_dot_rad_s,phi_dot_rad_s,U_m_s,"
                "V_m_s,verdict,t_s,theta_final_rad,spin_final_rad_s,J0_kg_m3_s,jellett_rel_drift,"
                "rhs_evals,theory,theory_hang_theta_rad,agrees,decided_by,barrier_gap_J,margin_J,"
-               "t_flip_s,cap_time_s,cap_first_s\n");
+               "t_flip_s,cap_time_s,cap_first_s,t_fall_s,inverted_time_s\n");
     for (long i = 0; i < n; i++) {
         const tippe_launch_record *x = &r[i];
         fprintf(f, "%ld,%ld,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%s,%.10g,", x->index, x->draw,
@@ -66,6 +66,11 @@ static int write_launch_csv(const char *path, const tippe_launch_record *r, long
         csv_number(f, "%.10g", x->t_flip_s);
         fprintf(f, ",%.10g,", x->cap_time_s); /* on a hole's rim at a pole (issue 25.7) */
         csv_number(f, "%.10g", x->cap_first_s);
+        fputc(',', f);
+        /* back below pi/2 after the flip, and the model time spent above it */
+        csv_number(f, "%.10g", x->t_fall_s);
+        fputc(',', f);
+        csv_number(f, "%.10g", x->inverted_time_s);
         fputc('\n', f);
     }
     return tippe_report_commit(&rf, err);
