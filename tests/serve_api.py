@@ -132,6 +132,17 @@ with Server(tippe) as srv:
         check(same(sheet, built, skip=("file",)) == [],
               "build m12-setscrew: its sheet (JSON) is tippe build's")
 
+    # ---- the sheet's verdict: tippe build's, computed without files
+    st, _, v = srv.post("/api/verdict", {"design": "m12-setscrew"})
+    check(st == 200 and v["verdict"] == built["verdict"] and
+          v["settable"] == built["settable"] and
+          v["min_setting_mm"] == built["min_setting_mm"] and
+          [a for a in v["advice"]] == [a["advice"] for a in built.get("to_make_it_settable", [])],
+          "verdict m12-setscrew: '%s', its settable widths and advice as tippe build's" %
+          (v.get("verdict") if st == 200 else st))
+    st, _, e = srv.post("/api/verdict", {"design": "m12-setscrew", "z2_mm": 3})
+    check(st == 400 and e.get("field") == "z2_mm", "verdict: an unknown field is a 400 naming it")
+
     # ---- a film
     for fmt, magic in (("webm", b"\x1a\x45\xdf\xa3"), ("gif", b"GIF8")):
         st, hdrs, data = srv.post("/api/animate", {"design": "m12-setscrew", "z2_mm": 10,

@@ -446,12 +446,81 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
     tippe_design_free(d);
 }
 
+/* POST /api/verdict {design}: the build sheet's verdict (tippe build's: 3-in-1 and
+ * settable, on paper only, or not 3-in-1), so that the page says "3-in-1" only where
+ * each behaviour can be set by hand, with the sentence that says why and the changes
+ * a maker can buy. The sheet is computed and not written (no files). */
+static void api_verdict(serve_server *s, const cJSON *req, serve_response *out)
+{
+    static const char *const keys[] = {"design", NULL};
+    if (tippe_serve_request_keys(req, keys, out))
+        return;
+    tippe_design *d = tippe_serve_request_design(s, req, "design", "design", out);
+    if (!d)
+        return;
+    tippe_build_options o;
+    tippe_build_options_default(&o);
+    char cat[4096 + 32];
+    snprintf(cat, sizeof cat, "%s/catalogue.json", s->designs_dir);
+    o.catalogue = cat;
+    tippe_build_sheet *sheet = malloc(sizeof *sheet);
+    tippe_error err = {0};
+    int rc = sheet ? tippe_build_compute(d, &o, sheet, &err)
+                   : tippe_error_set(&err, TIPPE_ECOMPUTE, "out of memory");
+    tippe_design_free(d);
+    if (rc) {
+        tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, "design", "%s", err.msg);
+        free(sheet);
+        return;
+    }
+    cJSON *o_json = cJSON_CreateObject();
+    char text[2048];
+    tippe_build_verdict_text(sheet, text, sizeof text);
+    cJSON *sets = cJSON_CreateArray(), *advice = cJSON_CreateArray();
+    int ok = o_json && sets && advice &&
+             cJSON_AddStringToObject(o_json, "verdict", tippe_build_verdict(sheet)) &&
+             cJSON_AddBoolToObject(o_json, "three_in_one", sheet->three_in_one) &&
+             cJSON_AddBoolToObject(o_json, "settable", sheet->settable) &&
+             cJSON_AddStringToObject(o_json, "text", text) &&
+             cJSON_AddNumberToObject(o_json, "min_setting_mm", sheet->min_setting_mm) &&
+             cJSON_AddStringToObject(o_json, "min_setting_rule", sheet->min_setting_rule);
+    for (int f = 0; ok && f < 3; f++) {
+        const tippe_build_setting *x = &sheet->set[f];
+        cJSON *e = cJSON_CreateObject();
+        ok = e && cJSON_AddItemToArray(sets, e) &&
+             cJSON_AddStringToObject(e, "behaviour", tippe_build_behaviour(f)) &&
+             cJSON_AddBoolToObject(e, "reachable", x->reachable) &&
+             cJSON_AddNumberToObject(e, "robust_width_mm", x->robust_width_mm) &&
+             cJSON_AddBoolToObject(e, "settable", x->settable);
+    }
+    for (int k = 0; ok && !sheet->settable && k < sheet->n_advice; k++)
+        ok = cJSON_AddItemToArray(advice, cJSON_CreateString(sheet->advice[k].text));
+    free(sheet);
+    if (ok) {
+        ok = cJSON_AddItemToObject(o_json, "settings", sets);
+        sets = NULL;
+    }
+    if (ok) {
+        ok = cJSON_AddItemToObject(o_json, "advice", advice);
+        advice = NULL;
+    }
+    cJSON_Delete(sets);
+    cJSON_Delete(advice);
+    if (!ok) {
+        cJSON_Delete(o_json);
+        tippe_serve_respond_error(out, 503, NULL, "out of memory");
+        return;
+    }
+    tippe_serve_respond_json(out, 200, o_json);
+}
+
 const serve_route tippe_serve_routes[] = {
     {"/api/sweep", 1, 0, api_sweep},
     {"/api/eval", 1, 0, api_eval},
     {"/api/compare", 1, 0, api_compare},
     {"/api/check", 1, 0, api_check},
     {"/api/build", 1, 1, api_build},
+    {"/api/verdict", 1, 0, api_verdict},
     {"/api/animate", 1, 1, api_animate},
     {NULL, 0, 0, NULL},
 };

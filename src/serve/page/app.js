@@ -15,6 +15,8 @@ const state = {
   design: null,       // the design as edited (a design file's JSON)
   name: '',           // the shipped design it came from, if any
   sweep: null,        // the last valid sweep
+  verdict: null,      // the build sheet's verdict of that sweep's design (/api/verdict)
+  vseq: 0,            // the latest valid sweep: a verdict for an older one is dropped
   pinned: null,       // {design, sweep, title}
   materials: [],
   seq: 0,             // the latest request sent: older answers are dropped
@@ -224,15 +226,48 @@ async function refresh() {
   if (!r.ok) { showFieldError(r.json && r.json.field, (r.json && r.json.error) || ('HTTP ' + r.status)); return; }
   showFieldError(null, null);
   state.sweep = r.json;
+  state.verdict = null;
   drawAll();
   if (state.z2 !== null) evalAt(state.z2);
+  sheetVerdict(++state.vseq, state.design);
+}
+
+// The build sheet's verdict of a valid design: "3-in-1" only where each behaviour can be
+// set by hand (tippe build's rule), its reason and the changes one can buy. A bad edit
+// after it does not drop it: it belongs to the last valid design, still on screen.
+async function sheetVerdict(vseq, design) {
+  let r;
+  try { r = await api('/api/verdict', { design }); }
+  catch (e) { if (vseq === state.vseq) $('verdict-text').textContent = 'the build sheet\'s verdict: the server does not answer'; return; }
+  if (vseq !== state.vseq) return;
+  if (!r.ok) { $('verdict-text').textContent = 'the build sheet\'s verdict: ' + ((r.json && r.json.error) || ('HTTP ' + r.status)); return; }
+  state.verdict = r.json;
+  drawVerdict();
+}
+
+function drawVerdict() {
+  const s = state.sweep, b = state.verdict, v = $('verdict'), t = $('verdict-text');
+  t.textContent = '';
+  if (!b) { // the sweep's reachability alone, until the sheet's verdict arrives
+    v.textContent = '3-in-1 on paper: ' + (s.three_in_one ? 'yes' : 'no');
+    v.className = 'verdict ' + (s.three_in_one ? 'paper' : 'no');
+    if (s.three_in_one) t.textContent = 'checking whether each behaviour can be set by hand…';
+    return;
+  }
+  v.textContent = b.verdict;
+  v.className = 'verdict ' + (b.settable ? 'yes' : b.three_in_one ? 'paper' : 'no');
+  t.appendChild(document.createTextNode(b.text));
+  if (b.advice.length) {
+    t.appendChild(document.createTextNode(' Changes one can buy or set:'));
+    const ul = document.createElement('ul');
+    for (const a of b.advice.slice(0, 3)) ul.appendChild(Object.assign(document.createElement('li'), { textContent: a }));
+    t.appendChild(ul);
+  }
 }
 
 function drawAll() {
   const s = state.sweep;
-  const v = $('verdict');
-  v.textContent = '3-in-1: ' + (s.three_in_one ? 'yes' : 'no');
-  v.className = 'verdict ' + (s.three_in_one ? 'yes' : 'no');
+  drawVerdict();
   $('narrowest').textContent = s.three_in_one
     ? `narrowest zone ${fmt(s.narrowest_zone_mm)} mm (${s.narrowest_zone_family}); robust ${fmt(s.robust_narrowest_zone_mm)} mm`
     : `widest zones: I ${fmt(s.zone_widths_mm.I)} mm, II ${fmt(s.zone_widths_mm.II)} mm, III ${fmt(s.zone_widths_mm.III)} mm`;
@@ -475,7 +510,7 @@ function drawPinned() {
   const head = t.insertRow();
   for (const h of ['', 'pinned', 'now', 'change']) head.appendChild(Object.assign(document.createElement('th'), { textContent: h }));
   const rows = [
-    ['3-in-1', p.sweep.three_in_one ? 'yes' : 'no', s.three_in_one ? 'yes' : 'no', ''],
+    ['3-in-1 on paper', p.sweep.three_in_one ? 'yes' : 'no', s.three_in_one ? 'yes' : 'no', ''],
     ['narrowest zone mm', p.sweep.narrowest_zone_mm, s.narrowest_zone_mm],
     ['robust narrowest mm', p.sweep.robust_narrowest_zone_mm, s.robust_narrowest_zone_mm],
   ];
