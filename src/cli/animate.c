@@ -273,8 +273,13 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
                 f->t_settled);
     tippe_cli_fprint_model_validity(out, &a->protrusion, a->z2_mm, "contact   ",
                                     "the verdict above is");
-    fprintf(out, "accuracy  %d samples at exact times, Jellett drift %.2g, made in %.3g s\n",
-           f->n_samples, r->jellett_rel_drift, elapsed_s);
+    if (isfinite(r->jellett_drift_time_s)) /* drilling moves J: no error measure */
+        fprintf(out, "accuracy  %d samples at exact times, J not conserved (drilling), made in "
+                     "%.3g s\n",
+                f->n_samples, elapsed_s);
+    else
+        fprintf(out, "accuracy  %d samples at exact times, Jellett drift %.2g, made in %.3g s\n",
+                f->n_samples, r->jellett_rel_drift, elapsed_s);
 }
 
 int tippe_cli_animate(int argc, char **argv)

@@ -270,9 +270,12 @@ static void launch_text(const hands_args *a, const tippe_design *d, const tippe_
                t->on_cap, t->n, a->o.cap_half_angle_rad[0] * 180 / M_PI,
                a->o.cap_half_angle_rad[1] * 180 / M_PI);
     print_theory_summary(t);
-    printf("accuracy   largest Jellett drift %.2g; %.3g RHS evaluations; %.2f s on %d "
+    char jellett[64] = "J not conserved (drilling)";
+    if (a->o.law != TIPPE_FRICTION_PATCH || !(a->o.mu_c > 0)) /* nothing drills */
+        snprintf(jellett, sizeof jellett, "largest Jellett drift %.2g", t->max_jellett_rel_drift);
+    printf("accuracy   %s; %.3g RHS evaluations; %.2f s on %d "
            "thread%s x %d rank%s (%.1f launches/s)\n",
-           t->max_jellett_rel_drift, t->rhs_evals, elapsed, omp_get_max_threads(),
+           jellett, t->rhs_evals, elapsed, omp_get_max_threads(),
            omp_get_max_threads() > 1 ? "s" : "", hands_mpi_size(),
            hands_mpi_size() > 1 ? "s" : "", (double)a->n / elapsed);
     if (a->csv)

@@ -293,9 +293,13 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
             printf("%s %s %ld", v ? "," : "", hands_verdict_names[v], all.counts[v]);
         printf(" of %ld; %ld of %ld settled launches agree with theory\n", g->total, all.agree,
                all.comparable);
-        printf("accuracy   largest Jellett drift %.2g; %.2f s on %d thread%s x %d rank%s "
+        char jellett[64] = "J not conserved (drilling)";
+        if (a->o.law != TIPPE_FRICTION_PATCH || !(a->o.mu_c > 0)) /* nothing drills */
+            snprintf(jellett, sizeof jellett, "largest Jellett drift %.2g",
+                     all.max_jellett_rel_drift);
+        printf("accuracy   %s; %.2f s on %d thread%s x %d rank%s "
                "(%.1f launches/s)\n",
-               all.max_jellett_rel_drift, elapsed, omp_get_max_threads(),
+               jellett, elapsed, omp_get_max_threads(),
                omp_get_max_threads() > 1 ? "s" : "", hands_mpi_size(),
                hands_mpi_size() > 1 ? "s" : "", (double)g->total / elapsed);
     }
