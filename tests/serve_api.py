@@ -97,14 +97,19 @@ with Server(tippe) as srv:
               (name, z2, ck.get("verdict"), "" if not bad else " except " + ", ".join(bad[:4])))
     print("     (%d designs in %.1f s)" % (len(names), time.time() - t0))
 
-    # ---- the patch law: as tippe check --friction patch (Hertz on the table, or a radius)
+    # ---- the patch law: as tippe check --friction patch (Hertz on the table, or a radius),
+    # with the radius sensitivity as the command gives it, or without ("off")
     for extra, flags in (({"table": "glass"}, ["--table", "glass"]),
-                         ({"patch_mm": 0.3}, ["--patch-mm", "0.3"])):
+                         ({"patch_mm": 0.3}, ["--patch-mm", "0.3"]),
+                         ({"radius_sensitivity": "off"}, ["--no-radius-sensitivity"])):
         req = dict({"design": "m12-setscrew", "z2_mm": 5, "spin_rev_s": 15, "friction": "patch"},
                    **extra)
         st, _, ck = srv.post("/api/check", req)
         ref = cli("check", "designs/m12-setscrew.json", "--z2", "5", "--spin", "15rev/s",
-                  "--friction", "patch", "--no-radius-sensitivity", "--t-end", "600", *flags)
+                  "--friction", "patch", "--t-end", "600", *flags)
+        if st == 200 and "radius_sensitivity" not in extra:
+            check(ck.get("radius_sensitivity") and len(ck["radius_sensitivity"]["runs"]) == 3,
+                  "check, patch law %s: the radius sensitivity's three runs" % extra)
         bad = same(ck, ref) if st == 200 else ["status %d: %s" % (st, ck)]
         check(not bad, "check, patch law %s: as tippe check --json%s" %
               (extra, "" if not bad else " except " + ", ".join(map(str, bad[:4]))))

@@ -158,6 +158,27 @@ with Server(tippe) as srv:
         check(len(driver.find_elements(By.CSS_SELECTOR, "#theta-plot svg path")) == 1,
               "theta(t) is drawn")
 
+        # the same launch under the patch law: the verdict with its radius sensitivity
+        from selenium.webdriver.support.ui import Select
+        Select(driver.find_element(By.ID, "friction")).select_by_value("patch:laminate")
+        driver.execute_script("document.getElementById('check-result').removeAttribute("
+                              "'data-verdict')")
+        driver.find_element(By.ID, "check").click()
+        wait.until(lambda d: d.find_elements(By.ID, "radius-result"))
+        shown = driver.find_element(By.ID, "radius-result").text
+        clip = cli_json("check", "designs/m12-setscrew-printed.json", "--set",
+                        "parts.body.print.infill=0.4", "--z2", repr(z2_clicked), "--spin",
+                        "15rev/s", "--friction", "patch", "--table", "laminate")
+        rs = clip["radius_sensitivity"]
+        words = [x["verdict"] for x in rs["runs"] if x["ran"]]
+        check(all(w in shown for w in words) and
+              (("NOT robust" in shown) == (not rs["robust"] and rs["changed"] > 0)) and
+              "0.5×" in shown and "2×" in shown,
+              "patch law: the page gives the verdict at 0.5x, 1x and 2x the radius as tippe "
+              "check: '%s'" % shown[:160])
+        driver.save_screenshot(os.path.join(artefacts, "3b-check-patch.png"))
+        Select(driver.find_element(By.ID, "friction")).select_by_value("viscous")
+
         # a film of that launch
         driver.find_element(By.ID, "film").click()
         wait.until(lambda d: d.find_elements(By.CSS_SELECTOR, "#film-box video") or

@@ -208,7 +208,10 @@ static int patch_request(const cJSON *req, const tippe_design *d, tippe_launch_o
                          serve_response *out)
 {
     static const char *const tables[] = {"laminate", "glass", "wood", "steel", NULL};
-    if (o->law != TIPPE_FRICTION_PATCH || o->patch_radius_m > 0)
+    if (o->law != TIPPE_FRICTION_PATCH)
+        return 0;
+    o->patch_radius_span = tippe_design_patch_radius_span(d); /* the design's tolerance */
+    if (o->patch_radius_m > 0)
         return 0;
     const int t = tippe_serve_request_word(req, "table", tables, 0, out);
     if (t < 0)
@@ -234,19 +237,28 @@ static tippe_design *launch_design(serve_server *s, const cJSON *req, tippe_laun
     return d;
 }
 
-/* Samples of theta(t) a check answer carries for its plot. */
+/* Samples of theta(t) a check answer carries for its plot, and how far in model time:
+ * a patch-law top's fall back comes a minute or two after its flip (docs/dynamics.md). */
 enum { THETA_SAMPLES = 301 };
+#define THETA_MAX_S 60.0
+#define THETA_MAX_PATCH_S 180.0
 
-/* POST /api/check {design, z2_mm, spin_rev_s | spin_rad_s, friction}: tippe
- * check --json, and theta_samples {t_s, theta_rad} over the launch (to past
- * its flip, or its decision). */
+/* POST /api/check {design, z2_mm, spin_rev_s | spin_rad_s, friction, radius_sensitivity?}:
+ * tippe check --json, and theta_samples {t_s, theta_rad} over the launch (to past its
+ * flip, or its decision). Under the patch law, as the command, the launch again at 1/F and
+ * F times the patch radius (radius_sensitivity; "off" skips it). */
 static void api_check(serve_server *s, const cJSON *req, serve_response *out)
 {
-    static const char *const keys[] = {"design",   "z2_mm", "spin_rev_s", "spin_rad_s",
-                                       "friction", "patch_mm", "table",    NULL};
+    static const char *const keys[] = {"design",   "z2_mm",    "spin_rev_s",
+                                       "spin_rad_s", "friction", "patch_mm",
+                                       "table",    "radius_sensitivity", NULL};
+    static const char *const on_off[] = {"on", "off", NULL};
     double z2 = 0, spin = 0;
     tippe_launch_options o;
     if (tippe_serve_request_keys(req, keys, out) || launch_request(req, &z2, &spin, &o, out))
+        return;
+    const int sensitivity = tippe_serve_request_word(req, "radius_sensitivity", on_off, 0, out);
+    if (sensitivity < 0)
         return;
     tippe_design *d = launch_design(s, req, &o, out);
     if (!d)
@@ -261,10 +273,25 @@ static void api_check(serve_server *s, const cJSON *req, serve_response *out)
         tippe_design_free(d);
         return;
     }
-    /* theta(t) to half as far again past the flip, or to the decision */
-    const double flip = c.rec.t_flip_s;
+    if (o.law == TIPPE_FRICTION_PATCH && sensitivity == 0) {
+        /* the radius is uncertain: the verdict at 1/F and F times it (tippe check's) */
+        tippe_launch_radius_sensitivity sens;
+        if (tippe_launch_radius_sensitivity_initial(&c.top, &o, &c.ic, &c.rec, &sens, &err)) {
+            cJSON_Delete(j);
+            tippe_serve_respond_error(out, 500, NULL, "%s", err.msg);
+            tippe_design_free(d);
+            return;
+        }
+        if (j)
+            cJSON_AddItemToObject(j, "radius_sensitivity", tippe_launch_radius_json(&sens, 1));
+    }
+    /* theta(t) to half as far again past the flip, or to the decision; past the fall back
+     * of a patch-law top too (the end of its story), within a longer bound */
+    const double flip = c.rec.t_flip_s, fall = c.rec.t_fall_s;
     double t_end = isfinite(flip) ? fmax(1.5 * flip, flip + 1.0) : fmax(c.rec.t_s, 2.0);
-    t_end = fmin(t_end, 60.0);
+    if (isfinite(fall))
+        t_end = fmax(t_end, 1.2 * fall);
+    t_end = fmin(t_end, o.law == TIPPE_FRICTION_PATCH ? THETA_MAX_PATCH_S : THETA_MAX_S);
     double t[THETA_SAMPLES], th[THETA_SAMPLES];
     int n = 0;
     tippe_error terr = {0};

@@ -435,8 +435,21 @@ async function checkLaunch() {
   const r = await api('/api/check', launchRequest());
   if (!r.ok) { out.textContent = r.json ? r.json.error : 'HTTP ' + r.status; return; }
   const o = r.json;
-  out.textContent = `verdict: ${o.verdict}` + (o.t_flip_s !== null ? `, flips at t = ${fmt(o.t_flip_s, 2)} s` : '') +
-    ` (decided by ${o.decided_by} at ${fmt(o.t_s, 2)} s); theory: ${o.theory.prediction || '—'}`;
+  const fall = (x) => (x.t_fall_s !== null && x.t_fall_s !== undefined ? `, back below 90° at ${fmt(x.t_fall_s, 1)} s` : '');
+  out.textContent = `verdict: ${o.verdict}` + (o.t_flip_s !== null ? `, flips at t = ${fmt(o.t_flip_s, 2)} s` : '') + fall(o) +
+    (o.decided_by === 'observed' ? ` (observed at ${fmt(o.t_s, 0)} s, not proved: drilling changes J)`
+                                 : ` (decided by ${o.decided_by} at ${fmt(o.t_s, 2)} s)`) +
+    `; theory: ${o.theory.prediction || '—'}`;
+  const rs = o.radius_sensitivity;
+  if (rs) { // the patch law: the same launch at 1/F and F times the uncertain patch radius
+    const runs = rs.runs.map((x) => `${+x.factor.toPrecision(3)}× (${fmt(x.patch_mm, 3)} mm): ` +
+      (x.ran ? x.verdict + (x.t_flip_s !== null ? `, flips at ${fmt(x.t_flip_s, 2)} s` : ', no flip') + fall(x) : 'not run'));
+    const line = document.createElement('div');
+    line.id = 'radius-result';
+    line.textContent = 'patch radius ' + runs.join('; ') + ' — ' +
+      (rs.robust ? 'robust to the radius' : rs.changed ? 'NOT robust to the radius' : 'robustness not known (a radius was not run)');
+    out.appendChild(line);
+  }
   out.dataset.verdict = o.verdict;
   drawTheta(o.theta_samples);
 }
