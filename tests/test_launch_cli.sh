@@ -95,6 +95,34 @@ OMP_NUM_THREADS=1 "$tippe" map "$m12" --z2 10:15:2 --spin 5:20rev/s:2 -n 2 "${qu
     >"$tmp/map1.json"
 check "map: same JSON on 1 thread as on the default threads" cmp -s "$tmp/map.json" "$tmp/map1.json"
 
+# the patch law's map: every cell's launches again at 1/F and F times the radius
+# (issue 27), the changed launches counted per cell and in all
+"$tippe" map "$m12" --z2 10:15:2 --spin 10:20rev/s:2 -n 2 --t-end 20 --friction patch \
+    --radius-span 3 --json >"$tmp/mapp.json"
+check "map --friction patch exits 0" test $? -eq 0
+check "map --friction patch: the radius sensitivity at a/3, a, 3a, its counts per cell" \
+    python3 - "$tmp/mapp.json" <<'EOF'
+import json, sys
+o = json.load(open(sys.argv[1]))
+rs = o["radius_sensitivity"]
+f = [r["factor"] for r in rs["runs"]]
+# factors 1/3, 1, 3 to rounding (a ratio of two radii: 1e-15)
+assert all(abs(a - b) < 1e-15 for a, b in zip(f, [1 / 3, 1, 3])), f
+a = [r["patch_mm"] for r in rs["runs"]]
+assert abs(a[0] * 3 - a[1]) < 1e-15 * a[1] and abs(a[2] - 3 * a[1]) < 1e-15 * a[1], a
+assert all(r["ran"] for r in rs["runs"])
+per_cell = [c["radius_changed"] for c in o["cells"]]
+assert all(0 <= k <= 2 for k in per_cell)
+assert rs["changed"] == sum(per_cell) and rs["cells_changed"] == sum(k > 0 for k in per_cell)
+assert rs["robust"] == (rs["changed"] == 0)
+EOF
+"$tippe" map "$m12" --z2 10:15:2 --spin 10:20rev/s:2 -n 2 --t-end 20 --friction patch \
+    --no-radius-sensitivity --json >"$tmp/mapq.json"
+check "map --no-radius-sensitivity: null, and no per-cell count" python3 -c "
+import json, sys; o = json.load(open(sys.argv[1]))
+assert o['radius_sensitivity'] is None and all('radius_changed' not in c for c in o['cells'])
+" "$tmp/mapq.json"
+
 # --- check -----------------------------------------------------------------------
 "$tippe" check "$m12" --z2 10 --spin 100 --accuracy fast --json >"$tmp/c.json"
 check "check exits 0" test $? -eq 0

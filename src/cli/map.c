@@ -102,6 +102,15 @@ static int map_parse(hands_args *a, int argc, char **argv)
                  "tippe sweep and the thresholds n-, n*"},
         {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
          .help = "one row per cell: counts of each outcome, theory agreement"},
+        {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.patch_radius_span,
+         .arg = "F", .min = 1.01, .max = 10,
+         .def = "the design's tolerance contact.patch_radius, else 2",
+         .help = "patch law: the radius sensitivity's reruns at a/F and a F"},
+        {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,
+         .value = &a->no_radius_sensitivity,
+         .help = "patch law: skip the reruns of every cell's launches at 1/F and F times\n"
+                 "the patch radius (by default each cell says how many launches change\n"
+                 "outcome between them, which triples the work; docs/dynamics.md)"},
         {NULL},
     };
     hands_verb v = {
@@ -149,6 +158,13 @@ typedef struct {
     /* 1 where a part stands out of the sphere at z2[i]: the top rests on it
      * and the model does not apply (docs/design-format.md) */
     unsigned char *model_invalid;
+    /* the patch law's radius sensitivity: the same launches at 1/F ([0]) and F ([2])
+     * times the radius, the plain run being rec ([1]); NULL where not run */
+    int radius_runs;
+    tippe_launch_record *rec_radius[3];
+    double radius_m[3], factor[3];
+    long *cell_changed; /* launches of each cell whose outcome differs between radii */
+    long changed, cells_changed; /* their sum, and the cells with any */
 } map_grid;
 
 static void grid_free(map_grid *g)
@@ -161,6 +177,9 @@ static void grid_free(map_grid *g)
     free(g->cells);
     free(g->rec);
     free(g->model_invalid);
+    free(g->rec_radius[0]);
+    free(g->rec_radius[2]);
+    free(g->cell_changed);
 }
 
 static int grid_make(const hands_args *a, const tippe_design *d, map_grid *g)
@@ -200,6 +219,69 @@ static int grid_make(const hands_args *a, const tippe_design *d, map_grid *g)
         g->cell_tops[c] = g->tops[c / g->sn];
         g->cell_spin_rad_s[c] = 2 * M_PI * g->spin_rev_s[c % g->sn];
     }
+    g->radius_runs = a->o.law == TIPPE_FRICTION_PATCH && !a->no_radius_sensitivity;
+    if (g->radius_runs) {
+        g->cell_changed = calloc((size_t)g->n_cells, sizeof *g->cell_changed);
+        if (!g->cell_changed) {
+            fprintf(stderr, "tippe map: out of memory for %ld cells\n", g->n_cells);
+            return 1;
+        }
+        for (int i = 0; i < 3; i++) {
+            tippe_launch_options oi;
+            g->factor[i] = tippe_launch_radius_factor(&a->o, i);
+            /* the weight moves inside the ball: every cell's top has the mass and
+             * radius of the first, hence its Hertz radius */
+            const int beyond = tippe_launch_radius_options(&g->tops[0], &a->o, g->factor[i], &oi);
+            g->radius_m[i] = oi.patch_radius_m;
+            if (i == 1 || beyond)
+                continue;
+            g->rec_radius[i] = calloc((size_t)g->total, sizeof *g->rec_radius[i]);
+            if (!g->rec_radius[i]) {
+                fprintf(stderr, "tippe map: out of memory for %ld launches\n", 3 * g->total);
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+/* The patch law's reruns of every cell's launches at 1/F and F times the radius (every
+ * rank), into g->rec_radius. */
+static int grid_radius_runs(const hands_args *a, map_grid *g, tippe_progress *prog,
+                            tippe_error *err)
+{
+    tippe_launch_plan plan = {(int)g->n_cells, a->n, g->cell_tops, g->cell_spin_rad_s};
+    for (int i = 0; i < 3; i += 2) {
+        if (!g->rec_radius[i])
+            continue;
+        tippe_launch_options oi;
+        tippe_launch_radius_options(&g->tops[0], &a->o, g->factor[i], &oi);
+        int rc = hands_run_plan(&plan, &oi, (uint64_t)a->seed, g->rec_radius[i], prog, err);
+        if (rc)
+            return rc;
+    }
+    return 0;
+}
+
+/* Rank 0: each cell's launches compared across the radii (tippe_launch_radius_summary). */
+static int grid_radius_summary(const hands_args *a, map_grid *g, long *changed,
+                               long *cells_changed, tippe_error *err)
+{
+    *changed = *cells_changed = 0;
+    for (long c = 0; c < g->n_cells; c++) {
+        const tippe_launch_record *ptr[3];
+        for (int i = 0; i < 3; i++) {
+            const tippe_launch_record *base = i == 1 ? g->rec : g->rec_radius[i];
+            ptr[i] = base ? base + c * a->n : NULL;
+        }
+        tippe_launch_radius_sensitivity s;
+        int rc = tippe_launch_radius_summary(ptr, a->n, g->radius_m, &s, err);
+        if (rc)
+            return rc;
+        g->cell_changed[c] = s.changed;
+        *changed += s.changed;
+        *cells_changed += s.changed > 0;
+    }
     return 0;
 }
 
@@ -229,6 +311,7 @@ static cJSON *zones_json(const tippe_design *d, const map_grid *g)
 
 static cJSON *cells_json(const map_grid *g)
 {
+    /* per cell: radius_changed under the patch law's radius sensitivity, else absent */
     cJSON *arr = cJSON_CreateArray();
     for (int i = 0; arr && i < g->zn; i++)
         for (int j = 0; j < g->sn; j++) {
@@ -246,9 +329,39 @@ static cJSON *cells_json(const map_grid *g)
             cJSON_AddNumberToObject(co, "agree", (double)c->agree);
             cJSON_AddNumberToObject(co, "comparable", (double)c->comparable);
             cJSON_AddBoolToObject(co, "model_valid", !g->model_invalid[i]);
+            if (g->radius_runs)
+                cJSON_AddNumberToObject(co, "radius_changed",
+                                        (double)g->cell_changed[(long)i * g->sn + j]);
             cJSON_AddItemToArray(arr, co);
         }
     return arr;
+}
+
+/* {robust, changed, cells_changed, runs: [{factor, patch_mm, ran}]}; null when not run
+ * (another law, or --no-radius-sensitivity). */
+static cJSON *radius_json(const hands_args *a, const map_grid *g)
+{
+    (void)a;
+    if (!g->radius_runs)
+        return cJSON_CreateNull();
+    cJSON *o = cJSON_CreateObject();
+    cJSON *runs = o ? cJSON_AddArrayToObject(o, "runs") : NULL;
+    if (!runs)
+        return o;
+    for (int i = 0; i < 3; i++) {
+        cJSON *x = cJSON_CreateObject();
+        if (!x)
+            break;
+        cJSON_AddItemToArray(runs, x);
+        cJSON_AddNumberToObject(x, "factor", g->factor[i]);
+        cJSON_AddNumberToObject(x, "patch_mm", g->radius_m[i] * 1e3);
+        cJSON_AddBoolToObject(x, "ran", i == 1 || g->rec_radius[i] != NULL);
+    }
+    const int all_ran = g->rec_radius[0] && g->rec_radius[2];
+    cJSON_AddBoolToObject(o, "robust", all_ran && g->changed == 0);
+    cJSON_AddNumberToObject(o, "changed", (double)g->changed);
+    cJSON_AddNumberToObject(o, "cells_changed", (double)g->cells_changed);
+    return o;
 }
 
 static int map_json(const hands_args *a, const tippe_design *d, const map_grid *g)
@@ -267,8 +380,37 @@ static int map_json(const hands_args *a, const tippe_design *d, const map_grid *
         cJSON_AddItemToObject(o, "distribution", tippe_launch_options_json(&a->o, 1));
         cJSON_AddItemToObject(o, "zones", zones_json(d, g));
         cJSON_AddItemToObject(o, "cells", cells_json(g));
+        cJSON_AddItemToObject(o, "radius_sensitivity", radius_json(a, g));
     }
     return tippe_cli_print_json(a->verb, o);
+}
+
+/* The patch law's radius sensitivity over the map: how many launches change verdict,
+ * passage over pi/2 or fall back between 1/F and F times the radius, and where. */
+static void print_radius(const hands_args *a, const map_grid *g)
+{
+    printf("radius     the patch radius is uncertain (surface, table, wear): the same launches "
+           "at");
+    for (int i = 0; i < 3; i += 2)
+        printf("%s %.3gx (%.4g mm)%s", i ? " and" : "", g->factor[i], g->radius_m[i] * 1e3,
+               g->rec_radius[i] ? "" : ", not run: wider than half the ball's radius");
+    printf("\n");
+    if (!g->rec_radius[0] || !g->rec_radius[2])
+        printf("           robustness to the radius not known: a radius was not run; ");
+    else if (g->changed == 0)
+        printf("           robust to the radius: ");
+    else
+        printf("           NOT robust to the radius: ");
+    printf("%ld of %ld launches change verdict, flip or fall back, in %ld of %ld cells\n",
+           g->changed, g->total, g->cells_changed, g->n_cells);
+    if (g->changed)
+        for (int i = 0; i < g->zn; i++)
+            for (int j = 0; j < g->sn; j++) {
+                const long k = g->cell_changed[(long)i * g->sn + j];
+                if (k)
+                    printf("           Z2 %.4g mm, %.3g rev/s: %ld of %ld\n", g->z2[i],
+                           g->spin_rev_s[j], k, a->n);
+            }
 }
 
 static void map_text(const hands_args *a, const tippe_design *d, const map_grid *g,
@@ -301,8 +443,12 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
                "(%.1f launches/s)\n",
                jellett, elapsed, omp_get_max_threads(),
                omp_get_max_threads() > 1 ? "s" : "", hands_mpi_size(),
-               hands_mpi_size() > 1 ? "s" : "", (double)g->total / elapsed);
+               hands_mpi_size() > 1 ? "s" : "",
+               (double)g->total *
+                   (1 + (g->rec_radius[0] != NULL) + (g->rec_radius[2] != NULL)) / elapsed);
     }
+    if (g->radius_runs)
+        print_radius(a, g);
     if (a->csv)
         printf("csv        %s (%ld cells)\n", a->csv, g->n_cells);
     if (a->plot)
@@ -316,6 +462,8 @@ static int map_report(const hands_args *a, const tippe_design *d, map_grid *g, d
     int rc = 0;
     for (long c = 0; !rc && c < g->n_cells; c++)
         rc = tippe_launch_tally_records(g->rec + c * a->n, a->n, &g->cells[c], &err);
+    if (!rc && g->radius_runs)
+        rc = grid_radius_summary(a, g, &g->changed, &g->cells_changed, &err);
     tippe_launch_map m = {g->zn, g->sn, g->z2, g->spin_rev_s, g->cells, a->n};
     if (!rc && a->csv)
         rc = write_map_csv(a->csv, &m, g->tops, &err);
@@ -358,9 +506,12 @@ int tippe_cli_map(int argc, char **argv)
     if ((rc = hands_mpi_agree(rc)) == 0) {
         tippe_launch_plan plan = {(int)g.n_cells, a.n, g.cell_tops, g.cell_spin_rad_s};
         tippe_progress prog;
-        tippe_progress_start(&prog, stderr, "tippe map", g.total, tippe_cli_progress_mode());
+        const long work = g.total * (1 + (g.rec_radius[0] != NULL) + (g.rec_radius[2] != NULL));
+        tippe_progress_start(&prog, stderr, "tippe map", work, tippe_cli_progress_mode());
         const double t0 = tippe_cli_now_s();
         rc = hands_run_plan(&plan, &a.o, (uint64_t)a.seed, g.rec, &prog, &err);
+        if (!rc && g.radius_runs)
+            rc = grid_radius_runs(&a, &g, &prog, &err);
         const double elapsed = tippe_cli_now_s() - t0;
         tippe_progress_finish(&prog);
         if (hands_mpi_rank() != 0)
