@@ -238,7 +238,7 @@ static void test_threads_and_tally(void)
     /* Short runs: this checks reproducibility, not physics. */
     tippe_dynamics_accuracy_preset("fast", &o.accuracy, NULL);
     o.t_end = 40.0;
-    tippe_launch_plan plan = {2, 6, tops, spins};
+    tippe_launch_plan plan = {2, 6, tops, spins, NULL};
     const long n = tippe_launch_plan_total(&plan);
     tippe_launch_record *r1 = calloc((size_t)n, sizeof *r1), *r2 = calloc((size_t)n, sizeof *r2);
     run_with_threads(&plan, &o, 1, r1);
@@ -292,7 +292,7 @@ static void test_forbidden_outcomes(void)
         tippe_theory_classify(top.A / top.C, top.eps / top.R, &cls);
         CHECK(cls.group == cases[c].group, "Z2 = %g mm is in %s, the test expects %s",
               cases[c].z2, tippe_group_name(cls.group), tippe_group_name(cases[c].group));
-        tippe_launch_plan plan = {1, 6, &top, NULL};
+        tippe_launch_plan plan = {1, 6, &top, NULL, NULL};
         tippe_launch_record rec[6];
         CHECK(tippe_launch_run(&plan, &o, 5, 0, 6, rec, NULL, &e) == TIPPE_OK, "%s", e.msg);
         for (int i = 0; i < 6; i++) {

@@ -49,7 +49,7 @@ int main(int argc, char **argv)
     }
     tippe_launch_options o;
     tippe_launch_options_default(&o);
-    tippe_launch_plan plan = {1, n, &top, NULL};
+    tippe_launch_plan plan = {1, n, &top, NULL, NULL};
     tippe_launch_record *ref = calloc((size_t)n, sizeof *ref), *rec = calloc((size_t)n, sizeof *rec);
     if (!ref || !rec)
         return 1;

@@ -761,6 +761,9 @@ typedef struct {
     long per_group;
     const tippe_top *tops;
     const double *spin_rad_s;
+    /* NULL, or each group's holes' openings at the poles (tippe_launch_polar_caps: a
+     * map's cells at different Z2), in place of the options' cap_half_angle_rad */
+    const double (*caps_rad)[2];
 } tippe_launch_plan;
 
 long tippe_launch_plan_total(const tippe_launch_plan *plan);
@@ -830,9 +833,11 @@ int tippe_launch_dominant(const tippe_launch_tally *t);
 /* ---- Sensitivity to the patch radius (issue 27; docs/dynamics.md, "Radius sensitivity")
  * The patch radius is uncertain (surface finish, the table, wear): under the patch law a
  * launch (or a batch of launches, with the same draws) is run again at 1/F and F times the
- * radius it used (F the options' span, 2 by default: 0.5x and 2x), and called robust to the radius only when every launch gives the same
- * verdict, the same passage over pi/2 (t_flip set or not) and the same fall back (t_fall
- * set or not) at all three radii. */
+ * radius it used (F the options' span, 2 by default: 0.5x and 2x), and called robust to
+ * the radius only when every launch makes the same passage over pi/2 (t_flip set or not),
+ * the same fall back (t_fall set or not), loses contact or not alike, and gives the same
+ * verdict where both verdicts were decided (an observed verdict, a snapshot at t_end of a
+ * top that rocks on, is not compared: it is not converged), at all three radii. */
 enum { TIPPE_LAUNCH_RADIUS_RUNS = 3 };
 /* The span F when the options leave it 0: runs at 0.5x and 2x. */
 #define TIPPE_LAUNCH_RADIUS_SPAN 2.0

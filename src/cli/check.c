@@ -202,8 +202,8 @@ static void print_radius_sensitivity(const tippe_launch_radius_sensitivity *s)
         printf("\n");
     }
     if (s->robust)
-        printf("           robust to the radius: the same verdict, flip and fall back at all "
-               "three\n");
+        printf("           robust to the radius: the same flip and fall back at all three (observed "
+               "end states are snapshots, not compared)\n");
     else if (s->changed == 0) /* a radius was not run */
         printf("           robustness to the radius not known: a radius was not run\n");
     else

@@ -238,13 +238,13 @@ static void print_radius_sensitivity(const tippe_launch_radius_sensitivity *s, l
         printf("\n");
     }
     if (s->robust)
-        printf("           robust to the radius: every launch gives the same verdict, flip and "
+        printf("           robust to the radius: every launch gives the same flip and "
                "fall back at all three\n");
     else if (s->changed == 0) /* a radius was not run */
         printf("           robustness to the radius not known: a radius was not run\n");
     else
-        printf("           NOT robust to the radius: %ld of %ld launches change verdict, flip or "
-               "fall back between %.3gx and %.3gx the radius\n", s->changed, n, s->run[0].factor,
+        printf("           NOT robust to the radius: %ld of %ld launches change flip, fall back "
+               "or decided verdict between %.3gx and %.3gx the radius\n", s->changed, n, s->run[0].factor,
                s->run[2].factor);
 }
 
@@ -289,7 +289,7 @@ static int launch_radius_runs(const hands_args *a, const tippe_top *top,
                               tippe_launch_record *rec, tippe_progress *prog,
                               tippe_launch_radius_sensitivity *s, tippe_error *err)
 {
-    tippe_launch_plan plan = {1, a->n, top, NULL};
+    tippe_launch_plan plan = {1, a->n, top, NULL, NULL};
     const tippe_launch_record *ptr[TIPPE_LAUNCH_RADIUS_RUNS];
     double radius_m[TIPPE_LAUNCH_RADIUS_RUNS];
     for (int i = 0; i < TIPPE_LAUNCH_RADIUS_RUNS; i++) {
@@ -316,7 +316,7 @@ static int launch_run(const hands_args *a, const tippe_design *d, const tippe_to
                       tippe_launch_record *rec, int radius_runs)
 {
     tippe_error err;
-    tippe_launch_plan plan = {1, a->n, top, NULL};
+    tippe_launch_plan plan = {1, a->n, top, NULL, NULL};
     tippe_progress prog;
     tippe_progress_start(&prog, stderr, "tippe launch", radius_runs ? 3 * a->n : a->n,
                          tippe_cli_progress_mode());

@@ -160,6 +160,7 @@ typedef struct {
     unsigned char *model_invalid;
     /* the patch law's radius sensitivity: the same launches at 1/F ([0]) and F ([2])
      * times the radius, the plain run being rec ([1]); NULL where not run */
+    double (*cell_caps)[2]; /* each cell's holes' openings at the poles, rad */
     int radius_runs;
     tippe_launch_record *rec_radius[3];
     double radius_m[3], factor[3];
@@ -180,6 +181,7 @@ static void grid_free(map_grid *g)
     free(g->rec_radius[0]);
     free(g->rec_radius[2]);
     free(g->cell_changed);
+    free(g->cell_caps);
 }
 
 static int grid_make(const hands_args *a, const tippe_design *d, map_grid *g)
@@ -215,9 +217,17 @@ static int grid_make(const hands_args *a, const tippe_design *d, map_grid *g)
         g->spin_rev_s[j] =
             (g->sn == 1 ? sr->from : sr->from + (sr->to - sr->from) * j / (g->sn - 1)) /
             (2 * M_PI);
+    /* where a hole opens at a pole the contact is not on the sphere: every launch records
+     * its time there (as tippe launch's), with its row's openings (they move with Z2) */
+    g->cell_caps = malloc((size_t)g->n_cells * sizeof *g->cell_caps);
+    if (!g->cell_caps) {
+        fprintf(stderr, "tippe map: out of memory for %ld cells\n", g->n_cells);
+        return 1;
+    }
     for (long c = 0; c < g->n_cells; c++) {
         g->cell_tops[c] = g->tops[c / g->sn];
         g->cell_spin_rad_s[c] = 2 * M_PI * g->spin_rev_s[c % g->sn];
+        tippe_launch_polar_caps(d, g->z2[c / g->sn], &g->cell_tops[c], g->cell_caps[c]);
     }
     g->radius_runs = a->o.law == TIPPE_FRICTION_PATCH && !a->no_radius_sensitivity;
     if (g->radius_runs) {
@@ -250,7 +260,8 @@ static int grid_make(const hands_args *a, const tippe_design *d, map_grid *g)
 static int grid_radius_runs(const hands_args *a, map_grid *g, tippe_progress *prog,
                             tippe_error *err)
 {
-    tippe_launch_plan plan = {(int)g->n_cells, a->n, g->cell_tops, g->cell_spin_rad_s};
+    tippe_launch_plan plan = {(int)g->n_cells, a->n, g->cell_tops, g->cell_spin_rad_s,
+                              (const double(*)[2])g->cell_caps};
     for (int i = 0; i < 3; i += 2) {
         if (!g->rec_radius[i])
             continue;
@@ -358,7 +369,10 @@ static cJSON *radius_json(const hands_args *a, const map_grid *g)
         cJSON_AddBoolToObject(x, "ran", i == 1 || g->rec_radius[i] != NULL);
     }
     const int all_ran = g->rec_radius[0] && g->rec_radius[2];
-    cJSON_AddBoolToObject(o, "robust", all_ran && g->changed == 0);
+    if (all_ran || g->changed > 0)
+        cJSON_AddBoolToObject(o, "robust", all_ran && g->changed == 0);
+    else
+        cJSON_AddNullToObject(o, "robust"); /* not known: a radius was not run */
     cJSON_AddNumberToObject(o, "changed", (double)g->changed);
     cJSON_AddNumberToObject(o, "cells_changed", (double)g->cells_changed);
     return o;
@@ -395,13 +409,14 @@ static void print_radius(const hands_args *a, const map_grid *g)
         printf("%s %.3gx (%.4g mm)%s", i ? " and" : "", g->factor[i], g->radius_m[i] * 1e3,
                g->rec_radius[i] ? "" : ", not run: wider than half the ball's radius");
     printf("\n");
-    if (!g->rec_radius[0] || !g->rec_radius[2])
-        printf("           robustness to the radius not known: a radius was not run; ");
-    else if (g->changed == 0)
-        printf("           robust to the radius: ");
-    else
+    if (g->changed > 0)
         printf("           NOT robust to the radius: ");
-    printf("%ld of %ld launches change verdict, flip or fall back, in %ld of %ld cells\n",
+    else if (!g->rec_radius[0] || !g->rec_radius[2])
+        printf("           robustness to the radius not known: a radius was not run; ");
+    else
+        printf("           robust to the radius: ");
+    printf("%ld of %ld launches change flip, fall back or decided verdict, in %ld of %ld "
+           "cells\n",
            g->changed, g->total, g->cells_changed, g->n_cells);
     if (g->changed)
         for (int i = 0; i < g->zn; i++)
@@ -435,6 +450,11 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
             printf("%s %s %ld", v ? "," : "", hands_verdict_names[v], all.counts[v]);
         printf(" of %ld; %ld of %ld settled launches agree with theory\n", g->total, all.agree,
                all.comparable);
+        if (all.on_cap) /* as tippe launch says it, over the whole map */
+            printf("pole       INVALID for %ld of %ld launches: their contact lay within a "
+                   "hole's opening at a pole before their verdict, where the top stands on the "
+                   "hole's rim, not on its sphere (JSON on_polar_cap per cell)\n",
+                   all.on_cap, g->total);
         char jellett[64] = "J not conserved (drilling)";
         if (a->o.law != TIPPE_FRICTION_PATCH || !(a->o.mu_c > 0)) /* nothing drills */
             snprintf(jellett, sizeof jellett, "largest Jellett drift %.2g",
@@ -504,7 +524,8 @@ int tippe_cli_map(int argc, char **argv)
         fprintf(stderr, "tippe map: %ld launches (%d x %d cells x %ld) ahead; this takes a "
                         "while (progress below)\n", g.total, g.zn, g.sn, a.n);
     if ((rc = hands_mpi_agree(rc)) == 0) {
-        tippe_launch_plan plan = {(int)g.n_cells, a.n, g.cell_tops, g.cell_spin_rad_s};
+        tippe_launch_plan plan = {(int)g.n_cells, a.n, g.cell_tops, g.cell_spin_rad_s,
+                                  (const double(*)[2])g.cell_caps};
         tippe_progress prog;
         const long work = g.total * (1 + (g.rec_radius[0] != NULL) + (g.rec_radius[2] != NULL));
         tippe_progress_start(&prog, stderr, "tippe map", work, tippe_cli_progress_mode());

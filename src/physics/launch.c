@@ -347,6 +347,19 @@ static int draw_launches(const tippe_launch_plan *plan, const tippe_launch_optio
                            o->law == TIPPE_FRICTION_VISCOUS ? " s/m" : "");
 }
 
+/* The options of a plan's group: o, with the group's polar caps when the plan has them. */
+static const tippe_launch_options *group_options(const tippe_launch_plan *plan,
+                                                 const tippe_launch_options *o, int group,
+                                                 tippe_launch_options *buf)
+{
+    if (!plan->caps_rad)
+        return o;
+    *buf = *o;
+    buf->cap_half_angle_rad[0] = plan->caps_rad[group][0];
+    buf->cap_half_angle_rad[1] = plan->caps_rad[group][1];
+    return buf;
+}
+
 long tippe_launch_plan_total(const tippe_launch_plan *plan)
 {
     return (long)plan->n_groups * plan->per_group;
@@ -372,10 +385,12 @@ int tippe_launch_run(const tippe_launch_plan *plan, const tippe_launch_options *
 #pragma omp parallel for schedule(dynamic, 1)
     for (long i = 0; i < n; i++) {
         const tippe_dynamics_initial ic = out[i].ic;
+        const int group = (int)(out[i].index / plan->per_group);
+        tippe_launch_options og;
         tippe_error e;
         if (out[i].status == TIPPE_OK)
-            tippe_launch_run_initial(&plan->tops[out[i].index / plan->per_group], o, &ic,
-                                     &out[i], &e);
+            tippe_launch_run_initial(&plan->tops[group], group_options(plan, o, group, &og),
+                                     &ic, &out[i], &e);
         tippe_progress_add(prog, 1);
     }
 
@@ -386,7 +401,9 @@ int tippe_launch_run(const tippe_launch_plan *plan, const tippe_launch_options *
             const int group = (int)(index / plan->per_group);
             tippe_launch_record again;
             tippe_error e;
-            launch_one(&plan->tops[group], o, seed, (uint64_t)(index % plan->per_group),
+            tippe_launch_options og;
+            launch_one(&plan->tops[group], group_options(plan, o, group, &og), seed,
+                       (uint64_t)(index % plan->per_group),
                        plan->spin_rad_s ? plan->spin_rad_s[group] : NAN, &again, &e);
             return tippe_error_set(err, out[i].status, "launch %ld (draw %ld): %s", index,
                                    index % plan->per_group, e.msg);
