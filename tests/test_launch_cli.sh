@@ -272,6 +272,10 @@ rm -f "$tmp"/check* "$tmp"/sim*
     >"$tmp/pc.txt" 2>&1
 check "check --friction patch: not proved" grep -q "observed at t = 5 s, NOT proved" "$tmp/pc.txt"
 check "check --friction patch: msbdf" grep -q "msbdf for the stiff patch law" "$tmp/pc.txt"
+"$tippe" check designs/m12-setscrew.json --z2 10 --friction patch --t-end 5 \
+    --no-radius-sensitivity --json >"$tmp/pcj.json"
+check "check --friction patch --json: the stepper that ran (msbdf), as the text says" \
+    python3 -c "import json, sys; assert json.load(open(sys.argv[1]))['options']['accuracy']['stepper'] == 'msbdf'" "$tmp/pcj.json"
 "$tippe" launch designs/m12-setscrew.json --z2 10 -n 2 --seed 1 --friction patch --patch-mm 0.2 \
     --t-end 3 --json >"$tmp/pl.json" 2>/dev/null
 check "launch --friction patch --json" json_ok "$tmp/pl.json" \

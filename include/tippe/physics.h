@@ -348,6 +348,11 @@ double tippe_dynamics_patch_radius(const tippe_dynamics_model *model);
  * at Rn = m g (the radius a at m g). 0 under the other laws. */
 double tippe_dynamics_jellett_rate_bound(const tippe_dynamics_model *model);
 
+/* The stepper a run under law uses for the named one: the presets' rk8pd runs as msbdf
+ * under the patch law (stiff as the spin about the vertical drains; docs/dynamics.md,
+ * "Patch friction"), any other as named. */
+const char *tippe_dynamics_stepper_used(tippe_friction_law law, const char *stepper);
+
 /* The reason a patch-law verdict is not proved (tippe_dynamics_result.unproved_reason). */
 #define TIPPE_PATCH_UNPROVED_REASON "J changes under drilling friction: not proved"
 
@@ -1043,7 +1048,7 @@ void tippe_dynamics_friction_json(struct cJSON *o, const tippe_dynamics_model *m
 /* Adds {"preset": preset, "stepper": ..., "rtol": ...} to o as "accuracy", the
  * same object in every verb that integrates. */
 void tippe_dynamics_accuracy_json(struct cJSON *o, const char *preset,
-                                  const tippe_dynamics_accuracy *acc);
+                                  const tippe_dynamics_accuracy *acc, tippe_friction_law law);
 /* A launch's options: the hand-launch distribution (without the spin's when
  * fixed_spin), the friction, g, t_end and the accuracy. NULL if out of memory. */
 struct cJSON *tippe_launch_options_json(const tippe_launch_options *o, int fixed_spin);

@@ -259,7 +259,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
     cJSON_AddBoolToObject(o, "budget_exhausted", r->budget_exhausted);
     cJSON_AddNumberToObject(o, "state_dim", r->state_dim);
     cJSON_AddNumberToObject(o, "elapsed_s", elapsed_s);
-    tippe_dynamics_accuracy_json(o, sc->accuracy_name, &sc->accuracy);
+    tippe_dynamics_accuracy_json(o, sc->accuracy_name, &sc->accuracy, sc->model.law);
     cJSON *th = cJSON_AddObjectToObject(o, "theory");
     if (th) {
         cJSON_AddStringToObject(th, "group", tippe_group_name(tc->cls.group));

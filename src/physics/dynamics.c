@@ -339,9 +339,7 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
      * crawls at its stability limit (an M12 check: 1.7e8 evaluations for 117 s). So the
      * presets' rk8pd becomes msbdf (BDF, implicit) under the patch law, at the same
      * rtol: 2.4e5 evaluations for 120 s (docs/dynamics.md, "Patch friction"). */
-    const char *stepper = opt->accuracy.stepper;
-    if (c->patch && !strcmp(stepper, "rk8pd"))
-        stepper = "msbdf";
+    const char *stepper = tippe_dynamics_stepper_used(model->law, opt->accuracy.stepper);
     rs->drv = gsl_odeiv2_driver_alloc_scaled_new(&rs->sys, tippe_dynamics_stepper_type(stepper),
                                                  rs->h, opt->accuracy.rtol, opt->accuracy.rtol,
                                                  1.0, 0.0, c->scale);

@@ -120,6 +120,11 @@ double tippe_dynamics_jellett_rate_bound(const tippe_dynamics_model *model)
            (model->top.R + model->top.eps);
 }
 
+const char *tippe_dynamics_stepper_used(tippe_friction_law law, const char *stepper)
+{
+    return law == TIPPE_FRICTION_PATCH && !strcmp(stepper, "rk8pd") ? "msbdf" : stepper;
+}
+
 int tippe_dynamics_n_presets(void) { return N_PRESETS; }
 
 const char *tippe_dynamics_preset_name(int i)

@@ -115,12 +115,14 @@ void tippe_dynamics_friction_json(cJSON *o, const tippe_dynamics_model *m)
     }
 }
 
-void tippe_dynamics_accuracy_json(cJSON *o, const char *preset, const tippe_dynamics_accuracy *acc)
+void tippe_dynamics_accuracy_json(cJSON *o, const char *preset, const tippe_dynamics_accuracy *acc,
+                                  tippe_friction_law law)
 {
     cJSON *a = cJSON_AddObjectToObject(o, "accuracy");
     if (a) {
         cJSON_AddStringToObject(a, "preset", preset);
-        cJSON_AddStringToObject(a, "stepper", acc->stepper);
+        /* the stepper that ran (the patch law's msbdf for the presets' rk8pd) */
+        cJSON_AddStringToObject(a, "stepper", tippe_dynamics_stepper_used(law, acc->stepper));
         cJSON_AddNumberToObject(a, "rtol", acc->rtol);
     }
 }
@@ -143,6 +145,6 @@ cJSON *tippe_launch_options_json(const tippe_launch_options *o, int fixed_spin)
     tippe_dynamics_friction_json(d, &m);
     cJSON_AddNumberToObject(d, "g_m_s2", o->g);
     cJSON_AddNumberToObject(d, "t_end_s", o->t_end);
-    tippe_dynamics_accuracy_json(d, o->accuracy_name, &o->accuracy);
+    tippe_dynamics_accuracy_json(d, o->accuracy_name, &o->accuracy, o->law);
     return d;
 }
