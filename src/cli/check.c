@@ -224,7 +224,7 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
            "precession %.4g rad/s, %s\n",
            ic->spin, ic->spin / (2 * M_PI), ic->theta, ic->theta * 180 / M_PI, ic->phi_dot,
            tippe_launch_slip_text(&r->top, ic, NULL, slide, sizeof slide));
-    hands_print_model(&a->o);
+    hands_print_model(&a->o, &r->top);
     print_verdict_line(rec);
     if (rec->how == TIPPE_DECIDED_T_END || rec->how == TIPPE_DECIDED_BUDGET) {
         /* The launch is a steady precession: without friction nothing dissipates

@@ -373,11 +373,12 @@ void hands_print_distribution(const tippe_launch_options *o, int fixed_spin)
            o->tilt_sd_rad, o->tilt_max_rad, o->precession_sd_rel, o->slide_sd_m_s);
 }
 
-void hands_print_model(const tippe_launch_options *o)
+void hands_print_model(const tippe_launch_options *o, const tippe_top *top)
 {
     tippe_dynamics_model m;
     char fr[320];
     tippe_launch_friction_model(o, &m);
+    m.top = *top; /* the patch law's Hertz radius needs its m g and R */
     const int bdf = o->law == TIPPE_FRICTION_PATCH && !strcmp(o->accuracy.stepper, "rk8pd");
     printf("model      friction %s, g %g m/s^2, t_end %g s, accuracy %s (%s, rtol %g), verdict "
            "level\n",

@@ -88,7 +88,7 @@ const char *hands_group_meaning(tippe_group g);
 void hands_print_top(const tippe_design *d, double z2, const tippe_top *t, double g,
                      const tippe_sweep_point_zone *z);
 void hands_print_distribution(const tippe_launch_options *o, int fixed_spin);
-void hands_print_model(const tippe_launch_options *o);
+void hands_print_model(const tippe_launch_options *o, const tippe_top *top);
 
 /* The JSON of one tally (the options: tippe_launch_options_json; theory beside
  * a tally: tippe_sweep_theory_json). */

@@ -202,6 +202,8 @@ static void launch_json(const hands_args *a, const tippe_design *d, const tippe_
         cJSON_AddItemToObject(o, "distribution", tippe_launch_options_json(&a->o, 0));
         cJSON_AddNumberToObject(o, "max_jellett_rel_drift", t->max_jellett_rel_drift);
         cJSON_AddNumberToObject(o, "rhs_evals", t->rhs_evals);
+        if (a->o.law == TIPPE_FRICTION_PATCH) /* the radius at m g the launches started from */
+            cJSON_AddNumberToObject(o, "patch_radius_mm", 1e3 * tippe_launch_patch_radius(top, &a->o));
         if (a->o.law == TIPPE_FRICTION_PATCH)
             cJSON_AddItemToObject(o, "radius_sensitivity",
                                   sens ? tippe_launch_radius_json(sens, 0) : cJSON_CreateNull());
@@ -257,7 +259,7 @@ static void launch_text(const hands_args *a, const tippe_design *d, const tippe_
         printf("changes    %s\n", tippe_cli_sets_text(&a->sets, sets, sizeof sets));
     printf("launches   %ld by hand, seed %ld\n", a->n, a->seed);
     hands_print_distribution(&a->o, 0);
-    hands_print_model(&a->o);
+    hands_print_model(&a->o, top);
     print_counts_table(t);
     tippe_design_protrusion pr;
     tippe_design_protrusion_at(d, a->z2_mm, &pr);

@@ -440,7 +440,7 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
            a->z2_range.from, a->z2_range.to, g->zn, a->spin.from, a->spin.to,
            g->spin_rev_s[0], g->spin_rev_s[g->sn - 1], g->sn, a->n, a->seed);
     hands_print_distribution(&a->o, 1);
-    hands_print_model(&a->o);
+    hands_print_model(&a->o, &g->tops[0]);
     print_map_table(m, g->model_invalid);
     tippe_launch_tally all;
     tippe_error err;

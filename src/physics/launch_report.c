@@ -69,11 +69,18 @@ const char *tippe_dynamics_friction_text(const tippe_dynamics_model *m, char *bu
                      m->patch_radius_m * 1e3,
                      m->patch_radius_fixed ? "held" : "following the load as Rn^(1/3)", vs);
         else
-            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on Hertz's patch "
-                     "(E* %.3g GPa, Hertz pressure, %s), regularised below %g m/s", m->mu_c,
-                     m->patch_E_star_pa * 1e-9,
+        {
+            /* the radius when the model has its top (m g and R), else the modulus alone */
+            char radius[48] = "";
+            if (tippe_dynamics_patch_radius(m) > 0)
+                snprintf(radius, sizeof radius, ", radius %.4g mm at m g",
+                         tippe_dynamics_patch_radius(m) * 1e3);
+            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on Hertz's patch%s (E* %.3g "
+                     "GPa, Hertz pressure, %s), regularised below %g m/s",
+                     m->mu_c, radius, m->patch_E_star_pa * 1e-9,
                      m->patch_radius_fixed ? "held at m g's" : "following the load as Rn^(1/3)",
                      vs);
+        }
         break;
     case TIPPE_FRICTION_COULOMB_CREEP:
         snprintf(buf, size, "Coulomb mu_c %g regularised below %g m/s, no sticking (creep)",
@@ -110,6 +117,10 @@ void tippe_dynamics_friction_json(cJSON *o, const tippe_dynamics_model *m)
         else
             cJSON_AddNumberToObject(f, "E_star_GPa", m->patch_E_star_pa * 1e-9);
         cJSON_AddStringToObject(f, "pressure", "hertz");
+        /* the radius the run starts from, however it was found (when the model has its
+         * top: Hertz's needs m g and R) */
+        if (tippe_dynamics_patch_radius(m) > 0)
+            cJSON_AddNumberToObject(f, "patch_mm_at_mg", tippe_dynamics_patch_radius(m) * 1e3);
         cJSON_AddBoolToObject(f, "radius_follows_load", !m->patch_radius_fixed);
         cJSON_AddNumberToObject(f, "rolling_arm_um", m->rolling_arm_m * 1e6);
     }

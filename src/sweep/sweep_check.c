@@ -152,10 +152,11 @@ int tippe_sweep_check_laws(const tippe_design *d, double z2_mm, const tippe_laun
     for (int i = 0; i < n; i++) {
         tippe_sweep_check_law *l = &out[i];
         l->o = o[i];
+        int rc = tippe_sweep_check_run(d, z2_mm, &o[i], spin_rad_s, &l->check, err);
         tippe_dynamics_model m;
         tippe_launch_friction_model(&o[i], &m);
+        m.top = l->check.top; /* the patch law's Hertz radius needs its m g and R */
         tippe_dynamics_friction_text(&m, l->friction, sizeof l->friction);
-        int rc = tippe_sweep_check_run(d, z2_mm, &o[i], spin_rad_s, &l->check, err);
         if (!rc)
             rc = tippe_launch_trajectory(&l->check.top, &o[i], &l->check.ic, 0.0, &l->samples,
                                          &l->run, err);
@@ -303,6 +304,8 @@ cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_opt
         number_or_null(o, "jellett_drift_time_s", rec->jellett_drift_time_s);
         number_or_null(o, "energy_rel_error", rec->energy_rel_error);
         cJSON_AddItemToObject(o, "options", tippe_launch_options_json(opt, 1));
+        if (opt->law == TIPPE_FRICTION_PATCH) /* the radius at m g this top's run started from */
+            cJSON_AddNumberToObject(o, "patch_radius_mm", 1e3 * tippe_launch_patch_radius(&r->top, opt));
         cJSON_AddItemToObject(o, "theory", theory_json(r, opt));
     }
     return o;
