@@ -797,6 +797,12 @@ typedef struct {
      * time at which theta passed pi/2 (NAN if none). */
     long flips;
     double median_t_flip_s;
+    /* Over every launch, whatever its verdict (the patch law's flips that fall back and
+     * end as observed hangs): how many passed pi/2 (t_flip_s set) and the median time,
+     * how many of those came back below it (t_fall_s set) and the median time (NAN if
+     * none). */
+    long passed, fell;
+    double median_t_passed_s, median_t_fall_s;
     /* Trapped decisions (no_tip, tip, hang): how many, how many of them in a well
      * with no barrier, and the smallest barrier gap / margin of the others
      * (INFINITY if none). */

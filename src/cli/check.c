@@ -282,6 +282,10 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
                rec->t_flip_s, a->o.law == TIPPE_FRICTION_VISCOUS ? "viscous friction"
                               : a->o.law == TIPPE_FRICTION_PATCH ? "patch friction"
                                                                  : "Coulomb friction");
+    if (isfinite(rec->t_flip_s) && isfinite(rec->t_fall_s)) /* the drilling drained the spin */
+        printf("fall       first back below 90 deg at t = %.4g s; above 90 deg for %.4g s in all "
+               "of the %.4g s run\n",
+               rec->t_fall_s, rec->inverted_time_s, rec->t_s);
     tippe_theory_class cls;
     tippe_theory_classify(r->top.A / r->top.C, r->top.eps / r->top.R, &cls);
     const tippe_group g = r->zone.ok ? r->zone.group : cls.group;

@@ -408,6 +408,11 @@ cJSON *hands_json_tally(const tippe_launch_tally *t)
         cJSON_AddNumberToObject(o, "median_t_flip_s", t->median_t_flip_s);
     else
         cJSON_AddNullToObject(o, "median_t_flip_s");
+    /* every launch's passage over pi/2 and fall back, whatever its verdict */
+    cJSON_AddNumberToObject(o, "passed_pi_2", (double)t->passed);
+    tippe_cli_json_number_or_null(o, "median_t_passed_s", t->median_t_passed_s);
+    cJSON_AddNumberToObject(o, "fell_back", (double)t->fell);
+    tippe_cli_json_number_or_null(o, "median_t_fall_s", t->median_t_fall_s);
     cJSON_AddNumberToObject(o, "trapped", (double)t->trapped);
     cJSON_AddNumberToObject(o, "trapped_no_barrier", (double)t->trapped_no_barrier);
     cJSON_AddNumberToObject(o, "rolling", (double)t->rolling);

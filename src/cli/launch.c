@@ -95,7 +95,7 @@ static void print_counts_table(const tippe_launch_tally *t)
     }
 }
 
-static void print_theory_summary(const tippe_launch_tally *t)
+static void print_theory_summary(const tippe_launch_tally *t, const tippe_launch_options *o)
 {
     printf("\ntheory     Theorem 5.1 for each launch's Jellett invariant predicts:");
     int first = 1;
@@ -133,6 +133,17 @@ static void print_theory_summary(const tippe_launch_tally *t)
     if (t->flips)
         printf("flip       %ld tips followed to theta = 90 deg: median model time %.3g s\n",
                t->flips, t->median_t_flip_s);
+    if (o->law == TIPPE_FRICTION_PATCH && o->mu_c > 0)
+        printf("observed   the end verdicts are the state at t_end, NOT proved (drilling "
+               "changes J: docs/dynamics.md); only no_tip by the energy cone is\n");
+    if (t->passed > t->flips) { /* flips that did not end as tip (the patch law's fall back) */
+        printf("passed     %ld of %ld launches passed 90 deg (median %.3g s)", t->passed, t->n,
+               t->median_t_passed_s);
+        if (t->fell)
+            printf("; %ld of them came back below it (median %.3g s)", t->fell,
+                   t->median_t_fall_s);
+        printf("\n");
+    }
 }
 
 /* The verb's own options beside hands.c's shared ones. */
@@ -271,7 +282,7 @@ static void launch_text(const hands_args *a, const tippe_design *d, const tippe_
                "its sphere\n",
                t->on_cap, t->n, a->o.cap_half_angle_rad[0] * 180 / M_PI,
                a->o.cap_half_angle_rad[1] * 180 / M_PI);
-    print_theory_summary(t);
+    print_theory_summary(t, &a->o);
     char jellett[64] = "J not conserved (drilling)";
     if (a->o.law != TIPPE_FRICTION_PATCH || !(a->o.mu_c > 0)) /* nothing drills */
         snprintf(jellett, sizeof jellett, "largest Jellett drift %.2g", t->max_jellett_rel_drift);

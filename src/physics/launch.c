@@ -464,6 +464,17 @@ int tippe_launch_tally_records(const tippe_launch_record *r, long n, tippe_launc
     }
     out->flips = m_flip;
     out->median_t_flip_s = median_of(t, m_flip);
+    long m_pass = 0, m_fall = 0;
+    for (long i = 0; i < n; i++)
+        if (r[i].status == TIPPE_OK && isfinite(r[i].t_flip_s))
+            t[m_pass++] = r[i].t_flip_s;
+    out->passed = m_pass;
+    out->median_t_passed_s = median_of(t, m_pass);
+    for (long i = 0; i < n; i++)
+        if (r[i].status == TIPPE_OK && isfinite(r[i].t_flip_s) && isfinite(r[i].t_fall_s))
+            t[m_fall++] = r[i].t_fall_s;
+    out->fell = m_fall;
+    out->median_t_fall_s = median_of(t, m_fall);
     for (int v = 0; v < TIPPE_LAUNCH_N_VERDICTS; v++) {
         long m = 0;
         for (long i = 0; i < n; i++)
