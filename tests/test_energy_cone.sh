@@ -38,4 +38,10 @@ PY
     --no-radius-sensitivity --t-end 60 --json >"$tmp/f.json" 2>/dev/null
 check "M12 at Z2 = 10 mm flips: not decided by the energy cone (observed)" \
     json_ok "$tmp/f.json" 'o["decided_by"] == "observed" and o["t_flip_s"] is not None'
+# the text gives one verdict, the energy's, and claims no rest state (a second line that
+# read as a proof of the well once followed it)
+"$tippe" check designs/m12-setscrew.json --z2 5 --spin 15rev/s --friction patch --table laminate \
+    --no-radius-sensitivity >"$tmp/c.txt" 2>/dev/null
+check "energy cone: one verdict line, the rest state not claimed" bash -c \
+    '[ "$(grep -c "^verdict" "$1")" = 1 ] && grep -q "^verdict    no_tip: proved at .* (energy_cone).*rest state is not proved" "$1" && ! grep -q "it ends there" "$1"' _ "$tmp/c.txt"
 finish

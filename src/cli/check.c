@@ -151,17 +151,17 @@ static void print_verdict_line(const tippe_launch_record *rec)
                    "stays within %.2f deg of upright for ever (theta now %.1f deg); the rest "
                    "state is not proved\n",
                    tippe_verdict_name(rec->verdict), rec->t_s, rec->theta_hi_rad * deg, th * deg);
-        else if (rec->how == TIPPE_DECIDED_OBSERVED)
+        else if (rec->how == TIPPE_DECIDED_OBSERVED) {
             printf("\nverdict    %s (observed at t = %.4g s, NOT proved): theta %.4f rad (%.1f "
                    "deg), spin %.4g rad/s; " TIPPE_PATCH_UNPROVED_REASON "\n",
                    tippe_verdict_name(rec->verdict), rec->t_s, th, th * deg,
                    rec->spin_final_rad_s);
-        if (rec->how == TIPPE_DECIDED_OBSERVED && isfinite(rec->jellett_drift_time_s))
-            printf("           J moved by up to %.3g %% of J0 in the run; drilling at m g can "
-                   "move it by all of J0 in %.3g s (|dJ/dt| <= (3 pi/16) mu_c m g a (R + eps)), "
-                   "so no proof that holds J = J0 for ever applies\n",
-                   100 * rec->jellett_rel_drift, rec->jellett_drift_time_s);
-        else if (rec->how == TIPPE_DECIDED_ROLLING)
+            if (isfinite(rec->jellett_drift_time_s))
+                printf("           J moved by up to %.3g %% of J0 in the run; drilling at m g "
+                       "can move it by all of J0 in %.3g s (|dJ/dt| <= (3 pi/16) mu_c m g a "
+                       "(R + eps)), so no proof that holds J = J0 for ever applies\n",
+                       100 * rec->jellett_rel_drift, rec->jellett_drift_time_s);
+        } else if (rec->how == TIPPE_DECIDED_ROLLING)
             printf("\nverdict    %s: rolls without slipping for ever, theta in [%.4f, %.4f] rad "
                    "([%.1f, %.1f] deg)\n",
                    tippe_verdict_name(rec->verdict), rec->theta_lo_rad, rec->theta_hi_rad,
