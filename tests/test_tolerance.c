@@ -74,7 +74,7 @@ static void check_parsing(void)
         {"{\"parts.hole.height_mm\": 0.1}", "the clip decides it"},
         {"{\"parts.body.radius_mm\": 0.1}", "forms the sphere"},
         {"{\"parts.hole.density_g_cm3\": 0.1}", "a void has its part's density"},
-        {"{\"contact.patch_radius\": 1}", "outside (1, 10]"},
+        {"{\"contact.patch_radius\": 1.005}", "outside 1.01 .. 10"},
         {"{\"contact.patch_radius\": \"50%\"}", "a number F"},
         {"[0.1]", "tolerances: must be an object"},
     };

@@ -657,7 +657,7 @@ void tippe_design_source_free(tippe_design_source *s);
 #define TIPPE_TOL_WEIGHED_G 0.1
 /* The contact patch's radius (the patch friction law's a, tippe/physics.h) is known
  * only within a factor: surface finish, the table and wear move it (docs/contact-patch.md).
- * The block's "contact.patch_radius": F (1 < F <= 10) says a lies in [a/F, a F]; it moves
+ * The block's "contact.patch_radius": F (1.01 <= F <= 10) says a lies in [a/F, a F]; it moves
  * no zone boundary (the zones do not depend on friction), so it is not in the per-field
  * list: check and launch run the patch law there (their radius sensitivity). */
 #define TIPPE_TOL_PATCH_RADIUS_FACTOR 2.0

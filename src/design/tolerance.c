@@ -226,8 +226,9 @@ static int read_patch_span(const tippe_json_reader *c, const cJSON *item, const 
         return tippe_json_wrong_type(c, path, "a number F (the radius lies in [a/F, a F])",
                                      item);
     const double f = item->valuedouble;
-    if (!(f > 1.0 && f <= 10.0))
-        return tippe_json_fail(c, path, "factor %g is outside (1, 10] (the radius lies in "
+    /* at least 1 %: a narrower span is noise (and --radius-span's bound) */
+    if (!(f >= 1.01 && f <= 10.0))
+        return tippe_json_fail(c, path, "factor %g is outside 1.01 .. 10 (the radius lies in "
                                         "[a/F, a F]; the default is %g)",
                                f, TIPPE_TOL_PATCH_RADIUS_FACTOR);
     *span = f;

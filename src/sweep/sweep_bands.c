@@ -276,8 +276,8 @@ void tippe_sweep_print_bands(FILE *out, const tippe_design *d, const tippe_sweep
                 t->unit, pct, t->rule);
     }
     /* the zones do not depend on friction: listed, not combined (tippe/design.h) */
-    fprintf(out, "  %-34s within a factor %g (patch friction's radius: check and launch rerun "
-                 "at a/%g and %g a; moves no zone)\n",
+    fprintf(out, "  %-34s within a factor %g (patch friction's radius: check, launch and map rerun "
+                 "at a/%g and %g a; moves no zone: not in the count or the bands)\n",
             TIPPE_TOL_PATCH_RADIUS_KEY, tippe_design_patch_radius_span(d),
             tippe_design_patch_radius_span(d), tippe_design_patch_radius_span(d));
     fprintf(out, "\n%-18s %10s %12s %12s  %s\n", "boundary", "Z2 (mm)", "band +/- mm",
