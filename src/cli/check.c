@@ -273,8 +273,8 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
                pole > 0 ? "+z" : "-z", c->part, c->half_angle_rad * 180 / M_PI);
     }
     if (isfinite(rec->cap_first_s))
-        printf("pole       the contact lay within a hole's opening at a pole for %.3g s of the "
-               "%.4g s run (first at t = %.3g s): the model's sphere contact does not hold "
+        printf("pole       the contact lay within a hole's opening at a pole for %.4g s of the "
+               "%.4g s run (first at t = %.4g s): the model's sphere contact does not hold "
                "there\n",
                rec->cap_time_s, rec->t_s, rec->cap_first_s);
     if (isfinite(rec->t_flip_s))

@@ -161,7 +161,9 @@ static int launch_parse(hands_args *a, int argc, char **argv)
         {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
          .help = "one row per launch: initial state, verdict, t_s, theta_final,\n"
                  "Jellett drift, theory's prediction, how it was decided (barrier gap,\n"
-                 "margin) and the flip time (- for stdout)"},
+                 "margin), the flip time, the time on a hole's opening at a pole\n"
+                 "(cap_time_s, cap_first_s), the fall back and the time above 90 deg\n"
+                 "(t_fall_s, inverted_time_s) (- for stdout)"},
         {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.patch_radius_span,
          .arg = "F", .min = 1.01, .max = 10,
          .def = "the design's tolerance contact.patch_radius, else 2",
