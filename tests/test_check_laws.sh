@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # One launch under several friction laws side by side (issue 25.5): tippe check
 # --friction viscous,patch runs tippe check's launch under each law and prints one
-# table (law, verdict, how decided, over 90 deg, end state, theta and energy lost
+# table (law, verdict, how decided, over 90 deg, back below, end state, theta and energy lost
 # at the end of the run), --json "laws" and --plot one figure of theta(t).
 # Each law's row is what tippe check --friction LAW alone gives (the same launch
 # and integration from the same command-line numbers: equal to 1e-12), its
@@ -53,8 +53,8 @@ check "the text: one table with a row per law" \
     python3 - "$tmp/laws.txt" <<'PY'
 import re, sys
 t = open(sys.argv[1]).read()
-assert re.search(r"^law +verdict +decided +over 90 deg +end state +at the end of the run: theta, energy lost$", t, re.M), t
-assert re.search(r"^viscous +tip +trapped at .* s +[0-9.]+ s +180\.0 deg .*%", t, re.M), t
+assert re.search(r"^law +verdict +decided +over 90 deg +back below +end state +at the end of the run: theta, energy lost$", t, re.M), t
+assert re.search(r"^viscous +tip +trapped at .* s +[0-9.]+ s +- +180\.0 deg .*%", t, re.M), t
 assert re.search(r"^patch +hang +observed at 60 s .*\(not proved\)", t, re.M), t
 assert "centre at rest (U = V = 0), contact slip" in t
 PY

@@ -386,16 +386,22 @@ static int check_laws(const hands_args *a, const tippe_design *d)
                r->ic.phi_dot, tippe_launch_slip_text(&r->top, &r->ic, NULL, slide, sizeof slide));
         printf("           the same launch under each friction law, t_end %g s, accuracy %s; "
                "energy E0 %.4g J\n\n", a->o.t_end, a->o.accuracy_name, l[0].run.E0);
-        printf("%-14s %-12s %-24s %-13s %-26s %s\n", "law", "verdict", "decided",
-               "over 90 deg", "end state", "at the end of the run: theta, energy lost");
+        printf("%-14s %-12s %-24s %-13s %-11s %-26s %s\n", "law", "verdict", "decided",
+               "over 90 deg", "back below", "end state",
+               "at the end of the run: theta, energy lost");
         for (int i = 0; i < n; i++) {
             const tippe_launch_record *rec = &l[i].check.rec;
-            char how[64], flip[32], end[64];
+            char how[64], flip[32], fall[32], end[64];
             snprintf(how, sizeof how, "%s at %.3g s", tippe_decision_name(rec->how), rec->t_s);
             if (isfinite(l[i].run.t_flip))
                 snprintf(flip, sizeof flip, "%.3g s", l[i].run.t_flip);
             else
                 snprintf(flip, sizeof flip, "never");
+            /* the patch law's fall back (drilling drains the spin) */
+            if (isfinite(l[i].run.t_flip) && isfinite(l[i].run.t_fall))
+                snprintf(fall, sizeof fall, "%.3g s", l[i].run.t_fall);
+            else
+                snprintf(fall, sizeof fall, "-");
             if (rec->verdict == TIPPE_VERDICT_BOUNDED || rec->how == TIPPE_DECIDED_ROLLING)
                 snprintf(end, sizeof end, "rolls, %.1f .. %.1f deg", rec->theta_lo_rad * deg,
                          rec->theta_hi_rad * deg);
@@ -407,9 +413,9 @@ static int check_laws(const hands_args *a, const tippe_design *d)
                 snprintf(end, sizeof end, "%.1f deg", rec->theta_final_rad * deg);
             else
                 snprintf(end, sizeof end, "-");
-            printf("%-14s %-12s %-24s %-13s %-26s %.1f deg at %.4g s, %.1f %% (%.3g J)\n",
+            printf("%-14s %-12s %-24s %-13s %-11s %-26s %.1f deg at %.4g s, %.1f %% (%.3g J)\n",
                    tippe_friction_law_name(o[i].law), tippe_verdict_name(rec->verdict), how, flip,
-                   end, l[i].run.last.theta * deg, l[i].run.last.t,
+                   fall, end, l[i].run.last.theta * deg, l[i].run.last.t,
                    100 * tippe_sweep_check_law_energy_lost(&l[i]), l[i].run.last.D);
         }
         printf("\n");
