@@ -31,11 +31,13 @@ static int check_parse(hands_args *a, int argc, char **argv)
                  "path, as tippe simulate draws them; .png, .svg or .pdf"},
         {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.patch_radius_span,
          .arg = "F", .min = 1.01, .max = 10,
-         .def = "the design's tolerance contact.patch_radius, else 2",
-         .help = "patch law: the radius sensitivity's reruns at a/F and a F"},
+         .def = "the design's tolerance, else 2",
+         .help = "patch law: the radius sensitivity's reruns at a/F and a F, a the\n"
+                 "patch radius used (Hertz's or --patch-mm)"},
         {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,
          .value = &a->no_radius_sensitivity,
-         .help = "patch law: skip the launch's reruns at 1/F and F times the patch radius\n"
+         .help = "patch law: skip the launch's reruns at 1/F and F times the patch\n"
+                 "radius\n"
                  "(by default the outcome is given at all three, docs/dynamics.md)"},
         {NULL},
     };
@@ -45,9 +47,9 @@ static int check_parse(hands_args *a, int argc, char **argv)
                  .about = "One realistic hand launch of the design's top with the weight at Z2:\n"
                           "the central values of tippe launch's distributions (the median tilt,\n"
                           "steady precession, the centre at rest: its contact point slips, at\n"
-                          "the speed printed) at the given spin, integrated to its outcome. Prints the outcome beside the zone the calculator (tippe\n"
-                          "sweep) puts Z2 in and Theorem 5.1's prediction for the launch's\n"
-                          "Jellett invariant.",
+                          "the speed printed) at the given spin, integrated to its outcome. Prints\n"
+                          "the outcome beside the zone the calculator (tippe sweep) puts Z2 in\n"
+                          "and Theorem 5.1's prediction for the launch's Jellett invariant.",
                  .after = "--friction LAW,LAW,... (up to 4) runs the same launch under each law\n"
                           "and prints one table: the verdict, how and when it was decided, when\n"
                           "theta first passed 90 deg, the end state, and theta and the share of\n"

@@ -104,8 +104,9 @@ static int map_parse(hands_args *a, int argc, char **argv)
          .help = "one row per cell: counts of each outcome, theory agreement"},
         {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.patch_radius_span,
          .arg = "F", .min = 1.01, .max = 10,
-         .def = "the design's tolerance contact.patch_radius, else 2",
-         .help = "patch law: the radius sensitivity's reruns at a/F and a F"},
+         .def = "the design's tolerance, else 2",
+         .help = "patch law: the radius sensitivity's reruns at a/F and a F, a the\n"
+                 "patch radius used (Hertz's or --patch-mm)"},
         {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,
          .value = &a->no_radius_sensitivity,
          .help = "patch law: skip the reruns of every cell's launches at 1/F and F times\n"
