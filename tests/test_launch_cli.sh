@@ -193,6 +193,8 @@ refused "CSV in a missing directory" "its directory does not exist" \
     launch "$m12" --z2 10 --csv "$tmp/none/out.csv"
 refused "map plot format" "unsupported plot format" \
     map "$m12" --z2 10:15:2 --spin 5:20rev/s:2 --plot "$tmp/out.gif" --csv "$tmp/out.csv"
+refused "--radius-span without the patch law" "--radius-span belongs to the patch law" \
+    check "$m12" --z2 10 --radius-span 3
 refused "map grid" "FROM:TO:STEPS" map "$m12" --z2 10:15 --spin 5:20rev/s:2 --csv "$tmp/out.csv"
 refused "map Z2 beyond the travel" "outside the design's travel" \
     map "$m12" --z2 10:25:2 --spin 5:20rev/s:2 -n 1 --plot "$tmp/out.png" --csv "$tmp/out.csv"

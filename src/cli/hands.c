@@ -233,6 +233,9 @@ int hands_friction_apply(const char *verb, hands_friction *f, tippe_launch_optio
         return tippe_cli_usage_error(verb, "--%s belongs to the patch law: give --friction "
                                            "patch",
                                      f->patch_mm > 0 ? "patch-mm" : "table");
+    if (!has_law(f, TIPPE_FRICTION_PATCH) && o->patch_radius_span > 0) /* check, launch, map */
+        return tippe_cli_usage_error(verb, "--radius-span belongs to the patch law (its radius "
+                                           "sensitivity): give --friction patch");
     if (f->table && tippe_contact_table_surface(f->table, &E, &nu))
         return tippe_cli_usage_error(verb, "--table '%s': expected " TIPPE_CONTACT_TABLES,
                                      f->table);
