@@ -20,7 +20,7 @@ from selenium.webdriver.support.ui import WebDriverWait  # noqa: E402
 tippe = sys.argv[1]
 out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(REPO, "docs", "img", "serve.png")
 opts = Options()
-for arg in ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1200,1180",
+for arg in ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1200,1500",
             "--hide-scrollbars", "--force-device-scale-factor=1"]:
     opts.add_argument(arg)
 opts.binary_location = "/usr/bin/chromium"
@@ -33,7 +33,8 @@ with Server(tippe) as srv:
         box = d.find_element(By.ID, "f-parts_0__print_infill")
         box.send_keys(Keys.CONTROL, "a")
         box.send_keys("0.4")
-        wait.until(lambda d: d.find_element(By.ID, "verdict").text == "3-in-1: yes")
+        # the build sheet's verdict, which arrives after the sweep
+        wait.until(lambda d: d.execute_script("return state.verdict !== null"))
         time.sleep(0.5)
         d.execute_script("pointAt(9.5)")
         d.find_element(By.ID, "check").click()

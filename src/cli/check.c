@@ -29,16 +29,7 @@ static int check_parse(hands_args *a, int argc, char **argv)
         {.name = "plot", .kind = TIPPE_CLI_STRING, .value = &a->plot, .arg = "FILE",
          .help = "theta, spin and contact speed against time and the (phi_dot, theta, n)\n"
                  "path, as tippe simulate draws them; .png, .svg or .pdf"},
-        {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.patch_radius_span,
-         .arg = "F", .min = 1.01, .max = 10,
-         .def = "the design's tolerance, else 2",
-         .help = "patch law: the radius sensitivity's reruns at a/F and a F, a the\n"
-                 "patch radius used (Hertz's or --patch-mm)"},
-        {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,
-         .value = &a->no_radius_sensitivity,
-         .help = "patch law: skip the launch's reruns at 1/F and F times the patch\n"
-                 "radius\n"
-                 "(by default the outcome is given at all three, docs/dynamics.md)"},
+        HANDS_RADIUS_OPTIONS(a, "the launch"),
         {NULL},
     };
     hands_verb v = {

@@ -20,6 +20,20 @@ struct cJSON;
 /* Largest launch spin (cli.h; a hand launch's spin is its size, >= 0). */
 #define HANDS_SPIN_MAX_RAD_S TIPPE_CLI_SPIN_MAX_RAD_S
 
+/* The patch law's radius sensitivity options, the same in check, launch and map
+ * (docs/dynamics.md, "Radius sensitivity"), for the hands_args A; WHAT names what is
+ * run again ("the launch", "every cell's launches"). */
+#define HANDS_RADIUS_OPTIONS(A, WHAT)                                                          \
+    {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &(A)->o.patch_radius_span,     \
+     .arg = "F", .min = 1.01, .max = 10, .def = "the design's tolerance, else 2",             \
+     .help = "patch law: the radius sensitivity's reruns at a/F and a F, a the\n"              \
+             "patch radius used (Hertz's or --patch-mm)"},                                    \
+    {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,                                  \
+     .value = &(A)->no_radius_sensitivity,                                                     \
+     .help = "patch law: skip the reruns of " WHAT "\n"                                   \
+             "at 1/F and F times the patch radius (two thirds of the work; by\n"             \
+             "default the outcome is given at all three radii, docs/dynamics.md)"}
+
 /* The friction options (--friction, --patch-mm, --table, --mu-c, --slip-scale,
  * --mu): tippe launch, map, check and build read them alike. */
 enum { HANDS_MAX_LAWS = 4 };
@@ -58,7 +72,7 @@ typedef struct {
                                 * check one value (from = to) */
     long n, threads, seed;
     int json;
-    int no_radius_sensitivity; /* check, launch: --no-radius-sensitivity */
+    int no_radius_sensitivity; /* check, launch, map: --no-radius-sensitivity */
     const char *csv, *plot, *accuracy, *stepper;
     hands_friction fr;         /* --friction and its coefficients */
     tippe_launch_options o;    /* the distributions and the model */

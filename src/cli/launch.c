@@ -164,16 +164,7 @@ static int launch_parse(hands_args *a, int argc, char **argv)
                  "margin), the flip time, the time on a hole's opening at a pole\n"
                  "(cap_time_s, cap_first_s), the fall back and the time above 90 deg\n"
                  "(t_fall_s, inverted_time_s) (- for stdout)"},
-        {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.patch_radius_span,
-         .arg = "F", .min = 1.01, .max = 10,
-         .def = "the design's tolerance, else 2",
-         .help = "patch law: the radius sensitivity's reruns at a/F and a F, a the\n"
-                 "patch radius used (Hertz's or --patch-mm)"},
-        {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,
-         .value = &a->no_radius_sensitivity,
-         .help = "patch law: skip the reruns of the same launches at 1/F and F times\n"
-                 "the patch radius (by default the summary is given at all three, which\n"
-                 "triples the work; docs/dynamics.md)"},
+        HANDS_RADIUS_OPTIONS(a, "the same launches"),
         {NULL},
     };
     hands_verb v = {

@@ -102,16 +102,7 @@ static int map_parse(hands_args *a, int argc, char **argv)
                  "tippe sweep and the thresholds n-, n*"},
         {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
          .help = "one row per cell: counts of each outcome, theory agreement"},
-        {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &a->o.patch_radius_span,
-         .arg = "F", .min = 1.01, .max = 10,
-         .def = "the design's tolerance, else 2",
-         .help = "patch law: the radius sensitivity's reruns at a/F and a F, a the\n"
-                 "patch radius used (Hertz's or --patch-mm)"},
-        {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,
-         .value = &a->no_radius_sensitivity,
-         .help = "patch law: skip the reruns of every cell's launches at 1/F and F times\n"
-                 "the patch radius (by default each cell says how many launches change\n"
-                 "outcome between them, which triples the work; docs/dynamics.md)"},
+        HANDS_RADIUS_OPTIONS(a, "every cell's launches"),
         {NULL},
     };
     hands_verb v = {
@@ -351,9 +342,8 @@ static cJSON *cells_json(const map_grid *g)
 
 /* {robust, changed, cells_changed, runs: [{factor, patch_mm, ran}]}; null when not run
  * (another law, or --no-radius-sensitivity). */
-static cJSON *radius_json(const hands_args *a, const map_grid *g)
+static cJSON *radius_json(const map_grid *g)
 {
-    (void)a;
     if (!g->radius_runs)
         return cJSON_CreateNull();
     cJSON *o = cJSON_CreateObject();
@@ -395,7 +385,7 @@ static int map_json(const hands_args *a, const tippe_design *d, const map_grid *
         cJSON_AddItemToObject(o, "distribution", tippe_launch_options_json(&a->o, 1));
         cJSON_AddItemToObject(o, "zones", zones_json(d, g));
         cJSON_AddItemToObject(o, "cells", cells_json(g));
-        cJSON_AddItemToObject(o, "radius_sensitivity", radius_json(a, g));
+        cJSON_AddItemToObject(o, "radius_sensitivity", radius_json(g));
     }
     return tippe_cli_print_json(a->verb, o);
 }

@@ -54,34 +54,27 @@ const char *tippe_dynamics_friction_text(const tippe_dynamics_model *m, char *bu
         snprintf(buf, size, "Coulomb mu_c %g, sliding and sticking (sliding regularised below "
                  "%g m/s)", m->mu_c, vs);
         break;
-    case TIPPE_FRICTION_PATCH:
-        if (m->rolling_arm_m > 0) {
-            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
-                     "(%s), rolling resistance arm %g um, regularised below %g m/s", m->mu_c,
-                     tippe_dynamics_patch_radius(m) * 1e3,
-                     m->patch_radius_m > 0 ? "given" : "Hertz at m g", m->rolling_arm_m * 1e6,
-                     vs);
-            break;
+    case TIPPE_FRICTION_PATCH: {
+        /* the radius: given, or Hertz's from E* (known once the model has its top: m g
+         * and R); how it moves in the run; the rolling couple when on */
+        const double a_mm = tippe_dynamics_patch_radius(m) * 1e3;
+        char where[64], modulus[32] = "", roll[64] = "";
+        if (m->patch_radius_m > 0 || !(m->patch_E_star_pa > 0)) {
+            snprintf(where, sizeof where, "a patch of radius %g mm at m g", a_mm);
+        } else {
+            snprintf(modulus, sizeof modulus, "E* %.3g GPa, ", m->patch_E_star_pa * 1e-9);
+            if (a_mm > 0)
+                snprintf(where, sizeof where, "Hertz's patch, radius %.4g mm at m g", a_mm);
+            else
+                snprintf(where, sizeof where, "Hertz's patch");
         }
-        if (m->patch_radius_m > 0 || !(m->patch_E_star_pa > 0))
-            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on a patch of radius %g mm "
-                     "at m g (Hertz pressure, %s), regularised below %g m/s", m->mu_c,
-                     m->patch_radius_m * 1e3,
-                     m->patch_radius_fixed ? "held" : "following the load as Rn^(1/3)", vs);
-        else
-        {
-            /* the radius when the model has its top (m g and R), else the modulus alone */
-            char radius[48] = "";
-            if (tippe_dynamics_patch_radius(m) > 0)
-                snprintf(radius, sizeof radius, ", radius %.4g mm at m g",
-                         tippe_dynamics_patch_radius(m) * 1e3);
-            snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on Hertz's patch%s (E* %.3g "
-                     "GPa, Hertz pressure, %s), regularised below %g m/s",
-                     m->mu_c, radius, m->patch_E_star_pa * 1e-9,
-                     m->patch_radius_fixed ? "held at m g's" : "following the load as Rn^(1/3)",
-                     vs);
-        }
+        if (m->rolling_arm_m > 0)
+            snprintf(roll, sizeof roll, ", rolling resistance arm %g um", m->rolling_arm_m * 1e6);
+        snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on %s (%sHertz pressure, %s)%s, "
+                 "regularised below %g m/s", m->mu_c, where, modulus,
+                 m->patch_radius_fixed ? "held" : "following the load as Rn^(1/3)", roll, vs);
         break;
+    }
     case TIPPE_FRICTION_COULOMB_CREEP:
         snprintf(buf, size, "Coulomb mu_c %g regularised below %g m/s, no sticking (creep)",
                  m->mu_c, vs);
