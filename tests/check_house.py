@@ -29,7 +29,7 @@ HEADER_LAYER = {"base": 0, "design": 1, "physics": 2, "profile": 3, "scenario": 
                 "serve": 7}
 # The names each folder's objects may export (after tippe_).
 OWNS = {
-    "base": ["error", "gsl", "report", "progress", "json"],
+    "base": ["error", "gsl", "report", "progress", "json", "file"],
     "design": ["design", "tolerance", "tolerances", "materials", "moments", "print", "ball",
                "shell", "tube", "torus", "gcode"],
     "physics": ["theory", "dynamics", "launch", "group", "verdict", "decision", "friction",

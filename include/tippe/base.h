@@ -35,6 +35,23 @@ int tippe_error_set(tippe_error *err, int code, const char *fmt, ...)
  * GSL's return codes itself (GSL's default handler would abort the process). */
 void tippe_gsl_errors_as_codes(void);
 
+/* ==== files read ==== */
+/* The whole of an input file in memory (NUL-terminated; *out_len bytes before
+ * the NUL; the caller frees *out): a regular file only (a FIFO, a device or a
+ * directory is refused without blocking), at most max_bytes (refused above),
+ * what naming the kind of file in messages ("design", "G-code"). Every file
+ * the library reads comes through here. */
+int tippe_file_read(const char *path, size_t max_bytes, const char *what, char **out,
+                    size_t *out_len, tippe_error *err);
+
+/* A check made before any input file is read: 0 to read it, or a status with
+ * err set to refuse it. The command uses it to refuse an output that names a
+ * file the run reads however the file is reached (a design's materials table, a
+ * spec's catalogue or base design, a part's G-code). NULL (the default): every
+ * file is read. The check may be called from several threads at once. */
+typedef int (*tippe_file_read_check)(const char *path, const char *what, tippe_error *err);
+void tippe_file_set_read_check(tippe_file_read_check check);
+
 /* ==== from tippe/report.h ==== */
 /* Report: output files that appear whole or not at all, and never
  * cost a user an old file.

@@ -25,47 +25,22 @@ tippe_json_reader *tippe_json_reader_new(const char *file, tippe_error *err,
     return r;
 }
 
-static tippe_json_read_check read_check;
 
-void tippe_json_set_read_check(tippe_json_read_check check)
-{
-    read_check = check;
-}
-
+/* Through base's reader: regular files only, capped (src/base/file.c). */
 static int read_text(const char *path, int max_mib, const char *what, char **out,
                      tippe_error *err)
 {
-    size_t max_bytes = (size_t)max_mib << 20;
-    if (read_check) {
-        int rc = read_check(path, what, err);
-        if (rc)
-            return rc;
-    }
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot open: %s", path, strerror(errno));
-    char *buf = malloc(max_bytes + 1);
-    if (!buf) {
-        fclose(f);
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
-    }
-    /* One byte more than allowed tells a file at the limit from a larger one. */
-    size_t n = fread(buf, 1, max_bytes + 1, f);
-    int bad = ferror(f);
-    fclose(f);
-    if (bad || n > max_bytes || memchr(buf, '\0', n)) {
-        free(buf);
-        if (bad)
-            return tippe_error_set(err, TIPPE_EINPUT, "%s: read error", path);
-        if (n > max_bytes)
-            return tippe_error_set(err, TIPPE_EINPUT, "%s: larger than %d MiB: not a %s file",
-                                   path, max_mib, what);
+    size_t len = 0;
+    int rc = tippe_file_read(path, (size_t)max_mib << 20, what, out, &len, err);
+    if (rc)
+        return rc;
+    if (memchr(*out, '\0', len)) {
+        free(*out);
+        *out = NULL;
         /* cJSON reads a C string: a NUL would silently end the text there. */
         return tippe_error_set(err, TIPPE_EINPUT, "%s: contains a NUL byte: not a JSON text",
                                path);
     }
-    buf[n] = '\0';
-    *out = buf;
     return TIPPE_OK;
 }
 

@@ -57,15 +57,6 @@ int tippe_json_load(const tippe_json_reader *r, int max_mib, const char *what, c
 int tippe_json_parse_text(const tippe_json_reader *r, const char *text, size_t len,
                           int max_mib, const char *what, cJSON **root);
 
-/* A check made before any JSON file is read: 0 to read it, or a status with err
- * set to refuse it. The command uses it to refuse an output that names a file
- * the run reads however the file is reached (a design's materials table, a
- * spec's catalogue or base design, a scenario's design). what is the kind of
- * file ("materials", "catalogue"). NULL (the default): every file is read.
- * The check may be called from several threads at once. */
-typedef int (*tippe_json_read_check)(const char *path, const char *what, tippe_error *err);
-void tippe_json_set_read_check(tippe_json_read_check check);
-
 /* "FILE: PATH: message" (or "FILE: message" when path is NULL or ""), with
  * the override that set PATH or a parent of it appended. Returns TIPPE_EINPUT. */
 int tippe_json_fail(const tippe_json_reader *r, const char *path, const char *fmt, ...)

@@ -269,7 +269,7 @@ int tippe_cli_run(const tippe_cli_verb *v, int argc, char **argv)
 {
     tippe_cli_signals_install(v->name);
     tippe_report_set_begin();
-    tippe_json_set_read_check(refuse_read_output);
+    tippe_file_set_read_check(refuse_read_output);
     int status = v->run(argc, argv);
     /* Stdout is an output like the others: a full disk or a closed pipe there
      * is a failure, and the files of a failed run are not committed. */

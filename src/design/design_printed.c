@@ -205,6 +205,13 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     part *p = &d->parts[i];
     char pth[64], file[2048];
     snprintf(pth, sizeof pth, "parts[%d].print.gcode", i);
+    /* A design from memory (tippe serve's requests) names no file on disk, as
+     * for its materials table (issue 36: the path read any file of the server). */
+    if (d->materials_dir)
+        return tippe_json_fail(c, pth,
+                               "a design sent as text names no file: its G-code cannot be "
+                               "read from the server's disk (slice and weigh with the "
+                               "command, tippe slice or tippe eval, instead)");
     if (p->gcode[0] == '/') {
         snprintf(file, sizeof file, "%s", p->gcode);
     } else {

@@ -628,35 +628,12 @@ done:
 int tippe_gcode_read(const char *path, const tippe_gcode_options *opt, tippe_gcode_body *out,
                      tippe_error *err)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot read: %s", path, strerror(errno));
-    size_t cap = 1 << 20, len = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        size_t got = fread(buf + len, 1, cap - len, f);
-        len += got;
-        if (len < cap)
-            break;
-        char *b2 = realloc(buf, 2 * cap);
-        if (!b2) {
-            free(buf);
-            buf = NULL;
-            break;
-        }
-        buf = b2;
-        cap *= 2;
-    }
-    int bad = ferror(f);
-    int e = errno;
-    fclose(f);
-    if (!buf)
-        return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", path);
-    if (bad) {
-        free(buf);
-        return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot read: %s", path, strerror(e));
-    }
-    int rc = tippe_gcode_parse_buffer(buf, len, path, opt, out, err);
+    char *buf = NULL;
+    size_t len = 0;
+    int rc = tippe_file_read(path, (size_t)TIPPE_GCODE_MAX_MIB << 20, "G-code", &buf, &len, err);
+    if (rc)
+        return rc;
+    rc = tippe_gcode_parse_buffer(buf, len, path, opt, out, err);
     free(buf);
     return rc;
 }
