@@ -36,7 +36,7 @@ static inline tippe_dynamics_model fig14(double mu) { return unit_top(0.5, 0.55,
 static inline tippe_top m12_ball(double s)
 {
     tippe_top t = {0.0768353146 * s * s * s, 0.025 * s, 0.00219013874 * s,
-                   1.9053487e-05 * pow(s, 5), 1.77647865e-05 * pow(s, 5), 1};
+                   1.9053487e-05 * pow(s, 5), 1.77647865e-05 * pow(s, 5), 1, {0.0, 0.0}};
     return t;
 }
 
@@ -48,7 +48,7 @@ static inline tippe_top m12_ball(double s)
 static inline tippe_top cohen_ball(double eps)
 {
     const double m = 0.015, R = 0.025, I = 0.4 * m * R * R;
-    tippe_top t = {m, R, eps, I, I, -1};
+    tippe_top t = {m, R, eps, I, I, -1, {0.0, 0.0}};
     return t;
 }
 

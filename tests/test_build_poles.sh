@@ -38,10 +38,12 @@ for s in o["settings"]:
     n += m["start"] is not None
 assert n >= 1  # the hand launch's 3.9 deg tilt is within 12.7 deg
 PY
-check "m12: the sheet warns that the contact is INVALID" \
-    json_ok "$tmp/m.json" 'any(w.startswith("Contact INVALID in the launch checks") for w in o["warnings"])'
-check "m12: ... and so does stderr" grep -q "Contact INVALID in the launch checks" "$tmp/m.err"
-check "m12: the Markdown's launch cell says so" grep -q "contact INVALID: starts" "$tmp/m/m12-setscrew-build.md"
+# issue 35: the launch checks follow the rim: said, not flagged INVALID
+check "m12: the sheet says the launch checks stand on the rim" \
+    json_ok "$tmp/m.json" 'any(w.startswith("On the rim in the launch checks") for w in o["warnings"]) and not any("INVALID" in w for w in o["warnings"])'
+check "m12: ... and so does stderr" grep -q "On the rim in the launch checks" "$tmp/m.err"
+check "m12: the Markdown's launch cell says so" grep -q "starts on the hole's rim at +z.*(modelled)" "$tmp/m/m12-setscrew-build.md"
+check "m12: no 'contact INVALID' on the sheet" bash -c '! grep -q "contact INVALID" "$1"' _ "$tmp/m/m12-setscrew-build.md"
 check "m12: the verdict says the model does not hold at the poles" \
     json_ok "$tmp/m.json" 'o["model_holds_at_poles"] is False'
 check "m12: ... in the verdict's sentence too" grep -q "^It is .* But a hole opens at a pole" "$tmp/m/m12-setscrew-build.md"

@@ -133,7 +133,7 @@ static void test_group_boundaries(void)
                   "%s side %d: b %g c %g", B[i].name, side, c.b, c.c);
             CHECK(c.group == B[i].g1 || c.group == B[i].g2, "%s side %d: group %s", B[i].name,
                   side, tippe_group_name(c.group));
-            tippe_top top = {1.0, 1.0, B[i].e, k, 1.0, 0};
+            tippe_top top = {1.0, 1.0, B[i].e, k, 1.0, 0, {0.0, 0.0}};
             tippe_theory_thresholds th;
             tippe_error err;
             CHECK(tippe_theory_compute_thresholds(&top, 1.0, &th, &err) == TIPPE_OK, "%s: %s",

@@ -578,7 +578,7 @@ static void test_refusals(void)
     od.density_g_cm3 = 1.24;
     expect_refusal(&b, &od, "E without a filament diameter", "test.gcode:3:", "diameter");
     CHECK(tippe_gcode_read("/nonexistent/dir/x.gcode", &o, &body, &err) == TIPPE_EINPUT &&
-              strstr(err.msg, "/nonexistent/dir/x.gcode") && strstr(err.msg, "cannot read"),
+              strstr(err.msg, "/nonexistent/dir/x.gcode") && strstr(err.msg, "cannot open"),
           "an unreadable file: '%s'", err.msg);
 
     /* the part's checks */

@@ -233,7 +233,7 @@ static void test_validation(void)
      * of a sphere of radius 15 mm (not 7.5 mm: a 6 g ball of radius 7.5 mm has at most
      * I = 2/3 m R^2 = 2.25e-7 kg m^2, a thin shell, below I1 = 8e-7), mu 0.3, patch 0.5 mm, spin 180 rad/s about the
      * symmetry axis from a small tilt (0.1 rad; their exact initial tilt: see the docs) */
-    const tippe_top lg = {0.006, 0.015, 0.003, 8e-7, 7e-7, 1};
+    const tippe_top lg = {0.006, 0.015, 0.003, 8e-7, 7e-7, 1, {0.0, 0.0}};
     double th, cpu;
     long ev;
     /* their Contensou radius is a constant of the model: held fixed here */
@@ -252,7 +252,7 @@ static void test_validation(void)
         const double t2 = flip_time(&m2, &ic, 3.0, &th, &ev, &cpu);
         printf("    patch %.2f mm: theta = pi/2 at %.3f s\n", m2.patch_radius_m * 1e3, t2);
     }
-    const tippe_top lg75 = {0.006, 0.0075, 0.003, 8e-7, 7e-7, 1};
+    const tippe_top lg75 = {0.006, 0.0075, 0.003, 8e-7, 7e-7, 1, {0.0, 0.0}};
     tippe_dynamics_model m75 = patch_model(lg75, 0.3, 0.5e-3);
     m75.patch_radius_fixed = 1;
     printf("    radius 7.5 mm instead (inertias as given): theta = pi/2 at %.3f s\n",

@@ -19,9 +19,13 @@ check "eval says which pole the top stands on upright" grep -q \
     "^pole     +z: the opening of 'hole' (11.00 mm): tilted less than 12.7 deg .*the pole it stands on at theta = 0" "$tmp/m12.txt"
 # check: the M12's hand launch (3.9 deg) starts within its resting pole's opening, and a flip
 # ends on the other pole's (inverted, 0 deg from it); the blind ball's inverted pole is whole
-"$tippe" check designs/m12-setscrew.json --z2 10 --json >"$tmp/c10.json"
+# (the sphere's model, --sphere-contact, tips it onto the -z pole; on its rims it hangs)
+"$tippe" check designs/m12-setscrew.json --z2 10 --sphere-contact --json >"$tmp/c10.json"
 check "check: a flip starts and ends on the M12's openings" json_ok "$tmp/c10.json" \
     "o['verdict'] == 'tip' and o['on_polar_cap']['start'] == '+z' and o['on_polar_cap']['end'] == '-z'"
+"$tippe" check designs/m12-setscrew.json --z2 10 --json >"$tmp/c10r.json"
+check "check on the rims: starts on +z, the verdict observed (J changes on a rim)" json_ok "$tmp/c10r.json" \
+    "o['on_polar_cap']['start'] == '+z' and o['decided_by'] in ('observed', 'energy_cone', 'trapped')"
 "$tippe" check designs/m12-setscrew.json --z2 10 >"$tmp/c10.txt"
 check "check says so in words" grep -q "^pole       the launch starts 3.9 deg from the +z pole" "$tmp/c10.txt"
 # sweep names the open poles too, in words and JSON (issue 25.7: eval, sweep, check, the sheet)

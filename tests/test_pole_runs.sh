@@ -21,10 +21,10 @@ cat >"$tmp/sc.json" <<JSON
 JSON
 "$tippe" simulate "$tmp/sc.json" --csv "$tmp/traj.csv" --sample-dt 0.0005 >"$tmp/sim.txt" 2>"$tmp/sim.err"
 check "simulate runs the M12 scenario" test -s "$tmp/traj.csv"
-check "simulate reports INVALID contact on a pole" grep -q "^pole      INVALID contact for" "$tmp/sim.txt"
+check "simulate reports the time on a rim" grep -q "^rim       on a hole's rim for" "$tmp/sim.txt"
 python3 - "$tmp/sim.txt" "$tmp/traj.csv" "$alpha" <<'PY' && ok || bad "simulate: the time on the rims is not the trajectory's"
 import csv, math, re, sys
-said = float(re.search(r"INVALID contact for ([0-9.e+-]+) s", open(sys.argv[1]).read()).group(1))
+said = float(re.search(r"on a hole's rim for ([0-9.e+-]+) s", open(sys.argv[1]).read()).group(1))
 alpha = float(sys.argv[3])
 rows = [r for r in csv.reader(l for l in open(sys.argv[2]) if not l.startswith("#"))]
 head, rows = rows[0], rows[1:]
@@ -59,8 +59,10 @@ touched = sum(r["cap_first_s"] != "" for r in rows)
 assert starts >= 1 and starts <= touched == o["on_polar_cap"] <= o["n"], (starts, touched, o["on_polar_cap"])
 assert all(r["cap_first_s"] == "0" for r in rows if float(r["tilt_rad"]) < alpha)
 PY
-check "launch: the text says which launches are INVALID" \
-    bash -c '"$1" launch designs/m12-setscrew.json --z2 10 -n 5 2>/dev/null | grep -q "^pole       INVALID for"' _ "$tippe"
+check "launch: the text says which launches stood on a rim" \
+    bash -c '"$1" launch designs/m12-setscrew.json --z2 10 -n 5 --t-end 20 2>/dev/null | grep -q "^rim        [0-9]* of 5 launches stood on a hole.s rim"' _ "$tippe"
+check "launch --sphere-contact: the text says which launches are INVALID" \
+    bash -c '"$1" launch designs/m12-setscrew.json --z2 10 -n 5 --sphere-contact 2>/dev/null | grep -q "^pole       INVALID for"' _ "$tippe"
 
 # --- no opening at a pole: nothing -------------------------------------------
 "$tippe" launch designs/shell-rod-iron.json --z2 5 -n 5 --json >"$tmp/r.json" 2>/dev/null

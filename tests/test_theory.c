@@ -80,7 +80,7 @@ static const int n_picks = (int)(sizeof picks / sizeof picks[0]);
 static tippe_top unit_top(double k, double e)
 {
     /* m = g = C = R = 1 as in the paper's Figures 12-14 */
-    tippe_top t = {1.0, 1.0, e, k, 1.0, e > 0 ? -1 : 0};
+    tippe_top t = {1.0, 1.0, e, k, 1.0, e > 0 ? -1 : 0, {0.0, 0.0}};
     return t;
 }
 
@@ -303,7 +303,7 @@ static void test_intermediate_states(void)
     const double g = 9.81;
     for (int i = 0; i < n_picks; i++) {
         double k = picks[i].k, e = picks[i].e;
-        tippe_top t = {0.06, 0.025, e * 0.025, k * 1.2e-5, 1.2e-5, -1};
+        tippe_top t = {0.06, 0.025, e * 0.025, k * 1.2e-5, 1.2e-5, -1, {0.0, 0.0}};
         for (double th = 0.2; th < 3.1; th += 0.45) {
             tippe_theory_state s, r;
             tippe_error err = {0};
@@ -600,7 +600,7 @@ static void test_predict(void)
     for (size_t i = 0; i < sizeof pcases / sizeof pcases[0]; i++) {
         const pcase *pc = &pcases[i];
         /* SI top: 50 g, R = 20 mm, C = 8e-6 kg m^2 */
-        tippe_top t = {0.05, 0.02, pc->e * 0.02, pc->k * 8e-6, 8e-6, -1};
+        tippe_top t = {0.05, 0.02, pc->e * 0.02, pc->k * 8e-6, 8e-6, -1, {0.0, 0.0}};
         tippe_theory_thresholds th;
         tippe_error err = {0};
         tippe_theory_compute_thresholds(&t, g, &th, &err);

@@ -27,6 +27,12 @@ typedef struct {
      * design's +z axis: +1 above, -1 below, 0 at the centre. That side is the one
      * that rests on the table at theta = 0. Informational only. */
     int com_side;
+    /* The outline the table meets where it is not the sphere (issue 35): the
+     * half-angle of the flat cut at the pole down at theta = 0 ([0]) and at the
+     * other pole ([1]) by a hole's opening (tippe_design_polar_caps), rad; 0 where
+     * the sphere is whole. The dynamics rolls the sphere cut flat there (its rim
+     * radius R sin(half-angle)); the theory of the paper, the sphere. */
+    double rim_half_angle_rad[2];
 } tippe_top;
 
 /* Gravity used wherever a user gives none (scenarios, classify, launches), m/s^2. */

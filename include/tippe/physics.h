@@ -355,6 +355,11 @@ const char *tippe_dynamics_stepper_used(tippe_friction_law law, const char *step
 
 /* The reason a patch-law verdict is not proved (tippe_dynamics_result.unproved_reason). */
 #define TIPPE_PATCH_UNPROVED_REASON "J changes under drilling friction: not proved"
+/* The reason a verdict of a run whose contact stood on a rim is not proved: the rim's
+ * friction has a lever arm about the axis, so J changes there, and a motion that may
+ * come back to the rim has no well of V(theta; J) to be trapped in (docs/dynamics.md,
+ * "The contact on a rim"). */
+#define TIPPE_RIM_UNPROVED_REASON "J changes while the top stands on a rim: not proved"
 
 /* Whether the model's friction is zero (no dissipation at all). */
 int tippe_dynamics_frictionless(const tippe_dynamics_model *model);
@@ -420,6 +425,9 @@ typedef struct {
     double patch_radius;    /* m, the contact patch's radius at this Rn (patch law; 0 else) */
     double drill_torque;    /* N m, the drilling couple about the table's normal (patch law;
                                0 else): what changes J (docs/dynamics.md) */
+    int rim;                /* where the contact is: 0 the sphere; 1 the rim of the opening
+                               at the pole down at theta = 0, 2 at the other pole
+                               (tippe_dynamics_options.cap_half_angle_rad) */
 } tippe_dynamics_sample;
 
 /* Called for each sample; a nonzero return stops the run (TIPPE_ECOMPUTE,
@@ -450,9 +458,17 @@ typedef struct {
     long max_steps;
     /* Where the surface is not the sphere (tippe_design_polar_caps): the half-
      * angle of a hole's opening at the pole down at theta = 0 ([0]) and at the
-     * other pole ([1]), rad; 0 (the default) where the sphere is whole. The run
-     * records the time its contact spends within them (cap_time_s). */
+     * other pole ([1]), rad, below pi/2; 0 (the default) where the sphere is whole.
+     * The run records the time its contact spends within them (cap_time_s). The
+     * contact itself follows the top's outline (tippe_top.rim_half_angle_rad): the
+     * sphere cut flat at each opening, so a top tilted less than the half-angle on
+     * that pole stands on the opening's rim (radius R sin(half-angle)), and exactly
+     * upright on the whole ring (docs/dynamics.md, "The contact on a rim"), under
+     * every law. */
     double cap_half_angle_rad[2];
+    /* 1: the contact stays on the sphere even within an opening (the model before
+     * issue 35, kept to compare: the run then only records the time spent there) */
+    int sphere_contact_only;
 } tippe_dynamics_options;
 
 /* Trajectory samples kept in memory (simulate's and check's --csv and --plot): pass
@@ -529,6 +545,13 @@ typedef struct {
      * proves the well and the range [theta_lo_rad, theta_hi_rad] but not the end
      * state: end_state_proved is 0 (1 for viscous and creeping friction). */
     long stick_events, slip_events;
+    /* Switches of the contact between the sphere and a rim (an event each, located
+     * to 1e-13 of the step), and the spin at the first time the contact left a rim
+     * it was launched on (rad/s; NAN if it was not launched on one or never left):
+     * what the rim drained. */
+    long rim_switches;
+    double spin_leaving_rim_rad_s;
+    int rim_touched;             /* the contact stood on a rim at some time */
     double rolling_time_s;
     int rolling;
     int end_state_proved;
@@ -627,6 +650,9 @@ typedef struct {
      * (tippe_launch_polar_caps; 0: the sphere is whole): each launch records the
      * time its contact spends there (tippe_launch_record.cap_time_s) */
     double cap_half_angle_rad[2];
+    /* 1: every launch's contact stays on the sphere within an opening (the model
+     * before issue 35; tippe_dynamics_options.sphere_contact_only), to compare */
+    int sphere_contact_only;
     char accuracy_name[16];   /* a preset of tippe/physics.h, or "custom" */
     tippe_dynamics_accuracy accuracy;
 } tippe_launch_options;
@@ -701,6 +727,11 @@ typedef struct {
     /* s, time the contact spent within a hole's opening at a pole up to t_s, and
      * the first time it was there (NAN: never): the model does not hold there */
     double cap_time_s, cap_first_s;
+    /* the contact stood on a rim (1) at some time; its switches between sphere and
+     * rim; the spin when it first left the rim it was launched on (NAN: did not) */
+    int rim_touched;
+    long rim_switches;
+    double spin_leaving_rim_rad_s;
     double t_fall_s;         /* s, first came back below pi/2 after t_flip_s (NAN: did not) */
     double inverted_time_s;  /* s, model time spent above pi/2 */
     double energy_rel_error; /* max |E + D - E0| / E0 over the run */

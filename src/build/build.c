@@ -451,7 +451,8 @@ static void spins_and_launch(const tippe_design *d, const tippe_build_options *o
         s->launch_t_s = rec.t_s;
         s->verdict_ok = rec.verdict == expected_verdict(f);
         /* where the launch starts and ends against the poles' openings (issue
-         * 25.7): on a hole's rim the model's sphere contact does not hold */
+         * 25.7): on a hole's rim, which the launch follows (issue 35) and the
+         * zones' sphere theory does not */
         tippe_design_cap caps[2];
         tippe_design_polar_caps(d, s->set_z2_mm, caps);
         int side = top.com_side ? top.com_side : 1;

@@ -152,10 +152,10 @@ void tippe_build_poles(const tippe_design *d, tippe_build_sheet *s)
     const tippe_design_cap *c = s->caps[0].half_angle_rad > 0 ? &s->caps[0] : &s->caps[1];
     if (which[0] && s->n_warnings < 6)
         snprintf(s->warning[s->n_warnings++], sizeof s->warning[0],
-                 "Contact INVALID in the launch checks of %s: the hole '%s' opens at the pole "
-                 "(%.2f mm across), so a top tilted less than %.1f deg on it stands on the "
-                 "hole's rim, not on its sphere, which the model assumes. See the fixes for the "
-                 "poles.",
+                 "On the rim in the launch checks of %s: the hole '%s' (%.2f mm) opens at the "
+                 "pole, so a top tilted less than %.1f deg on it stands on its rim. The checks "
+                 "follow the rim; the zones (the paper's theory) assume the sphere there. The "
+                 "poles' fixes restore the sphere.",
                  which, c->part, 2 * c->radius_mm, c->half_angle_rad * 180 / M_PI);
     /* the fixes: plug every opening; for a hole open at both poles, plug only
      * the one the top rests on (a blind hole from the other pole) */

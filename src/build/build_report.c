@@ -41,8 +41,8 @@ void tippe_build_verdict_text(const tippe_build_sheet *s, char *buf, size_t size
     if (tippe_build_poles_invalid(s) && n < size)
         snprintf(buf + n, size - n,
                  " But a hole opens at a pole the top stands or spins on: there it stands on the "
-                 "hole's rim, not on its sphere, and the model (the zones and the launch checks) "
-                 "does not hold; see the poles' fixes.");
+                 "hole's rim, not on its sphere; the launch checks follow the rim, the zones "
+                 "(the paper's theory) assume the sphere; see the poles' fixes.");
 }
 
 static void verdict_sentence(const tippe_build_sheet *s, char *buf, size_t size)
@@ -548,21 +548,22 @@ const char *tippe_build_cap_text(const tippe_build_setting *x)
 {
     if (x->launch_status != TIPPE_OK || (!x->launch_cap_start && !x->launch_cap_end))
         return "";
+    /* the launch follows the rim (issue 35): said, not flagged invalid */
     if (x->launch_cap_start && x->launch_cap_end)
         return x->launch_cap_start > 0
-                   ? (x->launch_cap_end > 0 ? "; contact INVALID: starts and ends on the hole's "
-                                              "rim at +z"
-                                            : "; contact INVALID: starts on the hole's rim at "
-                                              "+z, ends on it at -z")
-                   : (x->launch_cap_end < 0 ? "; contact INVALID: starts and ends on the hole's "
-                                              "rim at -z"
-                                            : "; contact INVALID: starts on the hole's rim at "
-                                              "-z, ends on it at +z");
+                   ? (x->launch_cap_end > 0 ? "; on the hole's rim at +z from start to end "
+                                              "(modelled)"
+                                            : "; starts on the hole's rim at +z, ends on it "
+                                              "at -z (modelled)")
+                   : (x->launch_cap_end < 0 ? "; on the hole's rim at -z from start to end "
+                                              "(modelled)"
+                                            : "; starts on the hole's rim at -z, ends on it "
+                                              "at +z (modelled)");
     if (x->launch_cap_start)
-        return x->launch_cap_start > 0 ? "; contact INVALID: starts on the hole's rim at +z"
-                                       : "; contact INVALID: starts on the hole's rim at -z";
-    return x->launch_cap_end > 0 ? "; contact INVALID: ends on the hole's rim at +z"
-                                 : "; contact INVALID: ends on the hole's rim at -z";
+        return x->launch_cap_start > 0 ? "; starts on the hole's rim at +z (modelled)"
+                                       : "; starts on the hole's rim at -z (modelled)";
+    return x->launch_cap_end > 0 ? "; ends on the hole's rim at +z (modelled)"
+                                 : "; ends on the hole's rim at -z (modelled)";
 }
 
 void tippe_build_header_text(const tippe_build_sheet *s, char *buf, size_t size)

@@ -30,6 +30,7 @@ static int check_parse(hands_args *a, int argc, char **argv)
          .help = "theta, spin and contact speed against time and the (phi_dot, theta, n)\n"
                  "path, as tippe simulate draws them; .png, .svg or .pdf"},
         HANDS_RADIUS_OPTIONS(a, "the launch"),
+        HANDS_CONTACT_OPTION(a),
         {NULL},
     };
     hands_verb v = {
@@ -146,9 +147,10 @@ static void print_verdict_line(const tippe_launch_record *rec)
                    tippe_verdict_name(rec->verdict), rec->t_s, rec->theta_hi_rad * deg, th * deg);
         else if (rec->how == TIPPE_DECIDED_OBSERVED) {
             printf("\nverdict    %s (observed at t = %.4g s, NOT proved): theta %.4f rad (%.1f "
-                   "deg), spin %.4g rad/s; " TIPPE_PATCH_UNPROVED_REASON "\n",
+                   "deg), spin %.4g rad/s; %s\n",
                    tippe_verdict_name(rec->verdict), rec->t_s, th, th * deg,
-                   rec->spin_final_rad_s);
+                   rec->spin_final_rad_s,
+                   rec->rim_touched ? TIPPE_RIM_UNPROVED_REASON : TIPPE_PATCH_UNPROVED_REASON);
             if (isfinite(rec->jellett_drift_time_s))
                 printf("           J moved by up to %.3g %% of J0 in the run; drilling at m g "
                        "can move it by all of J0 in %.3g s (|dJ/dt| <= (3 pi/16) mu_c m g a "
@@ -260,16 +262,29 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
             continue;
         const tippe_design_cap *c = &caps[pole > 0 ? 0 : 1];
         printf("pole       the launch %s %.1f deg from the %s pole, within the opening of '%s' "
-               "(%.1f deg): the top stands on its rim there, not on its sphere, which the "
-               "verdict assumes\n",
+               "(%.1f deg): the top stands on its rim there%s\n",
                k ? "ends" : "starts", (pole == side ? th[k] : M_PI - th[k]) * 180 / M_PI,
-               pole > 0 ? "+z" : "-z", c->part, c->half_angle_rad * 180 / M_PI);
+               pole > 0 ? "+z" : "-z", c->part, c->half_angle_rad * 180 / M_PI,
+               a->o.sphere_contact_only ? ", not on its sphere, which --sphere-contact assumes: "
+                                          "INVALID"
+                                        : " (the contact follows the rim)");
     }
-    if (isfinite(rec->cap_first_s))
-        printf("pole       the contact lay within a hole's opening at a pole for %.4g s of the "
-               "%.4g s run (first at t = %.4g s): the model's sphere contact does not hold "
-               "there\n",
+    if (isfinite(rec->cap_first_s) && a->o.sphere_contact_only)
+        printf("pole       INVALID contact: theta lay within a hole's opening at a pole for %.4g "
+               "s of the %.4g s run (first at t = %.4g s), where --sphere-contact keeps the "
+               "contact on the sphere\n",
                rec->cap_time_s, rec->t_s, rec->cap_first_s);
+    else if (isfinite(rec->cap_first_s)) {
+        printf("rim        on a hole's rim for %.4g s of the %.4g s run (first at t = %.4g s; "
+               "%ld switches between rim and sphere)",
+               rec->cap_time_s, rec->t_s, rec->cap_first_s, rec->rim_switches);
+        if (isfinite(rec->spin_leaving_rim_rad_s))
+            printf("; it left the rim it was launched on with spin %.4g rad/s of %.4g "
+                   "(%.0f %% drained)",
+                   fabs(rec->spin_leaving_rim_rad_s), fabs(rec->ic.spin),
+                   100 * (1 - fabs(rec->spin_leaving_rim_rad_s) / fabs(rec->ic.spin)));
+        printf("\n");
+    }
     if (isfinite(rec->t_flip_s))
         printf("flip       theta passed 90 deg at t = %.4g s of model time (%s)\n",
                rec->t_flip_s, a->o.law == TIPPE_FRICTION_VISCOUS ? "viscous friction"

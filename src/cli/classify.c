@@ -248,7 +248,7 @@ int tippe_cli_classify(int argc, char **argv)
         return rc == TIPPE_CLI_HELP ? 0 : rc;
     const double *v = a.v;
     tippe_top top = {v[OPT_M], v[OPT_R], v[OPT_E] * v[OPT_R], v[OPT_K] * v[OPT_C], v[OPT_C],
-                     v[OPT_E] > 0.0 ? -1 : 0};
+                     v[OPT_E] > 0.0 ? -1 : 0, {0.0, 0.0}};
     rc = a.design ? design_numbers(&a, &top) : check_numbers(&a, &have_top);
     if (rc)
         return rc;

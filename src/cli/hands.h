@@ -34,6 +34,14 @@ struct cJSON;
              "at 1/F and F times the patch radius (two thirds of the work; by\n"             \
              "default the outcome is given at all three radii, docs/dynamics.md)"}
 
+/* The contact option, the same in check, launch and map: the model before issue 35,
+ * to compare (docs/dynamics.md, "The contact on a rim"). */
+#define HANDS_CONTACT_OPTION(A)                                                                \
+    {.name = "sphere-contact", .kind = TIPPE_CLI_FLAG, .value = &(A)->o.sphere_contact_only,  \
+     .help = "keep the contact on the sphere within a hole's opening at a pole\n"             \
+             "(the model before the rim contact, to compare; by default the top\n"          \
+             "stands on the opening's rim there)"}
+
 /* The friction options (--friction, --patch-mm, --table, --mu-c, --slip-scale,
  * --mu): tippe launch, map, check and build read them alike. */
 enum { HANDS_MAX_LAWS = 4 };

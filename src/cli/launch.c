@@ -136,6 +136,10 @@ static void print_theory_summary(const tippe_launch_tally *t, const tippe_launch
     if (o->law == TIPPE_FRICTION_PATCH && o->mu_c > 0)
         printf("observed   the end verdicts are the state at t_end, NOT proved (drilling "
                "changes J: docs/dynamics.md); only no_tip by the energy cone is\n");
+    else if (t->on_cap && !o->sphere_contact_only)
+        printf("observed   a launch that stood on a rim and was not decided by t_end is the "
+               "state there, NOT proved (J changes on a rim: docs/dynamics.md, \"The contact on "
+               "a rim\")\n");
     if (t->passed > t->flips) { /* flips that did not end as tip (the patch law's fall back) */
         printf("passed     %ld of %ld launches passed 90 deg (median %.3g s)", t->passed, t->n,
                t->median_t_passed_s);
@@ -165,6 +169,7 @@ static int launch_parse(hands_args *a, int argc, char **argv)
                  "(cap_time_s, cap_first_s), the fall back and the time above 90 deg\n"
                  "(t_fall_s, inverted_time_s) (- for stdout)"},
         HANDS_RADIUS_OPTIONS(a, "the same launches"),
+        HANDS_CONTACT_OPTION(a),
         {NULL},
     };
     hands_verb v = {
@@ -269,11 +274,17 @@ static void launch_text(const hands_args *a, const tippe_design *d, const tippe_
     tippe_design_protrusion pr;
     tippe_design_protrusion_at(d, a->z2_mm, &pr);
     tippe_cli_print_model_validity(&pr, a->z2_mm, "contact    ", "the outcomes above are");
-    if (t->on_cap)
+    if (t->on_cap && a->o.sphere_contact_only)
         printf("pole       INVALID for %ld of %ld launches: their contact lay within a hole's "
                "opening at a pole (within %.1f deg of the pole they rest on, %.1f deg of the "
                "other) before their verdict, where the top stands on the hole's rim, not on "
-               "its sphere\n",
+               "its sphere as --sphere-contact assumes\n",
+               t->on_cap, t->n, a->o.cap_half_angle_rad[0] * 180 / M_PI,
+               a->o.cap_half_angle_rad[1] * 180 / M_PI);
+    else if (t->on_cap)
+        printf("rim        %ld of %ld launches stood on a hole's rim at a pole (within %.1f deg "
+               "of the pole they rest on, %.1f deg of the other) before their verdict: the "
+               "contact follows the rim there\n",
                t->on_cap, t->n, a->o.cap_half_angle_rad[0] * 180 / M_PI,
                a->o.cap_half_angle_rad[1] * 180 / M_PI);
     print_theory_summary(t, &a->o);

@@ -103,6 +103,7 @@ static int map_parse(hands_args *a, int argc, char **argv)
         {.name = "csv", .kind = TIPPE_CLI_STRING, .value = &a->csv, .arg = "FILE",
          .help = "one row per cell: counts of each outcome, theory agreement"},
         HANDS_RADIUS_OPTIONS(a, "every cell's launches"),
+        HANDS_CONTACT_OPTION(a),
         {NULL},
     };
     hands_verb v = {
@@ -441,10 +442,15 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
             printf("%s %s %ld", v ? "," : "", hands_verdict_names[v], all.counts[v]);
         printf(" of %ld; %ld of %ld settled launches agree with theory\n", g->total, all.agree,
                all.comparable);
-        if (all.on_cap) /* as tippe launch says it, over the whole map */
+        if (all.on_cap && a->o.sphere_contact_only) /* as tippe launch says it */
             printf("pole       INVALID for %ld of %ld launches: their contact lay within a "
                    "hole's opening at a pole before their verdict, where the top stands on the "
-                   "hole's rim, not on its sphere (JSON on_polar_cap per cell)\n",
+                   "hole's rim, not on its sphere as --sphere-contact assumes (JSON "
+                   "on_polar_cap per cell)\n",
+                   all.on_cap, g->total);
+        else if (all.on_cap)
+            printf("rim        %ld of %ld launches stood on a hole's rim at a pole before their "
+                   "verdict: the contact follows the rim there (JSON on_polar_cap per cell)\n",
                    all.on_cap, g->total);
         char jellett[64] = "J not conserved (drilling)";
         if (a->o.law != TIPPE_FRICTION_PATCH || !(a->o.mu_c > 0)) /* nothing drills */

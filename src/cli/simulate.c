@@ -126,11 +126,12 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                r->last.t, r->last.theta, r->last.theta * 180 / M_PI, r->last.spin,
                r->last.slip_speed);
     if (!isnan(r->cap_first_s))
-        printf("pole      INVALID contact for %.4g s: theta lay within a hole's opening at a pole "
-               "(%.1f deg of the pole it rests on, %.1f deg of the other) from t = %.4g s to "
-               "%.4g s, where the top stands on the hole's rim, not on its sphere\n",
+        printf("rim       on a hole's rim for %.4g s (within %.1f deg of the pole it rests on, "
+               "%.1f deg of the other) from t = %.4g s to %.4g s, %ld switches between rim and "
+               "sphere: the contact follows the rim there\n",
                r->cap_time_s, sc->cap_half_angle_rad[0] * 180 / M_PI,
-               sc->cap_half_angle_rad[1] * 180 / M_PI, r->cap_first_s, r->cap_last_s);
+               sc->cap_half_angle_rad[1] * 180 / M_PI, r->cap_first_s, r->cap_last_s,
+               r->rim_switches);
     if (!isnan(r->t_flip))
         printf("flip      theta passed 90 deg at t = %.6g s (model time)\n", r->t_flip);
     if (!isnan(r->t_fall))

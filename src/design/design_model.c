@@ -63,6 +63,14 @@ void tippe_design_top_any(const tippe_design *d, double z2_mm, tippe_top *top)
         top->eps = fabs(in.z_cm);
         top->com_side = in.z_cm > 0 ? 1 : -1;
     }
+    /* the openings at the poles, the one down at theta = 0 first (+z when centred) */
+    tippe_design_cap caps[2];
+    top->rim_half_angle_rad[0] = top->rim_half_angle_rad[1] = 0.0;
+    if (tippe_design_polar_caps(d, z2_mm, caps)) {
+        const int rest = top->com_side ? top->com_side : 1; /* caps[0] is +z, caps[1] -z */
+        top->rim_half_angle_rad[0] = caps[rest > 0 ? 0 : 1].half_angle_rad;
+        top->rim_half_angle_rad[1] = caps[rest > 0 ? 1 : 0].half_angle_rad;
+    }
 }
 
 int tippe_design_top(const tippe_design *d, double z2_mm, tippe_top *top, tippe_error *err)

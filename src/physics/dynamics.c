@@ -89,6 +89,13 @@ static int check_inputs(const tippe_dynamics_model *model, const tippe_dynamics_
     if (opt->max_steps < 0)
         return tippe_error_set(err, TIPPE_EINPUT, "max_steps = %ld must be >= 0 (0: no budget)",
                                opt->max_steps);
+    const double *cap = opt->cap_half_angle_rad, *rim = t->rim_half_angle_rad;
+    if (!(cap[0] >= 0 && cap[0] < 0.5 * M_PI && cap[1] >= 0 && cap[1] < 0.5 * M_PI) ||
+        !(rim[0] >= 0 && rim[0] < 0.5 * M_PI && rim[1] >= 0 && rim[1] < 0.5 * M_PI))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "the openings' half-angles (%g, %g rad; top %g, %g rad) must "
+                               "be in [0, pi/2)",
+                               cap[0], cap[1], rim[0], rim[1]);
     if (!(opt->margin_factor >= 1.0 && opt->margin_factor <= 1e6))
         return tippe_error_set(err, TIPPE_EINPUT, "margin_factor = %g must be in [1, 1e6]",
                                opt->margin_factor);
@@ -123,6 +130,41 @@ static void ctx_init(dyn_ctx *c, const tippe_dynamics_model *model, size_t dim)
     c->inv_A = 1.0 / c->A;
     c->dim = dim;
     c->min_stage_Rn = INFINITY;
+}
+
+/* The outline the table meets (issue 35): the sphere cut flat at the open poles.
+ * The viscous law's saturation on a rim is the model's Coulomb coefficient, or the
+ * tabletop's default where the model gives none (rim_viscous_mu). */
+static void ctx_set_rims(dyn_ctx *c, const tippe_dynamics_model *model,
+                         const tippe_dynamics_options *opt)
+{
+    if (opt->sphere_contact_only)
+        return;
+    for (int p = 0; p < 2; p++) {
+        const double a = model->top.rim_half_angle_rad[p];
+        if (!(a > 0.0))
+            continue;
+        c->has_rims = 1;
+        c->rim_alpha[p] = a;
+        c->rim_cos[p] = cos(a);
+        c->rim_Rcos[p] = c->R * cos(a);
+        c->rim_r[p] = c->R * sin(a);
+    }
+    c->rim_mu_c = model->mu_c > 0.0 ? model->mu_c : TIPPE_LAUNCH_DEFAULT_MU_C;
+    c->min_stage_rim = INFINITY;
+}
+
+/* The height of the centre of mass above the table at tilt theta, m: R cos d - eps
+ * cos theta on the hull, d the tilt left to the rim's polar angle where the contact
+ * is on a rim (R cos(alpha - theta) on pole [0]'s), 0 on the sphere (eq 3.10). */
+static double hull_height(const dyn_ctx *c, double theta)
+{
+    double d = 0.0;
+    if (c->has_rims && theta < c->rim_alpha[0])
+        d = c->rim_alpha[0] - theta;
+    else if (c->has_rims && M_PI - theta < c->rim_alpha[1])
+        d = c->rim_alpha[1] - (M_PI - theta);
+    return c->R * cos(d) - c->eps * cos(theta);
 }
 
 /* The regular state of a launch given in the paper's variables (eq 3.4),
@@ -185,10 +227,18 @@ double tippe_dynamics_launch_slip(const tippe_top *top, const tippe_dynamics_ini
 
 /* The events located by bisection: lift-off (Rn = 0) and, while rolling, the end
  * of sticking (|F| = mu_c Rn, the edge of Coulomb's friction cone). */
-enum { EVENT_LIFT_OFF = 0, EVENT_SLIP = 1 };
+enum { EVENT_LIFT_OFF = 0, EVENT_SLIP = 1, EVENT_RIM = 2 };
+
+/* A switch between the sphere and a rim is taken once the regime's rim_stay is
+ * below -this (cos alpha units, ~1e-12 rad): the bisection leaves the state within
+ * 1e-13 of a step of the crossing, where |rim_stay| is ~1e-16, so the new regime
+ * does not see its own start as a crossing back. */
+#define RIM_EVENT_TOL 1e-12
 
 static double event_value(const dyn_ctx *c, const contact *o, int event)
 {
+    if (event == EVENT_RIM)
+        return rim_stay(c, o->k) + RIM_EVENT_TOL;
     return event == EVENT_SLIP ? c->mu_c * o->Rn - hypot(o->F[0], o->F[1]) : o->Rn;
 }
 
@@ -263,6 +313,80 @@ static int locate_lift_off(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0, 
     return status < 0 ? status : found;
 }
 
+/* Where rim_stay crosses -RIM_EVENT_TOL inside the accepted step (t0, y0) -> t0 + H:
+ * the same brackets as locate_lift_off (the end, or 4 sub-steps when only a stage
+ * saw the crossing), closed by the Illinois variant of regula falsi (Dahlquist and
+ * Bjorck 1974, sec 6.2.2) to 1e-13 H: the event function is smooth along the step
+ * (each regime's equations extend past the crossing), so it converges in ~6 rk8pd
+ * steps where bisection takes ~45; a top wobbling on its rim's edge crosses it
+ * hundreds of times (issue 35). Returns 1 with y at the crossing (on the side not
+ * yet crossed, within the tolerance) and *h_cross its offset, 0 if none, < 0 on
+ * failure. */
+static int locate_rim(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0, const double *y0,
+                      double H, int end_negative, double *y, double *h_cross)
+{
+    gsl_odeiv2_step *bs = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, c->dim);
+    if (!bs)
+        return -1;
+    double ytmp[DIM_TRAJECTORY], f = 0.0, lo = 0.0, hi = H, flo = 0.0, fhi = 0.0;
+    int found = 0, status = 0;
+    if (Rn_after(c, bs, sys, t0, y0, 0.0, EVENT_RIM, ytmp, &flo) != GSL_SUCCESS)
+        status = -1;
+    if (!status && end_negative &&
+        Rn_after(c, bs, sys, t0, y0, H, EVENT_RIM, ytmp, &fhi) != GSL_SUCCESS)
+        status = -1;
+    found = !status && end_negative && fhi < 0.0;
+    for (int i = 1; !status && !found && i <= 4; i++) {
+        const double hh = H * i / 4;
+        if (Rn_after(c, bs, sys, t0, y0, hh, EVENT_RIM, ytmp, &f) != GSL_SUCCESS) {
+            status = -1;
+            break;
+        }
+        if (f < 0.0) {
+            hi = hh;
+            fhi = f;
+            found = 1;
+        } else {
+            lo = hh;
+            flo = f;
+        }
+    }
+    if (found && !(flo >= 0.0))
+        found = 0; /* already past at the step's start: nothing to locate */
+    int side = 0;  /* Illinois: halve the weight of an end kept twice */
+    for (int it = 0; found && !status && it < 100 && hi - lo > 1e-13 * H; it++) {
+        double mid = (lo * fhi - hi * flo) / (fhi - flo);
+        if (!(mid > lo && mid < hi))
+            mid = 0.5 * (lo + hi);
+        if (Rn_after(c, bs, sys, t0, y0, mid, EVENT_RIM, ytmp, &f) != GSL_SUCCESS) {
+            status = -1;
+            break;
+        }
+        if (f < 0.0) {
+            hi = mid;
+            fhi = f;
+            if (side == -1)
+                flo *= 0.5;
+            side = -1;
+        } else {
+            lo = mid;
+            flo = f;
+            if (side == 1)
+                fhi *= 0.5;
+            side = 1;
+        }
+        if (f == 0.0)
+            break;
+    }
+    if (found && !status) {
+        if (Rn_after(c, bs, sys, t0, y0, lo, EVENT_RIM, y, &f) != GSL_SUCCESS)
+            status = -1;
+        *h_cross = lo;
+    }
+    gsl_odeiv2_step_free(bs);
+    return status < 0 ? status : found;
+}
+
 /* ---- the run, in named steps -------------------------------------------------- */
 
 typedef struct {
@@ -288,6 +412,12 @@ typedef struct {
     double roll_prev_thd, roll_lo, roll_hi, roll_dtheta, roll_gmin, roll_Rn_min;
     contact ct;
     tippe_dynamics_sample smp;
+    /* Rims: J changes while the contact is on one (its friction has a lever arm about
+     * the axis), so the wells of V are those of J at the last time the contact left
+     * a rim (J_ref), its error since then J_ref_err; touched: the run has been on one */
+    const tippe_dynamics_model *model;
+    int rim_touched, wells_stale, launched_on_rim;
+    double J_ref, J_ref_err;
 } run_state;
 
 /* Inputs, context, launch state, tolerance scales, monitors at t = 0, the wells of
@@ -303,8 +433,16 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
     rs->traj = opt->level == TIPPE_LEVEL_TRAJECTORY;
     dyn_ctx *c = &rs->c;
     ctx_init(c, model, rs->traj ? DIM_TRAJECTORY : DIM_VERDICT);
+    ctx_set_rims(c, model, opt);
     res->state_dim = (int)c->dim;
     initial_state(c, ic, rs->y);
+    rs->model = model;
+    if (c->has_rims) {
+        const double inv_kn = 1.0 / sqrt(dot3(rs->y + IK, rs->y + IK));
+        const double k[3] = {rs->y[IK] * inv_kn, rs->y[IK + 1] * inv_kn, rs->y[IK + 2] * inv_kn};
+        c->rim = rim_regime(c, k);
+        rs->rim_touched = rs->launched_on_rim = c->rim != 0;
+    }
     double omega_scale;
     set_omega_scale(c, rs->y, &omega_scale);
     /* Absolute tolerance = rtol * scale per component: unit vectors 1, angular
@@ -325,6 +463,7 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
     if (rs->traj)
         c->scale[IX] = c->scale[IX + 1] = c->R;
     rs->J_scale = fmax(fabs(res->J0), 1e-6 * c->C * omega_scale * c->R);
+    rs->J_ref = res->J0;
     rs->E_min = res->E0;
     rs->contact_retry_excess = INFINITY;
     st = tippe_dynamics_verdict_init(&rs->vc, model, res->J0, err);
@@ -444,8 +583,25 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
      * t_end and reports what it observes there (run_set_observed). */
     if (rs->c.patch && rs->vc.dissipative)
         return run_try_energy_cone(rs, res);
-    const double margin = tippe_dynamics_verdict_margin(&rs->vc, rs->opt->margin_factor, rs->energy_abs_err,
-                                         rs->J_abs_err, res->E0);
+    /* On the outline's rims: the energy alone proves what it can (run_try_energy_cone),
+     * and the wells of V, which need J constant, only off a rim, for the J it left
+     * the last rim with, over a range that can no longer reach a rim. */
+    if (rs->c.has_rims) {
+        if (rs->vc.dissipative && run_try_energy_cone(rs, res))
+            return 1;
+        if (rs->c.rim)
+            return 0;
+        if (rs->wells_stale) {
+            tippe_error ignored;
+            if (tippe_dynamics_verdict_init(&rs->vc, rs->model, rs->J_ref, &ignored))
+                return 0;
+            rs->wells_stale = 0;
+            rs->contact_retry_excess = INFINITY;
+        }
+    }
+    const double margin = tippe_dynamics_verdict_margin(
+        &rs->vc, rs->opt->margin_factor, rs->energy_abs_err,
+        rs->rim_touched ? rs->J_ref_err : rs->J_abs_err, res->E0);
     const tippe_dynamics_sample *s = &rs->smp;
     const int at_rest = (s->theta == 0.0 || s->theta == M_PI) && s->theta_dot == 0.0 &&
                         s->slip_speed == 0.0;
@@ -470,8 +626,11 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
     const int side_ok = !rs->c.stick_law || !tr.trapped ||
                         (th_min == M_PI ? tr.lo >= M_PI - TIPPE_INVERTED_TOL_RAD
                                         : th_min == 0.0 ? tr.hi < 0.5 * M_PI : 1);
+    /* a range that reaches a rim may take the contact there, where J changes */
+    const int off_rims = !rs->c.has_rims || (tr.lo >= rs->c.rim_alpha[0] &&
+                                             tr.hi <= M_PI - rs->c.rim_alpha[1]);
     /* a twentieth of m g: room for the variation of the bound between its nodes */
-    if (!(Rn_bound > 0.05 * rs->c.m * rs->c.g) || !side_ok) {
+    if (!(Rn_bound > 0.05 * rs->c.m * rs->c.g) || !side_ok || !off_rims) {
         rs->contact_retry_excess = 0.5 * excess;
         return 0;
     }
@@ -486,6 +645,8 @@ static void run_monitor(run_state *rs, tippe_dynamics_result *res)
     const double dJ = fabs(s->J - res->J0);
     if (dJ > rs->J_abs_err)
         rs->J_abs_err = dJ;
+    if (!rs->c.rim && fabs(s->J - rs->J_ref) > rs->J_ref_err)
+        rs->J_ref_err = fabs(s->J - rs->J_ref);
     const double dE = fabs(s->E + s->D - res->E0);
     if (dE > rs->energy_abs_err)
         rs->energy_abs_err = dE;
@@ -627,6 +788,64 @@ static int run_try_rolling(run_state *rs, tippe_dynamics_result *res)
     return 0;
 }
 
+/* The contact moves between the sphere and a rim inside the accepted step (t_prev,
+ * y_prev) -> t: the crossing of rim_stay is located as lift-off is (bisection of an
+ * rk8pd step to 1e-13 of the step), the state put there and the regime switched, and
+ * the stepper restarted, so that no step spans the jump of the normal force's rate.
+ * Each regime's equations extend smoothly past the crossing, so the stepper's trial
+ * stages there are harmless. t_full: the step's end before another event cut it
+ * (then only the end state is tested, the stages having gone beyond it). Returns 1
+ * if it switched, 0 if not, < 0 on failure. */
+static int run_rim_event(run_state *rs, tippe_dynamics_result *res, double t_full)
+{
+    dyn_ctx *c = &rs->c;
+    const double end = rim_stay(c, rs->ct.k);
+    const int cut = rs->t < t_full;
+    if (!(end < -RIM_EVENT_TOL) && (cut || !(c->min_stage_rim < -RIM_EVENT_TOL)))
+        return 0;
+    double hc = 0.0, ycross[DIM_TRAJECTORY];
+    int f = locate_rim(c, &rs->sys, rs->t_prev, rs->y_prev, rs->t - rs->t_prev,
+                       end < -RIM_EVENT_TOL, ycross, &hc);
+    if (f <= 0)
+        return f;
+    if (c->stick)
+        res->rolling_time_s -= rs->t - rs->t_prev - hc;
+    rs->t = rs->t_prev + hc;
+    memcpy(rs->y, ycross, c->dim * sizeof *rs->y);
+    if (rs->traj && rs->opt->sample_dt > 0.0 && rs->at_sample) {
+        rs->at_sample = 0; /* stopped short of the sample time */
+        rs->i_sample--;
+    }
+    contact o;
+    if (tippe_dynamics_contact_eval(c, rs->y, &o))
+        return -1;
+    const int from = c->rim;
+    if (from) {
+        c->rim = 0;
+    } else { /* onto the rim whose stay went below 0 */
+        const double s0 = c->rim_alpha[0] > 0.0 ? c->rim_cos[0] - o.k[2] : INFINITY;
+        const double s1 = c->rim_alpha[1] > 0.0 ? c->rim_cos[1] + o.k[2] : INFINITY;
+        c->rim = s0 <= s1 ? 1 : 2;
+    }
+    gsl_odeiv2_driver_reset(rs->drv);
+    if (tippe_dynamics_contact_eval(c, rs->y, &rs->ct))
+        return -1;
+    res->rim_switches++;
+    if (from) {
+        /* off the rim: J is constant again (on the sphere), from here */
+        tippe_dynamics_sample here;
+        tippe_dynamics_paper_variables(c, rs->t, rs->y, &rs->ct, &here);
+        rs->J_ref = here.J;
+        rs->J_ref_err = 0.0;
+        rs->wells_stale = 1;
+        if (rs->launched_on_rim && isnan(res->spin_leaving_rim_rad_s))
+            res->spin_leaving_rim_rad_s = here.spin;
+    } else {
+        rs->rim_touched = 1;
+    }
+    return 1;
+}
+
 /* One accepted step towards the next sample time or t_end. Returns 1 if the top
  * lost contact in it (the state is then the lift-off), 0 if not, or an error. */
 static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
@@ -640,6 +859,7 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
     memcpy(rs->y_prev, rs->y, c->dim * sizeof *rs->y);
     c->min_stage_Rn = INFINITY;
     c->min_stage_stick = INFINITY;
+    c->min_stage_rim = INFINITY;
     c->bad_contact = 0;
     const int was_stuck = c->stick;
     int s = gsl_odeiv2_evolve_apply(rs->drv->e, rs->drv->c, rs->drv->s, &rs->sys, &rs->t,
@@ -658,6 +878,7 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
                                 gsl_strerror(s));
     }
     res->steps++;
+    const double t_full = rs->t;
     rs->at_sample = rs->t >= t_target;
     if (rs->traj && opt->sample_dt > 0.0 && rs->at_sample)
         rs->i_sample++;
@@ -706,6 +927,10 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
             lost = 1;
         }
     }
+    if (!lost && c->has_rims && run_rim_event(rs, res, t_full) < 0)
+        return -tippe_error_set(err, TIPPE_ECOMPUTE,
+                                "failed to locate where the contact moves between the sphere "
+                                "and a rim near t = %g s", rs->t);
     run_fill_sample(rs);
     run_monitor(rs, res);
     if (!lost)
@@ -741,15 +966,20 @@ static int run_may_stop(const run_state *rs, const tippe_dynamics_result *res)
  * this of theta = 0, tip within it of pi, else hang. */
 #define PATCH_POLE_RAD 0.25
 
-/* Patch friction, the one proof that needs no J: the patch's sliding and drilling
- * and the rolling couple only take energy (contact_patch.c: a dissipation
- * potential, its power >= 0), and E = T + m g (R - eps cos theta) with T >= 0 (the
- * centre of mass R - eps cos theta above the table, paper section 3). So theta can
- * never again reach an angle where m g (R - eps cos theta) exceeds E: once E plus
- * its margin (margin_factor times the energy balance's error so far) is below the
- * height at PATCH_POLE_RAD, the top stays within theta_hi < PATCH_POLE_RAD of
- * upright for ever: no_tip, proved, however J drifts. A top that flipped and fell
- * back ends here too. */
+/* The one proof that needs no J: every law's friction (the patch's sliding and
+ * drilling, the rolling couple, a rim's sliding) only takes energy (power >= 0;
+ * contact_patch.c: a dissipation potential), and E = T + m g h(theta) with T >= 0,
+ * h the height of the centre of mass over the outline's lowest point (hull_height;
+ * R - eps cos theta on the sphere, paper section 3). So theta can never again
+ * reach an angle where m g h exceeds E.
+ * - no_tip: once E plus its margin (margin_factor times the energy balance's error
+ *   so far) is below m g h(PATCH_POLE_RAD), h rising on [0, PATCH_POLE_RAD], the top
+ *   stays within theta_hi < PATCH_POLE_RAD of upright for ever, however J drifts. A
+ *   top that flipped and fell back ends here too.
+ * - tip, where the other pole is cut flat: h falls from its crest at
+ *   pi - beta*, tan beta* = R sin(alpha) / (R cos(alpha) + eps), to pi (standing
+ *   on the flat end is a well); a top beyond the crest with E plus margin below it
+ *   stays beyond it for ever. */
 static int run_try_energy_cone(run_state *rs, tippe_dynamics_result *res)
 {
     const dyn_ctx *c = &rs->c;
@@ -757,24 +987,59 @@ static int run_try_energy_cone(run_state *rs, tippe_dynamics_result *res)
         return 0;
     const double margin = rs->opt->margin_factor * rs->energy_abs_err + 1e-12 * res->E0;
     const double E = rs->smp.E + margin, mg = c->m * c->g;
-    if (!(E < mg * (c->R - c->eps * cos(PATCH_POLE_RAD))))
+    double lo = NAN, hi = NAN;
+    tippe_verdict verdict;
+    if (E < mg * hull_height(c, PATCH_POLE_RAD)) {
+        verdict = TIPPE_VERDICT_NO_TIP;
+        lo = 0.0;
+        if (!(c->rim_alpha[0] > 0.0) || E >= mg * hull_height(c, c->rim_alpha[0])) {
+            /* on the sphere: m g (R - eps cos theta_hi) = E */
+            const double cos_hi = (c->R - E / mg) / c->eps;
+            hi = cos_hi >= 1.0 ? 0.0 : acos(cos_hi);
+        } else { /* within the rim, where h rises: bisection */
+            double a = 0.0, b = c->rim_alpha[0];
+            for (int it = 0; it < 100 && b - a > 1e-15; it++) {
+                const double mid = 0.5 * (a + b);
+                if (mg * hull_height(c, mid) > E)
+                    b = mid;
+                else
+                    a = mid;
+            }
+            hi = b;
+        }
+    } else if (c->rim_alpha[1] > 0.0) {
+        const double s1 = sin(c->rim_alpha[1]), c1 = cos(c->rim_alpha[1]);
+        const double crest = M_PI - atan2(c->R * s1, c->R * c1 + c->eps);
+        if (!(rs->smp.theta > crest && E < mg * hull_height(c, crest)))
+            return 0;
+        verdict = TIPPE_VERDICT_TIP;
+        double a = crest, b = M_PI; /* h falls on [crest, pi]: where it meets E */
+        for (int it = 0; it < 100 && b - a > 1e-15; it++) {
+            const double mid = 0.5 * (a + b);
+            if (mg * hull_height(c, mid) > E)
+                a = mid;
+            else
+                b = mid;
+        }
+        lo = a;
+        hi = M_PI;
+    } else {
         return 0;
-    /* the highest theta that energy reaches: m g (R - eps cos theta_hi) = E */
-    const double cos_hi = (c->R - E / mg) / c->eps;
-    res->verdict = TIPPE_VERDICT_NO_TIP;
+    }
+    res->verdict = verdict;
     res->how = TIPPE_DECIDED_ENERGY_CONE;
     res->t_verdict = rs->t;
     res->final = rs->smp;
     res->theta_final_rad = rs->smp.theta;
     res->spin_final_rad_s = rs->smp.spin;
     res->phi_dot_final_rad_s = rs->smp.phi_dot;
-    res->theta_lo_rad = 0.0;
-    res->theta_hi_rad = cos_hi >= 1.0 ? 0.0 : acos(cos_hi);
+    res->theta_lo_rad = lo;
+    res->theta_hi_rad = hi;
     res->margin_J = margin;
     res->end_state_proved = 0;
     return 1;
 }
-static void run_set_observed(run_state *rs, tippe_dynamics_result *res)
+static void run_set_observed(run_state *rs, tippe_dynamics_result *res, const char *why)
 {
     res->how = TIPPE_DECIDED_OBSERVED;
     /* near a pole: that pole's verdict; in between: hang (the angle reported) */
@@ -783,7 +1048,7 @@ static void run_set_observed(run_state *rs, tippe_dynamics_result *res)
                    : th > M_PI - PATCH_POLE_RAD ? TIPPE_VERDICT_TIP
                                                 : TIPPE_VERDICT_HANG;
     res->end_state_proved = 0;
-    res->unproved_reason = TIPPE_PATCH_UNPROVED_REASON;
+    res->unproved_reason = why;
 }
 
 static void run_result_init(tippe_dynamics_result *res)
@@ -797,6 +1062,7 @@ static void run_result_init(tippe_dynamics_result *res)
     res->t_fall = NAN;
     res->jellett_drift_time_s = NAN;
     res->cap_first_s = res->cap_last_s = NAN;
+    res->spin_leaving_rim_rad_s = NAN;
 }
 
 int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_initial *ic,
@@ -867,13 +1133,17 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
         res->phi_dot_final_rad_s = rs.smp.phi_dot;
         res->rolling = rs.c.stick;
         if (res->how == TIPPE_DECIDED_T_END && rs.c.patch && rs.vc.dissipative && !status)
-            run_set_observed(&rs, res);
+            run_set_observed(&rs, res, TIPPE_PATCH_UNPROVED_REASON);
+        else if (res->how == TIPPE_DECIDED_T_END && rs.rim_touched && rs.vc.dissipative &&
+                 !status)
+            run_set_observed(&rs, res, TIPPE_RIM_UNPROVED_REASON);
     }
     res->jellett_rel_drift = rs.J_abs_err / rs.J_scale;
     const double J_rate = tippe_dynamics_jellett_rate_bound(model);
     if (J_rate > 0.0)
         res->jellett_drift_time_s = fabs(res->J0) / J_rate;
     res->energy_rel_error = rs.energy_abs_err / res->E0;
+    res->rim_touched = rs.rim_touched;
     res->rhs_evals = rs.c.nevals;
     res->rejected_steps = (long)rs.drv->e->failed_steps;
     gsl_odeiv2_driver_free(rs.drv);

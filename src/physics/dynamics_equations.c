@@ -23,6 +23,13 @@
  * rounding cost 2x. */
 #define PATCH_LOAD_CORRECTIONS 1
 
+/* Below this sine of the tilt on a rim the whole ring touches. Only an exactly
+ * upright axis (to rounding) is a ring: any representable tilt gives the point
+ * contact, whose direction u_h / |u_h| is exact in relative terms. Between the
+ * ring and a tilt of the elastic approach over the rim's radius (~1e-4 rad) a real
+ * rim spreads its load over an arc: not modelled (docs/dynamics.md). */
+#define RING_SIN 1e-150
+
 /* The angular acceleration that a torque tau about the centre of mass adds:
  * A omega' = tau - (1 - A/C)(tau.k) k (the lab form of eq 3.13, L = A omega + (C - A) n k). */
 void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3])
@@ -96,6 +103,69 @@ static void patch_wrench(const dyn_ctx *c, const contact *o, double a, per_Rn *u
         u->diss += tippe_contact_rolling_resistance(1.0, c->roll_arm, ROLL_W_S, o->w, u->Mroll);
 }
 
+/* The contact on rim c->rim (docs/dynamics.md, "The contact on a rim"): the
+ * lowest point of the hull is the rim circle's lowest point,
+ *   q = eps k + R cos(alpha) u + r W,  r = R sin(alpha),
+ * u = -k on pole [0], +k on pole [1], and W the unit vector perpendicular to u
+ * pointing down in the vertical plane through u: W = (u_z u_h/|u_h|, -|u_h|). The
+ * contact runs along the rim as the axis turns; its rate dq/dt enters the normal
+ * force and the rolling constraint through omega x dq/dt (the sphere's eps omega x
+ * (omega x k)). The rim's tangent at its lowest point is horizontal, so the
+ * centre's height -q_z still changes at -(omega x q)_z, as on the sphere. */
+static void rim_geometry(const dyn_ctx *c, contact *o, const double wk[3])
+{
+    const int p = c->rim - 1;
+    const double s = p ? 1.0 : -1.0, Rc = c->rim_Rcos[p], r = c->rim_r[p];
+    const double *k = o->k;
+    const double u[3] = {s * k[0], s * k[1], s * k[2]};
+    const double ud[3] = {s * wk[0], s * wk[1], s * wk[2]}; /* du/dt = omega x u */
+    const double S = hypot(u[0], u[1]);
+    double W[3] = {0.0, 0.0, 0.0}, Wd[3] = {0.0, 0.0, 0.0};
+    o->ring = !(S > RING_SIN);
+    if (!o->ring) {
+        const double hx = u[0] / S, hy = u[1] / S;
+        const double Sd = hx * ud[0] + hy * ud[1];
+        const double hdx = (ud[0] - hx * Sd) / S, hdy = (ud[1] - hy * Sd) / S;
+        W[0] = u[2] * hx;
+        W[1] = u[2] * hy;
+        W[2] = -S;
+        Wd[0] = ud[2] * hx + u[2] * hdx;
+        Wd[1] = ud[2] * hy + u[2] * hdy;
+        Wd[2] = -Sd;
+    }
+    double qd[3];
+    for (int i = 0; i < 3; i++) {
+        o->q[i] = c->eps * k[i] + Rc * u[i] + r * W[i];
+        qd[i] = c->eps * wk[i] + Rc * ud[i] + r * Wd[i];
+    }
+    cross3(o->w, qd, o->wqd);
+}
+
+/* The viscous law on a rim, s/m. Eq 3.12's coefficient is a Coulomb coefficient
+ * over a typical slip of the sphere's contact (TIPPE_LAUNCH_DEFAULT_MU_S_M: 0.3 /
+ * 0.13 m/s); on a rim the slip is the spin times the rim's radius (0.7 m/s for the
+ * M12 at 20 rev/s), where the linear law would ask 1.6 Rn of a dry contact. There
+ * the force saturates at Coulomb's mu_c Rn: mu / sqrt(1 + (mu |V_Q| / mu_c)^2), mu
+ * below the slip mu_c / mu, mu_c / |V_Q| above it. On the sphere the paper's law
+ * is kept as it is. */
+static double rim_viscous_mu(const dyn_ctx *c, double slip2)
+{
+    return c->mu / sqrt(1.0 + c->mu * c->mu * slip2 / (c->rim_mu_c * c->rim_mu_c));
+}
+
+/* The couple about e3 per unit Rn of a ring standing upright (the whole rim
+ * touches, radius r, the load uniform): each element slips at omega_n r along the
+ * rim. Coulomb (and the patch law, whose patch is then the ring): -mu_c r
+ * sgn(omega_n), regularised as the sliding law; viscous: -mu r^2 omega_n,
+ * saturated as on the rim (rim_viscous_mu). */
+static double ring_couple(const dyn_ctx *c, double r, double omega_n)
+{
+    const double slip = omega_n * r;
+    if (c->coulomb)
+        return -c->mu_c * r * slip / sqrt(slip * slip + c->vs2);
+    return -rim_viscous_mu(c, slip * slip) * r * slip;
+}
+
 /* Rn and the two parts of omega' = Rn a1 + a0 for the wrench u per unit Rn: the
  * torque about the CoM (eq 3.13 in the lab frame, with the couples), then
  * m z'' = Rn - m g (eqs 3.16-3.17) solved for Rn, the lab form of eq 3.19.
@@ -116,6 +186,17 @@ static int normal_force(const dyn_ctx *c, contact *o, const double wk[3], const 
     for (int i = 0; i < 3; i++) {
         a1[i] = (tau[i] - one_minus_AC * tk * k[i]) * inv_A;
         a0[i] = minus_CmA_A_n * wk[i];
+    }
+    if (c->rim) {
+        /* m z'' = Rn - m g with z = -q_z: z'' = -((omega' x q)_z + (omega x dq/dt)_z) */
+        double a1q[3], a0q[3];
+        cross3(a1, o->q, a1q);
+        cross3(a0, o->q, a0q);
+        o->den = 1.0 + c->m * a1q[2];
+        if (!(o->den > 0.0))
+            return 1;
+        o->Rn = c->m * (c->g - a0q[2] - o->wqd[2]) / o->den;
+        return 0;
     }
     double a1k[3], a0k[3], wwk[3];
     cross3(a1, k, a1k);
@@ -144,17 +225,24 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
     o->n = dot3(w, k);
     double wk[3];
     cross3(w, k, wk);
-    /* q = CoM -> contact = eps k - R e3 (eq 3.6) */
-    o->q[0] = c->eps * k[0];
-    o->q[1] = c->eps * k[1];
-    o->q[2] = c->eps * k[2] - c->R;
-    /* The CoM height is R - eps k_z (eq 3.10), so its vertical velocity is
-     * -eps (omega x k)_z (eq 3.11). */
+    o->ring = 0;
+    double wq[3];
+    if (c->rim) {
+        rim_geometry(c, o, wk);
+        cross3(w, o->q, wq);
+        o->v[2] = -wq[2]; /* the constraint: the contact point does not leave the table */
+    } else {
+        /* q = CoM -> contact = eps k - R e3 (eq 3.6) */
+        o->q[0] = c->eps * k[0];
+        o->q[1] = c->eps * k[1];
+        o->q[2] = c->eps * k[2] - c->R;
+        /* The CoM height is R - eps k_z (eq 3.10), so its vertical velocity is
+         * -eps (omega x k)_z (eq 3.11). */
+        o->v[2] = -c->eps * wk[2];
+        cross3(w, o->q, wq);
+    }
     o->v[0] = y[IV];
     o->v[1] = y[IV + 1];
-    o->v[2] = -c->eps * wk[2];
-    double wq[3];
-    cross3(w, o->q, wq);
     o->VQ[0] = o->v[0] + wq[0]; /* eq 3.7 */
     o->VQ[1] = o->v[1] + wq[1];
     o->VQ[2] = 0.0; /* vanishes identically by the constraint (eq 3.11) */
@@ -171,8 +259,12 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
             a0[i] = minus_CmA_A_n * wk[i];
         cross3(a0, o->q, a0q);
         cross3(w, wk, wwk);
-        for (int i = 0; i < 3; i++)
-            b[i] = -a0q[i] - c->eps * wwk[i];
+        if (c->rim)
+            for (int i = 0; i < 3; i++)
+                b[i] = -a0q[i] - o->wqd[i]; /* omega x dq/dt: the contact runs on the rim */
+        else
+            for (int i = 0; i < 3; i++)
+                b[i] = -a0q[i] - c->eps * wwk[i];
         b[2] += c->g;
         compliance(c, k, o->q, o->K);
         if (tippe_dynamics_solve3(o->K, b, Fc))
@@ -197,16 +289,26 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
     /* Both laws are F = -mu_eff Rn V_Q with mu_eff fixed by the state alone (V_Q does
      * not depend on Rn): viscous mu (eq 3.12), or regularised Coulomb
      * mu_c / sqrt(|V_Q|^2 + v_s^2), so |F| -> mu_c Rn for |V_Q| >> v_s. */
-    o->mu_eff = c->coulomb ? c->mu_c / sqrt(slip2 + c->vs2) : c->mu;
+    o->mu_eff = c->coulomb ? c->mu_c / sqrt(slip2 + c->vs2)
+                : c->rim   ? rim_viscous_mu(c, slip2)
+                           : c->mu;
     /* F = Rn (e3 - mu_eff V_Q): force and torque are linear in Rn. Under the patch law
      * they are too at a given radius; a radius that follows Rn (Hertz) is corrected
      * from the static one with the Rn it gives (PATCH_LOAD_CORRECTIONS). */
     per_Rn u = {{-o->mu_eff * o->VQ[0], -o->mu_eff * o->VQ[1], 1.0}, 0.0, 0.0, {0.0, 0.0}};
     double a1[3], a0[3];
     double a = c->patch_a;
+    const double ring_M = o->ring ? ring_couple(c, c->rim_r[c->rim - 1], w[2]) : 0.0;
+    u.M = ring_M;
     for (int pass = 0;; pass++) {
         if (c->patch)
             patch_wrench(c, o, a, &u);
+        if (c->patch && o->ring) {
+            /* the ring's couple, not a patch's: the ring is the patch (its power
+             * -(F.V_Q + M omega_n) per unit Rn rebooked with the ring's M) */
+            u.diss += (u.M - ring_M) * w[2];
+            u.M = ring_M;
+        }
         if (normal_force(c, o, wk, &u, a1, a0))
             return 1;
         if (!c->patch_follow || pass == PATCH_LOAD_CORRECTIONS)
@@ -231,6 +333,10 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
     o->F[0] = -o->mu_eff * o->Rn * o->VQ[0];
     o->F[1] = -o->mu_eff * o->Rn * o->VQ[1];
     o->power = o->mu_eff * o->Rn * slip2; /* eq 4.1; Coulomb: mu_c Rn |V_Q| for |V_Q| >> v_s */
+    if (o->ring) {
+        o->M = o->Rn * ring_M;
+        o->power -= o->M * w[2];
+    }
     return 0;
 }
 
@@ -249,6 +355,11 @@ int tippe_dynamics_rhs(double t, const double y[], double f[], void *params)
     }
     if (o.Rn < c->min_stage_Rn)
         c->min_stage_Rn = o.Rn;
+    if (c->has_rims) {
+        const double st = rim_stay(c, o.k);
+        if (st < c->min_stage_rim)
+            c->min_stage_rim = st;
+    }
     if (c->stick) {
         const double g = c->mu_c * o.Rn - hypot(o.F[0], o.F[1]);
         if (g < c->min_stage_stick)
@@ -311,6 +422,8 @@ double tippe_dynamics_energy(const dyn_ctx *c, const contact *o)
     for (int i = 0; i < 3; i++)
         L[i] = c->A * o->w[i] + (c->C - c->A) * o->n * o->k[i];
     /* sec 4: translational + rotational kinetic energy + m g h (eq 3.10) */
+    if (c->rim) /* the centre of mass -q_z above the table: the hull's support */
+        return 0.5 * c->m * dot3(o->v, o->v) + 0.5 * dot3(o->w, L) - c->m * c->g * o->q[2];
     return 0.5 * c->m * dot3(o->v, o->v) + 0.5 * dot3(o->w, L) +
            c->m * c->g * (c->R - c->eps * o->k[2]);
 }
@@ -350,6 +463,7 @@ void tippe_dynamics_paper_variables(const dyn_ctx *c, double t, const double *y,
     s->slip_speed = hypot(o->VQ[0], o->VQ[1]);
     s->patch_radius = c->patch ? o->patch_a : 0.0;
     s->drill_torque = o->M;
+    s->rim = c->rim;
     s->E = tippe_dynamics_energy(c, o);
     s->D = y[ID];
     s->J = tippe_dynamics_jellett(c, o);

@@ -4,6 +4,7 @@
 #define TIPPE_PHYSICS_DYNAMICS_STATE_H
 
 #include <gsl/gsl_odeiv2.h>
+#include <math.h>
 #include <stddef.h>
 
 #include "tippe/physics.h"
@@ -46,7 +47,44 @@ typedef struct {
     double min_stage_Rn;  /* smallest Rn met by any right-hand-side call since reset */
     int bad_contact;      /* the denominator of eq 3.19 was <= 0 */
     double scale[DIM_TRAJECTORY]; /* absolute scale per component */
+    /* The outline's contact (issue 35): the sphere cut flat at each pole whose cap is
+     * open (tippe_dynamics_options.cap_half_angle_rad), [0] the pole down at theta = 0
+     * (u = -k), [1] the other (u = +k): half-angle alpha, cos alpha, the rim's
+     * distance from the centre R cos alpha and its radius R sin alpha (m). */
+    int has_rims;
+    double rim_alpha[2], rim_cos[2], rim_Rcos[2], rim_r[2];
+    int rim;              /* the contact now: 0 the sphere, 1 pole [0]'s rim, 2 pole [1]'s */
+    double rim_mu_c;      /* viscous law on a rim: the Coulomb coefficient its force
+                             saturates at (dynamics_equations.c, rim_friction) */
+    double min_stage_rim; /* least rim_stay over the stages of a step */
 } dyn_ctx;
+
+/* Positive while the contact regime c->rim holds at axis k, crossing 0 where the
+ * contact moves between the sphere and a rim: at the rim's polar angle, where the
+ * rim's lowest point is the sphere's lowest point (the contact is continuous). */
+static inline double rim_stay(const dyn_ctx *c, const double k[3])
+{
+    if (c->rim == 1)
+        return k[2] - c->rim_cos[0];
+    if (c->rim == 2)
+        return -k[2] - c->rim_cos[1];
+    double s = INFINITY;
+    if (c->rim_alpha[0] > 0.0)
+        s = c->rim_cos[0] - k[2];
+    if (c->rim_alpha[1] > 0.0 && c->rim_cos[1] + k[2] < s)
+        s = c->rim_cos[1] + k[2];
+    return s;
+}
+
+/* The regime at axis k: the rim of the pole within its half-angle, else the sphere. */
+static inline int rim_regime(const dyn_ctx *c, const double k[3])
+{
+    if (c->rim_alpha[0] > 0.0 && k[2] > c->rim_cos[0])
+        return 1;
+    if (c->rim_alpha[1] > 0.0 && -k[2] > c->rim_cos[1])
+        return 2;
+    return 0;
+}
 
 typedef struct {
     double k[3], w[3], v[3], q[3], VQ[3];
@@ -55,6 +93,8 @@ typedef struct {
     double patch_a; /* m, the patch radius at this Rn (patch law) */
     double mu_eff;  /* s/m: mu (viscous) or mu_c / sqrt(|V_Q|^2 + v_s^2) (Coulomb) */
     double F[2];    /* N, horizontal friction force */
+    double wqd[3];  /* m/s^2, omega x dq/dt (q's rate as the contact moves over the body) */
+    int ring;       /* on a rim exactly upright: the whole ring touches */
     double K[3][3]; /* contact compliance (Delassus) matrix, rolling phase only */
     double wdot[3];
 } contact;

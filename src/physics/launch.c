@@ -250,6 +250,7 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     opt.until_flip = o->until_flip;
     opt.cap_half_angle_rad[0] = o->cap_half_angle_rad[0];
     opt.cap_half_angle_rad[1] = o->cap_half_angle_rad[1];
+    opt.sphere_contact_only = o->sphere_contact_only;
     tippe_dynamics_result res;
     rec->status = tippe_dynamics_run(&m, ic, &opt, &res, err);
     if (rec->status != TIPPE_OK)
@@ -270,6 +271,9 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->energy_rel_error = res.energy_rel_error;
     rec->cap_time_s = res.cap_time_s;
     rec->cap_first_s = res.cap_first_s;
+    rec->rim_touched = res.rim_touched;
+    rec->rim_switches = res.rim_switches;
+    rec->spin_leaving_rim_rad_s = res.spin_leaving_rim_rad_s;
     rec->rolling = res.rolling;
     rec->end_state_proved = res.end_state_proved;
     rec->J0 = res.J0;
@@ -563,6 +567,7 @@ int tippe_launch_trace(const tippe_top *top, const tippe_launch_options *o,
     opt.accuracy = o->accuracy;
     opt.sample_dt = t_end_s / (n - 1);
     opt.run_to_t_end = 1;
+    opt.sphere_contact_only = o->sphere_contact_only;
     trace_ctx c = {t_s, theta_rad, 0, n};
     opt.on_sample = trace_sample;
     opt.sample_ctx = &c;
@@ -586,6 +591,7 @@ int tippe_launch_trajectory(const tippe_top *top, const tippe_launch_options *o,
     opt.accuracy = o->accuracy;
     opt.run_to_t_end = 1;
     opt.until_flip = 1;
+    opt.sphere_contact_only = o->sphere_contact_only;
     opt.sample_dt = sample_dt_s > 0 ? sample_dt_s
                                     : tippe_dynamics_default_sample_dt(ic, m.g, top->R, o->t_end);
     opt.on_sample = tippe_dynamics_samples_keep;

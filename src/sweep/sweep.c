@@ -667,8 +667,8 @@ static void print_polar_caps(FILE *out, const tippe_sweep_result *r, const tippe
             fprintf(out,
                     "pole     %s: the opening of '%s' (%.2f mm across): a top tilted less than "
                     "%.1f deg on this pole\n"
-                    "         stands on the hole's rim, not on its sphere, and the model does "
-                    "not apply there\n",
+                    "         stands on the hole's rim, not on its sphere: the zones (the "
+                    "paper's theory) do not apply there; tippe check and launch follow the rim\n",
                     k ? "-z" : "+z", caps[k].part, 2 * caps[k].radius_mm,
                     caps[k].half_angle_rad * 180 / M_PI);
 }
