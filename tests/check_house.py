@@ -21,17 +21,17 @@ import sys
 src_root, build = sys.argv[1], sys.argv[2]
 
 # Bottom up; a folder may use its own layer and those below.
-LAYER = {"base": 0, "design": 1, "physics": 2, "profile": 3, "scenario": 4, "sweep": 4,
-         "optimise": 5, "build": 5, "plot": 6, "export": 6, "animate": 6,
-         "cli": 7, "modules": 7, "serve": 7}
-HEADER_LAYER = {"base": 0, "design": 1, "physics": 2, "profile": 3, "scenario": 4,
-                "sweep": 4, "optimise": 5, "build": 5, "plot": 6, "export": 6, "animate": 6,
-                "serve": 7}
+LAYER = {"base": 0, "print": 1, "design": 2, "physics": 3, "profile": 4, "scenario": 5,
+         "sweep": 5, "optimise": 6, "build": 6, "plot": 7, "export": 7, "animate": 7,
+         "cli": 8, "modules": 8, "serve": 8}
+HEADER_LAYER = {"base": 0, "print": 1, "design": 2, "physics": 3, "profile": 4, "scenario": 5,
+                "sweep": 5, "optimise": 6, "build": 6, "plot": 7, "export": 7, "animate": 7,
+                "serve": 8}
 # The names each folder's objects may export (after tippe_).
 OWNS = {
     "base": ["error", "gsl", "report", "progress", "json", "file"],
-    "design": ["design", "tolerance", "tolerances", "materials", "moments", "print", "ball",
-               "shell", "tube", "torus", "gcode"],
+    "print": ["print", "gcode", "moments", "ball", "shell", "tube", "torus"],
+    "design": ["design", "tolerance", "tolerances", "materials"],
     "physics": ["theory", "dynamics", "launch", "group", "verdict", "decision", "friction",
                 "final", "contact"],
     "profile": ["profile"],
