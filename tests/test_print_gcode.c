@@ -888,5 +888,5 @@ int main(void)
     test_refusals();
     test_python_check();
     test_prusaslicer();
-    return check_summary("test_gcode");
+    return check_summary("test_print_gcode");
 }
