@@ -278,7 +278,7 @@ static void test_cheap_limits(void)
         const double vnan[2] = {NAN, 0.0};
         tippe_contact_patch_friction(law, muN, a, 0.0, vnan, om, &w);
         CHECK(isnan(w.F[0]), "a NaN slip propagates");
-        /* v_s at a = 0 is the regularised Coulomb law of src/dynamics.c. */
+        /* v_s at a = 0 is the regularised Coulomb law of src/physics/dynamics.c. */
         const double vs = 1e-5, vsmall[2] = {3e-6, 4e-6};
         tippe_contact_patch_friction(law, muN, 0.0, vs, vsmall, om, &w);
         CHECK_CLOSE(w.F[0], -muN * vsmall[0] / sqrt(25e-12 + vs * vs), 1e-15, "creep law");
@@ -431,7 +431,7 @@ static void test_energy(void)
     CHECK(badsum == 0, "%d inputs whose dissipation is not -power (worst %.3g)", badsum, worst);
 }
 
-/* Point Coulomb friction as src/dynamics.c's creep law computes it, F = -mu N v /
+/* Point Coulomb friction as src/physics/dynamics.c's creep law computes it, F = -mu N v /
  * sqrt(|v|^2 + v_s^2), behind a call like the patch law's. */
 static __attribute__((noinline)) void point_coulomb(double mu_N, double v_s, const double v[2],
                                                     double F[2])

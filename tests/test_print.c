@@ -1,4 +1,4 @@
-/* The print model (src/design/print.c) against an independent computation.
+/* The print model (src/print/print.c) against an independent computation.
  *
  * print.c integrates over z, finding each layer's core annuli by interval
  * arithmetic on the solids' radius functions. The references here integrate

@@ -1,4 +1,4 @@
-/* The slicer's rules layer by layer (src/design/print_slicer.c) against hand
+/* The slicer's rules layer by layer (src/print/print_slicer.c) against hand
  * computations on parts whose layers are known in closed form: a cylinder
  * (every layer the same disc), a tube, and the bulk factor of the gyroid
  * recomputed from its level set; then the design-level wiring (the weighing

@@ -2,7 +2,7 @@
 """Independent check of tippe's G-code reader (src/gcode*.c), sharing no code with it.
 
 Reads an FFF G-code file (PrusaSlicer, SuperSlicer, OrcaSlicer, Cura) with the same
-rules as the reader (include/tippe/gcode.h: E relative under M83 or G91; G92 renames
+rules as the reader (include/tippe/print.h: E relative under M83 or G91; G92 renames
 axes; a retraction deposits nothing and is owed, a positive dE first pays back what is
 owed; features from ;TYPE: / ; FEATURE: labels; skirt, brim, support, towers, custom and
 -- in a labelled file -- unlabelled G-code excluded), but integrates the moments another

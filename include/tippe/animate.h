@@ -1,7 +1,13 @@
 /* tippe/animate.h: films of a launch: the scene, the frames, the encoder.
  *
- * One public header per module (docs/architecture.md); the sections below keep
- * the notes of the headers they were. */
+ * Contents:
+ * - the encoder: a film from frames, with FFmpeg's libraries (tippe_encode_*,
+ *   src/animate/encode.c);
+ * - the scene: one picture of the top on its table, drawn with cairo (tippe_scene_*,
+ *   src/animate/scene.c);
+ * - the film of a launch, what `tippe animate` writes (tippe_animate_*, tippe_film_*;
+ *   src/animate/animate.c, animate_setup.c).
+ */
 #ifndef TIPPE_ANIMATE_H
 #define TIPPE_ANIMATE_H
 
@@ -12,7 +18,7 @@
 #include "tippe/design.h"
 #include "tippe/sweep.h"
 
-/* ==== from tippe/encode.h ==== */
+/* ---- the encoder ---- */
 /* Encode: a film from frames drawn one at a time, with FFmpeg's libraries.
  *
  * The caller draws frames into a 32-bit pixel buffer in cairo's ARGB32 layout
@@ -61,7 +67,7 @@ long tippe_encode_draw_count(const tippe_encode_options *o);
 int tippe_encode_film(FILE *out, const tippe_encode_options *o, tippe_frame_fn draw, void *ctx,
                       tippe_progress *prog, tippe_error *err);
 
-/* ==== from tippe/scene.h ==== */
+/* ---- the scene ---- */
 /* Scene: one picture of the top on its table, drawn with cairo.
  *
  * The ball is a transparent shell seen from a camera above the table (an
@@ -137,7 +143,7 @@ int tippe_scene_render(const tippe_scene *sc, const tippe_dynamics_sample *s,
 void tippe_scene_contact(const tippe_scene *sc, const tippe_dynamics_sample *s, double *x_m,
                          double *y_m);
 
-/* ==== from tippe/animate.h ==== */
+/* ---- the film of a launch ---- */
 /* Animate: a film of one launch (what `tippe animate` writes).
  *
  * A film is made in three steps, each reading only what the one before made:

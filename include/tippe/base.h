@@ -1,13 +1,19 @@
 /* tippe/base.h: the bottom layer: errors as codes with a message, reports and safe file writing, progress.
  *
- * One public header per module (docs/architecture.md); the sections below keep
- * the notes of the headers they were. */
+ * Contents:
+ * - errors: status codes with a message a user can act on (tippe_error_*, src/base/error.c);
+ * - reports: output files written whole or not at all, sets of them that commit together,
+ *   and every input read through one safe reader (tippe_report_*, tippe_file_*;
+ *   src/base/report.c, file.c);
+ * - progress: long loops with a time-left estimate (tippe_progress_*, src/base/progress.c).
+ * Internal to the library: base/json.h, the strict JSON reader every loader uses.
+ */
 #ifndef TIPPE_BASE_H
 #define TIPPE_BASE_H
 
 #include <stdio.h>
 
-/* ==== from tippe/error.h ==== */
+/* ---- errors ---- */
 /* Error: how every tippe function reports failure.
  *
  * Like GSL, a function returns an int status (TIPPE_OK on success) and, when it
@@ -52,7 +58,7 @@ int tippe_file_read(const char *path, size_t max_bytes, const char *what, char *
 typedef int (*tippe_file_read_check)(const char *path, const char *what, tippe_error *err);
 void tippe_file_set_read_check(tippe_file_read_check check);
 
-/* ==== from tippe/report.h ==== */
+/* ---- reports and safe files ---- */
 /* Report: output files that appear whole or not at all, and never
  * cost a user an old file.
  *
@@ -84,7 +90,7 @@ void tippe_file_set_read_check(tippe_file_read_check check);
  * (or _set_abort()), commit only finishes a file (complete and checked under
  * its temporary name); the set's files are renamed into place together at the
  * end, or all removed. The tippe command runs every verb inside one set, so a
- * verb's outputs are all written or none is (src/cli/common.c).
+ * verb's outputs are all written or none is (src/cli/outputs.c).
  *
  * Signals: every temporary is recorded in a table (as large as the files open
  * at once need: it grows in blocks that never move) that
@@ -169,7 +175,7 @@ void tippe_report_remove_temporaries(void);
  * handler should then let it finish); safe in a signal handler. */
 int tippe_report_committing(void);
 
-/* ==== from tippe/progress.h ==== */
+/* ---- progress ---- */
 /* Progress: progress of long loops with a time-left estimate.
  *
  * On a terminal it is a bar redrawn in place (at most ~5 times a second). On

@@ -3,7 +3,7 @@
  *
  * Each figure is PNG, SVG or PDF by its file's extension and written atomically.
  * PLplot has one global state: call these from one thread. The command loads
- * PLplot only when it draws (src/modules/plot.c). */
+ * PLplot only when it draws (src/modules/plot_stubs.c). */
 #ifndef TIPPE_PLOT_H
 #define TIPPE_PLOT_H
 

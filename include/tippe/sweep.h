@@ -1,7 +1,11 @@
 /* tippe/sweep.h: Z2 sweeps: zones along the weight's travel, their tolerance bands.
  *
- * One public header per module (docs/architecture.md); the sections below keep
- * the notes of the headers they were. */
+ * Contents:
+ * - the sweep: zones along the weight's travel, the zone table, --vary (tippe_sweep_*;
+ *   src/sweep/sweep.c, sweep_check.c, sweep_report.c, sweep_vary.c);
+ * - bands: how far each boundary moves under the design's tolerances, and the robust
+ *   widths (src/sweep/sweep_bands.c).
+ */
 #ifndef TIPPE_SWEEP_H
 #define TIPPE_SWEEP_H
 
@@ -11,7 +15,7 @@
 #include "tippe/base.h"
 #include "tippe/physics.h"
 
-/* ==== from tippe/sweep.h ==== */
+/* ---- the sweep ---- */
 /* Sweep: the zones of a top as its moving weight travels (paper section 6).
  *
  * As the weight's midpoint Z2 moves, k = A/C and e = eps/R trace a path through
@@ -228,7 +232,7 @@ struct cJSON *tippe_sweep_json(const tippe_sweep_result *r, const tippe_design *
  * 3-in-1 verdict with the narrowest reachable zone. */
 void tippe_sweep_print_table(FILE *out, const tippe_sweep_result *r, const tippe_design *d);
 
-/* ==== from tippe/sweep_bands.h ==== */
+/* ---- tolerance bands ---- */
 /* Sweep bands: how far each zone boundary of a sweep moves under the
  * design's tolerances (tippe/design.h), and the zone widths that survive.
  *

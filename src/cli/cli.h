@@ -152,7 +152,7 @@ int tippe_cli_parse_unit(const char *text, const char *unit, double *out);
 /* The option of the table called name (without "--"), or NULL. */
 tippe_cli_opt *tippe_cli_find_opt(tippe_cli_spec *spec, const char *name);
 
-/* ---- argument plumbing every verb shares (src/cli/common.c) ---- */
+/* ---- argument plumbing every verb shares (src/cli/args.c) ---- */
 
 /* Prints "tippe VERB: MESSAGE (try tippe VERB --help)" on stderr; returns 2. */
 int tippe_cli_usage_error(const char *verb, const char *fmt, ...)

@@ -1,4 +1,4 @@
-/* test_geometry: the solids' closed forms against an independent numerical
+/* test_print_geometry: the solids' closed forms against an independent numerical
  * integration of their regions, exact limits, composition, and thin-part accuracy. */
 #include "tippe/design.h"
 
@@ -572,5 +572,5 @@ int main(void)
     for (int k = 0; k < 4; k++)
         printf("max relative error vs numerical integration, %s: %.2e\n", kind_name[k],
                max_err_by_kind[k]);
-    return check_summary("test_geometry");
+    return check_summary("test_print_geometry");
 }

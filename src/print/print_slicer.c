@@ -7,7 +7,7 @@
  * (tippe_tube). Nothing is sampled but the heights the slicer samples (the middle of each
  * layer, PrintObjectSlice.cpp), so the model is exact arithmetic on the slicer's own
  * discretisation; what it leaves out is listed in docs/printing.md. */
-#include "design/section.h"
+#include "print/section.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -387,7 +387,7 @@ int main(void)
     tippe_design *d = NULL;
     CHECK(tippe_design_load(M12, NULL, 0, &d, &err) == TIPPE_OK, "%s", err.msg);
     if (!d)
-        return check_summary("test_tolerance");
+        return check_summary("test_sweep_tolerance");
     tippe_sweep_result r;
     tippe_sweep_bands_result b;
     CHECK(tippe_sweep_design(d, 0, 0, NULL, &r, &err) == TIPPE_OK, "%s", err.msg);
@@ -443,5 +443,5 @@ int main(void)
         tippe_sweep_result_free(&r);
     }
     tippe_design_free(d);
-    return check_summary("test_tolerance");
+    return check_summary("test_sweep_tolerance");
 }

@@ -1,6 +1,6 @@
 /* print.c: the sparse core of a printed part under the continuous rule (the
  * print block's "model": "skins"; the default is the slicer's rules,
- * print_slicer.c; see include/tippe/design.h).
+ * print_slicer.c; see include/tippe/print.h).
  *
  * Notation: P is the printed part (the part minus its voids) in the (r, z)
  * half-plane; w is the wall thickness, t the skin thickness. A point is in
@@ -16,7 +16,7 @@
  * z + t or a fixed height; each value carries a tag saying which, and the
  * list of tags along core(z) (its "signature") changes exactly where the
  * integrand stops being one smooth expression. */
-#include "design/section.h"
+#include "print/section.h"
 
 #include <math.h>
 #include <stdlib.h>

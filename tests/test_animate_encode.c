@@ -61,7 +61,7 @@ static void test_full_disk(tippe_film_format f, const char *name)
     /* The first film loads FFmpeg (dlopen) and fills its lasting caches. */
     int rc = film_to_full_disk(f, &err);
     if (rc == TIPPE_ECOMPUTE && strstr(err.msg, "no ") && strstr(err.msg, "encoder")) {
-        printf("test_encode: %s skipped: %s\n", name, err.msg);
+        printf("test_animate_encode: %s skipped: %s\n", name, err.msg);
         return;
     }
     CHECK(rc == TIPPE_ECOMPUTE, "%s into /dev/full: status %d, want TIPPE_ECOMPUTE", name, rc);
@@ -88,11 +88,11 @@ int main(int argc, char **argv)
     if (argc >= 1 && (!t || !strstr(t, tunable))) {
         setenv("GLIBC_TUNABLES", tunable, 1);
         execv("/proc/self/exe", argv);
-        perror("test_encode: execv /proc/self/exe");
+        perror("test_animate_encode: execv /proc/self/exe");
         return 1;
     }
     test_full_disk(TIPPE_FILM_GIF, "GIF");
     test_full_disk(TIPPE_FILM_MP4, "MP4");
     test_full_disk(TIPPE_FILM_WEBM, "WebM");
-    return check_summary("test_encode");
+    return check_summary("test_animate_encode");
 }

@@ -1,4 +1,4 @@
-/* Stubs of the plots (src/plot*.c, PLplot) for the tippe command: see module.h. */
+/* Stubs of the plots (the files of src/plot/, PLplot) for the tippe command: see module.h. */
 #include "module.h"
 #include "tippe/plot.h"
 #include "tippe/physics.h"

@@ -1,5 +1,5 @@
 /* gcode_body.c: the deposit's mass moments, its layers, objects and clusters,
- * and the part found in it (see include/tippe/gcode.h).
+ * and the part found in it (see include/tippe/print.h).
  *
  * A bead of mass dm uniform along the segment a -> b (t in [0, 1]) has, about
  * the reference point o (a, b taken relative to o), the exact sums
@@ -10,7 +10,7 @@
  * dm h^2/12 along z (a uniform w x h rectangle's variances). Sums are kept
  * about the first deposit's (x, y, 0) so that the central moments, formed as
  * q - m c c^T, lose little to cancellation on a bed hundreds of mm wide. */
-#include "design/gcode_state.h"
+#include "print/gcode_state.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,4 +1,4 @@
-/* The G-code reader (src/gcode.c, src/gcode_body.c) against closed forms.
+/* The G-code reader (src/print/gcode.c, src/print/gcode_body.c) against closed forms.
  *
  * Synthetic G-code, written here, of shapes whose moments are known: one
  * straight bead (a rod, and a box), a tube of stacked polygon or arc rings
@@ -888,5 +888,5 @@ int main(void)
     test_refusals();
     test_python_check();
     test_prusaslicer();
-    return check_summary("test_gcode");
+    return check_summary("test_print_gcode");
 }

@@ -6,7 +6,7 @@
  * Config comments are "; key = value" (PrusaSlicer, SuperSlicer, OrcaSlicer's
  * config block, at the file's end) or "; key: value" (BambuStudio's header,
  * Cura's ";Filament used: 1.2m"); lists are per extruder. */
-#include "design/gcode_state.h"
+#include "print/gcode_state.h"
 
 #include <math.h>
 #include <stdio.h>

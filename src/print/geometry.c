@@ -15,7 +15,7 @@
  * The inertia that comes out (tippe_moments_inertia) is the paper's A and C:
  * the inertia tensor about the centre of mass is diag(A, A, C) for an axially
  * symmetric body (section 3, "I_x = I_y := A and I_z := C"). */
-#include "tippe/design.h"
+#include "tippe/print.h"
 #include "tippe/base.h"
 
 #include <float.h>

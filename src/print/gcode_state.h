@@ -1,9 +1,9 @@
-/* gcode_state.h: what the G-code reader (gcode.c) hands the deposit's
+/* print/gcode_state.h: what the G-code reader (gcode.c) hands the deposit's
  * accumulator (gcode_body.c). Lengths in mm, volumes in mm^3, masses in kg. */
-#ifndef TIPPE_DESIGN_GCODE_STATE_H
-#define TIPPE_DESIGN_GCODE_STATE_H
+#ifndef TIPPE_PRINT_GCODE_STATE_H
+#define TIPPE_PRINT_GCODE_STATE_H
 
-#include "tippe/design.h"
+#include "tippe/print.h"
 
 #include <stddef.h>
 

@@ -1,9 +1,9 @@
-/* design/section.h: the printed part sliced at one height (print.c), for the
+/* print/section.h: the printed part sliced at one height (print.c), for the
  * layer model of the slicer's rules (print_slicer.c). */
-#ifndef TIPPE_DESIGN_SECTION_H
-#define TIPPE_DESIGN_SECTION_H
+#ifndef TIPPE_PRINT_SECTION_H
+#define TIPPE_PRINT_SECTION_H
 
-#include "tippe/design.h"
+#include "tippe/print.h"
 
 /* print.c: the printed part's cross-section at a height, and its extent in z
  * (for the slicer's layer model, print_slicer.c). */

@@ -1,5 +1,5 @@
 /* gcode.c: reading FFF G-code into the deposit's accumulator (see
- * include/tippe/gcode.h; gcode_body.c sums the moments).
+ * include/tippe/print.h; gcode_body.c sums the moments).
  *
  * Two passes over the text: the first reads the slicer's config comments
  * (written at the end of the file: filament diameter and density, volumetric
@@ -25,7 +25,7 @@
  * Commands we do not use are skipped
  * with their arguments (M117 messages), and so are extended commands
  * (Klipper's PRINT_START ...; EXCLUDE_OBJECT_START/END label objects). */
-#include "design/gcode_state.h"
+#include "print/gcode_state.h"
 
 #include <errno.h>
 #include <math.h>

@@ -156,5 +156,5 @@ int main(void)
     const char *sets[] = {NULL, "parts.body.print.measured_mass_g=20", NULL, NULL};
     for (int k = 0; designs[k]; k++)
         check_design(designs[k], sets[k]);
-    return check_summary("test_3mf_meta");
+    return check_summary("test_export_3mf_meta");
 }
