@@ -270,5 +270,5 @@ int main(void)
     vanishing_rim();
     ring_upright();
     viscous_saturates();
-    return check_summary("test_rim_contact");
+    return check_summary("test_physics_rim");
 }
