@@ -168,15 +168,36 @@ static void energy_books(void)
         {"patch", friction_model(t, 0.0, TIPPE_FRICTION_PATCH, 0.3, 0)},
     };
     laws[2].m.patch_radius_m = 2e-4;
+    const double alpha = t.rim_half_angle_rad[0];
     for (int i = 0; i < 3; i++) {
         tippe_dynamics_initial ic = m12_launch(&laws[i].m, 94.25);
         tippe_dynamics_result r;
-        tippe_dynamics_options o = run_options(20.0, NULL, NULL, 0.0);
+        /* the patch law at the precise preset: balanced closes its books to ~1e-5
+         * (docs/dynamics.md, "Extremes"), precise to 1e-6 */
+        tippe_dynamics_options o = run_options(20.0, i == 2 ? "precise" : NULL, NULL, 0.0);
         o.run_to_t_end = 1;
+        o.level = TIPPE_LEVEL_TRAJECTORY;
+        o.sample_dt = 0.0; /* every accepted step: the stepper's own, long ones included */
+        tippe_dynamics_samples buf = {0, 0, NULL};
+        o.on_sample = keep_sample;
+        o.sample_ctx = &buf;
         if (run_with(&laws[i].m, &ic, o, &r)) {
             CHECK(0, "%s run failed", laws[i].name);
             continue;
         }
+        /* the regime is the geometry's at every sample (1e-9 rad of slack at the edge):
+         * a switch the events missed would run the wrong contact (the patch law's long
+         * implicit steps once did) */
+        int wrong = 0;
+        for (int k = 0; k < buf.n; k++) {
+            const double th = buf.s[k].theta;
+            const int want = th < alpha ? 1 : M_PI - th < alpha ? 2 : 0;
+            const int edge = fabs(th - alpha) < 1e-9 || fabs(M_PI - th - alpha) < 1e-9;
+            wrong += !edge && buf.s[k].rim != want;
+        }
+        CHECK(wrong == 0, "%s: %d of %d samples in the wrong contact regime", laws[i].name,
+              wrong, buf.n);
+        tippe_dynamics_samples_free(&buf);
         printf("M12 on its rim, %s: energy book %.2e of E0, %ld switches, on a rim %d\n",
                laws[i].name, r.energy_rel_error, r.rim_switches, r.rim_touched);
         CHECK(r.rim_touched && r.energy_rel_error < 1e-6,

@@ -795,7 +795,8 @@ static int run_try_rolling(run_state *rs, tippe_dynamics_result *res)
  * Each regime's equations extend smoothly past the crossing, so the stepper's trial
  * stages there are harmless. t_full: the step's end before another event cut it
  * (then only the end state is tested, the stages having gone beyond it). Returns 1
- * if it switched, 0 if not, < 0 on failure. */
+ * if it switched, 2 if the step was undone to be taken again shorter, 0 if
+ * nothing happened, < 0 on failure. */
 static int run_rim_event(run_state *rs, tippe_dynamics_result *res, double t_full)
 {
     dyn_ctx *c = &rs->c;
@@ -804,10 +805,35 @@ static int run_rim_event(run_state *rs, tippe_dynamics_result *res, double t_ful
     if (!(end < -RIM_EVENT_TOL) && (cut || !(c->min_stage_rim < -RIM_EVENT_TOL)))
         return 0;
     double hc = 0.0, ycross[DIM_TRAJECTORY];
-    int f = locate_rim(c, &rs->sys, rs->t_prev, rs->y_prev, rs->t - rs->t_prev,
-                       end < -RIM_EVENT_TOL, ycross, &hc);
-    if (f <= 0)
+    const double H = rs->t - rs->t_prev;
+    int f = locate_rim(c, &rs->sys, rs->t_prev, rs->y_prev, H, end < -RIM_EVENT_TOL, ycross, &hc);
+    if (f < 0)
         return f;
+    if (f == 0 && !(end < -RIM_EVENT_TOL))
+        return 0; /* only a trial stage dipped past: no crossing in the step */
+    if (f == 0) {
+        /* The step ends past the switch but a single rk8pd probe of it cannot bracket
+         * the crossing: a long step of an implicit stepper (msbdf under the patch law,
+         * steps far beyond rk8pd's stability). Take the step again, 16 times shorter,
+         * until the probe can; below 1e-12 s switch where it ended. */
+        if (H > 1e-12) {
+            if (c->stick)
+                res->rolling_time_s -= H;
+            if (rs->traj && rs->opt->sample_dt > 0.0 && rs->at_sample) {
+                rs->at_sample = 0;
+                rs->i_sample--;
+            }
+            rs->t = rs->t_prev;
+            memcpy(rs->y, rs->y_prev, c->dim * sizeof *rs->y);
+            rs->h = H / 16.0;
+            gsl_odeiv2_driver_reset(rs->drv);
+            if (tippe_dynamics_contact_eval(c, rs->y, &rs->ct))
+                return -1;
+            return 2;
+        }
+        hc = H;
+        memcpy(ycross, rs->y, c->dim * sizeof *rs->y);
+    }
     if (c->stick)
         res->rolling_time_s -= rs->t - rs->t_prev - hc;
     rs->t = rs->t_prev + hc;
