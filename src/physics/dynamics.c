@@ -149,6 +149,10 @@ static void ctx_set_rims(dyn_ctx *c, const tippe_dynamics_model *model,
         c->rim_cos[p] = cos(a);
         c->rim_Rcos[p] = c->R * cos(a);
         c->rim_r[p] = c->R * sin(a);
+        c->rim_face_sin[p] = fmin(RIM_FACE_SIN, 0.5 * sin(a));
+        c->rim_rho[p] = c->rim_r[p] / c->rim_face_sin[p];
+        c->rim_D[p] = c->rim_Rcos[p] - sqrt((c->rim_rho[p] - c->rim_r[p]) *
+                                            (c->rim_rho[p] + c->rim_r[p]));
     }
     c->rim_mu_c = model->mu_c > 0.0 ? model->mu_c : TIPPE_LAUNCH_DEFAULT_MU_C;
     c->min_stage_rim = INFINITY;
@@ -440,7 +444,7 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
     if (c->has_rims) {
         const double inv_kn = 1.0 / sqrt(dot3(rs->y + IK, rs->y + IK));
         const double k[3] = {rs->y[IK] * inv_kn, rs->y[IK + 1] * inv_kn, rs->y[IK + 2] * inv_kn};
-        c->rim = rim_regime(c, k);
+        c->rim = rim_regime(c, k, &c->face);
         rs->rim_touched = rs->launched_on_rim = c->rim != 0;
     }
     double omega_scale;
@@ -845,9 +849,17 @@ static int run_rim_event(run_state *rs, tippe_dynamics_result *res, double t_ful
     contact o;
     if (tippe_dynamics_contact_eval(c, rs->y, &o))
         return -1;
-    const int from = c->rim;
-    if (from) {
-        c->rim = 0;
+    const int from = c->rim, from_face = c->face;
+    if (from && from_face) {
+        c->face = 0; /* off the face onto the rim */
+    } else if (from) {
+        /* the nearer of the rim's two edges: its polar angle (to the sphere) or its face */
+        const double S = hypot(o.k[0], o.k[1]);
+        const double edge = from == 1 ? o.k[2] - c->rim_cos[0] : -o.k[2] - c->rim_cos[1];
+        if (S - c->rim_face_sin[from - 1] < edge)
+            c->face = 1;
+        else
+            c->rim = 0;
     } else { /* onto the rim whose stay went below 0 */
         const double s0 = c->rim_alpha[0] > 0.0 ? c->rim_cos[0] - o.k[2] : INFINITY;
         const double s1 = c->rim_alpha[1] > 0.0 ? c->rim_cos[1] + o.k[2] : INFINITY;
@@ -857,7 +869,7 @@ static int run_rim_event(run_state *rs, tippe_dynamics_result *res, double t_ful
     if (tippe_dynamics_contact_eval(c, rs->y, &rs->ct))
         return -1;
     res->rim_switches++;
-    if (from) {
+    if (from && !c->rim) {
         /* off the rim: J is constant again (on the sphere), from here */
         tippe_dynamics_sample here;
         tippe_dynamics_paper_variables(c, rs->t, rs->y, &rs->ct, &here);

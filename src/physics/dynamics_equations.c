@@ -23,12 +23,6 @@
  * rounding cost 2x. */
 #define PATCH_LOAD_CORRECTIONS 1
 
-/* Below this sine of the tilt on a rim the whole ring touches. Only an exactly
- * upright axis (to rounding) is a ring: any representable tilt gives the point
- * contact, whose direction u_h / |u_h| is exact in relative terms. Between the
- * ring and a tilt of the elastic approach over the rim's radius (~1e-4 rad) a real
- * rim spreads its load over an arc: not modelled (docs/dynamics.md). */
-#define RING_SIN 1e-150
 
 /* The angular acceleration that a torque tau about the centre of mass adds:
  * A omega' = tau - (1 - A/C)(tau.k) k (the lab form of eq 3.13, L = A omega + (C - A) n k). */
@@ -121,8 +115,20 @@ static void rim_geometry(const dyn_ctx *c, contact *o, const double wk[3])
     const double ud[3] = {s * wk[0], s * wk[1], s * wk[2]}; /* du/dt = omega x u */
     const double S = hypot(u[0], u[1]);
     double W[3] = {0.0, 0.0, 0.0}, Wd[3] = {0.0, 0.0, 0.0};
-    o->ring = !(S > RING_SIN);
-    if (!o->ring) {
+    o->ring = c->face;
+    if (c->face) {
+        /* the face's sphere (RIM_FACE_SIN): its lowest point, as the paper's sphere's */
+        double qd[3];
+        const double D = c->rim_D[p];
+        for (int i = 0; i < 3; i++) {
+            o->q[i] = c->eps * k[i] + D * u[i];
+            qd[i] = c->eps * wk[i] + D * ud[i];
+        }
+        o->q[2] -= c->rim_rho[p];
+        cross3(o->w, qd, o->wqd);
+        return;
+    }
+    {
         const double hx = u[0] / S, hy = u[1] / S;
         const double Sd = hx * ud[0] + hy * ud[1];
         const double hdx = (ud[0] - hx * Sd) / S, hdy = (ud[1] - hy * Sd) / S;
@@ -153,8 +159,8 @@ static double rim_viscous_mu(const dyn_ctx *c, double slip2)
     return c->mu / sqrt(1.0 + c->mu * c->mu * slip2 / (c->rim_mu_c * c->rim_mu_c));
 }
 
-/* The couple about e3 per unit Rn of a ring standing upright (the whole rim
- * touches, radius r, the load uniform): each element slips at omega_n r along the
+/* The couple about e3 per unit Rn of the face within RIM_FACE_SIN of upright, as a
+ * ring (the load on the rim, radius r, uniform): each element slips at omega_n r along the
  * rim. Coulomb (and the patch law, whose patch is then the ring): -mu_c r
  * sgn(omega_n), regularised as the sliding law; viscous: -mu r^2 omega_n,
  * saturated as on the rim (rim_viscous_mu). */

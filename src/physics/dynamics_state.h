@@ -54,20 +54,40 @@ typedef struct {
     int has_rims;
     double rim_alpha[2], rim_cos[2], rim_Rcos[2], rim_r[2];
     int rim;              /* the contact now: 0 the sphere, 1 pole [0]'s rim, 2 pole [1]'s */
+    int face;             /* on a rim's pole, within RIM_FACE_SIN of upright: its flat face */
+    double rim_rho[2], rim_D[2]; /* the face's sphere: radius, centre's distance along u, m */
+    double rim_face_sin[2]; /* the face's edge: RIM_FACE_SIN, or half the rim's sine if less */
     double rim_mu_c;      /* viscous law on a rim: the Coulomb coefficient its force
                              saturates at (dynamics_equations.c, rim_friction) */
     double min_stage_rim; /* least rim_stay over the stages of a step */
 } dyn_ctx;
 
-/* Positive while the contact regime c->rim holds at axis k, crossing 0 where the
- * contact moves between the sphere and a rim: at the rim's polar angle, where the
- * rim's lowest point is the sphere's lowest point (the contact is continuous). */
+/* Tilts from a pole below RIM_FACE_SIN (sine) stand on the opening's flat face, not
+ * on one point of its rim. A top whose spin is gone rocks on its flat end, its tilt
+ * passing through 0: the rigid rim's contact would jump to the opposite point of the
+ * rim (a rocking impact, Housner 1963), dq/dt unbounded, which no stepper crosses (msbdf
+ * stalled at a tilt of 6e-11 rad). So the face is a sphere of radius r / RIM_FACE_SIN
+ * through the rim (55 m on the M12, 0.27 um high): its lowest point moves smoothly
+ * from the centre to the rim, where the load of a real face spreads once r times the
+ * tilt is of the elastic approach's order (~1e-6 m over r ~ 5 mm: 1e-4). The face
+ * carries the ring's drilling couple (dynamics_equations.c, ring_couple). An opening
+ * narrower than that keeps half its sine for the face (a face sphere of radius 2 R). */
+#define RIM_FACE_SIN 1e-4
+
+/* Positive while the contact regime (c->rim, c->face) holds at axis k, crossing 0
+ * where the contact moves between the sphere, a rim and its face: at the rim's polar
+ * angle, where the rim's lowest point is the sphere's, and at the face's edge, where
+ * the face's lowest point is on the rim (the contact is continuous at both). */
 static inline double rim_stay(const dyn_ctx *c, const double k[3])
 {
-    if (c->rim == 1)
-        return k[2] - c->rim_cos[0];
-    if (c->rim == 2)
-        return -k[2] - c->rim_cos[1];
+    if (c->rim) {
+        const double S = hypot(k[0], k[1]);
+        const double fs = c->rim_face_sin[c->rim - 1];
+        if (c->face)
+            return fs - S;
+        const double edge = c->rim == 1 ? k[2] - c->rim_cos[0] : -k[2] - c->rim_cos[1];
+        return fmin(edge, S - fs);
+    }
     double s = INFINITY;
     if (c->rim_alpha[0] > 0.0)
         s = c->rim_cos[0] - k[2];
@@ -76,13 +96,20 @@ static inline double rim_stay(const dyn_ctx *c, const double k[3])
     return s;
 }
 
-/* The regime at axis k: the rim of the pole within its half-angle, else the sphere. */
-static inline int rim_regime(const dyn_ctx *c, const double k[3])
+/* The regime at axis k: the rim of the pole within its half-angle (its face within
+ * RIM_FACE_SIN of the pole), else the sphere. */
+static inline int rim_regime(const dyn_ctx *c, const double k[3], int *face)
 {
-    if (c->rim_alpha[0] > 0.0 && k[2] > c->rim_cos[0])
+    const double S = hypot(k[0], k[1]);
+    *face = 0;
+    if (c->rim_alpha[0] > 0.0 && k[2] > c->rim_cos[0]) {
+        *face = S < c->rim_face_sin[0];
         return 1;
-    if (c->rim_alpha[1] > 0.0 && -k[2] > c->rim_cos[1])
+    }
+    if (c->rim_alpha[1] > 0.0 && -k[2] > c->rim_cos[1]) {
+        *face = S < c->rim_face_sin[1];
         return 2;
+    }
     return 0;
 }
 
