@@ -21,9 +21,11 @@ for f in designs/*.json; do
     check "$stem: sheet JSON, Markdown and the export's files written" \
         test -s "$tmp/$stem/$stem-build.json" -a -s "$tmp/$stem/$stem-build.md" -a -s "$tmp/$stem/$stem.3mf"
     # every reachable setting's launch was run and ended as its behaviour says
-    # (the central launch at 1.25 x the threshold spin)
+    # (the central launch at 1.25 x the threshold spin), where the sphere is whole; where
+    # a hole opens at a pole the launch follows its rim (issue 35), which the zones'
+    # theory does not: there it only has to have run
     check "$stem: every reachable setting's launch check ends as its behaviour" \
-        json_ok "$tmp/$stem.json" 'all(s["launch_as_expected"] for s in o["settings"] if s["reachable"])'
+        json_ok "$tmp/$stem.json" 'all(s["launch_as_expected"] or o["polar_caps"] for s in o["settings"] if s["reachable"]) and all(s.get("launch_verdict", s.get("verdict")) is not None for s in o["settings"] if s["reachable"])'
     # every STL file the sheet names (bill of materials, steps) is one it wrote
     python3 - "$tmp/$stem/$stem-build.md" "$tmp/$stem" <<'EOF' && ok || bad "$stem: the sheet names an STL file that was not written"
 import fnmatch, os, re, sys

@@ -245,6 +245,10 @@ static void print_summary(const args *a, const tippe_film *f, int film_format, l
         fprintf(out, "verdict   bounded, decided (%s) at t = %.6g s: theta stays in "
                 "[%.4g, %.4g] rad (no end state)\n",
                 tippe_decision_name(r->how), r->t_verdict, r->theta_lo_rad, r->theta_hi_rad);
+    else if (r->how == TIPPE_DECIDED_ENERGY_CONE && r->verdict == TIPPE_VERDICT_TIP)
+        fprintf(out, "verdict   tip, proved at t = %.6g s by the energy alone (energy_cone): "
+                "theta stays above %.4g rad for ever; the rest state is not proved\n",
+                r->t_verdict, r->theta_lo_rad);
     else if (r->how == TIPPE_DECIDED_ENERGY_CONE)
         fprintf(out, "verdict   no_tip, proved at t = %.6g s by the energy alone (energy_cone): "
                 "theta stays below %.4g rad for ever; the rest state is not proved\n",

@@ -140,7 +140,12 @@ static void print_verdict_line(const tippe_launch_record *rec)
                "spin %.4g rad/s\n", th, th * deg, rec->spin_final_rad_s);
         break;
     default:
-        if (rec->how == TIPPE_DECIDED_ENERGY_CONE)
+        if (rec->how == TIPPE_DECIDED_ENERGY_CONE && rec->verdict == TIPPE_VERDICT_TIP)
+            printf("\nverdict    tip: proved at t = %.4g s by the energy alone (energy_cone): it "
+                   "stays within %.2f deg of inverted for ever, on its flat end's well (theta "
+                   "now %.1f deg); the rest state is not proved\n",
+                   rec->t_s, (M_PI - rec->theta_lo_rad) * deg, th * deg);
+        else if (rec->how == TIPPE_DECIDED_ENERGY_CONE)
             printf("\nverdict    %s: proved at t = %.4g s by the energy alone (energy_cone): it "
                    "stays within %.2f deg of upright for ever (theta now %.1f deg); the rest "
                    "state is not proved\n",
@@ -415,6 +420,8 @@ static int check_laws(const hands_args *a, const tippe_design *d)
                          rec->theta_hi_rad * deg);
             else if (rec->how == TIPPE_DECIDED_OBSERVED)
                 snprintf(end, sizeof end, "%.1f deg (not proved)", rec->theta_final_rad * deg);
+            else if (rec->how == TIPPE_DECIDED_ENERGY_CONE && rec->verdict == TIPPE_VERDICT_TIP)
+                snprintf(end, sizeof end, "above %.1f deg for ever", rec->theta_lo_rad * deg);
             else if (rec->how == TIPPE_DECIDED_ENERGY_CONE)
                 snprintf(end, sizeof end, "within %.1f deg for ever", rec->theta_hi_rad * deg);
             else if (isfinite(rec->theta_final_rad))

@@ -26,11 +26,17 @@ void tippe_cli_print_verdict_proof(const tippe_dynamics_result *r, const char *p
         return;
     }
     if (r->how == TIPPE_DECIDED_ENERGY_CONE) {
-        printf("%s%s: stays within %.4g rad (%.2f deg) of upright for ever (now %.4g rad)\n",
-               prefix, tippe_verdict_name(r->verdict), r->theta_hi_rad,
-               r->theta_hi_rad * 180 / M_PI, th);
+        if (r->verdict == TIPPE_VERDICT_TIP) /* the well of a flat end (a cut far pole) */
+            printf("%s%s: stays above %.4g rad (%.2f deg), within its flat end's well, for ever "
+                   "(now %.4g rad)\n",
+                   prefix, tippe_verdict_name(r->verdict), r->theta_lo_rad,
+                   r->theta_lo_rad * 180 / M_PI, th);
+        else
+            printf("%s%s: stays within %.4g rad (%.2f deg) of upright for ever (now %.4g rad)\n",
+                   prefix, tippe_verdict_name(r->verdict), r->theta_hi_rad,
+                   r->theta_hi_rad * 180 / M_PI, th);
         printf("%*sproved at t = %.6g s (energy_cone): the energy, margin %.3g J included, is "
-               "below the centre of mass's height there and only falls under the patch; the "
+               "below the centre of mass's height there and only falls under friction; the "
                "rest state within is not proved (J drifts)\n",
                (int)strlen(prefix), "", r->t_verdict, r->margin_J);
         return;
