@@ -269,7 +269,7 @@ static void api_check(serve_server *s, const cJSON *req, serve_response *out)
     cJSON *j = rc ? NULL : tippe_sweep_check_json(&c, &o, NULL, 0);
     if (rc) {
         tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500,
-                                  strstr(err.msg, "Z2") ? "z2_mm" : NULL, "%s", err.msg);
+                                  err.field[0] ? err.field : NULL, "%s", err.msg);
         tippe_design_free(d);
         return;
     }

@@ -101,7 +101,7 @@ int tippe_sweep_check_run(const tippe_design *d, double z2_mm, const tippe_launc
     out->z2_mm = z2_mm;
     int rc;
     if ((rc = tippe_design_top(d, z2_mm, &out->top, err)) != 0)
-        return rc;
+        return tippe_error_blame(err, "z2_mm"); /* no top at this Z2 */
     /* the run records its time on a hole's rim at a pole (issue 25.7) */
     tippe_launch_options oc = *o;
     tippe_launch_polar_caps(d, z2_mm, &out->top, oc.cap_half_angle_rad);
