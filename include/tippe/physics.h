@@ -1095,4 +1095,102 @@ struct cJSON *tippe_launch_options_json(const tippe_launch_options *o, int fixed
  * "median_t_flip_s", "median_t_fall_s"}]}. NULL if out of memory. */
 struct cJSON *tippe_launch_radius_json(const tippe_launch_radius_sensitivity *s, int one_launch);
 
+/* ==== friction laws: one table entry per law (src/physics/friction_laws.c) ====
+ * What the command, the server and the scenario reader say of a law and take for it
+ * comes from its entry, as GSL describes a stepper by its gsl_odeiv2_step_type: a new
+ * law is an entry here and its force in the dynamics, never a case in a verb. */
+
+/* The friction options' parameters, in the order the command's --help lists them. */
+typedef enum {
+    TIPPE_LAW_PARAM_LAW,         /* the law, by name */
+    TIPPE_LAW_PARAM_PATCH_MM,    /* the patch's radius, mm */
+    TIPPE_LAW_PARAM_TABLE,       /* the table's surface (Hertz's patch) */
+    TIPPE_LAW_PARAM_MU_C,        /* Coulomb's coefficient */
+    TIPPE_LAW_PARAM_SLIP_SCALE,  /* Coulomb's regularisation speed, m/s */
+    TIPPE_LAW_PARAM_MU,          /* the viscous coefficient, s/m */
+    TIPPE_LAW_PARAM_RADIUS_SPAN, /* the radius sensitivity's factor F */
+    TIPPE_LAW_N_PARAMS
+} tippe_friction_param_id;
+
+typedef struct {
+    const char *key;    /* its name in JSON and the library ("patch_mm") */
+    const char *option; /* the command's option, without "--" ("patch-mm") */
+    const char *arg;    /* --help's placeholder ("A"), NULL: the unit's */
+    const char *unit;   /* NULL: dimensionless or a word */
+    int number;         /* 1 a number in [min, max], 0 a word */
+    double min, max;
+    const char *def;    /* the default, in words */
+    const char *help;   /* the command's --help ("\n" continues a line) */
+} tippe_friction_param;
+
+extern const tippe_friction_param tippe_friction_params[TIPPE_LAW_N_PARAMS];
+
+typedef struct {
+    tippe_friction_law law;
+    const char *name;  /* "patch": --friction's word, "law" in JSON */
+    const char *word;  /* "patch friction": in a sentence */
+    const char *label; /* a plot's name of its coefficient's law ("Coulomb") */
+    const char *text;  /* one line: what it is (--help) */
+    const char *doc;   /* where it is documented */
+    unsigned params;   /* the parameters it takes: bits 1 << tippe_friction_param_id */
+    int sticks;        /* sticks and rolls without slipping: stick and slip events */
+    int drills;        /* a couple about the normal changes J: its verdicts are observed */
+    int patch;         /* a contact patch: its radius (given, or Hertz's), its sensitivity */
+    /* the stepper that runs for the presets' rk8pd (tippe_dynamics_stepper_used) */
+    const char *stiff_stepper;
+    /* its model in words (tippe_dynamics_friction_text), and its keys in the
+     * "friction" object of a report (tippe_dynamics_friction_json) */
+    void (*describe)(const tippe_dynamics_model *m, double v_s, char *buf, size_t size);
+    void (*json)(struct cJSON *f, const tippe_dynamics_model *m);
+} tippe_friction_law_type;
+
+enum { TIPPE_N_FRICTION_LAWS = 4, TIPPE_MAX_FRICTION_LAWS = TIPPE_N_FRICTION_LAWS };
+
+/* The laws in the order they are listed; NULL past the last. */
+const tippe_friction_law_type *tippe_friction_law_at(int i);
+/* The entry of law (NULL if none), of a name (NULL if unknown). */
+const tippe_friction_law_type *tippe_friction_law_type_of(tippe_friction_law law);
+const tippe_friction_law_type *tippe_friction_law_find(const char *name);
+/* The law a parameter given alone names: the first listed that takes it (mu the
+ * viscous law, mu_c and slip_scale Coulomb's, patch_mm and table the patch law).
+ * tippe_friction_law_at(0) is the default, the paper's viscous law. */
+const tippe_friction_law_type *tippe_friction_law_named_by(tippe_friction_param_id p);
+/* 1 if law takes parameter p. */
+int tippe_friction_law_takes(tippe_friction_law law, tippe_friction_param_id p);
+/* The laws' names as a list: "viscous, coulomb, coulomb-creep or patch" (last " or ")
+ * or "viscous, coulomb, coulomb-creep, patch" (last ", "). Returns buf. */
+const char *tippe_friction_law_list(const char *last, char *buf, size_t size);
+/* The command's --help of --friction: "friction law: viscous (eq 3.12, the paper's),
+ * ...; docs/dynamics.md", wrapped at width columns with "\n". Returns buf. */
+const char *tippe_friction_law_help(int width, char *buf, size_t size);
+
+/* The friction options as a front end was given them (its names mapped onto the
+ * parameters): which were given, and the values the rules need. */
+typedef struct {
+    const char *laws;   /* the law, or (names.list) several comma-separated; NULL: none */
+    unsigned given;     /* bits 1 << tippe_friction_param_id of the parameters given */
+    double patch_mm;    /* when given */
+    const char *table;  /* when given */
+} tippe_friction_given;
+
+/* How a front end names the parameters in its messages ("--patch-mm" or "patch_mm"),
+ * says "choose the law L" (a format with one %s: "--friction %s"), and whether the
+ * law may be a list (tippe check compares laws). */
+typedef struct {
+    const char *name[TIPPE_LAW_N_PARAMS];
+    const char *choose;
+    int list;
+} tippe_friction_names;
+
+/* The rules of the friction options, one place for both front ends: the laws named
+ * (or, with none, the law a coefficient given alone names: mu the viscous, mu_c or
+ * slip_scale Coulomb's, patch_mm or table the patch law; else o->law), each parameter
+ * given belongs to a law among them, one of patch_mm and table, a known table. Fills
+ * laws[0 .. *n_laws - 1] (room for TIPPE_MAX_FRICTION_LAWS), o->law (the first) and
+ * o->patch_radius_m. TIPPE_EINPUT naming the parameter in err->field (its key) and,
+ * in the message, by names. */
+int tippe_friction_choose(const tippe_friction_given *g, const tippe_friction_names *names,
+                          tippe_friction_law *laws, int *n_laws, tippe_launch_options *o,
+                          tippe_error *err);
+
 #endif

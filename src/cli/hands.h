@@ -44,13 +44,14 @@ struct cJSON;
 
 /* The friction options (--friction, --patch-mm, --table, --mu-c, --slip-scale,
  * --mu): tippe launch, map, check and build read them alike. */
-enum { HANDS_MAX_LAWS = 4 };
+enum { HANDS_MAX_LAWS = TIPPE_MAX_FRICTION_LAWS, HANDS_HELP_WIDTH = 70 };
 typedef struct {
     const char *friction;      /* --friction: a law, or (check) laws, comma-separated */
     const char *table;         /* --table (patch law) */
     double patch_mm;           /* --patch-mm (patch law; 0: Hertz from the materials) */
     int n_laws;                /* the laws chosen (1 unless a verb compares laws) */
     tippe_friction_law laws[HANDS_MAX_LAWS];
+    char help[512];            /* --friction's help, made from the laws' table */
 } hands_friction;
 
 /* The friction options into t (room for 6), writing into f and o; their count. */
@@ -111,6 +112,11 @@ void hands_print_top(const tippe_design *d, double z2, const tippe_top *t, doubl
                      const tippe_sweep_point_zone *z);
 void hands_print_distribution(const tippe_launch_options *o, int fixed_spin);
 void hands_print_model(const tippe_launch_options *o, const tippe_top *top);
+/* The stepper that runs for o (tippe_dynamics_stepper_used): its name, or, where the law
+ * runs another than the one named, stiff (a format of the stepper and the law, "%s for
+ * the stiff %s law"). Returns buf. */
+const char *hands_stepper_text(const tippe_launch_options *o, const char *stiff, char *buf,
+                               size_t size);
 
 /* The JSON of one tally (the options: tippe_launch_options_json; theory beside
  * a tally: tippe_sweep_theory_json). */

@@ -222,7 +222,7 @@ static int grid_make(const hands_args *a, const tippe_design *d, map_grid *g)
         g->cell_spin_rad_s[c] = 2 * M_PI * g->spin_rev_s[c % g->sn];
         tippe_launch_polar_caps(d, g->z2[c / g->sn], &g->cell_tops[c], g->cell_caps[c]);
     }
-    g->radius_runs = a->o.law == TIPPE_FRICTION_PATCH && !a->no_radius_sensitivity;
+    g->radius_runs = tippe_friction_law_type_of(a->o.law)->patch && !a->no_radius_sensitivity;
     if (g->radius_runs) {
         g->cell_changed = calloc((size_t)g->n_cells, sizeof *g->cell_changed);
         if (!g->cell_changed) {
@@ -453,7 +453,7 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
                    "verdict: the contact follows the rim there (JSON on_polar_cap per cell)\n",
                    all.on_cap, g->total);
         char jellett[64] = "J not conserved (drilling)";
-        if (a->o.law != TIPPE_FRICTION_PATCH || !(a->o.mu_c > 0)) /* nothing drills */
+        if (!tippe_friction_law_type_of(a->o.law)->drills || !(a->o.mu_c > 0)) /* nothing drills */
             snprintf(jellett, sizeof jellett, "largest Jellett drift %.2g",
                      all.max_jellett_rel_drift);
         printf("accuracy   %s; %.2f s on %d thread%s x %d rank%s "
