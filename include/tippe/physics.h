@@ -1193,4 +1193,55 @@ int tippe_friction_choose(const tippe_friction_given *g, const tippe_friction_na
                           tippe_friction_law *laws, int *n_laws, tippe_launch_options *o,
                           tippe_error *err);
 
+/* ==== a map's grid (tippe map; src/physics/launch_grid.c) ====
+ * Hand launches over a grid of Z2 and spin (tippe_launch_plan's groups are its cells,
+ * cell (i, j) at z2_mm[i] and spin_rev_s[j] is i * n_spin + j), with the patch law's
+ * reruns at 1/F and F times the radius. The front end runs the plan (and the reruns)
+ * where it likes, on threads or ranks; making the grid and tallying it are here. */
+typedef struct {
+    int n_z2, n_spin;
+    long per_cell, n_cells, total;  /* launches per cell, cells, launches */
+    double *z2_mm, *spin_rev_s;     /* the grid's values */
+    tippe_top *tops;                /* the top at each Z2 */
+    /* 1 where a part stands out of the sphere at z2_mm[i]: the top rests on it and the
+     * model does not apply (docs/design-format.md) */
+    unsigned char *model_invalid;
+    tippe_top *cell_tops;           /* each cell's top, spin and holes' openings: the plan */
+    double *cell_spin_rad_s;
+    double (*cell_caps)[2];
+    tippe_launch_record *rec;       /* the plan's launches, cell after cell */
+    tippe_launch_tally *cells;      /* each cell's tally (tippe_launch_grid_tally) */
+    /* the patch law's radius sensitivity: the same launches at 1/F ([0]) and F ([2])
+     * times the radius, the plain run being rec ([1]); NULL where not run (a radius
+     * beyond R/2) */
+    int radius_runs;
+    tippe_launch_record *rec_radius[TIPPE_LAUNCH_RADIUS_RUNS];
+    double radius_m[TIPPE_LAUNCH_RADIUS_RUNS], factor[TIPPE_LAUNCH_RADIUS_RUNS];
+    long *cell_changed;          /* launches of each cell whose outcome differs between radii */
+    long changed, cells_changed; /* their sum, and the cells with any */
+} tippe_launch_grid;
+
+/* The grid of d: n_z2 values from z2_from_mm to z2_to_mm, n_spin spins from
+ * spin_from_rad_s to spin_to_rad_s (evenly, both ends; one value: the first), per_cell
+ * launches each under o; the radius reruns if o's law has a patch and
+ * radius_sensitivity. TIPPE_EINPUT (err->field "z2_mm") where d has no top at a Z2,
+ * TIPPE_ECOMPUTE out of memory. Free with tippe_launch_grid_free, also on failure. */
+int tippe_launch_grid_make(const tippe_design *d, double z2_from_mm, double z2_to_mm, int n_z2,
+                           double spin_from_rad_s, double spin_to_rad_s, int n_spin,
+                           long per_cell, const tippe_launch_options *o, int radius_sensitivity,
+                           tippe_launch_grid *g, tippe_error *err);
+/* The plan of its launches (into g->rec, or g->rec_radius[i] with the options of
+ * tippe_launch_grid_radius_options). */
+tippe_launch_plan tippe_launch_grid_plan(const tippe_launch_grid *g);
+void tippe_launch_grid_radius_options(const tippe_launch_grid *g, const tippe_launch_options *o,
+                                      int i, tippe_launch_options *out);
+/* The launches to run, reruns included (for a progress bar). */
+long tippe_launch_grid_work(const tippe_launch_grid *g);
+/* After the runs: each cell's tally and, with the reruns, what changed between radii.
+ * TIPPE_ECOMPUTE if out of memory. */
+int tippe_launch_grid_tally(tippe_launch_grid *g, tippe_error *err);
+/* The tallied grid as a map (for tables and plots). */
+tippe_launch_map tippe_launch_grid_map(const tippe_launch_grid *g);
+void tippe_launch_grid_free(tippe_launch_grid *g);
+
 #endif
