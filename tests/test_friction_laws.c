@@ -51,7 +51,7 @@ static void test_table(void)
 static void test_help(void)
 {
     char buf[1024];
-    tippe_friction_law_help(70, buf, sizeof buf);
+    tippe_friction_law_help(70, "; docs/dynamics.md", buf, sizeof buf);
     int longest = 0;
     for (const char *line = buf; *line;) {
         const char *end = strchr(line, '\n');

@@ -1161,8 +1161,9 @@ int tippe_friction_law_takes(tippe_friction_law law, tippe_friction_param_id p);
  * or "viscous, coulomb, coulomb-creep, patch" (last ", "). Returns buf. */
 const char *tippe_friction_law_list(const char *last, char *buf, size_t size);
 /* The command's --help of --friction: "friction law: viscous (eq 3.12, the paper's),
- * ...; docs/dynamics.md", wrapped at width columns with "\n". Returns buf. */
-const char *tippe_friction_law_help(int width, char *buf, size_t size);
+ * ...", then tail ("; docs/dynamics.md"), wrapped at width columns with "\n". Returns
+ * buf. */
+const char *tippe_friction_law_help(int width, const char *tail, char *buf, size_t size);
 
 /* The friction options as a front end was given them (its names mapped onto the
  * parameters): which were given, and the values the rules need. */

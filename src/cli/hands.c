@@ -137,7 +137,8 @@ int hands_friction_options(hands_friction *f, tippe_launch_options *o, tippe_cli
         friction_opt(TIPPE_LAW_PARAM_SLIP_SCALE, &o->slip_scale_m_s),
         friction_opt(TIPPE_LAW_PARAM_MU, &o->mu),
     };
-    m[0].help = tippe_friction_law_help(HANDS_HELP_WIDTH, f->help, sizeof f->help);
+    m[0].help = tippe_friction_law_help(HANDS_HELP_WIDTH, "; docs/dynamics.md", f->help,
+                                       sizeof f->help);
     const int n = (int)(sizeof m / sizeof m[0]);
     memcpy(t, m, sizeof m);
     return n;

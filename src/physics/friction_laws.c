@@ -199,7 +199,7 @@ const char *tippe_friction_law_list(const char *last, char *buf, size_t size)
     return buf;
 }
 
-const char *tippe_friction_law_help(int width, char *buf, size_t size)
+const char *tippe_friction_law_help(int width, const char *tail, char *buf, size_t size)
 {
     /* the sentence, then wrapped at spaces */
     char text[1024];
@@ -209,7 +209,7 @@ const char *tippe_friction_law_help(int width, char *buf, size_t size)
                               i == 0 ? "" : i == TIPPE_N_FRICTION_LAWS - 1 ? " or " : ", ",
                               law_types[i].name, law_types[i].text);
     if (n < sizeof text)
-        snprintf(text + n, sizeof text - n, "; docs/dynamics.md");
+        snprintf(text + n, sizeof text - n, "%s", tail);
     snprintf(buf, size, "%s", text);
     /* greedy, at most width columns a line; never around "=" ("|F| = mu_c" stays whole) */
     for (char *line = buf, *space = NULL, *p = buf; *p; p++) {

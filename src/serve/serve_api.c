@@ -195,7 +195,8 @@ static int launch_request(const cJSON *req, double *z2, double *spin_rad_s,
      * --table) */
     const tippe_friction_param *pm = &tippe_friction_params[TIPPE_LAW_PARAM_PATCH_MM];
     tippe_friction_given g = {.laws = laws[law]};
-    if (tippe_serve_request_number(req, pm->key, pm->min, pm->max, 0, &g.patch_mm, out))
+    /* from 1 um, as docs/serve.md says (the command's --patch-mm from pm->min) */
+    if (tippe_serve_request_number(req, pm->key, 1e-3, pm->max, 0, &g.patch_mm, out))
         return -1;
     const cJSON *table = cJSON_GetObjectItemCaseSensitive(req, "table");
     if (table && !cJSON_IsString(table)) {
