@@ -4,6 +4,7 @@
  * another law is refused naming its field, and --friction's help is made whole. */
 #include "check.h"
 
+#include "tippe/design.h"
 #include "tippe/physics.h"
 
 #include <stdio.h>
@@ -133,10 +134,41 @@ static void test_rules(void)
           "an unknown law: %s", e.msg);
 }
 
+/* The rules that need the design (tippe_friction_for_design), on the M12 ball. */
+static void test_for_design(void)
+{
+    tippe_design *d = NULL;
+    tippe_error e;
+    if (tippe_design_load("designs/m12-setscrew.json", NULL, 0, &d, &e)) {
+        CHECK(0, "the M12 design loads: %s", e.msg);
+        return;
+    }
+    const tippe_friction_law patch = tippe_friction_law_named_by(TIPPE_LAW_PARAM_PATCH_MM)->law;
+    const tippe_friction_law viscous = tippe_friction_law_at(0)->law;
+    tippe_launch_options o;
+    tippe_launch_options_default(&o);
+    o.law = viscous;
+    CHECK(tippe_friction_for_design(d, &viscous, 1, NULL, &names, &o, &e) == TIPPE_OK &&
+              o.patch_radius_span == 0 && o.patch_E_star_pa == 0,
+          "the viscous law: nothing to do");
+    o.law = patch;
+    CHECK(tippe_friction_for_design(d, &patch, 1, "glass", &names, &o, &e) == TIPPE_OK &&
+              o.patch_E_star_pa > 1e9 && o.patch_radius_span == tippe_design_patch_radius_span(d),
+          "Hertz on glass: E* %g Pa, span %g", o.patch_E_star_pa, o.patch_radius_span);
+    tippe_launch_options_default(&o);
+    o.law = patch;
+    o.patch_radius_m = 0.6 * tippe_design_radius_mm(d) * 1e-3;
+    CHECK(tippe_friction_for_design(d, &patch, 1, NULL, &names, &o, &e) == TIPPE_EINPUT &&
+              !strcmp(e.field, "patch_mm") && !strncmp(e.msg, "--patch-mm ", 11),
+          "a patch wider than R/2: %s (%s)", e.msg, e.field);
+    tippe_design_free(d);
+}
+
 int main(void)
 {
     test_table();
     test_help();
     test_rules();
+    test_for_design();
     return check_summary("test_friction_laws");
 }

@@ -1193,6 +1193,15 @@ typedef struct {
 int tippe_friction_choose(const tippe_friction_given *g, const tippe_friction_names *names,
                           tippe_friction_law *laws, int *n_laws, tippe_launch_options *o,
                           tippe_error *err);
+/* The rules that need the design, where one of laws[0 .. n_laws - 1] has a patch: the
+ * radius sensitivity's span is the design's tolerance unless given (o->patch_radius_span
+ * > 0), a given radius (o->patch_radius_m) is at most half the ball's radius, else the
+ * radius is Hertz's on table (NULL: TIPPE_CONTACT_DEFAULT_TABLE; o->patch_E_star_pa,
+ * tippe_launch_patch_modulus). Nothing under the other laws. TIPPE_EINPUT with
+ * err->field, the parameter named by names in the message. */
+int tippe_friction_for_design(const tippe_design *d, const tippe_friction_law *laws, int n_laws,
+                              const char *table, const tippe_friction_names *names,
+                              tippe_launch_options *o, tippe_error *err);
 
 /* ==== a map's grid (tippe map; src/physics/launch_grid.c) ====
  * Hand launches over a grid of Z2 and spin (tippe_launch_plan's groups are its cells,

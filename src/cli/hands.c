@@ -144,17 +144,6 @@ int hands_friction_options(hands_friction *f, tippe_launch_options *o, tippe_cli
     return n;
 }
 
-/* 1 if law is among f's laws. */
-static int has_law(const hands_friction *f, int (*what)(const tippe_friction_law_type *))
-{
-    for (int i = 0; i < f->n_laws; i++)
-        if (what(tippe_friction_law_type_of(f->laws[i])))
-            return 1;
-    return 0;
-}
-
-static int has_patch(const tippe_friction_law_type *t) { return t->patch; }
-
 /* The command's names of the friction parameters, for the library's messages. */
 static const tippe_friction_names cli_names = {
     .name = {[TIPPE_LAW_PARAM_LAW] = "--friction",
@@ -190,13 +179,7 @@ int hands_friction_apply(const char *verb, hands_friction *f, tippe_launch_optio
 int hands_friction_patch(const hands_friction *f, tippe_launch_options *o, const tippe_design *d,
                          tippe_error *err)
 {
-    if (!has_law(f, has_patch))
-        return TIPPE_OK;
-    if (!(o->patch_radius_span > 0)) /* --radius-span, else the design's tolerance */
-        o->patch_radius_span = tippe_design_patch_radius_span(d);
-    if (o->patch_radius_m > 0)
-        return TIPPE_OK;
-    return tippe_launch_patch_modulus(d, f->table, &o->patch_E_star_pa, err);
+    return tippe_friction_for_design(d, f->laws, f->n_laws, f->table, &cli_names, o, err);
 }
 
 void hands_friction_law(const hands_friction *f, int i, const tippe_launch_options *o,
@@ -208,15 +191,6 @@ void hands_friction_law(const hands_friction *f, int i, const tippe_launch_optio
 
 int hands_patch(hands_args *a, const tippe_design *d, tippe_error *err)
 {
-    if (!has_law(&a->fr, has_patch))
-        return TIPPE_OK;
-    /* the dynamics' bound (a patch wider than R/2 is no patch), said with the option */
-    const double R_mm = tippe_design_radius_mm(d);
-    if (a->o.patch_radius_m > 0 && a->fr.patch_mm > 0.5 * R_mm)
-        return tippe_error_set(err, TIPPE_EINPUT,
-                               "--patch-mm %g: wider than half the ball's radius (R/2 = %g mm); "
-                               "a contact patch is small beside the ball (Hertz: a << R)",
-                               a->fr.patch_mm, 0.5 * R_mm);
     return hands_friction_patch(&a->fr, &a->o, d, err);
 }
 

@@ -129,3 +129,27 @@ int tippe_friction_choose(const tippe_friction_given *g, const tippe_friction_na
     o->patch_radius_m = patch_mm ? g->patch_mm * 1e-3 : 0.0;
     return TIPPE_OK;
 }
+
+int tippe_friction_for_design(const tippe_design *d, const tippe_friction_law *laws, int n_laws,
+                              const char *table, const tippe_friction_names *nm,
+                              tippe_launch_options *o, tippe_error *err)
+{
+    int patch = 0;
+    for (int i = 0; i < n_laws; i++)
+        patch |= tippe_friction_law_type_of(laws[i])->patch;
+    if (!patch)
+        return TIPPE_OK;
+    /* the dynamics' bound (a patch wider than R/2 is no patch), said with the parameter */
+    const double R_mm = tippe_design_radius_mm(d), a_mm = o->patch_radius_m * 1e3;
+    if (a_mm > 0.5 * R_mm)
+        return tippe_error_set_field(err, TIPPE_EINPUT,
+                                     tippe_friction_params[TIPPE_LAW_PARAM_PATCH_MM].key,
+                                     "%s %g: wider than half the ball's radius (R/2 = %g mm); "
+                                     "a contact patch is small beside the ball (Hertz: a << R)",
+                                     nm->name[TIPPE_LAW_PARAM_PATCH_MM], a_mm, 0.5 * R_mm);
+    if (!(o->patch_radius_span > 0)) /* given, else the design's tolerance */
+        o->patch_radius_span = tippe_design_patch_radius_span(d);
+    if (o->patch_radius_m > 0)
+        return TIPPE_OK;
+    return tippe_launch_patch_modulus(d, table, &o->patch_E_star_pa, err);
+}

@@ -217,22 +217,18 @@ static int launch_request(const cJSON *req, double *z2, double *spin_rad_s,
     return 0;
 }
 
-/* The patch law's table (Hertz at m g from the design's ball and the table's E
- * and nu) when no radius was given; 0, or -1 after an answer. */
+/* The patch law's radius for d (the library's rules: the design's tolerance as the
+ * span, Hertz's radius on the request's table when none was given); 0, or -1 after an
+ * answer. */
 static int patch_request(const cJSON *req, const tippe_design *d, tippe_launch_options *o,
                          serve_response *out)
 {
-    if (!tippe_friction_law_type_of(o->law)->patch)
-        return 0;
-    o->patch_radius_span = tippe_design_patch_radius_span(d); /* the design's tolerance */
-    if (o->patch_radius_m > 0)
-        return 0;
     /* launch_request checked it: a known surface, or none (the default table) */
     const cJSON *table = cJSON_GetObjectItemCaseSensitive(req, "table");
     tippe_error err = {0};
-    if (tippe_launch_patch_modulus(d, cJSON_IsString(table) ? table->valuestring : NULL,
-                                   &o->patch_E_star_pa, &err)) {
-        tippe_serve_respond_error(out, 400, "friction", "%s", err.msg);
+    if (tippe_friction_for_design(d, &o->law, 1, cJSON_IsString(table) ? table->valuestring : NULL,
+                                  &serve_friction_names, o, &err)) {
+        tippe_serve_respond_error(out, 400, err.field[0] ? err.field : "friction", "%s", err.msg);
         return -1;
     }
     return 0;
