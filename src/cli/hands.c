@@ -111,9 +111,7 @@ static void tilt_defaults(tippe_cli_spec *spec, tippe_launch_options *o)
         o->tilt_sd_rad = 0.5 * o->tilt_max_rad;
 }
 
-/* A friction parameter's option (tippe/physics.h's table: name, unit, range, default,
- * help) writing into value. */
-static tippe_cli_opt friction_opt(tippe_friction_param_id id, void *value)
+tippe_cli_opt hands_friction_opt(tippe_friction_param_id id, void *value)
 {
     const tippe_friction_param *p = &tippe_friction_params[id];
     return (tippe_cli_opt){.name = p->option,
@@ -130,12 +128,12 @@ static tippe_cli_opt friction_opt(tippe_friction_param_id id, void *value)
 int hands_friction_options(hands_friction *f, tippe_launch_options *o, tippe_cli_opt *t)
 {
     tippe_cli_opt m[] = {
-        friction_opt(TIPPE_LAW_PARAM_LAW, &f->friction),
-        friction_opt(TIPPE_LAW_PARAM_PATCH_MM, &f->patch_mm),
-        friction_opt(TIPPE_LAW_PARAM_TABLE, &f->table),
-        friction_opt(TIPPE_LAW_PARAM_MU_C, &o->mu_c),
-        friction_opt(TIPPE_LAW_PARAM_SLIP_SCALE, &o->slip_scale_m_s),
-        friction_opt(TIPPE_LAW_PARAM_MU, &o->mu),
+        hands_friction_opt(TIPPE_LAW_PARAM_LAW, &f->friction),
+        hands_friction_opt(TIPPE_LAW_PARAM_PATCH_MM, &f->patch_mm),
+        hands_friction_opt(TIPPE_LAW_PARAM_TABLE, &f->table),
+        hands_friction_opt(TIPPE_LAW_PARAM_MU_C, &o->mu_c),
+        hands_friction_opt(TIPPE_LAW_PARAM_SLIP_SCALE, &o->slip_scale_m_s),
+        hands_friction_opt(TIPPE_LAW_PARAM_MU, &o->mu),
     };
     m[0].help = tippe_friction_law_help(HANDS_HELP_WIDTH, "; docs/dynamics.md", f->help,
                                        sizeof f->help);

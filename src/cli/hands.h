@@ -24,10 +24,7 @@ struct cJSON;
  * (docs/dynamics.md, "Radius sensitivity"), for the hands_args A; WHAT names what is
  * run again ("the launch", "every cell's launches"). */
 #define HANDS_RADIUS_OPTIONS(A, WHAT)                                                          \
-    {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &(A)->o.patch_radius_span,     \
-     .arg = "F", .min = 1.01, .max = 10, .def = "the design's tolerance, else 2",             \
-     .help = "patch law: the radius sensitivity's reruns at a/F and a F, a the\n"              \
-             "patch radius used (Hertz's or --patch-mm)"},                                    \
+    hands_friction_opt(TIPPE_LAW_PARAM_RADIUS_SPAN, &(A)->o.patch_radius_span),                \
     {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,                                  \
      .value = &(A)->no_radius_sensitivity,                                                     \
      .help = "patch law: skip the reruns of " WHAT "\n"                                   \
@@ -54,6 +51,9 @@ typedef struct {
     char help[512];            /* --friction's help, made from the laws' table */
 } hands_friction;
 
+/* A friction parameter's option as the laws' table gives it (tippe_friction_params:
+ * name, unit, range, default, help), writing into value. */
+tippe_cli_opt hands_friction_opt(tippe_friction_param_id id, void *value);
 /* The friction options into t (room for 6), writing into f and o; their count. */
 int hands_friction_options(hands_friction *f, tippe_launch_options *o, tippe_cli_opt *t);
 /* After parsing: the law(s) into f->laws and o->law (the first), the patch radius into
