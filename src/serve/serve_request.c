@@ -225,9 +225,17 @@ tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, cons
          * own text ("design: parts[0].radius_mm: ..."; not of the materials table's) */
         char field[160] = "";
         const size_t klen = strlen(name);
-        if (err.field[0] && !strncmp(err.msg, name, klen) && !strncmp(err.msg + klen, ": ", 2) &&
-            strlen(err.field) < sizeof field - strlen(key) - 2)
+        const int own = !strncmp(err.msg, name, klen) && !strncmp(err.msg + klen, ": ", 2);
+        if (own && err.field[0] && strlen(err.field) < sizeof field - strlen(key) - 2) {
             snprintf(field, sizeof field, "%s.%s", key, err.field);
+        } else if (own) {
+            /* the checks of design/ that set their message by hand name the path only in
+             * it ("design: parts[0].material: ..."), until they set err.field too */
+            const char *f = err.msg + klen + 2, *colon = strstr(f, ": ");
+            if (colon && (size_t)(colon - f) < sizeof field - strlen(key) - 2 &&
+                !memchr(f, ' ', (size_t)(colon - f)))
+                snprintf(field, sizeof field, "%s.%.*s", key, (int)(colon - f), f);
+        }
         tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, field[0] ? field : key, "%s",
                             err.msg);
         return NULL;
