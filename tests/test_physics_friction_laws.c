@@ -170,5 +170,5 @@ int main(void)
     test_help();
     test_rules();
     test_for_design();
-    return check_summary("test_friction_laws");
+    return check_summary("test_physics_friction_laws");
 }
