@@ -9,7 +9,9 @@
    base's JSON reader, the plumbing of every loader);
 3. no cycles: file A calls file B when an undefined symbol of A.o is defined by
    B.o (nm); the calls between the library's and the command's files form no
-   circle, and a call between folders never runs up a layer.
+   circle, and a call between folders never runs up a layer;
+6. friction laws: no .c file outside src/physics/ names a law (TIPPE_FRICTION_*):
+   a law is one entry of src/physics/friction_laws.c's table.
 
 Usage: check_house.py SOURCE_DIR BUILD_DIR. Prints one line per breach and the
 closing line 'N passed, M failed'."""
@@ -272,6 +274,24 @@ for h in headers:
     n = read(os.path.join("include", "tippe", h)).count("\n")
     if n > 700 and h not in LONG_HEADERS_PENDING:
         fail("sizes: include/tippe/%s has %d lines (at most 700)" % (h, n))
+
+# 6. a friction law is one table entry (src/physics/friction_laws.c): no source
+#    outside physics/ names a law by its enum (issue 34.1); the verbs, the server and
+#    the readers ask the table what a law takes, says and needs.
+LAW = re.compile(r"TIPPE_FRICTION_[A-Z]")
+for d, _, files in os.walk(os.path.join(src_root, "src")):
+    rel = os.path.relpath(d, os.path.join(src_root, "src"))
+    if rel == "physics" or rel.startswith("physics" + os.sep):
+        continue
+    for f in sorted(files):
+        if f.endswith(".c"):
+            checks += 1
+            with open(os.path.join(d, f), encoding="utf-8") as fh:
+                n = len(LAW.findall(fh.read()))
+            if n:
+                fail("friction law named outside physics/: src/%s/%s names TIPPE_FRICTION_* %d "
+                     "times (ask the law's table entry, tippe_friction_law_type_of)" %
+                     (rel, f, n))
 
 print("check_house: %d objects, %d file-to-file calls, %d includes and symbols checked" %
       (len(defined), sum(len(b) for b in edges.values()), checks))

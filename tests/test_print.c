@@ -443,7 +443,7 @@ static void test_design_print_errors(void)
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         const char *sets[] = {cases[k].set};
         tippe_design *d = NULL;
-        tippe_error err = {0, ""};
+        tippe_error err = {0};
         int rc = tippe_design_load("designs/m12-setscrew.json", sets, 1, &d, &err);
         CHECK(rc == TIPPE_EINPUT && strstr(err.msg, cases[k].want), "--set %s: rc %d, '%s'",
               cases[k].set, rc, err.msg);

@@ -29,12 +29,24 @@ enum {
 typedef struct {
     int code;
     char msg[1024];
+    /* The input that was wrong, when one was: a JSON path ("parts[2].radius_mm") or a
+     * parameter's name ("z2_mm", "patch_mm"), "" when none is known. A front end maps it
+     * onto its own name (the server's field, the command's option) instead of reading
+     * the message. */
+    char field[128];
 } tippe_error;
 
 /* Sets err (if not NULL) and returns code, so that callers can write
- * `return tippe_error_set(err, TIPPE_EINPUT, "%s: %s: ...", file, path);` */
+ * `return tippe_error_set(err, TIPPE_EINPUT, "%s: %s: ...", file, path);`. The field
+ * is cleared: a message set anew blames nothing it does not name. */
 int tippe_error_set(tippe_error *err, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* The same, blaming field (a JSON path or a parameter's name; NULL: none). */
+int tippe_error_set_field(tippe_error *err, int code, const char *field, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+/* Names the field of an error already set (NULL: none); returns err->code (TIPPE_OK if
+ * err is NULL). */
+int tippe_error_blame(tippe_error *err, const char *field);
 
 /* Turns GSL's abort-on-error handler off, once per process and thread-safely:
  * every library entry point that calls GSL calls this first, and then checks

@@ -1095,4 +1095,163 @@ struct cJSON *tippe_launch_options_json(const tippe_launch_options *o, int fixed
  * "median_t_flip_s", "median_t_fall_s"}]}. NULL if out of memory. */
 struct cJSON *tippe_launch_radius_json(const tippe_launch_radius_sensitivity *s, int one_launch);
 
+/* ==== friction laws: one table entry per law (src/physics/friction_laws.c) ====
+ * What the command, the server and the scenario reader say of a law and take for it
+ * comes from its entry, as GSL describes a stepper by its gsl_odeiv2_step_type: a new
+ * law is an entry here and its force in the dynamics, never a case in a verb. */
+
+/* The friction options' parameters, in the order the command's --help lists them. */
+typedef enum {
+    TIPPE_LAW_PARAM_LAW,         /* the law, by name */
+    TIPPE_LAW_PARAM_PATCH_MM,    /* the patch's radius, mm */
+    TIPPE_LAW_PARAM_TABLE,       /* the table's surface (Hertz's patch) */
+    TIPPE_LAW_PARAM_MU_C,        /* Coulomb's coefficient */
+    TIPPE_LAW_PARAM_SLIP_SCALE,  /* Coulomb's regularisation speed, m/s */
+    TIPPE_LAW_PARAM_MU,          /* the viscous coefficient, s/m */
+    TIPPE_LAW_PARAM_RADIUS_SPAN, /* the radius sensitivity's factor F */
+    TIPPE_LAW_N_PARAMS
+} tippe_friction_param_id;
+
+typedef struct {
+    const char *key;    /* its name in JSON and the library ("patch_mm") */
+    const char *option; /* the command's option, without "--" ("patch-mm") */
+    const char *arg;    /* --help's placeholder ("A"), NULL: the unit's */
+    const char *unit;   /* NULL: dimensionless or a word */
+    int number;         /* 1 a number in [min, max], 0 a word */
+    double min, max;
+    const char *def;    /* the default, in words */
+    const char *help;   /* the command's --help ("\n" continues a line) */
+} tippe_friction_param;
+
+extern const tippe_friction_param tippe_friction_params[TIPPE_LAW_N_PARAMS];
+
+typedef struct {
+    tippe_friction_law law;
+    const char *name;  /* "patch": --friction's word, "law" in JSON */
+    const char *word;  /* "patch friction": in a sentence */
+    const char *label; /* a plot's name of its coefficient's law ("Coulomb") */
+    const char *text;  /* one line: what it is (--help) */
+    const char *doc;   /* where it is documented */
+    unsigned params;   /* the parameters it takes: bits 1 << tippe_friction_param_id */
+    int sticks;        /* sticks and rolls without slipping: stick and slip events */
+    int drills;        /* a couple about the normal changes J: its verdicts are observed */
+    int patch;         /* a contact patch: its radius (given, or Hertz's), its sensitivity */
+    /* the stepper that runs for the presets' rk8pd (tippe_dynamics_stepper_used) */
+    const char *stiff_stepper;
+    /* its model in words (tippe_dynamics_friction_text), and its keys in the
+     * "friction" object of a report (tippe_dynamics_friction_json) */
+    void (*describe)(const tippe_dynamics_model *m, double v_s, char *buf, size_t size);
+    void (*json)(struct cJSON *f, const tippe_dynamics_model *m);
+} tippe_friction_law_type;
+
+enum { TIPPE_N_FRICTION_LAWS = 4, TIPPE_MAX_FRICTION_LAWS = TIPPE_N_FRICTION_LAWS };
+
+/* The laws in the order they are listed; NULL past the last. */
+const tippe_friction_law_type *tippe_friction_law_at(int i);
+/* The entry of law (NULL if none), of a name (NULL if unknown). */
+const tippe_friction_law_type *tippe_friction_law_type_of(tippe_friction_law law);
+const tippe_friction_law_type *tippe_friction_law_find(const char *name);
+/* The law a parameter given alone names: the first listed that takes it (mu the
+ * viscous law, mu_c and slip_scale Coulomb's, patch_mm and table the patch law).
+ * tippe_friction_law_at(0) is the default, the paper's viscous law. */
+const tippe_friction_law_type *tippe_friction_law_named_by(tippe_friction_param_id p);
+/* 1 if law takes parameter p. */
+int tippe_friction_law_takes(tippe_friction_law law, tippe_friction_param_id p);
+/* The laws' names as a list: "viscous, coulomb, coulomb-creep or patch" (last " or ")
+ * or "viscous, coulomb, coulomb-creep, patch" (last ", "). Returns buf. */
+const char *tippe_friction_law_list(const char *last, char *buf, size_t size);
+/* The command's --help of --friction: "friction law: viscous (eq 3.12, the paper's),
+ * ...", then tail ("; docs/dynamics.md"), wrapped at width columns with "\n". Returns
+ * buf. */
+const char *tippe_friction_law_help(int width, const char *tail, char *buf, size_t size);
+
+/* The friction options as a front end was given them (its names mapped onto the
+ * parameters): which were given, and the values the rules need. */
+typedef struct {
+    const char *laws;   /* the law, or (names.list) several comma-separated; NULL: none */
+    unsigned given;     /* bits 1 << tippe_friction_param_id of the parameters given */
+    double patch_mm;    /* when given */
+    const char *table;  /* when given */
+} tippe_friction_given;
+
+/* How a front end names the parameters in its messages ("--patch-mm" or "patch_mm"),
+ * says "choose the law L" (a format with one %s: "--friction %s"), and whether the
+ * law may be a list (tippe check compares laws). */
+typedef struct {
+    const char *name[TIPPE_LAW_N_PARAMS];
+    const char *choose;
+    int list;
+} tippe_friction_names;
+
+/* The rules of the friction options, one place for both front ends: the laws named
+ * (or, with none, the law a coefficient given alone names: mu the viscous, mu_c or
+ * slip_scale Coulomb's, patch_mm or table the patch law; else o->law), each parameter
+ * given belongs to a law among them, one of patch_mm and table, a known table. Fills
+ * laws[0 .. *n_laws - 1] (room for TIPPE_MAX_FRICTION_LAWS), o->law (the first) and
+ * o->patch_radius_m. TIPPE_EINPUT naming the parameter in err->field (its key) and,
+ * in the message, by names. */
+int tippe_friction_choose(const tippe_friction_given *g, const tippe_friction_names *names,
+                          tippe_friction_law *laws, int *n_laws, tippe_launch_options *o,
+                          tippe_error *err);
+/* The rules that need the design, where one of laws[0 .. n_laws - 1] has a patch: the
+ * radius sensitivity's span is the design's tolerance unless given (o->patch_radius_span
+ * > 0), a given radius (o->patch_radius_m) is at most half the ball's radius, else the
+ * radius is Hertz's on table (NULL: TIPPE_CONTACT_DEFAULT_TABLE; o->patch_E_star_pa,
+ * tippe_launch_patch_modulus). Nothing under the other laws. TIPPE_EINPUT with
+ * err->field, the parameter named by names in the message. */
+int tippe_friction_for_design(const tippe_design *d, const tippe_friction_law *laws, int n_laws,
+                              const char *table, const tippe_friction_names *names,
+                              tippe_launch_options *o, tippe_error *err);
+
+/* ==== a map's grid (tippe map; src/physics/launch_grid.c) ====
+ * Hand launches over a grid of Z2 and spin (tippe_launch_plan's groups are its cells,
+ * cell (i, j) at z2_mm[i] and spin_rev_s[j] is i * n_spin + j), with the patch law's
+ * reruns at 1/F and F times the radius. The front end runs the plan (and the reruns)
+ * where it likes, on threads or ranks; making the grid and tallying it are here. */
+typedef struct {
+    int n_z2, n_spin;
+    long per_cell, n_cells, total;  /* launches per cell, cells, launches */
+    double *z2_mm, *spin_rev_s;     /* the grid's values */
+    tippe_top *tops;                /* the top at each Z2 */
+    /* 1 where a part stands out of the sphere at z2_mm[i]: the top rests on it and the
+     * model does not apply (docs/design-format.md) */
+    unsigned char *model_invalid;
+    tippe_top *cell_tops;           /* each cell's top, spin and holes' openings: the plan */
+    double *cell_spin_rad_s;
+    double (*cell_caps)[2];
+    tippe_launch_record *rec;       /* the plan's launches, cell after cell */
+    tippe_launch_tally *cells;      /* each cell's tally (tippe_launch_grid_tally) */
+    /* the patch law's radius sensitivity: the same launches at 1/F ([0]) and F ([2])
+     * times the radius, the plain run being rec ([1]); NULL where not run (a radius
+     * beyond R/2) */
+    int radius_runs;
+    tippe_launch_record *rec_radius[TIPPE_LAUNCH_RADIUS_RUNS];
+    double radius_m[TIPPE_LAUNCH_RADIUS_RUNS], factor[TIPPE_LAUNCH_RADIUS_RUNS];
+    long *cell_changed;          /* launches of each cell whose outcome differs between radii */
+    long changed, cells_changed; /* their sum, and the cells with any */
+} tippe_launch_grid;
+
+/* The grid of d: n_z2 values from z2_from_mm to z2_to_mm, n_spin spins from
+ * spin_from_rad_s to spin_to_rad_s (evenly, both ends; one value: the first), per_cell
+ * launches each under o; the radius reruns if o's law has a patch and
+ * radius_sensitivity. TIPPE_EINPUT (err->field "z2_mm") where d has no top at a Z2,
+ * TIPPE_ECOMPUTE out of memory. Free with tippe_launch_grid_free, also on failure. */
+int tippe_launch_grid_make(const tippe_design *d, double z2_from_mm, double z2_to_mm, int n_z2,
+                           double spin_from_rad_s, double spin_to_rad_s, int n_spin,
+                           long per_cell, const tippe_launch_options *o, int radius_sensitivity,
+                           tippe_launch_grid *g, tippe_error *err);
+/* The plan of its launches (into g->rec, or g->rec_radius[i] with the options of
+ * tippe_launch_grid_radius_options). */
+tippe_launch_plan tippe_launch_grid_plan(const tippe_launch_grid *g);
+void tippe_launch_grid_radius_options(const tippe_launch_grid *g, const tippe_launch_options *o,
+                                      int i, tippe_launch_options *out);
+/* The launches to run, reruns included (for a progress bar). */
+long tippe_launch_grid_work(const tippe_launch_grid *g);
+/* After the runs: each cell's tally and, with the reruns, what changed between radii.
+ * TIPPE_ECOMPUTE if out of memory. */
+int tippe_launch_grid_tally(tippe_launch_grid *g, tippe_error *err);
+/* The tallied grid as a map (for tables and plots). */
+tippe_launch_map tippe_launch_grid_map(const tippe_launch_grid *g);
+void tippe_launch_grid_free(tippe_launch_grid *g);
+
 #endif

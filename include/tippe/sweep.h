@@ -370,6 +370,7 @@ typedef struct {
     tippe_launch_record rec;
     tippe_sweep_point_zone zone;
 } tippe_sweep_check;
+/* err->field is "z2_mm" when the design has no top at z2_mm. */
 int tippe_sweep_check_run(const tippe_design *d, double z2_mm, const tippe_launch_options *o,
                           double spin_rad_s, tippe_sweep_check *out, tippe_error *err);
 /* tippe check --json: design, file, set (sets[0 .. n_sets - 1]), z2_mm, initial,

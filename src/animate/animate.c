@@ -475,7 +475,7 @@ int tippe_film_write(const tippe_film *f, tippe_film_format format, FILE *out,
     int rc = painter_init(&p, f, err);
     if (!rc) {
         tippe_encode_options eo = encode_options(f, format);
-        tippe_error draw_err = {0, ""};
+        tippe_error draw_err = {0};
         p.err = &draw_err;
         rc = tippe_encode_film(out, &eo, draw_frame, &p, prog, err);
         if (rc && draw_err.code)

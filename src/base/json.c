@@ -154,11 +154,12 @@ int tippe_json_fail(const tippe_json_reader *r, const char *path, const char *fm
     if (by) {
         char shown_by[768];
         visible(shown_by, sizeof shown_by, by);
-        return tippe_error_set(r->err, TIPPE_EINPUT, "%s: %s: %s (%s%s)", r->file, path, what,
-                               r->set_by ? r->set_by : "set by ", shown_by);
+        return tippe_error_set_field(r->err, TIPPE_EINPUT, path, "%s: %s: %s (%s%s)", r->file,
+                                     path, what, r->set_by ? r->set_by : "set by ", shown_by);
     }
     if (path && path[0])
-        return tippe_error_set(r->err, TIPPE_EINPUT, "%s: %s: %s", r->file, path, what);
+        return tippe_error_set_field(r->err, TIPPE_EINPUT, path, "%s: %s: %s", r->file, path,
+                                     what);
     return tippe_error_set(r->err, TIPPE_EINPUT, "%s: %s", r->file, what);
 }
 

@@ -838,7 +838,7 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
      * on the default table (tippe/physics.h), as tippe check without --table */
     tippe_build_options ol = *o;
     int rc;
-    if (ol.launch.law == TIPPE_FRICTION_PATCH && !(ol.launch.patch_radius_m > 0) &&
+    if (tippe_friction_law_type_of(ol.launch.law)->patch && !(ol.launch.patch_radius_m > 0) &&
         !(ol.launch.patch_E_star_pa > 0) &&
         (rc = tippe_launch_patch_modulus(d, NULL, &ol.launch.patch_E_star_pa, err)) != 0)
         return rc;

@@ -101,7 +101,7 @@ static int build_parse(build_args *a, int argc, char **argv)
         rc = hands_friction_apply(VERB, &a->fr, &a->o.launch, &spec, 0);
     tippe_error e;
     tippe_launch_options chk = a->o.launch; /* a patch's Hertz modulus comes with the design */
-    if (chk.law == TIPPE_FRICTION_PATCH && !(chk.patch_radius_m > 0))
+    if (tippe_friction_law_type_of(chk.law)->patch && !(chk.patch_radius_m > 0))
         chk.patch_E_star_pa = 1.0;
     if (!rc && tippe_launch_options_check(&chk, &e))
         rc = tippe_cli_usage_error(VERB, "%s", e.msg);

@@ -292,9 +292,7 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
     }
     if (isfinite(rec->t_flip_s))
         printf("flip       theta passed 90 deg at t = %.4g s of model time (%s)\n",
-               rec->t_flip_s, a->o.law == TIPPE_FRICTION_VISCOUS ? "viscous friction"
-                              : a->o.law == TIPPE_FRICTION_PATCH ? "patch friction"
-                                                                 : "Coulomb friction");
+               rec->t_flip_s, tippe_friction_law_type_of(a->o.law)->word);
     if (isfinite(rec->t_flip_s) && isfinite(rec->t_fall_s)) /* the drilling drained the spin */
         printf("fall       first back below 90 deg at t = %.4g s; above 90 deg for %.4g s in all "
                "of the %.4g s run\n",
@@ -331,7 +329,7 @@ static int check_radius(const hands_args *a, const tippe_sweep_check *r,
                         tippe_launch_radius_sensitivity *s, int *done)
 {
     *done = 0;
-    if (a->o.law != TIPPE_FRICTION_PATCH || a->no_radius_sensitivity)
+    if (!tippe_friction_law_type_of(a->o.law)->patch || a->no_radius_sensitivity)
         return 0;
     tippe_error err;
     int rc = tippe_launch_radius_sensitivity_initial(&r->top, &a->o, &r->ic, &r->rec, s, &err);
@@ -434,11 +432,15 @@ static int check_laws(const hands_args *a, const tippe_design *d)
                    100 * tippe_sweep_check_law_energy_lost(&l[i]), l[i].run.last.D);
         }
         printf("\n");
-        for (int i = 0; i < n; i++)
-            printf("%-14s %s%s\n", tippe_friction_law_name(o[i].law), l[i].friction,
-                   o[i].law == TIPPE_FRICTION_PATCH && !strcmp(o[i].accuracy.stepper, "rk8pd")
-                       ? "; msbdf for the stiff patch law"
-                       : "");
+        for (int i = 0; i < n; i++) {
+            char stepper[64] = ""; /* only where the law runs another stepper */
+            if (strcmp(hands_stepper_text(&o[i], "%s for the stiff %s law", stepper,
+                                          sizeof stepper),
+                       o[i].accuracy.stepper) == 0)
+                stepper[0] = '\0';
+            printf("%-14s %s%s%s\n", tippe_friction_law_name(o[i].law), l[i].friction,
+                   stepper[0] ? "; " : "", stepper);
+        }
         if (a->plot)
             printf("plot       %s\n", a->plot);
     }
@@ -486,7 +488,7 @@ int tippe_cli_check(int argc, char **argv)
     }
     if (a.json) {
         cJSON *o = tippe_sweep_check_json(&r, &a.o, a.sets.item, a.sets.n);
-        if (o && a.o.law == TIPPE_FRICTION_PATCH)
+        if (o && tippe_friction_law_type_of(a.o.law)->patch)
             cJSON_AddItemToObject(o, "radius_sensitivity",
                                   sens_done ? tippe_launch_radius_json(&sens, 1)
                                             : cJSON_CreateNull());

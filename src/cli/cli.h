@@ -298,6 +298,7 @@ typedef struct {
     int is_design;        /* the file is a design (it has "parts") */
     tippe_cli_sets over;  /* scenario fields: the option shorthands (and a scenario's --set) */
     tippe_cli_sets sets;  /* --set as given: of the scenario, or of the design */
+    char friction_help[512]; /* --friction's help, made from the laws' table */
 } tippe_cli_launch_args;
 
 /* The launch options both verbs read alike, for their option tables:
@@ -330,9 +331,8 @@ typedef struct {
      .unit = "m/s", .min = -100, .max = 100, .help = "its other component (initial.V; design: 0)"}, \
     {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &(L)->over,                         \
      .field = "friction.law", .arg = "LAW",                                                       \
-     .help = "friction law: viscous (eq 3.12), coulomb (sliding |F| = mu_c Rn, sticking\n"       \
-             "and rolling), coulomb-creep (no sticking) or patch (Coulomb-Contensou on a\n"     \
-             "spinning contact patch; verdicts observed, not proved); design: viscous"},         \
+     .help = tippe_friction_law_help(70, "; design: viscous", (L)->friction_help,               \
+                                     sizeof (L)->friction_help)},                                 \
     {.name = "patch-mm", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over,                           \
      .field = "friction.patch_mm", .arg = "A", .unit = "mm", .min = 0, .max = 10,                 \
      .help = "patch law: the contact patch's radius (friction.patch_mm; default: Hertz's\n"      \

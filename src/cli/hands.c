@@ -111,151 +111,73 @@ static void tilt_defaults(tippe_cli_spec *spec, tippe_launch_options *o)
         o->tilt_sd_rad = 0.5 * o->tilt_max_rad;
 }
 
+tippe_cli_opt hands_friction_opt(tippe_friction_param_id id, void *value)
+{
+    const tippe_friction_param *p = &tippe_friction_params[id];
+    return (tippe_cli_opt){.name = p->option,
+                           .kind = p->number ? TIPPE_CLI_DOUBLE : TIPPE_CLI_STRING,
+                           .value = value,
+                           .arg = p->arg,
+                           .unit = p->unit,
+                           .min = p->min,
+                           .max = p->max,
+                           .def = p->def,
+                           .help = p->help};
+}
+
 int hands_friction_options(hands_friction *f, tippe_launch_options *o, tippe_cli_opt *t)
 {
     tippe_cli_opt m[] = {
-        {.name = "friction", .kind = TIPPE_CLI_STRING, .value = &f->friction, .arg = "LAW",
-         .def = "viscous",
-         .help = "friction law: viscous (eq 3.12, the paper's), coulomb (sliding\n"
-                 "|F| = mu_c Rn, sticking and rolling without slipping), coulomb-creep\n"
-                 "(regularised, no sticking) or patch (Coulomb-Contensou on a spinning\n"
-                 "contact patch: --patch-mm, or Hertz on --table; verdicts observed, not\n"
-                 "proved); docs/dynamics.md"},
-        {.name = "patch-mm", .kind = TIPPE_CLI_DOUBLE, .value = &f->patch_mm, .arg = "A",
-         .unit = "mm", .min = 1e-6, .max = 10, .def = "Hertz at m g",
-         .help = "patch law: the contact patch's radius (default: Hertz's from the\n"
-                 "ball's and the table's E and nu at the static load m g; given alone,\n"
-                 "it selects --friction patch)"},
-        {.name = "table", .kind = TIPPE_CLI_STRING, .value = &f->table, .arg = "SURFACE",
-         .def = TIPPE_CONTACT_DEFAULT_TABLE,
-         .help = "patch law: the table's surface for the Hertz patch: glass, laminate,\n"
-                 "wood or steel (docs/contact-patch.md; given alone, it selects\n"
-                 "--friction patch)"},
-        {.name = "mu-c", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu_c, .arg = "X", .min = 0,
-         .max = 10, .def = TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_C),
-         .help = "Coulomb friction coefficient (given alone, it selects --friction\n"
-                 "coulomb): a printed PLA or nylon ball on a tabletop (docs/launch.md)"},
-        {.name = "slip-scale", .kind = TIPPE_CLI_DOUBLE, .value = &o->slip_scale_m_s,
-         .arg = "V", .unit = "m/s", .min = 1e-9, .max = 1,
-         .def = TIPPE_CLI_STR(TIPPE_COULOMB_SLIP_SCALE_M_S),
-         .help = "Coulomb's regularisation speed v_s (given alone, it selects --friction\n"
-                 "coulomb): sliding below it is smoothed, and sticking is tried below\n"
-                 "30 v_s (docs/dynamics.md)"},
-        {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &o->mu, .unit = "s/m", .min = 0,
-         .max = 1e6, .def = "2.3",
-         .help = "viscous sliding friction (eq 3.12), the default law's coefficient: a\n"
-                 "table's Coulomb coefficient over a typical slip speed (docs/launch.md)"},
+        hands_friction_opt(TIPPE_LAW_PARAM_LAW, &f->friction),
+        hands_friction_opt(TIPPE_LAW_PARAM_PATCH_MM, &f->patch_mm),
+        hands_friction_opt(TIPPE_LAW_PARAM_TABLE, &f->table),
+        hands_friction_opt(TIPPE_LAW_PARAM_MU_C, &o->mu_c),
+        hands_friction_opt(TIPPE_LAW_PARAM_SLIP_SCALE, &o->slip_scale_m_s),
+        hands_friction_opt(TIPPE_LAW_PARAM_MU, &o->mu),
     };
+    m[0].help = tippe_friction_law_help(HANDS_HELP_WIDTH, "; docs/dynamics.md", f->help,
+                                       sizeof f->help);
     const int n = (int)(sizeof m / sizeof m[0]);
     memcpy(t, m, sizeof m);
     return n;
 }
 
-/* 1 if law is among f's laws. */
-static int has_law(const hands_friction *f, tippe_friction_law law)
-{
-    for (int i = 0; i < f->n_laws; i++)
-        if (f->laws[i] == law)
-            return 1;
-    return 0;
-}
-
-/* --friction LAW (or, where the verb compares laws, LAW,LAW,...) into f->laws:
- * 0, or 2 after a usage error. */
-static int parse_laws(const char *verb, hands_friction *f, int allow_list)
-{
-    char buf[128];
-    snprintf(buf, sizeof buf, "%s", f->friction);
-    f->n_laws = 0;
-    for (char *save = NULL, *w = strtok_r(buf, ",", &save); w; w = strtok_r(NULL, ",", &save)) {
-        const int law = tippe_friction_law_parse(w);
-        if (law < 0)
-            return tippe_cli_usage_error(verb, "--friction '%s': expected viscous, coulomb, "
-                                               "coulomb-creep or patch%s",
-                                         w, allow_list ? " (or several, comma-separated)" : "");
-        if (has_law(f, (tippe_friction_law)law))
-            return tippe_cli_usage_error(verb, "--friction '%s': %s twice", f->friction, w);
-        if (f->n_laws == HANDS_MAX_LAWS)
-            return tippe_cli_usage_error(verb, "--friction '%s': at most %d laws", f->friction,
-                                         HANDS_MAX_LAWS);
-        f->laws[f->n_laws++] = (tippe_friction_law)law;
-    }
-    if (f->n_laws == 0)
-        return tippe_cli_usage_error(verb, "--friction '%s': expected a law", f->friction);
-    if (f->n_laws > 1 && !allow_list)
-        return tippe_cli_usage_error(verb, "--friction '%s': one law (tippe check compares "
-                                           "several)", f->friction);
-    return 0;
-}
+/* The command's names of the friction parameters, for the library's messages. */
+static const tippe_friction_names cli_names = {
+    .name = {[TIPPE_LAW_PARAM_LAW] = "--friction",
+             [TIPPE_LAW_PARAM_PATCH_MM] = "--patch-mm",
+             [TIPPE_LAW_PARAM_TABLE] = "--table",
+             [TIPPE_LAW_PARAM_MU_C] = "--mu-c",
+             [TIPPE_LAW_PARAM_SLIP_SCALE] = "--slip-scale",
+             [TIPPE_LAW_PARAM_MU] = "--mu",
+             [TIPPE_LAW_PARAM_RADIUS_SPAN] = "--radius-span"},
+    .choose = "--friction %s",
+};
 
 int hands_friction_apply(const char *verb, hands_friction *f, tippe_launch_options *o,
                          const tippe_cli_spec *spec, int allow_list)
 {
-    const tippe_cli_opt *mu = tippe_cli_find_opt((tippe_cli_spec *)spec, "mu");
-    const tippe_cli_opt *mu_c = tippe_cli_find_opt((tippe_cli_spec *)spec, "mu-c");
-    const tippe_cli_opt *vs = tippe_cli_find_opt((tippe_cli_spec *)spec, "slip-scale");
-    const int mu_seen = mu && mu->seen;
-    const int coulomb_seen = (mu_c && mu_c->seen) || (vs && vs->seen);
-    int rc;
-    if (f->friction) {
-        if ((rc = parse_laws(verb, f, allow_list)) != 0)
-            return rc;
-    } else if (mu_seen && coulomb_seen) {
-        return tippe_cli_usage_error(verb, "--mu (s/m, viscous) and --mu-c or --slip-scale "
-                                           "(Coulomb) name different laws: give one, or "
-                                           "--friction");
-    } else {
-        f->n_laws = 1;
-        f->laws[0] = o->law;
-        if ((f->patch_mm > 0 || f->table) && !mu_seen)
-            f->laws[0] = TIPPE_FRICTION_PATCH; /* the patch's radius names its law, as --mu-c does */
-        else if (coulomb_seen)
-            f->laws[0] = TIPPE_FRICTION_COULOMB;
-        else if (mu_seen)
-            f->laws[0] = TIPPE_FRICTION_VISCOUS;
+    tippe_friction_given g = {.laws = f->friction, .patch_mm = f->patch_mm, .table = f->table};
+    for (int p = 0; p < TIPPE_LAW_N_PARAMS; p++) {
+        const tippe_cli_opt *x =
+            tippe_cli_find_opt((tippe_cli_spec *)spec, tippe_friction_params[p].option);
+        if (x && x->seen)
+            g.given |= 1u << p;
     }
-    o->law = f->laws[0];
-    /* a coefficient needs a law it belongs to among those given */
-    int other = 0; /* a law other than viscous: --mu-c and --slip-scale apply to it */
-    for (int i = 0; i < f->n_laws; i++)
-        other |= f->laws[i] != TIPPE_FRICTION_VISCOUS;
-    if (!other && coulomb_seen)
-        return tippe_cli_usage_error(verb, "%s: with the viscous law give --mu (s/m)",
-                                     mu_c && mu_c->seen
-                                         ? "--mu-c is the Coulomb coefficient"
-                                         : "--slip-scale is the Coulomb law's regularisation");
-    if (!has_law(f, TIPPE_FRICTION_VISCOUS) && mu_seen)
-        return tippe_cli_usage_error(verb, "--mu (s/m) is the viscous coefficient: with "
-                                           "the %s law give --mu-c",
-                                     tippe_friction_law_name(o->law));
-    double E, nu;
-    if (!has_law(f, TIPPE_FRICTION_PATCH) && (f->patch_mm > 0 || f->table))
-        return tippe_cli_usage_error(verb, "--%s belongs to the patch law: give --friction "
-                                           "patch",
-                                     f->patch_mm > 0 ? "patch-mm" : "table");
-    if (!has_law(f, TIPPE_FRICTION_PATCH) && o->patch_radius_span > 0) /* check, launch, map */
-        return tippe_cli_usage_error(verb, "--radius-span belongs to the patch law (its radius "
-                                           "sensitivity): give --friction patch");
-    if (f->table && tippe_contact_table_surface(f->table, &E, &nu))
-        return tippe_cli_usage_error(verb, "--table '%s': expected " TIPPE_CONTACT_TABLES,
-                                     f->table);
-    if (f->table && f->patch_mm > 0)
-        return tippe_cli_usage_error(verb, "--patch-mm gives the radius, --table derives it: "
-                                           "give one");
-    o->patch_radius_m = f->patch_mm * 1e-3;
+    if (o->patch_radius_span > 0) /* check, launch, map: --radius-span */
+        g.given |= 1u << TIPPE_LAW_PARAM_RADIUS_SPAN;
+    tippe_friction_names names = cli_names;
+    names.list = allow_list;
+    tippe_error e;
+    if (tippe_friction_choose(&g, &names, f->laws, &f->n_laws, o, &e))
+        return tippe_cli_usage_error(verb, "%s", e.msg);
     return 0;
 }
 
 int hands_friction_patch(const hands_friction *f, tippe_launch_options *o, const tippe_design *d,
                          tippe_error *err)
 {
-    if (!has_law(f, TIPPE_FRICTION_PATCH))
-        return TIPPE_OK;
-    if (!(o->patch_radius_span > 0)) /* --radius-span, else the design's tolerance */
-        o->patch_radius_span = tippe_design_patch_radius_span(d);
-    if (o->patch_radius_m > 0)
-        return TIPPE_OK;
-    return tippe_launch_patch_modulus(d, f->table, &o->patch_E_star_pa, err);
+    return tippe_friction_for_design(d, f->laws, f->n_laws, f->table, &cli_names, o, err);
 }
 
 void hands_friction_law(const hands_friction *f, int i, const tippe_launch_options *o,
@@ -267,15 +189,6 @@ void hands_friction_law(const hands_friction *f, int i, const tippe_launch_optio
 
 int hands_patch(hands_args *a, const tippe_design *d, tippe_error *err)
 {
-    if (!has_law(&a->fr, TIPPE_FRICTION_PATCH))
-        return TIPPE_OK;
-    /* the dynamics' bound (a patch wider than R/2 is no patch), said with the option */
-    const double R_mm = tippe_design_radius_mm(d);
-    if (a->o.patch_radius_m > 0 && a->fr.patch_mm > 0.5 * R_mm)
-        return tippe_error_set(err, TIPPE_EINPUT,
-                               "--patch-mm %g: wider than half the ball's radius (R/2 = %g mm); "
-                               "a contact patch is small beside the ball (Hertz: a << R)",
-                               a->fr.patch_mm, 0.5 * R_mm);
     return hands_friction_patch(&a->fr, &a->o, d, err);
 }
 
@@ -310,7 +223,7 @@ int hands_parse(hands_verb *v, hands_args *a, int argc, char **argv)
                                    2 * a->o.tilt_sd_rad);
     /* the patch law's Hertz modulus comes with the design (hands_patch), later */
     tippe_launch_options chk = a->o;
-    if (chk.law == TIPPE_FRICTION_PATCH && !(chk.patch_radius_m > 0))
+    if (tippe_friction_law_type_of(chk.law)->patch && !(chk.patch_radius_m > 0))
         chk.patch_E_star_pa = 1.0;
     if (!rc && tippe_launch_options_check(&chk, &e))
         rc = tippe_cli_usage_error(a->verb, "%s", e.msg);
@@ -376,17 +289,29 @@ void hands_print_distribution(const tippe_launch_options *o, int fixed_spin)
            o->tilt_sd_rad, o->tilt_max_rad, o->precession_sd_rel, o->slide_sd_m_s);
 }
 
+const char *hands_stepper_text(const tippe_launch_options *o, const char *stiff, char *buf,
+                               size_t size)
+{
+    const char *used = tippe_dynamics_stepper_used(o->law, o->accuracy.stepper);
+    if (strcmp(used, o->accuracy.stepper) != 0)
+        snprintf(buf, size, stiff, used, tippe_friction_law_type_of(o->law)->name);
+    else
+        snprintf(buf, size, "%s", used);
+    return buf;
+}
+
 void hands_print_model(const tippe_launch_options *o, const tippe_top *top)
 {
     tippe_dynamics_model m;
     char fr[320];
     tippe_launch_friction_model(o, &m);
     m.top = *top; /* the patch law's Hertz radius needs its m g and R */
-    const int bdf = o->law == TIPPE_FRICTION_PATCH && !strcmp(o->accuracy.stepper, "rk8pd");
+    char stepper[64];
+    hands_stepper_text(o, "%s for the stiff %s law", stepper, sizeof stepper);
     printf("model      friction %s, g %g m/s^2, t_end %g s, accuracy %s (%s, rtol %g), verdict "
            "level\n",
            tippe_dynamics_friction_text(&m, fr, sizeof fr), o->g, o->t_end, o->accuracy_name,
-           bdf ? "msbdf for the stiff patch law" : o->accuracy.stepper, o->accuracy.rtol);
+           stepper, o->accuracy.rtol);
 }
 
 

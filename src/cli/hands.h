@@ -24,10 +24,7 @@ struct cJSON;
  * (docs/dynamics.md, "Radius sensitivity"), for the hands_args A; WHAT names what is
  * run again ("the launch", "every cell's launches"). */
 #define HANDS_RADIUS_OPTIONS(A, WHAT)                                                          \
-    {.name = "radius-span", .kind = TIPPE_CLI_DOUBLE, .value = &(A)->o.patch_radius_span,     \
-     .arg = "F", .min = 1.01, .max = 10, .def = "the design's tolerance, else 2",             \
-     .help = "patch law: the radius sensitivity's reruns at a/F and a F, a the\n"              \
-             "patch radius used (Hertz's or --patch-mm)"},                                    \
+    hands_friction_opt(TIPPE_LAW_PARAM_RADIUS_SPAN, &(A)->o.patch_radius_span),                \
     {.name = "no-radius-sensitivity", .kind = TIPPE_CLI_FLAG,                                  \
      .value = &(A)->no_radius_sensitivity,                                                     \
      .help = "patch law: skip the reruns of " WHAT "\n"                                   \
@@ -44,15 +41,19 @@ struct cJSON;
 
 /* The friction options (--friction, --patch-mm, --table, --mu-c, --slip-scale,
  * --mu): tippe launch, map, check and build read them alike. */
-enum { HANDS_MAX_LAWS = 4 };
+enum { HANDS_MAX_LAWS = TIPPE_MAX_FRICTION_LAWS, HANDS_HELP_WIDTH = 70 };
 typedef struct {
     const char *friction;      /* --friction: a law, or (check) laws, comma-separated */
     const char *table;         /* --table (patch law) */
     double patch_mm;           /* --patch-mm (patch law; 0: Hertz from the materials) */
     int n_laws;                /* the laws chosen (1 unless a verb compares laws) */
     tippe_friction_law laws[HANDS_MAX_LAWS];
+    char help[512];            /* --friction's help, made from the laws' table */
 } hands_friction;
 
+/* A friction parameter's option as the laws' table gives it (tippe_friction_params:
+ * name, unit, range, default, help), writing into value. */
+tippe_cli_opt hands_friction_opt(tippe_friction_param_id id, void *value);
 /* The friction options into t (room for 6), writing into f and o; their count. */
 int hands_friction_options(hands_friction *f, tippe_launch_options *o, tippe_cli_opt *t);
 /* After parsing: the law(s) into f->laws and o->law (the first), the patch radius into
@@ -111,6 +112,11 @@ void hands_print_top(const tippe_design *d, double z2, const tippe_top *t, doubl
                      const tippe_sweep_point_zone *z);
 void hands_print_distribution(const tippe_launch_options *o, int fixed_spin);
 void hands_print_model(const tippe_launch_options *o, const tippe_top *top);
+/* The stepper that runs for o (tippe_dynamics_stepper_used): its name, or, where the law
+ * runs another than the one named, stiff (a format of the stepper and the law, "%s for
+ * the stiff %s law"). Returns buf. */
+const char *hands_stepper_text(const tippe_launch_options *o, const char *stiff, char *buf,
+                               size_t size);
 
 /* The JSON of one tally (the options: tippe_launch_options_json; theory beside
  * a tally: tippe_sweep_theory_json). */

@@ -133,7 +133,7 @@ static void print_theory_summary(const tippe_launch_tally *t, const tippe_launch
     if (t->flips)
         printf("flip       %ld tips followed to theta = 90 deg: median model time %.3g s\n",
                t->flips, t->median_t_flip_s);
-    if (o->law == TIPPE_FRICTION_PATCH && o->mu_c > 0)
+    if (tippe_friction_law_type_of(o->law)->drills && o->mu_c > 0)
         printf("observed   the end verdicts are the state at t_end, NOT proved (drilling "
                "changes J: docs/dynamics.md); only no_tip by the energy cone is\n");
     else if (t->on_cap && !o->sphere_contact_only)
@@ -212,9 +212,10 @@ static void launch_json(const hands_args *a, const tippe_design *d, const tippe_
         cJSON_AddItemToObject(o, "distribution", tippe_launch_options_json(&a->o, 0));
         cJSON_AddNumberToObject(o, "max_jellett_rel_drift", t->max_jellett_rel_drift);
         cJSON_AddNumberToObject(o, "rhs_evals", t->rhs_evals);
-        if (a->o.law == TIPPE_FRICTION_PATCH) /* the radius at m g the launches started from */
+        const int patch = tippe_friction_law_type_of(a->o.law)->patch;
+        if (patch) /* the radius at m g the launches started from */
             cJSON_AddNumberToObject(o, "patch_radius_mm", 1e3 * tippe_launch_patch_radius(top, &a->o));
-        if (a->o.law == TIPPE_FRICTION_PATCH)
+        if (patch)
             cJSON_AddItemToObject(o, "radius_sensitivity",
                                   sens ? tippe_launch_radius_json(sens, 0) : cJSON_CreateNull());
     }
@@ -289,7 +290,7 @@ static void launch_text(const hands_args *a, const tippe_design *d, const tippe_
                a->o.cap_half_angle_rad[1] * 180 / M_PI);
     print_theory_summary(t, &a->o);
     char jellett[64] = "J not conserved (drilling)";
-    if (a->o.law != TIPPE_FRICTION_PATCH || !(a->o.mu_c > 0)) /* nothing drills */
+    if (!tippe_friction_law_type_of(a->o.law)->drills || !(a->o.mu_c > 0)) /* nothing drills */
         snprintf(jellett, sizeof jellett, "largest Jellett drift %.2g", t->max_jellett_rel_drift);
     printf("accuracy   %s; %.3g RHS evaluations; %.2f s on %d "
            "thread%s x %d rank%s (%.1f launches/s)\n",
@@ -386,7 +387,7 @@ int tippe_cli_launch(int argc, char **argv)
     if (!rc) /* each launch records its time on a hole's rim at a pole (issue 25.7) */
         tippe_launch_polar_caps(d, a.z2_mm, &top, a.o.cap_half_angle_rad);
     tippe_launch_record *rec = NULL;
-    const int radius_runs = a.o.law == TIPPE_FRICTION_PATCH && !a.no_radius_sensitivity;
+    const int radius_runs = tippe_friction_law_type_of(a.o.law)->patch && !a.no_radius_sensitivity;
     if (!rc && !(rec = calloc((size_t)a.n * (radius_runs ? 3 : 1), sizeof *rec))) {
         fprintf(stderr, "tippe launch: out of memory for %ld launches\n", a.n);
         rc = 1;

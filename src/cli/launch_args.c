@@ -58,10 +58,10 @@ static int check_words(const char *verb, const tippe_cli_launch_args *l)
     tippe_dynamics_accuracy acc;
     for (int i = 0; i < l->over.n; i++) {
         const char *it = l->over.item[i];
-        if (!strncmp(it, "friction.law=", 13) && tippe_friction_law_parse(it + 13) < 0)
-            return tippe_cli_usage_error(verb, "--friction '%s': expected viscous, coulomb, "
-                                               "coulomb-creep or patch",
-                                         it + 13);
+        char list[128];
+        if (!strncmp(it, "friction.law=", 13) && !tippe_friction_law_find(it + 13))
+            return tippe_cli_usage_error(verb, "--friction '%s': expected %s", it + 13,
+                                         tippe_friction_law_list(" or ", list, sizeof list));
         double E, nu;
         if (!strncmp(it, "friction.table=", 15) && tippe_contact_table_surface(it + 15, &E, &nu))
             return tippe_cli_usage_error(verb, "--table '%s': expected " TIPPE_CONTACT_TABLES,
@@ -95,21 +95,24 @@ static int check_friction_opts(const char *verb, tippe_cli_spec *spec,
         for (int i = 0; i < l->over.n; i++)
             if (!strncmp(l->over.item[i], "friction.law=", 13))
                 law = l->over.item[i] + 13;
+    /* check_words found it in the table: the parameters it takes */
+    const tippe_friction_law_type *t = law ? tippe_friction_law_find(law) : NULL;
     if (!law && mu_seen && coulomb_seen)
         return tippe_cli_usage_error(verb, "--mu (s/m, viscous) and --mu-c or --slip-scale "
                                            "(Coulomb) name different laws: give one, or "
                                            "--friction");
-    if (law && !strcmp(law, "viscous") && coulomb_seen)
+    if (t && !(t->params & (1u << TIPPE_LAW_PARAM_MU_C)) && coulomb_seen)
         return tippe_cli_usage_error(verb, "%s: with the viscous law give --mu (s/m)",
                                      mu_c_seen ? "--mu-c is the Coulomb coefficient"
                                                : "--slip-scale is the Coulomb law's "
                                                  "regularisation");
     const tippe_cli_opt *pm = tippe_cli_find_opt(spec, "patch-mm");
     const tippe_cli_opt *tb = tippe_cli_find_opt(spec, "table");
-    if (law && strcmp(law, "patch") != 0 && ((pm && pm->seen) || (tb && tb->seen)))
+    if (t && !(t->params & (1u << TIPPE_LAW_PARAM_PATCH_MM)) &&
+        ((pm && pm->seen) || (tb && tb->seen)))
         return tippe_cli_usage_error(verb, "--%s belongs to the patch law, not %s",
                                      pm && pm->seen ? "patch-mm" : "table", law);
-    if (law && strcmp(law, "viscous") != 0 && mu_seen)
+    if (t && !(t->params & (1u << TIPPE_LAW_PARAM_MU)) && mu_seen)
         return tippe_cli_usage_error(verb, "--mu (s/m) is the viscous coefficient: with the "
                                            "%s law give --mu-c",
                                      law);

@@ -140,151 +140,23 @@ static int map_parse(hands_args *a, int argc, char **argv)
     return 0;
 }
 
-/* The grid: Z2 and spin values, the top at each Z2, and each cell's top and spin. */
-typedef struct {
-    int zn, sn;
-    long n_cells, total;
-    double *z2, *spin_rev_s, *cell_spin_rad_s;
-    tippe_top *tops, *cell_tops;
-    tippe_launch_record *rec;
-    tippe_launch_tally *cells;
-    /* 1 where a part stands out of the sphere at z2[i]: the top rests on it
-     * and the model does not apply (docs/design-format.md) */
-    unsigned char *model_invalid;
-    /* the patch law's radius sensitivity: the same launches at 1/F ([0]) and F ([2])
-     * times the radius, the plain run being rec ([1]); NULL where not run */
-    double (*cell_caps)[2]; /* each cell's holes' openings at the poles, rad */
-    int radius_runs;
-    tippe_launch_record *rec_radius[3];
-    double radius_m[3], factor[3];
-    long *cell_changed; /* launches of each cell whose outcome differs between radii */
-    long changed, cells_changed; /* their sum, and the cells with any */
-} map_grid;
-
-static void grid_free(map_grid *g)
-{
-    free(g->z2);
-    free(g->spin_rev_s);
-    free(g->cell_spin_rad_s);
-    free(g->tops);
-    free(g->cell_tops);
-    free(g->cells);
-    free(g->rec);
-    free(g->model_invalid);
-    free(g->rec_radius[0]);
-    free(g->rec_radius[2]);
-    free(g->cell_changed);
-    free(g->cell_caps);
-}
-
-static int grid_make(const hands_args *a, const tippe_design *d, map_grid *g)
-{
-    g->zn = (int)a->z2_range.steps;
-    g->sn = (int)a->spin.steps;
-    g->n_cells = (long)g->zn * g->sn;
-    g->total = g->n_cells * a->n;
-    g->z2 = malloc((size_t)g->zn * sizeof *g->z2);
-    g->spin_rev_s = malloc((size_t)g->sn * sizeof *g->spin_rev_s);
-    g->tops = malloc((size_t)g->zn * sizeof *g->tops);
-    g->cell_tops = malloc((size_t)g->n_cells * sizeof *g->cell_tops);
-    g->cell_spin_rad_s = malloc((size_t)g->n_cells * sizeof *g->cell_spin_rad_s);
-    g->cells = calloc((size_t)g->n_cells, sizeof *g->cells);
-    g->rec = calloc((size_t)g->total, sizeof *g->rec);
-    g->model_invalid = calloc((size_t)g->zn, 1);
-    if (!g->z2 || !g->spin_rev_s || !g->tops || !g->cell_tops || !g->cell_spin_rad_s ||
-        !g->cells || !g->rec || !g->model_invalid) {
-        fprintf(stderr, "tippe map: out of memory for %ld launches\n", g->total);
-        return 1;
-    }
-    const tippe_cli_range *zr = &a->z2_range, *sr = &a->spin;
-    tippe_error err;
-    for (int i = 0; i < g->zn; i++) {
-        g->z2[i] = g->zn == 1 ? zr->from : zr->from + (zr->to - zr->from) * i / (g->zn - 1);
-        int rc = tippe_design_top(d, g->z2[i], &g->tops[i], &err);
-        if (rc)
-            return tippe_cli_fail(a->verb, &err, rc);
-        tippe_design_protrusion pr;
-        g->model_invalid[i] = (unsigned char)tippe_design_protrusion_at(d, g->z2[i], &pr);
-    }
-    for (int j = 0; j < g->sn; j++)
-        g->spin_rev_s[j] =
-            (g->sn == 1 ? sr->from : sr->from + (sr->to - sr->from) * j / (g->sn - 1)) /
-            (2 * M_PI);
-    /* where a hole opens at a pole the contact is not on the sphere: every launch records
-     * its time there (as tippe launch's), with its row's openings (they move with Z2) */
-    g->cell_caps = malloc((size_t)g->n_cells * sizeof *g->cell_caps);
-    if (!g->cell_caps) {
-        fprintf(stderr, "tippe map: out of memory for %ld cells\n", g->n_cells);
-        return 1;
-    }
-    for (long c = 0; c < g->n_cells; c++) {
-        g->cell_tops[c] = g->tops[c / g->sn];
-        g->cell_spin_rad_s[c] = 2 * M_PI * g->spin_rev_s[c % g->sn];
-        tippe_launch_polar_caps(d, g->z2[c / g->sn], &g->cell_tops[c], g->cell_caps[c]);
-    }
-    g->radius_runs = a->o.law == TIPPE_FRICTION_PATCH && !a->no_radius_sensitivity;
-    if (g->radius_runs) {
-        g->cell_changed = calloc((size_t)g->n_cells, sizeof *g->cell_changed);
-        if (!g->cell_changed) {
-            fprintf(stderr, "tippe map: out of memory for %ld cells\n", g->n_cells);
-            return 1;
-        }
-        for (int i = 0; i < 3; i++) {
-            tippe_launch_options oi;
-            g->factor[i] = tippe_launch_radius_factor(&a->o, i);
-            /* the weight moves inside the ball: every cell's top has the mass and
-             * radius of the first, hence its Hertz radius */
-            const int beyond = tippe_launch_radius_options(&g->tops[0], &a->o, g->factor[i], &oi);
-            g->radius_m[i] = oi.patch_radius_m;
-            if (i == 1 || beyond)
-                continue;
-            g->rec_radius[i] = calloc((size_t)g->total, sizeof *g->rec_radius[i]);
-            if (!g->rec_radius[i]) {
-                fprintf(stderr, "tippe map: out of memory for %ld launches\n", 3 * g->total);
-                return 1;
-            }
-        }
-    }
-    return 0;
-}
+/* The grid, its launches and tallies: the library's (tippe_launch_grid). */
+typedef tippe_launch_grid map_grid;
 
 /* The patch law's reruns of every cell's launches at 1/F and F times the radius (every
  * rank), into g->rec_radius. */
 static int grid_radius_runs(const hands_args *a, map_grid *g, tippe_progress *prog,
                             tippe_error *err)
 {
-    tippe_launch_plan plan = {(int)g->n_cells, a->n, g->cell_tops, g->cell_spin_rad_s,
-                              (const double(*)[2])g->cell_caps};
+    const tippe_launch_plan plan = tippe_launch_grid_plan(g);
     for (int i = 0; i < 3; i += 2) {
         if (!g->rec_radius[i])
             continue;
         tippe_launch_options oi;
-        tippe_launch_radius_options(&g->tops[0], &a->o, g->factor[i], &oi);
+        tippe_launch_grid_radius_options(g, &a->o, i, &oi);
         int rc = hands_run_plan(&plan, &oi, (uint64_t)a->seed, g->rec_radius[i], prog, err);
         if (rc)
             return rc;
-    }
-    return 0;
-}
-
-/* Rank 0: each cell's launches compared across the radii (tippe_launch_radius_summary). */
-static int grid_radius_summary(const hands_args *a, map_grid *g, long *changed,
-                               long *cells_changed, tippe_error *err)
-{
-    *changed = *cells_changed = 0;
-    for (long c = 0; c < g->n_cells; c++) {
-        const tippe_launch_record *ptr[3];
-        for (int i = 0; i < 3; i++) {
-            const tippe_launch_record *base = i == 1 ? g->rec : g->rec_radius[i];
-            ptr[i] = base ? base + c * a->n : NULL;
-        }
-        tippe_launch_radius_sensitivity s;
-        int rc = tippe_launch_radius_summary(ptr, a->n, g->radius_m, &s, err);
-        if (rc)
-            return rc;
-        g->cell_changed[c] = s.changed;
-        *changed += s.changed;
-        *cells_changed += s.changed > 0;
     }
     return 0;
 }
@@ -295,7 +167,7 @@ static cJSON *zones_json(const tippe_design *d, const map_grid *g)
     tippe_sweep_result r;
     tippe_error err;
     cJSON *zj = NULL;
-    if (tippe_sweep_design(d, g->z2[0] - 1e-9, g->z2[g->zn - 1] + 1e-9, NULL, &r, &err) ==
+    if (tippe_sweep_design(d, g->z2_mm[0] - 1e-9, g->z2_mm[g->n_z2 - 1] + 1e-9, NULL, &r, &err) ==
         TIPPE_OK) {
         zj = cJSON_CreateArray();
         for (int k = 0; zj && k < r.n_zones; k++) {
@@ -317,16 +189,16 @@ static cJSON *cells_json(const map_grid *g)
 {
     /* per cell: radius_changed under the patch law's radius sensitivity, else absent */
     cJSON *arr = cJSON_CreateArray();
-    for (int i = 0; arr && i < g->zn; i++)
-        for (int j = 0; j < g->sn; j++) {
-            const tippe_launch_tally *c = &g->cells[(long)i * g->sn + j];
+    for (int i = 0; arr && i < g->n_z2; i++)
+        for (int j = 0; j < g->n_spin; j++) {
+            const tippe_launch_tally *c = &g->cells[(long)i * g->n_spin + j];
             cJSON *co = hands_json_tally(c);
             if (!co)
                 continue;
             const tippe_top *t = &g->tops[i];
             tippe_theory_class cls;
             tippe_theory_classify(t->A / t->C, t->eps / t->R, &cls);
-            cJSON_AddNumberToObject(co, "z2_mm", g->z2[i]);
+            cJSON_AddNumberToObject(co, "z2_mm", g->z2_mm[i]);
             cJSON_AddNumberToObject(co, "spin_rad_s", 2 * M_PI * g->spin_rev_s[j]);
             cJSON_AddStringToObject(co, "group", tippe_group_family(cls.group));
             cJSON_AddStringToObject(co, "subgroup", tippe_group_name(cls.group));
@@ -335,7 +207,7 @@ static cJSON *cells_json(const map_grid *g)
             cJSON_AddBoolToObject(co, "model_valid", !g->model_invalid[i]);
             if (g->radius_runs)
                 cJSON_AddNumberToObject(co, "radius_changed",
-                                        (double)g->cell_changed[(long)i * g->sn + j]);
+                                        (double)g->cell_changed[(long)i * g->n_spin + j]);
             cJSON_AddItemToArray(arr, co);
         }
     return arr;
@@ -379,9 +251,9 @@ static int map_json(const hands_args *a, const tippe_design *d, const map_grid *
         tippe_cli_json_sets(o, &a->sets);
         cJSON_AddNumberToObject(o, "seed", (double)a->seed);
         cJSON_AddNumberToObject(o, "per_cell", (double)a->n);
-        cJSON_AddItemToObject(o, "z2_mm", cJSON_CreateDoubleArray(g->z2, g->zn));
+        cJSON_AddItemToObject(o, "z2_mm", cJSON_CreateDoubleArray(g->z2_mm, g->n_z2));
         cJSON *sp = cJSON_AddArrayToObject(o, "spin_rad_s");
-        for (int j = 0; sp && j < g->sn; j++)
+        for (int j = 0; sp && j < g->n_spin; j++)
             cJSON_AddItemToArray(sp, cJSON_CreateNumber(2 * M_PI * g->spin_rev_s[j]));
         cJSON_AddItemToObject(o, "distribution", tippe_launch_options_json(&a->o, 1));
         cJSON_AddItemToObject(o, "zones", zones_json(d, g));
@@ -411,11 +283,11 @@ static void print_radius(const hands_args *a, const map_grid *g)
            "cells\n",
            g->changed, g->total, g->cells_changed, g->n_cells);
     if (g->changed)
-        for (int i = 0; i < g->zn; i++)
-            for (int j = 0; j < g->sn; j++) {
-                const long k = g->cell_changed[(long)i * g->sn + j];
+        for (int i = 0; i < g->n_z2; i++)
+            for (int j = 0; j < g->n_spin; j++) {
+                const long k = g->cell_changed[(long)i * g->n_spin + j];
                 if (k)
-                    printf("           Z2 %.4g mm, %.3g rev/s: %ld of %ld\n", g->z2[i],
+                    printf("           Z2 %.4g mm, %.3g rev/s: %ld of %ld\n", g->z2_mm[i],
                            g->spin_rev_s[j], k, a->n);
             }
 }
@@ -429,8 +301,8 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
         printf("changes    %s\n", tippe_cli_sets_text(&a->sets, sets, sizeof sets));
     printf("map        Z2 %g .. %g mm (%d) x spin %.4g .. %.4g rad/s = %g .. %g rev/s (%d), "
            "%ld launches per cell, seed %ld\n",
-           a->z2_range.from, a->z2_range.to, g->zn, a->spin.from, a->spin.to,
-           g->spin_rev_s[0], g->spin_rev_s[g->sn - 1], g->sn, a->n, a->seed);
+           a->z2_range.from, a->z2_range.to, g->n_z2, a->spin.from, a->spin.to,
+           g->spin_rev_s[0], g->spin_rev_s[g->n_spin - 1], g->n_spin, a->n, a->seed);
     hands_print_distribution(&a->o, 1);
     hands_print_model(&a->o, &g->tops[0]);
     print_map_table(m, g->model_invalid);
@@ -453,7 +325,7 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
                    "verdict: the contact follows the rim there (JSON on_polar_cap per cell)\n",
                    all.on_cap, g->total);
         char jellett[64] = "J not conserved (drilling)";
-        if (a->o.law != TIPPE_FRICTION_PATCH || !(a->o.mu_c > 0)) /* nothing drills */
+        if (!tippe_friction_law_type_of(a->o.law)->drills || !(a->o.mu_c > 0)) /* nothing drills */
             snprintf(jellett, sizeof jellett, "largest Jellett drift %.2g",
                      all.max_jellett_rel_drift);
         printf("accuracy   %s; %.2f s on %d thread%s x %d rank%s "
@@ -461,8 +333,7 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
                jellett, elapsed, omp_get_max_threads(),
                omp_get_max_threads() > 1 ? "s" : "", hands_mpi_size(),
                hands_mpi_size() > 1 ? "s" : "",
-               (double)g->total *
-                   (1 + (g->rec_radius[0] != NULL) + (g->rec_radius[2] != NULL)) / elapsed);
+               (double)tippe_launch_grid_work(g) / elapsed);
     }
     if (g->radius_runs)
         print_radius(a, g);
@@ -476,12 +347,8 @@ static void map_text(const hands_args *a, const tippe_design *d, const map_grid 
 static int map_report(const hands_args *a, const tippe_design *d, map_grid *g, double elapsed)
 {
     tippe_error err;
-    int rc = 0;
-    for (long c = 0; !rc && c < g->n_cells; c++)
-        rc = tippe_launch_tally_records(g->rec + c * a->n, a->n, &g->cells[c], &err);
-    if (!rc && g->radius_runs)
-        rc = grid_radius_summary(a, g, &g->changed, &g->cells_changed, &err);
-    tippe_launch_map m = {g->zn, g->sn, g->z2, g->spin_rev_s, g->cells, a->n};
+    int rc = tippe_launch_grid_tally(g, &err);
+    tippe_launch_map m = tippe_launch_grid_map(g);
     if (!rc && a->csv)
         rc = write_map_csv(a->csv, &m, g->tops, &err);
     char title[1024], sets[900];
@@ -515,16 +382,18 @@ int tippe_cli_map(int argc, char **argv)
         tippe_cli_design_warnings(a.verb, d);
     if (!rc && (rc = hands_patch(&a, d, &err)) != 0)
         rc = tippe_cli_fail(a.verb, &err, rc);
-    if (!rc)
-        rc = grid_make(&a, d, &g);
+    if (!rc && (rc = tippe_launch_grid_make(d, a.z2_range.from, a.z2_range.to,
+                                            (int)a.z2_range.steps, a.spin.from, a.spin.to,
+                                            (int)a.spin.steps, a.n, &a.o,
+                                            !a.no_radius_sensitivity, &g, &err)) != 0)
+        rc = tippe_cli_fail(a.verb, &err, rc);
     if (!rc && g.total >= 100000 && hands_mpi_rank() == 0)
         fprintf(stderr, "tippe map: %ld launches (%d x %d cells x %ld) ahead; this takes a "
-                        "while (progress below)\n", g.total, g.zn, g.sn, a.n);
+                        "while (progress below)\n", g.total, g.n_z2, g.n_spin, a.n);
     if ((rc = hands_mpi_agree(rc)) == 0) {
-        tippe_launch_plan plan = {(int)g.n_cells, a.n, g.cell_tops, g.cell_spin_rad_s,
-                                  (const double(*)[2])g.cell_caps};
+        const tippe_launch_plan plan = tippe_launch_grid_plan(&g);
         tippe_progress prog;
-        const long work = g.total * (1 + (g.rec_radius[0] != NULL) + (g.rec_radius[2] != NULL));
+        const long work = tippe_launch_grid_work(&g);
         tippe_progress_start(&prog, stderr, "tippe map", work, tippe_cli_progress_mode());
         const double t0 = tippe_cli_now_s();
         rc = hands_run_plan(&plan, &a.o, (uint64_t)a.seed, g.rec, &prog, &err);
@@ -539,7 +408,7 @@ int tippe_cli_map(int argc, char **argv)
         else
             rc = map_report(&a, d, &g, elapsed);
     }
-    grid_free(&g);
+    tippe_launch_grid_free(&g);
     tippe_design_free(d);
     return rc;
 }

@@ -140,7 +140,7 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
     else if (!isnan(r->t_flip))
         printf("inverted  above 90 deg for %.6g s, to t = %.6g s\n", r->inverted_time_s,
                r->last.t);
-    if (sc->model.law == TIPPE_FRICTION_COULOMB)
+    if (tippe_friction_law_type_of(sc->model.law)->sticks)
         printf("contact   stuck %ld time%s and broke loose %ld time%s; rolled without slipping "
                "for %.6g s of the %.6g s integrated\n",
                r->stick_events, r->stick_events == 1 ? "" : "s", r->slip_events,
@@ -165,15 +165,20 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                            : tc->agrees == 0 ? "DISAGREES"
                                              : "not comparable (no proved end state)");
     }
+    char stepper[64]; /* the one that ran: the patch law's msbdf for the presets' rk8pd */
+    const char *used = tippe_dynamics_stepper_used(sc->model.law, sc->accuracy.stepper);
+    if (strcmp(used, sc->accuracy.stepper) != 0)
+        snprintf(stepper, sizeof stepper, "%s (the %s law's stiff stepper)", used,
+                 tippe_friction_law_name(sc->model.law));
+    else
+        snprintf(stepper, sizeof stepper, "%s", used);
     /* under drilling J moves by the physics: its drift is no error measure there */
     char jellett[64] = "J not conserved (drilling)";
     if (!isfinite(r->jellett_drift_time_s))
         snprintf(jellett, sizeof jellett, "Jellett drift %.2g", r->jellett_rel_drift);
     printf("accuracy  %s rtol %g (%s): %s, energy balance error %.2g, "
            "%ld steps (%ld rejected), %ld RHS evaluations, %.3g s\n",
-           sc->model.law == TIPPE_FRICTION_PATCH && !strcmp(sc->accuracy.stepper, "rk8pd")
-               ? "msbdf (the patch law's stiff stepper)"
-               : sc->accuracy.stepper,
+           stepper,
            sc->accuracy.rtol, sc->accuracy_name, jellett, r->energy_rel_error, r->steps,
            r->rejected_steps, r->rhs_evals, elapsed_s);
 }

@@ -49,74 +49,26 @@ const char *tippe_launch_slip_text(const tippe_top *top, const tippe_dynamics_in
 const char *tippe_dynamics_friction_text(const tippe_dynamics_model *m, char *buf, size_t size)
 {
     const double vs = m->slip_scale_m_s > 0 ? m->slip_scale_m_s : TIPPE_COULOMB_SLIP_SCALE_M_S;
-    switch (m->law) {
-    case TIPPE_FRICTION_COULOMB:
-        snprintf(buf, size, "Coulomb mu_c %g, sliding and sticking (sliding regularised below "
-                 "%g m/s)", m->mu_c, vs);
-        break;
-    case TIPPE_FRICTION_PATCH: {
-        /* the radius: given, or Hertz's from E* (known once the model has its top: m g
-         * and R); how it moves in the run; the rolling couple when on */
-        const double a_mm = tippe_dynamics_patch_radius(m) * 1e3;
-        char where[64], modulus[32] = "", roll[64] = "";
-        if (m->patch_radius_m > 0 || !(m->patch_E_star_pa > 0)) {
-            snprintf(where, sizeof where, "a patch of radius %g mm at m g", a_mm);
-        } else {
-            snprintf(modulus, sizeof modulus, "E* %.3g GPa, ", m->patch_E_star_pa * 1e-9);
-            if (a_mm > 0)
-                snprintf(where, sizeof where, "Hertz's patch, radius %.4g mm at m g", a_mm);
-            else
-                snprintf(where, sizeof where, "Hertz's patch");
-        }
-        if (m->rolling_arm_m > 0)
-            snprintf(roll, sizeof roll, ", rolling resistance arm %g um", m->rolling_arm_m * 1e6);
-        snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on %s (%sHertz pressure, %s)%s, "
-                 "regularised below %g m/s", m->mu_c, where, modulus,
-                 m->patch_radius_fixed ? "held" : "following the load as Rn^(1/3)", roll, vs);
-        break;
-    }
-    case TIPPE_FRICTION_COULOMB_CREEP:
-        snprintf(buf, size, "Coulomb mu_c %g regularised below %g m/s, no sticking (creep)",
-                 m->mu_c, vs);
-        break;
-    default:
-        snprintf(buf, size, "viscous mu %g s/m (eq 3.12)", m->mu);
-    }
+    const tippe_friction_law_type *t = tippe_friction_law_type_of(m->law);
+    if (!t) /* as the model's check words it */
+        t = tippe_friction_law_type_of(TIPPE_FRICTION_VISCOUS);
+    t->describe(m, vs, buf, size);
     return buf;
 }
 
 void tippe_dynamics_friction_json(cJSON *o, const tippe_dynamics_model *m)
 {
-    if (m->law == TIPPE_FRICTION_VISCOUS)
+    /* the older top-level key: the viscous coefficient, null under the others */
+    if (tippe_friction_law_takes(m->law, TIPPE_LAW_PARAM_MU))
         cJSON_AddNumberToObject(o, "mu_s_m", m->mu);
     else
         cJSON_AddNullToObject(o, "mu_s_m");
     cJSON *f = cJSON_AddObjectToObject(o, "friction");
-    if (!f)
+    const tippe_friction_law_type *t = tippe_friction_law_type_of(m->law);
+    if (!f || !t)
         return;
-    cJSON_AddStringToObject(f, "law", tippe_friction_law_name(m->law));
-    if (m->law == TIPPE_FRICTION_VISCOUS) {
-        cJSON_AddNumberToObject(f, "mu_s_m", m->mu);
-        return;
-    }
-    cJSON_AddNumberToObject(f, "mu", m->mu_c);
-    cJSON_AddNumberToObject(f, "slip_scale_m_s", m->slip_scale_m_s > 0
-                                                     ? m->slip_scale_m_s
-                                                     : TIPPE_COULOMB_SLIP_SCALE_M_S);
-    if (m->law == TIPPE_FRICTION_PATCH) {
-        /* the radius given, or the contact modulus Hertz's radius comes from (at m g) */
-        if (m->patch_radius_m > 0 || !(m->patch_E_star_pa > 0))
-            cJSON_AddNumberToObject(f, "patch_mm", m->patch_radius_m * 1e3);
-        else
-            cJSON_AddNumberToObject(f, "E_star_GPa", m->patch_E_star_pa * 1e-9);
-        cJSON_AddStringToObject(f, "pressure", "hertz");
-        /* the radius the run starts from, however it was found (when the model has its
-         * top: Hertz's needs m g and R) */
-        if (tippe_dynamics_patch_radius(m) > 0)
-            cJSON_AddNumberToObject(f, "patch_mm_at_mg", tippe_dynamics_patch_radius(m) * 1e3);
-        cJSON_AddBoolToObject(f, "radius_follows_load", !m->patch_radius_fixed);
-        cJSON_AddNumberToObject(f, "rolling_arm_um", m->rolling_arm_m * 1e6);
-    }
+    cJSON_AddStringToObject(f, "law", t->name);
+    t->json(f, m);
 }
 
 void tippe_dynamics_accuracy_json(cJSON *o, const char *preset, const tippe_dynamics_accuracy *acc,

@@ -282,12 +282,12 @@ static void draw_key_and_title(const tippe_scenario *sc, const tippe_dynamics_re
              top->eps / top->R, tippe_group_name(cls.group));
     tippe_plot_text(0.76, 0.047, 0.0, 0.5, 0.75, 0x000000, note);
     /* the coefficient of the law the run used: mu (s/m) is eq 3.12's only */
-    if (sc->model.law == TIPPE_FRICTION_VISCOUS)
+    if (tippe_friction_law_takes(sc->model.law, TIPPE_LAW_PARAM_MU))
         snprintf(note, sizeof note, "#gm = %.3g s/m, J#d0#u = %.4g kg m#u3#d/s", sc->model.mu,
                  res->J0);
     else
         snprintf(note, sizeof note, "%s #gm#dc#u = %.3g, J#d0#u = %.4g kg m#u3#d/s",
-                 sc->model.law == TIPPE_FRICTION_COULOMB ? "Coulomb" : "Coulomb creep",
+                 tippe_friction_law_type_of(sc->model.law)->label,
                  sc->model.mu_c, res->J0);
     tippe_plot_text(0.76, 0.017, 0.0, 0.5, 0.75, 0x000000, note);
     char esc[300], title[600];

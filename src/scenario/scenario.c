@@ -386,7 +386,7 @@ static int read_patch(tippe_json_reader *c, const cJSON *f, tippe_scenario *s)
     const cJSON *tb = cJSON_GetObjectItemCaseSensitive(f, "table");
     const cJSON *ra = cJSON_GetObjectItemCaseSensitive(f, "rolling_arm_um");
     int rc;
-    if (m->law != TIPPE_FRICTION_PATCH) {
+    if (!tippe_friction_law_type_of(m->law)->patch) {
         if (pm || tb || ra)
             return tippe_json_fail(c, pm ? "friction.patch_mm" : tb ? "friction.table"
                                                                     : "friction.rolling_arm_um",
@@ -446,7 +446,7 @@ static int read_friction(tippe_json_reader *c, const cJSON *root, tippe_scenario
     const cJSON *mu = cJSON_GetObjectItemCaseSensitive(root, "mu");
     const cJSON *f = cJSON_GetObjectItemCaseSensitive(root, "friction");
     int rc;
-    m->law = TIPPE_FRICTION_VISCOUS;
+    m->law = tippe_friction_law_at(0)->law; /* the paper's viscous law */
     m->mu_c = 0.0;
     m->slip_scale_m_s = 0.0;
     if (mu && f)
@@ -473,24 +473,26 @@ static int read_friction(tippe_json_reader *c, const cJSON *root, tippe_scenario
     const int has_viscous = cJSON_GetObjectItemCaseSensitive(f, "mu_s_m") != NULL;
     /* A block names its law, or a coefficient names it: an empty block says
      * nothing, as a missing one (refused above) says nothing. */
+    char list[128];
+    tippe_friction_law_list(", ", list, sizeof list);
     if (!law && !has_viscous && !cJSON_GetObjectItemCaseSensitive(f, "mu") &&
         !cJSON_GetObjectItemCaseSensitive(f, "slip_scale_m_s"))
         return tippe_json_fail(c, "friction.law",
                                "missing: the block names no law; give {\"law\": \"coulomb\", "
                                "\"mu\": 0.3} or {\"law\": \"viscous\", \"mu_s_m\": S_M} "
-                               "(laws: viscous, coulomb, coulomb-creep, patch)");
-    int l = has_viscous ? TIPPE_FRICTION_VISCOUS : TIPPE_FRICTION_COULOMB;
+                               "(laws: %s)", list);
+    /* without a law, the coefficient's: mu_s_m the viscous law's, mu Coulomb's */
+    const tippe_friction_law_type *l =
+        tippe_friction_law_named_by(has_viscous ? TIPPE_LAW_PARAM_MU : TIPPE_LAW_PARAM_MU_C);
     if (law) {
         if (!cJSON_IsString(law))
             return tippe_json_wrong_type(c, "friction.law", "a law name", law);
-        l = tippe_friction_law_parse(law->valuestring);
-        if (l < 0)
-            return tippe_json_fail(c, "friction.law",
-                                   "unknown law '%s' (viscous, coulomb, coulomb-creep, patch)",
-                                   law->valuestring);
+        if (!(l = tippe_friction_law_find(law->valuestring)))
+            return tippe_json_fail(c, "friction.law", "unknown law '%s' (%s)", law->valuestring,
+                                   list);
     }
-    m->law = (tippe_friction_law)l;
-    if (l == TIPPE_FRICTION_VISCOUS) {
+    m->law = l->law;
+    if (tippe_friction_law_takes(l->law, TIPPE_LAW_PARAM_MU)) {
         if (cJSON_GetObjectItemCaseSensitive(f, "mu"))
             return tippe_json_fail(c, "friction.mu",
                                    "is the Coulomb coefficient: the viscous law takes mu_s_m "
@@ -769,7 +771,7 @@ static cJSON *design_root(const char *design_path, double z2_mm, const char *con
     for (int i = 0; i < n_sets; i++)
         cJSON_AddItemToArray(set, cJSON_CreateString(sets[i]));
     cJSON_AddNumberToObject(root, "g", o.g);
-    if (o.law == TIPPE_FRICTION_VISCOUS) {
+    if (tippe_friction_law_takes(o.law, TIPPE_LAW_PARAM_MU)) {
         cJSON_AddNumberToObject(root, "mu", o.mu);
     } else {
         cJSON *f = cJSON_AddObjectToObject(root, "friction");

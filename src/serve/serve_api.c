@@ -153,13 +153,29 @@ static void api_compare(serve_server *s, const cJSON *req, serve_response *out)
     tippe_serve_respond_json(out, 200, o);
 }
 
+/* The server's names of the friction parameters (its request fields), for the
+ * library's messages. */
+static const tippe_friction_names serve_friction_names = {
+    .name = {[TIPPE_LAW_PARAM_LAW] = "friction",
+             [TIPPE_LAW_PARAM_PATCH_MM] = "patch_mm",
+             [TIPPE_LAW_PARAM_TABLE] = "table",
+             [TIPPE_LAW_PARAM_MU_C] = "mu_c",
+             [TIPPE_LAW_PARAM_SLIP_SCALE] = "slip_scale_m_s",
+             [TIPPE_LAW_PARAM_MU] = "mu_s_m",
+             [TIPPE_LAW_PARAM_RADIUS_SPAN] = "radius_span"},
+    .choose = "\"friction\": \"%s\"",
+};
+
 /* The launch of a request: z2_mm, spin (spin_rev_s or spin_rad_s; default 15
- * rev/s, as tippe check) and friction (viscous, coulomb, coulomb-creep; default
- * viscous). 0, or -1 with out set. */
+ * rev/s, as tippe check) and friction (a law of the table, default the first,
+ * viscous; the patch law's patch_mm or table), checked by the library's rules as
+ * tippe check's options are. 0, or -1 with out set. */
 static int launch_request(const cJSON *req, double *z2, double *spin_rad_s,
                           tippe_launch_options *o, serve_response *out)
 {
-    static const char *const laws[] = {"viscous", "coulomb", "coulomb-creep", "patch", NULL};
+    const char *laws[TIPPE_N_FRICTION_LAWS + 1] = {NULL};
+    for (int i = 0; i < TIPPE_N_FRICTION_LAWS; i++)
+        laws[i] = tippe_friction_law_at(i)->name;
     double rev = 15.0, rad = NAN;
     tippe_launch_options_default(o);
     if (tippe_serve_request_number(req, "z2_mm", -1000, 1000, 1, z2, out) ||
@@ -175,50 +191,44 @@ static int launch_request(const cJSON *req, double *z2, double *spin_rad_s,
     const int law = tippe_serve_request_word(req, "friction", laws, 0, out);
     if (law < 0)
         return -1;
-    o->law = law == 0   ? TIPPE_FRICTION_VISCOUS
-             : law == 1 ? TIPPE_FRICTION_COULOMB
-             : law == 2 ? TIPPE_FRICTION_COULOMB_CREEP
-                        : TIPPE_FRICTION_PATCH;
     /* the patch law: a radius (mm), or Hertz's on a table (tippe check's --patch-mm,
-     * --table); either names the patch law */
-    double patch_mm = 0;
-    if (tippe_serve_request_number(req, "patch_mm", 1e-3, 10, 0, &patch_mm, out))
+     * --table) */
+    const tippe_friction_param *pm = &tippe_friction_params[TIPPE_LAW_PARAM_PATCH_MM];
+    tippe_friction_given g = {.laws = laws[law]};
+    /* from 1 um, as docs/serve.md says (the command's --patch-mm from pm->min) */
+    if (tippe_serve_request_number(req, pm->key, 1e-3, pm->max, 0, &g.patch_mm, out))
         return -1;
-    const int has_patch = cJSON_HasObjectItem(req, "patch_mm"), has_table =
-                                                                    cJSON_HasObjectItem(req, "table");
-    if ((has_patch || has_table) && o->law != TIPPE_FRICTION_PATCH) {
-        tippe_serve_respond_error(out, 400, has_patch ? "patch_mm" : "table",
-                                  "%s belongs to the patch law: give \"friction\": \"patch\"",
-                                  has_patch ? "patch_mm" : "table");
-        return -1;
-    }
-    if (has_patch && has_table) {
+    const cJSON *table = cJSON_GetObjectItemCaseSensitive(req, "table");
+    if (table && !cJSON_IsString(table)) {
         tippe_serve_respond_error(out, 400, "table",
-                                  "patch_mm and table are two ways to the patch's radius: give "
-                                  "one");
+                                  "table: must be a string (" TIPPE_CONTACT_TABLES ")");
         return -1;
     }
-    o->patch_radius_m = patch_mm * 1e-3;
+    g.table = table ? table->valuestring : NULL;
+    g.given = (cJSON_HasObjectItem(req, pm->key) ? 1u << TIPPE_LAW_PARAM_PATCH_MM : 0) |
+              (table ? 1u << TIPPE_LAW_PARAM_TABLE : 0);
+    tippe_friction_law chosen[TIPPE_MAX_FRICTION_LAWS];
+    int n = 0;
+    tippe_error err = {0};
+    if (tippe_friction_choose(&g, &serve_friction_names, chosen, &n, o, &err)) {
+        tippe_serve_respond_error(out, 400, err.field[0] ? err.field : "friction", "%s", err.msg);
+        return -1;
+    }
     return 0;
 }
 
-/* The patch law's table (Hertz at m g from the design's ball and the table's E
- * and nu) when no radius was given; 0, or -1 after an answer. */
+/* The patch law's radius for d (the library's rules: the design's tolerance as the
+ * span, Hertz's radius on the request's table when none was given); 0, or -1 after an
+ * answer. */
 static int patch_request(const cJSON *req, const tippe_design *d, tippe_launch_options *o,
                          serve_response *out)
 {
-    static const char *const tables[] = {"laminate", "glass", "wood", "steel", NULL};
-    if (o->law != TIPPE_FRICTION_PATCH)
-        return 0;
-    o->patch_radius_span = tippe_design_patch_radius_span(d); /* the design's tolerance */
-    if (o->patch_radius_m > 0)
-        return 0;
-    const int t = tippe_serve_request_word(req, "table", tables, 0, out);
-    if (t < 0)
-        return -1;
+    /* launch_request checked it: a known surface, or none (the default table) */
+    const cJSON *table = cJSON_GetObjectItemCaseSensitive(req, "table");
     tippe_error err = {0};
-    if (tippe_launch_patch_modulus(d, tables[t], &o->patch_E_star_pa, &err)) {
-        tippe_serve_respond_error(out, 400, "friction", "%s", err.msg);
+    if (tippe_friction_for_design(d, &o->law, 1, cJSON_IsString(table) ? table->valuestring : NULL,
+                                  &serve_friction_names, o, &err)) {
+        tippe_serve_respond_error(out, 400, err.field[0] ? err.field : "friction", "%s", err.msg);
         return -1;
     }
     return 0;
@@ -269,11 +279,12 @@ static void api_check(serve_server *s, const cJSON *req, serve_response *out)
     cJSON *j = rc ? NULL : tippe_sweep_check_json(&c, &o, NULL, 0);
     if (rc) {
         tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500,
-                                  strstr(err.msg, "Z2") ? "z2_mm" : NULL, "%s", err.msg);
+                                  err.field[0] ? err.field : NULL, "%s", err.msg);
         tippe_design_free(d);
         return;
     }
-    if (o.law == TIPPE_FRICTION_PATCH && sensitivity == 0) {
+    const int patch = tippe_friction_law_type_of(o.law)->patch;
+    if (patch && sensitivity == 0) {
         /* the radius is uncertain: the verdict at 1/F and F times it (tippe check's) */
         tippe_launch_radius_sensitivity sens;
         if (tippe_launch_radius_sensitivity_initial(&c.top, &o, &c.ic, &c.rec, &sens, &err)) {
@@ -291,7 +302,7 @@ static void api_check(serve_server *s, const cJSON *req, serve_response *out)
     double t_end = isfinite(flip) ? fmax(1.5 * flip, flip + 1.0) : fmax(c.rec.t_s, 2.0);
     if (isfinite(fall))
         t_end = fmax(t_end, 1.2 * fall);
-    t_end = fmin(t_end, o.law == TIPPE_FRICTION_PATCH ? THETA_MAX_PATCH_S : THETA_MAX_S);
+    t_end = fmin(t_end, patch ? THETA_MAX_PATCH_S : THETA_MAX_S);
     double t[THETA_SAMPLES], th[THETA_SAMPLES];
     int n = 0;
     tippe_error terr = {0};

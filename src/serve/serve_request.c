@@ -221,12 +221,17 @@ tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, cons
             memmove(at + 7, at + dl, strlen(at + dl) + 1); /* shorter: stays in msg */
             memcpy(at, "designs", 7);
         }
-        /* the loader names the field: "design: parts[0].radius_mm: ..." */
+        /* the loader names the field (err.field, "parts[0].radius_mm") of the design's
+         * own text ("design: parts[0].radius_mm: ..."; not of the materials table's) */
         char field[160] = "";
-        const char *p = err.msg;
-        size_t klen = strlen(name);
-        if (!strncmp(p, name, klen) && !strncmp(p + klen, ": ", 2)) {
-            const char *f = p + klen + 2, *colon = strstr(f, ": ");
+        const size_t klen = strlen(name);
+        const int own = !strncmp(err.msg, name, klen) && !strncmp(err.msg + klen, ": ", 2);
+        if (own && err.field[0] && strlen(err.field) < sizeof field - strlen(key) - 2) {
+            snprintf(field, sizeof field, "%s.%s", key, err.field);
+        } else if (own) {
+            /* the checks of design/ that set their message by hand name the path only in
+             * it ("design: parts[0].material: ..."), until they set err.field too */
+            const char *f = err.msg + klen + 2, *colon = strstr(f, ": ");
             if (colon && (size_t)(colon - f) < sizeof field - strlen(key) - 2 &&
                 !memchr(f, ' ', (size_t)(colon - f)))
                 snprintf(field, sizeof field, "%s.%.*s", key, (int)(colon - f), f);

@@ -101,7 +101,7 @@ int tippe_sweep_check_run(const tippe_design *d, double z2_mm, const tippe_launc
     out->z2_mm = z2_mm;
     int rc;
     if ((rc = tippe_design_top(d, z2_mm, &out->top, err)) != 0)
-        return rc;
+        return tippe_error_blame(err, "z2_mm"); /* no top at this Z2 */
     /* the run records its time on a hole's rim at a pole (issue 25.7) */
     tippe_launch_options oc = *o;
     tippe_launch_polar_caps(d, z2_mm, &out->top, oc.cap_half_angle_rad);
@@ -304,7 +304,7 @@ cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_opt
         number_or_null(o, "jellett_drift_time_s", rec->jellett_drift_time_s);
         number_or_null(o, "energy_rel_error", rec->energy_rel_error);
         cJSON_AddItemToObject(o, "options", tippe_launch_options_json(opt, 1));
-        if (opt->law == TIPPE_FRICTION_PATCH) /* the radius at m g this top's run started from */
+        if (tippe_friction_law_type_of(opt->law)->patch) /* the radius at m g this top's run started from */
             cJSON_AddNumberToObject(o, "patch_radius_mm", 1e3 * tippe_launch_patch_radius(&r->top, opt));
         cJSON_AddItemToObject(o, "theory", theory_json(r, opt));
     }
