@@ -33,6 +33,11 @@ void tippe_serve_respond_json(serve_response *r, int status, cJSON *o);
 void tippe_serve_respond_error(serve_response *r, int status, const char *field, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 void tippe_serve_response_free(serve_response *r);
+/* src (NUL-terminated, any bytes) into dst as well-formed UTF-8: a byte that
+ * starts no character (or a character cut short) becomes U+FFFD, and with
+ * escape_controls a control character becomes \xNN (a log line stays one line).
+ * Whole characters only; returns the length written. */
+size_t tippe_serve_clean_text(char *dst, size_t size, const char *src, int escape_controls);
 
 /* ---- the shipped designs, read once at start ---- */
 typedef struct {

@@ -46,15 +46,23 @@ static void log_line(serve_server *s, const char *method, const char *url,
 {
     if (!s->o.log || r->status < 400)
         return;
-    char msg[300] = "";
+    /* the URL arrives percent-decoded (%0a is a newline) and a message may quote
+     * the request: control characters are escaped, so that a request cannot
+     * write a line of its own into the log */
+    char msg[1200] = "", clean_url[800], clean_method[80];
     if (r->type && !strcmp(r->type, "application/json") && r->body) {
         cJSON *o = cJSON_Parse(r->body);
         const cJSON *e = cJSON_GetObjectItemCaseSensitive(o, "error");
-        if (cJSON_IsString(e))
-            snprintf(msg, sizeof msg, ": %s", e->valuestring);
+        if (cJSON_IsString(e)) {
+            msg[0] = ':';
+            msg[1] = ' ';
+            tippe_serve_clean_text(msg + 2, sizeof msg - 2, e->valuestring, 1);
+        }
         cJSON_Delete(o);
     }
-    fprintf(s->o.log, "tippe serve: %d %s %.200s%s\n", r->status, method, url, msg);
+    tippe_serve_clean_text(clean_url, sizeof clean_url, url, 1);
+    tippe_serve_clean_text(clean_method, sizeof clean_method, method, 1);
+    fprintf(s->o.log, "tippe serve: %d %s %s%s\n", r->status, clean_method, clean_url, msg);
     fflush(s->o.log);
 }
 
@@ -136,12 +144,15 @@ static int host_ok(const serve_server *s, const char *host)
         return 1;
     char want[400];
     const char *const loop[] = {"127.0.0.1", "localhost", "[::1]", NULL};
+    /* on port 80 a browser leaves the port out of Host (RFC 9110, 7.2: the
+     * scheme's default port may be omitted) */
+    const int bare_ok = s->port == 80;
     snprintf(want, sizeof want, "%s:%d", s->host, s->port);
-    if (!strcasecmp(host, want))
+    if (!strcasecmp(host, want) || (bare_ok && !strcasecmp(host, s->host)))
         return 1;
     for (int i = 0; s->loopback && loop[i]; i++) {
         snprintf(want, sizeof want, "%s:%d", loop[i], s->port);
-        if (!strcasecmp(host, want))
+        if (!strcasecmp(host, want) || (bare_ok && !strcasecmp(host, loop[i])))
             return 1;
     }
     return 0;
@@ -163,10 +174,28 @@ static int token_ok(const serve_server *s, struct MHD_Connection *con)
     return t && equal_const_time(t, s->token);
 }
 
+static enum MHD_Result count_host(void *cls, enum MHD_ValueKind kind, const char *key,
+                                   const char *value)
+{
+    (void)kind;
+    (void)value;
+    if (key && !strcasecmp(key, "Host"))
+        ++*(int *)cls;
+    return MHD_YES;
+}
+
 /* 0 if the request may go on; else a refusal queued. */
 static int refuse(serve_server *s, struct MHD_Connection *con, const char *url,
                   const char *method, enum MHD_Result *ret)
 {
+    /* RFC 9112, 3.2: a request with more than one Host is answered 400 (a proxy
+     * and this server could otherwise read different ones) */
+    int hosts = 0;
+    MHD_get_connection_values(con, MHD_HEADER_KIND, count_host, &hosts);
+    if (hosts > 1) {
+        *ret = send_error(s, con, 400, method, url, "%d Host headers: a request has one", hosts);
+        return 1;
+    }
     const char *host = MHD_lookup_connection_value(con, MHD_HEADER_KIND, "Host");
     if (!host_ok(s, host)) {
         *ret = send_error(s, con, 403, method, url,
@@ -374,6 +403,11 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
         size_t n = *upload_data_size;
         *upload_data_size = 0;
         if (c->too_large || c->len + n > TIPPE_SERVE_MAX_BODY_BYTES) {
+            /* a body without a length (chunked) has no end to wait for: the
+             * connection is closed at the cap (libmicrohttpd cannot answer before
+             * the body is read) */
+            if (c->declared <= 0)
+                return MHD_NO;
             c->too_large = 1;
             free(c->body);
             c->body = NULL;
@@ -407,14 +441,10 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
         return send_response(s, con, &r, method, url, 0);
     }
     c->answered = 1;
-    if (c->too_large && c->declared > 0)
+    if (c->too_large) /* only with a Content-Length: a chunked one was cut */
         return send_error(s, con, 413, method, url,
                           "the body is %.0f bytes, more than the limit of %d (1 MiB)",
                           c->declared, TIPPE_SERVE_MAX_BODY_BYTES);
-    if (c->too_large)
-        return send_error(s, con, 413, method, url,
-                          "the body is more than the limit of %d bytes (1 MiB)",
-                          TIPPE_SERVE_MAX_BODY_BYTES);
     serve_response r = {0};
     cJSON *req = tippe_serve_request_parse(c->body, c->len, &r);
     free(c->body);
