@@ -448,7 +448,7 @@ void tippe_build_weigh_step(const tippe_design *d, tippe_build_sheet *s)
                 t = tippe_design_tolerance(d, k);
         if (!t)
             continue;
-        double lo = fmax(0, pr.infill - t->plus_minus), hi = fmin(1, pr.infill + t->plus_minus);
+        double lo = pr.infill - t->minus, hi = pr.infill + t->plus; /* within 0 .. 1 */
         char set_lo[260], set_hi[260];
         snprintf(set_lo, sizeof set_lo, "%s=%.10g", field, lo);
         snprintf(set_hi, sizeof set_hi, "%s=%.10g", field, hi);
