@@ -145,6 +145,61 @@ with Server(tippe) as srv:
                             "Connection: close\r\n\r\n" % (srv.host, srv.port)).encode())
     check(out.startswith(b"HTTP/1.1 400"), "two Host headers: 400 (%s)" % out[:12])
 
+# ---- slow connections: 300 from one address (a machine on the LAN) trickling their headers
+with Server(tippe) as srv:
+    slow, refused = [], 0
+    t0 = time.time()
+    for i in range(300):
+        try:
+            c = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+            c.settimeout(2)
+            c.bind(("127.0.0.2", 0))
+            c.connect((srv.host, srv.port))
+            c.sendall(b"GET /api/designs HTTP/1.1\r\n")
+            slow.append(c)
+        except OSError:
+            refused += 1
+    time.sleep(0.5)
+    for c in slow:  # a header byte now and then, never the end of the headers
+        try:
+            c.sendall(b"X")
+        except OSError:
+            pass
+    t1 = time.time()
+    try:
+        st, _, _ = srv.request("GET", "/api/designs", timeout=5)
+    except OSError as e:
+        st = str(e)
+    st2, _, _ = srv.post("/api/sweep", {"design": "m12-setscrew"}, timeout=30) if st == 200 \
+        else (0, 0, 0)
+    check(st == 200 and st2 == 200 and time.time() - t1 < 5,
+          "300 slow connections from 127.0.0.2 (%d opened): a client on 127.0.0.1 is served "
+          "(%s, sweep %s, %.2f s)" % (len(slow), st, st2, time.time() - t1))
+    # the headers are due within 10 s: a connection still trickling is closed by then
+    alive, t_closed = True, None
+    c = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    c.bind(("127.0.0.3", 0))
+    c.connect((srv.host, srv.port))
+    c.settimeout(1)
+    start = time.time()
+    c.sendall(b"GET /api/designs HTTP/1.1\r\n")
+    while time.time() - start < 16 and alive:
+        try:
+            c.sendall(b"X-Slow: 1\r\n")
+            if c.recv(100) == b"":
+                alive = False
+        except socket.timeout:
+            pass
+        except OSError:
+            alive = False
+    t_closed = time.time() - start
+    c.close()
+    check(not alive and 9 < t_closed < 12,
+          "a connection trickling its headers is closed at 10 s (%.1f s%s)" %
+          (t_closed, "" if not alive else ", still open"))
+    for c in slow:
+        c.close()
+
 # ---- port 80: a browser sends Host without the port
 try:
     with Server(tippe, listen="127.0.0.1:80") as srv:

@@ -83,6 +83,11 @@ struct serve_server {
     pthread_mutex_t tmp_lock;
     char tmp_dirs[64][4096];
     int n_tmp;
+    /* open connections and the time by which each must have sent its request
+     * (serve_http.c); the watchdog shuts those past it */
+    pthread_mutex_t conn_lock;
+    struct serve_conn *conns;
+    long slow_closed;
     /* counts, for the log */
     long served, refused, over_budget;
     struct MHD_Daemon *daemon;
@@ -106,6 +111,9 @@ double tippe_serve_now_s(void);
 /* serve_http.c */
 int tippe_serve_http_start(serve_server *s, tippe_error *err);
 void tippe_serve_http_stop(serve_server *s);
+/* Shuts the connections that have not sent their whole request in time (slow
+ * clients holding connections): called by the watchdog's tick. */
+void tippe_serve_http_reap(serve_server *s);
 
 /* serve_work.c: the workers (start, stop taking work, join), the queue (the
  * caller checked that it has room), the watchdog's check (under no lock). */

@@ -160,6 +160,7 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
     pthread_mutex_init(&s->lock, NULL);
     pthread_mutex_init(&s->exclusive, NULL);
     pthread_mutex_init(&s->tmp_lock, NULL);
+    pthread_mutex_init(&s->conn_lock, NULL);
     pthread_cond_init(&s->wake, NULL);
     int rc = parse_listen(s, s->o.listen, err);
     if (!rc && s->o.token) {
@@ -210,6 +211,7 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
         if (sig > 0)
             break;
         tippe_serve_watchdog(s);
+        tippe_serve_http_reap(s);
     }
     /* Stop: no new request is queued; those in flight finish within their
      * budget (the watchdog answers the rest), then the listener closes. */
@@ -240,6 +242,7 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
         pthread_mutex_destroy(&s->lock);
         pthread_mutex_destroy(&s->exclusive);
         pthread_mutex_destroy(&s->tmp_lock);
+        pthread_mutex_destroy(&s->conn_lock);
         pthread_cond_destroy(&s->wake);
         free(s);
     } /* else s stays: a worker cut at exit may still read it */

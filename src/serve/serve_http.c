@@ -8,11 +8,87 @@
 #include <microhttpd.h>
 
 #include <arpa/inet.h>
+#include <math.h>
+#include <sys/socket.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+
+/* One connection (libmicrohttpd's socket context): the time by which its
+ * request must be in, on the server's list for the watchdog. */
+typedef struct serve_conn {
+    int fd;
+    double deadline_s; /* INFINITY while a worker has its request */
+    int shut;
+    struct serve_conn *next;
+} serve_conn;
+
+static serve_conn *conn_of(struct MHD_Connection *con)
+{
+    const union MHD_ConnectionInfo *i =
+        MHD_get_connection_info(con, MHD_CONNECTION_INFO_SOCKET_CONTEXT);
+    return i ? i->socket_context : NULL;
+}
+
+static void set_deadline(serve_server *s, struct MHD_Connection *con, double deadline_s)
+{
+    serve_conn *sc = conn_of(con);
+    if (!sc)
+        return;
+    pthread_mutex_lock(&s->conn_lock);
+    sc->deadline_s = deadline_s;
+    pthread_mutex_unlock(&s->conn_lock);
+}
+
+/* libmicrohttpd's thread: a connection opens (its headers are due) or closes
+ * (off the list before its socket is closed, so the watchdog never touches
+ * another's descriptor). */
+static void notify_connection(void *cls, struct MHD_Connection *con, void **socket_context,
+                              enum MHD_ConnectionNotificationCode code)
+{
+    serve_server *s = cls;
+    if (code == MHD_CONNECTION_NOTIFY_STARTED) {
+        const union MHD_ConnectionInfo *i =
+            MHD_get_connection_info(con, MHD_CONNECTION_INFO_CONNECTION_FD);
+        serve_conn *sc = i ? calloc(1, sizeof *sc) : NULL;
+        if (!sc)
+            return;
+        sc->fd = i->connect_fd;
+        sc->deadline_s = tippe_serve_now_s() + TIPPE_SERVE_HEADERS_S;
+        pthread_mutex_lock(&s->conn_lock);
+        sc->next = s->conns;
+        s->conns = sc;
+        pthread_mutex_unlock(&s->conn_lock);
+        *socket_context = sc;
+    } else if (code == MHD_CONNECTION_NOTIFY_CLOSED && *socket_context) {
+        serve_conn *sc = *socket_context;
+        pthread_mutex_lock(&s->conn_lock);
+        for (serve_conn **p = &s->conns; *p; p = &(*p)->next)
+            if (*p == sc) {
+                *p = sc->next;
+                break;
+            }
+        pthread_mutex_unlock(&s->conn_lock);
+        free(sc);
+        *socket_context = NULL;
+    }
+}
+
+void tippe_serve_http_reap(serve_server *s)
+{
+    const double now = tippe_serve_now_s();
+    pthread_mutex_lock(&s->conn_lock);
+    for (serve_conn *sc = s->conns; sc; sc = sc->next)
+        if (!sc->shut && now > sc->deadline_s) {
+            /* libmicrohttpd sees the end of the stream and closes it on its thread */
+            shutdown(sc->fd, SHUT_RDWR);
+            sc->shut = 1;
+            s->slow_closed++;
+        }
+    pthread_mutex_unlock(&s->conn_lock);
+}
 
 /* One connection's request. */
 typedef struct {
@@ -336,6 +412,8 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
         if (!(c = calloc(1, sizeof *c)))
             return MHD_NO;
         *con_cls = c;
+        /* the headers are in; the body is due */
+        set_deadline(s, con, tippe_serve_now_s() + TIPPE_SERVE_BODY_S);
         enum MHD_Result ret = MHD_YES;
         if (refuse(s, con, url, method, &ret)) {
             c->answered = 1;
@@ -475,7 +553,9 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
     j->t_queued_s = tippe_serve_now_s();
     c->job = j;
     c->answered = 0;
-    /* suspended before a worker can resume it */
+    /* suspended before a worker can resume it; the answer is the worker's (and
+     * the budget's) to time */
+    set_deadline(s, con, INFINITY);
     MHD_suspend_connection(con);
     tippe_serve_enqueue(s, j);
     return MHD_YES;
@@ -486,6 +566,9 @@ static void completed(void *cls, struct MHD_Connection *con, void **con_cls,
 {
     serve_server *s = cls;
     conn_ctx *c = *con_cls;
+    (void)toe;
+    /* kept alive: the next request's headers are due */
+    set_deadline(s, con, tippe_serve_now_s() + TIPPE_SERVE_KEEPALIVE_S);
     if (!c)
         return;
     if (c->job)
@@ -536,8 +619,10 @@ int tippe_serve_http_start(serve_server *s, tippe_error *err)
     s->daemon = MHD_start_daemon(
         flags, (uint16_t)s->port, NULL, NULL, handle, s, MHD_OPTION_EXTERNAL_LOGGER, mhd_log, s,
         MHD_OPTION_SOCK_ADDR, &sa, MHD_OPTION_NOTIFY_COMPLETED, completed, s,
-        MHD_OPTION_CONNECTION_LIMIT, (unsigned)256, MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)120,
-        MHD_OPTION_END);
+        MHD_OPTION_NOTIFY_CONNECTION, notify_connection, s,
+        MHD_OPTION_CONNECTION_LIMIT, (unsigned)TIPPE_SERVE_MAX_CONNECTIONS,
+        MHD_OPTION_PER_IP_CONNECTION_LIMIT, (unsigned)TIPPE_SERVE_MAX_CONNECTIONS_PER_IP,
+        MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)TIPPE_SERVE_IDLE_S, MHD_OPTION_END);
     if (!s->daemon)
         return tippe_error_set(err, TIPPE_ECOMPUTE,
                                "cannot listen on %s:%d (in use, or not an address of this "
