@@ -162,6 +162,8 @@ const serve_design *tippe_serve_find_design(const serve_server *s, const char *n
 
 /* ---- serve_api.c: the endpoints ---- */
 extern const serve_route tippe_serve_routes[];
+/* Drops the advice's kept answers (at a stop). */
+void tippe_serve_advice_forget(void);
 
 /* ---- serve_zip.c: files of a folder into one zip in memory (libzip) ---- */
 int tippe_serve_zip_folder(const char *dir, const char *const *names, int n, char **out,

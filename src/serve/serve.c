@@ -229,6 +229,7 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
     tippe_serve_http_stop(s);
     const int still_working = tippe_serve_work_join(s);
     tippe_serve_tmp_remove_all(s);
+    tippe_serve_advice_forget();
     if (s->o.log && sig > 0) {
         fprintf(s->o.log, "tippe serve: stopped by %s (%ld answered, %ld refused, %ld over "
                           "budget)\n",
