@@ -29,7 +29,7 @@ HEADER_LAYER = {"base": 0, "print": 1, "design": 2, "physics": 3, "profile": 4, 
                 "serve": 8}
 # The names each folder's objects may export (after tippe_).
 OWNS = {
-    "base": ["error", "gsl", "report", "progress", "json", "file"],
+    "base": ["error", "gsl", "report", "progress", "json", "file", "cancel"],
     "print": ["print", "gcode", "moments", "ball", "shell", "tube", "torus"],
     "design": ["design", "tolerance", "tolerances", "materials"],
     "physics": ["theory", "dynamics", "launch", "group", "verdict", "decision", "friction",

@@ -867,6 +867,9 @@ static int compute(const tippe_design *d, const tippe_build_options *o, tippe_bu
     }
     if (c.have_ps)
         tippe_profile_set_free(&c.ps);
+    /* a cancelled launch or advice left the sheet short: it is no sheet */
+    if (!rc && tippe_cancel_requested())
+        rc = tippe_cancel_error(err);
     return rc;
 }
 

@@ -53,9 +53,23 @@ typedef struct serve_server serve_server;
 typedef struct {
     const char *path;   /* "/api/sweep" */
     int compute;        /* 1: runs on a worker (POST, JSON body); 0: answered at once (GET) */
-    int exclusive;      /* 1: one at a time (writes files through tippe/base.h's reports) */
+    int exclusive;      /* 1: one at a time, on the lane of its own (writes files through
+                           tippe/base.h's reports; a build or a film takes seconds) */
     void (*answer)(serve_server *s, const cJSON *req, serve_response *out);
 } serve_route;
+
+/* A queue and the threads that take from it: the shared lane (the sweeps, checks,
+ * verdicts: --workers threads) and the exclusive one (builds and films, one at a
+ * time, on a thread of their own: they never hold a shared worker). */
+typedef struct {
+    struct serve_job *head, *tail;
+    int queued, max;
+    pthread_cond_t wake;
+} serve_lane;
+enum { SERVE_LANE_SHARED, SERVE_LANE_EXCLUSIVE, SERVE_N_LANES };
+/* Builds and films waiting for the exclusive lane (each takes 1 to 4 s: four
+ * wait at most 16 s, within the budget); beyond, 503 busy. */
+#define SERVE_EXCLUSIVE_QUEUE 4
 
 struct serve_server {
     tippe_serve_options o;
@@ -70,13 +84,12 @@ struct serve_server {
     size_t materials_len;
     /* work: a bounded queue, a pool of workers and the requests in flight */
     pthread_mutex_t lock;
-    pthread_cond_t wake;
-    pthread_mutex_t exclusive; /* routes with exclusive set */
-    struct serve_job *queue_head, *queue_tail, *in_flight;
-    int queued, queue_max;
+    serve_lane lanes[SERVE_N_LANES];
+    struct serve_job *in_flight;
     int stopping;
-    int n_workers, n_started;
+    int n_workers, n_started; /* the shared lane's; one more thread runs the exclusive lane */
     pthread_t *workers;
+    struct serve_worker *worker_args;
     /* hands a suspended request back to libmicrohttpd (serve_http.c sets it) */
     void (*resume)(struct MHD_Connection *con);
     /* temporaries (build folders): removed after sending and at stop */
@@ -89,7 +102,7 @@ struct serve_server {
     struct serve_conn *conns;
     long slow_closed;
     /* counts, for the log */
-    long served, refused, over_budget;
+    long served, refused, over_budget, abandoned;
     struct MHD_Daemon *daemon;
 };
 
@@ -98,6 +111,9 @@ typedef enum { JOB_QUEUED, JOB_RUNNING, JOB_DONE, JOB_ANSWERED } serve_job_state
 typedef struct serve_job {
     int refs; /* the connection's and the queue's or worker's */
     serve_job_state state;
+    int lane;
+    int fd;                /* the suspended connection's socket (to see its client leave) */
+    volatile int cancel;   /* set by the watchdog: the library's long loops stop (base.h) */
     double t_queued_s;
     const serve_route *route;
     cJSON *req;
@@ -115,8 +131,9 @@ void tippe_serve_http_stop(serve_server *s);
  * clients holding connections): called by the watchdog's tick. */
 void tippe_serve_http_reap(serve_server *s);
 
-/* serve_work.c: the workers (start, stop taking work, join), the queue (the
- * caller checked that it has room), the watchdog's check (under no lock). */
+/* serve_work.c: the workers (start, stop taking work, join), the queues (the
+ * caller checked that j's lane has room), the watchdog's check (under no lock):
+ * a job past its budget or whose client has gone is answered and cancelled. */
 int tippe_serve_work_start(serve_server *s, tippe_error *err);
 void tippe_serve_work_stop(serve_server *s);
 /* Joins the workers: how many are still computing (detached, cut at exit). */

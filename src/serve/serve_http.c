@@ -529,15 +529,22 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
     c->body = NULL;
     if (!req)
         return send_response(s, con, &r, method, url, 0);
-    /* only this thread (libmicrohttpd's) adds to the queue: room now is room */
+    /* only this thread (libmicrohttpd's) adds to the queues: room now is room */
+    const serve_route *route = tippe_serve_find_route(url);
+    const int lane = route->exclusive ? SERVE_LANE_EXCLUSIVE : SERVE_LANE_SHARED;
     pthread_mutex_lock(&s->lock);
-    const int full = s->queued >= s->queue_max || s->stopping;
+    const int full = s->lanes[lane].queued >= s->lanes[lane].max || s->stopping;
     pthread_mutex_unlock(&s->lock);
     if (full) {
         cJSON_Delete(req);
-        tippe_serve_respond_error(&r, 503, NULL,
-                            "busy: %d requests are being computed and %d wait; try again in a "
-                            "second", s->n_workers, s->queue_max);
+        if (lane == SERVE_LANE_EXCLUSIVE)
+            tippe_serve_respond_error(&r, 503, NULL,
+                                      "busy: a build or film is being made and %d wait; try "
+                                      "again in a few seconds", s->lanes[lane].max);
+        else
+            tippe_serve_respond_error(&r, 503, NULL,
+                                      "busy: %d requests are being computed and %d wait; try "
+                                      "again in a second", s->n_workers, s->lanes[lane].max);
         r.retry_after_s = 1;
         return send_response(s, con, &r, method, url, 0);
     }
@@ -548,7 +555,11 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
     }
     j->refs = 2;
     j->req = req;
-    j->route = tippe_serve_find_route(url);
+    j->route = route;
+    j->lane = lane;
+    const union MHD_ConnectionInfo *fd_info =
+        MHD_get_connection_info(con, MHD_CONNECTION_INFO_CONNECTION_FD);
+    j->fd = fd_info ? fd_info->connect_fd : -1;
     j->con = con;
     j->t_queued_s = tippe_serve_now_s();
     c->job = j;

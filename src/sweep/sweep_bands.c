@@ -205,7 +205,7 @@ int tippe_sweep_bands(const tippe_design *d, const tippe_sweep_result *r,
     out->n_tolerances = nt;
     int st = find_crossings(d, r, nt, out, err);
     for (int i = 0; i < nt && st == TIPPE_OK && out->n > 0; i++)
-        st = sensitivities(d, i, out, err);
+        st = tippe_cancel_requested() ? tippe_cancel_error(err) : sensitivities(d, i, out, err);
     for (int k = 0; k < out->n && st == TIPPE_OK; k++) {
         tippe_sweep_band *b = &out->bands[k];
         double sum2 = 0, lin = 0;
