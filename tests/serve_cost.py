@@ -100,6 +100,19 @@ with Server(tippe) as srv:
           "another; alone %.3f s; at most 3 times and 0.2 s, on 2 shared cores)" % (slow, normal))
     check(sorted(done) == [200] * 4, "the builds and the film are made (%s)" % sorted(done))
 
+# ---- the advice (the whole sheet, 1.4 s here) has a lane of its own: it never holds the
+# one worker that answers the sweeps
+with Server(tippe, "--workers", "1") as srv:
+    design = json.load(open(os.path.join(REPO, "designs", "shell-rod-nylon-printed.json")))
+    design["notes"] = "a new text: nothing kept"
+    th = threading.Thread(target=lambda: srv.post("/api/advice", {"design": design}))
+    th.start()
+    time.sleep(0.2)
+    st2, t_sweep, _ = timed(srv, "/api/sweep", SWEEP)
+    th.join()
+    check(st2 == 200 and t_sweep < 0.5,
+          "an advice being computed: the one worker answers a sweep in %.2f s" % t_sweep)
+
 # ---- a request past its budget frees its worker at once, not when its work would end
 with Server(tippe, "--workers", "1", "--budget", "1") as srv:
     st, t_long, _ = timed(srv, "/api/check", LONG)

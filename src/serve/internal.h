@@ -53,23 +53,29 @@ typedef struct serve_server serve_server;
 typedef struct {
     const char *path;   /* "/api/sweep" */
     int compute;        /* 1: runs on a worker (POST, JSON body); 0: answered at once (GET) */
-    int exclusive;      /* 1: one at a time, on the lane of its own (writes files through
-                           tippe/base.h's reports; a build or a film takes seconds) */
+    int lane;           /* SERVE_LANE_*: where it queues */
     void (*answer)(serve_server *s, const cJSON *req, serve_response *out);
 } serve_route;
 
-/* A queue and the threads that take from it: the shared lane (the sweeps, checks,
- * verdicts: --workers threads) and the exclusive one (builds and films, one at a
- * time, on a thread of their own: they never hold a shared worker). */
+/* A queue and the threads that take from it. The shared lane (sweeps, evals,
+ * verdicts, checks: --workers threads) answers what a page asks after each edit;
+ * the advice (the whole build sheet, a second or two) and the exclusive lane
+ * (builds and films, seconds each, one at a time: the library's file writer keeps
+ * one table of temporaries) have a thread each, at a lower priority (nice 10), so
+ * that they never hold a shared worker nor take its core from it. */
 typedef struct {
     struct serve_job *head, *tail;
     int queued, max;
     pthread_cond_t wake;
 } serve_lane;
-enum { SERVE_LANE_SHARED, SERVE_LANE_EXCLUSIVE, SERVE_N_LANES };
-/* Builds and films waiting for the exclusive lane (each takes 1 to 4 s: four
- * wait at most 16 s, within the budget); beyond, 503 busy. */
+enum { SERVE_LANE_SHARED, SERVE_LANE_ADVICE, SERVE_LANE_EXCLUSIVE, SERVE_N_LANES };
+/* Waiting at most: advice, one per client editing (its client gone, it is dropped
+ * unseen); builds and films, four (each takes 1 to 4 s: within the budget). Beyond,
+ * 503 busy. */
+#define SERVE_ADVICE_QUEUE 32
 #define SERVE_EXCLUSIVE_QUEUE 4
+/* The priority of the advice's and exclusive lanes' threads (setpriority). */
+#define SERVE_SLOW_LANE_NICE 10
 
 struct serve_server {
     tippe_serve_options o;
@@ -87,7 +93,7 @@ struct serve_server {
     serve_lane lanes[SERVE_N_LANES];
     struct serve_job *in_flight;
     int stopping;
-    int n_workers, n_started; /* the shared lane's; one more thread runs the exclusive lane */
+    int n_workers, n_started; /* the shared lane's; one more thread per other lane */
     pthread_t *workers;
     struct serve_worker *worker_args;
     /* hands a suspended request back to libmicrohttpd (serve_http.c sets it) */

@@ -156,6 +156,8 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     s->n_workers = s->o.threads > 0 ? s->o.threads : cores > 0 ? (int)cores : 1;
     s->lanes[SERVE_LANE_SHARED].max = s->o.queue > 0 ? s->o.queue : 16 * s->n_workers;
+    s->lanes[SERVE_LANE_ADVICE].max =
+        s->o.queue > 0 && s->o.queue < SERVE_ADVICE_QUEUE ? s->o.queue : SERVE_ADVICE_QUEUE;
     s->lanes[SERVE_LANE_EXCLUSIVE].max =
         s->o.queue > 0 && s->o.queue < SERVE_EXCLUSIVE_QUEUE ? s->o.queue : SERVE_EXCLUSIVE_QUEUE;
     snprintf(s->designs_dir, sizeof s->designs_dir, "%s", s->o.designs_dir ? s->o.designs_dir
@@ -199,7 +201,7 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
     if (!rc && s->o.log) {
         fprintf(s->o.log,
                 "tippe serve: the calculator is at\n\n    http://%s:%d/%s%s\n\n"
-                "%s; %d workers (and one for builds and films), %d waiting at most, %g s per "
+                "%s; %d workers (and one for the advice, one for builds and films), %d waiting at most, %g s per "
                 "request; Ctrl-C stops it.\n",
                 s->host, s->port, s->token[0] ? "?token=" : "", s->token,
                 s->token[0] ? "Listening beyond loopback: the URL carries the access token "

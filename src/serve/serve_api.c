@@ -654,14 +654,14 @@ static void api_advice(serve_server *s, const cJSON *req, serve_response *out)
 }
 
 const serve_route tippe_serve_routes[] = {
-    {"/api/sweep", 1, 0, api_sweep},
-    {"/api/eval", 1, 0, api_eval},
-    {"/api/compare", 1, 0, api_compare},
-    {"/api/check", 1, 0, api_check},
-    {"/api/build", 1, 1, api_build},
-    {"/api/verdict", 1, 0, api_verdict},
-    {"/api/advice", 1, 0, api_advice},
-    {"/api/animate", 1, 1, api_animate},
+    {"/api/sweep", 1, SERVE_LANE_SHARED, api_sweep},
+    {"/api/eval", 1, SERVE_LANE_SHARED, api_eval},
+    {"/api/compare", 1, SERVE_LANE_SHARED, api_compare},
+    {"/api/check", 1, SERVE_LANE_SHARED, api_check},
+    {"/api/build", 1, SERVE_LANE_EXCLUSIVE, api_build},
+    {"/api/verdict", 1, SERVE_LANE_SHARED, api_verdict},
+    {"/api/advice", 1, SERVE_LANE_ADVICE, api_advice},
+    {"/api/animate", 1, SERVE_LANE_EXCLUSIVE, api_animate},
     {NULL, 0, 0, NULL},
 };
 

@@ -531,16 +531,18 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
         return send_response(s, con, &r, method, url, 0);
     /* only this thread (libmicrohttpd's) adds to the queues: room now is room */
     const serve_route *route = tippe_serve_find_route(url);
-    const int lane = route->exclusive ? SERVE_LANE_EXCLUSIVE : SERVE_LANE_SHARED;
+    const int lane = route->lane;
     pthread_mutex_lock(&s->lock);
     const int full = s->lanes[lane].queued >= s->lanes[lane].max || s->stopping;
     pthread_mutex_unlock(&s->lock);
     if (full) {
         cJSON_Delete(req);
-        if (lane == SERVE_LANE_EXCLUSIVE)
+        if (lane != SERVE_LANE_SHARED)
             tippe_serve_respond_error(&r, 503, NULL,
-                                      "busy: a build or film is being made and %d wait; try "
-                                      "again in a few seconds", s->lanes[lane].max);
+                                      "busy: %s is being computed and %d wait; try again in a "
+                                      "few seconds",
+                                      lane == SERVE_LANE_ADVICE ? "an advice" : "a build or film",
+                                      s->lanes[lane].max);
         else
             tippe_serve_respond_error(&r, 503, NULL,
                                       "busy: %d requests are being computed and %d wait; try "

@@ -1,4 +1,4 @@
-/* tippe serve's work: the bounded queue, the workers that answer the requests
+/* tippe serve's work: the bounded queues (lanes), the workers that answer the requests
  * that compute, the watchdog that answers a request past its budget, and the
  * temporary folders (removed after sending and at a stop). */
 #define _GNU_SOURCE /* pthread_timedjoin_np */
@@ -6,7 +6,9 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
+#include <sys/syscall.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -73,6 +75,9 @@ static void *worker(void *arg)
 {
     serve_server *s = ((struct serve_worker *)arg)->s;
     serve_lane *L = &s->lanes[((struct serve_worker *)arg)->lane];
+    /* the slow lanes yield their core to the shared one (Linux: per thread) */
+    if (L != &s->lanes[SERVE_LANE_SHARED])
+        setpriority(PRIO_PROCESS, (id_t)syscall(SYS_gettid), SERVE_SLOW_LANE_NICE);
     for (;;) {
         pthread_mutex_lock(&s->lock);
         while (!L->head && !s->stopping)
@@ -221,7 +226,7 @@ void tippe_serve_tmp_remove_all(serve_server *s)
 
 int tippe_serve_work_start(serve_server *s, tippe_error *err)
 {
-    const int n = s->n_workers + 1; /* and the exclusive lane's */
+    const int n = s->n_workers + SERVE_N_LANES - 1; /* and one per other lane */
     s->workers = calloc((size_t)n, sizeof *s->workers);
     s->worker_args = calloc((size_t)n, sizeof *s->worker_args);
     if (!s->workers || !s->worker_args)
@@ -229,7 +234,8 @@ int tippe_serve_work_start(serve_server *s, tippe_error *err)
     for (; s->n_started < n; s->n_started++) {
         struct serve_worker *a = &s->worker_args[s->n_started];
         a->s = s;
-        a->lane = s->n_started < s->n_workers ? SERVE_LANE_SHARED : SERVE_LANE_EXCLUSIVE;
+        a->lane = s->n_started < s->n_workers ? SERVE_LANE_SHARED
+                                              : SERVE_LANE_SHARED + 1 + s->n_started - s->n_workers;
         if (pthread_create(&s->workers[s->n_started], NULL, worker, a))
             return tippe_error_set(err, TIPPE_ECOMPUTE, "cannot start a worker thread");
     }
