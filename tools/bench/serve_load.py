@@ -5,8 +5,8 @@ CLIENTS clients (default 16) each open a shipped design (--designs solid, printe
 or all) and edit it as a person at the page would, for SECONDS (default 60): a
 printed design gets a new infill for its printed part, a solid one a sphere
 radius up to 1 mm larger. After each edit a client asks what the page asks
-(--mix page, the default): the sweep (POST /api/sweep), then the build sheet's
-verdict (/api/verdict), then the advice (/api/advice) on a connection of its own,
+(--mix page, the default): the sweep (POST /api/sweep) and with it the build
+sheet's verdict (/api/verdict, on a second connection), then the advice (/api/advice) on a connection of its own,
 which it closes unanswered when its next edit comes (the page aborts it); with
 --mix sweep, the sweep alone. It then waits THINK seconds (default 0: as fast as
 it can). The server runs with its defaults (one worker per core, a queue of 16 per
@@ -137,6 +137,7 @@ def client(n):
     if i is not None and d["parts"][i]["print"] is True:
         d["parts"][i]["print"] = {}
     c = http.client.HTTPConnection("127.0.0.1", port, timeout=60)
+    cv = http.client.HTTPConnection("127.0.0.1", port, timeout=60)
     pending = None
     while time.time() < stop_at:
         if i is not None:
@@ -150,9 +151,16 @@ def client(n):
         if pending:
             pending[0].close()
             pending = None
+        if a.mix == "page":  # the verdict is asked with the sweep, as the page does
+            vres = []
+            vt = threading.Thread(target=lambda: vres.append(post(cv, "/api/verdict", body)))
+            vt.start()
         code, retry, c = post(c, "/api/sweep", body)
-        if code == 200 and a.mix == "page":
-            code, retry, c = post(c, "/api/verdict", body)
+        if a.mix == "page":
+            vt.join()
+            vcode, vretry, cv = vres[0]
+            if code == 200:
+                code, retry = vcode, vretry
             if code == 200:
                 sock = socket.create_connection(("127.0.0.1", port))
                 sock.sendall((HEAD % (port, len(body))).encode() + body.encode())

@@ -222,7 +222,12 @@ async function refresh() {
   const seq = ++state.seq;
   $('busy').hidden = false;
   let r;
-  try { r = await api('/api/sweep', { design: state.design }); }
+  // the verdict is asked with the sweep, not after it: the headline comes as soon as the
+  // zones (each costs a sweep; a design the loader refuses answers both at once)
+  // (a copy: the form edits state.design in place, and the advice is asked later)
+  const design = JSON.parse(JSON.stringify(state.design));
+  const verdict = api('/api/verdict', { design }).catch((e) => e);
+  try { r = await api('/api/sweep', { design }); }
   catch (e) { if (seq === state.seq) { $('busy').hidden = true; showFieldError(null, 'the server does not answer: ' + e.message); } return; }
   if (seq !== state.seq) return; // a newer edit is on its way
   $('busy').hidden = true;
@@ -235,7 +240,7 @@ async function refresh() {
   state.adviceAbort = null;
   drawAll();
   if (state.z2 !== null) evalAt(state.z2);
-  sheetVerdict(++state.vseq, state.design);
+  sheetVerdict(++state.vseq, design, verdict);
 }
 
 // The build sheet's verdict of a valid design: "3-in-1" only where each behaviour can be
@@ -244,10 +249,9 @@ async function refresh() {
 // kept by the server per design), asked once the verdict is shown and cancelled by the
 // next edit. A bad edit after them does not drop them: they belong to the last valid
 // design, still on screen.
-async function sheetVerdict(vseq, design) {
-  let r;
-  try { r = await api('/api/verdict', { design }); }
-  catch (e) { if (vseq === state.vseq) $('verdict-text').textContent = 'the build sheet\'s verdict: the server does not answer'; return; }
+async function sheetVerdict(vseq, design, asked) {
+  let r = await asked;
+  if (r instanceof Error) { if (vseq === state.vseq) $('verdict-text').textContent = 'the build sheet\'s verdict: the server does not answer'; return; }
   if (vseq !== state.vseq) return;
   if (!r.ok) { $('verdict-text').textContent = 'the build sheet\'s verdict: ' + ((r.json && r.json.error) || ('HTTP ' + r.status)); return; }
   state.verdict = r.json;
