@@ -543,7 +543,9 @@ static void api_verdict(serve_server *s, const cJSON *req, serve_response *out)
 
 /* ---- the advice's answers, kept per design text (an edit undone, or the
  * same design opened again, costs nothing) ---- */
-enum { ADVICE_CACHE = 32 };
+/* 32 designs (a page's recent edits, or several pages'); a design text over 64 KiB (a
+ * design file is a few) is not kept, so that the cache stays under 32 x 64 KiB of keys. */
+enum { ADVICE_CACHE = 32, ADVICE_KEY_MAX = 64 << 10 };
 static struct {
     char *key;    /* the design's text (a shipped one's name) */
     char *answer; /* the JSON answered */
@@ -569,6 +571,8 @@ static char *advice_find(const char *key, size_t *len)
 
 static void advice_keep(const char *key, const char *answer, size_t len)
 {
+    if (strlen(key) > ADVICE_KEY_MAX)
+        return;
     char *k = strdup(key), *a = malloc(len + 1);
     if (!k || !a) {
         free(k);
