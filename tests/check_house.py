@@ -225,7 +225,8 @@ for verb, fn in verbs:
 api = read("src/serve/serve_api.c")
 functions = set(re.findall(r"^static (?:void|int) (api_[a-z_]+)\(", api, re.M))
 routes = re.search(r"tippe_serve_routes\[\] = \{(.*?)\n\};", api, re.S)
-routed = set(re.findall(r'\{"/api/[a-z_]+", \d, \d, (api_[a-z_]+)\}', routes.group(1))) \
+routed = set(re.findall(r'\{"/api/[a-z_]+", \d, (?:\d|SERVE_LANE_[A-Z]+), (api_[a-z_]+)\}',
+                        routes.group(1))) \
     if routes else set()
 checks += 1
 if not functions or not routed:
