@@ -31,7 +31,7 @@ HEADER_LAYER = {"base": 0, "print": 1, "design": 2, "physics": 3, "profile": 4, 
                 "serve": 8}
 # The names each folder's objects may export (after tippe_).
 OWNS = {
-    "base": ["error", "gsl", "report", "progress", "json", "file"],
+    "base": ["error", "gsl", "report", "progress", "json", "file", "cancel"],
     "print": ["print", "gcode", "moments", "ball", "shell", "tube", "torus"],
     "design": ["design", "tolerance", "tolerances", "materials"],
     "physics": ["theory", "dynamics", "launch", "group", "verdict", "decision", "friction",
@@ -227,7 +227,8 @@ for verb, fn in verbs:
 api = read("src/serve/serve_api.c")
 functions = set(re.findall(r"^static (?:void|int) (api_[a-z_]+)\(", api, re.M))
 routes = re.search(r"tippe_serve_routes\[\] = \{(.*?)\n\};", api, re.S)
-routed = set(re.findall(r'\{"/api/[a-z_]+", \d, \d, (api_[a-z_]+)\}', routes.group(1))) \
+routed = set(re.findall(r'\{"/api/[a-z_]+", \d, (?:\d|SERVE_LANE_[A-Z]+), (api_[a-z_]+)\}',
+                        routes.group(1))) \
     if routes else set()
 checks += 1
 if not functions or not routed:

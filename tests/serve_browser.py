@@ -96,7 +96,15 @@ with Server(tippe) as srv:
         verdict = page_verdict(driver)
         check(verdict == want, "opened: the page says '%s', tippe build '%s'" % (verdict, want))
 
-        # the infill: 15 % -> 40 % makes it 3-in-1 on paper, not yet settable
+        # the infill: 15 % -> 40 % makes it 3-in-1 on paper, not yet settable. Every
+        # headline the page shows on the way is recorded: a spinner ('…') while it waits,
+        # never another verdict (issue 36: a provisional phrase flickered first)
+        driver.execute_script(
+            "window.seenVerdicts = [];"
+            "new MutationObserver(() => window.seenVerdicts.push("
+            "document.getElementById('verdict').textContent)).observe("
+            "document.getElementById('verdict'), {childList: true, characterData: true, "
+            "subtree: true});")
         box = driver.find_element(By.ID, "f-parts_0__print_infill")
         box.send_keys(Keys.CONTROL, "a")
         box.send_keys("0.4")
@@ -104,6 +112,20 @@ with Server(tippe) as srv:
         wait.until(lambda d: page_verdict(d) == want)
         check(want == "3-in-1 on paper only",
               "infill 0.4: the page and tippe build say '%s'" % want)
+        seen = driver.execute_script("return window.seenVerdicts")
+        check(set(seen) <= {"…", want, verdict},
+              "while it waits the page shows a spinner, never a different verdict (%s)" %
+              sorted(set(seen)))
+        # the changes one can buy: asked after the verdict, as tippe build's sheet gives them
+        sheet = cli_json("build", "designs/m12-setscrew-printed.json", "--set",
+                         "parts.body.print.infill=0.4", "-o", os.path.join(artefacts, "build-cli"),
+                         "--no-export")
+        wait.until(lambda d: d.execute_script("return state.advice !== null"))
+        items = [li.text for li in driver.find_elements(By.CSS_SELECTOR, "#verdict-text li")]
+        want_adv = [a["advice"] for a in sheet.get("to_make_it_settable", [])][:3]
+        check(items == want_adv and len(items) > 0,
+              "infill 0.4: the changes one can buy arrive after the verdict, as tippe build's "
+              "(%d)" % len(items))
         time.sleep(0.5)  # the last answer drawn
         page = driver.execute_script("return state.sweep")
         cli = cli_json("sweep", "designs/m12-setscrew-printed.json",
@@ -265,9 +287,11 @@ with Server(tippe) as srv:
               (wide, view))
         driver.save_screenshot(os.path.join(artefacts, "7-phone.png"))
 
-        # Chromium logs the refused request itself (a 400 is not a script error)
+        # Chromium logs the refused requests themselves (a 400 is not a script error): the
+        # sweep's and the verdict's, asked together
         logs = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "WARNING")
-                and not ("/api/sweep" in e["message"] and "400" in e["message"])]
+                and not (("/api/sweep" in e["message"] or "/api/verdict" in e["message"]) and
+                         "400" in e["message"])]
         check(not logs, "after the bad value, no console error but the 400 itself%s" %
               ("" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])))
     finally:

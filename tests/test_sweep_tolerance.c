@@ -380,9 +380,111 @@ static void check_robust(const tippe_sweep_result *r, const tippe_sweep_bands_re
           "robust I %g II %g III %g narrowest %g", rob[0], rob[1], rob[2], narrow);
 }
 
+/* Issue 36: a band moved a field beyond the range it loads in (an infill of
+ * 0.95 +/- 25 % past 1) and every sweep of the design failed. Each bounded field
+ * at each end of its range: its interval stays inside the range (cut at the
+ * end, the full +/- on the other side), the design loads at both ends of the
+ * interval, and the sweep's bands are found. */
+static void check_field_ends(void)
+{
+    static const char *P = "designs/m12-setscrew-printed.json";
+    struct {
+        const char *design, *field, *sets[6];
+    } cases[] = {
+        /* the M12 scaled to the ends of the sphere's 1 .. 1000 mm (printed: +/-0.2 mm) */
+        {M12, "radius_mm", {"radius_mm=1", "parts.hole.radius_mm=0.22", "parts.screw.radius_mm=0.22",
+                            "parts.screw.height_mm=0.6", "travel_mm=[0, 0.8]"}},
+        {M12, "radius_mm", {"radius_mm=1000", "parts.hole.radius_mm=220",
+                            "parts.screw.radius_mm=220", "parts.screw.height_mm=600",
+                            "travel_mm=[0, 800]"}},
+        /* a density up to osmium's 22.6 g/cm^3 (hardware +/-2 %), down to above 0 */
+        {M12, "parts.screw.density_g_cm3", {"parts.screw.density_g_cm3=22.59"}},
+        {M12, "parts.screw.density_g_cm3", {"parts.screw.density_g_cm3=0.01"}},
+        {M12, "materials.ABSplus.density_g_cm3",
+         {"tolerances={\"materials.ABSplus.density_g_cm3\": \"1%\"}"}},
+        /* infill 0 .. 1: the slicer's +/-25 %, or the block's at 1 */
+        {P, "parts.body.print.infill", {"parts.body.print={\"infill\": 0.95}"}},
+        {P, "parts.body.print.infill", {"parts.body.print={\"infill\": 0.99}"}},
+        {P, "parts.body.print.infill",
+         {"parts.body.print={\"infill\": 1}", "tolerances={\"parts.body.print.infill\": 0.2}"}},
+        {P, "parts.body.print.infill", {"parts.body.print={\"infill\": 0.01}"}},
+        /* line width 0.05 .. 3 mm, layer height 0.01 .. 2 mm: the block's 10 % */
+        {P, "parts.body.print.line_width_mm",
+         {"parts.body.print={\"line_width_mm\": 3}",
+          "tolerances={\"parts.body.print.line_width_mm\": \"10%\"}"}},
+        {P, "parts.body.print.line_width_mm",
+         {"parts.body.print={\"line_width_mm\": 0.05}",
+          "tolerances={\"parts.body.print.line_width_mm\": \"10%\"}"}},
+        {P, "parts.body.print.layer_height_mm",
+         {"parts.body.print={\"layer_height_mm\": 2}",
+          "tolerances={\"parts.body.print.layer_height_mm\": \"10%\"}"}},
+        {P, "parts.body.print.layer_height_mm",
+         {"parts.body.print={\"layer_height_mm\": 0.01}",
+          "tolerances={\"parts.body.print.layer_height_mm\": \"10%\"}"}},
+        /* a weighing's calibration -1 .. 2 (its default +/-1) */
+        {P, "parts.body.print.calibration",
+         {"parts.body.print={\"measured_mass_g\": 15, \"calibration\": -1}"}},
+        {P, "parts.body.print.calibration",
+         {"parts.body.print={\"measured_mass_g\": 15, \"calibration\": 2}"}},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        int n = 0;
+        while (n < 6 && cases[k].sets[n])
+            n++;
+        tippe_error err = {0};
+        tippe_design *d = NULL;
+        const char *what = cases[k].sets[0];
+        CHECK(tippe_design_load(cases[k].design, cases[k].sets, n, &d, &err) == TIPPE_OK,
+              "%s: %s", what, err.msg);
+        if (!d)
+            continue;
+        const tippe_tolerance *t = find_tol(d, cases[k].field);
+        CHECK(t != NULL, "%s: no tolerance on %s", what, cases[k].field);
+        if (!t) {
+            tippe_design_free(d);
+            continue;
+        }
+        double lo, hi;
+        tippe_design_field_range(t->field, &lo, &hi);
+        const double from = t->value - t->minus, to = t->value + t->plus;
+        CHECK(from >= lo && to <= hi, "%s: %s's interval %.17g .. %.17g outside %g .. %g", what,
+              t->field, from, to, lo, hi);
+        /* cut only where the range ends: the full +/- wherever there is room */
+        CHECK(t->minus == fmin(t->plus_minus, t->value - lo) &&
+                  t->plus == fmin(t->plus_minus, hi - t->value),
+              "%s: %s -%g +%g of +/-%g in %g .. %g", what, t->field, t->minus, t->plus,
+              t->plus_minus, lo, hi);
+        for (int end = 0; end < 2; end++) {
+            char sets[8][TIPPE_TOLERANCE_FIELD_LEN + 40];
+            const char *ptr[8];
+            int m = tippe_tolerance_overrides(d, t, end ? t->plus : -t->minus, sets, 8);
+            for (int i = 0; i < m; i++)
+                ptr[i] = sets[i];
+            tippe_design *moved = NULL;
+            CHECK(m > 0 && tippe_design_derive(d, ptr, m, &moved, &err) == TIPPE_OK,
+                  "%s: moved to the interval's %s: %s", what, end ? "top" : "bottom", err.msg);
+            tippe_design_free(moved);
+        }
+        tippe_sweep_result r;
+        tippe_sweep_bands_result b = {0};
+        int rc = tippe_sweep_design(d, 0, 0, NULL, &r, &err);
+        CHECK(rc == TIPPE_OK, "%s: sweep: %s", what, err.msg);
+        if (!rc) {
+            CHECK(tippe_sweep_bands(d, &r, &b, &err) == TIPPE_OK, "%s: bands: %s", what, err.msg);
+            for (int i = 0; i < b.n; i++)
+                CHECK(isfinite(b.bands[i].band_mm), "%s: band %d is %g", what, i,
+                      b.bands[i].band_mm);
+            tippe_sweep_bands_free(&b);
+            tippe_sweep_result_free(&r);
+        }
+        tippe_design_free(d);
+    }
+}
+
 int main(void)
 {
     check_parsing();
+    check_field_ends();
     tippe_error err = {0};
     tippe_design *d = NULL;
     CHECK(tippe_design_load(M12, NULL, 0, &d, &err) == TIPPE_OK, "%s", err.msg);

@@ -5,6 +5,8 @@
  * - reports: output files written whole or not at all, sets of them that commit together,
  *   and every input read through one safe reader (tippe_report_*, tippe_file_*;
  *   src/base/report.c, file.c);
+ * - cancel: a flag a thread watches, which the library's long loops check (tippe_cancel_*,
+ *   src/base/cancel.c);
  * - progress: long loops with a time-left estimate (tippe_progress_*, src/base/progress.c).
  * Internal to the library: base/json.h, the strict JSON reader every loader uses.
  */
@@ -186,6 +188,23 @@ void tippe_report_remove_temporaries(void);
 /* 1 while tippe_report_set_commit() renames files into place (a signal
  * handler should then let it finish); safe in a signal handler. */
 int tippe_report_committing(void);
+
+/* ---- cancel ---- */
+/* Cancel: a long computation stopped from outside (tippe serve: a request past
+ * its budget, or whose client has gone). A thread names a flag it watches; the
+ * library's long loops (each step of a launch's integration, each tolerance of a
+ * sweep's bands, each change the build's advice tries, each frame of a film, each
+ * file of an export) check it and fail with TIPPE_ECOMPUTE "cancelled" once it is
+ * set, well within a second. The command watches none: nothing is ever
+ * cancelled there (its Ctrl-C ends the process). OpenMP threads a loop starts do
+ * not inherit the watch; the loop that starts them checks it between them. */
+
+/* This thread's flag (NULL: none); the previous one is returned. */
+const volatile int *tippe_cancel_watch(const volatile int *flag);
+/* Nonzero once this thread's flag is set. */
+int tippe_cancel_requested(void);
+/* err set to "cancelled" (TIPPE_ECOMPUTE); returns TIPPE_ECOMPUTE. */
+int tippe_cancel_error(tippe_error *err);
 
 /* ---- progress ---- */
 /* Progress: progress of long loops with a time-left estimate.

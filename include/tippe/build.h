@@ -332,6 +332,15 @@ void tippe_build_options_default(tippe_build_options *o);
  * setting (launch_status), not returned. */
 int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                         tippe_build_sheet *out, tippe_error *err);
+/* The verdict alone, as tippe_build_compute gives it (three_in_one, settable,
+ * each setting's reachable, robust range and settable, min_setting_mm and its
+ * rule, the thread and the hole's fit), without the settings' launch checks,
+ * the bill, the steps, the poles' fixes or the advice: about the cost of a
+ * sweep with its bands, where the whole sheet costs 40 to 90 times that
+ * (tippe serve's /api/verdict, asked after every edit: docs/serve.md). The
+ * rest of the sheet is left zero. */
+int tippe_build_compute_verdict(const tippe_design *d, const tippe_build_options *o,
+                                tippe_build_sheet *out, tippe_error *err);
 
 /* The sheet's first line after its title: the file, the --set changes, the
  * sphere and the weight's travel (the design's, and what its parts allow). */

@@ -428,7 +428,16 @@ typedef struct {
     const char *rule;  /* "tolerances block", or the default's: "printed dimension",
                           "filament density", "hardware mass", "slicer infill",
                           "scale reading" */
+    /* The field's interval, [value - minus, value + plus]: +/- plus_minus clipped to
+     * the range the field loads in (tippe_design_field_range): an infill of 0.95 +/-
+     * 25 % lies in 0.7125 .. 1, not beyond 1, where the design no longer loads. */
+    double minus, plus;
 } tippe_tolerance;
+
+/* The range a number field (named as --set and the tolerances block name it,
+ * "parts.body.print.infill", "materials.PLA.density_g_cm3") loads in: the
+ * loader's own bounds; -/+INFINITY where it has none (z_mm; a length above 0). */
+void tippe_design_field_range(const char *field, double *lo, double *hi);
 
 int tippe_design_n_tolerances(const tippe_design *d);
 /* The factor F of the patch radius's tolerance (the block's contact.patch_radius, else

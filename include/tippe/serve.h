@@ -27,6 +27,18 @@
 #define TIPPE_SERVE_MAX_FILM_S 8.0            /* model time of a film */
 #define TIPPE_SERVE_MAX_FILM_PX 480           /* a film's width and height */
 #define TIPPE_SERVE_MAX_FILM_FPS 25
+/* Connections (issue 36: 256 clients trickling their headers kept every other
+ * client out). At most 256 at once and 64 from one address (a browser opens 6
+ * per server, RFC 9112 leaves it to the client; the load bench 16); a request's
+ * headers must all arrive within 10 s of the connection (or of the previous
+ * answer, 30 s, on a kept-alive one) and its body within 30 s of its headers,
+ * else the connection is closed; idle for 30 s while answering, closed. */
+#define TIPPE_SERVE_MAX_CONNECTIONS 256
+#define TIPPE_SERVE_MAX_CONNECTIONS_PER_IP 64
+#define TIPPE_SERVE_HEADERS_S 10.0
+#define TIPPE_SERVE_KEEPALIVE_S 30.0
+#define TIPPE_SERVE_BODY_S 30.0
+#define TIPPE_SERVE_IDLE_S 30
 
 typedef struct {
     const char *listen;      /* "HOST:PORT" (IPv4, "[IPv6]" or localhost); NULL: the default */

@@ -324,6 +324,8 @@ static int rgb_frame(encoder *e, AVFrame **out)
 /* Draws frame i into f. */
 static int draw_into(encoder *e, int i, AVFrame *f)
 {
+    if (tippe_cancel_requested()) /* a frame is milliseconds */
+        return tippe_cancel_error(e->err);
     int rc = e->draw(i, f->data[0], f->linesize[0], e->ctx);
     if (rc)
         return tippe_error_set(e->err, rc == TIPPE_EINPUT ? TIPPE_EINPUT : TIPPE_ECOMPUTE,

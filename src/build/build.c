@@ -480,6 +480,7 @@ typedef struct {
     int have_ps;
     double top, bottom, r_weight, bore, rod_r; /* mm */
     int rod_part;
+    int launched; /* the settings' launches ran (the hand's part of each range is known) */
 } compute_ctx;
 
 /* Step 1: the zones, and the robust range of each behaviour. */
@@ -673,7 +674,7 @@ static void compute_settable(compute_ctx *c)
                      "(%s): too narrow to set by hand; it holds on paper only.",
                      behaviours[f], s->robust_width_mm, turn, out->min_setting_mm,
                      out->min_setting_rule);
-        else if (f > 0 && !(s->hand_to_mm - s->hand_from_mm >= out->min_setting_mm))
+        else if (f > 0 && c->launched && !(s->hand_to_mm - s->hand_from_mm >= out->min_setting_mm))
             snprintf(out->warning[out->n_warnings++], sizeof out->warning[0],
                      "The %s setting's robust range is %.2f mm wide, but the spin it needs is "
                      "within a hand's %g rev/s over %s%.2f mm of it, narrower than %.2f mm (%s).",
@@ -820,9 +821,10 @@ static void compute_notes(compute_ctx *c)
 }
 
 /* The sheet in named steps: zones, the reference depths start from, the
- * thread, the hole's fit, the settings, the bill and steps, the notes. */
-int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
-                        tippe_build_sheet *out, tippe_error *err)
+ * thread, the hole's fit, the settings, the bill and steps, the notes; with
+ * verdict_only, the steps the verdict needs (no launch, bill or advice). */
+static int compute(const tippe_design *d, const tippe_build_options *o, tippe_build_sheet *out,
+                   int verdict_only, tippe_error *err)
 {
     memset(out, 0, sizeof *out);
     out->hole_part = -1;
@@ -851,9 +853,13 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     if (rc)
         return rc;
     compute_reference(&c);
-    if (!(rc = compute_thread(&c, err)) && !(rc = compute_hole_fit(&c, err))) {
+    if (verdict_only) {
+        if (!(rc = compute_thread(&c, err)) && !(rc = compute_hole_fit(&c, err)))
+            compute_settable(&c);
+    } else if (!(rc = compute_thread(&c, err)) && !(rc = compute_hole_fit(&c, err))) {
         tippe_build_weigh_offset(d, out);
         compute_settings(&c);
+        c.launched = 1;
         compute_settable(&c);
         tippe_build_poles(d, out);
         compute_bill_and_steps(&c);
@@ -861,5 +867,20 @@ int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
     }
     if (c.have_ps)
         tippe_profile_set_free(&c.ps);
+    /* a cancelled launch or advice left the sheet short: it is no sheet */
+    if (!rc && tippe_cancel_requested())
+        rc = tippe_cancel_error(err);
     return rc;
+}
+
+int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
+                        tippe_build_sheet *out, tippe_error *err)
+{
+    return compute(d, o, out, 0, err);
+}
+
+int tippe_build_compute_verdict(const tippe_design *d, const tippe_build_options *o,
+                                tippe_build_sheet *out, tippe_error *err)
+{
+    return compute(d, o, out, 1, err);
 }

@@ -332,7 +332,7 @@ void tippe_build_advise(const tippe_design *d, const tippe_build_options *o, tip
         cat = own;
     list_changes(&a, cat);
     tippe_build_catalogue_free(own);
-    for (int i = 0; i < a.n; i++)
+    for (int i = 0; i < a.n && !tippe_cancel_requested(); i++) /* each a sweep */
         try_change(&a, &a.c[i]);
     int any = 0;
     for (int f = 0; f < N_FAM; f++) {
@@ -360,7 +360,8 @@ void tippe_build_advise(const tippe_design *d, const tippe_build_options *o, tip
         for (int g = f + 1; g < N_FAM; g++)
             for (int i = 0; i < nt[f]; i++)
                 for (int j = 0; j < nt[g]; j++)
-                    if (pair_of(&a.c[top[f][i]], &a.c[top[g][j]], &pairs[np])) {
+                    if (!tippe_cancel_requested() &&
+                        pair_of(&a.c[top[f][i]], &a.c[top[g][j]], &pairs[np])) {
                         try_change(&a, &pairs[np]);
                         np++;
                     }
@@ -448,7 +449,7 @@ void tippe_build_weigh_step(const tippe_design *d, tippe_build_sheet *s)
                 t = tippe_design_tolerance(d, k);
         if (!t)
             continue;
-        double lo = fmax(0, pr.infill - t->plus_minus), hi = fmin(1, pr.infill + t->plus_minus);
+        double lo = pr.infill - t->minus, hi = pr.infill + t->plus; /* within 0 .. 1 */
         char set_lo[260], set_hi[260];
         snprintf(set_lo, sizeof set_lo, "%s=%.10g", field, lo);
         snprintf(set_hi, sizeof set_hi, "%s=%.10g", field, hi);

@@ -25,6 +25,38 @@ static int check_density(const tippe_json_reader *c, const char *path, double v)
                            "22.59 g/cm^3)%s",
                            v, hint);
 }
+void tippe_design_field_range(const char *field, double *lo, double *hi)
+{
+    static const struct {
+        const char *key;
+        double lo, hi;
+    } print[] = {
+        {"line_width_mm", PRINT_LINE_WIDTH_MIN_MM, PRINT_LINE_WIDTH_MAX_MM},
+        {"layer_height_mm", PRINT_LAYER_HEIGHT_MIN_MM, PRINT_LAYER_HEIGHT_MAX_MM},
+        {"infill", PRINT_INFILL_MIN, PRINT_INFILL_MAX},
+        {"measured_mass_g", PRINT_MEASURED_MASS_MIN_G, PRINT_MEASURED_MASS_MAX_G},
+        {"calibration", PRINT_CALIBRATION_MIN, PRINT_CALIBRATION_MAX},
+    };
+    const char *dot = strrchr(field, '.'), *key = dot ? dot + 1 : field;
+    *lo = -INFINITY;
+    *hi = INFINITY;
+    if (!strcmp(field, "radius_mm")) { /* the sphere's */
+        *lo = RADIUS_MIN_MM;
+        *hi = RADIUS_MAX_MM;
+    } else if (!strcmp(key, "density_g_cm3")) {
+        *lo = 0;
+        *hi = DENSITY_MAX_G_CM3;
+    } else if (strstr(field, ".print.")) {
+        for (size_t i = 0; i < sizeof print / sizeof print[0]; i++)
+            if (!strcmp(key, print[i].key)) {
+                *lo = print[i].lo;
+                *hi = print[i].hi;
+            }
+    } else if (strcmp(key, "z_mm")) { /* a part's length */
+        *lo = 0;
+    }
+}
+
 /* A length in mm that must be > 0 (or >= 0 with allow_zero). */
 int tippe_design_read_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
                         const char *key, int required, int allow_zero, double *out, int *present)
@@ -159,7 +191,8 @@ static int parse_print_rules(const tippe_json_reader *c, const cJSON *item, cons
                            &s->flow)) ||
         (rc = tippe_json_bool(c, item, path, "split", &s->split, NULL)) ||
         (rc = print_number(c, item, path, "split_z_mm", -1000, 1000, 0, "mm", &s->split_z_mm)) ||
-        (rc = print_number(c, item, path, "calibration", -1, 2, 0,
+        (rc = print_number(c, item, path, "calibration", PRINT_CALIBRATION_MIN,
+                           PRINT_CALIBRATION_MAX, 0,
                            "(where a weighed mass goes: 0 sparse infill, 1 every line; the "
                            "tolerance bands look either side)",
                            &s->calibration)))
@@ -193,13 +226,16 @@ static int parse_print(const tippe_json_reader *c, const cJSON *obj, const char 
     if ((rc = tippe_json_check_keys(c, item, path, "a print block", tippe_design_print_keys, NULL)) ||
         (rc = tippe_json_text(c, item, path, "notes", 0, NULL, 0, NULL)) ||
         (rc = print_number(c, item, path, "perimeters", 0, 50, 1, "perimeters", &per)) ||
-        (rc = print_number(c, item, path, "line_width_mm", 0.05, 3, 0, "mm", &s->line_width_mm)) ||
+        (rc = print_number(c, item, path, "line_width_mm", PRINT_LINE_WIDTH_MIN_MM,
+                           PRINT_LINE_WIDTH_MAX_MM, 0, "mm", &s->line_width_mm)) ||
         (rc = print_number(c, item, path, "top_bottom_layers", 0, 200, 1, "layers", &layers)) ||
-        (rc = print_number(c, item, path, "layer_height_mm", 0.01, 2, 0, "mm",
+        (rc = print_number(c, item, path, "layer_height_mm", PRINT_LAYER_HEIGHT_MIN_MM,
+                           PRINT_LAYER_HEIGHT_MAX_MM, 0, "mm",
                            &s->layer_height_mm)) ||
-        (rc = print_number(c, item, path, "infill", 0, 1, 0,
+        (rc = print_number(c, item, path, "infill", PRINT_INFILL_MIN, PRINT_INFILL_MAX, 0,
                            "(a fraction of the solid density: 15 % is 0.15)", &s->infill)) ||
-        (rc = print_number(c, item, path, "measured_mass_g", 1e-6, 1e6, 0, "g",
+        (rc = print_number(c, item, path, "measured_mass_g", PRINT_MEASURED_MASS_MIN_G,
+                           PRINT_MEASURED_MASS_MAX_G, 0, "g",
                            &p->measured_mass_g)) ||
         (rc = parse_print_rules(c, item, path, p)))
         return rc;

@@ -45,6 +45,20 @@
 #define METRES_HINT_SHARE 0.01
 #define LIGHT_WEIGHT_SHARE 0.01
 #define LENGTH_MIN_MM 1e-9
+/* The print block's numbers (docs/design-format.md, "print"): the loader's ranges,
+ * which also bound the tolerance bands (tippe_design_field_range). A line or layer
+ * outside them is not one a slicer makes; infill is a fraction; a weighed mass from
+ * a microgram to a tonne; calibration may look one step past each end (-1 .. 2). */
+#define PRINT_LINE_WIDTH_MIN_MM 0.05
+#define PRINT_LINE_WIDTH_MAX_MM 3.0
+#define PRINT_LAYER_HEIGHT_MIN_MM 0.01
+#define PRINT_LAYER_HEIGHT_MAX_MM 2.0
+#define PRINT_INFILL_MIN 0.0
+#define PRINT_INFILL_MAX 1.0
+#define PRINT_MEASURED_MASS_MIN_G 1e-6
+#define PRINT_MEASURED_MASS_MAX_G 1e6
+#define PRINT_CALIBRATION_MIN -1.0
+#define PRINT_CALIBRATION_MAX 2.0
 /* Intervals per r: a part gives at most 2, each void removes at most 2 more. */
 #define MAX_IV (4 + 4 * MAX_PARTS)
 

@@ -278,11 +278,19 @@ int tippe_tolerances_read(const tippe_json_reader *c, const cJSON *block, const 
         free(l.v);
         return rc;
     }
-    /* A zero removes the field (a default the maker does not want). */
+    /* A zero removes the field (a default the maker does not want). Each band
+     * stays inside the range its field loads in (issue 36: an infill of 0.95 +/-
+     * 25 % went past 1 and every sweep of the design failed). */
     int k = 0;
     for (int i = 0; i < l.n; i++)
-        if (l.v[i].plus_minus > 0)
-            l.v[k++] = l.v[i];
+        if (l.v[i].plus_minus > 0) {
+            tippe_tolerance *t = &l.v[k++];
+            *t = l.v[i];
+            double lo, hi;
+            tippe_design_field_range(t->field, &lo, &hi);
+            t->minus = fmax(0, fmin(t->plus_minus, t->value - lo));
+            t->plus = fmax(0, fmin(t->plus_minus, hi - t->value));
+        }
     *out = l.v;
     *n_out = k;
     return TIPPE_OK;

@@ -50,11 +50,15 @@ static int write_sheet(const tippe_design *d, const tippe_build_sheet *s,
         rc = tippe_report_commit(&rf, err);
     }
     for (int k = 2; !rc && k < TIPPE_EXPORT_BUILD_SHEET; k++)
-        rc = tippe_export_sheet_write(d, s, paths[k], err);
+        rc = tippe_cancel_requested() ? tippe_cancel_error(err)
+                               : tippe_export_sheet_write(d, s, paths[k], err);
     double pin;
     for (int f = 0; !rc && f < 3; f++)
         if (tippe_build_gauge_applies(s, f, &pin))
-            rc = tippe_export_gauge_write(s, f, paths[TIPPE_EXPORT_BUILD_SHEET + f], err);
+            rc = tippe_cancel_requested() ? tippe_cancel_error(err)
+                                   : tippe_export_gauge_write(s, f,
+                                                              paths[TIPPE_EXPORT_BUILD_SHEET + f],
+                                                              err);
     return rc;
 }
 
@@ -81,6 +85,8 @@ int tippe_export_build_write(const tippe_design *d, const tippe_build_sheet *s,
         snprintf(fit_note, fit_note_size, "%s", s->fit_note);
         q->fit_note = fit_note;
     }
+    if (tippe_cancel_requested())
+        return tippe_cancel_error(err);
     return tippe_export_run(d, q, r, err);
 }
 

@@ -890,6 +890,8 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
 {
     const tippe_dynamics_options *opt = rs->opt;
     dyn_ctx *c = &rs->c;
+    if (tippe_cancel_requested()) /* a step is microseconds: the watch is read each one */
+        return -tippe_cancel_error(err);
     double t_target = opt->t_end;
     if (rs->traj && opt->sample_dt > 0.0)
         t_target = fmin(opt->t_end, (double)rs->i_sample * opt->sample_dt);

@@ -33,6 +33,11 @@ void tippe_serve_respond_json(serve_response *r, int status, cJSON *o);
 void tippe_serve_respond_error(serve_response *r, int status, const char *field, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 void tippe_serve_response_free(serve_response *r);
+/* src (NUL-terminated, any bytes) into dst as well-formed UTF-8: a byte that
+ * starts no character (or a character cut short) becomes U+FFFD, and with
+ * escape_controls a control character becomes \xNN (a log line stays one line).
+ * Whole characters only; returns the length written. */
+size_t tippe_serve_clean_text(char *dst, size_t size, const char *src, int escape_controls);
 
 /* ---- the shipped designs, read once at start ---- */
 typedef struct {
@@ -48,9 +53,29 @@ typedef struct serve_server serve_server;
 typedef struct {
     const char *path;   /* "/api/sweep" */
     int compute;        /* 1: runs on a worker (POST, JSON body); 0: answered at once (GET) */
-    int exclusive;      /* 1: one at a time (writes files through tippe/base.h's reports) */
+    int lane;           /* SERVE_LANE_*: where it queues */
     void (*answer)(serve_server *s, const cJSON *req, serve_response *out);
 } serve_route;
+
+/* A queue and the threads that take from it. The shared lane (sweeps, evals,
+ * verdicts, checks: --workers threads) answers what a page asks after each edit;
+ * the advice (the whole build sheet, a second or two) and the exclusive lane
+ * (builds and films, seconds each, one at a time: the library's file writer keeps
+ * one table of temporaries) have a thread each, at a lower priority (nice 10), so
+ * that they never hold a shared worker nor take its core from it. */
+typedef struct {
+    struct serve_job *head, *tail;
+    int queued, max;
+    pthread_cond_t wake;
+} serve_lane;
+enum { SERVE_LANE_SHARED, SERVE_LANE_ADVICE, SERVE_LANE_EXCLUSIVE, SERVE_N_LANES };
+/* Waiting at most: advice, one per client editing (its client gone, it is dropped
+ * unseen); builds and films, four (each takes 1 to 4 s: within the budget). Beyond,
+ * 503 busy. */
+#define SERVE_ADVICE_QUEUE 32
+#define SERVE_EXCLUSIVE_QUEUE 4
+/* The priority of the advice's and exclusive lanes' threads (setpriority). */
+#define SERVE_SLOW_LANE_NICE 10
 
 struct serve_server {
     tippe_serve_options o;
@@ -65,21 +90,25 @@ struct serve_server {
     size_t materials_len;
     /* work: a bounded queue, a pool of workers and the requests in flight */
     pthread_mutex_t lock;
-    pthread_cond_t wake;
-    pthread_mutex_t exclusive; /* routes with exclusive set */
-    struct serve_job *queue_head, *queue_tail, *in_flight;
-    int queued, queue_max;
+    serve_lane lanes[SERVE_N_LANES];
+    struct serve_job *in_flight;
     int stopping;
-    int n_workers, n_started;
+    int n_workers, n_started; /* the shared lane's; one more thread per other lane */
     pthread_t *workers;
+    struct serve_worker *worker_args;
     /* hands a suspended request back to libmicrohttpd (serve_http.c sets it) */
     void (*resume)(struct MHD_Connection *con);
     /* temporaries (build folders): removed after sending and at stop */
     pthread_mutex_t tmp_lock;
     char tmp_dirs[64][4096];
     int n_tmp;
+    /* open connections and the time by which each must have sent its request
+     * (serve_http.c); the watchdog shuts those past it */
+    pthread_mutex_t conn_lock;
+    struct serve_conn *conns;
+    long slow_closed;
     /* counts, for the log */
-    long served, refused, over_budget;
+    long served, refused, over_budget, abandoned;
     struct MHD_Daemon *daemon;
 };
 
@@ -88,6 +117,9 @@ typedef enum { JOB_QUEUED, JOB_RUNNING, JOB_DONE, JOB_ANSWERED } serve_job_state
 typedef struct serve_job {
     int refs; /* the connection's and the queue's or worker's */
     serve_job_state state;
+    int lane;
+    int fd;                /* the suspended connection's socket (to see its client leave) */
+    volatile int cancel;   /* set by the watchdog: the library's long loops stop (base.h) */
     double t_queued_s;
     const serve_route *route;
     cJSON *req;
@@ -101,9 +133,13 @@ double tippe_serve_now_s(void);
 /* serve_http.c */
 int tippe_serve_http_start(serve_server *s, tippe_error *err);
 void tippe_serve_http_stop(serve_server *s);
+/* Shuts the connections that have not sent their whole request in time (slow
+ * clients holding connections): called by the watchdog's tick. */
+void tippe_serve_http_reap(serve_server *s);
 
-/* serve_work.c: the workers (start, stop taking work, join), the queue (the
- * caller checked that it has room), the watchdog's check (under no lock). */
+/* serve_work.c: the workers (start, stop taking work, join), the queues (the
+ * caller checked that j's lane has room), the watchdog's check (under no lock):
+ * a job past its budget or whose client has gone is answered and cancelled. */
 int tippe_serve_work_start(serve_server *s, tippe_error *err);
 void tippe_serve_work_stop(serve_server *s);
 /* Joins the workers: how many are still computing (detached, cut at exit). */
@@ -149,6 +185,8 @@ const serve_design *tippe_serve_find_design(const serve_server *s, const char *n
 
 /* ---- serve_api.c: the endpoints ---- */
 extern const serve_route tippe_serve_routes[];
+/* Drops the advice's kept answers (at a stop). */
+void tippe_serve_advice_forget(void);
 
 /* ---- serve_zip.c: files of a folder into one zip in memory (libzip) ---- */
 int tippe_serve_zip_folder(const char *dir, const char *const *names, int n, char **out,

@@ -140,6 +140,7 @@ static void server_free(serve_server *s)
     free(s->designs);
     free(s->materials_json);
     free(s->workers);
+    free(s->worker_args);
 }
 
 int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
@@ -154,13 +155,18 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
         s->o.budget_s = TIPPE_SERVE_DEFAULT_BUDGET_S;
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     s->n_workers = s->o.threads > 0 ? s->o.threads : cores > 0 ? (int)cores : 1;
-    s->queue_max = s->o.queue > 0 ? s->o.queue : 16 * s->n_workers;
+    s->lanes[SERVE_LANE_SHARED].max = s->o.queue > 0 ? s->o.queue : 16 * s->n_workers;
+    s->lanes[SERVE_LANE_ADVICE].max =
+        s->o.queue > 0 && s->o.queue < SERVE_ADVICE_QUEUE ? s->o.queue : SERVE_ADVICE_QUEUE;
+    s->lanes[SERVE_LANE_EXCLUSIVE].max =
+        s->o.queue > 0 && s->o.queue < SERVE_EXCLUSIVE_QUEUE ? s->o.queue : SERVE_EXCLUSIVE_QUEUE;
     snprintf(s->designs_dir, sizeof s->designs_dir, "%s", s->o.designs_dir ? s->o.designs_dir
                                                                            : "designs");
     pthread_mutex_init(&s->lock, NULL);
-    pthread_mutex_init(&s->exclusive, NULL);
     pthread_mutex_init(&s->tmp_lock, NULL);
-    pthread_cond_init(&s->wake, NULL);
+    pthread_mutex_init(&s->conn_lock, NULL);
+    for (int l = 0; l < SERVE_N_LANES; l++)
+        pthread_cond_init(&s->lanes[l].wake, NULL);
     int rc = parse_listen(s, s->o.listen, err);
     if (!rc && s->o.token) {
         if (strlen(s->o.token) < 16 || strlen(s->o.token) >= sizeof s->token)
@@ -195,12 +201,13 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
     if (!rc && s->o.log) {
         fprintf(s->o.log,
                 "tippe serve: the calculator is at\n\n    http://%s:%d/%s%s\n\n"
-                "%s; %d workers, %d waiting at most, %g s per request; Ctrl-C stops it.\n",
+                "%s; %d workers (and one for the advice, one for builds and films), %d waiting at most, %g s per "
+                "request; Ctrl-C stops it.\n",
                 s->host, s->port, s->token[0] ? "?token=" : "", s->token,
                 s->token[0] ? "Listening beyond loopback: the URL carries the access token "
                               "every request needs (keep it private)"
                             : "Loopback only: nothing outside this machine can reach it",
-                s->n_workers, s->queue_max, s->o.budget_s);
+                s->n_workers, s->lanes[SERVE_LANE_SHARED].max, s->o.budget_s);
         fflush(s->o.log);
     }
     int sig = 0;
@@ -210,6 +217,7 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
         if (sig > 0)
             break;
         tippe_serve_watchdog(s);
+        tippe_serve_http_reap(s);
     }
     /* Stop: no new request is queued; those in flight finish within their
      * budget (the watchdog answers the rest), then the listener closes. */
@@ -227,20 +235,22 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
     tippe_serve_http_stop(s);
     const int still_working = tippe_serve_work_join(s);
     tippe_serve_tmp_remove_all(s);
+    tippe_serve_advice_forget();
     if (s->o.log && sig > 0) {
         fprintf(s->o.log, "tippe serve: stopped by %s (%ld answered, %ld refused, %ld over "
-                          "budget)\n",
+                          "budget, %ld left by their client, %ld slow connections closed)\n",
                 sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "SIGHUP", s->served,
-                s->refused, s->over_budget);
+                s->refused, s->over_budget, s->abandoned, s->slow_closed);
         fflush(s->o.log);
     }
     pthread_sigmask(SIG_SETMASK, &old, NULL);
     if (!still_working) {
         server_free(s);
         pthread_mutex_destroy(&s->lock);
-        pthread_mutex_destroy(&s->exclusive);
         pthread_mutex_destroy(&s->tmp_lock);
-        pthread_cond_destroy(&s->wake);
+        pthread_mutex_destroy(&s->conn_lock);
+        for (int l = 0; l < SERVE_N_LANES; l++)
+            pthread_cond_destroy(&s->lanes[l].wake);
         free(s);
     } /* else s stays: a worker cut at exit may still read it */
     return rc;

@@ -484,44 +484,29 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
     tippe_design_free(d);
 }
 
-/* POST /api/verdict {design}: the build sheet's verdict (tippe build's: 3-in-1 and
- * settable, on paper only, or not 3-in-1), so that the page says "3-in-1" only where
- * each behaviour can be set by hand, with the sentence that says why and the changes
- * a maker can buy. The sheet is computed and not written (no files). */
-static void api_verdict(serve_server *s, const cJSON *req, serve_response *out)
+/* The build options every sheet of the server uses: tippe build's defaults,
+ * the shipped catalogue. */
+static void sheet_options(serve_server *s, tippe_build_options *o, char *cat, size_t size)
 {
-    static const char *const keys[] = {"design", NULL};
-    if (tippe_serve_request_keys(req, keys, out))
-        return;
-    tippe_design *d = tippe_serve_request_design(s, req, "design", "design", out);
-    if (!d)
-        return;
-    tippe_build_options o;
-    tippe_build_options_default(&o);
-    char cat[4096 + 32];
-    snprintf(cat, sizeof cat, "%s/catalogue.json", s->designs_dir);
-    o.catalogue = cat;
-    tippe_build_sheet *sheet = malloc(sizeof *sheet);
-    tippe_error err = {0};
-    int rc = sheet ? tippe_build_compute(d, &o, sheet, &err)
-                   : tippe_error_set(&err, TIPPE_ECOMPUTE, "out of memory");
-    tippe_design_free(d);
-    if (rc) {
-        tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, "design", "%s", err.msg);
-        free(sheet);
-        return;
-    }
-    cJSON *o_json = cJSON_CreateObject();
+    tippe_build_options_default(o);
+    snprintf(cat, size, "%s/catalogue.json", s->designs_dir);
+    o->catalogue = cat;
+}
+
+/* {verdict, three_in_one, settable, text, min_setting_mm, min_setting_rule, settings}
+ * of a sheet; NULL when out of memory. */
+static cJSON *verdict_json(const tippe_build_sheet *sheet)
+{
+    cJSON *o = cJSON_CreateObject();
     char text[2048];
     tippe_build_verdict_text(sheet, text, sizeof text);
-    cJSON *sets = cJSON_CreateArray(), *advice = cJSON_CreateArray();
-    int ok = o_json && sets && advice &&
-             cJSON_AddStringToObject(o_json, "verdict", tippe_build_verdict(sheet)) &&
-             cJSON_AddBoolToObject(o_json, "three_in_one", sheet->three_in_one) &&
-             cJSON_AddBoolToObject(o_json, "settable", sheet->settable) &&
-             cJSON_AddStringToObject(o_json, "text", text) &&
-             cJSON_AddNumberToObject(o_json, "min_setting_mm", sheet->min_setting_mm) &&
-             cJSON_AddStringToObject(o_json, "min_setting_rule", sheet->min_setting_rule);
+    cJSON *sets = o ? cJSON_AddArrayToObject(o, "settings") : NULL;
+    int ok = sets && cJSON_AddStringToObject(o, "verdict", tippe_build_verdict(sheet)) &&
+             cJSON_AddBoolToObject(o, "three_in_one", sheet->three_in_one) &&
+             cJSON_AddBoolToObject(o, "settable", sheet->settable) &&
+             cJSON_AddStringToObject(o, "text", text) &&
+             cJSON_AddNumberToObject(o, "min_setting_mm", sheet->min_setting_mm) &&
+             cJSON_AddStringToObject(o, "min_setting_rule", sheet->min_setting_rule);
     for (int f = 0; ok && f < 3; f++) {
         const tippe_build_setting *x = &sheet->set[f];
         cJSON *e = cJSON_CreateObject();
@@ -531,35 +516,167 @@ static void api_verdict(serve_server *s, const cJSON *req, serve_response *out)
              cJSON_AddNumberToObject(e, "robust_width_mm", x->robust_width_mm) &&
              cJSON_AddBoolToObject(e, "settable", x->settable);
     }
-    for (int k = 0; ok && !sheet->settable && k < sheet->n_advice; k++)
-        ok = cJSON_AddItemToArray(advice, cJSON_CreateString(sheet->advice[k].text));
-    free(sheet);
-    if (ok) {
-        ok = cJSON_AddItemToObject(o_json, "settings", sets);
-        sets = NULL;
-    }
-    if (ok) {
-        ok = cJSON_AddItemToObject(o_json, "advice", advice);
-        advice = NULL;
-    }
-    cJSON_Delete(sets);
-    cJSON_Delete(advice);
     if (!ok) {
-        cJSON_Delete(o_json);
-        tippe_serve_respond_error(out, 503, NULL, "out of memory");
+        cJSON_Delete(o);
+        return NULL;
+    }
+    return o;
+}
+
+/* POST /api/verdict {design}: the build sheet's verdict (tippe build's: 3-in-1 and
+ * settable, on paper only, or not 3-in-1), so that the page says "3-in-1" only where
+ * each behaviour can be set by hand, with the sentence that says why. Only what the
+ * verdict needs is computed (tippe_build_compute_verdict: the zones with their bands,
+ * the thread): a sweep's cost. The changes one can buy and the launch checks are
+ * /api/advice's. */
+static void api_verdict(serve_server *s, const cJSON *req, serve_response *out)
+{
+    static const char *const keys[] = {"design", NULL};
+    if (tippe_serve_request_keys(req, keys, out))
+        return;
+    tippe_design *d = tippe_serve_request_design(s, req, "design", "design", out);
+    if (!d)
+        return;
+    tippe_build_options o;
+    char cat[4096 + 32];
+    sheet_options(s, &o, cat, sizeof cat);
+    tippe_build_sheet *sheet = malloc(sizeof *sheet);
+    tippe_error err = {0};
+    int rc = sheet ? tippe_build_compute_verdict(d, &o, sheet, &err)
+                   : tippe_error_set(&err, TIPPE_ECOMPUTE, "out of memory");
+    tippe_design_free(d);
+    if (rc)
+        tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, "design", "%s", err.msg);
+    else
+        tippe_serve_respond_json(out, 200, verdict_json(sheet));
+    free(sheet);
+}
+
+/* ---- the advice's answers, kept per design text (an edit undone, or the
+ * same design opened again, costs nothing) ---- */
+/* 32 designs (a page's recent edits, or several pages'); a design text over 64 KiB (a
+ * design file is a few) is not kept, so that the cache stays under 32 x 64 KiB of keys. */
+enum { ADVICE_CACHE = 32, ADVICE_KEY_MAX = 64 << 10 };
+static struct {
+    char *key;    /* the design's text (a shipped one's name) */
+    char *answer; /* the JSON answered */
+    size_t len;
+} advice_cache[ADVICE_CACHE];
+static int advice_next;
+static pthread_mutex_t advice_lock = PTHREAD_MUTEX_INITIALIZER;
+
+/* A copy of the answer kept for key, or NULL. */
+static char *advice_find(const char *key, size_t *len)
+{
+    char *copy = NULL;
+    pthread_mutex_lock(&advice_lock);
+    for (int i = 0; i < ADVICE_CACHE && !copy; i++)
+        if (advice_cache[i].key && !strcmp(advice_cache[i].key, key) &&
+            (copy = malloc(advice_cache[i].len + 1))) {
+            memcpy(copy, advice_cache[i].answer, advice_cache[i].len + 1);
+            *len = advice_cache[i].len;
+        }
+    pthread_mutex_unlock(&advice_lock);
+    return copy;
+}
+
+static void advice_keep(const char *key, const char *answer, size_t len)
+{
+    if (strlen(key) > ADVICE_KEY_MAX)
+        return;
+    char *k = strdup(key), *a = malloc(len + 1);
+    if (!k || !a) {
+        free(k);
+        free(a);
         return;
     }
-    tippe_serve_respond_json(out, 200, o_json);
+    memcpy(a, answer, len + 1);
+    pthread_mutex_lock(&advice_lock);
+    const int i = advice_next++ % ADVICE_CACHE;
+    free(advice_cache[i].key);
+    free(advice_cache[i].answer);
+    advice_cache[i].key = k;
+    advice_cache[i].answer = a;
+    advice_cache[i].len = len;
+    pthread_mutex_unlock(&advice_lock);
+}
+
+void tippe_serve_advice_forget(void)
+{
+    pthread_mutex_lock(&advice_lock);
+    for (int i = 0; i < ADVICE_CACHE; i++) {
+        free(advice_cache[i].key);
+        free(advice_cache[i].answer);
+        advice_cache[i].key = advice_cache[i].answer = NULL;
+    }
+    pthread_mutex_unlock(&advice_lock);
+}
+
+/* POST /api/advice {design}: what the whole build sheet adds to the verdict: the
+ * verdict's text with the launch checks (where a hole's opening at a pole undoes
+ * it), the changes one can buy when it is not settable ("advice"), and the
+ * verdict itself (the same as /api/verdict's). It costs what tippe build's sheet
+ * costs (its launches and the changes tried, each a sweep), once per design text:
+ * answers are kept for the last 32 designs. */
+static void api_advice(serve_server *s, const cJSON *req, serve_response *out)
+{
+    static const char *const keys[] = {"design", NULL};
+    if (tippe_serve_request_keys(req, keys, out))
+        return;
+    const cJSON *given = cJSON_GetObjectItemCaseSensitive(req, "design");
+    char *key = cJSON_PrintUnformatted(given);
+    size_t len = 0;
+    char *kept = key ? advice_find(key, &len) : NULL;
+    if (kept) {
+        tippe_serve_response_free(out);
+        out->status = 200;
+        out->type = "application/json";
+        out->body = kept;
+        out->len = len;
+        free(key);
+        return;
+    }
+    tippe_design *d = tippe_serve_request_design(s, req, "design", "design", out);
+    if (!d) {
+        free(key);
+        return;
+    }
+    tippe_build_options o;
+    char cat[4096 + 32];
+    sheet_options(s, &o, cat, sizeof cat);
+    tippe_build_sheet *sheet = malloc(sizeof *sheet);
+    tippe_error err = {0};
+    int rc = sheet ? tippe_build_compute(d, &o, sheet, &err)
+                   : tippe_error_set(&err, TIPPE_ECOMPUTE, "out of memory");
+    tippe_design_free(d);
+    cJSON *o_json = rc ? NULL : verdict_json(sheet);
+    cJSON *advice = o_json ? cJSON_AddArrayToObject(o_json, "advice") : NULL;
+    for (int k = 0; advice && !sheet->settable && k < sheet->n_advice; k++)
+        if (!cJSON_AddItemToArray(advice, cJSON_CreateString(sheet->advice[k].text)))
+            advice = NULL;
+    free(sheet);
+    if (rc) {
+        tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, "design", "%s", err.msg);
+    } else if (!advice) {
+        cJSON_Delete(o_json);
+        tippe_serve_respond_error(out, 503, NULL, "out of memory");
+    } else {
+        tippe_serve_respond_json(out, 200, o_json);
+        if (key && out->status == 200)
+            advice_keep(key, out->body, out->len);
+    }
+    free(key);
 }
 
 const serve_route tippe_serve_routes[] = {
-    {"/api/sweep", 1, 0, api_sweep},
-    {"/api/eval", 1, 0, api_eval},
-    {"/api/compare", 1, 0, api_compare},
-    {"/api/check", 1, 0, api_check},
-    {"/api/build", 1, 1, api_build},
-    {"/api/verdict", 1, 0, api_verdict},
-    {"/api/animate", 1, 1, api_animate},
+    {"/api/sweep", 1, SERVE_LANE_SHARED, api_sweep},
+    {"/api/eval", 1, SERVE_LANE_SHARED, api_eval},
+    {"/api/compare", 1, SERVE_LANE_SHARED, api_compare},
+    {"/api/check", 1, SERVE_LANE_SHARED, api_check},
+    {"/api/build", 1, SERVE_LANE_EXCLUSIVE, api_build},
+    {"/api/verdict", 1, SERVE_LANE_SHARED, api_verdict},
+    {"/api/advice", 1, SERVE_LANE_ADVICE, api_advice},
+    {"/api/animate", 1, SERVE_LANE_EXCLUSIVE, api_animate},
     {NULL, 0, 0, NULL},
 };
 

@@ -8,11 +8,87 @@
 #include <microhttpd.h>
 
 #include <arpa/inet.h>
+#include <math.h>
+#include <sys/socket.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+
+/* One connection (libmicrohttpd's socket context): the time by which its
+ * request must be in, on the server's list for the watchdog. */
+typedef struct serve_conn {
+    int fd;
+    double deadline_s; /* INFINITY while a worker has its request */
+    int shut;
+    struct serve_conn *next;
+} serve_conn;
+
+static serve_conn *conn_of(struct MHD_Connection *con)
+{
+    const union MHD_ConnectionInfo *i =
+        MHD_get_connection_info(con, MHD_CONNECTION_INFO_SOCKET_CONTEXT);
+    return i ? i->socket_context : NULL;
+}
+
+static void set_deadline(serve_server *s, struct MHD_Connection *con, double deadline_s)
+{
+    serve_conn *sc = conn_of(con);
+    if (!sc)
+        return;
+    pthread_mutex_lock(&s->conn_lock);
+    sc->deadline_s = deadline_s;
+    pthread_mutex_unlock(&s->conn_lock);
+}
+
+/* libmicrohttpd's thread: a connection opens (its headers are due) or closes
+ * (off the list before its socket is closed, so the watchdog never touches
+ * another's descriptor). */
+static void notify_connection(void *cls, struct MHD_Connection *con, void **socket_context,
+                              enum MHD_ConnectionNotificationCode code)
+{
+    serve_server *s = cls;
+    if (code == MHD_CONNECTION_NOTIFY_STARTED) {
+        const union MHD_ConnectionInfo *i =
+            MHD_get_connection_info(con, MHD_CONNECTION_INFO_CONNECTION_FD);
+        serve_conn *sc = i ? calloc(1, sizeof *sc) : NULL;
+        if (!sc)
+            return;
+        sc->fd = i->connect_fd;
+        sc->deadline_s = tippe_serve_now_s() + TIPPE_SERVE_HEADERS_S;
+        pthread_mutex_lock(&s->conn_lock);
+        sc->next = s->conns;
+        s->conns = sc;
+        pthread_mutex_unlock(&s->conn_lock);
+        *socket_context = sc;
+    } else if (code == MHD_CONNECTION_NOTIFY_CLOSED && *socket_context) {
+        serve_conn *sc = *socket_context;
+        pthread_mutex_lock(&s->conn_lock);
+        for (serve_conn **p = &s->conns; *p; p = &(*p)->next)
+            if (*p == sc) {
+                *p = sc->next;
+                break;
+            }
+        pthread_mutex_unlock(&s->conn_lock);
+        free(sc);
+        *socket_context = NULL;
+    }
+}
+
+void tippe_serve_http_reap(serve_server *s)
+{
+    const double now = tippe_serve_now_s();
+    pthread_mutex_lock(&s->conn_lock);
+    for (serve_conn *sc = s->conns; sc; sc = sc->next)
+        if (!sc->shut && now > sc->deadline_s) {
+            /* libmicrohttpd sees the end of the stream and closes it on its thread */
+            shutdown(sc->fd, SHUT_RDWR);
+            sc->shut = 1;
+            s->slow_closed++;
+        }
+    pthread_mutex_unlock(&s->conn_lock);
+}
 
 /* One connection's request. */
 typedef struct {
@@ -46,15 +122,23 @@ static void log_line(serve_server *s, const char *method, const char *url,
 {
     if (!s->o.log || r->status < 400)
         return;
-    char msg[300] = "";
+    /* the URL arrives percent-decoded (%0a is a newline) and a message may quote
+     * the request: control characters are escaped, so that a request cannot
+     * write a line of its own into the log */
+    char msg[1200] = "", clean_url[800], clean_method[80];
     if (r->type && !strcmp(r->type, "application/json") && r->body) {
         cJSON *o = cJSON_Parse(r->body);
         const cJSON *e = cJSON_GetObjectItemCaseSensitive(o, "error");
-        if (cJSON_IsString(e))
-            snprintf(msg, sizeof msg, ": %s", e->valuestring);
+        if (cJSON_IsString(e)) {
+            msg[0] = ':';
+            msg[1] = ' ';
+            tippe_serve_clean_text(msg + 2, sizeof msg - 2, e->valuestring, 1);
+        }
         cJSON_Delete(o);
     }
-    fprintf(s->o.log, "tippe serve: %d %s %.200s%s\n", r->status, method, url, msg);
+    tippe_serve_clean_text(clean_url, sizeof clean_url, url, 1);
+    tippe_serve_clean_text(clean_method, sizeof clean_method, method, 1);
+    fprintf(s->o.log, "tippe serve: %d %s %s%s\n", r->status, clean_method, clean_url, msg);
     fflush(s->o.log);
 }
 
@@ -136,12 +220,15 @@ static int host_ok(const serve_server *s, const char *host)
         return 1;
     char want[400];
     const char *const loop[] = {"127.0.0.1", "localhost", "[::1]", NULL};
+    /* on port 80 a browser leaves the port out of Host (RFC 9110, 7.2: the
+     * scheme's default port may be omitted) */
+    const int bare_ok = s->port == 80;
     snprintf(want, sizeof want, "%s:%d", s->host, s->port);
-    if (!strcasecmp(host, want))
+    if (!strcasecmp(host, want) || (bare_ok && !strcasecmp(host, s->host)))
         return 1;
     for (int i = 0; s->loopback && loop[i]; i++) {
         snprintf(want, sizeof want, "%s:%d", loop[i], s->port);
-        if (!strcasecmp(host, want))
+        if (!strcasecmp(host, want) || (bare_ok && !strcasecmp(host, loop[i])))
             return 1;
     }
     return 0;
@@ -163,10 +250,28 @@ static int token_ok(const serve_server *s, struct MHD_Connection *con)
     return t && equal_const_time(t, s->token);
 }
 
+static enum MHD_Result count_host(void *cls, enum MHD_ValueKind kind, const char *key,
+                                   const char *value)
+{
+    (void)kind;
+    (void)value;
+    if (key && !strcasecmp(key, "Host"))
+        ++*(int *)cls;
+    return MHD_YES;
+}
+
 /* 0 if the request may go on; else a refusal queued. */
 static int refuse(serve_server *s, struct MHD_Connection *con, const char *url,
                   const char *method, enum MHD_Result *ret)
 {
+    /* RFC 9112, 3.2: a request with more than one Host is answered 400 (a proxy
+     * and this server could otherwise read different ones) */
+    int hosts = 0;
+    MHD_get_connection_values(con, MHD_HEADER_KIND, count_host, &hosts);
+    if (hosts > 1) {
+        *ret = send_error(s, con, 400, method, url, "%d Host headers: a request has one", hosts);
+        return 1;
+    }
     const char *host = MHD_lookup_connection_value(con, MHD_HEADER_KIND, "Host");
     if (!host_ok(s, host)) {
         *ret = send_error(s, con, 403, method, url,
@@ -307,6 +412,8 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
         if (!(c = calloc(1, sizeof *c)))
             return MHD_NO;
         *con_cls = c;
+        /* the headers are in; the body is due */
+        set_deadline(s, con, tippe_serve_now_s() + TIPPE_SERVE_BODY_S);
         enum MHD_Result ret = MHD_YES;
         if (refuse(s, con, url, method, &ret)) {
             c->answered = 1;
@@ -374,6 +481,11 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
         size_t n = *upload_data_size;
         *upload_data_size = 0;
         if (c->too_large || c->len + n > TIPPE_SERVE_MAX_BODY_BYTES) {
+            /* a body without a length (chunked) has no end to wait for: the
+             * connection is closed at the cap (libmicrohttpd cannot answer before
+             * the body is read) */
+            if (c->declared <= 0)
+                return MHD_NO;
             c->too_large = 1;
             free(c->body);
             c->body = NULL;
@@ -407,29 +519,34 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
         return send_response(s, con, &r, method, url, 0);
     }
     c->answered = 1;
-    if (c->too_large && c->declared > 0)
+    if (c->too_large) /* only with a Content-Length: a chunked one was cut */
         return send_error(s, con, 413, method, url,
                           "the body is %.0f bytes, more than the limit of %d (1 MiB)",
                           c->declared, TIPPE_SERVE_MAX_BODY_BYTES);
-    if (c->too_large)
-        return send_error(s, con, 413, method, url,
-                          "the body is more than the limit of %d bytes (1 MiB)",
-                          TIPPE_SERVE_MAX_BODY_BYTES);
     serve_response r = {0};
     cJSON *req = tippe_serve_request_parse(c->body, c->len, &r);
     free(c->body);
     c->body = NULL;
     if (!req)
         return send_response(s, con, &r, method, url, 0);
-    /* only this thread (libmicrohttpd's) adds to the queue: room now is room */
+    /* only this thread (libmicrohttpd's) adds to the queues: room now is room */
+    const serve_route *route = tippe_serve_find_route(url);
+    const int lane = route->lane;
     pthread_mutex_lock(&s->lock);
-    const int full = s->queued >= s->queue_max || s->stopping;
+    const int full = s->lanes[lane].queued >= s->lanes[lane].max || s->stopping;
     pthread_mutex_unlock(&s->lock);
     if (full) {
         cJSON_Delete(req);
-        tippe_serve_respond_error(&r, 503, NULL,
-                            "busy: %d requests are being computed and %d wait; try again in a "
-                            "second", s->n_workers, s->queue_max);
+        if (lane != SERVE_LANE_SHARED)
+            tippe_serve_respond_error(&r, 503, NULL,
+                                      "busy: %s is being computed and %d wait; try again in a "
+                                      "few seconds",
+                                      lane == SERVE_LANE_ADVICE ? "an advice" : "a build or film",
+                                      s->lanes[lane].max);
+        else
+            tippe_serve_respond_error(&r, 503, NULL,
+                                      "busy: %d requests are being computed and %d wait; try "
+                                      "again in a second", s->n_workers, s->lanes[lane].max);
         r.retry_after_s = 1;
         return send_response(s, con, &r, method, url, 0);
     }
@@ -440,12 +557,18 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
     }
     j->refs = 2;
     j->req = req;
-    j->route = tippe_serve_find_route(url);
+    j->route = route;
+    j->lane = lane;
+    const union MHD_ConnectionInfo *fd_info =
+        MHD_get_connection_info(con, MHD_CONNECTION_INFO_CONNECTION_FD);
+    j->fd = fd_info ? fd_info->connect_fd : -1;
     j->con = con;
     j->t_queued_s = tippe_serve_now_s();
     c->job = j;
     c->answered = 0;
-    /* suspended before a worker can resume it */
+    /* suspended before a worker can resume it; the answer is the worker's (and
+     * the budget's) to time */
+    set_deadline(s, con, INFINITY);
     MHD_suspend_connection(con);
     tippe_serve_enqueue(s, j);
     return MHD_YES;
@@ -456,6 +579,9 @@ static void completed(void *cls, struct MHD_Connection *con, void **con_cls,
 {
     serve_server *s = cls;
     conn_ctx *c = *con_cls;
+    (void)toe;
+    /* kept alive: the next request's headers are due */
+    set_deadline(s, con, tippe_serve_now_s() + TIPPE_SERVE_KEEPALIVE_S);
     if (!c)
         return;
     if (c->job)
@@ -506,8 +632,10 @@ int tippe_serve_http_start(serve_server *s, tippe_error *err)
     s->daemon = MHD_start_daemon(
         flags, (uint16_t)s->port, NULL, NULL, handle, s, MHD_OPTION_EXTERNAL_LOGGER, mhd_log, s,
         MHD_OPTION_SOCK_ADDR, &sa, MHD_OPTION_NOTIFY_COMPLETED, completed, s,
-        MHD_OPTION_CONNECTION_LIMIT, (unsigned)256, MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)120,
-        MHD_OPTION_END);
+        MHD_OPTION_NOTIFY_CONNECTION, notify_connection, s,
+        MHD_OPTION_CONNECTION_LIMIT, (unsigned)TIPPE_SERVE_MAX_CONNECTIONS,
+        MHD_OPTION_PER_IP_CONNECTION_LIMIT, (unsigned)TIPPE_SERVE_MAX_CONNECTIONS_PER_IP,
+        MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)TIPPE_SERVE_IDLE_S, MHD_OPTION_END);
     if (!s->daemon)
         return tippe_error_set(err, TIPPE_ECOMPUTE,
                                "cannot listen on %s:%d (in use, or not an address of this "

@@ -34,6 +34,48 @@ static int nesting_exceeds(const char *text, size_t len, int limit)
     return 0;
 }
 
+/* Whether a string of the JSON text holds the escape \u0000: cJSON would end
+ * the string there (C strings), so that the text checked is not the text sent. */
+static int has_escaped_nul(const char *text, size_t len)
+{
+    int in_string = 0;
+    for (size_t i = 0; i < len; i++) {
+        const char c = text[i];
+        if (!in_string) {
+            in_string = c == '"';
+        } else if (c == '\\') {
+            if (i + 5 < len && text[i + 1] == 'u' && !memcmp(text + i + 2, "0000", 4))
+                return 1;
+            i++;
+        } else if (c == '"') {
+            in_string = 0;
+        }
+    }
+    return 0;
+}
+
+/* A number beyond a double (1e999 reads as infinity, which cJSON would print as
+ * null, so that the design's loader said "not null"): refused with its path. */
+static int non_finite(const cJSON *v, char *path, size_t size, size_t at)
+{
+    if (cJSON_IsNumber(v))
+        return !isfinite(v->valuedouble);
+    int i = 0;
+    for (const cJSON *k = v->child; k; k = k->next, i++) {
+        if (at < size) {
+            if (k->string)
+                snprintf(path + at, size - at, "%s%s", at ? "." : "", k->string);
+            else
+                snprintf(path + at, size - at, "[%d]", i);
+        }
+        size_t next = strlen(path);
+        if (non_finite(k, path, size, next))
+            return 1;
+        path[at < size ? at : size - 1] = '\0';
+    }
+    return 0;
+}
+
 cJSON *tippe_serve_request_parse(const char *body, size_t len, serve_response *out)
 {
     if (!body || len == 0) {
@@ -42,6 +84,12 @@ cJSON *tippe_serve_request_parse(const char *body, size_t len, serve_response *o
     }
     if (memchr(body, '\0', len)) {
         tippe_serve_respond_error(out, 400, NULL, "the body contains a NUL byte: not a JSON text");
+        return NULL;
+    }
+    if (has_escaped_nul(body, len)) {
+        tippe_serve_respond_error(out, 400, NULL,
+                                  "a string contains \\u0000 (a NUL character): no field takes "
+                                  "one");
         return NULL;
     }
     if (nesting_exceeds(body, len, TIPPE_SERVE_MAX_DEPTH)) {
@@ -69,6 +117,14 @@ cJSON *tippe_serve_request_parse(const char *body, size_t len, serve_response *o
     if (!cJSON_IsObject(root)) {
         tippe_serve_respond_error(out, 400, NULL, "the body must be a JSON object, not %s",
                             cJSON_IsArray(root) ? "an array" : "a single value");
+        cJSON_Delete(root);
+        return NULL;
+    }
+    char path[400] = "";
+    if (non_finite(root, path, sizeof path, 0)) {
+        tippe_serve_respond_error(out, 400, path,
+                                  "%s: not a finite number (beyond a double's range, "
+                                  "1.8e308)", path);
         cJSON_Delete(root);
         return NULL;
     }

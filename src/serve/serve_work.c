@@ -1,10 +1,14 @@
-/* tippe serve's work: the bounded queue, the workers that answer the requests
+/* tippe serve's work: the bounded queues (lanes), the workers that answer the requests
  * that compute, the watchdog that answers a request past its budget, and the
  * temporary folders (removed after sending and at a stop). */
 #define _GNU_SOURCE /* pthread_timedjoin_np */
 #include "serve/internal.h"
 
 #include <dirent.h>
+#include <errno.h>
+#include <sys/resource.h>
+#include <sys/socket.h>
+#include <sys/syscall.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,17 +41,18 @@ void tippe_serve_job_release(serve_server *s, serve_job *j)
 void tippe_serve_enqueue(serve_server *s, serve_job *j)
 {
     pthread_mutex_lock(&s->lock);
+    serve_lane *L = &s->lanes[j->lane];
     j->state = JOB_QUEUED;
     j->next = NULL;
-    if (s->queue_tail)
-        s->queue_tail->next = j;
+    if (L->tail)
+        L->tail->next = j;
     else
-        s->queue_head = j;
-    s->queue_tail = j;
-    s->queued++;
+        L->head = j;
+    L->tail = j;
+    L->queued++;
     j->next_in_flight = s->in_flight;
     s->in_flight = j;
-    pthread_cond_signal(&s->wake);
+    pthread_cond_signal(&L->wake);
     pthread_mutex_unlock(&s->lock);
 }
 
@@ -61,33 +66,42 @@ static void unlist(serve_server *s, serve_job *j)
         }
 }
 
+struct serve_worker {
+    serve_server *s;
+    int lane;
+};
+
 static void *worker(void *arg)
 {
-    serve_server *s = arg;
+    serve_server *s = ((struct serve_worker *)arg)->s;
+    serve_lane *L = &s->lanes[((struct serve_worker *)arg)->lane];
+    /* the slow lanes yield their core to the shared one (Linux: per thread) */
+    if (L != &s->lanes[SERVE_LANE_SHARED])
+        setpriority(PRIO_PROCESS, (id_t)syscall(SYS_gettid), SERVE_SLOW_LANE_NICE);
     for (;;) {
         pthread_mutex_lock(&s->lock);
-        while (!s->queue_head && !s->stopping)
-            pthread_cond_wait(&s->wake, &s->lock);
-        serve_job *j = s->queue_head;
+        while (!L->head && !s->stopping)
+            pthread_cond_wait(&L->wake, &s->lock);
+        serve_job *j = L->head;
         if (!j) { /* stopping, and nothing left */
             pthread_mutex_unlock(&s->lock);
             return NULL;
         }
-        s->queue_head = j->next;
-        if (!s->queue_head)
-            s->queue_tail = NULL;
-        s->queued--;
+        L->head = j->next;
+        if (!L->head)
+            L->tail = NULL;
+        L->queued--;
         const int skip = j->state == JOB_ANSWERED; /* the watchdog answered it already */
         if (!skip)
             j->state = JOB_RUNNING;
         pthread_mutex_unlock(&s->lock);
         if (!skip) {
             serve_response r = {0};
-            if (j->route->exclusive)
-                pthread_mutex_lock(&s->exclusive);
+            /* the library's long loops watch the job's flag: past its budget, or
+             * with its client gone, the worker is free again within a second */
+            tippe_cancel_watch(&j->cancel);
             j->route->answer(s, j->req, &r);
-            if (j->route->exclusive)
-                pthread_mutex_unlock(&s->exclusive);
+            tippe_cancel_watch(NULL);
             if (!r.status)
                 tippe_serve_respond_error(&r, 500, NULL, "the endpoint gave no answer");
             pthread_mutex_lock(&s->lock);
@@ -105,24 +119,47 @@ static void *worker(void *arg)
     }
 }
 
+/* Whether the client of a suspended connection has closed it (a page that
+ * aborted its request for a newer edit): its socket reads the end of the stream.
+ * A suspended connection is libmicrohttpd's to close only once resumed, so fd is
+ * its own while the job is in flight (under s->lock). */
+static int client_gone(int fd)
+{
+    char c;
+    if (fd < 0)
+        return 0;
+    const ssize_t n = recv(fd, &c, 1, MSG_PEEK | MSG_DONTWAIT);
+    return n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR);
+}
+
 void tippe_serve_watchdog(serve_server *s)
 {
     const double now = tippe_serve_now_s();
     pthread_mutex_lock(&s->lock);
     for (serve_job **p = &s->in_flight; *p;) {
         serve_job *j = *p;
-        if (now - j->t_queued_s <= s->o.budget_s) {
+        const int over = now - j->t_queued_s > s->o.budget_s, gone = !over && client_gone(j->fd);
+        if (!over && !gone) {
             p = &j->next_in_flight;
             continue;
         }
-        tippe_serve_respond_error(&j->timeout, 503, NULL,
-                            "over budget: %s took more than %g s of wall clock (%s); the "
-                            "server keeps serving",
-                            j->route->path, s->o.budget_s,
-                            j->state == JOB_QUEUED ? "waiting for a worker" : "computing");
+        if (over)
+            tippe_serve_respond_error(&j->timeout, 503, NULL,
+                                      "over budget: %s took more than %g s of wall clock (%s); "
+                                      "the server keeps serving",
+                                      j->route->path, s->o.budget_s,
+                                      j->state == JOB_QUEUED ? "waiting for a worker"
+                                                             : "computing");
+        else /* nobody reads it: the connection is closed once resumed */
+            tippe_serve_respond_error(&j->timeout, 503, NULL,
+                                      "cancelled: the client closed the connection");
         j->timeout.retry_after_s = 5;
         j->state = JOB_ANSWERED;
-        s->over_budget++;
+        j->cancel = 1; /* the worker computing it stops (tippe_cancel_requested) */
+        if (over)
+            s->over_budget++;
+        else
+            s->abandoned++;
         *p = j->next_in_flight;
         s->resume(j->con);
     }
@@ -189,12 +226,19 @@ void tippe_serve_tmp_remove_all(serve_server *s)
 
 int tippe_serve_work_start(serve_server *s, tippe_error *err)
 {
-    s->workers = calloc((size_t)s->n_workers, sizeof *s->workers);
-    if (!s->workers)
+    const int n = s->n_workers + SERVE_N_LANES - 1; /* and one per other lane */
+    s->workers = calloc((size_t)n, sizeof *s->workers);
+    s->worker_args = calloc((size_t)n, sizeof *s->worker_args);
+    if (!s->workers || !s->worker_args)
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
-    for (; s->n_started < s->n_workers; s->n_started++)
-        if (pthread_create(&s->workers[s->n_started], NULL, worker, s))
+    for (; s->n_started < n; s->n_started++) {
+        struct serve_worker *a = &s->worker_args[s->n_started];
+        a->s = s;
+        a->lane = s->n_started < s->n_workers ? SERVE_LANE_SHARED
+                                              : SERVE_LANE_SHARED + 1 + s->n_started - s->n_workers;
+        if (pthread_create(&s->workers[s->n_started], NULL, worker, a))
             return tippe_error_set(err, TIPPE_ECOMPUTE, "cannot start a worker thread");
+    }
     return TIPPE_OK;
 }
 
@@ -202,7 +246,8 @@ void tippe_serve_work_stop(serve_server *s)
 {
     pthread_mutex_lock(&s->lock);
     s->stopping = 1;
-    pthread_cond_broadcast(&s->wake);
+    for (int l = 0; l < SERVE_N_LANES; l++)
+        pthread_cond_broadcast(&s->lanes[l].wake);
     pthread_mutex_unlock(&s->lock);
 }
 

@@ -150,6 +150,14 @@ static int find_crossings(const tippe_design *d, const tippe_sweep_result *r, in
     return TIPPE_OK;
 }
 
+/* How far a field may move either way: the farther end of its interval (an
+ * infill at 0.95 +/- 25 % reaches 0.2375 down and 0.05 up: a boundary moves by
+ * up to its slope times 0.2375 whichever way it goes). */
+static double tol_reach(const tippe_tolerance *t)
+{
+    return fmax(t->minus, t->plus);
+}
+
 /* d(Z2*)/dp of every crossing for tolerance i (eq. of tippe/sweep.h). */
 static int sensitivities(const tippe_design *d, int i, tippe_sweep_bands_result *out,
                          tippe_error *err)
@@ -162,7 +170,15 @@ static int sensitivities(const tippe_design *d, int i, tippe_sweep_bands_result 
         f_params fp = {.cache = &cache, .z2_mm = b->z2_mm, .which = b->boundary};
         gsl_function F = {f_of_delta, &fp};
         double df_dp = 0, abserr = 0;
-        int gs = gsl_deriv_central(&F, 0.0, DP_STEP_OF_TOL * t->plus_minus, &df_dp, &abserr);
+        /* every point the rule asks for inside the field's interval (its range):
+         * central when both sides have room for the step, else one-sided toward
+         * the room (GSL's adaptive step only shrinks) */
+        const double h = DP_STEP_OF_TOL * t->plus_minus;
+        int gs = h <= t->minus && h <= t->plus
+                     ? gsl_deriv_central(&F, 0.0, h, &df_dp, &abserr)
+                 : t->plus >= t->minus
+                     ? gsl_deriv_forward(&F, 0.0, fmin(h, t->plus), &df_dp, &abserr)
+                     : gsl_deriv_backward(&F, 0.0, fmin(h, t->minus), &df_dp, &abserr);
         if (cache.failed)
             st = tippe_error_set(err, cache.err.code, "%s", cache.err.msg);
         else if (fp.failed)
@@ -189,12 +205,12 @@ int tippe_sweep_bands(const tippe_design *d, const tippe_sweep_result *r,
     out->n_tolerances = nt;
     int st = find_crossings(d, r, nt, out, err);
     for (int i = 0; i < nt && st == TIPPE_OK && out->n > 0; i++)
-        st = sensitivities(d, i, out, err);
+        st = tippe_cancel_requested() ? tippe_cancel_error(err) : sensitivities(d, i, out, err);
     for (int k = 0; k < out->n && st == TIPPE_OK; k++) {
         tippe_sweep_band *b = &out->bands[k];
         double sum2 = 0, lin = 0;
         for (int i = 0; i < nt; i++) {
-            double s = fabs(b->dz_dp[i]) * tippe_design_tolerance(d, i)->plus_minus;
+            double s = fabs(b->dz_dp[i]) * tol_reach(tippe_design_tolerance(d, i));
             sum2 += s * s;
             lin += s;
         }
@@ -253,7 +269,7 @@ static int main_term(const tippe_design *d, const tippe_sweep_band *b, int nt, d
     int best = -1;
     *mm = 0;
     for (int i = 0; i < nt; i++) {
-        double s = fabs(b->dz_dp[i]) * tippe_design_tolerance(d, i)->plus_minus;
+        double s = fabs(b->dz_dp[i]) * tol_reach(tippe_design_tolerance(d, i));
         if (best < 0 || s > *mm) {
             best = i;
             *mm = s;
@@ -272,8 +288,12 @@ void tippe_sweep_print_bands(FILE *out, const tippe_design *d, const tippe_sweep
         char pct[32] = "";
         if (t->percent > 0)
             snprintf(pct, sizeof pct, " (%g%%)", t->percent);
-        fprintf(out, "  %-34s %9.4g +/- %-8.3g %-7s%s  %s\n", t->field, t->value, t->plus_minus,
-                t->unit, pct, t->rule);
+        char clip[80] = "";
+        if (t->minus < t->plus_minus || t->plus < t->plus_minus) /* at its range's end */
+            snprintf(clip, sizeof clip, " (within its range: %.4g .. %.4g)", t->value - t->minus,
+                     t->value + t->plus);
+        fprintf(out, "  %-34s %9.4g +/- %-8.3g %-7s%s  %s%s\n", t->field, t->value,
+                t->plus_minus, t->unit, pct, t->rule, clip);
     }
     /* the zones do not depend on friction: listed, not combined (tippe/design.h) */
     fprintf(out, "  %-34s within a factor %g (patch friction's radius: check, launch and map rerun "
@@ -357,6 +377,8 @@ int tippe_sweep_json_add_bands(cJSON *o, const tippe_design *d, const tippe_swee
         put(to, "field", cJSON_CreateString(t->field), &ok);
         put(to, "value", num(t->value), &ok);
         put(to, "plus_minus", num(t->plus_minus), &ok);
+        put(to, "from", num(t->value - t->minus), &ok); /* within the field's range */
+        put(to, "to", num(t->value + t->plus), &ok);
         put(to, "unit", cJSON_CreateString(t->unit), &ok);
         put(to, "rule", cJSON_CreateString(t->rule), &ok);
     }

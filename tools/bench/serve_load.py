@@ -4,23 +4,29 @@
 CLIENTS clients (default 16) each open a shipped design (--designs solid, printed
 or all) and edit it as a person at the page would, for SECONDS (default 60): a
 printed design gets a new infill for its printed part, a solid one a sphere
-radius up to 1 mm larger, and the client asks for the sweep (POST /api/sweep, the
-page's live request), then waits THINK seconds (default 0: as fast as it can). The
-server runs with its defaults (one worker per core, a queue of 16 per worker);
-a client that gets 503 busy waits its Retry-After and tries again, and counts it.
-Prints the sweep round trip's p50, p95 and max, the requests, the errors (any
-answer but 200 and 503 busy, or a broken connection), the 503s, and the
-server's resident memory (VmRSS) at the start, its maximum and at the end.
+radius up to 1 mm larger. After each edit a client asks what the page asks
+(--mix page, the default): the sweep (POST /api/sweep) and with it the build
+sheet's verdict (/api/verdict, on a second connection), then the advice (/api/advice) on a connection of its own,
+which it closes unanswered when its next edit comes (the page aborts it); with
+--mix sweep, the sweep alone. It then waits THINK seconds (default 0: as fast as
+it can). The server runs with its defaults (one worker per core, a queue of 16 per
+worker); a client that gets 503 busy waits its Retry-After and tries again, and
+counts it. Prints each request's p50, p95 and max round trip, the requests, the
+errors (any answer but 200 and 503 busy, or a broken connection), the 503s, the
+advice answered and abandoned, the load average, and the server's resident memory
+(VmRSS) at the start, its maximum and at each fifth of the run.
 
 Usage: tools/bench/serve_load.py TIPPE [--clients N] [--seconds S] [--think S]
-                                      [--designs solid|printed|all]"""
+                                      [--designs solid|printed|all] [--mix page|sweep]"""
 import argparse
 import http.client
 import json
 import os
 import random
 import re
+import select
 import signal
+import socket
 import subprocess
 import sys
 import threading
@@ -33,6 +39,7 @@ ap.add_argument("--clients", type=int, default=16)
 ap.add_argument("--seconds", type=float, default=60)
 ap.add_argument("--think", type=float, default=0.0)
 ap.add_argument("--designs", choices=("solid", "printed", "all"), default="all")
+ap.add_argument("--mix", choices=("page", "sweep"), default="page")
 a = ap.parse_args()
 
 log = open("/tmp/serve_load.log", "w")
@@ -68,8 +75,58 @@ for f in sorted(os.listdir(os.path.join(repo, "designs"))):
         continue
     designs.append((f, d, printed[0] if printed else None))
 
-lat, codes, lock = [], {}, threading.Lock()
+lat = {"/api/sweep": [], "/api/verdict": []}
+codes, lock = {}, threading.Lock()
+advice = {"answered": 0, "abandoned": 0}
 stop_at = time.time() + a.seconds
+HEAD = "POST /api/advice HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nContent-Type: application/json\r\n" \
+       "Content-Length: %d\r\nConnection: close\r\n\r\n"
+
+
+def post(c, path, body):
+    """(status, seconds, connection): c is replaced when it broke."""
+    t0 = time.perf_counter()
+    try:
+        c.request("POST", path, body, {"Content-Type": "application/json",
+                                       "Host": "127.0.0.1:%d" % port})
+        r = c.getresponse()
+        r.read()
+        code, retry = r.status, float(r.getheader("Retry-After") or 1)
+    except Exception as e:  # a broken connection is an error
+        code, retry = "exception " + type(e).__name__, 1
+        c = http.client.HTTPConnection("127.0.0.1", port, timeout=60)
+    dt = time.perf_counter() - t0
+    with lock:
+        codes[code] = codes.get(code, 0) + 1
+        if code == 200:
+            lat[path].append(dt)
+    return code, retry, c
+
+
+def advice_done(pending):
+    """Whether the advice asked on pending (socket, t0) has its whole answer; its time kept."""
+    sock, _, data = pending
+    try:
+        while select.select([sock], [], [], 0)[0]:
+            b = sock.recv(65536)
+            if not b:
+                break
+            data += b
+    except OSError as e:  # a broken connection is an error
+        with lock:
+            k = "exception " + type(e).__name__
+            codes[k] = codes.get(k, 0) + 1
+        return True
+    pending[2] = data
+    head, _, body = data.partition(b"\r\n\r\n")
+    n = re.search(rb"Content-Length: (\d+)", head)
+    if not n or len(body) < int(n.group(1)):
+        return False
+    with lock:
+        advice["answered"] += 1
+        code = int(head.split()[1])
+        codes[code] = codes.get(code, 0) + 1
+    return True  # (its time is not known: it is looked at only at the next edit)
 
 
 def client(n):
@@ -80,31 +137,43 @@ def client(n):
     if i is not None and d["parts"][i]["print"] is True:
         d["parts"][i]["print"] = {}
     c = http.client.HTTPConnection("127.0.0.1", port, timeout=60)
+    cv = http.client.HTTPConnection("127.0.0.1", port, timeout=60)
+    pending = None
     while time.time() < stop_at:
         if i is not None:
             d["parts"][i]["print"]["infill"] = round(rng.uniform(0.05, 0.6), 3)
         else:
             d["radius_mm"] = round(R + rng.uniform(0, 1), 3)
         body = json.dumps({"design": d})
-        t0 = time.perf_counter()
-        try:
-            c.request("POST", "/api/sweep", body, {"Content-Type": "application/json",
-                                                   "Host": "127.0.0.1:%d" % port})
-            r = c.getresponse()
-            data = r.read()
-            code = r.status
-        except Exception as e:  # a broken connection is an error
-            code = "exception " + type(e).__name__
-            c = http.client.HTTPConnection("127.0.0.1", port, timeout=60)
-        dt = time.perf_counter() - t0
-        with lock:
-            codes[code] = codes.get(code, 0) + 1
+        if pending and not advice_done(pending):  # the page aborts it at the next edit
+            with lock:
+                advice["abandoned"] += 1
+        if pending:
+            pending[0].close()
+            pending = None
+        if a.mix == "page":  # the verdict is asked with the sweep, as the page does
+            vres = []
+            vt = threading.Thread(target=lambda: vres.append(post(cv, "/api/verdict", body)))
+            vt.start()
+        code, retry, c = post(c, "/api/sweep", body)
+        if a.mix == "page":
+            vt.join()
+            vcode, vretry, cv = vres[0]
             if code == 200:
-                lat.append(dt)
+                code, retry = vcode, vretry
+            if code == 200:
+                sock = socket.create_connection(("127.0.0.1", port))
+                sock.sendall((HEAD % (port, len(body))).encode() + body.encode())
+                pending = [sock, time.perf_counter(), b""]
         if code == 503:
-            time.sleep(float(r.getheader("Retry-After") or 1))
+            time.sleep(retry)
         elif a.think:
             time.sleep(a.think)
+    if pending:
+        if not advice_done(pending):
+            with lock:
+                advice["abandoned"] += 1
+        pending[0].close()
 
 
 rss = [rss_kib()]
@@ -119,13 +188,21 @@ for t in threads:
 srv.send_signal(signal.SIGTERM)
 srv.wait(timeout=60)
 
-lat.sort()
-q = lambda p: lat[min(len(lat) - 1, int(p * len(lat)))] * 1e3 if lat else float("nan")
+load = os.getloadavg()
 errors = sum(v for k, v in codes.items() if k not in (200, 503))
-print("%s designs (%d), clients %d, think %g s, %.0f s, %d cores: %d sweeps answered (%.1f per "
-      "second)" % (a.designs, len(designs), a.clients, a.think, a.seconds, os.cpu_count(),
-                   len(lat), len(lat) / a.seconds))
-print("sweep round trip: p50 %.1f ms, p95 %.1f ms, max %.1f ms" % (q(0.5), q(0.95), q(1.0)))
+print("%s designs (%d), clients %d, think %g s, %.0f s, %d cores, mix %s; load average %.1f, "
+      "%.1f, %.1f at the end" % (a.designs, len(designs), a.clients, a.think, a.seconds,
+                               os.cpu_count(), a.mix, *load))
+for path, v in lat.items():
+    if not v and path != "/api/sweep":
+        continue
+    v.sort()
+    q = lambda p: v[min(len(v) - 1, int(p * len(v)))] * 1e3 if v else float("nan")
+    print("%-13s %5d answered (%.1f per second): p50 %.1f ms, p95 %.1f ms, max %.1f ms" %
+          (path, len(v), len(v) / a.seconds, q(0.5), q(0.95), q(1.0)))
+if a.mix == "page":
+    print("advice: %d answered, %d abandoned at the next edit" % (advice["answered"],
+                                                                 advice["abandoned"]))
 print("answers: %s; errors %d" % (dict(sorted(codes.items(), key=str)), errors))
 print("server memory (VmRSS): start %.1f MiB, max %.1f MiB, end %.1f MiB; at each fifth of "
       "the run: %s MiB" % (rss[0] / 1024, max(rss) / 1024, rss[-1] / 1024,

@@ -16,7 +16,9 @@ const state = {
   name: '',           // the shipped design it came from, if any
   sweep: null,        // the last valid sweep
   verdict: null,      // the build sheet's verdict of that sweep's design (/api/verdict)
+  advice: null,       // its launch checks and the changes one can buy (/api/advice)
   vseq: 0,            // the latest valid sweep: a verdict for an older one is dropped
+  adviceAbort: null,  // cancels the advice asked for an older design
   pinned: null,       // {design, sweep, title}
   materials: [],
   seq: 0,             // the latest request sent: older answers are dropped
@@ -25,10 +27,11 @@ const state = {
 
 // ------------------------------------------------------------------ API
 
-async function api(path, body) {
+async function api(path, body, signal) {
   const headers = { 'Content-Type': 'application/json' };
   if (token) headers['X-Tippe-Token'] = token;
   const init = body === undefined ? { headers } : { method: 'POST', headers, body: JSON.stringify(body) };
+  if (signal) init.signal = signal;
   const r = await fetch(path, init);
   const type = r.headers.get('Content-Type') || '';
   if (type.startsWith('application/json')) return { ok: r.ok, status: r.status, json: await r.json() };
@@ -219,7 +222,12 @@ async function refresh() {
   const seq = ++state.seq;
   $('busy').hidden = false;
   let r;
-  try { r = await api('/api/sweep', { design: state.design }); }
+  // the verdict is asked with the sweep, not after it: the headline comes as soon as the
+  // zones (each costs a sweep; a design the loader refuses answers both at once)
+  // (a copy: the form edits state.design in place, and the advice is asked later)
+  const design = JSON.parse(JSON.stringify(state.design));
+  const verdict = api('/api/verdict', { design }).catch((e) => e);
+  try { r = await api('/api/sweep', { design }); }
   catch (e) { if (seq === state.seq) { $('busy').hidden = true; showFieldError(null, 'the server does not answer: ' + e.message); } return; }
   if (seq !== state.seq) return; // a newer edit is on its way
   $('busy').hidden = true;
@@ -227,40 +235,62 @@ async function refresh() {
   showFieldError(null, null);
   state.sweep = r.json;
   state.verdict = null;
+  state.advice = null;
+  if (state.adviceAbort) state.adviceAbort.abort(); // its design is no longer on screen
+  state.adviceAbort = null;
   drawAll();
   if (state.z2 !== null) evalAt(state.z2);
-  sheetVerdict(++state.vseq, state.design);
+  sheetVerdict(++state.vseq, design, verdict);
 }
 
 // The build sheet's verdict of a valid design: "3-in-1" only where each behaviour can be
-// set by hand (tippe build's rule), its reason and the changes one can buy. A bad edit
-// after it does not drop it: it belongs to the last valid design, still on screen.
-async function sheetVerdict(vseq, design) {
-  let r;
-  try { r = await api('/api/verdict', { design }); }
-  catch (e) { if (vseq === state.vseq) $('verdict-text').textContent = 'the build sheet\'s verdict: the server does not answer'; return; }
+// set by hand (tippe build's rule) and its reason, as cheap as the sweep; then what the
+// whole sheet adds (its launch checks, the changes one can buy: /api/advice, costly,
+// kept by the server per design), asked once the verdict is shown and cancelled by the
+// next edit. A bad edit after them does not drop them: they belong to the last valid
+// design, still on screen.
+async function sheetVerdict(vseq, design, asked) {
+  let r = await asked;
+  if (r instanceof Error) { if (vseq === state.vseq) $('verdict-text').textContent = 'the build sheet\'s verdict: the server does not answer'; return; }
   if (vseq !== state.vseq) return;
   if (!r.ok) { $('verdict-text').textContent = 'the build sheet\'s verdict: ' + ((r.json && r.json.error) || ('HTTP ' + r.status)); return; }
   state.verdict = r.json;
   drawVerdict();
+  const ctl = new AbortController();
+  state.adviceAbort = ctl;
+  try { r = await api('/api/advice', { design }, ctl.signal); }
+  catch (e) { if (vseq === state.vseq && !ctl.signal.aborted) { state.advice = { error: 'the server does not answer' }; drawVerdict(); } return; }
+  if (vseq !== state.vseq) return;
+  state.adviceAbort = null;
+  state.advice = r.ok ? r.json : { error: (r.json && r.json.error) || ('HTTP ' + r.status) };
+  drawVerdict();
 }
 
 function drawVerdict() {
-  const s = state.sweep, b = state.verdict, v = $('verdict'), t = $('verdict-text');
+  const b = state.verdict, a = state.advice, v = $('verdict'), t = $('verdict-text');
   t.textContent = '';
-  if (!b) { // the sweep's reachability alone, until the sheet's verdict arrives
-    v.textContent = '3-in-1 on paper: ' + (s.three_in_one ? 'yes' : 'no');
-    v.className = 'verdict ' + (s.three_in_one ? 'paper' : 'no');
-    if (s.three_in_one) t.textContent = 'checking whether each behaviour can be set by hand…';
+  if (!b) { // a spinner until this design's verdict arrives: never another verdict
+    v.textContent = '…';
+    v.className = 'verdict pending';
+    v.setAttribute('aria-busy', 'true');
     return;
   }
+  v.removeAttribute('aria-busy');
   v.textContent = b.verdict;
   v.className = 'verdict ' + (b.settable ? 'yes' : b.three_in_one ? 'paper' : 'no');
-  t.appendChild(document.createTextNode(b.text));
-  if (b.advice.length) {
+  // the sheet's text adds what its launch checks found at the poles; its verdict is this one
+  const whole = a && !a.error && a.verdict === b.verdict;
+  t.appendChild(document.createTextNode(whole ? a.text : b.text));
+  if (!a) {
+    const w = Object.assign(document.createElement('span'), { className: 'pending-note',
+      textContent: b.settable ? ' checking the launches…' : ' finding changes one can buy…' });
+    t.appendChild(w);
+  } else if (a.error) {
+    t.appendChild(document.createTextNode(' (the changes one can buy: ' + a.error + ')'));
+  } else if (whole && a.advice.length) {
     t.appendChild(document.createTextNode(' Changes one can buy or set:'));
     const ul = document.createElement('ul');
-    for (const a of b.advice.slice(0, 3)) ul.appendChild(Object.assign(document.createElement('li'), { textContent: a }));
+    for (const x of a.advice.slice(0, 3)) ul.appendChild(Object.assign(document.createElement('li'), { textContent: x }));
     t.appendChild(ul);
   }
 }

@@ -1,0 +1,139 @@
+#!/usr/bin/env python3
+"""What tippe serve's requests cost, measured in the server's own CPU time (from
+/proc: what the request computed, whatever else runs on the machine): the verdict
+the page asks after every edit costs at most twice the sweep (issue 36: it cost 40
+to 80 times, the whole build sheet with its launches and advice); the advice is
+kept per design text (asked again, it costs nothing); and long jobs (builds,
+films) do not hold the workers that answer sweeps.
+
+Usage: serve_cost.py TIPPE. Prints 'N passed, M failed'."""
+import json
+import os
+import sys
+import threading
+import time
+
+from serve_lib import Server, REPO
+
+tippe = sys.argv[1]
+passed, failed = 0, 0
+
+
+def check(ok, what):
+    global passed, failed
+    if ok:
+        passed += 1
+        print("ok   " + what)
+    else:
+        failed += 1
+        print("FAIL " + what)
+
+
+def cpu_s(pid):
+    """User and system CPU time of the process so far (clock ticks of 10 ms)."""
+    f = open("/proc/%d/stat" % pid).read().rsplit(")", 1)[1].split()
+    return (int(f[11]) + int(f[12])) / os.sysconf("SC_CLK_TCK")
+
+
+PRINTED = ["m12-setscrew-printed", "shell-rod-nylon-printed", "drilled-ball-blind-printed"]
+
+with Server(tippe, "--workers", "1") as srv:
+    pid = srv.proc.pid
+    cost = {}
+    for ep in ("/api/sweep", "/api/verdict"):
+        c0 = cpu_s(pid)
+        for name in PRINTED:
+            design = json.load(open(os.path.join(REPO, "designs", name + ".json")))
+            for i in range(4):  # four edits: a new design text each
+                design["notes"] = "edit %d of %s" % (i, ep)
+                st, _, o = srv.post(ep, {"design": design})
+                assert st == 200, o
+        cost[ep] = cpu_s(pid) - c0
+    # 12 requests of ~20 ms each: ~0.2 s, 20 ticks; 2x leaves room for the ticks' rounding
+    check(cost["/api/verdict"] <= 2 * cost["/api/sweep"],
+          "the verdict after an edit costs %.3f s of CPU, the sweep %.3f s (12 edits of 3 "
+          "printed designs; at most twice)" % (cost["/api/verdict"], cost["/api/sweep"]))
+
+    # the advice: the whole sheet, once per design text
+    design = json.load(open(os.path.join(REPO, "designs", "m12-setscrew-printed.json")))
+    design["notes"] = "advice"
+    c0 = cpu_s(pid)
+    st, _, first = srv.post("/api/advice", {"design": design})
+    c1 = cpu_s(pid)
+    st2, _, again = srv.post("/api/advice", {"design": design})
+    c2 = cpu_s(pid)
+    check(st == 200 and st2 == 200 and first == again and c1 - c0 > 0.2 and c2 - c1 < 0.05,
+          "the advice costs %.2f s once, %.3f s asked again for the same design (kept)" %
+          (c1 - c0, c2 - c1))
+
+
+def timed(srv, path, body, **kw):
+    t = time.time()
+    st, _, o = srv.post(path, body, **kw)
+    return st, time.time() - t, o
+
+
+SWEEP = {"design": "m12-setscrew-printed"}
+# the longest request of the shared lane: a patch-law check of the printed M12 with its
+# radius sensitivity (6 s of one core here)
+LONG = {"design": "m12-setscrew-printed", "z2_mm": 10, "friction": "patch", "spin_rev_s": 20}
+
+# ---- three builds and a film at once: they run on their own lane, one at a time,
+# and never hold the workers that answer the sweeps (issue 36: a 0.13 s eval waited 30 s)
+with Server(tippe) as srv:
+    normal = sorted(timed(srv, "/api/sweep", SWEEP)[1] for _ in range(5))[2]
+    jobs = [("/api/build", {"design": d}) for d in
+            ("m12-setscrew-printed", "shell-rod-nylon-printed", "shell-band-printed")]
+    jobs.append(("/api/animate", {"design": "m12-setscrew", "z2_mm": 10, "spin_rev_s": 20}))
+    done = []
+    threads = [threading.Thread(target=lambda p=p, b=b: done.append(
+        srv.post(p, b, raw=True, timeout=120)[0])) for p, b in jobs]
+    for t in threads:
+        t.start()
+    time.sleep(0.5)
+    during = [timed(srv, "/api/sweep", SWEEP) for _ in range(5)]
+    for t in threads:
+        t.join()
+    slow = max(x[1] for x in during)
+    check(all(x[0] == 200 for x in during) and slow <= 3 * normal + 0.2,
+          "during three builds and a film every sweep answers within %.3f s (5 one after "
+          "another; alone %.3f s; at most 3 times and 0.2 s, on 2 shared cores)" % (slow, normal))
+    check(sorted(done) == [200] * 4, "the builds and the film are made (%s)" % sorted(done))
+
+# ---- the advice (the whole sheet, 1.4 s here) has a lane of its own: it never holds the
+# one worker that answers the sweeps
+with Server(tippe, "--workers", "1") as srv:
+    design = json.load(open(os.path.join(REPO, "designs", "shell-rod-nylon-printed.json")))
+    design["notes"] = "a new text: nothing kept"
+    th = threading.Thread(target=lambda: srv.post("/api/advice", {"design": design}))
+    th.start()
+    time.sleep(0.2)
+    st2, t_sweep, _ = timed(srv, "/api/sweep", SWEEP)
+    th.join()
+    check(st2 == 200 and t_sweep < 0.5,
+          "an advice being computed: the one worker answers a sweep in %.2f s" % t_sweep)
+
+# ---- a request past its budget frees its worker at once, not when its work would end
+with Server(tippe, "--workers", "1", "--budget", "1") as srv:
+    st, t_long, _ = timed(srv, "/api/check", LONG)
+    st2, t_sweep, _ = timed(srv, "/api/sweep", SWEEP)
+    check(st == 503 and st2 == 200 and t_sweep < 1.0,
+          "a 6 s check over a 1 s budget: 503 at %.2f s, and the one worker answers a sweep "
+          "%.2f s later (cancelled, not finished)" % (t_long, t_sweep))
+
+# ---- so does a request whose client has gone (a page that moved on to a newer edit)
+with Server(tippe, "--workers", "1") as srv:
+    import socket
+    body = json.dumps(LONG).encode()
+    c = socket.create_connection((srv.host, srv.port))
+    c.sendall(("POST /api/check HTTP/1.1\r\nHost: %s:%d\r\nContent-Type: application/json\r\n"
+               "Content-Length: %d\r\n\r\n" % (srv.host, srv.port, len(body))).encode() + body)
+    time.sleep(0.5)
+    c.close()
+    st2, t_sweep, _ = timed(srv, "/api/sweep", SWEEP)
+    check(st2 == 200 and t_sweep < 1.0,
+          "a 6 s check whose client left after 0.5 s: the one worker answers a sweep %.2f s "
+          "later (cancelled)" % t_sweep)
+
+print("%d passed, %d failed" % (passed, failed))
+sys.exit(1 if failed else 0)
