@@ -113,8 +113,6 @@ static void rim_geometry(const dyn_ctx *c, contact *o, const double wk[3])
     const double *k = o->k;
     const double u[3] = {s * k[0], s * k[1], s * k[2]};
     const double ud[3] = {s * wk[0], s * wk[1], s * wk[2]}; /* du/dt = omega x u */
-    const double S = hypot(u[0], u[1]);
-    double W[3] = {0.0, 0.0, 0.0}, Wd[3] = {0.0, 0.0, 0.0};
     o->ring = c->face;
     if (c->face) {
         /* the face's sphere (RIM_FACE_SIN): its lowest point, as the paper's sphere's */
@@ -128,17 +126,13 @@ static void rim_geometry(const dyn_ctx *c, contact *o, const double wk[3])
         cross3(o->w, qd, o->wqd);
         return;
     }
-    {
-        const double hx = u[0] / S, hy = u[1] / S;
-        const double Sd = hx * ud[0] + hy * ud[1];
-        const double hdx = (ud[0] - hx * Sd) / S, hdy = (ud[1] - hy * Sd) / S;
-        W[0] = u[2] * hx;
-        W[1] = u[2] * hy;
-        W[2] = -S;
-        Wd[0] = ud[2] * hx + u[2] * hdx;
-        Wd[1] = ud[2] * hy + u[2] * hdy;
-        Wd[2] = -Sd;
-    }
+    /* off the face S >= its edge's sine (> 0): the tilt's direction u_h / S is defined */
+    const double S = hypot(u[0], u[1]);
+    const double hx = u[0] / S, hy = u[1] / S;
+    const double Sd = hx * ud[0] + hy * ud[1];
+    const double hdx = (ud[0] - hx * Sd) / S, hdy = (ud[1] - hy * Sd) / S;
+    const double W[3] = {u[2] * hx, u[2] * hy, -S};
+    const double Wd[3] = {ud[2] * hx + u[2] * hdx, ud[2] * hy + u[2] * hdy, -Sd};
     double qd[3];
     for (int i = 0; i < 3; i++) {
         o->q[i] = c->eps * k[i] + Rc * u[i] + r * W[i];
