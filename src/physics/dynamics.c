@@ -132,45 +132,6 @@ static void ctx_init(dyn_ctx *c, const tippe_dynamics_model *model, size_t dim)
     c->min_stage_Rn = INFINITY;
 }
 
-/* The outline the table meets (issue 35): the sphere cut flat at the open poles.
- * The viscous law's saturation on a rim is the model's Coulomb coefficient, or the
- * tabletop's default where the model gives none (rim_viscous_mu). */
-static void ctx_set_rims(dyn_ctx *c, const tippe_dynamics_model *model,
-                         const tippe_dynamics_options *opt)
-{
-    if (opt->sphere_contact_only)
-        return;
-    for (int p = 0; p < 2; p++) {
-        const double a = model->top.rim_half_angle_rad[p];
-        if (!(a > 0.0))
-            continue;
-        c->has_rims = 1;
-        c->rim_alpha[p] = a;
-        c->rim_cos[p] = cos(a);
-        c->rim_Rcos[p] = c->R * cos(a);
-        c->rim_r[p] = c->R * sin(a);
-        c->rim_face_sin[p] = fmin(RIM_FACE_SIN, 0.5 * sin(a));
-        c->rim_rho[p] = c->rim_r[p] / c->rim_face_sin[p];
-        c->rim_D[p] = c->rim_Rcos[p] - sqrt((c->rim_rho[p] - c->rim_r[p]) *
-                                            (c->rim_rho[p] + c->rim_r[p]));
-    }
-    c->rim_mu_c = model->mu_c > 0.0 ? model->mu_c : TIPPE_LAUNCH_DEFAULT_MU_C;
-    c->min_stage_rim = INFINITY;
-}
-
-/* The height of the centre of mass above the table at tilt theta, m: R cos d - eps
- * cos theta on the hull, d the tilt left to the rim's polar angle where the contact
- * is on a rim (R cos(alpha - theta) on pole [0]'s), 0 on the sphere (eq 3.10). */
-static double hull_height(const dyn_ctx *c, double theta)
-{
-    double d = 0.0;
-    if (c->has_rims && theta < c->rim_alpha[0])
-        d = c->rim_alpha[0] - theta;
-    else if (c->has_rims && M_PI - theta < c->rim_alpha[1])
-        d = c->rim_alpha[1] - (M_PI - theta);
-    return c->R * cos(d) - c->eps * cos(theta);
-}
-
 /* The regular state of a launch given in the paper's variables (eq 3.4),
  * with phi = psi = 0: k = (sin theta, 0, cos theta). */
 static void initial_state(const dyn_ctx *c, const tippe_dynamics_initial *ic, double *y)
@@ -229,168 +190,6 @@ double tippe_dynamics_launch_slip(const tippe_top *top, const tippe_dynamics_ini
     return tippe_dynamics_evaluate(&m, ic, &s, &e) == TIPPE_OK ? s.slip_speed : NAN;
 }
 
-/* The events located by bisection: lift-off (Rn = 0) and, while rolling, the end
- * of sticking (|F| = mu_c Rn, the edge of Coulomb's friction cone). */
-enum { EVENT_LIFT_OFF = 0, EVENT_SLIP = 1, EVENT_RIM = 2 };
-
-/* A switch between the sphere and a rim is taken once the regime's rim_stay is
- * below -this (cos alpha units, ~1e-12 rad): the bisection leaves the state within
- * 1e-13 of a step of the crossing, where |rim_stay| is ~1e-16, so the new regime
- * does not see its own start as a crossing back. */
-#define RIM_EVENT_TOL 1e-12
-
-static double event_value(const dyn_ctx *c, const contact *o, int event)
-{
-    if (event == EVENT_RIM)
-        return rim_stay(c, o->k) + RIM_EVENT_TOL;
-    return event == EVENT_SLIP ? c->mu_c * o->Rn - hypot(o->F[0], o->F[1]) : o->Rn;
-}
-
-/* The event's function (Rn, or mu_c Rn - |F|) after a trial step of length h from
- * (t0, y0) with a high-order one-step method: what the bisection brackets. */
-static int Rn_after(dyn_ctx *c, gsl_odeiv2_step *bs, const gsl_odeiv2_system *sys, double t0,
-                    const double *y0, double h, int event, double *y, double *Rn)
-{
-    double yerr[DIM_TRAJECTORY];
-    memcpy(y, y0, c->dim * sizeof *y);
-    if (h > 0.0) {
-        gsl_odeiv2_step_reset(bs);
-        int s = gsl_odeiv2_step_apply(bs, t0, h, y, yerr, NULL, NULL, sys);
-        if (s != GSL_SUCCESS)
-            return s;
-    }
-    contact o;
-    if (tippe_dynamics_contact_eval(c, y, &o))
-        return GSL_EBADFUNC;
-    *Rn = event_value(c, &o, event);
-    return GSL_SUCCESS;
-}
-
-/* Finds where Rn crosses 0 inside the accepted step (t0, y0) -> t0 + H. The
- * crossing is bracketed either by Rn(H) < 0 or, when only an intermediate
- * stage saw Rn < 0, by scanning 16 sub-steps; it is then bisected to 1e-13 H
- * with an rk8pd step from y0, whatever the main stepper (a single rk8pd step no
- * longer than an accepted step is at least as accurate). On success y holds
- * the state with Rn >= 0 at the crossing and *h_cross its offset from t0.
- * Returns 1 if a crossing was found, 0 if none, < 0 on failure. */
-static int locate_lift_off(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0, const double *y0,
-                           double H, int end_negative, int event, double *y, double *h_cross)
-{
-    gsl_odeiv2_step *bs = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, c->dim);
-    if (!bs)
-        return -1;
-    double ytmp[DIM_TRAJECTORY], Rn = 0.0, lo = 0.0, hi = H;
-    int found = end_negative, status = 0;
-    if (!found) {
-        const int n_scan = 16;
-        for (int i = 1; i <= n_scan; i++) {
-            double hh = H * i / n_scan;
-            if (Rn_after(c, bs, sys, t0, y0, hh, event, ytmp, &Rn) != GSL_SUCCESS) {
-                status = -1;
-                break;
-            }
-            if (Rn < 0.0) {
-                lo = H * (i - 1) / n_scan;
-                hi = hh;
-                found = 1;
-                break;
-            }
-        }
-    }
-    if (found && status == 0) {
-        for (int it = 0; it < 200 && hi - lo > 1e-13 * H; it++) {
-            double mid = 0.5 * (lo + hi);
-            if (Rn_after(c, bs, sys, t0, y0, mid, event, ytmp, &Rn) != GSL_SUCCESS) {
-                status = -1;
-                break;
-            }
-            if (Rn < 0.0)
-                hi = mid;
-            else
-                lo = mid;
-        }
-        if (status == 0 && Rn_after(c, bs, sys, t0, y0, lo, event, y, &Rn) != GSL_SUCCESS)
-            status = -1;
-        *h_cross = lo;
-    }
-    gsl_odeiv2_step_free(bs);
-    return status < 0 ? status : found;
-}
-
-/* Where rim_stay crosses -RIM_EVENT_TOL inside the accepted step (t0, y0) -> t0 + H:
- * the same brackets as locate_lift_off (the end, or 4 sub-steps when only a stage
- * saw the crossing), closed by the Illinois variant of regula falsi (Dahlquist and
- * Bjorck 1974, sec 6.2.2) to 1e-13 H: the event function is smooth along the step
- * (each regime's equations extend past the crossing), so it converges in ~6 rk8pd
- * steps where bisection takes ~45; a top wobbling on its rim's edge crosses it
- * hundreds of times (issue 35). Returns 1 with y at the crossing (on the side not
- * yet crossed, within the tolerance) and *h_cross its offset, 0 if none, < 0 on
- * failure. */
-static int locate_rim(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0, const double *y0,
-                      double H, int end_negative, double *y, double *h_cross)
-{
-    gsl_odeiv2_step *bs = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, c->dim);
-    if (!bs)
-        return -1;
-    double ytmp[DIM_TRAJECTORY], f = 0.0, lo = 0.0, hi = H, flo = 0.0, fhi = 0.0;
-    int found = 0, status = 0;
-    if (Rn_after(c, bs, sys, t0, y0, 0.0, EVENT_RIM, ytmp, &flo) != GSL_SUCCESS)
-        status = -1;
-    if (!status && end_negative &&
-        Rn_after(c, bs, sys, t0, y0, H, EVENT_RIM, ytmp, &fhi) != GSL_SUCCESS)
-        status = -1;
-    found = !status && end_negative && fhi < 0.0;
-    for (int i = 1; !status && !found && i <= 4; i++) {
-        const double hh = H * i / 4;
-        if (Rn_after(c, bs, sys, t0, y0, hh, EVENT_RIM, ytmp, &f) != GSL_SUCCESS) {
-            status = -1;
-            break;
-        }
-        if (f < 0.0) {
-            hi = hh;
-            fhi = f;
-            found = 1;
-        } else {
-            lo = hh;
-            flo = f;
-        }
-    }
-    if (found && !(flo >= 0.0))
-        found = 0; /* already past at the step's start: nothing to locate */
-    int side = 0;  /* Illinois: halve the weight of an end kept twice */
-    for (int it = 0; found && !status && it < 100 && hi - lo > 1e-13 * H; it++) {
-        double mid = (lo * fhi - hi * flo) / (fhi - flo);
-        if (!(mid > lo && mid < hi))
-            mid = 0.5 * (lo + hi);
-        if (Rn_after(c, bs, sys, t0, y0, mid, EVENT_RIM, ytmp, &f) != GSL_SUCCESS) {
-            status = -1;
-            break;
-        }
-        if (f < 0.0) {
-            hi = mid;
-            fhi = f;
-            if (side == -1)
-                flo *= 0.5;
-            side = -1;
-        } else {
-            lo = mid;
-            flo = f;
-            if (side == 1)
-                fhi *= 0.5;
-            side = 1;
-        }
-        if (f == 0.0)
-            break;
-    }
-    if (found && !status) {
-        if (Rn_after(c, bs, sys, t0, y0, lo, EVENT_RIM, y, &f) != GSL_SUCCESS)
-            status = -1;
-        *h_cross = lo;
-    }
-    gsl_odeiv2_step_free(bs);
-    return status < 0 ? status : found;
-}
-
 /* ---- the run, in named steps -------------------------------------------------- */
 
 typedef struct {
@@ -437,7 +236,7 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
     rs->traj = opt->level == TIPPE_LEVEL_TRAJECTORY;
     dyn_ctx *c = &rs->c;
     ctx_init(c, model, rs->traj ? DIM_TRAJECTORY : DIM_VERDICT);
-    ctx_set_rims(c, model, opt);
+    tippe_dynamics_set_rims(c, model, opt);
     res->state_dim = (int)c->dim;
     initial_state(c, ic, rs->y);
     rs->model = model;
@@ -702,7 +501,7 @@ static void run_try_stick(run_state *rs, tippe_dynamics_result *res)
     /* inside the cone by STICK_MARGIN mu_c m g: where the contact just broke loose (the
      * force on the cone's edge) it slides on rather than sticking again at once */
     if (tippe_dynamics_contact_eval(c, rs->y, &o) || !(o.Rn > 0.0) ||
-        !(event_value(c, &o, EVENT_SLIP) > STICK_MARGIN * c->mu_c * c->m * c->g)) {
+        !(tippe_dynamics_event_value(c, &o, EVENT_SLIP) > STICK_MARGIN * c->mu_c * c->m * c->g)) {
         c->stick = 0; /* rolling needs more than the cone gives: it keeps sliding */
         return;
     }
@@ -753,7 +552,7 @@ static int run_try_rolling(run_state *rs, tippe_dynamics_result *res)
         rs->roll_seen_max = 1;
     rs->roll_prev_thd = s->theta_dot;
     if (rs->roll_phase == 2) {
-        const double g = fmin(event_value(c, &rs->ct, EVENT_SLIP), c->min_stage_stick);
+        const double g = fmin(tippe_dynamics_event_value(c, &rs->ct, EVENT_SLIP), c->min_stage_stick);
         rs->roll_gmin = fmin(rs->roll_gmin, g);
         rs->roll_Rn_min = fmin(rs->roll_Rn_min, fmin(s->Rn, c->min_stage_Rn));
         rs->roll_dtheta = fmax(rs->roll_dtheta, fabs(s->theta - rs->theta_prev_step));
@@ -810,7 +609,7 @@ static int run_rim_event(run_state *rs, tippe_dynamics_result *res, double t_ful
         return 0;
     double hc = 0.0, ycross[DIM_TRAJECTORY];
     const double H = rs->t - rs->t_prev;
-    int f = locate_rim(c, &rs->sys, rs->t_prev, rs->y_prev, H, end < -RIM_EVENT_TOL, ycross, &hc);
+    int f = tippe_dynamics_locate_rim(c, &rs->sys, rs->t_prev, rs->y_prev, H, end < -RIM_EVENT_TOL, ycross, &hc);
     if (f < 0)
         return f;
     if (f == 0 && !(end < -RIM_EVENT_TOL))
@@ -929,12 +728,12 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
     if (was_stuck)
         res->rolling_time_s += rs->t - rs->t_prev;
     int lost = 0;
-    const double stick_end = was_stuck ? event_value(c, &rs->ct, EVENT_SLIP) : INFINITY;
+    const double stick_end = was_stuck ? tippe_dynamics_event_value(c, &rs->ct, EVENT_SLIP) : INFINITY;
     if (was_stuck && (stick_end < 0.0 || c->min_stage_stick < 0.0)) {
         /* The rolling force left the friction cone in this step (its edge comes
          * before Rn = 0): find where, and slide from there. */
         double hc = 0.0, ycross[DIM_TRAJECTORY];
-        int f = locate_lift_off(c, &rs->sys, rs->t_prev, rs->y_prev, rs->t - rs->t_prev,
+        int f = tippe_dynamics_locate_lift_off(c, &rs->sys, rs->t_prev, rs->y_prev, rs->t - rs->t_prev,
                                 stick_end < 0.0, EVENT_SLIP, ycross, &hc);
         if (f < 0)
             return -tippe_error_set(err, TIPPE_ECOMPUTE,
@@ -955,7 +754,7 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
     } else if (rs->ct.Rn < 0.0 || c->min_stage_Rn < 0.0) {
         /* Never accept a state with Rn < 0: find where it reached 0. */
         double hc = 0.0, ycross[DIM_TRAJECTORY];
-        int f = locate_lift_off(c, &rs->sys, rs->t_prev, rs->y_prev, rs->t - rs->t_prev,
+        int f = tippe_dynamics_locate_lift_off(c, &rs->sys, rs->t_prev, rs->y_prev, rs->t - rs->t_prev,
                                 rs->ct.Rn < 0.0, EVENT_LIFT_OFF, ycross, &hc);
         if (f < 0)
             return -tippe_error_set(err, TIPPE_ECOMPUTE,
@@ -1029,10 +828,10 @@ static int run_try_energy_cone(run_state *rs, tippe_dynamics_result *res)
     const double E = rs->smp.E + margin, mg = c->m * c->g;
     double lo = NAN, hi = NAN;
     tippe_verdict verdict;
-    if (E < mg * hull_height(c, PATCH_POLE_RAD)) {
+    if (E < mg * tippe_dynamics_hull_height(c, PATCH_POLE_RAD)) {
         verdict = TIPPE_VERDICT_NO_TIP;
         lo = 0.0;
-        if (!(c->rim_alpha[0] > 0.0) || E >= mg * hull_height(c, c->rim_alpha[0])) {
+        if (!(c->rim_alpha[0] > 0.0) || E >= mg * tippe_dynamics_hull_height(c, c->rim_alpha[0])) {
             /* on the sphere: m g (R - eps cos theta_hi) = E */
             const double cos_hi = (c->R - E / mg) / c->eps;
             hi = cos_hi >= 1.0 ? 0.0 : acos(cos_hi);
@@ -1040,7 +839,7 @@ static int run_try_energy_cone(run_state *rs, tippe_dynamics_result *res)
             double a = 0.0, b = c->rim_alpha[0];
             for (int it = 0; it < 100 && b - a > 1e-15; it++) {
                 const double mid = 0.5 * (a + b);
-                if (mg * hull_height(c, mid) > E)
+                if (mg * tippe_dynamics_hull_height(c, mid) > E)
                     b = mid;
                 else
                     a = mid;
@@ -1050,13 +849,13 @@ static int run_try_energy_cone(run_state *rs, tippe_dynamics_result *res)
     } else if (c->rim_alpha[1] > 0.0) {
         const double s1 = sin(c->rim_alpha[1]), c1 = cos(c->rim_alpha[1]);
         const double crest = M_PI - atan2(c->R * s1, c->R * c1 + c->eps);
-        if (!(rs->smp.theta > crest && E < mg * hull_height(c, crest)))
+        if (!(rs->smp.theta > crest && E < mg * tippe_dynamics_hull_height(c, crest)))
             return 0;
         verdict = TIPPE_VERDICT_TIP;
         double a = crest, b = M_PI; /* h falls on [crest, pi]: where it meets E */
         for (int it = 0; it < 100 && b - a > 1e-15; it++) {
             const double mid = 0.5 * (a + b);
-            if (mg * hull_height(c, mid) > E)
+            if (mg * tippe_dynamics_hull_height(c, mid) > E)
                 a = mid;
             else
                 b = mid;

@@ -154,6 +154,28 @@ int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3]);
 void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3],
                                 double out[3]);
 
+/* The events located by bisection: lift-off (Rn = 0) and, while rolling, the end
+ * of sticking (|F| = mu_c Rn, the edge of Coulomb's friction cone). */
+enum { EVENT_LIFT_OFF = 0, EVENT_SLIP = 1, EVENT_RIM = 2 };
+
+/* A switch between the sphere and a rim is taken once the regime's rim_stay is
+ * below -this (cos alpha units, ~1e-12 rad): the bisection leaves the state within
+ * 1e-13 of a step of the crossing, where |rim_stay| is ~1e-16, so the new regime
+ * does not see its own start as a crossing back. */
+#define RIM_EVENT_TOL 1e-12
+
+/* dynamics_rim.c */
+void tippe_dynamics_set_rims(dyn_ctx *c, const tippe_dynamics_model *model,
+                             const tippe_dynamics_options *opt);
+double tippe_dynamics_hull_height(const dyn_ctx *c, double theta);
+double tippe_dynamics_event_value(const dyn_ctx *c, const contact *o, int event);
+int tippe_dynamics_locate_lift_off(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0,
+                                   const double *y0, double H, int end_negative, int event,
+                                   double *y, double *h_cross);
+int tippe_dynamics_locate_rim(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0,
+                              const double *y0, double H, int end_negative, double *y,
+                              double *h_cross);
+
 /* dynamics_model.c */
 const gsl_odeiv2_step_type *tippe_dynamics_stepper_type(const char *name);
 
