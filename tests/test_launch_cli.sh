@@ -278,11 +278,24 @@ rm -f "$tmp"/check* "$tmp"/sim*
 "$tippe" check designs/m12-setscrew.json --z2 10 --friction patch --table glass --t-end 5 \
     >"$tmp/pc.txt" 2>&1
 check "check --friction patch: not proved" grep -q "observed at t = 5 s, NOT proved" "$tmp/pc.txt"
-check "check --friction patch: msbdf" grep -q "msbdf for the stiff patch law" "$tmp/pc.txt"
+# issue 38: the creep reduced, the presets' rk8pd runs; the full law (--creep-cap 0) on msbdf
+check "check --friction patch: rk8pd, the creep reduced" \
+    grep -q "rk8pd, rtol 1e-09" "$tmp/pc.txt"
+check "check --friction patch: the model says the creep is reduced" \
+    grep -q "creep reduced above 20 x the motion's rate" "$tmp/pc.txt"
 "$tippe" check designs/m12-setscrew.json --z2 10 --friction patch --t-end 5 \
-    --no-radius-sensitivity --json >"$tmp/pcj.json"
-check "check --friction patch --json: the stepper that ran (msbdf), as the text says" \
+    --no-radius-sensitivity --creep-cap 0 >"$tmp/pc0.txt" 2>&1
+check "check --friction patch --creep-cap 0: msbdf" grep -q "msbdf for the stiff patch law" "$tmp/pc0.txt"
+"$tippe" check designs/m12-setscrew.json --z2 10 --friction patch --t-end 5 \
+    --no-radius-sensitivity --creep-cap 0 --json >"$tmp/pcj.json"
+check "check --creep-cap 0 --json: the stepper that ran (msbdf), as the text says" \
     python3 -c "import json, sys; assert json.load(open(sys.argv[1]))['options']['accuracy']['stepper'] == 'msbdf'" "$tmp/pcj.json"
+"$tippe" check designs/m12-setscrew.json --z2 10 --friction patch --t-end 5 \
+    --no-radius-sensitivity --json >"$tmp/pcr.json"
+check "check --friction patch --json: rk8pd, creep_cap 20 and the energy the reduction moved" \
+    python3 -c "import json, sys; o = json.load(open(sys.argv[1])); a = o['options']; assert a['accuracy']['stepper'] == 'rk8pd' and a['friction']['creep_cap'] == 20 and 0 <= o['creep_energy_rel'] < 1e-3, o['creep_energy_rel']" "$tmp/pcr.json"
+expect_fail "--creep-cap belongs to the patch law" 2 "--creep-cap belongs to the patch law" -- \
+    check designs/m12-setscrew.json --z2 10 --friction viscous --creep-cap 10
 "$tippe" launch designs/m12-setscrew.json --z2 10 -n 2 --seed 1 --friction patch --patch-mm 0.2 \
     --t-end 3 --json >"$tmp/pl.json" 2>/dev/null
 check "launch --friction patch --json" json_ok "$tmp/pl.json" \

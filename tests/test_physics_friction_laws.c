@@ -28,10 +28,13 @@ static void test_table(void)
         CHECK(tippe_friction_law_parse(t->name) == (int)t->law, "%s parses back", t->name);
         CHECK(tippe_friction_law_find(t->name) == t, "%s found", t->name);
         CHECK(tippe_friction_law_type_of(t->law) == t, "%s by its enum", t->name);
-        const char *used = tippe_dynamics_stepper_used(t->law, "rk8pd");
+        const char *used = tippe_dynamics_stepper_used(t->law, 0.0, "rk8pd");
         CHECK(t->stiff_stepper ? !strcmp(used, t->stiff_stepper) : !strcmp(used, "rk8pd"),
               "%s runs %s for rk8pd, its entry says %s", t->name, used,
               t->stiff_stepper ? t->stiff_stepper : "rk8pd");
+        /* with its creep reduced (the front ends' default) the explicit stepper serves */
+        used = tippe_dynamics_stepper_used(t->law, TIPPE_PATCH_CREEP_CAP, "rk8pd");
+        CHECK(!strcmp(used, "rk8pd"), "%s with a creep cap runs %s for rk8pd", t->name, used);
         CHECK(t->text && t->word && t->describe && t->json, "%s: every entry filled", t->name);
     }
     CHECK(n == TIPPE_N_FRICTION_LAWS, "%d laws listed", n);

@@ -313,6 +313,13 @@ int tippe_friction_law_parse(const char *name);
  * docs/dynamics.md measures the reported times against smaller v_s. */
 #define TIPPE_COULOMB_SLIP_SCALE_M_S 1e-5
 
+/* The patch law's creep reduction (docs/dynamics.md, "The creep reduced"): where the
+ * creep would relax the slip faster than this many times the motion's rate
+ * (|omega| + sqrt(g/R)), it is slowed to that rate, so that the explicit rk8pd
+ * serves; the slip's lag is then off by O(1/cap). The front ends' default; a model's
+ * creep_cap of 0 integrates the full law. */
+#define TIPPE_PATCH_CREEP_CAP 20.0
+
 typedef struct {
     tippe_top top;
     double g;  /* m/s^2 */
@@ -336,6 +343,9 @@ typedef struct {
                                 sqrt(|w_roll|^2 + w_s^2) against the horizontal angular
                                 velocity (tippe_contact_rolling_resistance, w_s 1e-3 rad/s);
                                 m, >= 0; 0 (the default): off */
+    double creep_cap;        /* law patch: the creep reduction's cap (TIPPE_PATCH_CREEP_CAP,
+                                the front ends' default), >= 0; 0: the full law, which
+                                the presets' rk8pd integrates as msbdf */
 } tippe_dynamics_model;
 
 /* The patch radius a model's run uses (m): patch_radius_m if > 0, else Hertz's at
@@ -349,9 +359,10 @@ double tippe_dynamics_patch_radius(const tippe_dynamics_model *model);
 double tippe_dynamics_jellett_rate_bound(const tippe_dynamics_model *model);
 
 /* The stepper a run under law uses for the named one: the presets' rk8pd runs as msbdf
- * under the patch law (stiff as the spin about the vertical drains; docs/dynamics.md,
- * "Patch friction"), any other as named. */
-const char *tippe_dynamics_stepper_used(tippe_friction_law law, const char *stepper);
+ * under the patch law's full creep (creep_cap 0: stiff as the spin about the vertical
+ * drains; docs/dynamics.md, "Patch friction"), any other as named. */
+const char *tippe_dynamics_stepper_used(tippe_friction_law law, double creep_cap,
+                                        const char *stepper);
 
 /* The reason a patch-law verdict is not proved (tippe_dynamics_result.unproved_reason). */
 #define TIPPE_PATCH_UNPROVED_REASON "J changes under drilling friction: not proved"
@@ -534,6 +545,9 @@ typedef struct {
                                     (NAN under the other laws, or with mu_c or a 0) */
     double energy_rel_error;     /* max |E + D - E0| / E0 */
     double energy_max_rise;      /* J, max over steps of E(t_i) - min_{j<i} E(t_j) (>= 0) */
+    double creep_energy_J;       /* J, the patch law's creep reduction: the integral of
+                                    |the power it changed| (its energy error's estimate; in
+                                    the energy cone's margin). 0 with the full law */
     double min_Rn;               /* N, smallest normal force at an accepted step */
     long rhs_evals;              /* including those of a finite-difference Jacobian */
     long steps, rejected_steps;
@@ -637,6 +651,8 @@ typedef struct {
     double mu;                /* s/m, viscous sliding friction (eq 3.12), law viscous */
     double mu_c;              /* Coulomb coefficient, the Coulomb laws */
     double slip_scale_m_s;    /* Coulomb's regularisation speed v_s (0: the default) */
+    double creep_cap;         /* law patch: the creep reduction's cap (default
+                                 TIPPE_PATCH_CREEP_CAP; 0: the full law) */
     double patch_radius_m;    /* law patch: the patch radius, m (0: Hertz from E*) */
     double patch_E_star_pa;   /* law patch: contact modulus for Hertz at m g, Pa (or 0) */
     double patch_radius_span; /* law patch: the radius sensitivity runs at a/F and a F with
@@ -735,6 +751,8 @@ typedef struct {
     double t_fall_s;         /* s, first came back below pi/2 after t_flip_s (NAN: did not) */
     double inverted_time_s;  /* s, model time spent above pi/2 */
     double energy_rel_error; /* max |E + D - E0| / E0 over the run */
+    double creep_energy_rel; /* the patch law's creep reduction: the energy it moved over
+                                E0 (tippe_dynamics_result.creep_energy_J; 0 otherwise) */
     int rolling;             /* Coulomb: rolling without slipping at the decision */
     int end_state_proved;    /* 0 under Coulomb friction with sticking: a trapped verdict
                                 proves the well and range, not the rest state */
@@ -1085,7 +1103,8 @@ void tippe_dynamics_friction_json(struct cJSON *o, const tippe_dynamics_model *m
 /* Adds {"preset": preset, "stepper": ..., "rtol": ...} to o as "accuracy", the
  * same object in every verb that integrates. */
 void tippe_dynamics_accuracy_json(struct cJSON *o, const char *preset,
-                                  const tippe_dynamics_accuracy *acc, tippe_friction_law law);
+                                  const tippe_dynamics_accuracy *acc, tippe_friction_law law,
+                                  double creep_cap);
 /* A launch's options: the hand-launch distribution (without the spin's when
  * fixed_spin), the friction, g, t_end and the accuracy. NULL if out of memory. */
 struct cJSON *tippe_launch_options_json(const tippe_launch_options *o, int fixed_spin);
@@ -1109,6 +1128,7 @@ typedef enum {
     TIPPE_LAW_PARAM_SLIP_SCALE,  /* Coulomb's regularisation speed, m/s */
     TIPPE_LAW_PARAM_MU,          /* the viscous coefficient, s/m */
     TIPPE_LAW_PARAM_RADIUS_SPAN, /* the radius sensitivity's factor F */
+    TIPPE_LAW_PARAM_CREEP_CAP,   /* the patch law's creep reduction's cap */
     TIPPE_LAW_N_PARAMS
 } tippe_friction_param_id;
 
@@ -1136,7 +1156,8 @@ typedef struct {
     int sticks;        /* sticks and rolls without slipping: stick and slip events */
     int drills;        /* a couple about the normal changes J: its verdicts are observed */
     int patch;         /* a contact patch: its radius (given, or Hertz's), its sensitivity */
-    /* the stepper that runs for the presets' rk8pd (tippe_dynamics_stepper_used) */
+    /* the stepper that runs for the presets' rk8pd with the full creep (creep_cap 0;
+     * tippe_dynamics_stepper_used) */
     const char *stiff_stepper;
     /* its model in words (tippe_dynamics_friction_text), and its keys in the
      * "friction" object of a report (tippe_dynamics_friction_json) */

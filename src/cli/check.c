@@ -315,9 +315,9 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
         printf("theory     no prediction for J0 = %.4g kg m^3/s\n", rec->J0);
     }
     if (isfinite(rec->jellett_drift_time_s)) /* J moves by the physics: not an error */
-        printf("accuracy   energy balance %.2g, %ld RHS evaluations (J is not conserved under "
-               "the patch law: no Jellett check)\n",
-               rec->energy_rel_error, rec->rhs_evals);
+        printf("accuracy   energy balance %.2g, the creep's reduction moved %.2g of E0, %ld RHS "
+               "evaluations (J is not conserved under the patch law: no Jellett check)\n",
+               rec->energy_rel_error, rec->creep_energy_rel, rec->rhs_evals);
     else
         printf("accuracy   Jellett drift %.2g, energy balance %.2g, %ld RHS evaluations\n",
                rec->jellett_rel_drift, rec->energy_rel_error, rec->rhs_evals);

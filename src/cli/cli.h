@@ -347,6 +347,9 @@ typedef struct {
     {.name = "slip-scale", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over,                         \
      .field = "friction.slip_scale_m_s", .arg = "V", .unit = "m/s", .min = 1e-9, .max = 1,      \
      .help = "Coulomb's regularisation speed v_s (docs/dynamics.md; default 1e-5;\nselects coulomb as --mu-c does)"}, \
+    {.name = "creep-cap", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over,                          \
+     .field = "friction.creep_cap", .arg = "K", .min = 0, .max = 1e4,                            \
+     .help = "patch law: the creep reduction's cap (friction.creep_cap; default " TIPPE_CLI_STR(TIPPE_PATCH_CREEP_CAP) ";\n0: the full law, with msbdf; docs/dynamics.md, \"The creep reduced\")"}, \
     {.name = "mu", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "mu", .unit = "s/m",   \
      .min = 0, .max = 1e6, .help = "viscous sliding friction, eq 3.12: sets the viscous law\n(design: " TIPPE_CLI_STR(TIPPE_LAUNCH_DEFAULT_MU_S_M) ")"}, \
     {.name = "g", .kind = TIPPE_CLI_DOUBLE, .value = &(L)->over, .field = "g", .unit = "m/s^2",   \

@@ -134,6 +134,7 @@ int hands_friction_options(hands_friction *f, tippe_launch_options *o, tippe_cli
         hands_friction_opt(TIPPE_LAW_PARAM_MU_C, &o->mu_c),
         hands_friction_opt(TIPPE_LAW_PARAM_SLIP_SCALE, &o->slip_scale_m_s),
         hands_friction_opt(TIPPE_LAW_PARAM_MU, &o->mu),
+        hands_friction_opt(TIPPE_LAW_PARAM_CREEP_CAP, &o->creep_cap),
     };
     m[0].help = tippe_friction_law_help(HANDS_HELP_WIDTH, "; docs/dynamics.md", f->help,
                                        sizeof f->help);
@@ -150,7 +151,8 @@ static const tippe_friction_names cli_names = {
              [TIPPE_LAW_PARAM_MU_C] = "--mu-c",
              [TIPPE_LAW_PARAM_SLIP_SCALE] = "--slip-scale",
              [TIPPE_LAW_PARAM_MU] = "--mu",
-             [TIPPE_LAW_PARAM_RADIUS_SPAN] = "--radius-span"},
+             [TIPPE_LAW_PARAM_RADIUS_SPAN] = "--radius-span",
+             [TIPPE_LAW_PARAM_CREEP_CAP] = "--creep-cap"},
     .choose = "--friction %s",
 };
 
@@ -292,7 +294,7 @@ void hands_print_distribution(const tippe_launch_options *o, int fixed_spin)
 const char *hands_stepper_text(const tippe_launch_options *o, const char *stiff, char *buf,
                                size_t size)
 {
-    const char *used = tippe_dynamics_stepper_used(o->law, o->accuracy.stepper);
+    const char *used = tippe_dynamics_stepper_used(o->law, o->creep_cap, o->accuracy.stepper);
     if (strcmp(used, o->accuracy.stepper) != 0)
         snprintf(buf, size, stiff, used, tippe_friction_law_type_of(o->law)->name);
     else

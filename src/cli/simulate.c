@@ -166,7 +166,8 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
                                              : "not comparable (no proved end state)");
     }
     char stepper[64]; /* the one that ran: the patch law's msbdf for the presets' rk8pd */
-    const char *used = tippe_dynamics_stepper_used(sc->model.law, sc->accuracy.stepper);
+    const char *used = tippe_dynamics_stepper_used(sc->model.law, sc->model.creep_cap,
+                                                   sc->accuracy.stepper);
     if (strcmp(used, sc->accuracy.stepper) != 0)
         snprintf(stepper, sizeof stepper, "%s (the %s law's stiff stepper)", used,
                  tippe_friction_law_name(sc->model.law));
@@ -176,10 +177,14 @@ static void print_text(const tippe_scenario *sc, const tippe_dynamics_result *r,
     char jellett[64] = "J not conserved (drilling)";
     if (!isfinite(r->jellett_drift_time_s))
         snprintf(jellett, sizeof jellett, "Jellett drift %.2g", r->jellett_rel_drift);
-    printf("accuracy  %s rtol %g (%s): %s, energy balance error %.2g, "
+    char creep[64] = ""; /* the patch law's creep reduction (creep_reduce) */
+    if (r->creep_energy_J > 0)
+        snprintf(creep, sizeof creep, ", the creep's reduction moved %.2g of E0",
+                 r->creep_energy_J / r->E0);
+    printf("accuracy  %s rtol %g (%s): %s, energy balance error %.2g%s, "
            "%ld steps (%ld rejected), %ld RHS evaluations, %.3g s\n",
            stepper,
-           sc->accuracy.rtol, sc->accuracy_name, jellett, r->energy_rel_error, r->steps,
+           sc->accuracy.rtol, sc->accuracy_name, jellett, r->energy_rel_error, creep, r->steps,
            r->rejected_steps, r->rhs_evals, elapsed_s);
 }
 
@@ -258,6 +263,7 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
     cJSON_AddNumberToObject(o, "t_end_s", sc->t_end);
     cJSON_AddNumberToObject(o, "jellett_rel_drift", r->jellett_rel_drift);
     cJSON_AddNumberToObject(o, "energy_rel_error", r->energy_rel_error);
+    cJSON_AddNumberToObject(o, "creep_energy_rel", r->creep_energy_J / r->E0);
     cJSON_AddNumberToObject(o, "min_Rn_N", r->min_Rn);
     cJSON_AddNumberToObject(o, "rhs_evals", (double)r->rhs_evals);
     cJSON_AddNumberToObject(o, "steps", (double)r->steps);
@@ -265,7 +271,8 @@ static cJSON *to_json(const tippe_scenario *sc, const tippe_dynamics_result *r,
     cJSON_AddBoolToObject(o, "budget_exhausted", r->budget_exhausted);
     cJSON_AddNumberToObject(o, "state_dim", r->state_dim);
     cJSON_AddNumberToObject(o, "elapsed_s", elapsed_s);
-    tippe_dynamics_accuracy_json(o, sc->accuracy_name, &sc->accuracy, sc->model.law);
+    tippe_dynamics_accuracy_json(o, sc->accuracy_name, &sc->accuracy, sc->model.law,
+                                 sc->model.creep_cap);
     cJSON *th = cJSON_AddObjectToObject(o, "theory");
     if (th) {
         cJSON_AddStringToObject(th, "group", tippe_group_name(tc->cls.group));

@@ -69,6 +69,10 @@ static int check_inputs(const tippe_dynamics_model *model, const tippe_dynamics_
                                    "Coulomb slip scale v_s = %g m/s must be in [0, 1e3] "
                                    "(0: the default %g m/s)",
                                    model->slip_scale_m_s, TIPPE_COULOMB_SLIP_SCALE_M_S);
+        if (!(model->creep_cap >= 0 && model->creep_cap <= 1e6))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "the creep reduction's cap %g must be in [0, 1e6] (0: the "
+                                   "full law)", model->creep_cap);
     }
     if (!(ic->theta >= 0 && ic->theta <= M_PI))
         return tippe_error_set(err, TIPPE_EINPUT, "initial theta = %g rad must be in [0, pi]",
@@ -130,6 +134,8 @@ static void ctx_init(dyn_ctx *c, const tippe_dynamics_model *model, size_t dim)
     c->inv_A = 1.0 / c->A;
     c->dim = dim;
     c->min_stage_Rn = INFINITY;
+    c->creep_cap = c->patch ? model->creep_cap : 0.0;
+    c->sqrt_g_over_R = sqrt(c->g / c->R);
 }
 
 /* The regular state of a launch given in the paper's variables (eq 3.4),
@@ -200,6 +206,7 @@ typedef struct {
     gsl_odeiv2_driver *drv;
     double y[DIM_TRAJECTORY], y_prev[DIM_TRAJECTORY];
     double t, t_prev, theta_prev, theta_launch, h;
+    double theta_dot_prev;          /* theta's rate at t_prev, rad/s (the crossings) */
     double theta_prev_step;         /* theta at the previous accepted step (rolling) */
     double phi, psi;                /* continued Euler angles (trajectory level) */
     long i_sample;                  /* index of the next sample time */
@@ -221,6 +228,7 @@ typedef struct {
     const tippe_dynamics_model *model;
     int rim_touched, wells_stale, launched_on_rim;
     double J_ref, J_ref_err;
+    double creep_power_prev; /* W, |the power the creep reduction changed| at t_prev */
 } run_state;
 
 /* Inputs, context, launch state, tolerance scales, monitors at t = 0, the wells of
@@ -281,7 +289,8 @@ static int run_setup(run_state *rs, const tippe_dynamics_model *model,
      * crawls at its stability limit (an M12 check: 1.7e8 evaluations for 117 s). So the
      * presets' rk8pd becomes msbdf (BDF, implicit) under the patch law, at the same
      * rtol: 2.4e5 evaluations for 120 s (docs/dynamics.md, "Patch friction"). */
-    const char *stepper = tippe_dynamics_stepper_used(model->law, opt->accuracy.stepper);
+    const char *stepper =
+        tippe_dynamics_stepper_used(model->law, model->creep_cap, opt->accuracy.stepper);
     rs->drv = gsl_odeiv2_driver_alloc_scaled_new(&rs->sys, tippe_dynamics_stepper_type(stepper),
                                                  rs->h, opt->accuracy.rtol, opt->accuracy.rtol,
                                                  1.0, 0.0, c->scale);
@@ -441,6 +450,28 @@ static int run_try_decide(run_state *rs, tippe_dynamics_result *res)
     return 1;
 }
 
+/* When theta crossed pi/2 in the step from (t0, theta0) to (t1, theta1): the root of
+ * the cubic Hermite interpolant through both ends and their rates (error O(h^4), where
+ * the chord's is O(h^2): a 2 ms step of rk8pd put the chord's crossing 1e-4 s off the
+ * flip), by bisection, since the cubic may leave the bracket's monotone chord. */
+static double crossing_time(double t0, double th0, double thd0, double t1, double th1,
+                            double thd1)
+{
+    const double h = t1 - t0, target = 0.5 * M_PI;
+    double a = 0.0, b = 1.0;
+    const double sgn = th1 > th0 ? 1.0 : -1.0;
+    for (int it = 0; it < 60; it++) {
+        const double u = 0.5 * (a + b), u2 = u * u, u3 = u2 * u;
+        const double th = (2 * u3 - 3 * u2 + 1) * th0 + (u3 - 2 * u2 + u) * h * thd0 +
+                          (-2 * u3 + 3 * u2) * th1 + (u3 - u2) * h * thd1;
+        if (sgn * (th - target) < 0.0)
+            a = u;
+        else
+            b = u;
+    }
+    return t0 + 0.5 * (a + b) * h;
+}
+
 /* The monitors of an accepted state. */
 static void run_monitor(run_state *rs, tippe_dynamics_result *res)
 {
@@ -450,6 +481,10 @@ static void run_monitor(run_state *rs, tippe_dynamics_result *res)
         rs->J_abs_err = dJ;
     if (!rs->c.rim && fabs(s->J - rs->J_ref) > rs->J_ref_err)
         rs->J_ref_err = fabs(s->J - rs->J_ref);
+    /* the creep reduction's change to the contact's power, integrated (trapezoids):
+     * its estimate of the energy it moved, which the energy cone's margin carries */
+    res->creep_energy_J += 0.5 * (rs->creep_power_prev + rs->ct.creep_power) * (rs->t - rs->t_prev);
+    rs->creep_power_prev = rs->ct.creep_power;
     const double dE = fabs(s->E + s->D - res->E0);
     if (dE > rs->energy_abs_err)
         rs->energy_abs_err = dE;
@@ -460,13 +495,12 @@ static void run_monitor(run_state *rs, tippe_dynamics_result *res)
     if (s->Rn < res->min_Rn)
         res->min_Rn = s->Rn;
     if (isnan(res->t_flip) && rs->theta_prev <= 0.5 * M_PI && s->theta > 0.5 * M_PI)
-        /* linear in between the steps */
-        res->t_flip = rs->t_prev + (rs->t - rs->t_prev) * (0.5 * M_PI - rs->theta_prev) /
-                                       (s->theta - rs->theta_prev);
+        res->t_flip = crossing_time(rs->t_prev, rs->theta_prev, rs->theta_dot_prev, rs->t,
+                                    s->theta, s->theta_dot);
     else if (!isnan(res->t_flip) && isnan(res->t_fall) && rs->theta_prev > 0.5 * M_PI &&
              s->theta <= 0.5 * M_PI)
-        res->t_fall = rs->t_prev + (rs->t - rs->t_prev) * (rs->theta_prev - 0.5 * M_PI) /
-                                       (rs->theta_prev - s->theta);
+        res->t_fall = crossing_time(rs->t_prev, rs->theta_prev, rs->theta_dot_prev, rs->t,
+                                    s->theta, s->theta_dot);
     if (rs->theta_prev > 0.5 * M_PI && s->theta > 0.5 * M_PI)
         res->inverted_time_s += rs->t - rs->t_prev;
     /* on a hole's rim at a pole (issue 25.7) */
@@ -480,6 +514,7 @@ static void run_monitor(run_state *rs, tippe_dynamics_result *res)
             res->cap_time_s += rs->t - rs->t_prev;
     }
     rs->theta_prev = s->theta;
+    rs->theta_dot_prev = s->theta_dot;
 }
 
 /* Coulomb's stick (Leine and Glocker 2003): once the slip is below 30 v_s and the force
@@ -824,7 +859,10 @@ static int run_try_energy_cone(run_state *rs, tippe_dynamics_result *res)
     const dyn_ctx *c = &rs->c;
     if (!(c->eps > 0) || rs->opt->run_to_t_end)
         return 0;
-    const double margin = rs->opt->margin_factor * rs->energy_abs_err + 1e-12 * res->E0;
+    /* the reduced creep (creep_reduce) may have moved E by up to what it changed of the
+     * contact's power; that counts as error too */
+    const double margin = rs->opt->margin_factor * (rs->energy_abs_err + res->creep_energy_J) +
+                          1e-12 * res->E0;
     const double E = rs->smp.E + margin, mg = c->m * c->g;
     double lo = NAN, hi = NAN;
     tippe_verdict verdict;
@@ -925,6 +963,7 @@ int tippe_dynamics_run(const tippe_dynamics_model *model, const tippe_dynamics_i
         res->unproved_reason = TIPPE_PATCH_UNPROVED_REASON;
     run_try_stick(&rs, res);
     rs.theta_prev = rs.theta_launch = rs.smp.theta;
+    rs.theta_dot_prev = rs.smp.theta_dot;
     if (rs.smp.theta < opt->cap_half_angle_rad[0] || M_PI - rs.smp.theta < opt->cap_half_angle_rad[1])
         res->cap_first_s = res->cap_last_s = rs.t; /* launched on a hole's rim */
     res->min_Rn = rs.ct.Rn;

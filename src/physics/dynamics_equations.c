@@ -210,6 +210,89 @@ static int normal_force(const dyn_ctx *c, contact *o, const double wk[3], const 
     return 0;
 }
 
+/* The patch law with its creep reduced (docs/dynamics.md, "The creep reduced"; issue 38).
+ * Where the patch drills slowly the creep drag mu_c c1 / (a |omega_n|) relaxes the slip
+ * at a rate k far above the motion's (2e4 /s on the M12 at 1 rad/s), and an explicit
+ * stepper must crawl at 1/k. The slip is then a fast variable slaved to the slow state
+ * (Tikhonov's theorem): it sits where the patch's force equals the force that would keep
+ * the contact point at rest, F_p(v*) = F_s, up to a lag of order (d/dt v*) / k. So where k
+ * exceeds k_cap = creep_cap (|omega| + sqrt(g/R)) the contact force is the blend
+ *   Fc = (1 - s) Fc_s + s Fc_p,   s = k_cap / k,
+ * of the rolling constraint's Fc_s (with the patch's couples at this state) and the full
+ * law's Fc_p. Both satisfy the normal constraint and give the contact point the
+ * accelerations 0 and a_p, so the blend gives it s a_p: the slip relaxes to the same
+ * slaved value v* at the rate s k = k_cap instead of k. The force on the body is the
+ * full law's to first order in the lag (its lag term (C/k) d/dt v* does not depend on s);
+ * the slip itself lags by (d/dt v*) / k_cap, so the creep's power is off by a relative
+ * O((|omega| + sqrt(g/R)) / k_cap) = O(1/creep_cap). Where k <= k_cap (sliding, a fast
+ * drilling patch) s = 1: the full law, unchanged. k is bounded above by the trace of
+ * the Delassus matrix's tangential block (>= its largest eigenvalue, and >= that of its
+ * Schur complement under the normal constraint) times the law's drag |F| / |V_Q| (the
+ * secant, which for this law is the largest slope of F in V_Q: docs/contact-patch.md). */
+static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const per_Rn *u)
+{
+    o->creep_slow = 1.0;
+    o->creep_power = 0.0;
+    const double slip = hypot(o->VQ[0], o->VQ[1]);
+    const double drag = slip > 0.0 ? hypot(u->f[0], u->f[1]) / slip : c->mu_c / c->vs;
+    /* K's tangential trace without K: K_jj = 1/m + (q x e_j).I^-1 (q x e_j), with
+     * I^-1 x = (x - (1 - A/C)(x.k) k) / A, q x e_x = (0, q_z, -q_y), q x e_y = (-q_z, 0, q_x) */
+    const double *q = o->q, *k = o->k;
+    const double px = q[2] * k[1] - q[1] * k[2], py = q[0] * k[2] - q[2] * k[0];
+    const double trace = 2.0 / c->m + (q[0] * q[0] + q[1] * q[1] + 2.0 * q[2] * q[2] -
+                                       c->one_minus_A_over_C * (px * px + py * py)) * c->inv_A;
+    const double k_rate = o->Rn * drag * trace;
+    const double k_cap = c->creep_cap * (sqrt(dot3(o->w, o->w)) + c->sqrt_g_over_R);
+    if (!(k_rate > k_cap))
+        return;
+    double K[3][3];
+    compliance(c, o->k, o->q, K);
+    const double s = k_cap / k_rate;
+    /* The rolling constraint with the couples per unit Rn tc:
+     *   K Fc + Rn (I^-1 tc) x q = g e3 - a0 x q - omega x dq/dt   (run_try_stick's system) */
+    const double tc[3] = {u->Mroll[0], u->Mroll[1], u->M};
+    double a0[3], a0q[3], wq_dot[3], b[3], wc[3], cq[3], Fs[3], tau[3], wt[3];
+    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
+    for (int i = 0; i < 3; i++)
+        a0[i] = minus_CmA_A_n * wk[i];
+    cross3(a0, o->q, a0q);
+    if (c->rim)
+        memcpy(wq_dot, o->wqd, sizeof wq_dot);
+    else {
+        cross3(o->w, wk, wq_dot);
+        for (int i = 0; i < 3; i++)
+            wq_dot[i] *= c->eps;
+    }
+    tippe_dynamics_inv_inertia(c, o->k, tc, wc);
+    cross3(wc, o->q, cq);
+    for (int i = 0; i < 3; i++) {
+        b[i] = -a0q[i] - wq_dot[i];
+        K[i][2] += cq[i];
+    }
+    b[2] += c->g;
+    if (tippe_dynamics_solve3(K, b, Fs) || !(Fs[2] > 0.0))
+        return; /* no rolling solution here: the full law */
+    cross3(o->q, Fs, tau);
+    for (int i = 0; i < 3; i++)
+        tau[i] += Fs[2] * tc[i];
+    tippe_dynamics_inv_inertia(c, o->k, tau, wt);
+    const double Rn = (1.0 - s) * Fs[2] + s * o->Rn;
+    double dF[2];
+    for (int i = 0; i < 2; i++) {
+        const double F = (1.0 - s) * Fs[i] + s * o->F[i];
+        dF[i] = F - Rn * u->f[i]; /* what the reduction adds to the law's force at Rn */
+        o->F[i] = F;
+    }
+    for (int i = 0; i < 3; i++)
+        o->wdot[i] = (1.0 - s) * (wt[i] + a0[i]) + s * o->wdot[i];
+    o->Rn = Rn;
+    o->M = Rn * u->M;
+    const double dP = dF[0] * o->VQ[0] + dF[1] * o->VQ[1];
+    o->power = Rn * u->diss - dP;
+    o->creep_slow = s;
+    o->creep_power = fabs(dP);
+}
+
 /* Everything the right-hand side needs from a state: the contact velocity, the
  * normal force in closed form, the angular acceleration. The axis is
  * normalised here, so |k| drifting at the integrator's tolerance never enters
@@ -327,6 +410,10 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
         o->F[1] = o->Rn * u.f[1];
         o->M = o->Rn * u.M;
         o->power = o->Rn * u.diss; /* -(F.V_Q + M omega_n + M_roll.w_roll) >= 0 */
+        o->creep_slow = 1.0;
+        o->creep_power = 0.0;
+        if (c->creep_cap > 0.0)
+            creep_reduce(c, o, wk, &u);
         return 0;
     }
     o->M = 0.0;

@@ -60,6 +60,9 @@ typedef struct {
     double rim_mu_c;      /* viscous law on a rim: the Coulomb coefficient its force
                              saturates at (dynamics_equations.c, rim_friction) */
     double min_stage_rim; /* least rim_stay over the stages of a step */
+    double creep_cap;     /* patch law: the creep's relaxation held to at most creep_cap
+                             times the motion's rate (creep_reduce); 0: the full law */
+    double sqrt_g_over_R; /* the rocking rate's scale, rad/s */
 } dyn_ctx;
 
 /* Tilts from a pole below RIM_FACE_SIN (sine) stand on the opening's flat face, not
@@ -123,6 +126,9 @@ typedef struct {
     double wqd[3];  /* m/s^2, omega x dq/dt (q's rate as the contact moves over the body) */
     int ring;       /* on a rim exactly upright: the whole ring touches */
     double K[3][3]; /* contact compliance (Delassus) matrix, rolling phase only */
+    double creep_slow; /* patch law: the factor s <= 1 the creep's relaxation ran at
+                          (1: the full law) */
+    double creep_power; /* W: the power the reduction changed, |(F - F_full).V_Q| */
     double wdot[3];
 } contact;
 

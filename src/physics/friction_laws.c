@@ -51,6 +51,13 @@ const tippe_friction_param tippe_friction_params[TIPPE_LAW_N_PARAMS] = {
          .max = 10, .def = "the design's tolerance, else 2",
          .help = "patch law: the radius sensitivity's reruns at a/F and a F, a the\n"
                  "patch radius used (Hertz's or --patch-mm)"},
+    [TIPPE_LAW_PARAM_CREEP_CAP] =
+        {.key = "creep_cap", .option = "creep-cap", .arg = "K", .number = 1, .min = 0,
+         .max = 1e4, .def = STR(TIPPE_PATCH_CREEP_CAP),
+         .help = "patch law: the creep's relaxation held to at most K times the motion's\n"
+                 "rate |omega| + sqrt(g/R), so that the explicit rk8pd serves (the\n"
+                 "slip's lag off by O(1/K)); 0: the full law, with msbdf\n"
+                 "(docs/dynamics.md, \"The creep reduced\")"},
 };
 
 /* ---- each law's model in words and in JSON ------------------------------------ */
@@ -103,9 +110,14 @@ static void patch_describe(const tippe_dynamics_model *m, double v_s, char *buf,
     }
     if (m->rolling_arm_m > 0)
         snprintf(roll, sizeof roll, ", rolling resistance arm %g um", m->rolling_arm_m * 1e6);
+    char creep[64] = ", the full creep";
+    if (m->creep_cap > 0)
+        snprintf(creep, sizeof creep, ", creep reduced above %g x the motion's rate",
+                 m->creep_cap);
     snprintf(buf, size, "patch (Coulomb-Contensou) mu_c %g on %s (%sHertz pressure, %s)%s, "
-             "regularised below %g m/s", m->mu_c, where, modulus,
-             m->patch_radius_fixed ? "held" : "following the load as Rn^(1/3)", roll, v_s);
+             "regularised below %g m/s%s", m->mu_c, where, modulus,
+             m->patch_radius_fixed ? "held" : "following the load as Rn^(1/3)", roll, v_s,
+             creep);
 }
 
 static void patch_json(cJSON *f, const tippe_dynamics_model *m)
@@ -123,6 +135,7 @@ static void patch_json(cJSON *f, const tippe_dynamics_model *m)
         cJSON_AddNumberToObject(f, "patch_mm_at_mg", tippe_dynamics_patch_radius(m) * 1e3);
     cJSON_AddBoolToObject(f, "radius_follows_load", !m->patch_radius_fixed);
     cJSON_AddNumberToObject(f, "rolling_arm_um", m->rolling_arm_m * 1e6);
+    cJSON_AddNumberToObject(f, "creep_cap", m->creep_cap);
 }
 
 /* ---- the table ------------------------------------------------------------------ */
@@ -148,7 +161,8 @@ static const tippe_friction_law_type law_types[TIPPE_N_FRICTION_LAWS] = {
              "verdicts observed, not proved",
      .doc = "docs/dynamics.md, \"Patch friction\"",
      .params = COULOMB_PARAMS | BIT(TIPPE_LAW_PARAM_PATCH_MM) |
-               BIT(TIPPE_LAW_PARAM_TABLE) | BIT(TIPPE_LAW_PARAM_RADIUS_SPAN),
+               BIT(TIPPE_LAW_PARAM_TABLE) | BIT(TIPPE_LAW_PARAM_RADIUS_SPAN) |
+               BIT(TIPPE_LAW_PARAM_CREEP_CAP),
      .drills = 1, .patch = 1, .stiff_stepper = "msbdf", .describe = patch_describe,
      .json = patch_json},
 };

@@ -116,6 +116,10 @@ int tippe_friction_choose(const tippe_friction_given *g, const tippe_friction_na
                                      "%s belongs to the patch law (its radius sensitivity): "
                                      "give %s",
                                      name[TIPPE_LAW_PARAM_RADIUS_SPAN], choose);
+    if (given(g, TIPPE_LAW_PARAM_CREEP_CAP) && !among(out, *n, TIPPE_LAW_PARAM_CREEP_CAP))
+        return tippe_error_set_field(err, TIPPE_EINPUT, p[TIPPE_LAW_PARAM_CREEP_CAP].key,
+                                     "%s belongs to the patch law (its creep): give %s",
+                                     name[TIPPE_LAW_PARAM_CREEP_CAP], choose);
     double E, nu;
     if (table && tippe_contact_table_surface(g->table, &E, &nu))
         return tippe_error_set_field(err, TIPPE_EINPUT, p[TIPPE_LAW_PARAM_TABLE].key,

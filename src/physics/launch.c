@@ -35,6 +35,7 @@ void tippe_launch_options_default(tippe_launch_options *o)
     o->law = TIPPE_FRICTION_VISCOUS;
     o->mu_c = TIPPE_LAUNCH_DEFAULT_MU_C;
     o->slip_scale_m_s = 0.0;
+    o->creep_cap = TIPPE_PATCH_CREEP_CAP;
     o->g = TIPPE_DEFAULT_G_M_S2;
     o->t_end = 600.0;
     o->until_flip = 1;
@@ -90,6 +91,10 @@ int tippe_launch_options_check(const tippe_launch_options *o, tippe_error *err)
         return tippe_error_set(err, TIPPE_EINPUT,
                                "Coulomb slip scale %g m/s must be in [0, 1] (0: the default)",
                                o->slip_scale_m_s);
+    if (!(o->creep_cap >= 0 && o->creep_cap <= 1e4))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "the creep reduction's cap %g must be in [0, 1e4] (0: the full "
+                               "law)", o->creep_cap);
     if (!(o->g > 0 && isfinite(o->g)))
         return tippe_error_set(err, TIPPE_EINPUT, "g = %g m/s^2 must be positive", o->g);
     if (!(o->t_end > 0 && isfinite(o->t_end)))
@@ -233,7 +238,7 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->t_s = rec->theta_final_rad = rec->spin_final_rad_s = NAN;
     rec->how = TIPPE_DECIDED_T_END;
     rec->barrier_gap_J = rec->margin_J = rec->t_flip_s = rec->t_fall_s = NAN;
-    rec->inverted_time_s = rec->energy_rel_error = NAN;
+    rec->inverted_time_s = rec->energy_rel_error = rec->creep_energy_rel = NAN;
     rec->cap_time_s = 0;
     rec->cap_first_s = NAN;
     rec->theta_lo_rad = rec->theta_hi_rad = rec->Rn_bound_N = NAN;
@@ -269,6 +274,7 @@ int tippe_launch_run_initial(const tippe_top *top, const tippe_launch_options *o
     rec->t_fall_s = res.t_fall;
     rec->inverted_time_s = res.inverted_time_s;
     rec->energy_rel_error = res.energy_rel_error;
+    rec->creep_energy_rel = res.creep_energy_J / res.E0;
     rec->cap_time_s = res.cap_time_s;
     rec->cap_first_s = res.cap_first_s;
     rec->rim_touched = res.rim_touched;

@@ -16,6 +16,7 @@ void tippe_launch_friction_model(const tippe_launch_options *o, tippe_dynamics_m
     m->mu = o->mu;
     m->mu_c = o->mu_c;
     m->slip_scale_m_s = o->slip_scale_m_s;
+    m->creep_cap = o->creep_cap;
     m->patch_radius_m = o->patch_radius_m;
     m->patch_E_star_pa = o->patch_E_star_pa;
 }
@@ -72,13 +73,13 @@ void tippe_dynamics_friction_json(cJSON *o, const tippe_dynamics_model *m)
 }
 
 void tippe_dynamics_accuracy_json(cJSON *o, const char *preset, const tippe_dynamics_accuracy *acc,
-                                  tippe_friction_law law)
+                                  tippe_friction_law law, double creep_cap)
 {
     cJSON *a = cJSON_AddObjectToObject(o, "accuracy");
     if (a) {
         cJSON_AddStringToObject(a, "preset", preset);
         /* the stepper that ran (the patch law's msbdf for the presets' rk8pd) */
-        cJSON_AddStringToObject(a, "stepper", tippe_dynamics_stepper_used(law, acc->stepper));
+        cJSON_AddStringToObject(a, "stepper", tippe_dynamics_stepper_used(law, creep_cap, acc->stepper));
         cJSON_AddNumberToObject(a, "rtol", acc->rtol);
     }
 }
@@ -101,6 +102,6 @@ cJSON *tippe_launch_options_json(const tippe_launch_options *o, int fixed_spin)
     tippe_dynamics_friction_json(d, &m);
     cJSON_AddNumberToObject(d, "g_m_s2", o->g);
     cJSON_AddNumberToObject(d, "t_end_s", o->t_end);
-    tippe_dynamics_accuracy_json(d, o->accuracy_name, &o->accuracy, o->law);
+    tippe_dynamics_accuracy_json(d, o->accuracy_name, &o->accuracy, o->law, o->creep_cap);
     return d;
 }

@@ -21,7 +21,8 @@
 static const char *const top_level_keys[] = {"name", "notes", "top", "g", "mu", "friction",
                                               "initial", "t_end", "accuracy", NULL};
 static const char *const friction_keys[] = {"law", "mu_s_m", "mu", "slip_scale_m_s",
-                                            "patch_mm", "table", "rolling_arm_um", NULL};
+                                            "patch_mm", "table", "rolling_arm_um",
+                                            "creep_cap", NULL};
 static const char *const top_explicit_keys[] = {"m", "R", "eps", "A", "C", NULL};
 static const char *const top_design_keys[] = {"design", "z2_mm", "set", NULL};
 static const char *const top_all_keys[] = {"m", "R", "eps", "A", "C", "design", "z2_mm",
@@ -385,14 +386,23 @@ static int read_patch(tippe_json_reader *c, const cJSON *f, tippe_scenario *s)
     const cJSON *pm = cJSON_GetObjectItemCaseSensitive(f, "patch_mm");
     const cJSON *tb = cJSON_GetObjectItemCaseSensitive(f, "table");
     const cJSON *ra = cJSON_GetObjectItemCaseSensitive(f, "rolling_arm_um");
+    const cJSON *cc = cJSON_GetObjectItemCaseSensitive(f, "creep_cap");
     int rc;
     if (!tippe_friction_law_type_of(m->law)->patch) {
-        if (pm || tb || ra)
-            return tippe_json_fail(c, pm ? "friction.patch_mm" : tb ? "friction.table"
-                                                                    : "friction.rolling_arm_um",
+        if (pm || tb || ra || cc)
+            return tippe_json_fail(c, pm   ? "friction.patch_mm"
+                                      : tb ? "friction.table"
+                                      : ra ? "friction.rolling_arm_um"
+                                           : "friction.creep_cap",
                                    "belongs to the patch law (\"law\": \"patch\")");
         return TIPPE_OK;
     }
+    /* the creep reduced by default, as the command's --creep-cap; 0 the full law */
+    m->creep_cap = TIPPE_PATCH_CREEP_CAP;
+    if (cc && ((rc = tippe_json_number(c, f, "friction", "creep_cap", 1, &m->creep_cap, NULL)) ||
+               (rc = check_range(c, "friction.creep_cap", m->creep_cap, 0, 1e4,
+                                 "(dimensionless; 0: the full law)"))))
+        return rc;
     if (ra) {
         double um = 0.0;
         if ((rc = tippe_json_number(c, f, "friction", "rolling_arm_um", 1, &um, NULL)) ||

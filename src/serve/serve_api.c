@@ -162,7 +162,8 @@ static const tippe_friction_names serve_friction_names = {
              [TIPPE_LAW_PARAM_MU_C] = "mu_c",
              [TIPPE_LAW_PARAM_SLIP_SCALE] = "slip_scale_m_s",
              [TIPPE_LAW_PARAM_MU] = "mu_s_m",
-             [TIPPE_LAW_PARAM_RADIUS_SPAN] = "radius_span"},
+             [TIPPE_LAW_PARAM_RADIUS_SPAN] = "radius_span",
+             [TIPPE_LAW_PARAM_CREEP_CAP] = "creep_cap"},
     .choose = "\"friction\": \"%s\"",
 };
 

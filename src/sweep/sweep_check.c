@@ -303,6 +303,7 @@ cJSON *tippe_sweep_check_json(const tippe_sweep_check *r, const tippe_launch_opt
         cJSON_AddNumberToObject(o, "jellett_rel_drift", rec->jellett_rel_drift);
         number_or_null(o, "jellett_drift_time_s", rec->jellett_drift_time_s);
         number_or_null(o, "energy_rel_error", rec->energy_rel_error);
+        number_or_null(o, "creep_energy_rel", rec->creep_energy_rel);
         cJSON_AddItemToObject(o, "options", tippe_launch_options_json(opt, 1));
         if (tippe_friction_law_type_of(opt->law)->patch) /* the radius at m g this top's run started from */
             cJSON_AddNumberToObject(o, "patch_radius_mm", 1e3 * tippe_launch_patch_radius(&r->top, opt));
