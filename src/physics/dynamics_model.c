@@ -120,15 +120,6 @@ double tippe_dynamics_jellett_rate_bound(const tippe_dynamics_model *model)
            (model->top.R + model->top.eps);
 }
 
-const char *tippe_dynamics_stepper_used(tippe_friction_law law, double creep_cap,
-                                        const char *stepper)
-{
-    const tippe_friction_law_type *t = tippe_friction_law_type_of(law);
-    return t && t->stiff_stepper && !(creep_cap > 0) && !strcmp(stepper, "rk8pd")
-               ? t->stiff_stepper
-               : stepper;
-}
-
 int tippe_dynamics_n_presets(void) { return N_PRESETS; }
 
 const char *tippe_dynamics_preset_name(int i)

@@ -237,3 +237,14 @@ const char *tippe_friction_law_help(int width, const char *tail, char *buf, size
     }
     return buf;
 }
+
+/* The stiff stepper of a law's entry stands in for the presets' rk8pd unless its creep is
+ * reduced (creep_cap > 0: docs/dynamics.md, "The creep reduced"). */
+const char *tippe_dynamics_stepper_used(tippe_friction_law law, double creep_cap,
+                                        const char *stepper)
+{
+    const tippe_friction_law_type *t = tippe_friction_law_type_of(law);
+    return t && t->stiff_stepper && !(creep_cap > 0) && !strcmp(stepper, "rk8pd")
+               ? t->stiff_stepper
+               : stepper;
+}
