@@ -10,7 +10,9 @@ add_library(tippe_shared SHARED ${TIPPE_CORE_OBJECTS} ${TIPPE_HEAVY_OBJECTS})
 target_link_libraries(tippe_shared PRIVATE tippe_base ${TIPPE_HEAVY_LIBS})
 set_target_properties(tippe_shared PROPERTIES OUTPUT_NAME tippe VERSION ${PROJECT_VERSION}
   SOVERSION ${TIPPE_SOVERSION} LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR})
-target_link_options(tippe_shared PRIVATE -Wl,--no-undefined)
+target_link_options(tippe_shared PRIVATE -Wl,--no-undefined
+  -Wl,--version-script=${PROJECT_SOURCE_DIR}/cmake/libtippe.map)
+set_property(TARGET tippe_shared APPEND PROPERTY LINK_DEPENDS ${PROJECT_SOURCE_DIR}/cmake/libtippe.map)
 
 # Man pages (one per verb and tippe(1)) and the bash completion, from the built
 # command's --help at build time (tools/gen_man.py): they cannot drift from it.

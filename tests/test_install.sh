@@ -69,5 +69,35 @@ complete_line() { # complete_line WORDS...: what TAB offers for the last word
 check "TAB after tippe sw offers sweep" test "$(complete_line tippe sw)" = sweep
 check "TAB after tippe sweep --ph offers --phase-plot" test "$(complete_line tippe sweep --ph)" = --phase-plot
 check "TAB after tippe eval lonely/ offers the design" test "$(complete_line tippe eval lonely/)" = lonely/shell-rod-nylon.json
+
+# libtippe.so: SONAME, only tippe_ symbols exported, and docs/library.md's example
+# compiled against the installed headers and library (pkg-config) and run
+lib=$(ls "$P"/lib*/libtippe.so.0 "$P"/lib/*/libtippe.so.0 2>/dev/null | head -1)
+check "libtippe.so.0 is installed" test -n "$lib" || { finish; exit; }
+check "its SONAME is libtippe.so.0" bash -c 'objdump -p "$1" | grep -q "SONAME *libtippe.so.0$"' _ "$lib"
+nm -D --defined-only "$lib" | awk '$2 ~ /^[TDBR]$/ {print $3}' | grep -v '^tippe_' | grep -vE '^(_init|_fini|_edata|_end|__bss_start)$' >"$tmp/foreign" || true
+check "libtippe.so exports only tippe_ names" test ! -s "$tmp/foreign" || head "$tmp/foreign"
+libdir=$(dirname "$lib")
+sed -n '/^```c$/,/^```$/p' "$src/docs/library.md" | sed '1d;$d' >zones.c
+check "docs/library.md holds the example" grep -q tippe_sweep_design zones.c
+PKG_CONFIG_PATH=$libdir/pkgconfig cc -Wall -Werror -o zones zones.c \
+    $(PKG_CONFIG_PATH=$libdir/pkgconfig pkg-config --cflags --libs tippe) 2>cc.err
+check "the example compiles against the installed library" test $? -eq 0 || cat cc.err
+LD_LIBRARY_PATH=$libdir ./zones "$P/share/tippe/designs/m12-setscrew.json" >zones.txt 2>err
+check "the example runs" test $? -eq 0
+check "it uses the installed library" bash -c 'LD_LIBRARY_PATH="$1" ldd ./zones | grep -q "libtippe.so.0 => $1/libtippe.so.0"' _ "$libdir"
+"$tippe" sweep "$src/designs/m12-setscrew.json" --csv csv.csv >/dev/null
+# the same zones as tippe sweep --csv, to the 3 decimals it prints
+check "its zone table is tippe sweep's" python3 - zones.txt csv.csv <<'PY'
+import csv, sys
+rows = open(sys.argv[1]).read().split("\n")[1:]
+rows = [r.split() for r in rows if r.strip()]
+ref = list(csv.DictReader(open(sys.argv[2])))
+assert len(rows) == len(ref) and rows, (rows, ref)
+for r, c in zip(rows, ref):
+    want = [c["group"]] + ["%.3f" % float(c[k]) for k in
+                           ("z2_from_mm", "z2_to_mm", "width_mm", "robust_width_mm")]
+    assert r == want, (r, want)
+PY
 cd "$src"
 finish
