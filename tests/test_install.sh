@@ -99,5 +99,17 @@ for r, c in zip(rows, ref):
                            ("z2_from_mm", "z2_to_mm", "width_mm", "robust_width_mm")]
     assert r == want, (r, want)
 PY
+
+# the Python module installed beside the library finds it (docs/python.md)
+if /usr/bin/python3 -c 'import numpy' 2>/dev/null; then
+    env -u TIPPE_LIBRARY PYTHONPATH="$P/lib/python3/dist-packages" /usr/bin/python3 -c \
+        'import sys, tippe; print(tippe.library_path()); print(tippe.sweep(sys.argv[1]))' \
+        "$P/share/tippe/designs/m12-setscrew.json" >py.txt 2>err
+    check "the installed Python module runs from an empty folder" test $? -eq 0 || cat err
+    check "... over the installed libtippe" grep -qx "$P/lib/libtippe.so.0" py.txt
+    check "... and prints the zone table" grep -Eq "^IIb +8\.689 +16\.360" py.txt
+else
+    echo "SKIPPED: the Python module's check (python3-numpy is not installed)"
+fi
 cd "$src"
 finish
