@@ -24,6 +24,19 @@ check "its name is tippe_VERSION_ARCH.deb" bash -c '[[ $(basename "$1") =~ ^tipp
 check "Depends lists what the command opens itself (NLopt, FFmpeg, PLplot's cairo driver)" \
     bash -c 'dpkg-deb -f "$1" Depends | grep -q "libnlopt0.*libavcodec.*plplot-driver-cairo\|plplot-driver-cairo.*libnlopt0.*libavcodec"' _ "$deb"
 check "Suggests prusa-slicer and openscad" bash -c 'dpkg-deb -f "$1" Suggests | grep -q "prusa-slicer, openscad"' _ "$deb"
+# lintian: no error, and only the warnings docs/install.md explains
+if command -v lintian >/dev/null; then
+    lintian "$deb" 2>/dev/null | grep -E '^[EW]:' | sed -E 's/^([EW]): tippe: ([a-z0-9-]+).*/\1 \2/' | sort -u >"$tmp/lintian"
+    printf '%s\n' "W link-to-shared-library-in-wrong-package" "W package-name-doesnt-match-sonames" \
+        "W pkg-config-unavailable-for-cross-compilation" | sort >"$tmp/explained"
+    check "lintian finds only the warnings docs/install.md explains" \
+        bash -c '! comm -23 "$1" "$2" | grep .' _ "$tmp/lintian" "$tmp/explained"
+    while read -r _ tag; do
+        grep -q "$tag" "$src/docs/install.md" || bad "docs/install.md does not explain $tag"
+    done <"$tmp/explained"
+else
+    echo "SKIPPED: lintian (apt-get install lintian)"
+fi
 dpkg-query -W -f='${Package}\n' | sort >"$tmp/before"
 cp "$deb" "$tmp/"
 DEBIAN_FRONTEND=noninteractive apt-get install -y "$tmp/$(basename "$deb")" >"$tmp/apt.log" 2>&1

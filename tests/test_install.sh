@@ -50,9 +50,10 @@ mv "$tmp/away.json" "$P/share/tippe/designs/materials.json"
 
 # man pages: tippe(1) and one per verb, each naming its options as --help does
 verbs=$("$tippe" --help | awk '/^verbs:/{v=1;next} v&&/^  [a-z]/{print $1} /^$/&&v&&n++{v=0}')
-check "tippe.1 is installed" test -f "$P/share/man/man1/tippe.1"
+check "tippe.1 is installed" test -f "$P/share/man/man1/tippe.1.gz"
+check "tippe-mpi.1 is installed" test -f "$P/share/man/man1/tippe-mpi.1.gz"
 for v in $verbs; do
-    page=$P/share/man/man1/tippe-$v.1
+    page=$P/share/man/man1/tippe-$v.1.gz
     check "tippe-$v.1 is installed" test -f "$page" || continue
     MANWIDTH=200 man -l "$page" 2>/dev/null >man.txt
     for o in $("$tippe" "$v" --help | grep -oE '^  --[a-z0-9-]+' | tr -d ' '); do
