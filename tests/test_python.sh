@@ -77,4 +77,16 @@ except tippe.TippeError as e:
 else:
     raise SystemExit("no exception")
 PY
+# pip install from the tree (Debian's pip, offline: no build isolation, no index),
+# from a copy so that the build's litter stays out of the checkout
+if $py -m pip --version >/dev/null 2>&1 && $py -c 'import setuptools, wheel' 2>/dev/null; then
+    cp -r python "$tmp/src"
+    $py -m pip install --no-build-isolation --no-deps --no-index --target "$tmp/site" "$tmp/src" \
+        >"$tmp/pip.log" 2>&1
+    check "pip install ./python" test $? -eq 0 || tail -5 "$tmp/pip.log"
+    (cd "$tmp" && PYTHONPATH=$tmp/site $py -c 'import tippe, sys; assert tippe.__file__.startswith(sys.argv[1]); print(tippe.sweep(sys.argv[2]))' "$tmp/site" "$OLDPWD/$f") >"$tmp/pip.txt" 2>&1
+    check "... and the module it installed runs" grep -Eq "^IIb +8\.689 +16\.360" "$tmp/pip.txt" || cat "$tmp/pip.txt"
+else
+    echo "SKIPPED: pip install ./python (python3-pip, python3-setuptools, python3-wheel)"
+fi
 finish
