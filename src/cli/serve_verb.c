@@ -21,7 +21,7 @@ int tippe_cli_serve(int argc, char **argv)
          .help = "address and port to listen on (port 0: a free one). Any address but\n"
                  "127.0.0.1 and [::1] needs the access token printed in the URL at start"},
         {.name = "designs", .kind = TIPPE_CLI_STRING, .value = &o.designs_dir, .arg = "DIR",
-         .def = "the installed designs (PREFIX/share/tippe/designs; in a build tree the checkout's designs/)",
+         .def = "PREFIX/share/tippe/designs (a build tree: designs/)",
          .help = "the shipped designs the page lists, with their materials table and\n"
                  "catalogue: the only files the server reads"},
         {.name = "workers", .kind = TIPPE_CLI_LONG, .value = &threads, .arg = "N", .min = 1,

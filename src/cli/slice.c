@@ -44,7 +44,7 @@ static int slice_parse(slice_args *a, int argc, char **argv)
          .help = "output directory: the 3MF, the G-code and the slicer's log\n"
                  "(created if missing; its parent must exist)"},
         {.name = "profile", .kind = TIPPE_CLI_STRING, .value = &a->profile, .arg = "FILE.ini",
-         .def = "the shipped slicer/prusa-pla-0.4mm.ini (designs/ or PREFIX/share/tippe/designs/)",
+         .def = "the shipped designs/slicer/prusa-pla-0.4mm.ini",
          .help = "a PrusaSlicer config (File > Export > Export Config); the 3MF's\n"
                  "per-object settings (layers, perimeters, infill, pattern) win over it"},
         {.name = "slicer", .kind = TIPPE_CLI_STRING, .value = &a->slicer, .arg = "PROGRAM",
