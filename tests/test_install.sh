@@ -48,6 +48,17 @@ check "no table anywhere: exit 2" test $? -eq 2
 check "... naming the field that needs one" grep -q "lonely/shell-rod-nylon.json: parts\[[0-9]\].material: '.*' needs a materials table: there is no lonely/materials.json beside the design and no installed one" err
 mv "$tmp/away.json" "$P/share/tippe/designs/materials.json"
 
+# tippe serve without --designs lists the installed designs (a port of its own; stopped by timeout)
+timeout 8 "$P/bin/tippe" serve --listen 127.0.0.1:0 >serve.out 2>&1 &
+serve_pid=$!
+for _ in 1 2 3 4 5 6 7 8 9 10; do grep -q "http://" serve.out && break; sleep 0.3; done
+url=$(grep -o "http://[^ ]*" serve.out | head -1)
+check "installed serve lists the installed designs" python3 -c 'import json, sys, urllib.request
+d = json.load(urllib.request.urlopen(sys.argv[1] + "api/designs", timeout=5))
+assert "m12-setscrew" in [x["name"] for x in d["designs"]], d' "$url"
+kill "$serve_pid" 2>/dev/null
+wait "$serve_pid" 2>/dev/null
+
 # man pages: tippe(1) and one per verb, each naming its options as --help does
 verbs=$("$tippe" --help | awk '/^verbs:/{v=1;next} v&&/^  [a-z]/{print $1} /^$/&&v&&n++{v=0}')
 check "tippe.1 is installed" test -f "$P/share/man/man1/tippe.1.gz"
