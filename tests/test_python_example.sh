@@ -19,6 +19,6 @@ check "docs/python.md holds the example" grep -q "d.check(15)" "$tmp/example.py"
 check "the example runs" test $? -eq 0 || cat "$tmp/err"
 # 8 x 5 inches at 100 dpi
 check "it draws an 800 x 500 PNG" $py -c 'import struct,sys; b=open(sys.argv[1],"rb").read(24); assert b[:8]==b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", b[16:24])==(800, 500)' "$tmp/zones-and-theta.png"
-cp "$tmp/zones-and-theta.png" "$tmp/keep.png" 2>/dev/null
+# TIPPE_KEEP_PNG=FILE keeps the figure (docs/img/python-zones-theta.png is made so)
 [ -n "${TIPPE_KEEP_PNG:-}" ] && cp "$tmp/zones-and-theta.png" "$TIPPE_KEEP_PNG"
 finish
