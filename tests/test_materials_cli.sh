@@ -28,10 +28,23 @@ check "materials text fits 100 columns" bash -c '! awk "length > 100" "$1" | gre
 "$tippe" materials designs/m12-setscrew.json >"$tmp/d.txt"
 check "a design's table is the one it reads" grep -q "the table this design reads" "$tmp/d.txt"
 
+# A design without a "materials" field and without materials.json beside it reads
+# the shipped table (here the checkout's designs/), and says so; one that names a
+# table that is missing is refused.
 mkdir -p "$tmp/lonely"
 cp designs/m12-setscrew.json "$tmp/lonely/"
-expect_fail "a design whose table is missing" 2 "$tmp/lonely/materials.json" "does not exist" \
-    "copy designs/materials.json there" -- materials "$tmp/lonely/m12-setscrew.json"
+"$tippe" materials "$tmp/lonely/m12-setscrew.json" >"$tmp/l.txt" 2>&1
+check "a lonely design's table is the shipped one" grep -q "^materials table $PWD/designs/materials.json" "$tmp/l.txt"
+check "... and the listing says why" grep -q "no materials.json beside it" "$tmp/l.txt"
+"$tippe" eval "$tmp/lonely/m12-setscrew.json" --z2 5 --json >"$tmp/l.json" 2>"$tmp/l.err"
+check "eval of a lonely design exits 0" test $? -eq 0
+check "... with a note naming the shipped table" grep -q "note: $tmp/lonely/m12-setscrew.json: materials: no materials.json beside the design: its materials are those of the shipped table $PWD/designs/materials.json" "$tmp/l.err"
+"$tippe" eval designs/m12-setscrew.json --z2 5 --json >"$tmp/s.json"
+check "... and the same numbers as beside its table" python3 -c 'import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); assert a["mass_kg"] == b["mass_kg"] and a["A_kg_m2"] == b["A_kg_m2"], (a, b)' "$tmp/l.json" "$tmp/s.json"
+python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); d["materials"]="mine.json"; json.dump(d, open(sys.argv[2], "w"))' designs/m12-setscrew.json "$tmp/lonely/named.json"
+expect_fail "a design whose named table is missing" 2 "$tmp/lonely/mine.json" "does not exist" \
+    "copy designs/materials.json there" -- materials "$tmp/lonely/named.json"
+expect_fail "eval of a design whose named table is missing names the field" 2 "materials" "mine.json" -- eval "$tmp/lonely/named.json" --z2 5
 expect_fail "a table that does not exist" 2 "cannot open" -- materials "$tmp/none.json"
 printf '{"goo": {"density_g_cm3": -1, "source": "x", "printable": false}}\n' >"$tmp/bad.json"
 expect_fail "a bad density" 2 "goo.density_g_cm3" "must be positive" -- materials "$tmp/bad.json"

@@ -34,6 +34,15 @@ fi
 if [ "${CI:-}" = "true" ] || [ "${TIPPE_WITH_FUZZ:-}" = "1" ]; then
   TIPPE_DEBS+=(clang libclang-rt-dev)
 fi
+# CI also builds, lints and installs the .deb and draws docs/python.md's figure
+# (tests/test_deb.sh, tests/test_python_example.sh): lintian and Matplotlib; man-db
+# (man -w) and dpkg-dev (dpkg-shlibdeps) come with build-essential. Measured on this
+# machine with the list above installed: 150 packages (lintian's Perl, Matplotlib's
+# fonts and SymPy); test_deb takes ~35 s (apt install and remove included), the
+# example ~5 s. Users get them only if they ask (TIPPE_WITH_PACKAGING=1).
+if [ "${CI:-}" = "true" ] || [ "${TIPPE_WITH_PACKAGING:-}" = "1" ]; then
+  TIPPE_DEBS+=(lintian python3-matplotlib man-db)
+fi
 missing=()
 for p in "${TIPPE_DEBS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

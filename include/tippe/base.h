@@ -72,6 +72,15 @@ int tippe_file_read(const char *path, size_t max_bytes, const char *what, char *
 typedef int (*tippe_file_read_check)(const char *path, const char *what, tippe_error *err);
 void tippe_file_set_read_check(tippe_file_read_check check);
 
+/* ---- the shipped data ---- */
+/* The folder of the shipped designs and tables (materials.json, catalogue.json,
+ * scenarios/, slicer/) into buf: in a build tree, the checkout's designs/; else
+ * the installed PREFIX/share/tippe/designs, found from the file running this code
+ * (the tippe command in PREFIX/bin or libtippe.so in PREFIX/lib/...: an install
+ * moved elsewhere still finds its data), else the configured prefix's. Returns
+ * 1 if found, 0 if none holds materials.json (buf then lists where it looked). */
+int tippe_file_shipped_dir(char *buf, size_t size);
+
 /* ---- reports and safe files ---- */
 /* Report: output files that appear whole or not at all, and never
  * cost a user an old file.

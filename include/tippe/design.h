@@ -284,6 +284,11 @@ void tippe_design_caps_json(struct cJSON *o, const tippe_design_cap caps[2]);
  * returns 0 past the last. (A sphere radius outside 1 .. 1000 mm and a density
  * above osmium's are errors at load, with the likely unit.) */
 int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size);
+/* Note i (0, 1, ...) about how a design that loaded was read, not a likely
+ * mistake: a design without a "materials" field and without materials.json
+ * beside it reads the shipped table (installed, or the checkout's designs/), and
+ * the note names it. Writes it into buf and returns 1, or returns 0 past the last. */
+int tippe_design_note(const tippe_design *d, int i, char *buf, size_t size);
 
 /* The solid of part i, for exporters that rebuild its shape (mm). Fields that
  * the shape does not use are 0. clip_radius_mm is the ball the part is

@@ -408,4 +408,29 @@ double tippe_sweep_check_law_energy_lost(const tippe_sweep_check_law *l);
 struct cJSON *tippe_sweep_check_laws_json(const tippe_sweep_check_law *l, int n,
                                           const char *const *sets, int n_sets);
 
+/* ==== the reports as JSON text, for bindings (python/tippe; src/sweep/sweep_text.c) ====
+ * Each fills *out with the JSON text the command prints with --json (the same
+ * builders and printer, so the numbers agree to the last digit; "set" lists the
+ * design's overrides), to be freed with tippe_sweep_text_free; *out is NULL on
+ * failure, with err set (err->field "z2_mm" or "n" when that was wrong).
+ *   eval:   tippe eval --json at z2_mm;
+ *   sweep:  tippe sweep --json over [from_mm, to_mm] (from >= to: the stated
+ *           travel), bands and robust widths included;
+ *   check:  tippe check --json of the central launch at z2_mm and spin_rad_s with
+ *           the command's default options, plus "trajectory": {t_s, theta_rad,
+ *           theta_dot_rad_s, phi_dot_rad_s, spin_rad_s, Rn_N, E_J, D_J, J_kg_m3_s},
+ *           the samples tippe check --csv writes;
+ *   launch: n hand launches at z2_mm drawn with seed as tippe launch draws them
+ *           (default options): "counts" by verdict (tippe launch --json's) and
+ *           "launches" {verdict, spin_rad_s, theta0_rad, t_s, theta_final_rad,
+ *           spin_final_rad_s, t_flip_s}, one entry per launch. */
+int tippe_sweep_text_eval(const tippe_design *d, double z2_mm, char **out, tippe_error *err);
+int tippe_sweep_text_sweep(const tippe_design *d, double from_mm, double to_mm, char **out,
+                           tippe_error *err);
+int tippe_sweep_text_check(const tippe_design *d, double z2_mm, double spin_rad_s, char **out,
+                           tippe_error *err);
+int tippe_sweep_text_launch(const tippe_design *d, double z2_mm, long n, uint64_t seed,
+                            char **out, tippe_error *err);
+void tippe_sweep_text_free(char *text);
+
 #endif

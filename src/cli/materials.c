@@ -59,7 +59,7 @@ static void print_table(const tippe_materials *t, const char *file, const char *
            "sold in it\n(what tippe build proposes for a screw in a thread); E, nu: the elastic "
            "constants of the\nHertz patch (--friction patch), with their source in the JSON "
            "(--json). A design reads the\ntable its \"materials\" field names, relative to the "
-           "design file (default materials.json\nnext to it).\n");
+           "design file (default materials.json\nnext to it, else the shipped table).\n");
 }
 
 /* The table to show: FILE (a table or a design), else the repository's. Fills
@@ -71,6 +71,13 @@ static int find_table(const char *arg, char *file, size_t size, const char **why
         /* a design names its table; anything else is taken as a table */
         if (tippe_design_materials_file(arg, file, size, &err) == TIPPE_OK) {
             *why = "the table this design reads";
+            char beside[1024];
+            const char *slash = strrchr(arg, '/');
+            snprintf(beside, sizeof beside, "%.*smaterials.json", slash ? (int)(slash - arg + 1) : 0,
+                     arg);
+            if (strcmp(file, beside) && access(beside, F_OK) != 0 &&
+                strstr(file, "/materials.json"))
+                *why = "the shipped table this design reads: there is no materials.json beside it";
             if (access(file, F_OK) == 0)
                 return 0;
             fprintf(stderr,
@@ -85,20 +92,22 @@ static int find_table(const char *arg, char *file, size_t size, const char **why
         *why = "as given";
         return 0;
     }
-    static const char *const candidates[] = {"designs/materials.json",
-                                              TIPPE_SOURCE_DIR "/designs/materials.json"};
-    for (int i = 0; i < 2; i++)
-        if (access(candidates[i], F_OK) == 0) {
-            snprintf(file, size, "%s", candidates[i]);
-            *why = i == 0 ? "the shipped table, found as designs/materials.json here"
-                          : "the shipped table of the source tree tippe was built from";
-            return 0;
-        }
+    if (access("designs/materials.json", F_OK) == 0) {
+        snprintf(file, size, "designs/materials.json");
+        *why = "the shipped table, found as designs/materials.json here";
+        return 0;
+    }
+    char dir[900];
+    if (tippe_file_shipped_dir(dir, sizeof dir) && size > sizeof dir + 16) {
+        snprintf(file, size, "%.900s/materials.json", dir);
+        *why = "the shipped table (installed, or of the checkout tippe was built from)";
+        return 0;
+    }
     fprintf(stderr,
             "tippe materials: no materials table found: looked for designs/materials.json here "
-            "and in %s/designs/.\nRun tippe from the repository root, or name a table or a "
-            "design: tippe materials FILE.json (the format: docs/design-format.md).\n",
-            TIPPE_SOURCE_DIR);
+            "and in %s.\nName a table or a design: tippe materials FILE.json (the format: "
+            "docs/design-format.md).\n",
+            dir);
     return 2;
 }
 
@@ -116,7 +125,7 @@ int tippe_cli_materials(int argc, char **argv)
         .about = "Lists a materials table: each material's name, density (g/cm^3), whether it\n"
                  "can be printed, and where its density comes from; and says which file that\n"
                  "is. Given a design, the table the design reads; given nothing, the shipped\n"
-                 "table (designs/materials.json).",
+                 "table (designs/materials.json here, else the installed one).",
         .after = "Exit status: 0 ok, 2 no table or a bad one (the message says which file\n"
                  "and field). The format: docs/design-format.md.",
         .opts = opts,

@@ -319,4 +319,6 @@ void tippe_cli_design_warnings(const char *verb, const tippe_design *d)
     char msg[512];
     for (int i = 0; tippe_design_warning(d, i, msg, sizeof msg); i++)
         fprintf(stderr, "tippe %s: warning: %s: %s\n", verb, tippe_design_path(d), msg);
+    for (int i = 0; tippe_design_note(d, i, msg, sizeof msg); i++)
+        fprintf(stderr, "tippe %s: note: %s: %s\n", verb, tippe_design_path(d), msg);
 }

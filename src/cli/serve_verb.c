@@ -21,7 +21,7 @@ int tippe_cli_serve(int argc, char **argv)
          .help = "address and port to listen on (port 0: a free one). Any address but\n"
                  "127.0.0.1 and [::1] needs the access token printed in the URL at start"},
         {.name = "designs", .kind = TIPPE_CLI_STRING, .value = &o.designs_dir, .arg = "DIR",
-         .def = "the repository's designs/",
+         .def = "PREFIX/share/tippe/designs (a build tree: designs/)",
          .help = "the shipped designs the page lists, with their materials table and\n"
                  "catalogue: the only files the server reads"},
         {.name = "workers", .kind = TIPPE_CLI_LONG, .value = &threads, .arg = "N", .min = 1,
@@ -62,8 +62,15 @@ int tippe_cli_serve(int argc, char **argv)
     o.threads = (int)threads;
     o.queue = (int)queue;
     o.budget_s = budget;
-    if (!o.designs_dir)
-        o.designs_dir = TIPPE_SOURCE_DIR "/designs";
+    static char shipped[4096];
+    if (!o.designs_dir) {
+        if (!tippe_file_shipped_dir(shipped, sizeof shipped)) {
+            fprintf(stderr, "tippe serve: no shipped designs found (looked in %s): name a folder "
+                            "with --designs DIR\n", shipped);
+            return 2;
+        }
+        o.designs_dir = shipped;
+    }
     o.log = stderr;
     /* The build endpoint's files are written and renamed at once, not kept for
      * the end of the run as a verb's outputs are. */

@@ -28,7 +28,6 @@
 extern char **environ;
 
 static const char *const VERB = "slice";
-#define SHIPPED_PROFILE TIPPE_SOURCE_DIR "/designs/slicer/prusa-pla-0.4mm.ini"
 
 typedef struct {
     const char *path, *dir, *profile, *slicer;
@@ -45,7 +44,7 @@ static int slice_parse(slice_args *a, int argc, char **argv)
          .help = "output directory: the 3MF, the G-code and the slicer's log\n"
                  "(created if missing; its parent must exist)"},
         {.name = "profile", .kind = TIPPE_CLI_STRING, .value = &a->profile, .arg = "FILE.ini",
-         .def = "designs/slicer/prusa-pla-0.4mm.ini",
+         .def = "the shipped designs/slicer/prusa-pla-0.4mm.ini",
          .help = "a PrusaSlicer config (File > Export > Export Config); the 3MF's\n"
                  "per-object settings (layers, perimeters, infill, pattern) win over it"},
         {.name = "slicer", .kind = TIPPE_CLI_STRING, .value = &a->slicer, .arg = "PROGRAM",
@@ -183,7 +182,11 @@ int tippe_cli_slice(int argc, char **argv)
                 a.slicer);
         return 2;
     }
-    const char *profile = a.profile ? a.profile : SHIPPED_PROFILE;
+    /* the shipped profile: the checkout's, or the installed one */
+    char shipped[4096 + 64];
+    if (!a.profile && tippe_file_shipped_dir(shipped, sizeof shipped - 64))
+        strcat(shipped, "/slicer/prusa-pla-0.4mm.ini");
+    const char *profile = a.profile ? a.profile : shipped;
     if (access(profile, R_OK) != 0) {
         fprintf(stderr, "tippe slice: --profile %s: %s\n", profile, strerror(errno));
         return 2;

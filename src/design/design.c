@@ -216,6 +216,26 @@ static int resolve_materials(const tippe_json_reader *c, const char *path, const
         snprintf(mat_file, sizeof mat_file, "%s", mat_rel);
     else
         snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
+    /* No "materials" field and no materials.json beside the design: the shipped
+     * table (installed, or the checkout's designs/), said in a note
+     * (tippe_design_note); none at all is the first material's error. */
+    if (!d->materials_dir && !has_mat_file) {
+        char beside[sizeof mat_file], looked[sizeof mat_file];
+        snprintf(beside, sizeof beside, "%s", mat_file);
+        if (!tippe_design_default_table(beside, looked, sizeof looked, &d->mat_fallback)) {
+            int i = 0;
+            while (d->parts[i].is_void || !d->parts[i].material[0])
+                i++;
+            char pth[64];
+            snprintf(pth, sizeof pth, "parts[%d].material", i);
+            return tippe_json_fail(c, pth,
+                                   "'%s' needs a materials table: there is no %s beside the "
+                                   "design and no installed one (looked in %s); name one in "
+                                   "the design's \"materials\" field",
+                                   d->parts[i].material, beside, looked);
+        }
+        snprintf(mat_file, sizeof mat_file, "%s", looked);
+    }
     cJSON *table = NULL;
     int rc = tippe_design_source_materials(d, mat_file, &table) ? TIPPE_OK
                                                    : tippe_design_load_materials(mat_file, &table, c->err);
@@ -655,6 +675,17 @@ int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size)
         return 1;
     }
     return 0;
+}
+
+int tippe_design_note(const tippe_design *d, int i, char *buf, size_t size)
+{
+    if (i != 0 || !d->mat_fallback)
+        return 0;
+    snprintf(buf, size,
+             "materials: no materials.json beside the design: its materials are those of the "
+             "shipped table %s",
+             d->mat_file);
+    return 1;
 }
 
 void tippe_design_protrusion_text(const tippe_design_protrusion *p, char *buf, size_t size)

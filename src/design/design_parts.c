@@ -5,10 +5,12 @@
 #include <cjson/cJSON.h>
 #include <gsl/gsl_errno.h>
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* A density above the densest solid's: refused, with the number it would be
  * if it was typed in kg/m^3. */
@@ -634,6 +636,21 @@ void tippe_materials_free(tippe_materials *t)
     free(t);
 }
 
+int tippe_design_default_table(const char *beside, char *buf, size_t size, int *fell_back)
+{
+    *fell_back = 0;
+    if (access(beside, F_OK) == 0)
+        return snprintf(buf, size, "%s", beside) < (int)size;
+    char dir[PATH_MAX];
+    int found = tippe_file_shipped_dir(dir, sizeof dir);
+    if (found) {
+        *fell_back = 1;
+        return snprintf(buf, size, "%s/materials.json", dir) < (int)size;
+    }
+    snprintf(buf, size, "%s", dir);
+    return 0;
+}
+
 int tippe_design_materials_file(const char *design_path, char *buf, size_t size,
                                 tippe_error *err)
 {
@@ -653,6 +670,12 @@ int tippe_design_materials_file(const char *design_path, char *buf, size_t size,
                                                    (int)(slash - design_path), design_path,
                                                    rel)) >= (int)size)
         rc = tippe_error_set(err, TIPPE_EINPUT, "%s: materials: path too long", design_path);
+    /* no "materials" field and no table beside: the shipped one, as at load */
+    int given = cJSON_GetObjectItemCaseSensitive(root, "materials") != NULL, fell_back = 0;
+    char shipped[PATH_MAX + 32];
+    if (!rc && !given && tippe_design_default_table(buf, shipped, sizeof shipped, &fell_back) &&
+        fell_back)
+        snprintf(buf, size, "%s", shipped);
     cJSON_Delete(root);
     free(c);
     return rc;

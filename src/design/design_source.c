@@ -22,6 +22,10 @@ int tippe_design_source_open(const char *path, tippe_design_source **out, tippe_
     int rc = tippe_design_load(path, NULL, 0, &d, err);
     if (rc)
         return rc;
+    /* the table that load read (beside the file, or the shipped one) */
+    char resolved[sizeof((tippe_design_source *)0)->mat_file] = "";
+    if (d->mat_file)
+        snprintf(resolved, sizeof resolved, "%s", d->mat_file);
     tippe_design_free(d);
     tippe_design_source *s = calloc(1, sizeof *s);
     tippe_json_reader *c = tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, NULL);
@@ -40,6 +44,8 @@ int tippe_design_source_open(const char *path, tippe_design_source **out, tippe_
         snprintf(s->mat_file, sizeof s->mat_file, "%s", mat_rel);
     else
         snprintf(s->mat_file, sizeof s->mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
+    if (resolved[0])
+        snprintf(s->mat_file, sizeof s->mat_file, "%s", resolved);
     tippe_error ignored = {0};
     /* A design with inline densities only has no table: then none is cached. */
     if (tippe_design_load_materials(s->mat_file, &s->materials, &ignored))

@@ -119,6 +119,7 @@ struct tippe_design {
     size_t text_len;
     char *catalogue; /* "catalogue": the hardware catalogue file, resolved; NULL: not given */
     char *mat_file;  /* the materials table read, resolved; NULL: no part names a material */
+    int mat_fallback; /* 1: no table beside the file, the shipped one was read (a note) */
     double radius_mm;
     double travel_mm[2], contact_mm[2];
     char contact_limit[2][256];
@@ -188,6 +189,11 @@ extern const char *const tippe_design_print_keys[];
 extern const char *const tippe_design_print_string_keys[];
 int tippe_design_parse_part(const tippe_json_reader *c, const cJSON *obj, int index, part *p);
 int tippe_design_load_materials(const char *mat_file, cJSON **out, tippe_error *err);
+/* The table of a design whose "materials" field is absent, beside: the file
+ * beside the design (its path) if it exists, else the shipped table
+ * (tippe_file_shipped_dir) with *fell_back = 1. Returns 0 when neither exists
+ * (buf then says where the shipped one was looked for). */
+int tippe_design_default_table(const char *beside, char *buf, size_t size, int *fell_back);
 int tippe_design_lookup_material(const tippe_json_reader *c, const cJSON *table,
                                  const char *mat_file, const char *name, const char *path,
                                  double *density, int *printable, double *E_pa, double *nu);

@@ -8,7 +8,13 @@
 #include <string.h>
 #include <unistd.h>
 
-/* The module's path: next to the running executable, as tippe-mpi is found. */
+#ifndef TIPPE_BIN_TO_MODULES
+#define TIPPE_BIN_TO_MODULES "../lib/tippe"
+#endif
+
+/* The module's path: next to the running executable (a build tree, as
+ * tippe-mpi is found), else in the installed module folder relative to it
+ * (PREFIX/bin/tippe opens PREFIX/lib/tippe/tippe-plot.so; CMakeLists.txt). */
 static int module_path(const tippe_module *m, char *path, size_t size)
 {
     char exe[PATH_MAX];
@@ -19,7 +25,17 @@ static int module_path(const tippe_module *m, char *path, size_t size)
     char *slash = strrchr(exe, '/');
     if (slash)
         *slash = '\0';
-    return snprintf(path, size, "%s/tippe-%s.so", slash ? exe : ".", m->name) < (int)size;
+    const char *dir = slash ? exe : ".";
+    if (snprintf(path, size, "%s/tippe-%s.so", dir, m->name) >= (int)size)
+        return 0;
+    if (access(path, F_OK) == 0)
+        return 1;
+    char installed[PATH_MAX + 64];
+    if (snprintf(installed, sizeof installed, "%s/" TIPPE_BIN_TO_MODULES "/tippe-%s.so", dir,
+                 m->name) < (int)sizeof installed &&
+        access(installed, F_OK) == 0)
+        return snprintf(path, size, "%s", installed) < (int)size;
+    return 1; /* neither: the error names the path beside the program */
 }
 
 static void module_open(tippe_module *m)
