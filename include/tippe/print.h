@@ -432,6 +432,11 @@ int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
                              const tippe_gcode_options *opt, tippe_gcode_body *out,
                              tippe_error *err);
 
+/* The same body at another density (g/cm^3): every mass scales with it.
+ * Exact only for a body read with one density for every tool (the options'
+ * own, override_density): the reader's cache rescales a body read once. */
+void tippe_gcode_body_set_density(tippe_gcode_body *b, double density_g_cm3);
+
 /* The largest G-code file read: PrusaSlicer's G-code of a 60 mm ball at
  * 0.1 mm layers is about 30 MiB; eight times that leaves room for any top. */
 #define TIPPE_GCODE_MAX_MIB 256

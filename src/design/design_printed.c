@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* The print model's description of p's own region (SI). */
 static tippe_solid print_solid(const part *p)
@@ -188,6 +189,81 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
     return TIPPE_OK;
 }
 
+/* A G-code is the same part however often a command loads the design: the
+ * tolerance bands and an optimiser reload it with another radius, density or
+ * infill (about 100 loads for one sweep of the M12), and a 55 MB G-code takes a
+ * third of a second to read. So the bodies read are kept, keyed by the file's
+ * identity and change time (device, inode, size, mtime to the nanosecond) and
+ * by the options but the density, whose masses scale with it
+ * (tippe_gcode_body_set_density). A file rewritten in place gets a new mtime
+ * and is read again. A content hash would key across commands too, but the
+ * read itself is a fraction of a second (docs/printing.md): it does not pay. */
+#define GCODE_CACHE 4
+typedef struct {
+    int used;
+    dev_t dev;
+    ino_t ino;
+    off_t size;
+    struct timespec mtime;
+    tippe_gcode_options opt; /* density zeroed: not part of the key */
+    tippe_gcode_body body;
+} gcode_entry;
+static gcode_entry gcode_cache[GCODE_CACHE];
+static int gcode_next;
+static pthread_mutex_t gcode_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static int same_gcode_options(const tippe_gcode_options *a, const tippe_gcode_options *b)
+{
+    return a->filament_diameter_mm == b->filament_diameter_mm &&
+           a->override_diameter == b->override_diameter &&
+           a->override_density == b->override_density && a->volumetric_e == b->volumetric_e &&
+           a->bead == b->bead;
+}
+
+/* tippe_gcode_read through the cache; the density must be the options' own
+ * (override_density), one density for every tool, for a hit to rescale. */
+static int gcode_read_cached(const char *file, const tippe_gcode_options *opt,
+                             tippe_gcode_body *out, tippe_error *err)
+{
+    struct stat st;
+    tippe_gcode_options key = *opt;
+    key.density_g_cm3 = 0;
+    int keyed = opt->override_density && opt->density_g_cm3 > 0 && stat(file, &st) == 0 &&
+                S_ISREG(st.st_mode);
+    if (keyed) {
+        pthread_mutex_lock(&gcode_lock);
+        for (int k = 0; k < GCODE_CACHE; k++) {
+            const gcode_entry *e = &gcode_cache[k];
+            if (e->used && e->dev == st.st_dev && e->ino == st.st_ino && e->size == st.st_size &&
+                e->mtime.tv_sec == st.st_mtim.tv_sec && e->mtime.tv_nsec == st.st_mtim.tv_nsec &&
+                same_gcode_options(&e->opt, &key)) {
+                *out = e->body;
+                pthread_mutex_unlock(&gcode_lock);
+                snprintf(out->source, sizeof out->source, "%.*s", (int)sizeof out->source - 1,
+                         file);
+                tippe_gcode_body_set_density(out, opt->density_g_cm3);
+                return TIPPE_OK;
+            }
+        }
+        pthread_mutex_unlock(&gcode_lock);
+    }
+    int rc = tippe_gcode_read(file, opt, out, err);
+    if (rc || !keyed)
+        return rc;
+    pthread_mutex_lock(&gcode_lock);
+    gcode_entry *e = &gcode_cache[gcode_next];
+    gcode_next = (gcode_next + 1) % GCODE_CACHE;
+    e->used = 1;
+    e->dev = st.st_dev;
+    e->ino = st.st_ino;
+    e->size = st.st_size;
+    e->mtime = st.st_mtim;
+    e->opt = key;
+    e->body = *out;
+    pthread_mutex_unlock(&gcode_lock);
+    return TIPPE_OK;
+}
+
 /* Unit-density moments of printed part i as printed: the part minus its voids
  * (closed forms) less (1 - infill) x its sparse core (print model). Sets the
  * part's infill (calibrated from a weighed mass when one is given), its solid
@@ -224,7 +300,7 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     opt.override_density = 1;
     tippe_gcode_body body;
     tippe_error gerr = {0};
-    int rc = tippe_gcode_read(file, &opt, &body, &gerr);
+    int rc = gcode_read_cached(file, &opt, &body, &gerr);
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", gerr.msg)
                                   : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,

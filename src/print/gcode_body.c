@@ -101,14 +101,19 @@ double tippe_gcode_fallback_height(const tippe_gcode_acc *a, double z_mm)
 
 /* ------------------------------------------------------------ deposits */
 
+/* Plain comparisons, not fmin/fmax (library calls, a tenth of the reader's time);
+ * no value here is a NaN (the reader refuses non-numbers). */
+static inline double lesser(double a, double b) { return b < a ? b : a; }
+static inline double greater(double a, double b) { return b > a ? b : a; }
+
 static void grow(double lo[3], double hi[3], double x, double y, double z, double r)
 {
-    lo[0] = fmin(lo[0], x - r);
-    hi[0] = fmax(hi[0], x + r);
-    lo[1] = fmin(lo[1], y - r);
-    hi[1] = fmax(hi[1], y + r);
-    lo[2] = fmin(lo[2], z);
-    hi[2] = fmax(hi[2], z);
+    lo[0] = lesser(lo[0], x - r);
+    hi[0] = greater(hi[0], x + r);
+    lo[1] = lesser(lo[1], y - r);
+    hi[1] = greater(hi[1], y + r);
+    lo[2] = lesser(lo[2], z);
+    hi[2] = greater(hi[2], z);
 }
 
 void tippe_gcode_deposit(tippe_gcode_acc *a, int f, const double p0[3], const double p1[3], double vol,
@@ -123,8 +128,9 @@ void tippe_gcode_deposit(tippe_gcode_acc *a, int f, const double p0[3], const do
         a->have_ref = 1;
     }
     double dx = p1[0] - p0[0], dy = p1[1] - p0[1], dz = p1[2] - p0[2];
-    double len = sqrt(dx * dx + dy * dy + dz * dz), lxy = hypot(dx, dy);
-    double w = h > 0 && len > 0 ? fmin(vol / (len * h), GC_MAX_BEAD_WIDTH_MM) : 0;
+    /* sqrt, not hypot: a bed's lengths neither overflow nor underflow */
+    double len = sqrt(dx * dx + dy * dy + dz * dz), lxy = sqrt(dx * dx + dy * dy);
+    double w = h > 0 && len > 0 ? lesser(vol / (len * h), GC_MAX_BEAD_WIDTH_MM) : 0;
     int box = a->bead == TIPPE_GCODE_BEAD_BOX;
     double shift = box ? h / 2 : 0;
     double u[3], v[3];
@@ -165,8 +171,8 @@ void tippe_gcode_deposit(tippe_gcode_acc *a, int f, const double p0[3], const do
     /* the beads' extents: w/2 sideways, from the nozzle down by h */
     grow(a->lo[f], a->hi[f], p0[0], p0[1], p0[2], w / 2);
     grow(a->lo[f], a->hi[f], p1[0], p1[1], p1[2], w / 2);
-    a->lo[f][2] = fmin(a->lo[f][2], fmin(p0[2], p1[2]) - h);
-    a->zmin_nozzle[f] = fmin(a->zmin_nozzle[f], fmin(p0[2], p1[2]));
+    a->lo[f][2] = lesser(a->lo[f][2], lesser(p0[2], p1[2]) - h);
+    a->zmin_nozzle[f] = lesser(a->zmin_nozzle[f], lesser(p0[2], p1[2]));
 
     if (f != TIPPE_GCODE_CUSTOM && !(f == TIPPE_GCODE_UNLABELLED && a->labelled))
         levels_insert(a, &a->all, p1[2]);
@@ -237,12 +243,12 @@ static int clusters(tippe_gcode_acc *a, int unlab_body, tippe_gcode_body *out)
         const tippe_gcode_seg *s = &a->seg[k];
         if (s->feature == TIPPE_GCODE_UNLABELLED && !unlab_body)
             continue;
-        double len = hypot(s->x1 - s->x0, s->y1 - s->y0);
+        double ux = s->x1 - s->x0, uy = s->y1 - s->y0, len = sqrt(ux * ux + uy * uy);
         int steps = (int)ceil(len / (cell / 2));
         for (int i = 0; i <= steps; i++) {
             double t = steps ? (double)i / steps : 0;
-            double x = s->x0 + t * (s->x1 - s->x0), y = s->y0 + t * (s->y1 - s->y0);
-            label[CELL(fmin(fmax(x, x0), x1), fmin(fmax(y, y0), y1))] = -1;
+            double x = s->x0 + t * ux, y = s->y0 + t * uy;
+            label[CELL(lesser(greater(x, x0), x1), lesser(greater(y, y0), y1))] = -1;
         }
     }
     int ncl = 0;
@@ -410,6 +416,21 @@ int tippe_gcode_acc_finish(tippe_gcode_acc *a, tippe_gcode_body *out, tippe_erro
     if (clusters(a, unlab_body, out))
         return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", out->source);
     return TIPPE_OK;
+}
+
+/* Every mass of the body is its volume times the one density (override_density). */
+void tippe_gcode_body_set_density(tippe_gcode_body *b, double density_g_cm3)
+{
+    if (!(b->density_g_cm3 > 0) || b->density_g_cm3 == density_g_cm3)
+        return;
+    double k = density_g_cm3 / b->density_g_cm3;
+    for (int f = 0; f < TIPPE_GCODE_N_FEATURES; f++)
+        b->feature[f].mass_kg *= k;
+    b->excluded_mass_kg *= k;
+    b->m *= k;
+    for (int i = 0; i < 6; i++)
+        b->inertia[i] *= k;
+    b->density_g_cm3 = density_g_cm3;
 }
 
 /* ------------------------------------------------------------ the part */
