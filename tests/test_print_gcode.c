@@ -537,6 +537,44 @@ static void test_disc(void)
     CHECK(hypot(body.com[0] - 0.05, body.com[1] - 0.06) < 1e-9, "com at the centre");
     CHECK_CLOSE(body.com[2], hm / 2, 1e-12, "com in the middle of the layer");
     CHECK_CLOSE(body.feature[TIPPE_GCODE_SOLID_INFILL].width_mm, s, 1e-9, "bead width = spacing");
+
+    /* a hole of radius Rc drilled out of the disc after printing: the beads near the axis kept,
+     * the plastic inside Rc cut (gcode_cut.c); the disc less a disc, whose moments are known.
+     * The cut is the raster's midpoint rule again, over the hole's chords: (s/Rc)^{3/2} */
+    double Rc = 5, tolc = pow(s / Rc, 1.5);
+    tippe_gcode_beads near;
+    o.override_density = 1;
+    char path[] = "/tmp/tippe-disc-XXXXXX";
+    int fd = mkstemp(path);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    CHECK(f && fprintf(f, "; filament_diameter = 1.75\n%s", b.s) > 0 && fclose(f) == 0,
+          "the disc's G-code written to %s", path);
+    rc = tippe_gcode_read_beads(path, &o, Rc + 5, &body, &near, &err);
+    unlink(path);
+    CHECK(rc == TIPPE_OK && near.n > 0 && near.n < (size_t)K, "disc kept %zu of %d beads: %s",
+          near.n, K, err.msg);
+    tippe_gcode_body whole = body;
+    tippe_gcode_cut cut = {50, 60, Rc, -1, 1};
+    CHECK(tippe_gcode_cut_body(&body, &near, &cut, 1) == 0, "the cut is within the beads kept");
+    double mc = whole.m * Rc * Rc / (R * R), Rcm = Rc * 1e-3;
+    CHECK_CLOSE(body.cut_mass_kg, mc, tolc, "the hole's plastic");
+    CHECK_CLOSE(body.m, whole.m - body.cut_mass_kg, 1e-12, "the body less the cut");
+    CHECK_CLOSE(body.inertia[2], whole.inertia[2] - mc * Rcm * Rcm / 2, tolc * mc / body.m,
+                "C of the disc less the hole");
+    CHECK(hypot(body.com[0] - 0.05, body.com[1] - 0.06) < 1e-9 * 0.05, "com stays at the centre");
+    CHECK(body.cut_hole_radius_mm[0] < 0, "raster lines cross the axis: no hole (%g)",
+          body.cut_hole_radius_mm[0]);
+    /* a cut over the bead's lower half takes half of it */
+    body = whole;
+    cut.z_hi_mm = 0.1;
+    tippe_gcode_cut_body(&body, &near, &cut, 1);
+    CHECK_CLOSE(body.cut_mass_kg, mc / 2, tolc, "half the layer's height");
+    /* a cut the beads kept do not reach is refused */
+    body = whole;
+    cut.radius_mm = Rc + 3;
+    CHECK(tippe_gcode_cut_body(&body, &near, &cut, 1) == -1 && body.m == whole.m,
+          "a cut beyond the beads kept changes nothing");
+    tippe_gcode_beads_free(&near);
     free(b.s);
 }
 

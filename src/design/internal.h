@@ -105,6 +105,7 @@ typedef struct {
     tippe_gcode_body gcode_body;
     tippe_gcode_part gcode_part;
     double gcode_flow;
+    char gcode_note[512];   /* the G-code's hole against the design's (gcode_cut_holes), or "" */
     tippe_moments model_moments;
     double model_mass_kg;
     tippe_moments deposit, model_deposit; /* unit density: the printed part alone */

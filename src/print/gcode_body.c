@@ -48,8 +48,11 @@ void tippe_gcode_acc_free(tippe_gcode_acc *a)
     free(a->body.z);
     free(a->unlab.z);
     free(a->seg);
+    free(a->near.bead);
     a->all.z = a->body.z = a->unlab.z = NULL;
     a->seg = NULL;
+    a->near.bead = NULL;
+    a->near.n = 0;
 }
 
 /* ------------------------------------------------------------ levels */
@@ -116,6 +119,58 @@ static void grow(double lo[3], double hi[3], double x, double y, double z, doubl
     hi[2] = greater(hi[2], z);
 }
 
+/* The sums of the header for one bead (gcode_state.h). */
+void tippe_gcode_add_bead(tippe_gcode_moments *m, const double u[3], const double v[3], double dm,
+                          int box, double h, double w, double dx, double dy, double lxy)
+{
+    m->m += dm;
+    for (int i = 0; i < 3; i++)
+        m->s[i] += dm * (u[i] + v[i]) / 2;
+    static const int qi[6] = {0, 1, 2, 0, 0, 1}, qj[6] = {0, 1, 2, 1, 2, 2};
+    for (int k = 0; k < 6; k++) {
+        int i = qi[k], j = qj[k];
+        m->q[k] += dm * ((u[i] * u[j] + v[i] * v[j]) / 3 + (u[i] * v[j] + v[i] * u[j]) / 6);
+    }
+    if (box && h > 0) {
+        m->q[2] += dm * h * h / 12;
+        if (lxy > 0) {
+            double nx = -dy / lxy, ny = dx / lxy, c = dm * w * w / 12;
+            m->q[0] += c * nx * nx;
+            m->q[1] += c * ny * ny;
+            m->q[3] += c * nx * ny;
+        }
+    }
+}
+
+double tippe_gcode_distance_xy(double x, double y, const double p0[3], const double p1[3])
+{
+    double dx = p1[0] - p0[0], dy = p1[1] - p0[1], l2 = dx * dx + dy * dy;
+    double t = l2 > 0 ? ((x - p0[0]) * dx + (y - p0[1]) * dy) / l2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    double ex = p0[0] + t * dx - x, ey = p0[1] + t * dy - y;
+    return sqrt(ex * ex + ey * ey);
+}
+
+/* Keeps a body bead for later cuts (filtered to the axis's neighbourhood at the end). */
+static void keep_near(tippe_gcode_acc *a, const double p0[3], const double p1[3], double h,
+                      double w, double vol)
+{
+    tippe_gcode_beads *nb = &a->near;
+    if (nb->n == a->cap_near) {
+        size_t cap = a->cap_near ? 2 * a->cap_near : 4096;
+        tippe_gcode_near_bead *b2 = realloc(nb->bead, cap * sizeof *b2);
+        if (!b2) {
+            a->oom = 1;
+            return;
+        }
+        nb->bead = b2;
+        a->cap_near = cap;
+    }
+    nb->bead[nb->n++] = (tippe_gcode_near_bead){(float)p0[0], (float)p0[1], (float)p0[2],
+                                                (float)p1[0], (float)p1[1], (float)p1[2],
+                                                (float)h,     (float)w,     (float)vol};
+}
+
 void tippe_gcode_deposit(tippe_gcode_acc *a, int f, const double p0[3], const double p1[3], double vol,
                 double rho, double h, int count)
 {
@@ -141,24 +196,10 @@ void tippe_gcode_deposit(tippe_gcode_acc *a, int f, const double p0[3], const do
     u[2] -= shift;
     v[2] -= shift;
     double dm = vol * rho;
-    tippe_gcode_moments *m = &a->mom[f];
-    m->m += dm;
-    for (int i = 0; i < 3; i++)
-        m->s[i] += dm * (u[i] + v[i]) / 2;
-    static const int qi[6] = {0, 1, 2, 0, 0, 1}, qj[6] = {0, 1, 2, 1, 2, 2};
-    for (int k = 0; k < 6; k++) {
-        int i = qi[k], j = qj[k];
-        m->q[k] += dm * ((u[i] * u[j] + v[i] * v[j]) / 3 + (u[i] * v[j] + v[i] * u[j]) / 6);
-    }
-    if (box && h > 0) {
-        m->q[2] += dm * h * h / 12;
-        if (lxy > 0) {
-            double nx = -dy / lxy, ny = dx / lxy, c = dm * w * w / 12;
-            m->q[0] += c * nx * nx;
-            m->q[1] += c * ny * ny;
-            m->q[3] += c * nx * ny;
-        }
-    }
+    tippe_gcode_add_bead(&a->mom[f], u, v, dm, box, h, w, dx, dy, lxy);
+    if (a->keep_radius_mm > 0 && box &&
+        (f < TIPPE_GCODE_SKIRT_BRIM || (f == TIPPE_GCODE_UNLABELLED && !a->labelled)))
+        keep_near(a, p0, p1, h, w, vol);
     a->vol[f] += vol;
     a->mass[f] += dm;
     a->len[f] += len;
@@ -390,6 +431,22 @@ int tippe_gcode_acc_finish(tippe_gcode_acc *a, tippe_gcode_body *out, tippe_erro
     out->inertia[4] = -1e-6 * qc[4];
     out->inertia[5] = -1e-6 * qc[5];
     out->layer_height = 1e-3 * vol_h / out->body_volume_mm3;
+    out->cut_volume_mm3 = out->cut_mass_kg = 0;
+    for (int k = 0; k < TIPPE_GCODE_MAX_CUTS; k++)
+        out->cut_hole_radius_mm[k] = INFINITY;
+    if (a->keep_radius_mm > 0) { /* the beads near the footprint's axis, as tippe_gcode_match has it */
+        double ax = (lo[0] + hi[0]) / 2, ay = (lo[1] + hi[1]) / 2, r = a->keep_radius_mm;
+        tippe_gcode_beads *nb = &a->near;
+        size_t k = 0;
+        for (size_t j = 0; j < nb->n; j++) {
+            const tippe_gcode_near_bead *e = &nb->bead[j];
+            double p0[3] = {e->x0, e->y0, e->z0}, p1[3] = {e->x1, e->y1, e->z1};
+            if (tippe_gcode_distance_xy(ax, ay, p0, p1) < r + e->w_mm / 2)
+                nb->bead[k++] = *e;
+        }
+        nb->n = k;
+        nb->radius_mm = r;
+    }
     out->first_layer_z = 1e-3 * zmin;
 
     /* layers: the body's distinct nozzle heights (with the unlabelled ones if body) */
@@ -427,6 +484,7 @@ void tippe_gcode_body_set_density(tippe_gcode_body *b, double density_g_cm3)
     for (int f = 0; f < TIPPE_GCODE_N_FEATURES; f++)
         b->feature[f].mass_kg *= k;
     b->excluded_mass_kg *= k;
+    b->cut_mass_kg *= k;
     b->m *= k;
     for (int i = 0; i < 6; i++)
         b->inertia[i] *= k;
