@@ -126,8 +126,24 @@ assert p["model"] == "gcode" and p["gcode_generator"].startswith("PrusaSlicer"),
 g, m = p["printed_mass_kg"], p["model_mass_kg"]
 assert abs(m / g - 1) < 0.02, (m, g)
 assert abs(p["model_body_A_over_C"] - p["body_A_over_C"]) < 0.008, p
+# the build sheet's verdict for both bodies, with each behaviour's robust width
+words = ("3-in-1 and settable", "3-in-1 on paper only", "not 3-in-1")
+for side in ("sliced", "model"):
+    v = o["verdict"][side]
+    assert v["verdict"] in words, v
+    assert v["settable"] == (v["verdict"] == words[0]), v
+    w = [x for x in v["robust_width_mm"].values() if x is not None]
+    assert all(x >= 0 for x in w) and v["min_setting_mm"] > 0, v
+# printed at 15 % the M12 hangs at every Z2, by the G-code as by the model (docs/printing.md)
+if abs(p["slicer_infill"] - 0.15) < 1e-9:
+    assert o["verdict"]["sliced"]["verdict"] == o["verdict"]["model"]["verdict"] == words[2], o["verdict"]
 EOF
 done
+# the text report ends with the verdicts (the shipped design: 15 %, not 3-in-1 either way)
+"$tippe" slice designs/m12-setscrew-printed.json -o "$tmp/slice-text" >"$tmp/slice-text.out" 2>/dev/null &&
+    grep -q "^verdict  G-code: not 3-in-1" "$tmp/slice-text.out" &&
+    grep -q "^         model:  not 3-in-1" "$tmp/slice-text.out" && ok ||
+    bad "tippe slice's text does not end with the verdicts: $(tail -4 "$tmp/slice-text.out")"
 expect_fail "slice refuses a design with no printed part" 2 "no printed part" -- \
     slice designs/m12-setscrew.json -o "$tmp/none-printed"
 finish

@@ -113,9 +113,10 @@ typedef struct {
 
 struct tippe_design {
     char *path, *name;
-    /* A design loaded from memory (tippe_design_load_text): its text, kept for
-     * tippe_design_derive and _reload, and the folder of its materials table;
-     * NULL for a file. */
+    /* The design's text as first read (a file's too), kept for
+     * tippe_design_derive and _reload; and for a design loaded from memory
+     * (tippe_design_load_text) the folder of its materials table, NULL for a
+     * file. */
     char *text, *materials_dir;
     size_t text_len;
     char *catalogue; /* "catalogue": the hardware catalogue file, resolved; NULL: not given */
