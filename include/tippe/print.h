@@ -171,6 +171,18 @@ typedef struct {
  * anchors 2.5 / 12 mm, flow 1; the slicer's rules. */
 tippe_print_settings tippe_print_defaults(void);
 
+/* A slicer setting the model assumes that the print block does not give:
+ * its PrusaSlicer 2.5 key, the value the model follows and what it decides. */
+typedef struct {
+    const char *key, *value, *decides;
+} tippe_print_assumed;
+/* The settings that change the deposit and that PrusaSlicer 2.5 takes per
+ * object (PrintObjectConfig or PrintRegionConfig, PrintConfig.hpp), pinned in
+ * tippe's 3MF so that any profile slices what the model assumes; ends with a
+ * NULL key. The first layer's height and width are the print profile's alone
+ * in 2.5 (PrintConfig): the build sheet names them. */
+const tippe_print_assumed *tippe_print_assumed_settings(void);
+
 const char *tippe_print_pattern_name(int pattern);
 /* The pattern of a PrusaSlicer fill_pattern name, -1 if none. */
 int tippe_print_pattern_parse(const char *name);
