@@ -34,6 +34,33 @@ static double height_share(const tippe_gcode_near_bead *e, double lo, double hi)
     return clamp01(over / (top - bottom));
 }
 
+/* Widens [*ta, *tb] (of t in [0, 1] along p0 + t (dx, dy)) to the stretch within
+ * the cut's radius plus half the bead's width of its axis (a point: all of it). */
+static void reach(const double p0[3], double dx, double dy, double lxy, const tippe_gcode_cut *c,
+                  double w, double *ta, double *tb)
+{
+    double rr = c->radius_mm + w / 2, ox = p0[0] - c->axis_x_mm, oy = p0[1] - c->axis_y_mm;
+    if (!(lxy > 0)) {
+        if (ox * ox + oy * oy < rr * rr) {
+            *ta = 0;
+            *tb = 1;
+        }
+        return;
+    }
+    /* |o + t d|^2 = rr^2: t^2 L^2 + 2 t (o.d) + |o|^2 - rr^2 = 0 */
+    double a = lxy * lxy, b = ox * dx + oy * dy, c0 = ox * ox + oy * oy - rr * rr;
+    double disc = b * b - a * c0;
+    if (!(disc > 0))
+        return;
+    double sq = sqrt(disc), t0 = (-b - sq) / a, t1 = (-b + sq) / a;
+    t0 = t0 < 0 ? 0 : t0;
+    t1 = t1 > 1 ? 1 : t1;
+    if (t1 > t0) {
+        *ta = t0 < *ta ? t0 : *ta;
+        *tb = t1 > *tb ? t1 : *tb;
+    }
+}
+
 int tippe_gcode_cut_body(tippe_gcode_body *body, const tippe_gcode_beads *beads,
                          const tippe_gcode_cut *cut, int n_cuts)
 {
@@ -71,11 +98,18 @@ int tippe_gcode_cut_body(tippe_gcode_body *body, const tippe_gcode_beads *beads,
         if (!near)
             continue;
         double dx = p1[0] - p0[0], dy = p1[1] - p0[1], lxy = sqrt(dx * dx + dy * dy);
-        int n = (int)ceil(lxy / TIPPE_GCODE_CUT_STEP_MM);
+        /* only the stretch of the path within a cut's reach is cut: pieces there alone */
+        double ta = 1, tb = 0;
+        for (int k = 0; k < n_cuts; k++)
+            if (fz[k] > 0)
+                reach(p0, dx, dy, lxy, &cut[k], w, &ta, &tb);
+        if (!(tb > ta))
+            continue;
+        int n = (int)ceil(lxy * (tb - ta) / TIPPE_GCODE_CUT_STEP_MM);
         n = n < 1 ? 1 : n > 100000 ? 100000 : n;
-        double dm = e->volume_mm3 * rho;
+        double dm = e->volume_mm3 * rho, frac = (tb - ta) / n;
         for (int i = 0; i < n; i++) {
-            double t0 = (double)i / n, t1 = (double)(i + 1) / n, tm = (t0 + t1) / 2;
+            double t0 = ta + i * frac, t1 = ta + (i + 1) * frac, tm = (t0 + t1) / 2;
             double x = p0[0] + tm * dx, y = p0[1] + tm * dy, share = 0;
             for (int k = 0; k < n_cuts; k++) {
                 if (!(fz[k] > 0))
@@ -95,8 +129,8 @@ int tippe_gcode_cut_body(tippe_gcode_body *body, const tippe_gcode_beads *beads,
             }
             u[2] -= h / 2; /* the box below the nozzle, as gcode_body.c lays it */
             v[2] -= h / 2;
-            tippe_gcode_add_bead(&gone, u, v, share * dm / n, 1, h, w, dx, dy, lxy);
-            vol_cut += share * e->volume_mm3 / n;
+            tippe_gcode_add_bead(&gone, u, v, share * dm * (t1 - t0), 1, h, w, dx, dy, lxy);
+            vol_cut += share * e->volume_mm3 * (t1 - t0);
         }
     }
     for (int k = 0; k < TIPPE_GCODE_MAX_CUTS; k++)
