@@ -396,6 +396,10 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     tippe_gcode_options opt = tippe_gcode_defaults();
     opt.density_g_cm3 = p->density_g_cm3;
     opt.override_density = 1;
+    if (p->filament_diameter_mm > 0) { /* the design knows the filament better (Cura) */
+        opt.filament_diameter_mm = p->filament_diameter_mm;
+        opt.override_diameter = 1;
+    }
     tippe_gcode_body body;
     tippe_error gerr = {0};
     hole_cut holes[TIPPE_GCODE_MAX_CUTS];
@@ -413,8 +417,14 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     tippe_gcode_part gp;
     if ((rc = tippe_gcode_match(&body, &ex, &gp, &gerr)))
         return tippe_json_fail(c, pth, "%s does not match part '%s' (printed %.2f mm high and "
-                                       "%.2f mm across): %s",
-                               p->gcode, p->name, ex.height_mm, ex.diameter_mm, gerr.msg);
+                                       "%.2f mm across): %s (read with E in %s%.3g%s)",
+                               p->gcode, p->name, ex.height_mm, ex.diameter_mm, gerr.msg,
+                               body.volumetric_e ? "mm^3" : "mm of ",
+                               body.volumetric_e ? 0.0 : body.filament_diameter_mm,
+                               body.volumetric_e ? "" : p->filament_diameter_mm > 0
+                                   ? " mm filament, print.filament_diameter_mm"
+                                   : " mm filament; a wrong diameter scales every bead: "
+                                     "give print.filament_diameter_mm");
     hole_note(p, d, which, n_holes, &body);
     double scale = 1.0;
     if (p->calibrated) {

@@ -97,6 +97,8 @@ typedef struct {
     int fit;                /* a hole's "fit": TIPPE_DESIGN_FIT_* (NONE when not given) */
     char catalogue_item[64];/* "catalogue_item": the hardware catalogue's item it is, or "" */
     char gcode[1024];       /* print.gcode as given (relative to the design file), or "" */
+    double filament_diameter_mm; /* print.filament_diameter_mm: the G-code's filament, 0 the
+                                    file's own */
     double printed_mass_kg; /* as printed, at `infill` */
     tippe_print_sliced sliced; /* the slicer model's layers (print.model slicer) */
     /* print.gcode: the G-code's body, matched to the part, the weighing's flow factor
