@@ -303,11 +303,15 @@ static int print_field(const tippe_design *d, int i, const char *key, double *va
         *value = p->measured_mass_g;
     else if (!strcmp(key, "calibration") && p->calibrated)
         *value = p->print.calibration;
+    else if (!strcmp(key, "model_error") && !p->gcode[0] &&
+             p->print.model == TIPPE_PRINT_MODEL_SLICER)
+        *value = p->print.model_error;
     else {
         snprintf(why, why_cap, "not a number setting of the print block (infill, "
                                "line_width_mm, layer_height_mm, perimeters, "
                                "top_bottom_layers, measured_mass_g and calibration when "
-                               "weighed)");
+                               "weighed, model_error under the slicer's rules without a "
+                               "G-code)");
         return TIPPE_EINPUT;
     }
     return TIPPE_OK;

@@ -123,6 +123,27 @@ static int sliced_cached(const tippe_solid *shape, const tippe_solid *holes, int
     return TIPPE_OK;
 }
 
+/* The deposit moved by x times the print model's largest measured error
+ * against the slicer (print.model_error): every moment scaled by the mass's
+ * 1 - x TIPPE_PRINT_MODEL_ERROR_MASS, and C set so that the body's A/C (about
+ * its own centre of mass) rises by x TIPPE_PRINT_MODEL_ERROR_AC at the same A. */
+static tippe_moments model_error_moved(tippe_moments d, double x)
+{
+    double k = 1 - x * TIPPE_PRINT_MODEL_ERROR_MASS;
+    d.m *= k;
+    d.m_z *= k;
+    d.m_zz *= k;
+    d.m_rr *= k;
+    double zc = d.m_z / d.m, zz = d.m_zz - d.m * zc * zc; /* about the centre of mass */
+    double A = 0.5 * d.m_rr + zz, ac = A / d.m_rr + x * TIPPE_PRINT_MODEL_ERROR_AC;
+    if (!(ac > 0))
+        return d;
+    double rr = A / ac;
+    d.m_zz += 0.5 * (d.m_rr - rr); /* A = rr/2 + zz kept */
+    d.m_rr = rr;
+    return d;
+}
+
 /* The printed part under the slicer's rules (print_slicer.c), layer by layer.
  * A weighed mass says how much, not where: the nominal reading puts the
  * difference in the sparse infill (the infill that gives that mass, found by
@@ -175,6 +196,8 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
         p->infill = 0.5 * (lo + hi);
     }
     tippe_moments dep = tippe_print_sliced_at(&p->sliced, &p->print, p->infill, NULL, NULL);
+    if (p->print.model_error != 0)
+        dep = model_error_moved(dep, p->print.model_error);
     p->solid_mass_kg = rho * solid.m;
     p->skin_mass_kg = rho * (p->sliced.wall_m3 + p->sliced.solid_m3);
     p->printed_mass_kg = rho * dep.m;
