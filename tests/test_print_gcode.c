@@ -281,8 +281,10 @@ static void test_tube(void)
     free(b.s);
 }
 
-/* Cura's headers: the Griffin flavour names each train's filament diameter, and UltiGCode
- * writes E as volume (mm^3). One straight bead of E = 2 mm of filament, density 1. */
+/* Cura's headers: the Marlin and Griffin flavours write E in mm of filament without naming
+ * its diameter (CuraEngine's GCodeExport::getFileHeader), so the options (a design's
+ * print.filament_diameter_mm) give it; UltiGCode writes E as volume (mm^3). One straight bead
+ * of E = 2, density 1. */
 static void test_cura_headers(void)
 {
     sb b = {0};
@@ -290,17 +292,16 @@ static void test_cura_headers(void)
     o.density_g_cm3 = 1.0;
     tippe_gcode_body body;
     tippe_error err = {0};
-    put(&b, ";FLAVOR:Griffin\n;EXTRUDER_TRAIN.0.MATERIAL.DIAMETER:2.85\n;Generated with "
+    put(&b, ";FLAVOR:Griffin\n;EXTRUDER_TRAIN.0.MATERIAL.VOLUME_USED:12\n;Generated with "
             "Cura_SteamEngine 5.0.0\nM83\n;TYPE:WALL-OUTER\nG1 X10 Y10 Z0.2\nG1 X30 Y10 E2\n");
-    CHECK(parse(&b, &o, &body, &err) == TIPPE_OK, "Griffin: %s", err.msg);
-    /* exact but for the rounding of pi d^2 / 4 x 2 x 1e-6 (a few ulp) */
-    CHECK_CLOSE(body.m, 1e-6 * 2 * M_PI * 2.85 * 2.85 / 4, 1e-14, "the header's 2.85 mm filament");
-    CHECK(body.filament_diameter_mm == 2.85, "diameter %g", body.filament_diameter_mm);
-    /* the options' diameter, with its override, wins (a design's print.filament_diameter_mm) */
-    o.filament_diameter_mm = 1.75;
+    CHECK(parse(&b, &o, &body, &err) == TIPPE_EINPUT && strstr(err.msg, "diameter is not known"),
+          "Griffin without a diameter is refused, naming it: %s", err.msg);
+    o.filament_diameter_mm = 2.85;
     o.override_diameter = 1;
-    CHECK(parse(&b, &o, &body, &err) == TIPPE_OK, "Griffin, 1.75 given: %s", err.msg);
-    CHECK_CLOSE(body.m, 1e-6 * 2 * M_PI * 1.75 * 1.75 / 4, 1e-14, "the options' 1.75 mm");
+    CHECK(parse(&b, &o, &body, &err) == TIPPE_OK, "Griffin, 2.85 given: %s", err.msg);
+    /* exact but for the rounding of pi d^2 / 4 x 2 x 1e-6 (a few ulp) */
+    CHECK_CLOSE(body.m, 1e-6 * 2 * M_PI * 2.85 * 2.85 / 4, 1e-14, "the options' 2.85 mm filament");
+    CHECK(body.filament_diameter_mm == 2.85, "diameter %g", body.filament_diameter_mm);
     clear(&b);
     o = tippe_gcode_defaults();
     o.density_g_cm3 = 1.0;

@@ -131,21 +131,6 @@ static void read_config_comment(tippe_gcode_config *c, const char *s, const char
          * src/gcodeExport.cpp: is_volumetric for EGCodeFlavor::ULTIGCODE) */
         if (tippe_gcode_same_ci(s + 7, e, "UltiGCode"))
             c->volumetric = 1;
-    } else if ((size_t)(e - s) > 15 && !memcmp(s, "EXTRUDER_TRAIN.", 15)) {
-        /* Cura's Griffin header: ";EXTRUDER_TRAIN.0.MATERIAL.DIAMETER:2.85" */
-        const char *q = s + 15;
-        int t = 0, digits = 0;
-        while (q < e && tippe_gcode_is_digit(*q) && t < GC_MAX_TOOLS)
-            t = 10 * t + (*q++ - '0'), digits++;
-        double dia;
-        if (digits && t < GC_MAX_TOOLS && (size_t)(e - q) > 19 &&
-            !memcmp(q, ".MATERIAL.DIAMETER:", 19) && (q += 19, 1) &&
-            !tippe_gcode_scan_number(&q, e, &dia) && dia > 0 && t >= c->n_diam) {
-            for (int k = c->n_diam; k < t; k++)
-                c->diam[k] = dia; /* a train not named takes the next one's */
-            c->diam[t] = dia;
-            c->n_diam = t + 1;
-        }
     } else if (((size_t)(e - s) >= 5 && !memcmp(s, "TYPE:", 5)) ||
                ((size_t)(e - s) >= 8 && !memcmp(s, "FEATURE:", 8))) {
         c->labelled = 1;
