@@ -515,8 +515,32 @@ static void check_protrusion(void)
         tippe_design_free(d);
 }
 
+/* print.model_error moves the printed body by its largest measured error against the slicer:
+ * the mass by -1.2 % and the body's A/C by +0.006 per unit (exact arithmetic on the same layers:
+ * 1e-12 allows the rounding of a few products) */
+static void check_model_error(void)
+{
+    const char *one[] = {"parts.body.print.model_error=1"};
+    tippe_design *d0 = NULL, *d1 = NULL;
+    tippe_error err = {0};
+    CHECK(tippe_design_load("designs/m12-setscrew-printed.json", NULL, 0, &d0, &err) == TIPPE_OK &&
+              tippe_design_load("designs/m12-setscrew-printed.json", one, 1, &d1, &err) ==
+                  TIPPE_OK,
+          "model_error loads: %s", err.msg);
+    tippe_design_print_info p0, p1;
+    if (d0 && d1 && !tippe_design_part_print(d0, 0, &p0) && !tippe_design_part_print(d1, 0, &p1)) {
+        CHECK_CLOSE(p1.printed_mass_kg, p0.printed_mass_kg * (1 - TIPPE_PRINT_MODEL_ERROR_MASS),
+                    1e-12, "the mass moved by the model's error");
+        CHECK_CLOSE(p1.body_A_over_C - p0.body_A_over_C, TIPPE_PRINT_MODEL_ERROR_AC, 1e-9,
+                    "the body's A/C moved by the model's error");
+    }
+    tippe_design_free(d0);
+    tippe_design_free(d1);
+}
+
 int main(void)
 {
+    check_model_error();
     const double m12_z2[] = {0, 2.5, 8, 12.5, 17.5, 20};
     const double m3_z2[] = {0, 3, 10, 18, 23.4};
     const double rod_z2[] = {0, 4, 9.5, 15};

@@ -123,6 +123,14 @@ static void check_design(const char *file, const char *set)
             config_value(cfg, "fill_density", v, sizeof v);
             snprintf(want, sizeof want, "%.4g%%", 100 * infill);
             CHECK(!strcmp(v, want), "%s: fill_density %s, want %s", file, v, want);
+            /* the settings the model assumes are pinned for a printed part (issue 40: a
+             * maker's profile with thick_bridges off moved a shell's A/C by 0.009) */
+            for (const tippe_print_assumed *a = tippe_print_assumed_settings();
+                 infill < 1 && a->key; a++) {
+                config_value(cfg, a->key, v, sizeof v);
+                CHECK(!strcmp(v, a->value), "%s: %s = '%s', the model assumes %s", file, a->key,
+                      v, a->value);
+            }
             /* one object per body, each covering its whole mesh */
             int objects = 0;
             for (const char *p = cfg; (p = strstr(p, "<object ")); p++)

@@ -233,6 +233,25 @@ static void test_tube(void)
     CHECK(p.asymmetry < 1e-9 && p.off_diagonal < 1e-9, "asymmetry %g, off-diagonal %g",
           p.asymmetry, p.off_diagonal);
 
+    /* the reader's cache rescales a body read once to another density: equal to a read at
+     * that density but for the rounding of the 18000 terms each sum adds (n eps = 2e-12) */
+    tippe_gcode_body dense;
+    tippe_gcode_options od = o;
+    od.density_g_cm3 = 1.24;
+    od.override_density = 1;
+    o.override_density = 1;
+    CHECK(parse(&b, &od, &dense, &err) == TIPPE_OK && parse(&b, &o, &body, &err) == TIPPE_OK,
+          "tube at two densities: %s", err.msg);
+    tippe_gcode_body_set_density(&body, 1.24);
+    CHECK_CLOSE(body.m, dense.m, 2e-12, "rescaled mass");
+    for (int i = 0; i < 3; i++)
+        CHECK_CLOSE(body.inertia[i], dense.inertia[i], 2e-12, "rescaled inertia %d", i);
+    CHECK_CLOSE(body.feature[TIPPE_GCODE_EXTERNAL_PERIMETER].mass_kg,
+                dense.feature[TIPPE_GCODE_EXTERNAL_PERIMETER].mass_kg, 2e-12, "rescaled share");
+    CHECK(body.density_g_cm3 == 1.24 && body.body_volume_mm3 == dense.body_volume_mm3,
+          "the density is the new one (%g), the volumes stay", body.density_g_cm3);
+    o.override_density = 0;
+
     /* the same tube as arcs: G3 full circles (I, J) and G2 half circles (R); chords within
      * 1e-4 mm of the arc make C off by (4/3) sagitta / r = 7e-6 */
     double earc = w9(TUBE_W * TUBE_H * 2 * M_PI * TUBE_R);
@@ -259,6 +278,37 @@ static void test_tube(void)
         CHECK(body.feature[TIPPE_GCODE_EXTERNAL_PERIMETER].n_moves == TUBE_LAYERS * (1 + variant),
               "an arc is one move (%ld)", body.feature[TIPPE_GCODE_EXTERNAL_PERIMETER].n_moves);
     }
+    free(b.s);
+}
+
+/* Cura's headers: the Marlin and Griffin flavours write E in mm of filament without naming
+ * its diameter (CuraEngine's GCodeExport::getFileHeader), so the options (a design's
+ * print.filament_diameter_mm) give it; UltiGCode writes E as volume (mm^3). One straight bead
+ * of E = 2, density 1. */
+static void test_cura_headers(void)
+{
+    sb b = {0};
+    tippe_gcode_options o = tippe_gcode_defaults();
+    o.density_g_cm3 = 1.0;
+    tippe_gcode_body body;
+    tippe_error err = {0};
+    put(&b, ";FLAVOR:Griffin\n;EXTRUDER_TRAIN.0.MATERIAL.VOLUME_USED:12\n;Generated with "
+            "Cura_SteamEngine 5.0.0\nM83\n;TYPE:WALL-OUTER\nG1 X10 Y10 Z0.2\nG1 X30 Y10 E2\n");
+    CHECK(parse(&b, &o, &body, &err) == TIPPE_EINPUT && strstr(err.msg, "diameter is not known"),
+          "Griffin without a diameter is refused, naming it: %s", err.msg);
+    o.filament_diameter_mm = 2.85;
+    o.override_diameter = 1;
+    CHECK(parse(&b, &o, &body, &err) == TIPPE_OK, "Griffin, 2.85 given: %s", err.msg);
+    /* exact but for the rounding of pi d^2 / 4 x 2 x 1e-6 (a few ulp) */
+    CHECK_CLOSE(body.m, 1e-6 * 2 * M_PI * 2.85 * 2.85 / 4, 1e-14, "the options' 2.85 mm filament");
+    CHECK(body.filament_diameter_mm == 2.85, "diameter %g", body.filament_diameter_mm);
+    clear(&b);
+    o = tippe_gcode_defaults();
+    o.density_g_cm3 = 1.0;
+    put(&b, ";FLAVOR:UltiGCode\nM83\n;TYPE:WALL-OUTER\nG1 X10 Y10 Z0.2\nG1 X30 Y10 E2\n");
+    CHECK(parse(&b, &o, &body, &err) == TIPPE_OK && body.volumetric_e,
+          "UltiGCode's E is volume: %s", err.msg);
+    CHECK_CLOSE(body.m, 2e-6, 1e-15, "2 mm^3 at 1 g/cm^3");
     free(b.s);
 }
 
@@ -518,6 +568,44 @@ static void test_disc(void)
     CHECK(hypot(body.com[0] - 0.05, body.com[1] - 0.06) < 1e-9, "com at the centre");
     CHECK_CLOSE(body.com[2], hm / 2, 1e-12, "com in the middle of the layer");
     CHECK_CLOSE(body.feature[TIPPE_GCODE_SOLID_INFILL].width_mm, s, 1e-9, "bead width = spacing");
+
+    /* a hole of radius Rc drilled out of the disc after printing: the beads near the axis kept,
+     * the plastic inside Rc cut (gcode_cut.c); the disc less a disc, whose moments are known.
+     * The cut is the raster's midpoint rule again, over the hole's chords: (s/Rc)^{3/2} */
+    double Rc = 5, tolc = pow(s / Rc, 1.5);
+    tippe_gcode_beads near;
+    o.override_density = 1;
+    char path[] = "/tmp/tippe-disc-XXXXXX";
+    int fd = mkstemp(path);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    CHECK(f && fprintf(f, "; filament_diameter = 1.75\n%s", b.s) > 0 && fclose(f) == 0,
+          "the disc's G-code written to %s", path);
+    rc = tippe_gcode_read_beads(path, &o, Rc + 5, &body, &near, &err);
+    unlink(path);
+    CHECK(rc == TIPPE_OK && near.n > 0 && near.n < (size_t)K, "disc kept %zu of %d beads: %s",
+          near.n, K, err.msg);
+    tippe_gcode_body whole = body;
+    tippe_gcode_cut cut = {50, 60, Rc, -1, 1};
+    CHECK(tippe_gcode_cut_body(&body, &near, &cut, 1) == 0, "the cut is within the beads kept");
+    double mc = whole.m * Rc * Rc / (R * R), Rcm = Rc * 1e-3;
+    CHECK_CLOSE(body.cut_mass_kg, mc, tolc, "the hole's plastic");
+    CHECK_CLOSE(body.m, whole.m - body.cut_mass_kg, 1e-12, "the body less the cut");
+    CHECK_CLOSE(body.inertia[2], whole.inertia[2] - mc * Rcm * Rcm / 2, tolc * mc / body.m,
+                "C of the disc less the hole");
+    CHECK(hypot(body.com[0] - 0.05, body.com[1] - 0.06) < 1e-9 * 0.05, "com stays at the centre");
+    CHECK(body.cut_hole_radius_mm[0] < 0, "raster lines cross the axis: no hole (%g)",
+          body.cut_hole_radius_mm[0]);
+    /* a cut over the bead's lower half takes half of it */
+    body = whole;
+    cut.z_hi_mm = 0.1;
+    tippe_gcode_cut_body(&body, &near, &cut, 1);
+    CHECK_CLOSE(body.cut_mass_kg, mc / 2, tolc, "half the layer's height");
+    /* a cut the beads kept do not reach is refused */
+    body = whole;
+    cut.radius_mm = Rc + 3;
+    CHECK(tippe_gcode_cut_body(&body, &near, &cut, 1) == -1 && body.m == whole.m,
+          "a cut beyond the beads kept changes nothing");
+    tippe_gcode_beads_free(&near);
     free(b.s);
 }
 
@@ -882,6 +970,7 @@ int main(void)
 {
     test_rod();
     test_tube();
+    test_cura_headers();
     test_bookkeeping();
     test_features();
     test_disc();

@@ -28,7 +28,7 @@ while [ $# -gt 0 ]; do
     *) targets+=("$1"); shift ;;
     esac
 done
-all=(design materials catalogue spec scenario options)
+all=(design materials catalogue spec scenario options gcode)
 [ ${#targets[@]} -gt 0 ] || targets=("${all[@]}")
 corpus=${corpus:-$build/corpus}
 
@@ -58,7 +58,7 @@ nice -n 10 cmake --build "$build" --target tippe_fuzz -j"$jobs" >"$probe/build.l
 # README.md and docs/ for the launch verbs, one argument per line)
 seeds=$build/seeds
 rm -rf "$seeds"
-mkdir -p "$seeds"/{design,materials,catalogue,spec,scenario,options}
+mkdir -p "$seeds"/{design,materials,catalogue,spec,scenario,options,gcode}
 for f in designs/*.json; do
     case $f in
     designs/materials.json) cp "$f" "$seeds/materials/" ;;
@@ -68,6 +68,7 @@ for f in designs/*.json; do
 done
 cp designs/optimise/*.json "$seeds/spec/"
 cp designs/scenarios/*.json "$seeds/scenario/"
+cp tests/data/gcode/*.gcode "$seeds/gcode/"
 k=0
 grep -h -E '^ *(build/)?tippe (simulate|animate) ' README.md docs/*.md | sed -E 's/^ *(build\/)?tippe [a-z]+ //' |
     while read -r line; do
@@ -83,7 +84,7 @@ for t in "${targets[@]}"; do
     [ -x "$exe" ] || { echo "tools/fuzz.sh: no target '$t' (targets: ${all[*]})" >&2; exit 2; }
     mkdir -p "$corpus/$t"
     dict=()
-    [ "$t" = options ] || dict=(-dict="$root/tests/fuzz/json.dict")
+    [ "$t" = options ] || [ "$t" = gcode ] || dict=(-dict="$root/tests/fuzz/json.dict")
     limit=()
     [ -z "$runs" ] || limit=(-runs="$runs")
     log=$build/fuzz_$t.log

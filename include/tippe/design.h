@@ -212,6 +212,9 @@ typedef struct {
     int from_gcode;
     const char *gcode;             /* as given in the design (relative to it) */
     const char *generator;         /* the slicer that wrote it, "" if it does not say */
+    double gcode_cut_mass_kg;      /* its plastic inside the design's holes, taken as cut
+                                      away after printing (tapped, drilled, bored) */
+    const char *gcode_note;        /* its holes against the design's ("" when they agree) */
     double flow_factor;            /* a weighing's scale on the G-code's lines (1: none) */
     double model_mass_kg;          /* the layer model's mass at the same infill */
     double model_body_A_over_C;

@@ -16,6 +16,7 @@
 #include "tippe/design.h"
 #include "tippe/base.h"
 #include "tippe/profile.h"
+#include "tippe/sweep.h"
 
 enum {
     TIPPE_EXPORT_STL = 1,
@@ -130,5 +131,41 @@ void tippe_export_build_request(const tippe_design *d, double clearance_mm, cons
 int tippe_export_build_write(const tippe_design *d, const tippe_build_sheet *s,
                              char (*paths)[4096], tippe_export_request *q, char *fit_note,
                              size_t fit_note_size, tippe_export_result *r, tippe_error *err);
+
+/* ==== the slicer in the loop (tippe slice, docs/printing.md) ==== */
+/* What to slice with. dir exists (the 3MF, the G-code and the slicer's log go
+ * there); slicer is the program to run (a path, or a name on PATH: no shell),
+ * profile a PrusaSlicer config; clearance_mm the export's clearance of holes
+ * for hardware (0: the mass model's holes). verdict: the build sheet's options
+ * for the two verdicts (tippe_build_options_default's). */
+typedef struct {
+    const char *dir, *slicer, *profile;
+    double clearance_mm;
+    tippe_build_options verdict;
+} tippe_export_slice_request;
+
+/* The part as the slicer made it beside the print model's. */
+typedef struct {
+    int part;                       /* the design's one printed part */
+    char part_name[128];
+    char model_3mf[4096], gcode[4200], log[4200];
+    tippe_design *sliced;           /* the design with the G-code as the part (print.gcode) */
+    tippe_sweep_result model_sweep, sliced_sweep; /* with their bands */
+    tippe_build_sheet *model_sheet, *sliced_sheet; /* the verdicts alone
+                                                      (tippe_build_compute_verdict) */
+} tippe_export_slice_result;
+
+/* Writes d's 3MF into q->dir (committing the report set: the slicer reads it
+ * from disk, and begins a new one), runs the slicer on it, reads the G-code
+ * back as the printed part (d reloaded from the text it was read from, with
+ * print.gcode set), and sweeps and judges both. TIPPE_EINPUT: no printed part
+ * or more than one, or more than one printed body; TIPPE_ECOMPUTE: the
+ * slicer failed (its log named). out is filled (free it) only on success. */
+/* The design's one printed part (its index, its name into name), or -1 with
+ * err saying there is none or more than one: slice takes exactly one. */
+int tippe_export_slice_part(const tippe_design *d, char *name, size_t cap, tippe_error *err);
+int tippe_export_slice(const tippe_design *d, const tippe_export_slice_request *q,
+                       tippe_export_slice_result *out, tippe_error *err);
+void tippe_export_slice_result_free(tippe_export_slice_result *r);
 
 #endif

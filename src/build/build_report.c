@@ -300,6 +300,18 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         cJSON_AddStringToObject(j, "orientation",
                                 s->needs_split ? "axis vertical, halves on their cut faces"
                                                : "axis vertical");
+        if (s->print[k].has_block) {
+            /* what the model assumed of the slicer: pinned in the 3MF, or the profile's */
+            cJSON *sa = cJSON_AddObjectToObject(j, "slicer_settings_in_3mf");
+            for (const tippe_print_assumed *a = tippe_print_assumed_settings(); sa && a->key; a++)
+                cJSON_AddStringToObject(sa, a->key, a->value);
+            cJSON *pr = cJSON_AddObjectToObject(j, "slicer_settings_of_profile");
+            if (pr) {
+                cJSON_AddNumberToObject(pr, "first_layer_height", p->first_layer_height_mm);
+                cJSON_AddNumberToObject(pr, "first_layer_extrusion_width",
+                                        p->first_layer_width_mm);
+            }
+        }
     }
     cJSON_AddBoolToObject(o, "split", s->needs_split);
     cJSON_AddBoolToObject(o, "joint_ring", s->joint_ring);
@@ -494,6 +506,23 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
                        "print block) | axis vertical%s |\n",
                     md(s->print[k].part, m1, sizeof m1), md(s->print[k].material, m2, sizeof m2),
                     s->needs_split ? ", halves on their cut faces" : "");
+    }
+    for (int k = 0; k < s->n_print; k++) {
+        if (!s->print[k].has_block)
+            continue;
+        /* the slicer settings the model assumed (issue 40): the 3MF pins those PrusaSlicer
+         * takes per object; the first layer's are the profile's alone in 2.5 */
+        const tippe_print_settings *p = &s->print[k].settings;
+        fprintf(f, "\nThe mass model of '%s' assumes these slicer settings. The 3MF sets them "
+                   "for the part:",
+                md(s->print[k].part, m1, sizeof m1));
+        for (const tippe_print_assumed *as = tippe_print_assumed_settings(); as->key; as++)
+            fprintf(f, "%s `%s = %s`", as == tippe_print_assumed_settings() ? "" : ",", as->key,
+                    as->value);
+        fprintf(f, ". Set these in your print profile (PrusaSlicer takes them from it alone): "
+                   "`first_layer_height = %g`, `first_layer_extrusion_width = %g`.\n",
+                p->first_layer_height_mm, p->first_layer_width_mm);
+        break; /* one list: every printed part assumes the same */
     }
     fprintf(f, "\n## Steps\n\n");
     for (int k = 0; k < s->n_steps; k++)

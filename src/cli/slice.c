@@ -1,8 +1,8 @@
-/* tippe slice: the slicer in the loop. Writes the design's 3MF (tippe export),
- * slices it headless with PrusaSlicer's command line and a profile (the shipped
- * designs/slicer/prusa-pla-0.4mm.ini unless --profile), reads the G-code back as
- * the printed part (print.gcode) and prints the zone table of the sliced part
- * beside the print model's (docs/printing.md). */
+/* tippe slice: the slicer in the loop (tippe_export_slice does the work: the
+ * design's 3MF, PrusaSlicer headless with a profile, the shipped
+ * designs/slicer/prusa-pla-0.4mm.ini unless --profile, the G-code read back as
+ * the printed part). Prints the zone table of the sliced part beside the print
+ * model's and ends with the build sheet's verdict for both (docs/printing.md). */
 #include "cli.h"
 
 #include "tippe/base.h"
@@ -14,18 +14,11 @@
 
 #include <cjson/cJSON.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <limits.h>
-#include <math.h>
-#include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-extern char **environ;
 
 static const char *const VERB = "slice";
 
@@ -104,67 +97,54 @@ static int find_program(const char *name, char *out, size_t cap)
     return 0;
 }
 
-/* Runs the slicer (no shell: argv as given), its output into log. */
-static int run_slicer(const char *slicer, const char *profile, const char *gcode,
-                      const char *model, const char *log, char *why, size_t cap)
-{
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
-    posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    char *argv[] = {(char *)slicer, "--export-gcode", "--load", (char *)profile, "-o",
-                    (char *)gcode, (char *)model, NULL};
-    pid_t pid;
-    int rc = posix_spawn(&pid, slicer, &fa, NULL, argv, environ);
-    posix_spawn_file_actions_destroy(&fa);
-    if (rc) {
-        snprintf(why, cap, "could not start %s: %s", slicer, strerror(rc));
-        return 1;
-    }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
-        ;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        snprintf(why, cap, "%s failed (exit %d; its log: %s)", slicer,
-                 WIFEXITED(status) ? WEXITSTATUS(status) : -1, log);
-        return 1;
-    }
-    return 0;
-}
-
-/* The one printed part of d (its index), or -1 with why. */
-static int printed_part(const tippe_design *d, char *name, size_t cap)
-{
-    int found = -1, n = 0;
-    for (int i = 0; i < tippe_design_n_parts(d); i++) {
-        tippe_design_print_info pi;
-        tippe_design_part_info p;
-        if (!tippe_design_part_print(d, i, &pi) && pi.printed && !tippe_design_part(d, i, &p)) {
-            if (!n++)
-                snprintf(name, cap, "%s", p.name);
-            found = i;
-        }
-    }
-    return n == 1 ? found : -1 - n;
-}
-
-static void print_side_by_side(const tippe_design *model, const tippe_design *sliced,
-                               const tippe_sweep_result *rm, const tippe_sweep_result *rs,
-                               int part)
+static void print_side_by_side(const tippe_export_slice_result *r, const tippe_design *model)
 {
     tippe_design_print_info pi;
-    tippe_design_part_print(sliced, part, &pi);
+    tippe_design_part_print(r->sliced, r->part, &pi);
     printf("body     G-code %.3f g, body A/C %.4f (%s); print model %.3f g (%+.1f %%), body A/C "
-           "%.4f (%+.4f)\n\n",
+           "%.4f (%+.4f)\n",
            pi.printed_mass_kg * 1e3, pi.body_A_over_C,
            pi.generator[0] ? pi.generator : "slicer not named", pi.model_mass_kg * 1e3,
            100 * (pi.model_mass_kg / pi.printed_mass_kg - 1), pi.model_body_A_over_C,
            pi.model_body_A_over_C - pi.body_A_over_C);
-    printf("== the part as sliced (its G-code)\n");
-    tippe_sweep_print_table(stdout, rs, sliced);
+    if (pi.gcode_note[0])
+        printf("         the G-code: %s\n", pi.gcode_note);
+    printf("\n== the part as sliced (its G-code)\n");
+    tippe_sweep_print_table(stdout, &r->sliced_sweep, r->sliced);
     printf("\n== the part as the print model has it\n");
-    tippe_sweep_print_table(stdout, rm, model);
+    tippe_sweep_print_table(stdout, &r->model_sweep, model);
+}
+
+static const char *const BEHAVIOUR[3] = {"stays up", "flips", "hangs"};
+
+/* One verdict line: the sheet's words and each behaviour's robust width. */
+static void print_verdict(const char *lead, const char *who, const tippe_build_sheet *s)
+{
+    printf("%s%-7s %s (robust:", lead, who, tippe_build_verdict(s));
+    for (int f = 0; f < 3; f++) {
+        if (s->set[f].reachable)
+            printf(" %s %.3f mm%s", BEHAVIOUR[f], s->set[f].robust_width_mm, f < 2 ? "," : "");
+        else
+            printf(" %s none%s", BEHAVIOUR[f], f < 2 ? "," : "");
+    }
+    printf(")\n");
+}
+
+static cJSON *verdict_json(const tippe_build_sheet *s)
+{
+    cJSON *v = cJSON_CreateObject();
+    cJSON_AddStringToObject(v, "verdict", tippe_build_verdict(s));
+    cJSON_AddBoolToObject(v, "three_in_one", s->three_in_one);
+    cJSON_AddBoolToObject(v, "settable", s->settable);
+    cJSON_AddNumberToObject(v, "min_setting_mm", s->min_setting_mm);
+    cJSON *w = cJSON_AddObjectToObject(v, "robust_width_mm");
+    for (int f = 0; w && f < 3; f++) {
+        if (s->set[f].reachable)
+            cJSON_AddNumberToObject(w, BEHAVIOUR[f], s->set[f].robust_width_mm);
+        else
+            cJSON_AddNullToObject(w, BEHAVIOUR[f]);
+    }
+    return v;
 }
 
 int tippe_cli_slice(int argc, char **argv)
@@ -173,7 +153,7 @@ int tippe_cli_slice(int argc, char **argv)
     int rc = slice_parse(&a, argc, argv);
     if (rc)
         return rc == TIPPE_CLI_HELP ? 0 : rc;
-    char slicer[PATH_MAX], why[PATH_MAX + 5000];
+    char slicer[PATH_MAX];
     if (!find_program(a.slicer, slicer, sizeof slicer)) {
         fprintf(stderr,
                 "tippe slice: %s not found: install PrusaSlicer's command line, the Debian "
@@ -196,99 +176,50 @@ int tippe_cli_slice(int argc, char **argv)
     if ((rc = tippe_design_load(a.path, a.sets.item, a.sets.n, &d, &err)))
         return tippe_cli_fail(VERB, &err, rc);
     char part_name[128];
-    int part = printed_part(d, part_name, sizeof part_name);
-    if (part < 0) {
-        fprintf(stderr, "tippe slice: %s: %s printed part%s (a part with a \"print\" block); "
-                        "slice takes a design with exactly one\n",
-                a.path, part == -1 ? "no" : "more than one", part == -1 ? "" : "s");
-        tippe_design_free(d);
-        return 2;
-    }
-    tippe_export_request q = {.profile = tippe_profile_defaults(), .formats = TIPPE_EXPORT_3MF,
-                              .dir = a.dir};
-    q.profile.clearance_mm = a.clearance_mm;
-    double t0, t1;
-    tippe_design_travel_mm(d, &t0, &t1);
-    q.z2_mm = 0.5 * (t0 + t1);
-    char(*planned)[4096] = NULL;
-    int np = tippe_export_plan(d, &q, &planned, &err);
-    char model3mf[4096] = "";
-    if (np == 1)
-        snprintf(model3mf, sizeof model3mf, "%s", planned[0]);
-    free(planned);
-    if (np != 1 || (rc = tippe_cli_make_output_dir(VERB, "-o", a.dir))) {
-        rc = np < 0 ? tippe_cli_fail(VERB, &err, err.code ? err.code : 2) : rc ? rc : 2;
+    if (tippe_export_slice_part(d, part_name, sizeof part_name, &err) < 0 ||
+        (rc = tippe_cli_make_output_dir(VERB, "-o", a.dir))) {
+        if (!rc)
+            rc = tippe_cli_fail(VERB, &err, TIPPE_EINPUT);
         tippe_design_free(d);
         return rc;
     }
-    tippe_export_result xr;
-    if ((rc = tippe_export_run(d, &q, &xr, &err))) {
-        tippe_design_free(d);
-        return tippe_cli_fail(VERB, &err, rc);
-    }
-    int bodies = xr.n_bodies;
-    tippe_export_result_free(&xr);
-    /* the report set commits the 3MF now: the slicer reads it from disk */
-    if (bodies != 1 || (rc = tippe_report_set_commit(&err))) {
-        if (bodies != 1)
-            fprintf(stderr, "tippe slice: %s: %d printed bodies (a G-code of one is read)\n",
-                    a.path, bodies);
-        tippe_design_free(d);
-        return bodies != 1 ? 2 : tippe_cli_fail(VERB, &err, rc);
-    }
-    tippe_report_set_begin();
-    char gcode[4200], logf[4200], abs_gcode[PATH_MAX + 200];
-    size_t plen = strlen(model3mf);
-    snprintf(gcode, sizeof gcode, "%.*s.gcode", (int)(plen > 4 ? plen - 4 : plen), model3mf);
-    snprintf(logf, sizeof logf, "%s/slicer.log", a.dir);
+    tippe_export_slice_request q = {.dir = a.dir, .slicer = slicer, .profile = profile,
+                                    .clearance_mm = a.clearance_mm};
+    tippe_build_options_default(&q.verdict);
     if (!a.json)
-        fprintf(stderr, "tippe slice: slicing %s with %s (%s)...\n", model3mf, slicer, profile);
-    if (run_slicer(slicer, profile, gcode, model3mf, logf, why, sizeof why)) {
-        fprintf(stderr, "tippe slice: %s\n", why);
+        fprintf(stderr, "tippe slice: slicing %s with %s (%s)...\n", a.path, slicer, profile);
+    tippe_export_slice_result r;
+    if ((rc = tippe_export_slice(d, &q, &r, &err))) {
         tippe_design_free(d);
-        return 1;
-    }
-    if (!realpath(gcode, abs_gcode))
-        snprintf(abs_gcode, sizeof abs_gcode, "%s", gcode);
-    /* the sliced part: the same design with the G-code as its printed body */
-    char set[PATH_MAX + 400];
-    snprintf(set, sizeof set, "parts.%s.print.gcode=%s", part_name, abs_gcode);
-    const char *all[TIPPE_CLI_MAX_SETS + 1];
-    for (int k = 0; k < a.sets.n; k++)
-        all[k] = a.sets.item[k];
-    all[a.sets.n] = set;
-    tippe_design *s = NULL;
-    tippe_sweep_result rm, rs;
-    if ((rc = tippe_design_load(a.path, all, a.sets.n + 1, &s, &err)) ||
-        (rc = tippe_sweep_design(d, 0, 0, NULL, &rm, &err))) {
-        tippe_design_free(d);
-        tippe_design_free(s);
-        return tippe_cli_fail(VERB, &err, rc);
-    }
-    if ((rc = tippe_sweep_design(s, 0, 0, NULL, &rs, &err))) {
-        tippe_sweep_result_free(&rm);
-        tippe_design_free(d);
-        tippe_design_free(s);
         return tippe_cli_fail(VERB, &err, rc);
     }
     if (a.json) {
         cJSON *o = cJSON_CreateObject();
         cJSON_AddStringToObject(o, "design", a.path);
-        cJSON_AddStringToObject(o, "gcode", gcode);
+        cJSON_AddStringToObject(o, "gcode", r.gcode);
         cJSON_AddStringToObject(o, "profile", profile);
-        cJSON_AddItemToObject(o, "sliced", tippe_sweep_json(&rs, s));
-        cJSON_AddItemToObject(o, "model", tippe_sweep_json(&rm, d));
+        cJSON_AddItemToObject(o, "sliced", tippe_sweep_json(&r.sliced_sweep, r.sliced));
+        cJSON_AddItemToObject(o, "model", tippe_sweep_json(&r.model_sweep, d));
         cJSON *sp = cJSON_AddObjectToObject(o, "sliced_parts");
         if (sp)
-            tippe_profile_printed_parts_json(sp, s);
+            tippe_profile_printed_parts_json(sp, r.sliced);
+        cJSON *v = cJSON_AddObjectToObject(o, "verdict");
+        if (v) {
+            cJSON_AddItemToObject(v, "sliced", verdict_json(r.sliced_sheet));
+            cJSON_AddItemToObject(v, "model", verdict_json(r.model_sheet));
+        }
         rc = tippe_cli_print_json(VERB, o);
     } else {
-        printf("design   %s\nG-code   %s (profile %s)\n", a.path, gcode, profile);
-        print_side_by_side(d, s, &rm, &rs, part);
+        printf("design   %s\nG-code   %s (profile %s)\n", a.path, r.gcode, profile);
+        print_side_by_side(&r, d);
+        printf("\n");
+        print_verdict("verdict  ", "G-code:", r.sliced_sheet);
+        print_verdict("         ", "model:", r.model_sheet);
+        printf("         (the build sheet's: settable when every behaviour's robust range is at "
+               "least %.2f mm, %s)\n",
+               r.model_sheet->min_setting_mm, r.model_sheet->min_setting_rule);
     }
-    tippe_sweep_result_free(&rm);
-    tippe_sweep_result_free(&rs);
-    tippe_design_free(s);
+    tippe_export_slice_result_free(&r);
     tippe_design_free(d);
     return rc;
 }

@@ -499,17 +499,28 @@ static int load(const char *path, const char *text, size_t text_len, const char 
     }
     cJSON *root = NULL;
     int rc = TIPPE_OK;
-    if (text && (!(d->text = malloc(text_len + 1)) ||
-                 !(d->materials_dir = tippe_design_dup_string(materials_dir))))
+    /* A file is read once: its text is kept, so that a reload (tippe slice's
+     * design with its G-code, the tolerance bands' variants) builds on the text
+     * the command first read, not on whatever the file holds by then. A file's
+     * design keeps materials_dir NULL: its tables are found beside it. */
+    char *read = NULL;
+    if (!text) {
+        size_t n = 0;
+        rc = tippe_file_read(path, (size_t)MAX_FILE_MIB << 20, "design", &read, &n, err);
+        text = read;
+        text_len = n;
+    }
+    if (!rc && (!(d->text = malloc(text_len + 1)) ||
+                (materials_dir && !(d->materials_dir = tippe_design_dup_string(materials_dir)))))
         rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
-    else if (text) {
+    else if (!rc) {
         memcpy(d->text, text, text_len);
         d->text[text_len] = '\0';
         d->text_len = text_len;
     }
     if (!rc)
-        rc = text ? tippe_json_parse_text(c, text, text_len, MAX_FILE_MIB, "design", &root)
-                  : tippe_json_load(c, MAX_FILE_MIB, "design", &root);
+        rc = tippe_json_parse_text(c, text, text_len, MAX_FILE_MIB, "design", &root);
+    free(read);
     if (!rc)
         rc = tippe_json_check_duplicates(c, root, "");
     for (int i = 0; !rc && i < n_overrides; i++)

@@ -207,6 +207,8 @@ int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_inf
     out->from_gcode = p->has_gcode;
     out->gcode = p->gcode;
     out->generator = p->has_gcode ? p->gcode_body.generator : "";
+    out->gcode_cut_mass_kg = p->has_gcode ? p->gcode_body.cut_mass_kg * p->gcode_flow : 0;
+    out->gcode_note = p->has_gcode ? p->gcode_note : "";
     out->flow_factor = p->has_gcode ? p->gcode_flow : 1.0;
     out->model_mass_kg = p->has_gcode ? p->model_mass_kg : p->printed_mass_kg;
     out->model_body_A_over_C = p->has_gcode ? body_a_over_c(p->model_deposit)
@@ -301,11 +303,15 @@ static int print_field(const tippe_design *d, int i, const char *key, double *va
         *value = p->measured_mass_g;
     else if (!strcmp(key, "calibration") && p->calibrated)
         *value = p->print.calibration;
+    else if (!strcmp(key, "model_error") && !p->gcode[0] &&
+             p->print.model == TIPPE_PRINT_MODEL_SLICER)
+        *value = p->print.model_error;
     else {
         snprintf(why, why_cap, "not a number setting of the print block (infill, "
                                "line_width_mm, layer_height_mm, perimeters, "
                                "top_bottom_layers, measured_mass_g and calibration when "
-                               "weighed)");
+                               "weighed, model_error under the slicer's rules without a "
+                               "G-code)");
         return TIPPE_EINPUT;
     }
     return TIPPE_OK;

@@ -110,7 +110,8 @@ const char *const tippe_design_print_keys[] = {
     "perimeters", "line_width_mm", "top_bottom_layers", "layer_height_mm", "infill",
     "measured_mass_g", "notes", "model", "pattern", "external_width_mm", "infill_width_mm",
     "first_layer_height_mm", "first_layer_width_mm", "top_min_mm", "bottom_min_mm",
-    "infill_overlap", "flow", "gcode", "calibration", "split", "split_z_mm", NULL};
+    "infill_overlap", "flow", "gcode", "calibration", "split", "split_z_mm",
+    "filament_diameter_mm", "model_error", NULL};
 /* The print settings that are text (--set writes them as strings). */
 const char *const tippe_design_print_string_keys[] = {"notes", "model", "pattern", "gcode", NULL};
 static const char *const material_keys[] = {"density_g_cm3", "source", "printable", "notes",
@@ -193,6 +194,14 @@ static int parse_print_rules(const tippe_json_reader *c, const cJSON *item, cons
                            &s->flow)) ||
         (rc = tippe_json_bool(c, item, path, "split", &s->split, NULL)) ||
         (rc = print_number(c, item, path, "split_z_mm", -1000, 1000, 0, "mm", &s->split_z_mm)) ||
+        (rc = print_number(c, item, path, "model_error", -3, 3, 0,
+                           "(the print model's error against the slicer, in units of the "
+                           "largest measured: a tolerance term)",
+                           &s->model_error)) ||
+        (rc = print_number(c, item, path, "filament_diameter_mm", 1, 3.5, 0,
+                           "mm (the G-code's filament: CuraEngine writes E in mm of 2.85 mm "
+                           "filament; overrides the file's)",
+                           &p->filament_diameter_mm)) ||
         (rc = print_number(c, item, path, "calibration", PRINT_CALIBRATION_MIN,
                            PRINT_CALIBRATION_MAX, 0,
                            "(where a weighed mass goes: 0 sparse infill, 1 every line; the "

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* The print model's description of p's own region (SI). */
 static tippe_solid print_solid(const part *p)
@@ -122,6 +123,27 @@ static int sliced_cached(const tippe_solid *shape, const tippe_solid *holes, int
     return TIPPE_OK;
 }
 
+/* The deposit moved by x times the print model's largest measured error
+ * against the slicer (print.model_error): every moment scaled by the mass's
+ * 1 - x TIPPE_PRINT_MODEL_ERROR_MASS, and C set so that the body's A/C (about
+ * its own centre of mass) rises by x TIPPE_PRINT_MODEL_ERROR_AC at the same A. */
+static tippe_moments model_error_moved(tippe_moments d, double x)
+{
+    double k = 1 - x * TIPPE_PRINT_MODEL_ERROR_MASS;
+    d.m *= k;
+    d.m_z *= k;
+    d.m_zz *= k;
+    d.m_rr *= k;
+    double zc = d.m_z / d.m, zz = d.m_zz - d.m * zc * zc; /* about the centre of mass */
+    double A = 0.5 * d.m_rr + zz, ac = A / d.m_rr + x * TIPPE_PRINT_MODEL_ERROR_AC;
+    if (!(ac > 0))
+        return d;
+    double rr = A / ac;
+    d.m_zz += 0.5 * (d.m_rr - rr); /* A = rr/2 + zz kept */
+    d.m_rr = rr;
+    return d;
+}
+
 /* The printed part under the slicer's rules (print_slicer.c), layer by layer.
  * A weighed mass says how much, not where: the nominal reading puts the
  * difference in the sparse infill (the infill that gives that mass, found by
@@ -174,6 +196,8 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
         p->infill = 0.5 * (lo + hi);
     }
     tippe_moments dep = tippe_print_sliced_at(&p->sliced, &p->print, p->infill, NULL, NULL);
+    if (p->print.model_error != 0)
+        dep = model_error_moved(dep, p->print.model_error);
     p->solid_mass_kg = rho * solid.m;
     p->skin_mass_kg = rho * (p->sliced.wall_m3 + p->sliced.solid_m3);
     p->printed_mass_kg = rho * dep.m;
@@ -188,10 +212,183 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
     return TIPPE_OK;
 }
 
-/* Unit-density moments of printed part i as printed: the part minus its voids
- * (closed forms) less (1 - infill) x its sparse core (print model). Sets the
- * part's infill (calibrated from a weighed mass when one is given), its solid
- * and skin masses and the relative error bound. */
+/* A G-code is the same part however often a command loads the design: the
+ * tolerance bands, the build sheet's fixes and an optimiser reload it with
+ * another radius, density, infill or hole (about 100 loads for one sweep of
+ * the M12, 190 for its build sheet), and a 25 MB G-code takes a tenth of a
+ * second to read. So the bodies read are kept, with their beads near the axis
+ * (for the holes' cuts, below), keyed by the file's identity and change time
+ * (device, inode, size, mtime to the nanosecond) and by the options but the
+ * density, whose masses scale with it (tippe_gcode_body_set_density). A file
+ * rewritten in place gets a new mtime and is read again. A content hash would
+ * key across commands too, but the read itself is a fraction of a second
+ * (docs/printing.md): it does not pay. */
+#define GCODE_CACHE 4
+/* Beads are kept this far beyond the widest hole, so that a hole's tolerance
+ * and the build sheet's fixes find them kept (a cut needs its radius + 3 mm). */
+#define GCODE_KEEP_MARGIN_MM 5.0
+typedef struct {
+    int used;
+    dev_t dev;
+    ino_t ino;
+    off_t size;
+    struct timespec mtime;
+    tippe_gcode_options opt; /* density zeroed: not part of the key */
+    tippe_gcode_body body;   /* as read: nothing cut */
+    tippe_gcode_beads beads;
+} gcode_entry;
+static gcode_entry gcode_cache[GCODE_CACHE];
+static int gcode_next;
+static pthread_mutex_t gcode_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static int same_gcode_options(const tippe_gcode_options *a, const tippe_gcode_options *b)
+{
+    return a->filament_diameter_mm == b->filament_diameter_mm &&
+           a->override_diameter == b->override_diameter &&
+           a->override_density == b->override_density && a->volumetric_e == b->volumetric_e &&
+           a->bead == b->bead;
+}
+
+/* A hole of the part, in the design's frame (mm), to be cut from the G-code. */
+typedef struct {
+    double radius_mm, z_lo_mm, z_hi_mm;
+} hole_cut;
+
+/* The cuts of holes on the body's axis, the design's z placed on its bed: the
+ * body's bottom is where the layer model has the bed (bed_z_mm). */
+static void apply_cuts(tippe_gcode_body *body, const tippe_gcode_beads *beads,
+                       const hole_cut *holes, int n, double bed_z_mm)
+{
+    tippe_gcode_cut cut[TIPPE_GCODE_MAX_CUTS];
+    double to_bed = 1e3 * body->bbox_min[2] - bed_z_mm;
+    for (int k = 0; k < n; k++) {
+        cut[k].axis_x_mm = 1e3 * (body->bbox_min[0] + body->bbox_max[0]) / 2;
+        cut[k].axis_y_mm = 1e3 * (body->bbox_min[1] + body->bbox_max[1]) / 2;
+        cut[k].radius_mm = holes[k].radius_mm;
+        cut[k].z_lo_mm = holes[k].z_lo_mm + to_bed;
+        cut[k].z_hi_mm = holes[k].z_hi_mm + to_bed;
+    }
+    tippe_gcode_cut_body(body, beads, cut, n);
+}
+
+/* tippe_gcode_read through the cache, with the holes cut (n 0: none); the
+ * density must be the options' own (override_density), one density for every
+ * tool, for a hit to rescale. */
+static int gcode_read_cached(const char *file, const tippe_gcode_options *opt,
+                             const hole_cut *holes, int n, double bed_z_mm,
+                             tippe_gcode_body *out, tippe_error *err)
+{
+    struct stat st;
+    tippe_gcode_options key = *opt;
+    key.density_g_cm3 = 0;
+    double need = 0;
+    for (int k = 0; k < n; k++)
+        need = fmax(need, holes[k].radius_mm + 3);
+    int keyed = opt->override_density && opt->density_g_cm3 > 0 && stat(file, &st) == 0 &&
+                S_ISREG(st.st_mode);
+    if (keyed) {
+        pthread_mutex_lock(&gcode_lock);
+        for (int k = 0; k < GCODE_CACHE; k++) {
+            const gcode_entry *e = &gcode_cache[k];
+            if (e->used && e->dev == st.st_dev && e->ino == st.st_ino && e->size == st.st_size &&
+                e->mtime.tv_sec == st.st_mtim.tv_sec && e->mtime.tv_nsec == st.st_mtim.tv_nsec &&
+                same_gcode_options(&e->opt, &key) && (!n || e->beads.radius_mm >= need)) {
+                *out = e->body;
+                tippe_gcode_body_set_density(out, opt->density_g_cm3);
+                if (n)
+                    apply_cuts(out, &e->beads, holes, n, bed_z_mm);
+                pthread_mutex_unlock(&gcode_lock);
+                snprintf(out->source, sizeof out->source, "%.*s", (int)sizeof out->source - 1,
+                         file);
+                return TIPPE_OK;
+            }
+        }
+        pthread_mutex_unlock(&gcode_lock);
+    }
+    tippe_gcode_beads beads;
+    int rc = tippe_gcode_read_beads(file, opt, n ? need + GCODE_KEEP_MARGIN_MM : 0, out, &beads,
+                                    err);
+    if (rc)
+        return rc;
+    tippe_gcode_body read = *out;
+    if (n)
+        apply_cuts(out, &beads, holes, n, bed_z_mm);
+    if (!keyed) {
+        tippe_gcode_beads_free(&beads);
+        return TIPPE_OK;
+    }
+    pthread_mutex_lock(&gcode_lock);
+    gcode_entry *e = &gcode_cache[gcode_next];
+    gcode_next = (gcode_next + 1) % GCODE_CACHE;
+    tippe_gcode_beads_free(&e->beads);
+    e->used = 1;
+    e->dev = st.st_dev;
+    e->ino = st.st_ino;
+    e->size = st.st_size;
+    e->mtime = st.st_mtim;
+    e->opt = key;
+    e->body = read;
+    e->beads = beads;
+    pthread_mutex_unlock(&gcode_lock);
+    return TIPPE_OK;
+}
+
+/* What the part loses after printing. The model's part has its holes at the
+ * design's radii (a thread modelled as a smooth cylinder of the hole's radius);
+ * a maker prints the screw's hole at the tap drill or an insert's pilot
+ * (tippe build's 3MF) and then taps, drills or bores it to that radius. So the
+ * G-code's plastic inside each hole of the part (a cylinder void cut from it,
+ * on the axis as every part is), over the hole's heights, is cut away
+ * (gcode_cut.c). The insert's own brass is not added: the model does not have
+ * it either (a design part for it would give both). Fills holes (at most
+ * TIPPE_GCODE_MAX_CUTS) and which part each is; returns how many. */
+static int part_holes(const tippe_design *d, int i, hole_cut *holes, int *which)
+{
+    int n = 0;
+    for (int k = 0; k < d->n_parts && n < TIPPE_GCODE_MAX_CUTS; k++) {
+        const part *h = &d->parts[k];
+        if (h->parent != i || !h->is_void || h->shape != SHAPE_CYLINDER || h->inner_radius_mm > 0)
+            continue;
+        double zlo = h->z_mm - h->height_mm / 2, zhi = h->z_mm + h->height_mm / 2;
+        if (h->clip_radius_mm > 0) {
+            zlo = fmax(zlo, -h->clip_radius_mm);
+            zhi = fmin(zhi, h->clip_radius_mm);
+        }
+        holes[n] = (hole_cut){h->radius_mm, zlo, zhi};
+        which[n++] = k;
+    }
+    return n;
+}
+
+/* The hole the G-code leaves against the design's: narrower, the cut says how
+ * much plastic went; wider by more than GCODE_HOLE_TOL_MM, the part lacks
+ * plastic the model has (no cut can add it). "" when they agree. */
+#define GCODE_HOLE_TOL_MM 0.05
+static void hole_note(part *p, const tippe_design *d, const int *which, int n,
+                      const tippe_gcode_body *body)
+{
+    size_t used = 0;
+    p->gcode_note[0] = 0;
+    for (int k = 0; k < n; k++) {
+        const part *h = &d->parts[which[k]];
+        double rg = body->cut_hole_radius_mm[k];
+        if (!isfinite(rg) || fabs(rg - h->radius_mm) <= GCODE_HOLE_TOL_MM)
+            continue;
+        int m = snprintf(p->gcode_note + used, sizeof p->gcode_note - used,
+                         rg < h->radius_mm
+                             ? "%sits hole '%s' is %.2f mm across, the design's %.2f mm: the "
+                               "plastic inside the design's hole (%.3f g in all) is taken as "
+                               "cut away after printing (tapped, drilled or bored)"
+                             : "%sits hole '%s' is %.2f mm across, wider than the design's "
+                               "%.2f mm: the part lacks plastic the model has (%.3f g cut)",
+                         used ? "; " : "", h->name, 2 * rg, 2 * h->radius_mm,
+                         body->cut_mass_kg * 1e3);
+        if (m < 0 || (size_t)m >= sizeof p->gcode_note - used)
+            break;
+        used += (size_t)m;
+    }
+}
+
 /* The printed part from the slicer's G-code of it (print.gcode, relative to the
  * design file): its extrusion moves summed into mass moments (gcode.c), at the
  * design's density (the volumes are the slicer's, the material the design's).
@@ -222,22 +419,36 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     tippe_gcode_options opt = tippe_gcode_defaults();
     opt.density_g_cm3 = p->density_g_cm3;
     opt.override_density = 1;
+    if (p->filament_diameter_mm > 0) { /* the design knows the filament better (Cura) */
+        opt.filament_diameter_mm = p->filament_diameter_mm;
+        opt.override_diameter = 1;
+    }
     tippe_gcode_body body;
     tippe_error gerr = {0};
-    int rc = tippe_gcode_read(file, &opt, &body, &gerr);
+    hole_cut holes[TIPPE_GCODE_MAX_CUTS];
+    int which[TIPPE_GCODE_MAX_CUTS];
+    int n_holes = part_holes(d, i, holes, which);
+    const tippe_print_sliced *sl = &p->sliced;
+    int rc = gcode_read_cached(file, &opt, holes, n_holes, 1e3 * sl->bed_z_m, &body, &gerr);
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", gerr.msg)
                                   : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,
                                                     gerr.msg);
-    const tippe_print_sliced *sl = &p->sliced;
     tippe_gcode_expect ex = {0};
     ex.height_mm = (sl->top_z_m - sl->bed_z_m) * 1e3;
     ex.diameter_mm = 2 * p->radius_mm;
     tippe_gcode_part gp;
     if ((rc = tippe_gcode_match(&body, &ex, &gp, &gerr)))
         return tippe_json_fail(c, pth, "%s does not match part '%s' (printed %.2f mm high and "
-                                       "%.2f mm across): %s",
-                               p->gcode, p->name, ex.height_mm, ex.diameter_mm, gerr.msg);
+                                       "%.2f mm across): %s (read with E in %s%.3g%s)",
+                               p->gcode, p->name, ex.height_mm, ex.diameter_mm, gerr.msg,
+                               body.volumetric_e ? "mm^3" : "mm of ",
+                               body.volumetric_e ? 0.0 : body.filament_diameter_mm,
+                               body.volumetric_e ? "" : p->filament_diameter_mm > 0
+                                   ? " mm filament, print.filament_diameter_mm"
+                                   : " mm filament; a wrong diameter scales every bead: "
+                                     "give print.filament_diameter_mm");
+    hole_note(p, d, which, n_holes, &body);
     double scale = 1.0;
     if (p->calibrated) {
         scale = p->measured_mass_g * 1e-3 / gp.m;

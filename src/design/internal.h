@@ -97,6 +97,8 @@ typedef struct {
     int fit;                /* a hole's "fit": TIPPE_DESIGN_FIT_* (NONE when not given) */
     char catalogue_item[64];/* "catalogue_item": the hardware catalogue's item it is, or "" */
     char gcode[1024];       /* print.gcode as given (relative to the design file), or "" */
+    double filament_diameter_mm; /* print.filament_diameter_mm: the G-code's filament, 0 the
+                                    file's own */
     double printed_mass_kg; /* as printed, at `infill` */
     tippe_print_sliced sliced; /* the slicer model's layers (print.model slicer) */
     /* print.gcode: the G-code's body, matched to the part, the weighing's flow factor
@@ -105,6 +107,7 @@ typedef struct {
     tippe_gcode_body gcode_body;
     tippe_gcode_part gcode_part;
     double gcode_flow;
+    char gcode_note[512];   /* the G-code's hole against the design's (gcode_cut_holes), or "" */
     tippe_moments model_moments;
     double model_mass_kg;
     tippe_moments deposit, model_deposit; /* unit density: the printed part alone */
@@ -112,9 +115,10 @@ typedef struct {
 
 struct tippe_design {
     char *path, *name;
-    /* A design loaded from memory (tippe_design_load_text): its text, kept for
-     * tippe_design_derive and _reload, and the folder of its materials table;
-     * NULL for a file. */
+    /* The design's text as first read (a file's too), kept for
+     * tippe_design_derive and _reload; and for a design loaded from memory
+     * (tippe_design_load_text) the folder of its materials table, NULL for a
+     * file. */
     char *text, *materials_dir;
     size_t text_len;
     char *catalogue; /* "catalogue": the hardware catalogue file, resolved; NULL: not given */

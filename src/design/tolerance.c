@@ -179,8 +179,10 @@ static int resolve(const tippe_json_reader *c, const tippe_design *d, const char
         snprintf(canon, cap, "%s", key);
     *unit = strstr(key, DENSITY_KEY)          ? "g/cm^3"
             : strstr(key, "measured_mass_g")  ? "g"
-            : strstr(key, ".print.infill")    ? ""
-                                              : "mm";
+            : strstr(key, ".print.infill") || strstr(key, ".print.model_error") ||
+                      strstr(key, ".print.calibration")
+                ? ""
+                : "mm";
     return TIPPE_OK;
 }
 
@@ -208,8 +210,10 @@ static int read_amount(const tippe_json_reader *c, const cJSON *item, const char
         return tippe_json_wrong_type(c, path, "a number (+/- in the field's unit) or \"N%\"",
                                      item);
     }
-    /* A length or a density moved by its whole value is no longer a part. */
-    if (strcmp(unit, "mm") || !strstr(path, "z_mm")) {
+    /* A length or a density moved by its whole value is no longer a part; the
+     * print model's error and a weighing's calibration are offsets about 0. */
+    if ((strcmp(unit, "mm") || !strstr(path, "z_mm")) && !strstr(path, ".print.model_error") &&
+        !strstr(path, ".print.calibration")) {
         if (*plus_minus >= fabs(value))
             return tippe_json_fail(c, path,
                                    "+/-%g %s is not less than the value itself (%g %s)",

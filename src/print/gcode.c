@@ -544,6 +544,15 @@ int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
                              const tippe_gcode_options *opt, tippe_gcode_body *out,
                              tippe_error *err)
 {
+    return tippe_gcode_parse_near(text, len, name, opt, 0, out, NULL, err);
+}
+
+int tippe_gcode_parse_near(const char *text, size_t len, const char *name,
+                           const tippe_gcode_options *opt, double keep_radius_mm,
+                           tippe_gcode_body *out, tippe_gcode_beads *near, tippe_error *err)
+{
+    if (near)
+        *near = (tippe_gcode_beads){0};
     tippe_gcode_options defaults = tippe_gcode_defaults();
     if (!opt)
         opt = &defaults;
@@ -581,6 +590,7 @@ int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
     long lines;
     tippe_gcode_read_config(text, len, &g->cfg, &lines);
     tippe_gcode_acc_init(acc, opt->bead, g->cfg.labelled);
+    acc->keep_radius_mm = near ? keep_radius_mm : 0;
     int rc = TIPPE_OK;
     for (int t = 0; t < GC_MAX_TOOLS; t++) {
         double d = per_tool(g->cfg.diam, g->cfg.n_diam, t, opt->filament_diameter_mm,
@@ -618,6 +628,10 @@ int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
     out->slicer_filament_mm = g->cfg.filament_mm;
     out->slicer_filament_g = g->cfg.filament_g;
     rc = tippe_gcode_acc_finish(acc, out, err);
+    if (!rc && near) { /* the beads kept go to the caller */
+        *near = acc->near;
+        acc->near = (tippe_gcode_beads){0};
+    }
 done:
     tippe_gcode_acc_free(acc);
     free(acc);
@@ -625,15 +639,23 @@ done:
     return rc;
 }
 
-int tippe_gcode_read(const char *path, const tippe_gcode_options *opt, tippe_gcode_body *out,
-                     tippe_error *err)
+int tippe_gcode_read_beads(const char *path, const tippe_gcode_options *opt, double radius_mm,
+                           tippe_gcode_body *out, tippe_gcode_beads *beads, tippe_error *err)
 {
     char *buf = NULL;
     size_t len = 0;
+    if (beads)
+        *beads = (tippe_gcode_beads){0};
     int rc = tippe_file_read(path, (size_t)TIPPE_GCODE_MAX_MIB << 20, "G-code", &buf, &len, err);
     if (rc)
         return rc;
-    rc = tippe_gcode_parse_buffer(buf, len, path, opt, out, err);
+    rc = tippe_gcode_parse_near(buf, len, path, opt, radius_mm, out, beads, err);
     free(buf);
     return rc;
+}
+
+int tippe_gcode_read(const char *path, const tippe_gcode_options *opt, tippe_gcode_body *out,
+                     tippe_error *err)
+{
+    return tippe_gcode_read_beads(path, opt, 0, out, NULL, err);
 }

@@ -48,8 +48,11 @@ void tippe_gcode_acc_free(tippe_gcode_acc *a)
     free(a->body.z);
     free(a->unlab.z);
     free(a->seg);
+    free(a->near.bead);
     a->all.z = a->body.z = a->unlab.z = NULL;
     a->seg = NULL;
+    a->near.bead = NULL;
+    a->near.n = 0;
 }
 
 /* ------------------------------------------------------------ levels */
@@ -101,41 +104,25 @@ double tippe_gcode_fallback_height(const tippe_gcode_acc *a, double z_mm)
 
 /* ------------------------------------------------------------ deposits */
 
+/* Plain comparisons, not fmin/fmax (library calls, a tenth of the reader's time);
+ * no value here is a NaN (the reader refuses non-numbers). */
+static inline double lesser(double a, double b) { return b < a ? b : a; }
+static inline double greater(double a, double b) { return b > a ? b : a; }
+
 static void grow(double lo[3], double hi[3], double x, double y, double z, double r)
 {
-    lo[0] = fmin(lo[0], x - r);
-    hi[0] = fmax(hi[0], x + r);
-    lo[1] = fmin(lo[1], y - r);
-    hi[1] = fmax(hi[1], y + r);
-    lo[2] = fmin(lo[2], z);
-    hi[2] = fmax(hi[2], z);
+    lo[0] = lesser(lo[0], x - r);
+    hi[0] = greater(hi[0], x + r);
+    lo[1] = lesser(lo[1], y - r);
+    hi[1] = greater(hi[1], y + r);
+    lo[2] = lesser(lo[2], z);
+    hi[2] = greater(hi[2], z);
 }
 
-void tippe_gcode_deposit(tippe_gcode_acc *a, int f, const double p0[3], const double p1[3], double vol,
-                double rho, double h, int count)
+/* The sums of the header for one bead (gcode_state.h). */
+void tippe_gcode_add_bead(tippe_gcode_moments *m, const double u[3], const double v[3], double dm,
+                          int box, double h, double w, double dx, double dy, double lxy)
 {
-    if (!(vol > 0))
-        return;
-    if (!a->have_ref) {
-        a->ref[0] = p0[0];
-        a->ref[1] = p0[1];
-        a->ref[2] = 0;
-        a->have_ref = 1;
-    }
-    double dx = p1[0] - p0[0], dy = p1[1] - p0[1], dz = p1[2] - p0[2];
-    double len = sqrt(dx * dx + dy * dy + dz * dz), lxy = hypot(dx, dy);
-    double w = h > 0 && len > 0 ? fmin(vol / (len * h), GC_MAX_BEAD_WIDTH_MM) : 0;
-    int box = a->bead == TIPPE_GCODE_BEAD_BOX;
-    double shift = box ? h / 2 : 0;
-    double u[3], v[3];
-    for (int i = 0; i < 3; i++) {
-        u[i] = p0[i] - a->ref[i];
-        v[i] = p1[i] - a->ref[i];
-    }
-    u[2] -= shift;
-    v[2] -= shift;
-    double dm = vol * rho;
-    tippe_gcode_moments *m = &a->mom[f];
     m->m += dm;
     for (int i = 0; i < 3; i++)
         m->s[i] += dm * (u[i] + v[i]) / 2;
@@ -153,6 +140,66 @@ void tippe_gcode_deposit(tippe_gcode_acc *a, int f, const double p0[3], const do
             m->q[3] += c * nx * ny;
         }
     }
+}
+
+double tippe_gcode_distance_xy(double x, double y, const double p0[3], const double p1[3])
+{
+    double dx = p1[0] - p0[0], dy = p1[1] - p0[1], l2 = dx * dx + dy * dy;
+    double t = l2 > 0 ? ((x - p0[0]) * dx + (y - p0[1]) * dy) / l2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    double ex = p0[0] + t * dx - x, ey = p0[1] + t * dy - y;
+    return sqrt(ex * ex + ey * ey);
+}
+
+/* Keeps a body bead for later cuts (filtered to the axis's neighbourhood at the end). */
+static void keep_near(tippe_gcode_acc *a, const double p0[3], const double p1[3], double h,
+                      double w, double vol)
+{
+    tippe_gcode_beads *nb = &a->near;
+    if (nb->n == a->cap_near) {
+        size_t cap = a->cap_near ? 2 * a->cap_near : 4096;
+        tippe_gcode_near_bead *b2 = realloc(nb->bead, cap * sizeof *b2);
+        if (!b2) {
+            a->oom = 1;
+            return;
+        }
+        nb->bead = b2;
+        a->cap_near = cap;
+    }
+    nb->bead[nb->n++] = (tippe_gcode_near_bead){(float)p0[0], (float)p0[1], (float)p0[2],
+                                                (float)p1[0], (float)p1[1], (float)p1[2],
+                                                (float)h,     (float)w,     (float)vol};
+}
+
+void tippe_gcode_deposit(tippe_gcode_acc *a, int f, const double p0[3], const double p1[3], double vol,
+                double rho, double h, int count)
+{
+    if (!(vol > 0))
+        return;
+    if (!a->have_ref) {
+        a->ref[0] = p0[0];
+        a->ref[1] = p0[1];
+        a->ref[2] = 0;
+        a->have_ref = 1;
+    }
+    double dx = p1[0] - p0[0], dy = p1[1] - p0[1], dz = p1[2] - p0[2];
+    /* sqrt, not hypot: a bed's lengths neither overflow nor underflow */
+    double len = sqrt(dx * dx + dy * dy + dz * dz), lxy = sqrt(dx * dx + dy * dy);
+    double w = h > 0 && len > 0 ? lesser(vol / (len * h), GC_MAX_BEAD_WIDTH_MM) : 0;
+    int box = a->bead == TIPPE_GCODE_BEAD_BOX;
+    double shift = box ? h / 2 : 0;
+    double u[3], v[3];
+    for (int i = 0; i < 3; i++) {
+        u[i] = p0[i] - a->ref[i];
+        v[i] = p1[i] - a->ref[i];
+    }
+    u[2] -= shift;
+    v[2] -= shift;
+    double dm = vol * rho;
+    tippe_gcode_add_bead(&a->mom[f], u, v, dm, box, h, w, dx, dy, lxy);
+    if (a->keep_radius_mm > 0 && box &&
+        (f < TIPPE_GCODE_SKIRT_BRIM || (f == TIPPE_GCODE_UNLABELLED && !a->labelled)))
+        keep_near(a, p0, p1, h, w, vol);
     a->vol[f] += vol;
     a->mass[f] += dm;
     a->len[f] += len;
@@ -165,8 +212,8 @@ void tippe_gcode_deposit(tippe_gcode_acc *a, int f, const double p0[3], const do
     /* the beads' extents: w/2 sideways, from the nozzle down by h */
     grow(a->lo[f], a->hi[f], p0[0], p0[1], p0[2], w / 2);
     grow(a->lo[f], a->hi[f], p1[0], p1[1], p1[2], w / 2);
-    a->lo[f][2] = fmin(a->lo[f][2], fmin(p0[2], p1[2]) - h);
-    a->zmin_nozzle[f] = fmin(a->zmin_nozzle[f], fmin(p0[2], p1[2]));
+    a->lo[f][2] = lesser(a->lo[f][2], lesser(p0[2], p1[2]) - h);
+    a->zmin_nozzle[f] = lesser(a->zmin_nozzle[f], lesser(p0[2], p1[2]));
 
     if (f != TIPPE_GCODE_CUSTOM && !(f == TIPPE_GCODE_UNLABELLED && a->labelled))
         levels_insert(a, &a->all, p1[2]);
@@ -237,12 +284,12 @@ static int clusters(tippe_gcode_acc *a, int unlab_body, tippe_gcode_body *out)
         const tippe_gcode_seg *s = &a->seg[k];
         if (s->feature == TIPPE_GCODE_UNLABELLED && !unlab_body)
             continue;
-        double len = hypot(s->x1 - s->x0, s->y1 - s->y0);
+        double ux = s->x1 - s->x0, uy = s->y1 - s->y0, len = sqrt(ux * ux + uy * uy);
         int steps = (int)ceil(len / (cell / 2));
         for (int i = 0; i <= steps; i++) {
             double t = steps ? (double)i / steps : 0;
-            double x = s->x0 + t * (s->x1 - s->x0), y = s->y0 + t * (s->y1 - s->y0);
-            label[CELL(fmin(fmax(x, x0), x1), fmin(fmax(y, y0), y1))] = -1;
+            double x = s->x0 + t * ux, y = s->y0 + t * uy;
+            label[CELL(lesser(greater(x, x0), x1), lesser(greater(y, y0), y1))] = -1;
         }
     }
     int ncl = 0;
@@ -384,6 +431,22 @@ int tippe_gcode_acc_finish(tippe_gcode_acc *a, tippe_gcode_body *out, tippe_erro
     out->inertia[4] = -1e-6 * qc[4];
     out->inertia[5] = -1e-6 * qc[5];
     out->layer_height = 1e-3 * vol_h / out->body_volume_mm3;
+    out->cut_volume_mm3 = out->cut_mass_kg = 0;
+    for (int k = 0; k < TIPPE_GCODE_MAX_CUTS; k++)
+        out->cut_hole_radius_mm[k] = INFINITY;
+    if (a->keep_radius_mm > 0) { /* the beads near the footprint's axis, as tippe_gcode_match has it */
+        double ax = (lo[0] + hi[0]) / 2, ay = (lo[1] + hi[1]) / 2, r = a->keep_radius_mm;
+        tippe_gcode_beads *nb = &a->near;
+        size_t k = 0;
+        for (size_t j = 0; j < nb->n; j++) {
+            const tippe_gcode_near_bead *e = &nb->bead[j];
+            double p0[3] = {e->x0, e->y0, e->z0}, p1[3] = {e->x1, e->y1, e->z1};
+            if (tippe_gcode_distance_xy(ax, ay, p0, p1) < r + e->w_mm / 2)
+                nb->bead[k++] = *e;
+        }
+        nb->n = k;
+        nb->radius_mm = r;
+    }
     out->first_layer_z = 1e-3 * zmin;
 
     /* layers: the body's distinct nozzle heights (with the unlabelled ones if body) */
@@ -410,6 +473,22 @@ int tippe_gcode_acc_finish(tippe_gcode_acc *a, tippe_gcode_body *out, tippe_erro
     if (clusters(a, unlab_body, out))
         return tippe_error_set(err, TIPPE_ECOMPUTE, "%s: out of memory", out->source);
     return TIPPE_OK;
+}
+
+/* Every mass of the body is its volume times the one density (override_density). */
+void tippe_gcode_body_set_density(tippe_gcode_body *b, double density_g_cm3)
+{
+    if (!(b->density_g_cm3 > 0) || b->density_g_cm3 == density_g_cm3)
+        return;
+    double k = density_g_cm3 / b->density_g_cm3;
+    for (int f = 0; f < TIPPE_GCODE_N_FEATURES; f++)
+        b->feature[f].mass_kg *= k;
+    b->excluded_mass_kg *= k;
+    b->cut_mass_kg *= k;
+    b->m *= k;
+    for (int i = 0; i < 6; i++)
+        b->inertia[i] *= k;
+    b->density_g_cm3 = density_g_cm3;
 }
 
 /* ------------------------------------------------------------ the part */

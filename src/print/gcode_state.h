@@ -95,6 +95,9 @@ typedef struct {
     tippe_gcode_seg *seg;
     size_t n_seg, cap_seg;
     tippe_gcode_names objects[GC_SCHEMES];
+    double keep_radius_mm; /* > 0: the body's beads are kept (near), for cuts */
+    tippe_gcode_beads near;
+    size_t cap_near;
     int oom;              /* an allocation failed */
 } tippe_gcode_acc;
 
@@ -105,6 +108,10 @@ static inline int tippe_gcode_body_candidate(int f)
 }
 
 void tippe_gcode_acc_init(tippe_gcode_acc *a, tippe_gcode_bead bead, int labelled);
+/* A bead of mass dm along u -> v (mm, about some point; the box's middle
+ * height), its cross-section w x h added when box: the sums of gcode_body.c. */
+void tippe_gcode_add_bead(tippe_gcode_moments *m, const double u[3], const double v[3], double dm,
+                          int box, double h, double w, double dx, double dy, double lxy);
 void tippe_gcode_acc_free(tippe_gcode_acc *a);
 
 /* The bead height at nozzle height z_mm with no height comment: z above the
@@ -125,5 +132,14 @@ void tippe_gcode_object_seen(tippe_gcode_acc *a, int scheme, const char *name);
  * unlabelled deposits are the body when the file is not labelled.
  * TIPPE_EINPUT if the body has no deposit, TIPPE_ECOMPUTE if memory ran out. */
 int tippe_gcode_acc_finish(tippe_gcode_acc *a, tippe_gcode_body *out, tippe_error *err);
+
+/* The distance (mm) from (x, y) to the segment p0 -> p1 seen from above. */
+double tippe_gcode_distance_xy(double x, double y, const double p0[3], const double p1[3]);
+
+/* The same text read, the body's beads within keep_radius_mm of its axis kept
+ * in *near (keep_radius_mm 0: none, near may be NULL). */
+int tippe_gcode_parse_near(const char *text, size_t len, const char *name,
+                           const tippe_gcode_options *opt, double keep_radius_mm,
+                           tippe_gcode_body *out, tippe_gcode_beads *near, tippe_error *err);
 
 #endif

@@ -127,6 +127,10 @@ static void read_config_comment(tippe_gcode_config *c, const char *s, const char
         tippe_gcode_copy_text(c->generator, sizeof c->generator, s, e);
     } else if ((size_t)(e - s) > 7 && !memcmp(s, "FLAVOR:", 7)) {
         c->cura = 1;
+        /* Cura's UltiGCode flavour writes E as volume, mm^3 (CuraEngine,
+         * src/gcodeExport.cpp: is_volumetric for EGCodeFlavor::ULTIGCODE) */
+        if (tippe_gcode_same_ci(s + 7, e, "UltiGCode"))
+            c->volumetric = 1;
     } else if (((size_t)(e - s) >= 5 && !memcmp(s, "TYPE:", 5)) ||
                ((size_t)(e - s) >= 8 && !memcmp(s, "FEATURE:", 8))) {
         c->labelled = 1;

@@ -626,3 +626,29 @@ double tippe_print_pattern_bulk(int pattern)
 {
     return pattern >= 0 && pattern < TIPPE_PRINT_N_PATTERNS ? patterns[pattern].bulk : 0.0;
 }
+
+/* The shipped profile's values (designs/slicer/prusa-pla-0.4mm.ini), which the
+ * model follows; PrusaSlicer 2.5's own defaults differ where noted
+ * (PrintConfig.cpp, set_default_value), and a maker's profile may differ in any:
+ * issue 40 measured thick_bridges off moving the shells' body A/C by 0.009. */
+static const tippe_print_assumed assumed[] = {
+    {"thick_bridges", "1", "bridges and overhang perimeters as round threads of the nozzle's "
+                           "diameter (the model's overhang rule)"},
+    {"solid_infill_below_area", "0", "no small region made solid (2.5's default: 70 mm^2)"},
+    {"extra_perimeters", "0", "no perimeter added over sloping layers (2.5's default: on)"},
+    {"perimeter_generator", "arachne", "the walls' beads (the measured model error assumes it)"},
+    {"thin_walls", "0", "no single thin walls (2.5's default: on)"},
+    {"gap_fill_enabled", "1", "gaps between perimeters filled"},
+    {"top_fill_pattern", "monotonic", "the top surfaces' lines"},
+    {"bottom_fill_pattern", "monotonic", "the bottom surfaces' lines"},
+    {"infill_every_layers", "1", "sparse infill on every layer"},
+    {"solid_infill_every_layers", "0", "no solid layer every N layers"},
+    {"infill_only_where_needed", "0", "infill everywhere inside"},
+    {"overhangs", "1", "overhanging perimeters detected (laid as bridges)"},
+    {"bridge_flow_ratio", "1", "a bridge's flow"},
+    {"fill_angle", "45", "the sparse lines' angle"},
+    {"bridge_angle", "0", "bridges at their own best angle"},
+    {NULL, NULL, NULL},
+};
+
+const tippe_print_assumed *tippe_print_assumed_settings(void) { return assumed; }

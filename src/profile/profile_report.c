@@ -118,6 +118,8 @@ void tippe_profile_print_printed_parts(FILE *out, const tippe_design *d)
                     pi.model_mass_kg * 1e3,
                     100 * (pi.model_mass_kg / pi.printed_mass_kg - 1), pi.model_body_A_over_C,
                     pi.filament_volume_mm3 * 1e-3);
+        if (pi.from_gcode && pi.gcode_note[0])
+            fprintf(out, "         the G-code: %s\n", pi.gcode_note);
         any = 1;
     }
     if (!any)
@@ -174,7 +176,9 @@ int tippe_profile_printed_parts_json(struct cJSON *o, const tippe_design *d)
                        cJSON_AddStringToObject(e, "gcode_generator", pi.generator) &&
                        cJSON_AddNumberToObject(e, "flow_factor", pi.flow_factor) &&
                        cJSON_AddNumberToObject(e, "model_mass_kg", pi.model_mass_kg) &&
-                       cJSON_AddNumberToObject(e, "model_body_A_over_C", pi.model_body_A_over_C)
+                       cJSON_AddNumberToObject(e, "model_body_A_over_C", pi.model_body_A_over_C) &&
+                       cJSON_AddNumberToObject(e, "gcode_cut_mass_kg", pi.gcode_cut_mass_kg) &&
+                       cJSON_AddStringToObject(e, "gcode_note", pi.gcode_note)
                  : cJSON_AddNullToObject(e, "gcode") != NULL);
         if (!ok)
             return -1;
