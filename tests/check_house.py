@@ -11,7 +11,8 @@
    B.o (nm); the calls between the library's and the command's files form no
    circle, and a call between folders never runs up a layer;
 6. friction laws: no .c file outside src/physics/ names a law (TIPPE_FRICTION_*):
-   a law is one entry of src/physics/friction_laws.c's table.
+   a law is one entry of src/physics/friction_laws.c's table;
+7. paths: no .c file but src/base/path.c splits a path at its last '/' by hand.
 
 Usage: check_house.py SOURCE_DIR BUILD_DIR. Prints one line per breach and the
 closing line 'N passed, M failed'."""
@@ -31,7 +32,7 @@ HEADER_LAYER = {"base": 0, "print": 1, "design": 2, "physics": 3, "profile": 4, 
                 "serve": 8}
 # The names each folder's objects may export (after tippe_).
 OWNS = {
-    "base": ["error", "gsl", "report", "progress", "json", "file", "cancel"],
+    "base": ["error", "gsl", "report", "progress", "json", "file", "cancel", "path"],
     "print": ["print", "gcode", "moments", "ball", "shell", "tube", "torus"],
     "design": ["design", "tolerance", "tolerances", "materials"],
     "physics": ["theory", "dynamics", "launch", "group", "verdict", "decision", "friction",
@@ -293,6 +294,20 @@ for d, _, files in os.walk(os.path.join(src_root, "src")):
                 fail("friction law named outside physics/: src/%s/%s names TIPPE_FRICTION_* %d "
                      "times (ask the law's table entry, tippe_friction_law_type_of)" %
                      (rel, f, n))
+
+# 7. a path relative to the file that names it is one rule (src/base/path.c,
+#    tippe_path_*; issue 34.3): no other source splits a path at its last '/' by hand.
+SPLIT = re.compile(r"strrchr\([^;]*'/'\)")
+for d, _, files in os.walk(os.path.join(src_root, "src")):
+    rel = os.path.relpath(d, os.path.join(src_root, "src"))
+    for f in sorted(files):
+        if f.endswith(".c") and not (rel == "base" and f == "path.c"):
+            checks += 1
+            with open(os.path.join(d, f), encoding="utf-8") as fh:
+                n = len(SPLIT.findall(fh.read()))
+            if n:
+                fail("paths: src/%s/%s splits a path at '/' by hand %d times (tippe_path_dir, "
+                     "_base, _beside, _stem or _ext of src/base/path.c)" % (rel, f, n))
 
 print("check_house: %d objects, %d file-to-file calls, %d includes and symbols checked" %
       (len(defined), sum(len(b) for b in edges.values()), checks))

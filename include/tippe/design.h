@@ -68,6 +68,14 @@ typedef struct tippe_design tippe_design; /* opaque */
 int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
                       tippe_design **out, tippe_error *err);
 
+/* The same for path's text, read already (len bytes) by a caller that had to
+ * look into the file first (a design or a scenario?): as tippe_design_load(path)
+ * without reading the file again (its materials table, catalogue and G-code are
+ * found from path's folder). */
+int tippe_design_load_read(const char *path, const char *text, size_t len,
+                           const char *const *overrides, int n_overrides, tippe_design **out,
+                           tippe_error *err);
+
 /* The same for a design file's text in memory (len bytes; tippe serve's
  * requests): name stands for the file in every message ("the design"), and the
  * materials table is materials_dir/materials.json (a "materials" field naming
@@ -186,6 +194,10 @@ const char *tippe_design_part_catalogue_item(const tippe_design *d, int i);
 /* The design's "catalogue": the hardware catalogue file, resolved from the
  * design file's folder (checked readable at load); NULL when not given. */
 const char *tippe_design_catalogue(const tippe_design *d);
+/* name as the design finds a file it names (its materials table, catalogue):
+ * relative to the design file's folder (tippe_path_beside), or in the designs
+ * folder of a design from memory. TIPPE_EINPUT (buf cut) when it does not fit. */
+int tippe_design_beside(const tippe_design *d, const char *name, char *buf, size_t size);
 
 /* How part i is printed (docs/design-format.md, "Printed parts"). A part
  * without a print block is solid: printed = 0 and the rest is zero. */
@@ -333,6 +345,9 @@ struct cJSON *tippe_materials_json(const tippe_materials *t, const char *file);
  * file, or the designs folder's for a design from memory); NULL when no part
  * names a material. */
 const char *tippe_design_materials_path(const tippe_design *d);
+/* That table as the design read it (a copy; tippe_materials_free), without
+ * reading the file again; TIPPE_EINPUT when no part names a material. */
+int tippe_design_materials(const tippe_design *d, tippe_materials **out, tippe_error *err);
 /* The overrides ("FIELD=VALUE") the design was loaded with, in order; what a
  * report of it repeats so that the same design can be loaded again. */
 int tippe_design_n_overrides(const tippe_design *d);
@@ -382,6 +397,12 @@ int tippe_design_source_build(const tippe_design_source *s, const char *const *o
 struct cJSON;
 int tippe_design_source_apply(const tippe_design_source *s, const char *const *overrides,
                               int n_overrides, struct cJSON **out, tippe_error *err);
+
+/* The materials table the source's file names ("materials", default
+ * materials.json beside it), as read when the source opened (a copy;
+ * tippe_materials_free); TIPPE_EINPUT naming the file if it does not read. */
+int tippe_design_source_materials(const tippe_design_source *s, tippe_materials **out,
+                                  tippe_error *err);
 
 void tippe_design_source_free(tippe_design_source *s);
 

@@ -16,10 +16,9 @@ static int module_path(const tippe_module *m, char *path, size_t size)
     if (len <= 0)
         return 0;
     exe[len] = '\0';
-    char *slash = strrchr(exe, '/');
-    if (slash)
-        *slash = '\0';
-    return snprintf(path, size, "%s/tippe-%s.so", slash ? exe : ".", m->name) < (int)size;
+    char name[64];
+    snprintf(name, sizeof name, "tippe-%s.so", m->name);
+    return tippe_path_beside(exe, name, path, size) == TIPPE_OK;
 }
 
 static void module_open(tippe_module *m)
