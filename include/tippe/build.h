@@ -20,7 +20,7 @@
 #include <stdio.h>
 
 #include "tippe/design.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/base.h"
 
 /* ISO 261 coarse-pitch metric threads (ISO 724 basic profile). */

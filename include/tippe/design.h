@@ -1,10 +1,10 @@
 /* tippe/design.h: a top as designed.
  *
  * Contents:
- * - the top: the one struct that crosses to physics (tippe_top);
  * - the design file: load, --set overrides, sources, materials, layout and physical
  *   travel, the parts' accessors, polar caps (tippe_design_*, tippe_materials_*);
  * - tolerances: how far a built top may be from its file (tippe_tolerance_*).
+ * A design at a Z2 gives the top physics takes (tippe_design_top: tippe/top.h).
  * A design's printed parts are built on tippe/print.h (solids, the print model, G-code). */
 #ifndef TIPPE_DESIGN_H
 #define TIPPE_DESIGN_H
@@ -13,35 +13,7 @@
 
 #include "tippe/base.h"
 #include "tippe/print.h"
-
-/* ---- the top (the struct that physics takes) ---- */
-/* Top: the one struct that crosses from geometry to physics.
- *
- * An eccentric sphere (paper section 3, Figure 4): mass m, sphere radius R,
- * eccentricity eps = distance from the geometric centre to the centre of mass
- * (0 <= eps < R; the centre of mass is below the centre when theta = 0),
- * A = transverse moment through the centre of mass, C = axial moment. SI units.
- * Theory and dynamics take only this (plus g and friction). */
-typedef struct {
-    double m;   /* kg */
-    double R;   /* m */
-    double eps; /* m, >= 0 */
-    double A;   /* kg m^2 */
-    double C;   /* kg m^2 */
-    /* Which side of the sphere's centre the centre of mass lies on, along the
-     * design's +z axis: +1 above, -1 below, 0 at the centre. That side is the one
-     * that rests on the table at theta = 0. Informational only. */
-    int com_side;
-    /* The outline the table meets where it is not the sphere (issue 35): the
-     * half-angle of the flat cut at the pole down at theta = 0 ([0]) and at the
-     * other pole ([1]) by a hole's opening (tippe_design_polar_caps), rad; 0 where
-     * the sphere is whole. The dynamics rolls the sphere cut flat there (its rim
-     * radius R sin(half-angle)); the theory of the paper, the sphere. */
-    double rim_half_angle_rad[2];
-} tippe_top;
-
-/* Gravity used wherever a user gives none (scenarios, classify, launches), m/s^2. */
-#define TIPPE_DEFAULT_G_M_S2 9.81
+#include "tippe/top.h"
 
 /* ---- the design file (src/design/design*.c) ---- */
 /* Design: a top described by a design file (JSON), placed at one Z2.

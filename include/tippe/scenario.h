@@ -16,7 +16,7 @@
 #define TIPPE_SCENARIO_H
 
 #include "tippe/design.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/base.h"
 
 enum { TIPPE_PHI_DOT_GIVEN = -1 }; /* phi_dot_rule when phi_dot was a number */

@@ -13,7 +13,7 @@
 
 #include "tippe/design.h"
 #include "tippe/base.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 /* ---- the sweep ---- */
 /* Sweep: the zones of a top as its moving weight travels (paper section 6).

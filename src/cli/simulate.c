@@ -1,7 +1,7 @@
 /* tippe simulate: integrate one launch described by a scenario file. */
 #include "cli.h"
 
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "base/json.h"
 #include "tippe/plot.h"
 #include "tippe/base.h"

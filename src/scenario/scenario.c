@@ -4,7 +4,7 @@
 
 #include "tippe/design.h"
 #include "base/json.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>

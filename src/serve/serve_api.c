@@ -7,7 +7,7 @@
 #include "tippe/animate.h"
 #include "tippe/build.h"
 #include "tippe/export.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/sweep.h"
 
 #include <dirent.h>
