@@ -780,8 +780,7 @@ static cJSON *design_root(const char *design_path, double z2_mm, const char *con
     }
     char name[1200];
     /* what differs from launch to launch first: a film's caption may be cut at its end */
-    snprintf(name, sizeof name, "%s at Z2 = %g mm, central hand launch",
-             file, z2_mm);
+    snprintf(name, sizeof name, "%s at Z2 = %g mm, central hand launch", file, z2_mm);
     cJSON_AddStringToObject(root, "name", name);
     /* the design's path is read relative to the "scenario" file: the design itself */
     cJSON_AddStringToObject(top, "design", file);
