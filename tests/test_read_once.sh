@@ -66,4 +66,17 @@ SPEC
 opens "optimise" "$tmp/spec.json" "$PWD/designs/drilled-ball-blind.json" \
     "$PWD/designs/materials.json" "$PWD/designs/catalogue.json" -- \
     optimise "$tmp/spec.json" -o "$tmp/best.json" --threads 1
+# a printed part's G-code (megabytes), read once however many variants a sweep derives
+# (37 reads before: each tolerance band's design read it again); sliced here by
+# PrusaSlicer, when it is installed (CI installs it)
+if command -v prusa-slicer >/dev/null &&
+    "$tippe" slice designs/m12-setscrew-printed.json -o "$tmp/sl" >/dev/null 2>&1; then
+    json_edit designs/m12-setscrew-printed.json "$tmp/sl/g.json" "
+d['parts'][0]['print'] = {'gcode': 'm12-setscrew-printed.gcode'}
+d['materials'] = '$PWD/designs/materials.json'"
+    opens "sweep, a part's G-code" "$tmp/sl/g.json" "$tmp/sl/m12-setscrew-printed.gcode" -- \
+        sweep "$tmp/sl/g.json"
+else
+    echo "test_read_once: the G-code check SKIPPED (no prusa-slicer to slice with)"
+fi
 finish

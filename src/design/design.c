@@ -501,10 +501,12 @@ static int load(const char *path, const char *text, size_t text_len, const char 
         if (from) {
             d->known_table = from->mat_table;
             d->known_table_file = from->mat_file;
+            d->known_from = from;
         }
         rc = tippe_design_build(c, root, path, d, check);
         d->known_table = NULL;
         d->known_table_file = NULL;
+        d->known_from = NULL;
     }
     return tippe_design_finish(c, root, d, overrides, n_overrides, rc, out, err);
 }
@@ -755,6 +757,8 @@ void tippe_design_free(tippe_design *d)
     free(d->materials_dir);
     free(d->mat_file);
     cJSON_Delete(d->mat_table);
+    for (int i = 0; i < MAX_PARTS; i++)
+        tippe_design_text_unref(d->gcode_text[i]);
     free(d->catalogue);
     free(d->name);
     free(d->parts);

@@ -191,6 +191,43 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
  * (closed forms) less (1 - infill) x its sparse core (print model). Sets the
  * part's infill (calibrated from a weighed mass when one is given), its solid
  * and skin masses and the relative error bound. */
+/* Holds a reference: the text outlives the design that read it while a derived one
+ * uses it. */
+struct tippe_design_text *tippe_design_text_ref(struct tippe_design_text *t)
+{
+    if (t)
+        __atomic_add_fetch(&t->refs, 1, __ATOMIC_RELAXED);
+    return t;
+}
+
+void tippe_design_text_unref(struct tippe_design_text *t)
+{
+    if (t && __atomic_sub_fetch(&t->refs, 1, __ATOMIC_ACQ_REL) == 0)
+        free(t);
+}
+
+/* tippe_gcode_read, keeping the text it read for the designs derived from this
+ * one (the same checks and messages: base's reader, then the parser). */
+static int read_gcode(const char *file, const tippe_gcode_options *opt,
+                      struct tippe_design_text **kept, tippe_gcode_body *body, tippe_error *err)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    int rc = tippe_file_read(file, (size_t)TIPPE_GCODE_MAX_MIB << 20, "G-code", &buf, &len, err);
+    if (rc)
+        return rc;
+    rc = tippe_gcode_parse_buffer(buf, len, file, opt, body, err);
+    struct tippe_design_text *t = rc ? NULL : malloc(sizeof *t + len + 1);
+    if (t) {
+        t->refs = 1;
+        t->len = len;
+        memcpy(t->text, buf, len + 1);
+    }
+    free(buf);
+    *kept = t; /* out of memory: the design works, its derived ones read the file */
+    return rc;
+}
+
 /* The printed part from the slicer's G-code of it (print.gcode, relative to the
  * design file): its extrusion moves summed into mass moments (gcode.c), at the
  * design's density (the volumes are the slicer's, the material the design's).
@@ -223,7 +260,24 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     opt.override_density = 1;
     tippe_gcode_body body;
     tippe_error gerr = {0};
-    int rc = tippe_gcode_read(file, &opt, &body, &gerr);
+    /* the body depends on the file and the density alone: a design derived from one
+     * that read it (a tolerance band, a --vary step, an advice) takes its body, or
+     * parses its text again at another density; the file is read once */
+    const tippe_design *from = d->known_from;
+    const part *was = from && i < from->n_parts ? &from->parts[i] : NULL;
+    const int same_file = was && was->has_gcode && from->gcode_text[i] &&
+                          !strcmp(was->name, p->name) && !strcmp(was->gcode, p->gcode);
+    int rc = TIPPE_OK;
+    if (same_file) {
+        d->gcode_text[i] = tippe_design_text_ref(from->gcode_text[i]);
+        if (was->density_g_cm3 == p->density_g_cm3)
+            body = was->gcode_body;
+        else
+            rc = tippe_gcode_parse_buffer(d->gcode_text[i]->text, d->gcode_text[i]->len, file,
+                                          &opt, &body, &gerr);
+    } else {
+        rc = read_gcode(file, &opt, &d->gcode_text[i], &body, &gerr);
+    }
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", gerr.msg)
                                   : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,

@@ -144,9 +144,27 @@ struct tippe_design {
      * its resolved file, used instead of reading that file again. */
     const cJSON *known_table;
     const char *known_table_file;
+    /* Set only while it is built: the design it is derived from (or NULL), whose
+     * parts' G-code bodies are taken where a part reads the same file at the same
+     * density, instead of reading and parsing it again (design_printed.c). */
+    const struct tippe_design *known_from;
+    /* The G-code each part read (print.gcode; NULL: none), its text shared with the
+     * designs derived from this one, which parse it again at their own density but
+     * do not read the file again. */
+    struct tippe_design_text *gcode_text[MAX_PARTS];
     /* Whether the travel is the physical one (a source's variant). */
     int travel_physical, coarse_layout;
 };
+
+/* A file's text read once and shared, read-only, by the designs derived from the
+ * one that read it (a part's G-code: megabytes); freed with the last of them. */
+struct tippe_design_text {
+    int refs; /* atomic */
+    size_t len;
+    char text[];
+};
+struct tippe_design_text *tippe_design_text_ref(struct tippe_design_text *t);
+void tippe_design_text_unref(struct tippe_design_text *t);
 
 /* A design file parsed once (design_source.c). */
 struct tippe_design_source {
