@@ -455,11 +455,12 @@ int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tipp
 /* Keeps the overrides a design was built with (src/design/design.c, below), so that
  * tippe_design_derive can rebuild it with more. */
 
-/* A design read from a file (text NULL) or from text in memory (path then only
- * names it in messages, and its materials table is materials_dir's unless
- * file_text: the text is that file's, read before). from: the design being
- * derived (or NULL), whose materials table is used if it is the same file. The
- * text is kept in the design, so that no design is read from its file twice. */
+/* A design read from a file (text NULL) or from a text in memory: with
+ * materials_dir, a design from memory (path only names it in messages, and its
+ * materials table is materials_dir's); without, the text of the file path, read
+ * before (its tables found from path's folder). from: the design being derived
+ * (or NULL), whose materials table and G-code are used where they are the same
+ * files. The text is kept in the design, so that no design reads its file twice. */
 static int load(const char *path, const char *text, size_t text_len, const char *materials_dir,
                 const tippe_design *from, const char *const *overrides, int n_overrides,
                 int check, tippe_design **out, tippe_error *err)
