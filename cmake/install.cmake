@@ -45,6 +45,8 @@ install(TARGETS tippe_shared LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/include/tippe/base.h ${PROJECT_SOURCE_DIR}/include/tippe/print.h
   ${PROJECT_SOURCE_DIR}/include/tippe/design.h ${PROJECT_SOURCE_DIR}/include/tippe/physics.h
   ${PROJECT_SOURCE_DIR}/include/tippe/scenario.h ${PROJECT_SOURCE_DIR}/include/tippe/sweep.h
+  ${PROJECT_SOURCE_DIR}/include/tippe/top.h ${PROJECT_SOURCE_DIR}/include/tippe/theory.h
+  ${PROJECT_SOURCE_DIR}/include/tippe/launch.h
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tippe)
 install(FILES ${PROJECT_BINARY_DIR}/tippe.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/designs/ DESTINATION ${TIPPE_DATA_DEST})

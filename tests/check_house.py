@@ -11,7 +11,8 @@
    B.o (nm); the calls between the library's and the command's files form no
    circle, and a call between folders never runs up a layer;
 6. friction laws: no .c file outside src/physics/ names a law (TIPPE_FRICTION_*):
-   a law is one entry of src/physics/friction_laws.c's table.
+   a law is one entry of src/physics/friction_laws.c's table;
+7. paths: no .c file but src/base/path.c splits a path at its last '/' by hand.
 
 Usage: check_house.py SOURCE_DIR BUILD_DIR. Prints one line per breach and the
 closing line 'N passed, M failed'."""
@@ -23,19 +24,25 @@ import sys
 src_root, build = sys.argv[1], sys.argv[2]
 
 # Bottom up; a folder may use its own layer and those below.
-LAYER = {"base": 0, "print": 1, "design": 2, "physics": 3, "profile": 4, "scenario": 5,
-         "sweep": 5, "optimise": 6, "build": 6, "plot": 7, "export": 7, "animate": 7,
-         "cli": 8, "modules": 8, "serve": 8}
-HEADER_LAYER = {"base": 0, "print": 1, "design": 2, "physics": 3, "profile": 4, "scenario": 5,
-                "sweep": 5, "optimise": 6, "build": 6, "plot": 7, "export": 7, "animate": 7,
-                "serve": 8}
+LAYER = {"base": 0, "print": 1, "theory": 1, "design": 2, "physics": 2, "launch": 3,
+         "profile": 3, "scenario": 4, "sweep": 4, "optimise": 5, "build": 5, "plot": 6,
+         "export": 6, "animate": 6, "cli": 7, "modules": 7, "serve": 7}
+# top.h is a header alone (the struct design.h fills and physics takes), on base's layer.
+HEADER_LAYER = {"base": 0, "top": 0, "print": 1, "theory": 1, "design": 2, "physics": 2,
+                "launch": 3, "profile": 3, "scenario": 4, "sweep": 4, "optimise": 5, "build": 5,
+                "plot": 6, "export": 6, "animate": 6, "serve": 7}
+# The modules a folder may use on its own layer (the top CMakeLists.txt's TIPPE_*_USES and
+# the front ends): any other two folders of one layer are siblings that know nothing of each
+# other (physics and theory know no design file and no printed part; issue 34.4).
+SIBLING_USES = {"optimise": {"build"}, "cli": {"serve"}, "modules": {"serve"}}
 # The names each folder's objects may export (after tippe_).
 OWNS = {
-    "base": ["error", "gsl", "report", "progress", "json", "file", "cancel"],
+    "base": ["error", "gsl", "report", "progress", "json", "file", "cancel", "path"],
     "print": ["print", "gcode", "moments", "ball", "shell", "tube", "torus"],
     "design": ["design", "tolerance", "tolerances", "materials"],
-    "physics": ["theory", "dynamics", "launch", "group", "verdict", "decision", "friction",
-                "final", "contact"],
+    "theory": ["theory", "group", "final"],
+    "physics": ["dynamics", "verdict", "decision", "friction", "contact"],
+    "launch": ["launch", "friction"],
     "profile": ["profile"],
     "scenario": ["scenario"],
     "sweep": ["sweep"],
@@ -119,6 +126,10 @@ for folder in sorted(os.listdir(os.path.join(src_root, "src"))):
                 elif HEADER_LAYER[mod] > LAYER[folder]:
                     fail("layers: %s: %s (layer %d) is above %s (layer %d)" %
                          (where, mod, HEADER_LAYER[mod], folder, LAYER[folder]))
+                elif HEADER_LAYER[mod] == LAYER[folder] and mod not in (folder, "top") and \
+                        mod not in SIBLING_USES.get(folder, ()):
+                    fail("layers: %s: %s is a sibling of %s on layer %d (not in SIBLING_USES)" %
+                         (where, mod, folder, LAYER[folder]))
                 continue
             m = re.match(r"(?:\.\./)?([a-z_]+)/[a-z_]+\.h$", inc)
             if m:
@@ -159,6 +170,9 @@ for a, bs in sorted(edges.items()):
         fa, fb = a.split("/")[1], b.split("/")[1]
         if LAYER[fb] > LAYER[fa]:
             fail("layers: %s calls %s, a layer up (%s)" % (a, b, ", ".join(sorted(why[(a, b)])[:4])))
+        elif LAYER[fb] == LAYER[fa] and fb != fa and fb not in SIBLING_USES.get(fa, ()):
+            fail("layers: %s calls %s, a sibling on its layer (%s)" %
+                 (a, b, ", ".join(sorted(why[(a, b)])[:4])))
 
 # Tarjan's strongly connected components: any with two files or more is a cycle.
 index, low, stack, on, comps, counter = {}, {}, [], set(), [], [0]
@@ -255,9 +269,59 @@ if "} tippe_print_settings;" not in read("include/tippe/print.h") or \
          "src/print/print_slicer.c and the print block's reader (src/design/design_parts.c) "
          "are not where docs/architecture.md puts them")
 
+# A friction law: its table and the table's questions are src/physics/friction_laws.c's,
+# and the option rules (src/launch/friction_options.c), the scenario reader and the
+# command's --friction help ask it (the dynamics' force is checked against the table by
+# tests/test_physics_friction_laws.c).
+LAWS = "src/physics/friction_laws.c"
+for fn in ("tippe_friction_law_at", "tippe_friction_law_type_of", "tippe_friction_law_find",
+           "tippe_friction_law_help"):
+    checks += 1
+    if fn not in defined.get(LAWS, set()):
+        fail("friction laws: %s is not defined in %s (docs/architecture.md)" % (fn, LAWS))
+for asker in ("src/launch/friction_options.c", "src/scenario/scenario.c"):
+    checks += 1
+    if not calls(asker, LAWS):
+        fail("friction laws: %s does not ask the laws' table (%s)" % (asker, LAWS))
+checks += 1
+if not any(calls(k, LAWS) for k in defined if k.startswith("src/cli/")):
+    fail("friction laws: no file of src/cli/ asks the laws' table (--friction's help)")
+
+# An endpoint reads its request with serve_request.c's strict readers.
+checks += 1
+if not calls("src/serve/serve_api.c", "src/serve/serve_request.c"):
+    fail("endpoints: src/serve/serve_api.c does not read requests with serve_request.c")
+
+# An export format: each internal header of export/ is the header of a file of its name,
+# and export.h's tippe_export_request asks for the formats.
+for h in sorted(os.listdir(os.path.join(src_root, "src", "export"))):
+    if h.endswith(".h"):
+        checks += 1
+        if not os.path.exists(os.path.join(src_root, "src", "export", h[:-2] + ".c")):
+            fail("export formats: src/export/%s has no src/export/%s.c" % (h, h[:-2]))
+checks += 1
+if "tippe_export_request" not in read("include/tippe/export.h"):
+    fail("export formats: include/tippe/export.h has no tippe_export_request")
+
+# A design field: every key the reader of src/design/design_parts.c accepts is documented
+# in docs/design-format.md.
+parts_c, fmt_md = read("src/design/design_parts.c"), read("docs/design-format.md")
+keys = set()
+for m in re.finditer(r"const char \*const [a-z_]+keys\[\] = \{(.*?)\};", parts_c, re.S):
+    keys |= set(re.findall(r'"([a-z_0-9]+)"', m.group(1)))
+checks += 1
+if len(keys) < 20:
+    fail("design fields: src/design/design_parts.c: found only %d keys (its lists changed "
+         "shape?)" % len(keys))
+for k in sorted(keys):
+    checks += 1
+    if "`%s`" % k not in fmt_md and '"%s"' % k not in fmt_md:
+        fail("design fields: '%s' (src/design/design_parts.c) is not in docs/design-format.md" % k)
+
 # 5. names and sizes: a file named like a public header lives in that module's folder; a
-# public header stays readable. physics.h waits for the contact model's rewrite.
-LONG_HEADERS_PENDING = {"physics.h"}
+# public header stays readable (physics.h, 1257 lines, became theory.h, physics.h and
+# launch.h with top.h: issue 34.4).
+LONG_HEADERS_PENDING = set()
 headers = sorted(f for f in os.listdir(os.path.join(src_root, "include", "tippe"))
                  if f.endswith(".h"))
 for folder in sorted(os.listdir(os.path.join(src_root, "src"))):
@@ -293,6 +357,20 @@ for d, _, files in os.walk(os.path.join(src_root, "src")):
                 fail("friction law named outside physics/: src/%s/%s names TIPPE_FRICTION_* %d "
                      "times (ask the law's table entry, tippe_friction_law_type_of)" %
                      (rel, f, n))
+
+# 7. a path relative to the file that names it is one rule (src/base/path.c,
+#    tippe_path_*; issue 34.3): no other source splits a path at its last '/' by hand.
+SPLIT = re.compile(r"strrchr\([^;]*'/'\)")
+for d, _, files in os.walk(os.path.join(src_root, "src")):
+    rel = os.path.relpath(d, os.path.join(src_root, "src"))
+    for f in sorted(files):
+        if f.endswith(".c") and not (rel == "base" and f == "path.c"):
+            checks += 1
+            with open(os.path.join(d, f), encoding="utf-8") as fh:
+                n = len(SPLIT.findall(fh.read()))
+            if n:
+                fail("paths: src/%s/%s splits a path at '/' by hand %d times (tippe_path_dir, "
+                     "_base, _beside, _stem or _ext of src/base/path.c)" % (rel, f, n))
 
 print("check_house: %d objects, %d file-to-file calls, %d includes and symbols checked" %
       (len(defined), sum(len(b) for b in edges.values()), checks))

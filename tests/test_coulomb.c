@@ -5,7 +5,7 @@
  * "Coulomb friction", gives the figures these reproduce. */
 #include "check.h"
 #include "dynamics_fixtures.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>

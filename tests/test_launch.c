@@ -3,7 +3,7 @@
  * launch distributions, bit-identical runs on 1 and 2 OpenMP threads, tallies,
  * the central launch, and outcomes that Theorem 5.1 forbids. */
 #include "tippe/design.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/base.h"
 
 #include "check.h"

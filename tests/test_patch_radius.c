@@ -5,7 +5,7 @@
  * is robust, a radius beyond R/2 is not run (and then nothing is called robust), and the
  * summary of a batch counts the launches that change. */
 #include "check.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 #include <math.h>
 #include <stdio.h>

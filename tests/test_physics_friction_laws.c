@@ -5,7 +5,7 @@
 #include "check.h"
 
 #include "tippe/design.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 #include <stdio.h>
 #include <string.h>

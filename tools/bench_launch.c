@@ -10,7 +10,7 @@
  * shared machine the efficiency is only as good as the cores that were free. */
 #include "tippe/design.h"
 #include "bench_util.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 #include <omp.h>
 #include <stdio.h>

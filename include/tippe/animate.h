@@ -14,7 +14,7 @@
 #include <stdio.h>
 
 #include "tippe/base.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/design.h"
 #include "tippe/sweep.h"
 

@@ -5,6 +5,8 @@
  * - reports: output files written whole or not at all, sets of them that commit together,
  *   and every input read through one safe reader (tippe_report_*, tippe_file_*;
  *   src/base/report.c, file.c);
+ * - paths: a file's folder, name, stem and extension, and a name relative to the folder of
+ *   the file that names it (tippe_path_*, src/base/path.c);
  * - cancel: a flag a thread watches, which the library's long loops check (tippe_cancel_*,
  *   src/base/cancel.c);
  * - progress: long loops with a time-left estimate (tippe_progress_*, src/base/progress.c).
@@ -80,6 +82,24 @@ void tippe_file_set_read_check(tippe_file_read_check check);
  * moved elsewhere still finds its data), else the configured prefix's. Returns
  * 1 if found, 0 if none holds materials.json (buf then lists where it looked). */
 int tippe_file_shipped_dir(char *buf, size_t size);
+/* ---- paths (src/base/path.c) ---- */
+/* Every file a file names (a design's materials table, catalogue and G-code, a
+ * scenario's design, a spec's base design) is found relative to the folder of
+ * the file that names it; these say that once. */
+/* The name after the last '/' (a pointer into path). */
+const char *tippe_path_base(const char *path);
+/* The folder of path: "." for a bare name, "/" for a file at the root.
+ * TIPPE_EINPUT (out cut) when it does not fit in size. */
+int tippe_path_dir(const char *path, char *out, size_t size);
+/* name as seen from the folder of the file path: name itself when it is
+ * absolute or path has no folder, else "FOLDER/name". TIPPE_EINPUT (out cut)
+ * when it does not fit in size. */
+int tippe_path_beside(const char *path, const char *name, char *out, size_t size);
+/* The name without its folder and last extension ("m12-setscrew" for
+ * "designs/m12-setscrew.json"; ".json" stays ".json"). */
+void tippe_path_stem(const char *path, char *out, size_t size);
+/* The extension after the name's last '.', without the dot; "" if none. */
+const char *tippe_path_ext(const char *path);
 
 /* ---- reports and safe files ---- */
 /* Report: output files that appear whole or not at all, and never

@@ -20,7 +20,7 @@
 #include <stdio.h>
 
 #include "tippe/design.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/base.h"
 
 /* ISO 261 coarse-pitch metric threads (ISO 724 basic profile). */
@@ -79,6 +79,12 @@ typedef struct {
 /* Reads the catalogue file path: TIPPE_EINPUT with "FILE: JSON.PATH: what is
  * wrong" for anything above. tippe_build_catalogue_free() the result. */
 int tippe_build_catalogue_load(const char *path, tippe_build_catalogue **out, tippe_error *err);
+/* Where a design's hardware catalogue is, one rule for tippe build, tippe serve
+ * and tippe optimise: the design's own "catalogue" when it names one, else
+ * catalogue.json in its folder (tippe_design_beside), when that file can be
+ * read; NULL: no catalogue. buf holds the second in any case (where a catalogue
+ * would be looked for, for a message). */
+const char *tippe_build_catalogue_file(const tippe_design *d, char *buf, size_t size);
 void tippe_build_catalogue_free(tippe_build_catalogue *c);
 /* The first item (in file order) of radius_mm and height_mm (within 1e-6
  * mm), and its set in *set (if not NULL); NULL when none matches. */

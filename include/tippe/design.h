@@ -1,10 +1,10 @@
 /* tippe/design.h: a top as designed.
  *
  * Contents:
- * - the top: the one struct that crosses to physics (tippe_top);
  * - the design file: load, --set overrides, sources, materials, layout and physical
  *   travel, the parts' accessors, polar caps (tippe_design_*, tippe_materials_*);
  * - tolerances: how far a built top may be from its file (tippe_tolerance_*).
+ * A design at a Z2 gives the top physics takes (tippe_design_top: tippe/top.h).
  * A design's printed parts are built on tippe/print.h (solids, the print model, G-code). */
 #ifndef TIPPE_DESIGN_H
 #define TIPPE_DESIGN_H
@@ -13,35 +13,7 @@
 
 #include "tippe/base.h"
 #include "tippe/print.h"
-
-/* ---- the top (the struct that physics takes) ---- */
-/* Top: the one struct that crosses from geometry to physics.
- *
- * An eccentric sphere (paper section 3, Figure 4): mass m, sphere radius R,
- * eccentricity eps = distance from the geometric centre to the centre of mass
- * (0 <= eps < R; the centre of mass is below the centre when theta = 0),
- * A = transverse moment through the centre of mass, C = axial moment. SI units.
- * Theory and dynamics take only this (plus g and friction). */
-typedef struct {
-    double m;   /* kg */
-    double R;   /* m */
-    double eps; /* m, >= 0 */
-    double A;   /* kg m^2 */
-    double C;   /* kg m^2 */
-    /* Which side of the sphere's centre the centre of mass lies on, along the
-     * design's +z axis: +1 above, -1 below, 0 at the centre. That side is the one
-     * that rests on the table at theta = 0. Informational only. */
-    int com_side;
-    /* The outline the table meets where it is not the sphere (issue 35): the
-     * half-angle of the flat cut at the pole down at theta = 0 ([0]) and at the
-     * other pole ([1]) by a hole's opening (tippe_design_polar_caps), rad; 0 where
-     * the sphere is whole. The dynamics rolls the sphere cut flat there (its rim
-     * radius R sin(half-angle)); the theory of the paper, the sphere. */
-    double rim_half_angle_rad[2];
-} tippe_top;
-
-/* Gravity used wherever a user gives none (scenarios, classify, launches), m/s^2. */
-#define TIPPE_DEFAULT_G_M_S2 9.81
+#include "tippe/top.h"
 
 /* ---- the design file (src/design/design*.c) ---- */
 /* Design: a top described by a design file (JSON), placed at one Z2.
@@ -67,6 +39,14 @@ typedef struct tippe_design tippe_design; /* opaque */
  * what is wrong) or TIPPE_ECOMPUTE, and *out is NULL. */
 int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
                       tippe_design **out, tippe_error *err);
+
+/* The same for path's text, read already (len bytes) by a caller that had to
+ * look into the file first (a design or a scenario?): as tippe_design_load(path)
+ * without reading the file again (its materials table, catalogue and G-code are
+ * found from path's folder). */
+int tippe_design_load_read(const char *path, const char *text, size_t len,
+                           const char *const *overrides, int n_overrides, tippe_design **out,
+                           tippe_error *err);
 
 /* The same for a design file's text in memory (len bytes; tippe serve's
  * requests): name stands for the file in every message ("the design"), and the
@@ -186,6 +166,10 @@ const char *tippe_design_part_catalogue_item(const tippe_design *d, int i);
 /* The design's "catalogue": the hardware catalogue file, resolved from the
  * design file's folder (checked readable at load); NULL when not given. */
 const char *tippe_design_catalogue(const tippe_design *d);
+/* name as the design finds a file it names (its materials table, catalogue):
+ * relative to the design file's folder (tippe_path_beside), or in the designs
+ * folder of a design from memory. TIPPE_EINPUT (buf cut) when it does not fit. */
+int tippe_design_beside(const tippe_design *d, const char *name, char *buf, size_t size);
 
 /* How part i is printed (docs/design-format.md, "Printed parts"). A part
  * without a print block is solid: printed = 0 and the rest is zero. */
@@ -341,6 +325,9 @@ struct cJSON *tippe_materials_json(const tippe_materials *t, const char *file);
  * file, or the designs folder's for a design from memory); NULL when no part
  * names a material. */
 const char *tippe_design_materials_path(const tippe_design *d);
+/* That table as the design read it (a copy; tippe_materials_free), without
+ * reading the file again; TIPPE_EINPUT when no part names a material. */
+int tippe_design_materials(const tippe_design *d, tippe_materials **out, tippe_error *err);
 /* The overrides ("FIELD=VALUE") the design was loaded with, in order; what a
  * report of it repeats so that the same design can be loaded again. */
 int tippe_design_n_overrides(const tippe_design *d);
@@ -390,6 +377,12 @@ int tippe_design_source_build(const tippe_design_source *s, const char *const *o
 struct cJSON;
 int tippe_design_source_apply(const tippe_design_source *s, const char *const *overrides,
                               int n_overrides, struct cJSON **out, tippe_error *err);
+
+/* The materials table the source's file names ("materials", default
+ * materials.json beside it), as read when the source opened (a copy;
+ * tippe_materials_free); TIPPE_EINPUT naming the file if it does not read. */
+int tippe_design_source_materials(const tippe_design_source *s, tippe_materials **out,
+                                  tippe_error *err);
 
 void tippe_design_source_free(tippe_design_source *s);
 

@@ -9,7 +9,7 @@
 
 #include "tippe/base.h"
 #include "tippe/optimise.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/scenario.h"
 #include "tippe/sweep.h"
 

@@ -16,7 +16,7 @@
 #define TIPPE_SCENARIO_H
 
 #include "tippe/design.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/base.h"
 
 enum { TIPPE_PHI_DOT_GIVEN = -1 }; /* phi_dot_rule when phi_dot was a number */
@@ -42,7 +42,15 @@ typedef struct {
     double t_end;                   /* s */
     tippe_dynamics_accuracy accuracy;
     char accuracy_name[16];         /* the preset's name, or "custom" */
+    /* a design top: the design as loaded (with its "set" list), for what else a
+     * front end shows of it (a film's weight) without reading it again; NULL for
+     * an explicit top. Owned: tippe_scenario_free. */
+    tippe_design *design;
 } tippe_scenario;
+
+/* Frees what a loaded scenario owns (its design); the struct itself is the
+ * caller's. A failed load leaves nothing to free. */
+void tippe_scenario_free(tippe_scenario *s);
 
 /* Loads path, applies the overrides ("mu=0.1", "initial.spin=3",
  * "initial.phi_dot=steady", "accuracy=precise", "accuracy.rtol=1e-9",
@@ -57,6 +65,13 @@ typedef struct {
 int tippe_scenario_load(const char *path, const char *const *overrides, int n_overrides,
                         tippe_scenario *out, tippe_error *err);
 
+/* The same for path's text, read already (len bytes) by a caller that had to
+ * look into the file first (a scenario or a design?); path names it in
+ * messages and is where a design it names is found from. */
+int tippe_scenario_load_text(const char *path, const char *text, size_t len,
+                             const char *const *overrides, int n_overrides, tippe_scenario *out,
+                             tippe_error *err);
+
 /* The scenario of a design's central hand launch with its weight at z2_mm,
  * without a scenario file: the design (with design_sets applied, as
  * tippe_design_load) and the defaults of tippe launch (docs/launch.md): tilt
@@ -64,8 +79,10 @@ int tippe_scenario_load(const char *path, const char *const *overrides, int n_ov
  * centre at rest, the launch options' friction (viscous mu 2.3 s/m, eq 3.12), g, t_end
  * 600 s, preset "balanced"; then the
  * overrides as for tippe_scenario_load ("initial.spin=100"). Messages name the
- * design file. */
-int tippe_scenario_for_design(const char *design_path, double z2_mm,
+ * design file. design_text: the design file's text when the caller has read it
+ * already (design_len bytes), else NULL and the file is read. */
+int tippe_scenario_for_design(const char *design_path, const char *design_text,
+                              size_t design_len, double z2_mm,
                               const char *const *design_sets, int n_design_sets,
                               const char *const *overrides, int n_overrides,
                               tippe_scenario *out, tippe_error *err);

@@ -13,7 +13,7 @@
 
 #include "tippe/design.h"
 #include "tippe/base.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 /* ---- the sweep ---- */
 /* Sweep: the zones of a top as its moving weight travels (paper section 6).
@@ -201,9 +201,11 @@ typedef struct {
 /* TIPPE_EINPUT if steps < 1 (or steps = 1 with from != to), a bound is not
  * finite, every step's parts collide, or a step's design does not load for a reason
  * other than where its parts are (the message names the step's override: a bad field
- * or value). *out must be freed with tippe_sweep_vary_free() whatever the return. */
-int tippe_sweep_vary(const char *design_path, const char *const *overrides, int n_overrides,
-                     const char *field, double from, double to, int steps, double z2_from_mm,
+ * or value). Each step is base (as loaded, with its overrides) with field set
+ * to the step's value, derived from base in memory: no file is read again.
+ * *out must be freed with tippe_sweep_vary_free() whatever the return. */
+int tippe_sweep_vary(const tippe_design *base, const char *field, double from, double to,
+                     int steps, double z2_from_mm,
                      double z2_to_mm, const tippe_sweep_options *opt,
                      tippe_sweep_vary_result *out, tippe_error *err);
 void tippe_sweep_vary_free(tippe_sweep_vary_result *v);

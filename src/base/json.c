@@ -104,6 +104,16 @@ int tippe_json_parse_text(const tippe_json_reader *r, const char *text, size_t l
     return rc;
 }
 
+int tippe_json_read(const tippe_json_reader *r, int max_mib, const char *what, char **text,
+                    size_t *len)
+{
+    *len = 0;
+    int rc = read_text(r->file, max_mib, what, text, r->err);
+    if (!rc)
+        *len = strlen(*text);
+    return rc;
+}
+
 int tippe_json_load(const tippe_json_reader *r, int max_mib, const char *what, cJSON **root)
 {
     *root = NULL;

@@ -52,6 +52,12 @@ tippe_json_reader *tippe_json_reader_new(const char *file, tippe_error *err,
  * too large to be one. On success the caller owns *root (cJSON_Delete). */
 int tippe_json_load(const tippe_json_reader *r, int max_mib, const char *what, cJSON **root);
 
+/* r->file's text alone, read and checked as tippe_json_load reads it (*len bytes
+ * before the NUL; the caller frees *text): for a loader that keeps the text to
+ * parse it again rather than open the file again. */
+int tippe_json_read(const tippe_json_reader *r, int max_mib, const char *what, char **text,
+                    size_t *len);
+
 /* The same for a text in memory (len bytes, not NUL-terminated; at most
  * max_mib MiB, no NUL byte), r->file naming it in messages ("request"). */
 int tippe_json_parse_text(const tippe_json_reader *r, const char *text, size_t len,

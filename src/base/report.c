@@ -120,10 +120,9 @@ static int make_temp(tippe_report_file *rf, const struct stat *old, tippe_error 
         t->live = 0;
         int e = errno;
         struct stat dir;
-        char *slash = strrchr(tmp, '/');
-        if (slash)
-            slash[slash == tmp] = '\0'; /* tmp is now the directory ("/" kept) */
-        if (e == ENOENT && (slash ? stat(tmp, &dir) : stat(".", &dir)) != 0) {
+        char folder[sizeof tmp];
+        tippe_path_dir(tmp, folder, sizeof folder);
+        if (e == ENOENT && stat(folder, &dir) != 0) {
             if (strcmp(rf->path, rf->target) != 0)
                 return tippe_error_set(err, TIPPE_EINPUT,
                                        "%s: cannot write %s: a dangling symlink to '%s', whose "
@@ -136,7 +135,7 @@ static int make_temp(tippe_report_file *rf, const struct stat *old, tippe_error 
         if (e == ENOENT) /* /proc, /sys: a directory that takes no new files */
             return tippe_error_set(err, TIPPE_EINPUT,
                                    "%s: cannot write %s: no new file can be made in '%s'",
-                                   rf->path, rf->what, slash ? tmp : ".");
+                                   rf->path, rf->what, folder);
         return tippe_error_set(err, TIPPE_EINPUT, "%s: cannot write %s: %s", rf->path, rf->what,
                                strerror(e));
     }
@@ -186,12 +185,8 @@ int tippe_report_target(const char *path, char *out, size_t size, tippe_error *e
         if (n < 0)
             return tippe_error_set(err, TIPPE_EINPUT, "%s: %s", path, strerror(errno));
         link[n] = '\0';
-        char *slash = strrchr(cur, '/');
         char next[4096];
-        int len = link[0] == '/' || !slash
-                      ? snprintf(next, sizeof next, "%s", link)
-                      : snprintf(next, sizeof next, "%.*s/%s", (int)(slash - cur), cur, link);
-        if (len >= (int)sizeof next)
+        if (tippe_path_beside(cur, link, next, sizeof next) != TIPPE_OK)
             return tippe_error_set(err, TIPPE_EINPUT, "%s: path too long", path);
         memcpy(cur, next, sizeof cur);
     }

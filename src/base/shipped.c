@@ -51,11 +51,8 @@ static int own_dir(char *dir, size_t size)
     }
     if (!realpath(name, real))
         return 0;
-    char *slash = strrchr(real, '/');
-    if (!slash)
-        return 0;
-    *slash = '\0';
-    return snprintf(dir, size, "%s", real[0] ? real : "/") < (int)size;
+    /* realpath gives an absolute path: its folder is never "." */
+    return tippe_path_dir(real, dir, size) == TIPPE_OK;
 }
 
 int tippe_file_shipped_dir(char *buf, size_t size)

@@ -3,7 +3,7 @@
 
 #include "tippe/profile.h"
 #include "tippe/sweep.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/design.h"
 
 #include <math.h>

@@ -122,8 +122,7 @@ static void material_changes(advice_ctx *a, const char *name, const tippe_design
 {
     tippe_materials *t = NULL;
     tippe_error e = {0};
-    const char *file = tippe_design_materials_path(a->d);
-    if (!file || tippe_materials_load(file, &t, &e))
+    if (tippe_design_materials(a->d, &t, &e))
         return;
     for (int k = 0; k < tippe_materials_count(t); k++) {
         tippe_material m;
@@ -155,8 +154,7 @@ static void catalogue_changes(advice_ctx *a, const char *name, const tippe_desig
     const char *buy = NULL;
     tippe_materials *t = NULL;
     tippe_error e = {0};
-    const char *file = tippe_design_materials_path(a->d);
-    if (file && !tippe_materials_load(file, &t, &e)) {
+    if (!tippe_design_materials(a->d, &t, &e)) {
         int own = 0, steel = 0;
         for (int k = 0; k < tippe_materials_count(t); k++) {
             tippe_material m;

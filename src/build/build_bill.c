@@ -17,11 +17,7 @@
 
 void tippe_build_stem(const char *design_path, char *out, size_t size)
 {
-    const char *base = strrchr(design_path, '/');
-    snprintf(out, size, "%s", base ? base + 1 : design_path);
-    char *dot = strrchr(out, '.');
-    if (dot && dot != out)
-        *dot = '\0';
+    tippe_path_stem(design_path, out, size);
 }
 
 /* The sheet names the files it refers to as they are written. */

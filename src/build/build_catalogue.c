@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static const char *const set_keys[] = {"title", "source", "notes", "items", NULL};
 static const char *const item_keys[] = {"name",      "thread",    "d_mm",
@@ -167,6 +168,17 @@ static int read_set(const tippe_json_reader *r, const cJSON *obj, tippe_build_ca
             }
     }
     return TIPPE_OK;
+}
+
+/* A design names its catalogue, or keeps one beside it as the shipped designs
+ * do (designs/catalogue.json); an absent default is no catalogue, not an error
+ * (a design without catalogue screws needs none). */
+const char *tippe_build_catalogue_file(const tippe_design *d, char *buf, size_t size)
+{
+    const int fits = tippe_design_beside(d, "catalogue.json", buf, size) == TIPPE_OK;
+    if (tippe_design_catalogue(d))
+        return tippe_design_catalogue(d);
+    return fits && access(buf, R_OK) == 0 ? buf : NULL;
 }
 
 int tippe_build_catalogue_load(const char *path, tippe_build_catalogue **out, tippe_error *err)

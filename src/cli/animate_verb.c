@@ -120,16 +120,10 @@ static int load_launch(args *a, tippe_animate_launch *l, tippe_error *err)
     l->accuracy = sc.accuracy;
     a->protrusion = sc.protrusion;
     a->z2_mm = sc.z2_mm;
-    if (sc.design_path[0]) {
-        /* Only for the picture of the weight: the top itself is the scenario's
-         * (a scenario file's own design "set" list is not applied to it). */
-        tippe_design *d = NULL;
-        const int n = a->l.is_design ? a->l.sets.n : 0;
-        if (tippe_design_load(sc.design_path, a->l.sets.item, n, &d, err) == TIPPE_OK)
-            tippe_animate_design_weight(d, sc.z2_mm, &sc.model.top, &l->weight_offset_m,
-                                        &l->weight_radius_m);
-        tippe_design_free(d);
-    }
+    if (sc.design) /* the picture of the weight: the scenario's design, as loaded */
+        tippe_animate_design_weight(sc.design, sc.z2_mm, &sc.model.top, &l->weight_offset_m,
+                                    &l->weight_radius_m);
+    tippe_scenario_free(&sc);
     return TIPPE_OK;
 }
 

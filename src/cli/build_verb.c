@@ -124,17 +124,6 @@ static int build_parse(build_args *a, int argc, char **argv)
     return 0;
 }
 
-/* The default catalogue: catalogue.json beside the design, if it exists. */
-static const char *default_catalogue(const char *design, char *buf, size_t size)
-{
-    const char *slash = strrchr(design, '/');
-    if (slash)
-        snprintf(buf, size, "%.*scatalogue.json", (int)(slash - design + 1), design);
-    else
-        snprintf(buf, size, "catalogue.json");
-    return access(buf, R_OK) == 0 ? buf : NULL;
-}
-
 static int run_checked(build_args *a, const tippe_design *d, char (*sheet)[4096]);
 
 static int run(build_args *a, const tippe_design *d)
@@ -142,8 +131,7 @@ static int run(build_args *a, const tippe_design *d)
     tippe_error err = {0};
     char sheet[TIPPE_EXPORT_BUILD_FILES][4096], cat[4096];
     if (!a->catalogue)
-        a->catalogue = tippe_design_catalogue(d) ? tippe_design_catalogue(d)
-                                                 : default_catalogue(a->path, cat, sizeof cat);
+        a->catalogue = tippe_build_catalogue_file(d, cat, sizeof cat);
     a->o.catalogue = a->catalogue;
     tippe_export_build_paths(d, a->dir, sheet);
     /* the catalogue is input: a bad one is refused before any work or output */

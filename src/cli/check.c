@@ -2,7 +2,7 @@
  * and theory's prediction. */
 #include "hands.h"
 
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/plot.h"
 #include "tippe/scenario.h"
 #include "tippe/sweep.h"

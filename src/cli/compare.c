@@ -325,9 +325,8 @@ static int compare_report(const compare_args *a, tippe_design **d, tippe_sweep_r
         char text[MAX_DESIGNS][300], sets[200];
         for (int i = 0; i < a->n; i++) {
             /* the file's name, short and exact; the design names are in the table */
-            const char *path = tippe_design_path(d[i]), *slash = strrchr(path, '/');
             snprintf(text[i], sizeof text[i], "[%d] %.40s%s%.60s", i + 1,
-                     slash ? slash + 1 : path, a->sets[i].n ? ", " : "",
+                     tippe_path_base(tippe_design_path(d[i])), a->sets[i].n ? ", " : "",
                      tippe_cli_sets_text(&a->sets[i], sets, sizeof sets));
             labels[i] = text[i];
         }

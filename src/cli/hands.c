@@ -3,7 +3,7 @@
 #include "hands.h"
 
 #include "tippe/sweep.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>

@@ -10,7 +10,7 @@
 #include "tippe/sweep.h"
 
 #include "tippe/design.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/base.h"
 
 #include <stdint.h>

@@ -19,16 +19,34 @@
 
 /* ---- one launch, from a scenario file or a design ---------------------------- */
 
+/* The input file's text as read to tell its kind, kept so that the load parses
+ * it rather than reading the file a second time (issue 34); one input per
+ * command. NULL when it did not read: the load then reads the file and says why. */
+static struct {
+    char *path, *text;
+    size_t len;
+} input;
+
 /* The file's kind: a design has "parts" at its top (a scenario never has). */
 static int is_design_file(const char *path)
 {
     tippe_error err;
     tippe_json_reader *c = tippe_json_reader_new(path, &err, TIPPE_JSON_WORDS_KEY, "");
     cJSON *root = NULL;
-    int design = c && tippe_json_load(c, 16, "file", &root) == TIPPE_OK &&
+    char *text = NULL;
+    size_t len = 0;
+    int design = c && tippe_json_read(c, 16, "file", &text, &len) == TIPPE_OK &&
+                 tippe_json_parse_text(c, text, len, 16, "file", &root) == TIPPE_OK &&
                  cJSON_IsObject(root) && cJSON_GetObjectItemCaseSensitive(root, "parts");
     cJSON_Delete(root);
     free(c);
+    free(input.path);
+    free(input.text);
+    input.path = text ? strdup(path) : NULL;
+    input.text = input.path ? text : NULL;
+    input.len = input.path ? len : 0;
+    if (!input.path)
+        free(text);
     return design;
 }
 
@@ -226,10 +244,16 @@ static int check_derived_rate(const char *file, const tippe_cli_launch_args *l,
 int tippe_cli_launch_load(const char *file, const tippe_cli_launch_args *l, tippe_scenario *sc,
                           tippe_error *err)
 {
-    int rc = l->is_design ? tippe_scenario_for_design(file, l->z2_mm, l->sets.item, l->sets.n,
-                                                      l->over.item, l->over.n, sc, err)
-                          : tippe_scenario_load(file, l->over.item, l->over.n, sc, err);
+    const int known = input.path && !strcmp(input.path, file);
+    const char *text = known ? input.text : NULL;
+    const size_t len = known ? input.len : 0;
+    int rc = l->is_design ? tippe_scenario_for_design(file, text, len, l->z2_mm, l->sets.item,
+                                                      l->sets.n, l->over.item, l->over.n, sc, err)
+                          : tippe_scenario_load_text(file, text, len, l->over.item, l->over.n,
+                                                     sc, err);
     if (rc == TIPPE_EINPUT)
         name_options(l, err);
-    return rc ? rc : check_derived_rate(file, l, sc, err);
+    if (!rc && (rc = check_derived_rate(file, l, sc, err)))
+        tippe_scenario_free(sc);
+    return rc;
 }

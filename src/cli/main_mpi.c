@@ -1,6 +1,6 @@
 /* tippe-mpi: the tippe command for mpirun. Its verbs are tippe's
  * (src/cli/verbs.c). Those marked mpi_all_ranks there, launch and map, share
- * their launches among all ranks (src/cli/launch.c: rank 0 hands out chunks as
+ * their launches among all ranks (src/cli/launch_verb.c: rank 0 hands out chunks as
  * ranks finish and gathers the results, which equal the single-process
  * results); every other verb runs on rank 0 alone, so that it prints and writes
  * once. Ranks other than 0 print nothing: their stdout and stderr go to

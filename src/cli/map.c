@@ -3,7 +3,7 @@
 #include "hands.h"
 
 #include "tippe/plot.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/base.h"
 #include "tippe/sweep.h"
 

@@ -72,9 +72,7 @@ static int find_table(const char *arg, char *file, size_t size, const char **why
         if (tippe_design_materials_file(arg, file, size, &err) == TIPPE_OK) {
             *why = "the table this design reads";
             char beside[1024];
-            const char *slash = strrchr(arg, '/');
-            snprintf(beside, sizeof beside, "%.*smaterials.json", slash ? (int)(slash - arg + 1) : 0,
-                     arg);
+            tippe_path_beside(arg, "materials.json", beside, sizeof beside);
             if (strcmp(file, beside) && access(beside, F_OK) != 0 &&
                 strstr(file, "/materials.json"))
                 *why = "the shipped table this design reads: there is no materials.json beside it";

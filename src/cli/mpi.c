@@ -74,9 +74,9 @@ int tippe_cli_mpi_reexec(int argc, char **argv)
         return 2;
     }
     exe[len] = '\0';
-    char *slash = strrchr(exe, '/');
-    snprintf(slash ? slash + 1 : exe, sizeof exe - (size_t)(slash ? slash + 1 - exe : 0),
-             "tippe-mpi");
+    char self[PATH_MAX];
+    memcpy(self, exe, (size_t)len + 1);
+    tippe_path_beside(self, "tippe-mpi", exe, sizeof exe);
     if (access(exe, X_OK) != 0) {
         if (!quiet)
             fprintf(stderr,

@@ -51,14 +51,8 @@ static void *grown(void *arr, int n, int *cap, size_t size)
 static int canonical_name(const char *target, char *out, size_t size)
 {
     char dir[4096];
-    const char *slash = strrchr(target, '/');
-    const char *base = slash ? slash + 1 : target;
-    if (!slash)
-        snprintf(dir, sizeof dir, ".");
-    else if (slash == target)
-        snprintf(dir, sizeof dir, "/");
-    else
-        snprintf(dir, sizeof dir, "%.*s", (int)(slash - target), target);
+    const char *base = tippe_path_base(target);
+    tippe_path_dir(target, dir, sizeof dir);
     char real[PATH_MAX];
     if (!realpath(dir, real))
         return 0;

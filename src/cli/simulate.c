@@ -1,7 +1,7 @@
 /* tippe simulate: integrate one launch described by a scenario file. */
 #include "cli.h"
 
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "base/json.h"
 #include "tippe/plot.h"
 #include "tippe/base.h"
@@ -370,6 +370,7 @@ static int simulate_load(const simulate_args *a, tippe_scenario *sc)
     int rc = tippe_cli_launch_load(a->file, &a->l, sc, &err);
     if (rc)
         return tippe_cli_fail(VERB, &err, rc);
+    tippe_scenario_free(sc); /* the launch is the scenario's numbers; its design is not shown */
     /* the design's --set changes go into the name, hence the text and plot titles */
     if (a->l.is_design && a->l.sets.n) {
         char sets[512];

@@ -248,8 +248,8 @@ static int sweep_vary_run(const sweep_args *a, const tippe_design *d, const char
 {
     tippe_error err = {0};
     tippe_sweep_vary_result v;
-    int rc = tippe_sweep_vary(a->design, a->sets.item, a->sets.n, a->field, a->vfrom, a->vto,
-                              a->vsteps, a->from, a->to, NULL, &v, &err);
+    int rc = tippe_sweep_vary(d, a->field, a->vfrom, a->vto, a->vsteps, a->from, a->to, NULL,
+                              &v, &err);
     if (!rc && a->plot)
         rc = tippe_sweep_plot_vary(a->plot, &v, a->field, title, &err);
     if (!rc && a->csv)

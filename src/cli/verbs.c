@@ -4,7 +4,7 @@
  *
  * tippe-mpi runs every verb, but distributes only those with mpi_all_ranks set
  * (launch and map, which share their launches among the ranks in
- * src/cli/launch.c); every other verb runs on rank 0 alone, so that it prints
+ * src/cli/launch_verb.c); every other verb runs on rank 0 alone, so that it prints
  * and writes its files once. */
 #include "cli.h"
 

@@ -113,7 +113,6 @@ static int parse_catalogue(const tippe_json_reader *c, const cJSON *root, const 
         return rc;
     if (!rel[0])
         return tippe_json_fail(c, "catalogue", "must be a file name (relative to the design file)");
-    const char *slash = strrchr(path, '/');
     if (d->materials_dir) {
         if (strcmp(rel, "catalogue.json"))
             return tippe_json_fail(c, "catalogue",
@@ -121,10 +120,8 @@ static int parse_catalogue(const tippe_json_reader *c, const cJSON *root, const 
                                    "catalogue.json of the designs folder and names no other "
                                    "file", rel);
         snprintf(file, sizeof file, "%s/catalogue.json", d->materials_dir);
-    } else if (rel[0] == '/' || !slash)
-        snprintf(file, sizeof file, "%s", rel);
-    else
-        snprintf(file, sizeof file, "%.*s/%s", (int)(slash - path), path, rel);
+    } else
+        tippe_path_beside(path, rel, file, sizeof file);
     if (access(file, R_OK) != 0)
         return tippe_json_fail(c, "catalogue", "%s: cannot be read (%s)", file, strerror(errno));
     free(d->catalogue);
@@ -203,7 +200,6 @@ static int resolve_materials(const tippe_json_reader *c, const char *path, const
     if (!uses_table)
         return TIPPE_OK;
     char mat_file[1024];
-    const char *slash = strrchr(path, '/');
     if (d->materials_dir) {
         /* a design from memory names no file: the shipped table only */
         if (strcmp(mat_rel, "materials.json"))
@@ -212,10 +208,8 @@ static int resolve_materials(const tippe_json_reader *c, const char *path, const
                                    "materials.json of the designs folder and names no other "
                                    "file", mat_rel);
         snprintf(mat_file, sizeof mat_file, "%s/materials.json", d->materials_dir);
-    } else if (mat_rel[0] == '/' || !slash)
-        snprintf(mat_file, sizeof mat_file, "%s", mat_rel);
-    else
-        snprintf(mat_file, sizeof mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
+    } else
+        tippe_path_beside(path, mat_rel, mat_file, sizeof mat_file);
     /* No "materials" field and no materials.json beside the design: the shipped
      * table (installed, or the checkout's designs/), said in a note
      * (tippe_design_note); none at all is the first material's error. */
@@ -237,8 +231,9 @@ static int resolve_materials(const tippe_json_reader *c, const char *path, const
         snprintf(mat_file, sizeof mat_file, "%s", looked);
     }
     cJSON *table = NULL;
-    int rc = tippe_design_source_materials(d, mat_file, &table) ? TIPPE_OK
-                                                   : tippe_design_load_materials(mat_file, &table, c->err);
+    int rc = tippe_design_known_materials(d, mat_file, &table)
+                 ? TIPPE_OK
+                 : tippe_design_load_materials(mat_file, &table, c->err);
     if (rc) {
         if (has_mat_file) {
             char inner[sizeof c->err->msg];
@@ -256,8 +251,12 @@ static int resolve_materials(const tippe_json_reader *c, const char *path, const
         rc = tippe_design_lookup_material(c, table, mat_file, p->material, pth, &p->density_g_cm3,
                              &p->printable, &p->E_pa, &p->nu);
     }
-    cJSON_Delete(table);
-    if (!rc && !(d->mat_file = tippe_design_dup_string(mat_file)))
+    if (rc) {
+        cJSON_Delete(table);
+        return rc;
+    }
+    d->mat_table = table; /* kept for the designs derived from this one */
+    if (!(d->mat_file = tippe_design_dup_string(mat_file)))
         rc = tippe_error_set(c->err, TIPPE_ECOMPUTE, "out of memory");
     return rc;
 }
@@ -476,11 +475,15 @@ int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tipp
 /* Keeps the overrides a design was built with (src/design/design.c, below), so that
  * tippe_design_derive can rebuild it with more. */
 
-/* A design read from a file (text NULL) or from text in memory (path then only
- * names it in messages, and its materials table is materials_dir's). */
+/* A design read from a file (text NULL) or from a text in memory: with
+ * materials_dir, a design from memory (path only names it in messages, and its
+ * materials table is materials_dir's); without, the text of the file path, read
+ * before (its tables found from path's folder). from: the design being derived
+ * (or NULL), whose materials table and G-code are used where they are the same
+ * files. The text is kept in the design, so that no design reads its file twice. */
 static int load(const char *path, const char *text, size_t text_len, const char *materials_dir,
-                const char *const *overrides, int n_overrides, int check, tippe_design **out,
-                tippe_error *err)
+                const tippe_design *from, const char *const *overrides, int n_overrides,
+                int check, tippe_design **out, tippe_error *err)
 {
     /* The geometry module may call GSL: report, never abort. */
     tippe_gsl_errors_as_codes();
@@ -499,34 +502,33 @@ static int load(const char *path, const char *text, size_t text_len, const char 
     }
     cJSON *root = NULL;
     int rc = TIPPE_OK;
-    /* A file is read once: its text is kept, so that a reload (tippe slice's
-     * design with its G-code, the tolerance bands' variants) builds on the text
-     * the command first read, not on whatever the file holds by then. A file's
-     * design keeps materials_dir NULL: its tables are found beside it. */
-    char *read = NULL;
-    if (!text) {
-        size_t n = 0;
-        rc = tippe_file_read(path, (size_t)MAX_FILE_MIB << 20, "design", &read, &n, err);
-        text = read;
-        text_len = n;
-    }
-    if (!rc && (!(d->text = malloc(text_len + 1)) ||
-                (materials_dir && !(d->materials_dir = tippe_design_dup_string(materials_dir)))))
+    if (!text) { /* the file, read once: its text stays in d */
+        rc = tippe_json_read(c, MAX_FILE_MIB, "design", &d->text, &d->text_len);
+    } else if (!(d->text = malloc(text_len + 1)) ||
+               (materials_dir && !(d->materials_dir = tippe_design_dup_string(materials_dir)))) {
         rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
-    else if (!rc) {
+    } else {
         memcpy(d->text, text, text_len);
         d->text[text_len] = '\0';
         d->text_len = text_len;
     }
     if (!rc)
-        rc = tippe_json_parse_text(c, text, text_len, MAX_FILE_MIB, "design", &root);
-    free(read);
+        rc = tippe_json_parse_text(c, d->text, d->text_len, MAX_FILE_MIB, "design", &root);
     if (!rc)
         rc = tippe_json_check_duplicates(c, root, "");
     for (int i = 0; !rc && i < n_overrides; i++)
         rc = tippe_design_apply_override(c, root, overrides[i]);
-    if (!rc)
+    if (!rc) {
+        if (from) {
+            d->known_table = from->mat_table;
+            d->known_table_file = from->mat_file;
+            d->known_from = from;
+        }
         rc = tippe_design_build(c, root, path, d, check);
+        d->known_table = NULL;
+        d->known_table_file = NULL;
+        d->known_from = NULL;
+    }
     return tippe_design_finish(c, root, d, overrides, n_overrides, rc, out, err);
 }
 
@@ -552,7 +554,18 @@ int tippe_design_finish(tippe_json_reader *c, cJSON *root, tippe_design *d,
 int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
                       tippe_design **out, tippe_error *err)
 {
-    return load(path, NULL, 0, NULL, overrides, n_overrides, 1, out, err);
+    return load(path, NULL, 0, NULL, NULL, overrides, n_overrides, 1, out, err);
+}
+
+int tippe_design_load_read(const char *path, const char *text, size_t len,
+                           const char *const *overrides, int n_overrides, tippe_design **out,
+                           tippe_error *err)
+{
+    *out = NULL;
+    /* a text over the cap: the file's own read refuses it, in its words */
+    if (!text || len > ((size_t)MAX_FILE_MIB << 20))
+        return tippe_design_load(path, overrides, n_overrides, out, err);
+    return load(path, text, len, NULL, NULL, overrides, n_overrides, 1, out, err);
 }
 
 int tippe_design_load_text(const char *name, const char *text, size_t len,
@@ -562,7 +575,7 @@ int tippe_design_load_text(const char *name, const char *text, size_t len,
     *out = NULL;
     if (!text || !materials_dir)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: no design text given", name);
-    return load(name, text, len, materials_dir, overrides, n_overrides, 1, out, err);
+    return load(name, text, len, materials_dir, NULL, overrides, n_overrides, 1, out, err);
 }
 
 /* d's file or text again, with d's overrides and then extra ones. */
@@ -579,8 +592,8 @@ static int reload(const tippe_design *d, const char *const *extra, int n_extra, 
         all[i] = d->overrides[i];
     for (int i = 0; i < n_extra; i++)
         all[d->n_overrides + i] = extra[i];
-    int rc = load(d->path, d->text, d->text_len, d->materials_dir, all, d->n_overrides + n_extra,
-                  check, out, err);
+    int rc = load(d->path, d->text, d->text_len, d->materials_dir, d, all,
+                  d->n_overrides + n_extra, check, out, err);
     free(all);
     return rc;
 }
@@ -775,6 +788,7 @@ void tippe_design_free(tippe_design *d)
     free(d->text);
     free(d->materials_dir);
     free(d->mat_file);
+    cJSON_Delete(d->mat_table);
     free(d->catalogue);
     free(d->name);
     free(d->parts);

@@ -161,6 +161,16 @@ const char *tippe_design_part_catalogue_item(const tippe_design *d, int i)
 
 const char *tippe_design_catalogue(const tippe_design *d) { return d->catalogue; }
 
+/* A design from memory names no file on disk: its folder is the designs
+ * folder it reads its materials table from (design.c, resolve_materials). */
+int tippe_design_beside(const tippe_design *d, const char *name, char *buf, size_t size)
+{
+    if (!d->materials_dir)
+        return tippe_path_beside(d->path, name, buf, size);
+    int n = snprintf(buf, size, "%s/%s", d->materials_dir, name);
+    return n < 0 || (size_t)n >= size ? TIPPE_EINPUT : TIPPE_OK;
+}
+
 /* A/C of unit-density moments alone: A about a transverse axis through their
  * own centre of mass, C about the axis; NAN for no material. */
 static double body_a_over_c(tippe_moments m)

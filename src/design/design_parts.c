@@ -618,6 +618,41 @@ int tippe_materials_load(const char *path, tippe_materials **out, tippe_error *e
     return TIPPE_OK;
 }
 
+/* A copy of a table read already, as tippe_materials_load gives it. */
+static int materials_copy(const cJSON *table, tippe_materials **out, tippe_error *err)
+{
+    tippe_materials *t = calloc(1, sizeof *t);
+    if (!t || !(t->root = cJSON_Duplicate(table, 1))) {
+        free(t);
+        return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    }
+    t->n = cJSON_GetArraySize(t->root);
+    *out = t;
+    return TIPPE_OK;
+}
+
+/* The loaded design keeps its table (design.c, resolve_materials): the build
+ * sheet's advice asks it for each material it may propose. */
+int tippe_design_materials(const tippe_design *d, tippe_materials **out, tippe_error *err)
+{
+    *out = NULL;
+    if (!d->mat_table)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: no part names a material of a table",
+                               d->path);
+    return materials_copy(d->mat_table, out, err);
+}
+
+/* The source read its table when it opened (design_source.c); a table that did
+ * not read then is read now, for the message that says why. */
+int tippe_design_source_materials(const tippe_design_source *s, tippe_materials **out,
+                                  tippe_error *err)
+{
+    *out = NULL;
+    if (!s->materials)
+        return tippe_materials_load(s->mat_file, out, err);
+    return materials_copy(s->materials, out, err);
+}
+
 int tippe_materials_count(const tippe_materials *t) { return t->n; }
 
 void tippe_materials_get(const tippe_materials *t, int i, tippe_material *out)
@@ -673,11 +708,7 @@ int tippe_design_materials_file(const char *design_path, char *buf, size_t size,
         rc = tippe_json_fail(c, "", "not a design (no parts)");
     if (!rc)
         rc = tippe_json_string(c, root, "", "materials", 0, rel, sizeof rel, NULL);
-    const char *slash = strrchr(design_path, '/');
-    if (!rc && (rel[0] == '/' || !slash ? snprintf(buf, size, "%s", rel)
-                                        : snprintf(buf, size, "%.*s/%s",
-                                                   (int)(slash - design_path), design_path,
-                                                   rel)) >= (int)size)
+    if (!rc && tippe_path_beside(design_path, rel, buf, size) != TIPPE_OK)
         rc = tippe_error_set(err, TIPPE_EINPUT, "%s: materials: path too long", design_path);
     /* no "materials" field and no table beside: the shipped one, as at load */
     int given = cJSON_GetObjectItemCaseSensitive(root, "materials") != NULL, fell_back = 0;
@@ -690,12 +721,13 @@ int tippe_design_materials_file(const char *design_path, char *buf, size_t size,
     return rc;
 }
 
-/* The source's materials table (a copy the caller deletes) if it is the one
- * tippe_design_build() is about to read; 0 if not. */
-int tippe_design_source_materials(const tippe_design *d, const char *mat_file, cJSON **out)
+/* The materials table already read (a source's, or the table of the design
+ * being derived; a copy the caller deletes) if it is the one tippe_design_build()
+ * is about to read; 0 if not. */
+int tippe_design_known_materials(const tippe_design *d, const char *mat_file, cJSON **out)
 {
-    if (!d->source || !d->source->materials || strcmp(mat_file, d->source->mat_file))
+    if (!d->known_table || !d->known_table_file || strcmp(mat_file, d->known_table_file))
         return 0;
-    *out = cJSON_Duplicate(d->source->materials, 1);
+    *out = cJSON_Duplicate(d->known_table, 1);
     return *out != NULL;
 }

@@ -3,7 +3,6 @@
  * own G-code of the part, which is then the truth (docs/printing.md). */
 #include "design/internal.h"
 
-#include <libgen.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -413,8 +412,8 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
         snprintf(file, sizeof file, "%s", p->gcode);
     } else {
         char dir[1024];
-        snprintf(dir, sizeof dir, "%s", d->path);
-        snprintf(file, sizeof file, "%s/%s", dirname(dir), p->gcode);
+        tippe_path_dir(d->path, dir, sizeof dir);
+        snprintf(file, sizeof file, "%s/%s", dir, p->gcode);
     }
     tippe_gcode_options opt = tippe_gcode_defaults();
     opt.density_g_cm3 = p->density_g_cm3;

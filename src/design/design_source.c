@@ -22,38 +22,41 @@ int tippe_design_source_open(const char *path, tippe_design_source **out, tippe_
     int rc = tippe_design_load(path, NULL, 0, &d, err);
     if (rc)
         return rc;
-    /* the table that load read (beside the file, or the shipped one) */
-    char resolved[sizeof((tippe_design_source *)0)->mat_file] = "";
-    if (d->mat_file)
-        snprintf(resolved, sizeof resolved, "%s", d->mat_file);
-    tippe_design_free(d);
     tippe_design_source *s = calloc(1, sizeof *s);
     tippe_json_reader *c = tippe_json_reader_new(path, err, TIPPE_JSON_WORDS_FIELD, NULL);
     if (!s || !c || !(s->path = tippe_design_dup_string(path))) {
         rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
         goto fail;
     }
-    if ((rc = tippe_json_load(c, MAX_FILE_MIB, "design", &s->root)))
+    /* the text the load read, parsed again: the file is read once */
+    s->text = d->text;
+    s->text_len = d->text_len;
+    d->text = NULL;
+    if ((rc = tippe_json_parse_text(c, s->text, s->text_len, MAX_FILE_MIB, "design", &s->root)))
         goto fail;
     char mat_rel[512] = "materials.json";
     const cJSON *m = cJSON_GetObjectItemCaseSensitive(s->root, "materials");
     if (cJSON_IsString(m))
         snprintf(mat_rel, sizeof mat_rel, "%s", m->valuestring);
-    const char *slash = strrchr(path, '/');
-    if (mat_rel[0] == '/' || !slash)
-        snprintf(s->mat_file, sizeof s->mat_file, "%s", mat_rel);
-    else
-        snprintf(s->mat_file, sizeof s->mat_file, "%.*s/%s", (int)(slash - path), path, mat_rel);
-    if (resolved[0])
-        snprintf(s->mat_file, sizeof s->mat_file, "%s", resolved);
+    tippe_path_beside(path, mat_rel, s->mat_file, sizeof s->mat_file);
+    /* the table that load read (beside the file, or the shipped one) */
+    if (d->mat_file)
+        snprintf(s->mat_file, sizeof s->mat_file, "%s", d->mat_file);
     tippe_error ignored = {0};
-    /* A design with inline densities only has no table: then none is cached. */
-    if (tippe_design_load_materials(s->mat_file, &s->materials, &ignored))
+    /* A design with inline densities only has no table: then none is cached.
+     * The load read it already when some part names a material. */
+    if (d->mat_table && d->mat_file && !strcmp(d->mat_file, s->mat_file)) {
+        s->materials = d->mat_table;
+        d->mat_table = NULL;
+    } else if (tippe_design_load_materials(s->mat_file, &s->materials, &ignored)) {
         s->materials = NULL;
+    }
+    tippe_design_free(d);
     free(c);
     *out = s;
     return TIPPE_OK;
 fail:
+    tippe_design_free(d);
     free(c);
     tippe_design_source_free(s);
     return rc;
@@ -91,11 +94,21 @@ int tippe_design_source_build(const tippe_design_source *s, const char *const *o
     for (int i = 0; !rc && i < n_overrides; i++)
         rc = tippe_design_apply_override(c, root, overrides[i]);
     if (!rc) {
-        d->source = s;
+        d->known_table = s->materials;
+        d->known_table_file = s->mat_file;
+        /* the variant keeps the file's text, so that deriving it reads no file */
+        if (!(d->text = malloc(s->text_len + 1)))
+            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+        else {
+            memcpy(d->text, s->text, s->text_len + 1);
+            d->text_len = s->text_len;
+        }
         d->travel_physical = (flags & TIPPE_DESIGN_TRAVEL_PHYSICAL) != 0;
         d->coarse_layout = (flags & TIPPE_DESIGN_COARSE_LAYOUT) != 0;
-        rc = tippe_design_build(c, root, s->path, d, 1);
-        d->source = NULL;
+        if (!rc)
+            rc = tippe_design_build(c, root, s->path, d, 1);
+        d->known_table = NULL;
+        d->known_table_file = NULL;
     }
     return tippe_design_finish(c, root, d, overrides, n_overrides, rc, out, err);
 }
@@ -105,6 +118,7 @@ void tippe_design_source_free(tippe_design_source *s)
     if (!s)
         return;
     free(s->path);
+    free(s->text);
     cJSON_Delete(s->root);
     cJSON_Delete(s->materials);
     free(s);

@@ -115,15 +115,18 @@ typedef struct {
 
 struct tippe_design {
     char *path, *name;
-    /* The design's text as first read (a file's too), kept for
-     * tippe_design_derive and _reload; and for a design loaded from memory
-     * (tippe_design_load_text) the folder of its materials table, NULL for a
-     * file. */
+    /* The design file's text as read once (or as given in memory,
+     * tippe_design_load_text), kept so that tippe_design_derive and _reload parse
+     * it again instead of opening the file again (issue 34: a sweep's bands read
+     * the file 97 times); materials_dir: the folder of the materials table of a
+     * design from memory, NULL for a file. */
     char *text, *materials_dir;
     size_t text_len;
     char *catalogue; /* "catalogue": the hardware catalogue file, resolved; NULL: not given */
     char *mat_file;  /* the materials table read, resolved; NULL: no part names a material */
     int mat_fallback; /* 1: no table beside the file, the shipped one was read (a note) */
+    cJSON *mat_table; /* that table as read and checked, for the designs derived from this
+                         one; NULL with mat_file */
     double radius_mm;
     double travel_mm[2], contact_mm[2];
     char contact_limit[2][256];
@@ -140,15 +143,25 @@ struct tippe_design {
     tippe_tolerance *tolerances; /* the tolerances block and the defaults */
     int n_tolerances;
     double patch_radius_span;    /* the block's contact.patch_radius, or 0: the default */
-    /* Set only while a tippe_design_source builds it: the source's parsed
-     * materials table (not owned) and whether the travel is the physical one. */
-    const struct tippe_design_source *source;
+    /* Set only while it is built: a materials table already read and checked
+     * (a source's, or the table of the design it is derived from; not owned) and
+     * its resolved file, used instead of reading that file again. */
+    const cJSON *known_table;
+    const char *known_table_file;
+    /* Set only while it is built: the design it is derived from (or NULL), whose
+     * materials table is taken instead of reading it again (a G-code is kept by
+     * design_printed.c's cache of bodies, keyed by the file). */
+    const struct tippe_design *known_from;
+    /* Whether the travel is the physical one (a source's variant). */
     int travel_physical, coarse_layout;
 };
+
 
 /* A design file parsed once (design_source.c). */
 struct tippe_design_source {
     char *path;
+    char *text; /* the file's text as read once (text_len bytes and a NUL) */
+    size_t text_len;
     cJSON *root;      /* the design file as parsed (duplicate keys refused) */
     char mat_file[1024];
     cJSON *materials; /* the materials table it names, read and checked once; or NULL */
@@ -184,7 +197,7 @@ int tippe_design_printed_moments(const tippe_json_reader *c, tippe_design *d, in
 int tippe_design_read_length(const tippe_json_reader *c, const cJSON *obj, const char *prefix,
                              const char *key, int required, int allow_zero, double *out,
                              int *present);
-int tippe_design_source_materials(const tippe_design *d, const char *mat_file, cJSON **out);
+int tippe_design_known_materials(const tippe_design *d, const char *mat_file, cJSON **out);
 extern const char *const tippe_design_top_keys[];
 extern const char *const tippe_design_top_string_keys[];
 extern const char *const tippe_design_part_string_keys[];

@@ -578,12 +578,6 @@ static void draw_title_legend(dlist *L, const tippe_design *d, const tippe_drawi
 
 /* ---------------------------------------------------------------- entry */
 
-static const char *extension(const char *path)
-{
-    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
-    return (dot && (!slash || dot > slash)) ? dot + 1 : "";
-}
-
 static void dlist_free(dlist *L)
 {
     for (int i = 0; i < L->n; i++)
@@ -646,7 +640,7 @@ int tippe_drawing_render(const tippe_design *d, const tippe_drawing_options *o, 
 int tippe_drawing_write(const tippe_design *d, const tippe_drawing_options *o, const char *path,
                         tippe_error *err)
 {
-    const char *ext = extension(path);
+    const char *ext = tippe_path_ext(path);
     int svg = !strcmp(ext, "svg"), png = !strcmp(ext, "png"), pdf = !strcmp(ext, "pdf");
     if (!svg && !png && !pdf)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: a drawing is .svg, .png or .pdf", path);

@@ -17,13 +17,7 @@
  * "designs/m12-setscrew.json". */
 static void design_stem(const tippe_design *d, char *out, size_t size)
 {
-    const char *path = tippe_design_path(d);
-    const char *base = strrchr(path, '/');
-    base = base ? base + 1 : path;
-    snprintf(out, size, "%s", base);
-    char *dot = strrchr(out, '.');
-    if (dot && dot != out)
-        *dot = '\0';
+    tippe_path_stem(tippe_design_path(d), out, size);
 }
 
 /* A body name as a file name part: letters, digits, '-', '_', '+' kept. */

@@ -22,17 +22,15 @@ static int module_path(const tippe_module *m, char *path, size_t size)
     if (len <= 0)
         return 0;
     exe[len] = '\0';
-    char *slash = strrchr(exe, '/');
-    if (slash)
-        *slash = '\0';
-    const char *dir = slash ? exe : ".";
-    if (snprintf(path, size, "%s/tippe-%s.so", dir, m->name) >= (int)size)
+    char name[64], rel[128];
+    snprintf(name, sizeof name, "tippe-%s.so", m->name);
+    if (tippe_path_beside(exe, name, path, size) != TIPPE_OK)
         return 0;
     if (access(path, F_OK) == 0)
         return 1;
     char installed[PATH_MAX + 64];
-    if (snprintf(installed, sizeof installed, "%s/" TIPPE_BIN_TO_MODULES "/tippe-%s.so", dir,
-                 m->name) < (int)sizeof installed &&
+    snprintf(rel, sizeof rel, TIPPE_BIN_TO_MODULES "/%s", name);
+    if (tippe_path_beside(exe, rel, installed, sizeof installed) == TIPPE_OK &&
         access(installed, F_OK) == 0)
         return snprintf(path, size, "%s", installed) < (int)size;
     return 1; /* neither: the error names the path beside the program */

@@ -1,7 +1,7 @@
 /* Stubs of the plots (the files of src/plot/, PLplot) for the tippe command: see module.h. */
 #include "module.h"
 #include "tippe/plot.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/optimise.h"
 #include "tippe/scenario.h"
 #include "tippe/sweep.h"

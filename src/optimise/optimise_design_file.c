@@ -34,13 +34,7 @@ static int put_string(cJSON *root, const char *key, const char *value)
 static int abs_dir(const char *path, char *out)
 {
     char dir[PATH_MAX];
-    const char *slash = strrchr(path, '/');
-    if (!slash)
-        snprintf(dir, sizeof dir, ".");
-    else if (slash == path)
-        snprintf(dir, sizeof dir, "/");
-    else
-        snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
+    tippe_path_dir(path, dir, sizeof dir);
     return realpath(dir, out) != NULL;
 }
 

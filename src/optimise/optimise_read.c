@@ -58,16 +58,6 @@ static char *dup_str(const char *s)
     return r;
 }
 
-/* dir of path + rel (rel absolute: itself). */
-static void relative_to(char *out, size_t cap, const char *path, const char *rel)
-{
-    const char *slash = strrchr(path, '/');
-    if (rel[0] == '/' || !slash)
-        snprintf(out, cap, "%s", rel);
-    else
-        snprintf(out, cap, "%.*s/%s", (int)(slash - path), path, rel);
-}
-
 /* ---- reading the spec ------------------------------------------------------ */
 
 /* A number in the design's JSON at an override path ("parts.NAME.KEY" or a
@@ -456,10 +446,8 @@ static int check_materials(tippe_json_reader *c, const tippe_optimise_spec *s)
             (n > 8 && ch->path[n - 9] != '.'))
             continue;
         if (!tab) {
-            char file[1024];
             tippe_error e = {0};
-            if (tippe_design_materials_file(s->design_path, file, sizeof file, &e) ||
-                tippe_materials_load(file, &tab, &e)) {
+            if (tippe_design_source_materials(s->src, &tab, &e)) {
                 tippe_materials_free(tab);
                 return tippe_json_fail(c, "choose", "%s", e.msg);
             }
@@ -531,7 +519,7 @@ int tippe_optimise_spec_load(const char *path, tippe_optimise_spec **out, tippe_
         return tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
     }
     cJSON *root = NULL, *droot = NULL;
-    char design_rel[512], design[1024], cat_rel[512] = "", cat[1024];
+    char design_rel[512], design[1024], cat_rel[512] = "", cat[1024] = "";
     int rc = tippe_json_load(c, MAX_SPEC_MIB, "optimisation spec", &root);
     if (!rc)
         rc = tippe_json_check_duplicates(c, root, "");
@@ -548,7 +536,7 @@ int tippe_optimise_spec_load(const char *path, tippe_optimise_spec **out, tippe_
     if (!rc)
         rc = tippe_json_string(c, root, "", "catalogue", 0, cat_rel, sizeof cat_rel, NULL);
     if (!rc) {
-        relative_to(design, sizeof design, path, design_rel);
+        tippe_path_beside(path, design_rel, design, sizeof design);
         tippe_error e = {0};
         rc = tippe_design_source_open(design, &s->src, &e);
         if (rc)
@@ -562,10 +550,18 @@ int tippe_optimise_spec_load(const char *path, tippe_optimise_spec **out, tippe_
         if (rc)
             rc = tippe_error_set(err, rc, "%s", e.msg);
     }
-    if (cat_rel[0])
-        relative_to(cat, sizeof cat, path, cat_rel);
-    else
-        relative_to(cat, sizeof cat, design, "catalogue.json");
+    if (cat_rel[0]) {
+        tippe_path_beside(path, cat_rel, cat, sizeof cat);
+    } else if (!rc) { /* the base design's, as tippe build finds it */
+        tippe_design *base = NULL;
+        tippe_error e = {0};
+        if (tippe_design_source_build(s->src, NULL, 0, 0, &base, &e) == TIPPE_OK) {
+            const char *own = tippe_build_catalogue_file(base, cat, sizeof cat);
+            if (own && own != cat)
+                snprintf(cat, sizeof cat, "%s", own);
+        }
+        tippe_design_free(base);
+    }
     if (!rc)
         rc = parse_vary(c, cJSON_GetObjectItemCaseSensitive(root, "vary"), s);
     if (!rc)

@@ -434,3 +434,20 @@ double tippe_contact_rolling_arm_hysteresis(double alpha, double a)
      * meets the resistance F_R = (3/16) alpha N a / R, i.e. a torque (3/16) alpha N a. */
     return 3.0 / 16.0 * alpha * a;
 }
+
+int tippe_contact_table_surface(const char *name, double *E_pa, double *nu)
+{
+    /* docs/contact-patch.md, "Materials", gives each value's source */
+    static const struct {
+        const char *name;
+        double E_GPa, nu;
+    } tables[] = {{"glass", 72.0, 0.23}, {"laminate", 9.0, 0.3}, {"wood", 1.0, 0.4},
+                  {"steel", 210.0, 0.30}};
+    for (size_t i = 0; i < sizeof tables / sizeof tables[0]; i++)
+        if (name && !strcmp(name, tables[i].name)) {
+            *E_pa = tables[i].E_GPa * 1e9;
+            *nu = tables[i].nu;
+            return 0;
+        }
+    return -1;
+}

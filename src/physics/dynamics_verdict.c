@@ -3,7 +3,7 @@
  *
  * With friction (viscous mu > 0, or Coulomb mu_c > 0: both are F = -mu_eff Rn V_Q with
  * mu_eff > 0) and contact, E never increases (eq 4.1) and J is conserved (eq 3.21);
- * E >= V(theta; J) (tippe/physics.h). So if E + margin is below every other critical
+ * E >= V(theta; J) (tippe/theory.h). So if E + margin is below every other critical
  * value of V in the current well, theta stays in the well and the only steady state
  * the motion can approach is the well's minimum (the states where dissipation stops
  * are the steady states of section 5, the critical points of V). That needs contact

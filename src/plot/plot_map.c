@@ -1,7 +1,7 @@
 /* The outcome map of `tippe map` as a heat map over (Z2, spin), with the zones
  * of the design's sweep and theory's spin thresholds drawn over it
- * (tippe/physics.h). */
-#include "tippe/physics.h"
+ * (tippe/launch.h, tippe/theory.h). */
+#include "tippe/launch.h"
 #include "plot/canvas.h"
 #include "tippe/sweep.h"
 

@@ -4,7 +4,7 @@
 
 #include "tippe/design.h"
 #include "base/json.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -209,17 +209,6 @@ static int apply_override_raw(tippe_json_reader *c, cJSON *root, const char *tex
 
 /* ---- the parts of a scenario ---- */
 
-static void dirname_of(const char *path, char *dir, size_t cap)
-{
-    const char *slash = strrchr(path, '/');
-    if (!slash)
-        snprintf(dir, cap, ".");
-    else if (slash == path)
-        snprintf(dir, cap, "/");
-    else
-        snprintf(dir, cap, "%.*s", (int)(slash - path), path);
-}
-
 /* The numbers a scenario may hold: wide enough for every top and launch the
  * model describes (a 1 mm bead to a 1 km ball), narrow enough that no product
  * of them in the equations of motion overflows or underflows a double. */
@@ -311,9 +300,11 @@ static int read_design_sets(tippe_json_reader *c, const cJSON *top, const char *
 }
 
 /* top as {design, z2_mm, set}: the design file (relative to the scenario's
- * directory), loaded with its overrides, and its top with the weight at z2_mm. */
+ * directory), loaded with its overrides (from design_text when the caller has
+ * read that file already, else from the file) and kept in s->design, and its
+ * top with the weight at z2_mm. */
 static int read_design_top(tippe_json_reader *c, const cJSON *top, const cJSON *design,
-                           tippe_scenario *s)
+                           tippe_scenario *s, const char *design_text, size_t design_len)
 {
     int rc;
     if ((rc = tippe_json_check_keys(c, top, "top", NULL, top_design_keys, NULL)))
@@ -326,7 +317,7 @@ static int read_design_top(tippe_json_reader *c, const cJSON *top, const cJSON *
         snprintf(s->design_path, sizeof s->design_path, "%s", design->valuestring);
     } else {
         char dir[1024];
-        dirname_of(c->file, dir, sizeof dir);
+        tippe_path_dir(c->file, dir, sizeof dir);
         if (snprintf(s->design_path, sizeof s->design_path, "%s/%s", dir, design->valuestring) >=
             (int)sizeof s->design_path)
             return tippe_json_fail(c, "top.design", "path too long");
@@ -337,7 +328,9 @@ static int read_design_top(tippe_json_reader *c, const cJSON *top, const cJSON *
         return rc;
     tippe_design *d = NULL;
     tippe_error derr;
-    rc = tippe_design_load(s->design_path, sets, n_sets, &d, &derr);
+    rc = design_text ? tippe_design_load_read(s->design_path, design_text, design_len, sets,
+                                              n_sets, &d, &derr)
+                     : tippe_design_load(s->design_path, sets, n_sets, &d, &derr);
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.design", "%s", derr.msg)
                                   : tippe_error_set(c->err, rc, "%s", derr.msg);
@@ -349,14 +342,15 @@ static int read_design_top(tippe_json_reader *c, const cJSON *top, const cJSON *
     if (!tippe_design_ball_elastic(d, &s->ball_E_pa, &s->ball_nu, &mat))
         s->ball_E_pa = s->ball_nu = 0.0;
     snprintf(s->ball_material, sizeof s->ball_material, "%s", mat);
-    tippe_design_free(d);
+    s->design = d;
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, "top.z2_mm", "%s", derr.msg)
                                   : tippe_error_set(c->err, rc, "%s", derr.msg);
     return TIPPE_OK;
 }
 
-static int read_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s)
+static int read_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s,
+                    const char *design_text, size_t design_len)
 {
     if (!top)
         return tippe_json_fail(c, "top",
@@ -375,7 +369,8 @@ static int read_top(tippe_json_reader *c, const cJSON *top, tippe_scenario *s)
         return tippe_json_fail(c, "top",
                                "give either a design (design, z2_mm) or the explicit top "
                                "(m, R, eps, A, C), not both");
-    return design ? read_design_top(c, top, design, s) : read_explicit_top(c, top, s);
+    return design ? read_design_top(c, top, design, s, design_text, design_len)
+                  : read_explicit_top(c, top, s);
 }
 
 /* The patch law's radius: "patch_mm" given, or Hertz's at m g from the design ball's
@@ -680,10 +675,12 @@ static void append_override(char *name, size_t size, const char *sep, const char
         snprintf(name + len, size - len, "%s%s", sep, override);
 }
 
-/* The scenario of root (read from the file, or made for a design), with the
- * overrides applied and everything checked. */
+/* The scenario of root (read from the file, or made for a design: then
+ * design_text is that design file's text, read already), with the overrides
+ * applied and everything checked. */
 static int scenario_from_root(tippe_json_reader *c, cJSON *root, const char *path,
-                              const char *const *overrides, int n_overrides, tippe_scenario *out)
+                              const char *const *overrides, int n_overrides,
+                              const char *design_text, size_t design_len, tippe_scenario *out)
 {
     int rc;
     if ((rc = tippe_json_check_duplicates(c, root, "")))
@@ -708,7 +705,8 @@ static int scenario_from_root(tippe_json_reader *c, cJSON *root, const char *pat
     }
     if ((rc = tippe_json_text(c, root, "", "notes", 0, NULL, 0, NULL)))
         return rc;
-    if ((rc = read_top(c, cJSON_GetObjectItemCaseSensitive(root, "top"), out)))
+    if ((rc = read_top(c, cJSON_GetObjectItemCaseSensitive(root, "top"), out, design_text,
+                       design_len)))
         return rc;
     out->model.g = TIPPE_DEFAULT_G_M_S2;
     if ((rc = tippe_json_number(c, root, "", "g", 0, &out->model.g, NULL)))
@@ -733,6 +731,21 @@ static int scenario_from_root(tippe_json_reader *c, cJSON *root, const char *pat
 int tippe_scenario_load(const char *path, const char *const *overrides, int n_overrides,
                         tippe_scenario *out, tippe_error *err)
 {
+    return tippe_scenario_load_text(path, NULL, 0, overrides, n_overrides, out, err);
+}
+
+void tippe_scenario_free(tippe_scenario *s)
+{
+    if (!s)
+        return;
+    tippe_design_free(s->design);
+    s->design = NULL;
+}
+
+int tippe_scenario_load_text(const char *path, const char *text, size_t len,
+                             const char *const *overrides, int n_overrides, tippe_scenario *out,
+                             tippe_error *err)
+{
     memset(out, 0, sizeof *out);
     if (!path || !path[0])
         return tippe_error_set(err, TIPPE_EINPUT, "no scenario file given");
@@ -744,13 +757,18 @@ int tippe_scenario_load(const char *path, const char *const *overrides, int n_ov
     if (!c)
         return TIPPE_ECOMPUTE;
     cJSON *root = NULL;
-    int rc = tippe_json_load(c, MAX_SCENARIO_MIB, "scenario", &root);
+    if (len > ((size_t)MAX_SCENARIO_MIB << 20))
+        text = NULL; /* the file's own read refuses it, in its words */
+    int rc = text ? tippe_json_parse_text(c, text, len, MAX_SCENARIO_MIB, "scenario", &root)
+                  : tippe_json_load(c, MAX_SCENARIO_MIB, "scenario", &root);
     if (!rc && !cJSON_IsObject(root))
         rc = tippe_json_wrong_type(c, "", "a JSON object at the top", root);
     if (!rc)
-        rc = scenario_from_root(c, root, path, overrides, n_overrides, out);
+        rc = scenario_from_root(c, root, path, overrides, n_overrides, NULL, 0, out);
     cJSON_Delete(root);
     free(c);
+    if (rc)
+        tippe_scenario_free(out);
     return rc;
 }
 
@@ -762,7 +780,7 @@ static cJSON *design_root(const char *design_path, double z2_mm, const char *con
 {
     tippe_launch_options o;
     tippe_launch_options_default(&o);
-    const char *slash = strrchr(design_path, '/');
+    const char *file = tippe_path_base(design_path);
     cJSON *root = cJSON_CreateObject(), *top = cJSON_AddObjectToObject(root, "top"),
           *ini = cJSON_AddObjectToObject(root, "initial"),
           *set = cJSON_AddArrayToObject(top, "set");
@@ -772,11 +790,10 @@ static cJSON *design_root(const char *design_path, double z2_mm, const char *con
     }
     char name[1200];
     /* what differs from launch to launch first: a film's caption may be cut at its end */
-    snprintf(name, sizeof name, "%s at Z2 = %g mm, central hand launch",
-             slash ? slash + 1 : design_path, z2_mm);
+    snprintf(name, sizeof name, "%s at Z2 = %g mm, central hand launch", file, z2_mm);
     cJSON_AddStringToObject(root, "name", name);
     /* the design's path is read relative to the "scenario" file: the design itself */
-    cJSON_AddStringToObject(top, "design", slash ? slash + 1 : design_path);
+    cJSON_AddStringToObject(top, "design", file);
     cJSON_AddNumberToObject(top, "z2_mm", z2_mm);
     for (int i = 0; i < n_sets; i++)
         cJSON_AddItemToArray(set, cJSON_CreateString(sets[i]));
@@ -801,7 +818,8 @@ static cJSON *design_root(const char *design_path, double z2_mm, const char *con
     return root;
 }
 
-int tippe_scenario_for_design(const char *design_path, double z2_mm,
+int tippe_scenario_for_design(const char *design_path, const char *design_text,
+                              size_t design_len, double z2_mm,
                               const char *const *design_sets, int n_design_sets,
                               const char *const *overrides, int n_overrides,
                               tippe_scenario *out, tippe_error *err)
@@ -821,8 +839,11 @@ int tippe_scenario_for_design(const char *design_path, double z2_mm,
     cJSON *root = design_root(design_path, z2_mm, design_sets, n_design_sets);
     int rc = root ? TIPPE_OK : tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
     if (!rc)
-        rc = scenario_from_root(c, root, design_path, overrides, n_overrides, out);
+        rc = scenario_from_root(c, root, design_path, overrides, n_overrides, design_text,
+                                design_len, out);
     cJSON_Delete(root);
     free(c);
+    if (rc)
+        tippe_scenario_free(out);
     return rc;
 }

@@ -7,7 +7,7 @@
 #include "tippe/animate.h"
 #include "tippe/build.h"
 #include "tippe/export.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "tippe/sweep.h"
 
 #include <dirent.h>
@@ -430,8 +430,7 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
     if (!d)
         return;
     char cat[4096 + 32], dir[4096];
-    snprintf(cat, sizeof cat, "%s/catalogue.json", s->designs_dir);
-    o.catalogue = cat;
+    o.catalogue = tippe_build_catalogue_file(d, cat, sizeof cat);
     tippe_build_sheet *sheet = malloc(sizeof *sheet);
     char(*paths)[4096] = malloc(TIPPE_EXPORT_BUILD_FILES * sizeof *paths);
     if (!sheet || !paths || tippe_serve_tmp_make(s, dir, sizeof dir)) {
@@ -486,12 +485,11 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
 }
 
 /* The build options every sheet of the server uses: tippe build's defaults,
- * the shipped catalogue. */
-static void sheet_options(serve_server *s, tippe_build_options *o, char *cat, size_t size)
+ * the design's catalogue as tippe build finds it (the designs folder's). */
+static void sheet_options(const tippe_design *d, tippe_build_options *o, char *cat, size_t size)
 {
     tippe_build_options_default(o);
-    snprintf(cat, size, "%s/catalogue.json", s->designs_dir);
-    o->catalogue = cat;
+    o->catalogue = tippe_build_catalogue_file(d, cat, size);
 }
 
 /* {verdict, three_in_one, settable, text, min_setting_mm, min_setting_rule, settings}
@@ -540,7 +538,7 @@ static void api_verdict(serve_server *s, const cJSON *req, serve_response *out)
         return;
     tippe_build_options o;
     char cat[4096 + 32];
-    sheet_options(s, &o, cat, sizeof cat);
+    sheet_options(d, &o, cat, sizeof cat);
     tippe_build_sheet *sheet = malloc(sizeof *sheet);
     tippe_error err = {0};
     int rc = sheet ? tippe_build_compute_verdict(d, &o, sheet, &err)
@@ -644,7 +642,7 @@ static void api_advice(serve_server *s, const cJSON *req, serve_response *out)
     }
     tippe_build_options o;
     char cat[4096 + 32];
-    sheet_options(s, &o, cat, sizeof cat);
+    sheet_options(d, &o, cat, sizeof cat);
     tippe_build_sheet *sheet = malloc(sizeof *sheet);
     tippe_error err = {0};
     int rc = sheet ? tippe_build_compute(d, &o, sheet, &err)

@@ -1,7 +1,7 @@
 /* One central hand launch at one Z2 beside the zone the sweep puts it in
  * (tippe check), and its report for both front ends (tippe check --json,
  * tippe serve's /api/check); theory beside launches. */
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 #include "base/json.h"
 #include "tippe/sweep.h"
 

@@ -28,8 +28,8 @@ void tippe_sweep_vary_free(tippe_sweep_vary_result *v)
     memset(v, 0, sizeof *v);
 }
 
-int tippe_sweep_vary(const char *design_path, const char *const *overrides, int n_overrides,
-                     const char *field, double from, double to, int steps, double z2_from_mm,
+int tippe_sweep_vary(const tippe_design *base, const char *field, double from, double to,
+                     int steps, double z2_from_mm,
                      double z2_to_mm, const tippe_sweep_options *opt,
                      tippe_sweep_vary_result *out, tippe_error *err)
 {
@@ -43,26 +43,16 @@ int tippe_sweep_vary(const char *design_path, const char *const *overrides, int 
                                "vary: %s=%g:%g:%d is not a range (need finite bounds and "
                                "1 to 100000 steps, 1 only if from = to)",
                                field, from, to, steps);
-    if (n_overrides < 0)
-        n_overrides = 0;
-    const char **ov = malloc((size_t)(n_overrides + 1) * sizeof *ov);
     out->values = calloc((size_t)steps, sizeof *out->values);
     out->results = calloc((size_t)steps, sizeof *out->results);
     out->travel_from_mm = calloc((size_t)steps, sizeof(double));
     out->travel_to_mm = calloc((size_t)steps, sizeof(double));
     out->collision = calloc((size_t)steps, sizeof *out->collision);
-    if (!ov || !out->values || !out->results || !out->travel_from_mm || !out->travel_to_mm ||
-        !out->collision) {
-        free(ov);
+    if (!out->values || !out->results || !out->travel_from_mm || !out->travel_to_mm ||
+        !out->collision)
         return tippe_error_set(err, TIPPE_ECOMPUTE, "vary: out of memory");
-    }
-    for (int i = 0; i < n_overrides; i++)
-        ov[i] = overrides[i];
-    /* The design as given: a step that fails to load is one whose parts collide if
-     * the same value passes every check but the layout's (tippe_design_derive). */
-    tippe_design *base = NULL;
-    tippe_error be = {0};
-    int base_ok = tippe_design_load(design_path, ov, n_overrides, &base, &be) == TIPPE_OK;
+    /* A step that fails to load is one whose parts collide if the same value
+     * passes every check but the layout's (tippe_design_derive). */
     int st = TIPPE_OK;
     for (int i = 0; i < steps && st == TIPPE_OK; i++) {
         double v = steps == 1 ? from : from + (to - from) * i / (steps - 1);
@@ -72,14 +62,13 @@ int tippe_sweep_vary(const char *design_path, const char *const *overrides, int 
             st = tippe_error_set(err, TIPPE_EINPUT, "vary: field name too long");
             break;
         }
-        ov[n_overrides] = set;
+        const char *one[1] = {set};
         tippe_design *d = NULL;
         tippe_error e = {0};
         out->values[i] = v;
         out->n = i + 1;
-        st = tippe_design_load(design_path, ov, n_overrides + 1, &d, &e);
-        if (st == TIPPE_EINPUT && base_ok) {
-            const char *one[1] = {set};
+        st = tippe_design_reload(base, one, 1, &d, &e);
+        if (st == TIPPE_EINPUT) {
             tippe_design *loose = NULL;
             tippe_error le = {0};
             if (tippe_design_derive(base, one, 1, &loose, &le) == TIPPE_OK) {
@@ -102,8 +91,6 @@ int tippe_sweep_vary(const char *design_path, const char *const *overrides, int 
         if (st != TIPPE_OK)
             tippe_error_set(err, st, "with %s: %s", set, e.msg);
     }
-    tippe_design_free(base);
-    free(ov);
     if (st == TIPPE_OK && out->n_collisions == out->n) {
         int last = out->n - 1;
         char msg[sizeof err->msg];

@@ -10,6 +10,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const char *path = fuzz_write("scenarios/scenario.json", data, size);
     tippe_scenario sc;
     tippe_error err;
-    tippe_scenario_load(path, NULL, 0, &sc, &err);
+    if (tippe_scenario_load(path, NULL, 0, &sc, &err) == TIPPE_OK)
+        tippe_scenario_free(&sc); /* a design top's design */
     return 0;
 }

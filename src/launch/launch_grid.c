@@ -1,8 +1,8 @@
-/* A map's grid (tippe map; tippe/physics.h, "a map's grid"): the Z2 and spin values,
+/* A map's grid (tippe map; tippe/launch.h, "a map's grid"): the Z2 and spin values,
  * the top and the holes' openings of every cell, the launch records of the plain run
  * and of the patch law's radius reruns, and their tallies. The front end runs the
  * plan (on its MPI ranks) and reports; the grid is the library's. */
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,10 +1,10 @@
 /* tippe launch: many hand launches of a design's top at one Z2, counted by
  * outcome beside theory's prediction (the drawing of the launches is in
- * tippe/physics.h; what launch, map and check share is in hands.c). */
+ * tippe/launch.h; what launch, map and check share is in hands.c). */
 #include "hands.h"
 
 #include "tippe/base.h"
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 #include <cjson/cJSON.h>
 #include <inttypes.h>

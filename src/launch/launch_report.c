@@ -1,6 +1,7 @@
 /* Reports of launches that several verbs and both front ends give (tippe's
- * --json, tippe serve): the friction law, the accuracy and a launch's options. */
-#include "tippe/physics.h"
+ * --json, tippe serve): a launch's friction model, its slip in words and its
+ * options (the model's friction and accuracy: src/physics/dynamics_report.c). */
+#include "tippe/launch.h"
 
 #include <cjson/cJSON.h>
 
@@ -45,43 +46,6 @@ const char *tippe_launch_slip_text(const tippe_top *top, const tippe_dynamics_in
         snprintf(buf, size, "centre sliding at %.3g m/s (U %.3g, V %.3g m/s), contact slip "
                  "%.3g m/s", v, ic->U, ic->V, slip);
     return buf;
-}
-
-const char *tippe_dynamics_friction_text(const tippe_dynamics_model *m, char *buf, size_t size)
-{
-    const double vs = m->slip_scale_m_s > 0 ? m->slip_scale_m_s : TIPPE_COULOMB_SLIP_SCALE_M_S;
-    const tippe_friction_law_type *t = tippe_friction_law_type_of(m->law);
-    if (!t) /* as the model's check words it */
-        t = tippe_friction_law_type_of(TIPPE_FRICTION_VISCOUS);
-    t->describe(m, vs, buf, size);
-    return buf;
-}
-
-void tippe_dynamics_friction_json(cJSON *o, const tippe_dynamics_model *m)
-{
-    /* the older top-level key: the viscous coefficient, null under the others */
-    if (tippe_friction_law_takes(m->law, TIPPE_LAW_PARAM_MU))
-        cJSON_AddNumberToObject(o, "mu_s_m", m->mu);
-    else
-        cJSON_AddNullToObject(o, "mu_s_m");
-    cJSON *f = cJSON_AddObjectToObject(o, "friction");
-    const tippe_friction_law_type *t = tippe_friction_law_type_of(m->law);
-    if (!f || !t)
-        return;
-    cJSON_AddStringToObject(f, "law", t->name);
-    t->json(f, m);
-}
-
-void tippe_dynamics_accuracy_json(cJSON *o, const char *preset, const tippe_dynamics_accuracy *acc,
-                                  tippe_friction_law law, double creep_cap)
-{
-    cJSON *a = cJSON_AddObjectToObject(o, "accuracy");
-    if (a) {
-        cJSON_AddStringToObject(a, "preset", preset);
-        /* the stepper that ran (the patch law's msbdf for the presets' rk8pd) */
-        cJSON_AddStringToObject(a, "stepper", tippe_dynamics_stepper_used(law, creep_cap, acc->stepper));
-        cJSON_AddNumberToObject(a, "rtol", acc->rtol);
-    }
 }
 
 cJSON *tippe_launch_options_json(const tippe_launch_options *o, int fixed_spin)

@@ -11,7 +11,7 @@
  * whose smaller root (u > 0) is b of eq 5.11. Stability follows the rule that a
  * branch is stable where J^2 increases with theta, i.e. where Q(x) < 0; the tests
  * check that this rule reproduces Theorem 5.1 in every subgroup. */
-#include "tippe/physics.h"
+#include "tippe/theory.h"
 #include "tippe/base.h"
 
 #include <float.h>

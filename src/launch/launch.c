@@ -1,6 +1,6 @@
 /* Hand launches: distributions, per-launch generators, OpenMP runs, tallies
- * and Wilson intervals (tippe/physics.h, docs/launch.md). */
-#include "tippe/physics.h"
+ * and Wilson intervals (tippe/launch.h, docs/launch.md). */
+#include "tippe/launch.h"
 #include "tippe/base.h"
 
 #include <gsl/gsl_errno.h>
@@ -32,7 +32,7 @@ void tippe_launch_options_default(tippe_launch_options *o)
     /* The paper's viscous law (eq 3.12), not Coulomb's: the rigid point contact rolls
      * for ever once it sticks, which contradicts the hand launches of Table 1
      * (docs/dynamics.md, "Why design launches default to the viscous law"). */
-    o->law = TIPPE_FRICTION_VISCOUS;
+    o->law = tippe_friction_law_at(0)->law; /* the table's first: the viscous law */
     o->mu_c = TIPPE_LAUNCH_DEFAULT_MU_C;
     o->slip_scale_m_s = 0.0;
     o->creep_cap = TIPPE_PATCH_CREEP_CAP;
@@ -68,8 +68,8 @@ int tippe_launch_options_check(const tippe_launch_options *o, tippe_error *err)
                                o->slide_sd_m_s);
     if (!(o->mu >= 0 && isfinite(o->mu)))
         return tippe_error_set(err, TIPPE_EINPUT, "mu = %g s/m must be >= 0", o->mu);
-    if (o->law != TIPPE_FRICTION_VISCOUS && o->law != TIPPE_FRICTION_COULOMB &&
-        o->law != TIPPE_FRICTION_COULOMB_CREEP && o->law != TIPPE_FRICTION_PATCH)
+    const tippe_friction_law_type *law = tippe_friction_law_type_of(o->law);
+    if (!law) /* a law of the friction laws' table */
         return tippe_error_set(err, TIPPE_EINPUT, "unknown friction law %d", (int)o->law);
     /* the dynamics refuses a patch wider than R/2 (it knows R); here only a number */
     if (!(o->patch_radius_m >= 0 && isfinite(o->patch_radius_m)) ||
@@ -79,7 +79,7 @@ int tippe_launch_options_check(const tippe_launch_options *o, tippe_error *err)
                                o->patch_radius_m, o->patch_E_star_pa);
     /* a design's launches get the radius or Hertz's modulus (tippe_launch_patch_modulus):
      * neither would silently be the point limit */
-    if (o->law == TIPPE_FRICTION_PATCH && !(o->patch_radius_m > 0) && !(o->patch_E_star_pa > 0))
+    if (law->patch && !(o->patch_radius_m > 0) && !(o->patch_E_star_pa > 0))
         return tippe_error_set(err, TIPPE_EINPUT,
                                "the patch law needs the patch radius or the contact modulus "
                                "E* (Hertz at m g)");
@@ -347,14 +347,14 @@ static int draw_launches(const tippe_launch_plan *plan, const tippe_launch_optio
     }
     if (bad < 0)
         return TIPPE_OK;
+    const int viscous = tippe_friction_law_takes(o->law, TIPPE_LAW_PARAM_MU); /* mu in s/m */
     return tippe_error_set(err, TIPPE_EINPUT,
                            "launch %ld (draw %ld): the contact force is undetermined at launch "
                            "(denominator of eq 3.19 <= 0: friction %s %g%s is too strong for "
                            "its sliding speed); lower it or the sliding (--slide)",
                            bad, bad % plan->per_group,
-                           o->law == TIPPE_FRICTION_VISCOUS ? "mu" : "mu_c",
-                           o->law == TIPPE_FRICTION_VISCOUS ? o->mu : o->mu_c,
-                           o->law == TIPPE_FRICTION_VISCOUS ? " s/m" : "");
+                           viscous ? "mu" : "mu_c", viscous ? o->mu : o->mu_c,
+                           viscous ? " s/m" : "");
 }
 
 /* The options of a plan's group: o, with the group's polar caps when the plan has them. */
@@ -603,23 +603,6 @@ int tippe_launch_trajectory(const tippe_top *top, const tippe_launch_options *o,
     opt.on_sample = tippe_dynamics_samples_keep;
     opt.sample_ctx = samples;
     return tippe_dynamics_run(&m, ic, &opt, res, err);
-}
-
-int tippe_contact_table_surface(const char *name, double *E_pa, double *nu)
-{
-    /* docs/contact-patch.md, "Materials", gives each value's source */
-    static const struct {
-        const char *name;
-        double E_GPa, nu;
-    } tables[] = {{"glass", 72.0, 0.23}, {"laminate", 9.0, 0.3}, {"wood", 1.0, 0.4},
-                  {"steel", 210.0, 0.30}};
-    for (size_t i = 0; i < sizeof tables / sizeof tables[0]; i++)
-        if (name && !strcmp(name, tables[i].name)) {
-            *E_pa = tables[i].E_GPa * 1e9;
-            *nu = tables[i].nu;
-            return 0;
-        }
-    return -1;
 }
 
 int tippe_launch_patch_modulus(const tippe_design *d, const char *table, double *E_star_pa,

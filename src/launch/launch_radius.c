@@ -1,7 +1,7 @@
 /* Sensitivity of patch-law launches to the patch radius (issue 27): the same launches
  * at 0.5x, 1x and 2x the radius used, and whether their outcomes agree
- * (tippe/physics.h, docs/dynamics.md "Radius sensitivity"). */
-#include "tippe/physics.h"
+ * (tippe/launch.h, docs/dynamics.md "Radius sensitivity"). */
+#include "tippe/launch.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -128,7 +128,8 @@ int tippe_launch_radius_sensitivity_initial(const tippe_top *top, const tippe_la
                                             tippe_launch_radius_sensitivity *out,
                                             tippe_error *err)
 {
-    if (o->law != TIPPE_FRICTION_PATCH)
+    const tippe_friction_law_type *law = tippe_friction_law_type_of(o->law);
+    if (!law || !law->patch)
         return tippe_error_set(err, TIPPE_EINPUT,
                                "the radius sensitivity needs the patch law, not %s",
                                tippe_friction_law_name(o->law));

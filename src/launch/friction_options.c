@@ -1,7 +1,7 @@
 /* The rules of the friction options, one place for the command and the server
- * (tippe_friction_choose, tippe/physics.h): which law the options name, and which
+ * (tippe_friction_choose, tippe/launch.h): which law the options name, and which
  * parameter belongs to which law, asked of the laws' table (friction_laws.c). */
-#include "tippe/physics.h"
+#include "tippe/launch.h"
 
 #include <stdio.h>
 #include <string.h>
