@@ -25,7 +25,9 @@ declare -A base=(
 # Options that only make sense with another (said in their help): given it too.
 declare -A with=([export --split-z]="--split" [animate --frame]="-o $tmp/frame.png"
                  [check --radius-span]="--friction patch" [launch --radius-span]="--friction patch"
-                 [map --radius-span]="--friction patch")
+                 [map --radius-span]="--friction patch" [check --creep-cap]="--friction patch"
+                 [launch --creep-cap]="--friction patch" [map --creep-cap]="--friction patch"
+                 [build --creep-cap]="--friction patch" [animate --creep-cap]="--friction patch")
 verbs=$("$tippe" --help | awk '/^  [a-z]+ /{print $1}')
 check "tippe --help lists the verbs" test -n "$verbs"
 # a verb not listed above gets the design file alone (give it a line if it needs more)
