@@ -107,7 +107,7 @@ with Server(tippe) as srv:
             "subtree: true});")
         box = driver.find_element(By.ID, "f-parts_0__print_infill")
         box.send_keys(Keys.CONTROL, "a")
-        box.send_keys("0.4")
+        box.send_keys("40%")
         want = build_verdict("parts.body.print.infill=0.4")
         wait.until(lambda d: page_verdict(d) == want)
         check(want == "3-in-1 on paper only",
@@ -245,7 +245,7 @@ with Server(tippe) as srv:
         driver.find_element(By.ID, "pin").click()
         box = driver.find_element(By.ID, "f-parts_0__print_infill")
         box.send_keys(Keys.CONTROL, "a")
-        box.send_keys("0.6")
+        box.send_keys("60")
         wait.until(lambda d: d.execute_script(
             "return state.sweep && state.pinned && state.sweep.narrowest_zone_mm !== "
             "state.pinned.sweep.narrowest_zone_mm"))

@@ -350,6 +350,10 @@ void tippe_build_header_text(const tippe_build_sheet *s, char *buf, size_t size)
  * starts or ends on a pole's opening, else "". */
 const char *tippe_build_cap_text(const tippe_build_setting *x);
 
+/* The launch check of setting k as the sheet's table gives it: "tip at 8.6 rev/s (as
+ * expected); starts on the hole's rim at +z (modelled)", or "not run". */
+void tippe_build_launch_text(const tippe_build_sheet *s, int k, char *buf, size_t size);
+
 /* Advice k's overrides as a command line's options: "--set A --set B". */
 void tippe_build_advice_sets(const tippe_build_sheet *s, int k, char *buf, size_t size);
 /* The heading over the advice, and the sentence for none found. */

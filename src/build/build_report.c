@@ -406,12 +406,7 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
             snprintf(range, sizeof range, "none robust (zone %.2f .. %.2f mm)", x->from_mm,
                      x->to_mm);
         tippe_build_spin_text(s, k, spin, sizeof spin);
-        if (x->launch_status == TIPPE_OK)
-            snprintf(check, sizeof check, "%s at %.1f rev/s%s%s%s", tippe_verdict_name(x->verdict),
-                     x->spin_launch_rev_s, x->verdict_ok ? " (as expected)" : " (NOT as expected)",
-                     x->beyond_hand ? "; beyond a hand spin" : "", tippe_build_cap_text(x));
-        else
-            snprintf(check, sizeof check, "not run");
+        tippe_build_launch_text(s, k, check, sizeof check);
         double lo = fmin(x->depth_from_mm, x->depth_to_mm);
         double hi = fmax(x->depth_from_mm, x->depth_to_mm);
         fprintf(f, "| %s | %s | %s | %.2f mm | %s .. %s | %s | %s | %s | %s |\n", behaviours[k],
@@ -542,6 +537,19 @@ const char *tippe_build_advice_none(void)
     return "No change tried makes it settable: the slicer's infill steps, the table's bought "
            "materials, the catalogue's screws or whole-mm lengths (half to double), alone or "
            "in pairs.";
+}
+
+/* The sheet's launch-check cell of setting k (the Markdown table's, the page's), so that
+ * both say the same words. */
+void tippe_build_launch_text(const tippe_build_sheet *s, int k, char *buf, size_t size)
+{
+    const tippe_build_setting *x = &s->set[k];
+    if (x->launch_status == TIPPE_OK)
+        snprintf(buf, size, "%s at %.1f rev/s%s%s%s", tippe_verdict_name(x->verdict),
+                 x->spin_launch_rev_s, x->verdict_ok ? " (as expected)" : " (NOT as expected)",
+                 x->beyond_hand ? "; beyond a hand spin" : "", tippe_build_cap_text(x));
+    else
+        snprintf(buf, size, "not run");
 }
 
 const char *tippe_build_cap_text(const tippe_build_setting *x)

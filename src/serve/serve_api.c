@@ -612,6 +612,42 @@ void tippe_serve_advice_forget(void)
     pthread_mutex_unlock(&advice_lock);
 }
 
+/* What the whole sheet says beside its verdict, with tippe build --json's names and
+ * values: whether the model holds at the poles the launch checks stand on, the poles'
+ * openings and fixes (with their --set lines), the warnings and each setting's
+ * launch check as the sheet's table words it ("launch_checks": behaviour, text). 0, or
+ * -1 when out of memory. */
+static int sheet_extras(const tippe_build_sheet *sheet, cJSON *o)
+{
+    static const char *const keep[] = {"model_holds_at_poles", "polar_caps", "pole_fixes",
+                                       "warnings", NULL};
+    cJSON *whole = tippe_build_json(sheet);
+    if (!whole)
+        return -1;
+    for (int k = 0; keep[k]; k++) {
+        cJSON *x = cJSON_DetachItemFromObjectCaseSensitive(whole, keep[k]);
+        if (x && !cJSON_AddItemToObject(o, keep[k], x)) {
+            cJSON_Delete(x);
+            cJSON_Delete(whole);
+            return -1;
+        }
+    }
+    cJSON_Delete(whole);
+    cJSON *checks = cJSON_AddArrayToObject(o, "launch_checks");
+    for (int f = 0; checks && f < 3; f++) {
+        if (!sheet->set[f].reachable)
+            continue;
+        char text[400];
+        tippe_build_launch_text(sheet, f, text, sizeof text);
+        cJSON *e = cJSON_CreateObject();
+        if (!e || !cJSON_AddItemToArray(checks, e) ||
+            !cJSON_AddStringToObject(e, "behaviour", tippe_build_behaviour(f)) ||
+            !cJSON_AddStringToObject(e, "text", text))
+            return -1;
+    }
+    return checks ? 0 : -1;
+}
+
 /* POST /api/advice {design}: what the whole build sheet adds to the verdict: the
  * verdict's text with the launch checks (where a hole's opening at a pole undoes
  * it), the changes one can buy when it is not settable ("advice"), and the
@@ -654,6 +690,8 @@ static void api_advice(serve_server *s, const cJSON *req, serve_response *out)
     for (int k = 0; advice && !sheet->settable && k < sheet->n_advice; k++)
         if (!cJSON_AddItemToArray(advice, cJSON_CreateString(sheet->advice[k].text)))
             advice = NULL;
+    if (advice && sheet_extras(sheet, o_json))
+        advice = NULL;
     free(sheet);
     if (rc) {
         tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, "design", "%s", err.msg);
