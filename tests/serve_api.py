@@ -127,11 +127,16 @@ with Server(tippe) as srv:
     with tempfile.TemporaryDirectory() as d:
         subprocess.run([tippe, "build", "designs/m12-setscrew.json", "-o", d], cwd=REPO,
                        capture_output=True, check=True)
-        want = sorted(os.listdir(d))
+        # and the design itself, as STEM.json (issue 37: the zip holds what it was made of)
+        want = sorted(os.listdir(d) + ["m12-setscrew.json"])
         built = json.load(open(os.path.join(d, "m12-setscrew-build.json")))
     check(st == 200 and hdrs["content-type"] == "application/zip" and names_zip == want and
           "m12-setscrew-build.zip" in hdrs.get("content-disposition", ""),
-          "build m12-setscrew: the zip holds what tippe build writes (%d files)" % len(want))
+          "build m12-setscrew: the zip holds what tippe build writes (%d files) and the "
+          "design" % len(want))
+    check(st == 200 and zipfile.ZipFile(io.BytesIO(data)).read("m12-setscrew.json") ==
+          open(os.path.join(REPO, "designs", "m12-setscrew.json"), "rb").read(),
+          "build m12-setscrew: the design in the zip is the shipped file, byte for byte")
     if st == 200:
         sheet = json.loads(zipfile.ZipFile(io.BytesIO(data)).read("m12-setscrew-build.json"))
         check(same(sheet, built, skip=("file",)) == [],

@@ -12,11 +12,16 @@ import re
 import subprocess
 import sys
 import time
+import zipfile
 
 from serve_lib import Server, REPO
 
 tippe, artefacts = sys.argv[1], sys.argv[2]
 os.makedirs(artefacts, exist_ok=True)
+downloads = os.path.join(artefacts, "page-downloads")
+os.makedirs(downloads, exist_ok=True)
+for f in os.listdir(downloads):
+    os.remove(os.path.join(downloads, f))
 
 from selenium import webdriver
 from selenium.webdriver.chrome.options import Options
@@ -81,6 +86,8 @@ for arg in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-sh
     opts.add_argument(arg)
 opts.binary_location = "/usr/bin/chromium"
 opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+opts.add_experimental_option("prefs", {"download.default_directory": downloads,
+                                       "download.prompt_for_download": False})
 
 with Server(tippe) as srv:
     driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
@@ -221,7 +228,114 @@ with Server(tippe) as srv:
         d.save_screenshot(os.path.join(artefacts, "page-3-words.png"))
 
         logs = [e for e in d.get_log("browser") if e["level"] in ("SEVERE", "WARNING")]
-        check(not logs, "no console errors%s" %
+        check(not logs, "no console errors in the first part%s" %
+              ("" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])))
+
+        # ---- keep every edit ------------------------------------------------------------
+        # undo, a field's reset, the URL that reopens the edit
+        open_design(d, wait, "m12-setscrew-printed")
+        infill = "return state.design.parts[0].print.infill"
+        type_into(d, "f-parts_0__print_infill", "40%")
+        wait.until(lambda d: js(d, infill) == 0.4)
+        link = d.current_url
+        check("#edit=" in link, "the edited design is in the URL (%d characters)" % len(link))
+        d.find_element(By.ID, "undo").click()
+        check(js(d, infill) == 0.15 and
+              d.find_element(By.ID, "f-parts_0__print_infill").get_attribute("value") == "15",
+              "Undo: the infill is 15 % again")
+        type_into(d, "f-parts_0__print_infill", "60")
+        reset = d.find_element(By.CSS_SELECTOR, '.field[data-path="parts[0].print.infill"] .reset')
+        check(reset.is_displayed(), "an edited field shows its reset")
+        reset.click()
+        check(js(d, infill) == 0.15 and not reset.is_displayed(),
+              "the reset puts the design's value back, and hides itself")
+        want = sheet("m12-setscrew-printed", "parts.body.print.infill=0.4")["verdict"]
+        d.get("about:blank")
+        d.get(link)
+        wait.until(lambda d: js(d, "return state.verdict !== null && state.sweepDesign !== null"
+                                   " && state.sweepDesign.parts[0].print.infill === 0.4"))
+        check(js(d, infill) == 0.4 and "(edited)" in text(d, "design-title") and
+              text(d, "verdict") == want,
+              "the link reopens the edited design: infill 0.4, '%s' as tippe build's '%s'" %
+              (text(d, "verdict"), want))
+        # another design asked for by one arrow key: confirmed before the edit is dropped
+        pick = d.find_element(By.ID, "design-pick")
+        pick.send_keys(Keys.ARROW_DOWN)
+        WebDriverWait(d, 5).until(lambda d: d.switch_to.alert)
+        alert = d.switch_to.alert
+        asked = alert.text
+        alert.dismiss()
+        time.sleep(0.5)
+        check("Discard" in asked and js(d, infill) == 0.4 and
+              js(d, "return state.name") == "m12-setscrew-printed" and
+              Select(pick).first_selected_option.get_attribute("value") == "m12-setscrew-printed",
+              "one arrow key on the list asks first ('%s'); Cancel keeps the edit" % asked[:50])
+        # the pin pressed while the sweep of an edit runs pins that design with its sweep
+        type_into(d, "f-parts_0__print_infill", "60")
+        d.find_element(By.ID, "pin").click()
+        wait.until(lambda d: js(d, "return state.pinned !== null"))
+        pinned = js(d, "return [state.pinned.design.parts[0].print.infill, "
+                       "state.pinned.sweep.narrowest_zone_mm]")
+        cli6 = cli("sweep", "designs/m12-setscrew-printed.json", "--set",
+                   "parts.body.print.infill=0.6")
+        check(pinned[0] == 0.6 and abs(pinned[1] - cli6["narrowest_zone_mm"]) < 1e-9,
+              "pinned at once after an edit: the design (infill %s) with its own sweep "
+              "(narrowest %.4f mm, tippe sweep %.4f)" % (pinned[0], pinned[1],
+                                                        cli6["narrowest_zone_mm"]))
+        # a design that does not load: the results greyed and said to be the last one's
+        d.find_element(By.ID, "design-paste").click()
+        bad = json.load(open(os.path.join(REPO, "designs", "m12-setscrew.json")))
+        bad["name"] = "A pasted top"
+        bad["parts"][2]["height_mm"] = 80
+        d.find_element(By.ID, "paste-text").send_keys(json.dumps(bad))
+        d.find_element(By.ID, "paste-load").click()
+        WebDriverWait(d, 5).until(lambda d: d.switch_to.alert).accept()
+        wait.until(lambda d: d.find_element(By.ID, "results-of").is_displayed())
+        note = text(d, "results-of")
+        check("M12 setscrew in a solid ABS ball, printed" in note and "does not load" in note and
+              "stale" in d.find_element(By.ID, "results").get_attribute("class"),
+              "a pasted design that does not load: the old results greyed, said whose: '%s'" %
+              note[:110])
+        d.save_screenshot(os.path.join(artefacts, "page-4-stale.png"))
+        # the same pasted design that loads: its build zip is named from its name, holds it,
+        # and its sheet names the file in the zip
+        bad["parts"][2]["height_mm"] = 15
+        d.find_element(By.ID, "design-paste").click()
+        box = d.find_element(By.ID, "paste-text")
+        box.send_keys(Keys.CONTROL, "a")
+        box.send_keys(json.dumps(bad))
+        d.find_element(By.ID, "paste-load").click()
+        wait.until(lambda d: js(d, "return state.sweep !== null && state.verdict !== null && "
+                                   "state.sweepDesign.name === 'A pasted top'"))
+        check(not d.find_element(By.ID, "results-of").is_displayed() and
+              "stale" not in d.find_element(By.ID, "results").get_attribute("class"),
+              "once it loads, its own results are not greyed")
+        d.execute_cdp_cmd("Page.setDownloadBehavior", {"behavior": "allow",
+                                                       "downloadPath": downloads})
+        d.find_element(By.ID, "build").click()
+        deadline, zips = time.time() + 90, []
+        while time.time() < deadline and not zips:
+            zips = [f for f in os.listdir(downloads) if f.endswith(".zip")]
+            time.sleep(0.3)
+        check(zips == ["a-pasted-top-build.zip"], "the pasted design's zip: %s" % zips)
+        if zips:
+            z = zipfile.ZipFile(os.path.join(downloads, zips[0]))
+            inside = json.loads(z.read("a-pasted-top.json"))
+            md = z.read("a-pasted-top-build.md").decode()
+            check(inside == bad and "Design file a-pasted-top.json;" in md,
+                  "it holds the design as edited (a-pasted-top.json), and the sheet names it")
+        # the command's sheet names an absolute design path by its file's name
+        out = os.path.join(artefacts, "build-abs")
+        cli("build", os.path.join(REPO, "designs", "m12-setscrew.json"), "-o", out, "--no-export",
+            json_out=False)
+        md = open(os.path.join(out, "m12-setscrew-build.md")).read()
+        check("Design file m12-setscrew.json;" in md and REPO not in md.split("\n")[2],
+              "tippe build DESIGN given by its absolute path: the sheet says 'Design file "
+              "m12-setscrew.json'")
+
+        logs = [e for e in d.get_log("browser") if e["level"] in ("SEVERE", "WARNING")
+                and not ("/api/" in e["message"] and "400" in e["message"])]
+        check(not logs, "no console errors but the 400s of the design that does not load%s" %
               ("" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])))
     finally:
         driver.quit()

@@ -577,7 +577,11 @@ const char *tippe_build_cap_text(const tippe_build_setting *x)
 void tippe_build_header_text(const tippe_build_sheet *s, char *buf, size_t size)
 {
     size_t n = 0;
-    int w = snprintf(buf, size, "%s", s->design_file);
+    /* an absolute path names the maker's disk, not the sheet's folder (issue 37): its
+     * file's name alone; a relative one is kept, as the command was given it */
+    const char *slash = strrchr(s->design_file, '/');
+    int w = snprintf(buf, size, "%s",
+                     s->design_file[0] == '/' && slash ? slash + 1 : s->design_file);
     for (int i = 0; w >= 0 && (n += (size_t)w) < size && i < s->n_overrides; i++)
         w = snprintf(buf + n, size - n, "%s--set %s", i ? " " : " changed by ", s->override[i]);
     if (n >= size)

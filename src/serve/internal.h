@@ -189,8 +189,11 @@ extern const serve_route tippe_serve_routes[];
 void tippe_serve_advice_forget(void);
 
 /* ---- serve_zip.c: files of a folder into one zip in memory (libzip) ---- */
-int tippe_serve_zip_folder(const char *dir, const char *const *names, int n, char **out,
-                     size_t *len, tippe_error *err);
+/* ... and, when extra_name is not NULL, one more member from memory (the design as sent,
+ * which the build folder does not hold). */
+int tippe_serve_zip_folder(const char *dir, const char *const *names, int n,
+                           const char *extra_name, const char *extra, size_t extra_len,
+                           char **out, size_t *len, tippe_error *err);
 
 /* ---- serve_page.c (generated): the page's files ---- */
 typedef struct {

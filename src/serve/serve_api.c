@@ -425,9 +425,30 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
         snprintf(stem, sizeof stem, "%s", given->valuestring);
     if (tippe_serve_request_stem(req, "name", stem, sizeof stem, out))
         return;
-    tippe_design *d = tippe_serve_request_design(s, req, "design", stem, out);
+    /* the design travels in the zip as STEM.json, and the sheet names that file */
+    char file[96];
+    snprintf(file, sizeof file, "%s.json", stem);
+    tippe_design *d = tippe_serve_request_design(s, req, "design", file, out);
     if (!d)
         return;
+    char *design_text = NULL;
+    size_t design_len = 0;
+    const serve_design *shipped =
+        cJSON_IsString(given) ? tippe_serve_find_design(s, given->valuestring) : NULL;
+    if (shipped) {
+        design_text = malloc(shipped->len + 1);
+        if (design_text) {
+            memcpy(design_text, shipped->text, shipped->len);
+            design_len = shipped->len;
+        }
+    } else if ((design_text = cJSON_Print(given))) {
+        design_len = strlen(design_text);
+    }
+    if (!design_text) {
+        tippe_serve_respond_error(out, 503, NULL, "out of memory");
+        tippe_design_free(d);
+        return;
+    }
     char cat[4096 + 32], dir[4096];
     snprintf(cat, sizeof cat, "%s/catalogue.json", s->designs_dir);
     o.catalogue = cat;
@@ -435,6 +456,7 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
     char(*paths)[4096] = malloc(TIPPE_EXPORT_BUILD_FILES * sizeof *paths);
     if (!sheet || !paths || tippe_serve_tmp_make(s, dir, sizeof dir)) {
         tippe_serve_respond_error(out, 503, NULL, "cannot make a temporary folder for the build");
+        free(design_text);
         free(sheet);
         free(paths);
         tippe_design_free(d);
@@ -464,7 +486,9 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
     char *zip = NULL;
     size_t len = 0;
     if (!rc)
-        rc = tippe_serve_zip_folder(dir, (const char *const *)names, n, &zip, &len, &err);
+        rc = tippe_serve_zip_folder(dir, (const char *const *)names, n, file, design_text,
+                                    design_len, &zip, &len, &err);
+    free(design_text);
     tippe_serve_tmp_remove(s, dir);
     for (int i = 0; i < n; i++)
         free(names[i]);

@@ -41,6 +41,13 @@ const state = {
   seq: 0,             // the latest request sent: older answers are dropped
   z2: null,
   lseq: 0,            // the launch's inputs: a check of older ones is dropped
+  original: null,     // the design as opened (JSON text): a field's reset, "edited"
+  source: 'shipped',  // where it came from: 'shipped', 'file' (state.name its stem), 'pasted'
+  undo: [],           // earlier versions (JSON texts), the latest last
+  lastEdit: { path: null, t: 0 },
+  sweepDesign: null,  // the design (a copy) state.sweep is of
+  shownTitle: '',     // whose results are on screen
+  pinWanted: false,   // "Pin" pressed while a sweep ran: pin that design with its sweep
 };
 
 // ------------------------------------------------------------------ API
@@ -145,13 +152,36 @@ function numberField(form, path, label, unit, lo, hi, step, value) {
   const changed = (v) => {
     const t = percent ? String(v).trim().replace(/\s*%$/, '') : v;
     const x = Number(t);
+    noteEdit(path);
     setPath(state.design, path, t === '' || !isFinite(x) ? v : percent ? +(x / 100).toPrecision(12) : x);
-    schedule();
+    edited();
   };
   num.addEventListener('input', () => { slider.value = percent ? num.value.replace(/\s*%\s*$/, '') : num.value; changed(num.value); });
   slider.addEventListener('input', () => { num.value = slider.value; changed(slider.value); });
-  row.append(lab, slider, num, u, msg);
+  // the design's value shown again (a reset, an undo)
+  row.show = (v) => {
+    const shown = percent && typeof v === 'number' ? +(v * 100).toPrecision(12) : v;
+    num.value = shown; slider.value = shown;
+  };
+  row.append(lab, slider, num, u, resetButton(path, label), msg);
   form.appendChild(row);
+}
+
+// A field's reset: back to the value of the design as opened (shown only once it differs).
+function resetButton(path, label) {
+  const b = document.createElement('button');
+  b.type = 'button'; b.className = 'reset'; b.textContent = '↺'; b.hidden = true;
+  b.title = `reset ${label} to the design's value`;
+  b.setAttribute('aria-label', b.title);
+  b.addEventListener('click', () => {
+    const v = getPath(JSON.parse(state.original), path);
+    noteEdit(null);
+    setPath(state.design, path, v);
+    const row = b.closest('.field');
+    if (row.show) row.show(v);
+    edited();
+  });
+  return b;
 }
 
 function selectField(form, path, label, options, value) {
@@ -168,8 +198,9 @@ function selectField(form, path, label, options, value) {
   }
   sel.value = value;
   const msg = document.createElement('div'); msg.className = 'msg'; msg.hidden = true;
-  sel.addEventListener('change', () => { setPath(state.design, path, sel.value); schedule(); });
-  row.append(lab, sel, msg);
+  sel.addEventListener('change', () => { noteEdit(null); setPath(state.design, path, sel.value); edited(); });
+  row.show = (v) => { sel.value = v; };
+  row.append(lab, sel, resetButton(path, label), msg);
   form.appendChild(row);
 }
 
@@ -237,14 +268,16 @@ function showFieldError(field, message) {
 let timer = null;
 function schedule() {
   clearTimeout(timer);
+  timer = null;
   // a launch, a film or a build shown was of the design before this edit
   clearLaunch();
   $('build-status').textContent = '';
-  timer = setTimeout(refresh, 150);
+  timer = setTimeout(() => { timer = null; refresh(); }, 150);
 }
 
 async function refresh() {
   const seq = ++state.seq;
+  state.inFlight = true;
   $('busy').hidden = false;
   let r;
   // the verdict is asked with the sweep, not after it: the headline comes as soon as the
@@ -253,11 +286,21 @@ async function refresh() {
   const design = JSON.parse(JSON.stringify(state.design));
   const verdict = api('/api/verdict', { design }).catch((e) => e);
   try { r = await api('/api/sweep', { design }); }
-  catch (e) { if (seq === state.seq) { $('busy').hidden = true; showFieldError(null, 'the server does not answer: ' + e.message); } return; }
+  catch (e) { if (seq === state.seq) { state.inFlight = false; $('busy').hidden = true; showFieldError(null, 'the server does not answer: ' + e.message); markStale('the server does not answer'); } return; }
   if (seq !== state.seq) return; // a newer edit is on its way
+  state.inFlight = false;
   $('busy').hidden = true;
-  if (!r.ok) { showFieldError(r.json && r.json.field, (r.json && r.json.error) || ('HTTP ' + r.status)); return; }
+  if (!r.ok) {
+    const msg = (r.json && r.json.error) || ('HTTP ' + r.status);
+    showFieldError(r.json && r.json.field, msg);
+    markStale('the design on the form does not load: ' + msg);
+    if (state.pinWanted) { state.pinWanted = false; $('pin').textContent = 'Pin for compare'; }
+    return;
+  }
   showFieldError(null, null);
+  markStale(null);
+  state.sweepDesign = design;
+  state.shownTitle = (design.name || state.name || 'design') + (isEdited() ? ' (edited)' : '');
   state.sweep = r.json;
   state.verdict = null;
   state.advice = null;
@@ -265,7 +308,17 @@ async function refresh() {
   state.adviceAbort = null;
   drawAll();
   if (state.z2 !== null) evalAt(state.z2);
+  if (state.pinWanted && timer === null) pin();
   sheetVerdict(++state.vseq, design, verdict);
+}
+
+// The results on screen are not of the design on the form (it does not load, or its
+// own are on their way): greyed, and said whose they are; null when they are its own.
+function markStale(why) {
+  const res = $('results'), note = $('results-of');
+  res.classList.toggle('stale', !!why && !!state.sweep);
+  note.hidden = !why || !state.sweep;
+  note.textContent = why && state.sweep ? `The results below are of ${state.shownTitle}, not of the design on the form: ${why}` : '';
 }
 
 // The build sheet's verdict of a valid design: "3-in-1" only where each behaviour can be
@@ -761,21 +814,26 @@ async function film() {
 async function build() {
   const st = $('build-status');
   st.textContent = 'building…';
-  const name = (state.name || 'design').replace(/[^A-Za-z0-9_-]/g, '-').slice(0, 64);
+  const name = stem();
   const r = await api('/api/build', { design: state.design, name });
   if (!r.ok || !r.blob) { st.textContent = r.json ? r.json.error : 'HTTP ' + r.status; return; }
   const a = document.createElement('a');
   a.href = URL.createObjectURL(r.blob);
-  a.download = (state.name || 'design') + '-build.zip';
+  a.download = name + '-build.zip';
   document.body.appendChild(a); a.click(); a.remove();
   st.textContent = `downloaded ${a.download} (${Math.round(r.blob.size / 1024)} KiB)`;
 }
 
 // ------------------------------------------------------------------ compare
 
+// Pin the design whose zones are shown, with them; pressed while a sweep of a newer edit
+// runs, the pin waits for that sweep and pins its design.
 function pin() {
+  if (timer !== null || state.inFlight) { state.pinWanted = true; $('pin').textContent = 'Pinning when the zones are in…'; return; }
   if (!state.sweep) return;
-  state.pinned = { design: JSON.parse(JSON.stringify(state.design)), sweep: state.sweep, title: state.design.name };
+  state.pinWanted = false;
+  $('pin').textContent = 'Pin for compare';
+  state.pinned = { design: state.sweepDesign, sweep: state.sweep, title: state.shownTitle };
   $('pinned').hidden = false;
   drawPinned();
 }
@@ -809,37 +867,124 @@ function drawPinned() {
 async function openShipped(name) {
   const r = await api('/api/designs/' + encodeURIComponent(name));
   if (!r.ok) { showFieldError(null, r.json ? r.json.error : 'HTTP ' + r.status); return; }
-  openDesign(r.json, name);
+  openDesign(r.json, name, 'shipped');
 }
 
-// A whole new version of the design on the form (a fix tried, an undo): the form is
-// made again from it and the results follow.
-function editDesign(d) {
-  state.design = d;
-  buildForm();
+// ------------------------------------------------------------------ keeping every edit
+
+// Before a change: the version it changes goes on the undo list (a run of keystrokes in
+// one field within a second is one step).
+function noteEdit(path) {
+  const now = Date.now();
+  if (path === null || path !== state.lastEdit.path || now - state.lastEdit.t > 1000)
+    state.undo.push(JSON.stringify(state.design));
+  if (state.undo.length > 100) state.undo.shift();
+  state.lastEdit = { path, t: now };
+}
+
+// After a change: the fields that differ from the design as opened show their reset, the
+// edited design is kept (the URL, which reopens it, and this browser's storage), and the
+// results follow.
+function edited() {
+  markEdited();
+  keepEdit();
   schedule();
 }
 
-function openDesign(d, name) {
+function isEdited() { return state.original !== null && JSON.stringify(state.design) !== state.original; }
+
+function markEdited() {
+  const o = state.original ? JSON.parse(state.original) : null;
+  for (const row of document.querySelectorAll('#form .field')) {
+    const differs = o && JSON.stringify(getPath(state.design, row.dataset.path)) !== JSON.stringify(getPath(o, row.dataset.path));
+    row.classList.toggle('edited', !!differs);
+    const b = row.querySelector('.reset'); if (b) b.hidden = !differs;
+  }
+  $('undo').disabled = state.undo.length === 0;
+  $('design-title').textContent = (state.design.name || '(unnamed design)') + (isEdited() ? ' (edited)' : '');
+}
+
+// The edited design in the URL's fragment (a link that reopens it; never sent to the
+// server) and in local storage (the last edit survives a closed tab).
+function keepEdit() {
+  const kept = { from: state.name, source: state.source, original: state.original, design: state.design };
+  const frag = isEdited() ? '#edit=' + encodeURIComponent(JSON.stringify(kept)) : '';
+  history.replaceState(null, '', location.pathname + location.search + frag);
+  try {
+    if (isEdited()) localStorage.setItem('tippe-edit', JSON.stringify(kept));
+    else localStorage.removeItem('tippe-edit');
+  } catch (e) { /* storage off: the URL keeps it */ }
+}
+
+function undo() {
+  if (!state.undo.length) return;
+  state.design = JSON.parse(state.undo.pop());
+  state.lastEdit = { path: null, t: 0 };
+  buildForm();
+  edited();
+}
+
+// A whole new version of the design on the form (a fix tried): the form is made again
+// from it and the results follow.
+function editDesign(d) {
+  noteEdit(null);
+  state.design = d;
+  buildForm();
+  edited();
+}
+
+// Before the design on the form is replaced: its edits are kept only if the maker says so.
+function mayDiscard() {
+  return !isEdited() || confirm(`Discard your edits to ${state.design.name || state.name || 'this design'}? ` +
+                                '(Cancel keeps them; Save JSON downloads them.)');
+}
+
+function openDesign(d, name, source, original) {
   state.design = d;
   state.name = name || '';
+  state.source = source || 'shipped';
+  state.undo = [];
+  state.lastEdit = { path: null, t: 0 };
   state.z2 = null;
-  buildForm();
+  buildForm(); // a "print": true becomes its settings: not an edit
+  state.original = original || JSON.stringify(state.design);
+  markEdited();
+  keepEdit();
+  markStale(`loading ${d.name || state.name || 'the design'}…`);
   refresh();
 }
 
-function loadText(text, name) {
+function loadText(text, name, source) {
   let d;
   try { d = JSON.parse(text); } catch (e) { showFieldError(null, 'not valid JSON: ' + e.message); return; }
-  openDesign(d, name);
+  if (!d || typeof d !== 'object' || Array.isArray(d)) { showFieldError(null, 'not a design: a design file is a JSON object'); return; }
+  if (!mayDiscard()) return;
+  openDesign(d, name, source);
+}
+
+// The files' stem: the shipped design's or the opened file's name ("-edited" once edited),
+// a pasted design's from its name field.
+function stem() {
+  const slug = (t) => String(t || '').toLowerCase().replace(/[^a-z0-9_-]+/g, '-').replace(/^-+|-+$/g, '').slice(0, 48);
+  const base = state.source === 'pasted' ? (slug(state.design.name) || 'design') : (slug(state.name) || 'design');
+  return state.source !== 'pasted' && isEdited() ? base + '-edited' : base;
 }
 
 function save() {
   const blob = new Blob([JSON.stringify(state.design, null, 2) + '\n'], { type: 'application/json' });
   const a = document.createElement('a');
   a.href = URL.createObjectURL(blob);
-  a.download = (state.name || 'design') + '-edited.json';
+  a.download = stem() + '.json';
   document.body.appendChild(a); a.click(); a.remove();
+}
+
+// The edited design a link carries (#edit=...), or null.
+function keptFromHash() {
+  const m = location.hash.match(/^#edit=(.*)$/);
+  try {
+    const k = m ? JSON.parse(decodeURIComponent(m[1])) : null;
+    return k && k.design && typeof k.design === 'object' && !Array.isArray(k.design) ? k : null;
+  } catch (e) { return null; }
 }
 
 async function start() {
@@ -853,14 +998,22 @@ async function start() {
   for (const d of list.json.designs) {
     const o = document.createElement('option'); o.value = d.name; o.textContent = `${d.name} — ${d.title}`; pick.appendChild(o);
   }
-  pick.addEventListener('change', () => openShipped(pick.value));
+  let picked = null;
+  pick.addEventListener('focus', () => { picked = pick.value; });
+  pick.addEventListener('change', () => {
+    if (!mayDiscard()) { pick.value = picked !== null ? picked : state.name; return; }
+    picked = pick.value;
+    openShipped(pick.value);
+  });
   $('design-file').addEventListener('change', async (ev) => {
-    const f = ev.target.files[0]; if (f) loadText(await f.text(), f.name.replace(/\.json$/, ''));
+    const f = ev.target.files[0]; if (f) loadText(await f.text(), f.name.replace(/\.json$/, ''), 'file');
+    ev.target.value = '';
   });
   $('design-file-label').addEventListener('keydown', (ev) => { if (ev.key === 'Enter' || ev.key === ' ') { ev.preventDefault(); $('design-file').click(); } });
   $('design-paste').addEventListener('click', () => { $('paste-box').hidden = false; $('paste-text').focus(); });
   $('paste-cancel').addEventListener('click', () => { $('paste-box').hidden = true; });
-  $('paste-load').addEventListener('click', () => { $('paste-box').hidden = true; loadText($('paste-text').value, 'pasted'); });
+  $('paste-load').addEventListener('click', () => { $('paste-box').hidden = true; loadText($('paste-text').value, '', 'pasted'); });
+  $('undo').addEventListener('click', undo);
   $('design-save').addEventListener('click', save);
   $('pin').addEventListener('click', pin);
   $('unpin').addEventListener('click', () => { state.pinned = null; $('pinned').hidden = true; });
@@ -870,7 +1023,23 @@ async function start() {
   $('z2').addEventListener('change', () => { const t = $('z2').value.trim(); if (t !== '' && isFinite(Number(t))) pointAt(Number(t)); });
   for (const id of ['z2', 'spin', 'friction'])
     for (const ev of ['input', 'change']) $(id).addEventListener(ev, clearLaunch);
+  // a link to an edited design opened over this page (only its fragment differs)
+  window.addEventListener('hashchange', () => {
+    const k = keptFromHash();
+    if (k && mayDiscard()) openDesign(k.design, k.from, k.source, k.original);
+  });
   const want = new URLSearchParams(location.search).get('design');
+  // an edited design: the link's (#edit=...), else the last one this browser kept
+  // (not when the link names a shipped design)
+  let kept = keptFromHash();
+  try {
+    if (!kept && !want) kept = JSON.parse(localStorage.getItem('tippe-edit'));
+  } catch (e) { kept = null; }
+  if (kept && kept.design && typeof kept.design === 'object') {
+    if (list.json.designs.find((d) => d.name === kept.from)) pick.value = kept.from;
+    openDesign(kept.design, kept.from, kept.source, kept.original);
+    return;
+  }
   const first = list.json.designs.find((d) => d.name === want) ? want
     : (list.json.designs.find((d) => d.name === 'm12-setscrew') ? 'm12-setscrew' : list.json.designs[0].name);
   pick.value = first;
