@@ -324,6 +324,47 @@ with Server(tippe) as srv:
             md = z.read("a-pasted-top-build.md").decode()
             check(inside == bad and "Design file a-pasted-top.json;" in md,
                   "it holds the design as edited (a-pasted-top.json), and the sheet names it")
+        # ---- take the print back in: a solid part printed, the weighed mass, the pattern and
+        # the first layer, each as the command's --set gives it
+        open_design(d, wait, "m12-setscrew")
+        d.find_element(By.CSS_SELECTOR, "button.make-printed").click()
+        wait.until(lambda d: js(d, "return state.sweepDesign !== null && "
+                                   "!!state.sweepDesign.parts[0].print && !state.inFlight"))
+        page = js(d, "return state.sweep")
+        want = cli("sweep", "designs/m12-setscrew-printed.json")
+        check(abs(page["narrowest_zone_mm"] - want["narrowest_zone_mm"]) < 1e-9 and
+              page["printed_parts"] == want["printed_parts"],
+              "m12-setscrew's body made printed: the zones and printed part of "
+              "m12-setscrew-printed (narrowest %.4f mm)" % want["narrowest_zone_mm"])
+        sets = []
+        for box, value, key in [
+                ("f-parts_0__print_measured_mass_g", "20", "measured_mass_g"),
+                ("f-parts_0__print_first_layer_height_mm", "0.3", "first_layer_height_mm")]:
+            type_into(d, box, value)
+            wait.until(lambda d: js(d, "return !state.inFlight && state.sweepDesign.parts[0]"
+                                       ".print.%s === %s" % (key, value)))
+            page = js(d, "return state.sweep")
+            sets += ["--set", "parts.body.print.%s=%s" % (key, value)]
+            want = cli("sweep", "designs/m12-setscrew-printed.json", *sets)
+            check(abs(page["narrowest_zone_mm"] - want["narrowest_zone_mm"]) < 1e-9 and
+                  page["printed_parts"] == want["printed_parts"],
+                  "%s typed on the page: the sweep of tippe sweep %s (printed mass %.3f g)" %
+                  (key, " ".join(sets), want["printed_parts"][0]["printed_mass_kg"] * 1e3))
+        Select(d.find_element(By.ID, "f-parts_0__print_pattern")).select_by_value("grid")
+        wait.until(lambda d: js(d, "return !state.inFlight && "
+                                   "state.sweepDesign.parts[0].print.pattern === 'grid'"))
+        want = cli("sweep", "designs/m12-setscrew-printed.json", "--set",
+                   "parts.body.print.measured_mass_g=20", "--set",
+                   "parts.body.print.first_layer_height_mm=0.3", "--set",
+                   "parts.body.print.pattern=grid")
+        page = js(d, "return state.sweep")
+        check(page["printed_parts"] == want["printed_parts"],
+              "the infill pattern chosen from the list: tippe sweep --set "
+              "parts.body.print.pattern=grid's printed part")
+        check(len(d.find_elements(By.ID, "f-parts_1__fit")) == 1,
+              "the screw's hole has its fit to choose (tap, insert, sliding)")
+        d.save_screenshot(os.path.join(artefacts, "page-5-printed.png"))
+
         # the command's sheet names an absolute design path by its file's name
         out = os.path.join(artefacts, "build-abs")
         cli("build", os.path.join(REPO, "designs", "m12-setscrew.json"), "-o", out, "--no-export",

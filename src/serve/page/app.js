@@ -96,8 +96,16 @@ const PRINT_FIELDS = [
   ['top_bottom_layers', 'top/bottom layers', 0, 20, 1, ''],
   ['layer_height_mm', 'layer height', 0.05, 0.6, 0.01, 'mm'],
   ['infill', 'infill', 0, 100, 1, '%'],
+  ['first_layer_height_mm', 'first layer', 0.05, 0.6, 0.01, 'mm'],
+  ['first_layer_width_mm', 'first layer width', 0, 1.0, 0.01, 'mm'],
 ];
-const PRINT_DEFAULTS = { perimeters: 2, line_width_mm: 0.45, top_bottom_layers: 4, layer_height_mm: 0.2, infill: 0.15 };
+// PrusaSlicer 2.5's (tippe_print_defaults, include/tippe/print.h)
+const PRINT_DEFAULTS = { perimeters: 2, line_width_mm: 0.45, top_bottom_layers: 4, layer_height_mm: 0.2, infill: 0.15,
+                         first_layer_height_mm: 0.2, first_layer_width_mm: 0.42 };
+// The sparse infill's patterns the print model follows (src/print/print_slicer.c's table; the
+// shape-dependent ones, adaptive cubic, support cubic, lightning and 3D honeycomb, need the G-code)
+const PATTERNS = ['gyroid', 'rectilinear', 'alignedrectilinear', 'monotonic', 'grid', 'triangles', 'stars',
+                  'cubic', 'concentric', 'honeycomb'];
 const PART_LENGTHS = ['radius_mm', 'inner_radius_mm', 'thickness_mm', 'height_mm', 'centre_radius_mm',
                       'radial_semi_mm', 'axial_semi_mm'];
 
@@ -127,8 +135,10 @@ function setPath(obj, path, value) {
 
 // A number's box and slider. A field in % (the infill, as PrusaSlicer shows it) keeps a
 // fraction in the design and takes "20", "20%" or "20 %" in its box.
-function numberField(form, path, label, unit, lo, hi, step, value) {
+// An optional field (the weighed mass) may be left empty: the key is then left out.
+function numberField(form, path, label, unit, lo, hi, step, value, optional) {
   const percent = unit === '%';
+  if (value === undefined) value = '';
   if (percent && typeof value === 'number') value = +(value * 100).toPrecision(12);
   const row = document.createElement('div');
   row.className = 'field';
@@ -143,8 +153,9 @@ function numberField(form, path, label, unit, lo, hi, step, value) {
   num.setAttribute('aria-describedby', id + '-msg');
   num.title = `${label}: ${lo} .. ${hi} ${unit} on the slider; the loader checks any value`;
   const slider = document.createElement('input');
-  slider.type = 'range'; slider.min = Math.min(lo, value); slider.max = Math.max(hi, value);
-  slider.step = step; slider.value = value;
+  slider.type = 'range';
+  slider.min = value === '' ? lo : Math.min(lo, value); slider.max = value === '' ? hi : Math.max(hi, value);
+  slider.step = step; slider.value = value === '' ? lo : value;
   slider.setAttribute('aria-label', label + ' (slider)');
   slider.tabIndex = -1; // the number box is the keyboard's
   const u = document.createElement('span'); u.className = 'unit'; u.textContent = unit;
@@ -153,7 +164,8 @@ function numberField(form, path, label, unit, lo, hi, step, value) {
     const t = percent ? String(v).trim().replace(/\s*%$/, '') : v;
     const x = Number(t);
     noteEdit(path);
-    setPath(state.design, path, t === '' || !isFinite(x) ? v : percent ? +(x / 100).toPrecision(12) : x);
+    setPath(state.design, path, optional && t === '' ? undefined
+      : t === '' || !isFinite(x) ? v : percent ? +(x / 100).toPrecision(12) : x);
     edited();
   };
   num.addEventListener('input', () => { slider.value = percent ? num.value.replace(/\s*%\s*$/, '') : num.value; changed(num.value); });
@@ -161,7 +173,7 @@ function numberField(form, path, label, unit, lo, hi, step, value) {
   // the design's value shown again (a reset, an undo)
   row.show = (v) => {
     const shown = percent && typeof v === 'number' ? +(v * 100).toPrecision(12) : v;
-    num.value = shown; slider.value = shown;
+    num.value = shown === undefined ? '' : shown; slider.value = shown === undefined ? lo : shown;
   };
   row.append(lab, slider, num, u, resetButton(path, label), msg);
   form.appendChild(row);
@@ -196,10 +208,11 @@ function selectField(form, path, label, options, value) {
   for (const [v, text] of options) {
     const o = document.createElement('option'); o.value = v; o.textContent = text; sel.appendChild(o);
   }
-  sel.value = value;
+  sel.value = value === undefined ? '' : value;
   const msg = document.createElement('div'); msg.className = 'msg'; msg.hidden = true;
-  sel.addEventListener('change', () => { noteEdit(null); setPath(state.design, path, sel.value); edited(); });
-  row.show = (v) => { sel.value = v; };
+  // the empty choice leaves the key out (the design's default)
+  sel.addEventListener('change', () => { noteEdit(null); setPath(state.design, path, sel.value === '' ? undefined : sel.value); edited(); });
+  row.show = (v) => { sel.value = v === undefined ? '' : v; };
   row.append(lab, sel, resetButton(path, label), msg);
   form.appendChild(row);
 }
@@ -233,13 +246,28 @@ function buildForm() {
       selectField(fs, `parts[${i}].material`, 'material', mats, p.material);
     if (typeof p.density_g_cm3 === 'number')
       numberField(fs, `parts[${i}].density_g_cm3`, 'density', 'g/cm³', 0.1, 22.6, 0.01, p.density_g_cm3);
-    if (p.void && typeof p.fit === 'string')
-      selectField(fs, `parts[${i}].fit`, 'hole fit', [['tap', 'tap (tap drill)'], ['insert', 'heat-set insert'], ['slide', 'sliding fit']], p.fit);
+    // a hole a moving part (the screw) sits in: how it is printed (design-format.md, "Hole fit")
+    if (p.void && (typeof p.fit === 'string' || (p.shape === 'cylinder' && d.parts.some((q) => q.moving && !q.void))))
+      selectField(fs, `parts[${i}].fit`, 'hole fit', [['', '(none: build taps, export slides)'], ['tap', 'tap (tap drill)'],
+                  ['insert', 'heat-set insert'], ['slide', 'sliding fit']], p.fit);
     if (p.print) {
       if (p.print === true) p.print = Object.assign({}, PRINT_DEFAULTS);
       for (const [k, label, lo, hi, step, unit] of PRINT_FIELDS)
         numberField(fs, `parts[${i}].print.${k}`, label, unit, lo, hi, step,
                     p.print[k] !== undefined ? p.print[k] : PRINT_DEFAULTS[k]);
+      selectField(fs, `parts[${i}].print.pattern`, 'infill pattern', PATTERNS.map((x) => [x, x]), p.print.pattern || 'gyroid');
+      numberField(fs, `parts[${i}].print.measured_mass_g`, 'weighed', 'g', 0, 200, 0.1, p.print.measured_mass_g, true);
+    } else if (!p.void && !p.moving && typeof p.material === 'string' &&
+               (state.materials.find((m) => m.name === p.material) || {}).printable) {
+      // a solid part of a printable material: printed instead, with the slicer's defaults
+      const b = Object.assign(document.createElement('button'), { type: 'button', className: 'make-printed',
+        textContent: 'Print it (slicer settings)' });
+      b.addEventListener('click', () => {
+        const d2 = JSON.parse(JSON.stringify(state.design));
+        d2.parts[i].print = Object.assign({}, PRINT_DEFAULTS);
+        editDesign(d2);
+      });
+      fs.appendChild(b);
     }
     form.appendChild(fs);
   });
