@@ -365,6 +365,50 @@ with Server(tippe) as srv:
               "the screw's hole has its fit to choose (tap, insert, sliding)")
         d.save_screenshot(os.path.join(artefacts, "page-5-printed.png"))
 
+        # the sliced G-code uploaded (read in memory by the server), its body beside the print
+        # model's as tippe slice gives them; the command reads the same file from disk
+        sliced = os.path.join(artefacts, "page-slice")
+        subprocess.run([tippe, "slice", "designs/m12-setscrew-printed.json", "-o", sliced],
+                       cwd=REPO, capture_output=True, check=True)
+        gfile = os.path.join(sliced, "m12-setscrew-printed.gcode")
+        local = json.load(open(os.path.join(REPO, "designs", "m12-setscrew-printed.json")))
+        local["parts"][0]["print"] = {"gcode": "m12-setscrew-printed.gcode"}
+        local["materials"] = os.path.join(REPO, "designs", "materials.json")
+        json.dump(local, open(os.path.join(sliced, "with-gcode.json"), "w"))
+        want = cli("sweep", os.path.join(sliced, "with-gcode.json"))
+        open_design(d, wait, "m12-setscrew-printed")
+        d.find_element(By.ID, "f-parts_0__print_gcode").send_keys(gfile)
+        wait.until(lambda d: js(d, "return !state.inFlight && state.sweepDesign && "
+                                   "String(state.sweepDesign.parts[0].print.gcode)"
+                                   ".startsWith('upload:') && state.verdict !== null"))
+        page = js(d, "return state.sweep.printed_parts[0]")
+        ref = want["printed_parts"][0]
+        # the server reads the body at 1 g/cm^3 and scales it to the material's density, the
+        # command reads it at that density: they differ by rounding alone (1e-9 relative)
+        rel = lambda a, b: abs(a - b) <= 1e-9 * abs(b)
+        check(page["model"] == "gcode" and rel(page["printed_mass_kg"], ref["printed_mass_kg"]) and
+              rel(page["body_A_over_C"], ref["body_A_over_C"]) and
+              rel(page["model_mass_kg"], ref["model_mass_kg"]),
+              "the uploaded G-code's body: %.3f g, A/C %.5f, as tippe sweep reads the file "
+              "(%.3f g); the print model's %.3f g beside it" %
+              (page["printed_mass_kg"] * 1e3, page["body_A_over_C"],
+               ref["printed_mass_kg"] * 1e3, ref["model_mass_kg"] * 1e3))
+        shown = text(d, "printed")
+        check("G-code's body" in shown and ("%.2f g" % (ref["printed_mass_kg"] * 1e3)) in shown and
+              ("%.2f g" % (ref["model_mass_kg"] * 1e3)) in shown,
+              "the page shows both: '%s'" % shown[:150])
+        # (tippe build of a design with a G-code file takes minutes, each change it tries
+        # reading the file again: the zones are compared, not the sheet's verdict)
+        zones = js(d, "return state.sweep.zones")
+        check(len(zones) == len(want["zones"]) and
+              all(a["group"] == b["group"] and abs(a["z2_to_mm"] - b["z2_to_mm"]) < 1e-6
+                  for a, b in zip(zones, want["zones"])) and
+              "print model" in text(d, "pinned-title") and
+              len(d.find_elements(By.CSS_SELECTOR, "#zonebar-pinned svg")) == 1,
+              "its zones are tippe sweep's on the file (%d, ends within 1e-6 mm: rounding), the "
+              "print model's zones pinned beside" % len(zones))
+        d.save_screenshot(os.path.join(artefacts, "page-6-gcode.png"))
+
         # the command's sheet names an absolute design path by its file's name
         out = os.path.join(artefacts, "build-abs")
         cli("build", os.path.join(REPO, "designs", "m12-setscrew.json"), "-o", out, "--no-export",

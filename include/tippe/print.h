@@ -432,6 +432,10 @@ int tippe_gcode_parse_buffer(const char *text, size_t len, const char *name,
                              const tippe_gcode_options *opt, tippe_gcode_body *out,
                              tippe_error *err);
 
+/* b, read with override_density (one density for every tool), at another density: its
+ * masses and moments scaled, its volumes kept. */
+void tippe_gcode_body_at_density(tippe_gcode_body *b, double density_g_cm3);
+
 /* The largest G-code file read: PrusaSlicer's G-code of a 60 mm ball at
  * 0.1 mm layers is about 30 MiB; eight times that leaves room for any top. */
 #define TIPPE_GCODE_MAX_MIB 256

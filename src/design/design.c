@@ -459,6 +459,7 @@ int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tipp
 /* A design read from a file (text NULL) or from text in memory (path then only
  * names it in messages, and its materials table is materials_dir's). */
 static int load(const char *path, const char *text, size_t text_len, const char *materials_dir,
+                const tippe_design_gcode *gcodes, int n_gcodes,
                 const char *const *overrides, int n_overrides, int check, tippe_design **out,
                 tippe_error *err)
 {
@@ -486,6 +487,14 @@ static int load(const char *path, const char *text, size_t text_len, const char 
         memcpy(d->text, text, text_len);
         d->text[text_len] = '\0';
         d->text_len = text_len;
+    }
+    if (!rc && text && n_gcodes > 0) {
+        if (!(d->gcodes = malloc((size_t)n_gcodes * sizeof *d->gcodes)))
+            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+        else {
+            memcpy(d->gcodes, gcodes, (size_t)n_gcodes * sizeof *d->gcodes);
+            d->n_gcodes = n_gcodes;
+        }
     }
     if (!rc)
         rc = text ? tippe_json_parse_text(c, text, text_len, MAX_FILE_MIB, "design", &root)
@@ -521,7 +530,7 @@ int tippe_design_finish(tippe_json_reader *c, cJSON *root, tippe_design *d,
 int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
                       tippe_design **out, tippe_error *err)
 {
-    return load(path, NULL, 0, NULL, overrides, n_overrides, 1, out, err);
+    return load(path, NULL, 0, NULL, NULL, 0, overrides, n_overrides, 1, out, err);
 }
 
 int tippe_design_load_text(const char *name, const char *text, size_t len,
@@ -531,7 +540,19 @@ int tippe_design_load_text(const char *name, const char *text, size_t len,
     *out = NULL;
     if (!text || !materials_dir)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: no design text given", name);
-    return load(name, text, len, materials_dir, overrides, n_overrides, 1, out, err);
+    return load(name, text, len, materials_dir, NULL, 0, overrides, n_overrides, 1, out, err);
+}
+
+int tippe_design_load_text_gcode(const char *name, const char *text, size_t len,
+                                 const char *materials_dir, const tippe_design_gcode *gcodes,
+                                 int n_gcodes, const char *const *overrides, int n_overrides,
+                                 tippe_design **out, tippe_error *err)
+{
+    *out = NULL;
+    if (!text || !materials_dir)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: no design text given", name);
+    return load(name, text, len, materials_dir, gcodes, n_gcodes, overrides, n_overrides, 1,
+                out, err);
 }
 
 /* d's file or text again, with d's overrides and then extra ones. */
@@ -548,8 +569,8 @@ static int reload(const tippe_design *d, const char *const *extra, int n_extra, 
         all[i] = d->overrides[i];
     for (int i = 0; i < n_extra; i++)
         all[d->n_overrides + i] = extra[i];
-    int rc = load(d->path, d->text, d->text_len, d->materials_dir, all, d->n_overrides + n_extra,
-                  check, out, err);
+    int rc = load(d->path, d->text, d->text_len, d->materials_dir, d->gcodes, d->n_gcodes, all,
+                  d->n_overrides + n_extra, check, out, err);
     free(all);
     return rc;
 }
@@ -731,6 +752,7 @@ void tippe_design_free(tippe_design *d)
     free(d->rs);
     free(d->path);
     free(d->text);
+    free(d->gcodes);
     free(d->materials_dir);
     free(d->mat_file);
     free(d->catalogue);

@@ -206,25 +206,36 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     char pth[64], file[2048];
     snprintf(pth, sizeof pth, "parts[%d].print.gcode", i);
     /* A design from memory (tippe serve's requests) names no file on disk, as
-     * for its materials table (issue 36: the path read any file of the server). */
-    if (d->materials_dir)
+     * for its materials table (issue 36: the path read any file of the server):
+     * its G-code is a body read from memory for this part (an upload), or none. */
+    const tippe_design_gcode *mem = NULL;
+    for (int k = 0; d->materials_dir && k < d->n_gcodes && !mem; k++)
+        if (!strcmp(d->gcodes[k].part, p->name))
+            mem = &d->gcodes[k];
+    if (d->materials_dir && !mem)
         return tippe_json_fail(c, pth,
                                "a design sent as text names no file: its G-code cannot be "
-                               "read from the server's disk (slice and weigh with the "
-                               "command, tippe slice or tippe eval, instead)");
-    if (p->gcode[0] == '/') {
-        snprintf(file, sizeof file, "%s", p->gcode);
-    } else {
-        char dir[1024];
-        snprintf(dir, sizeof dir, "%s", d->path);
-        snprintf(file, sizeof file, "%s/%s", dirname(dir), p->gcode);
-    }
+                               "read from the server's disk (upload it on the page, or slice "
+                               "and weigh with the command, tippe slice or tippe eval)");
     tippe_gcode_options opt = tippe_gcode_defaults();
     opt.density_g_cm3 = p->density_g_cm3;
     opt.override_density = 1;
     tippe_gcode_body body;
     tippe_error gerr = {0};
-    int rc = tippe_gcode_read(file, &opt, &body, &gerr);
+    int rc = TIPPE_OK;
+    if (mem) {
+        body = mem->body;
+        tippe_gcode_body_at_density(&body, p->density_g_cm3);
+    } else {
+        if (p->gcode[0] == '/') {
+            snprintf(file, sizeof file, "%s", p->gcode);
+        } else {
+            char dir[1024];
+            snprintf(dir, sizeof dir, "%s", d->path);
+            snprintf(file, sizeof file, "%s/%s", dirname(dir), p->gcode);
+        }
+        rc = tippe_gcode_read(file, &opt, &body, &gerr);
+    }
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", gerr.msg)
                                   : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,

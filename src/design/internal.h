@@ -117,6 +117,9 @@ struct tippe_design {
      * NULL for a file. */
     char *text, *materials_dir;
     size_t text_len;
+    /* G-code bodies from memory (tippe_design_load_text_gcode), kept for reloads */
+    tippe_design_gcode *gcodes;
+    int n_gcodes;
     char *catalogue; /* "catalogue": the hardware catalogue file, resolved; NULL: not given */
     char *mat_file;  /* the materials table read, resolved; NULL: no part names a material */
     double radius_mm;

@@ -500,3 +500,19 @@ int tippe_gcode_match(const tippe_gcode_body *b, const tippe_gcode_expect *e,
     *out = p;
     return TIPPE_OK;
 }
+
+/* Every mass of a body read with one density for every tool (override_density) is that
+ * density times a volume (gcode.c's deposits), so another density scales them all: the
+ * same G-code text need not be read again for another material (tippe serve keeps an
+ * upload's body read once). */
+void tippe_gcode_body_at_density(tippe_gcode_body *b, double density_g_cm3)
+{
+    const double k = density_g_cm3 / b->density_g_cm3;
+    b->m *= k;
+    for (int i = 0; i < 6; i++)
+        b->inertia[i] *= k;
+    for (int f = 0; f < TIPPE_GCODE_N_FEATURES; f++)
+        b->feature[f].mass_kg *= k;
+    b->excluded_mass_kg *= k;
+    b->density_g_cm3 = density_g_cm3;
+}

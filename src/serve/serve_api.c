@@ -731,15 +731,16 @@ static void api_advice(serve_server *s, const cJSON *req, serve_response *out)
 }
 
 const serve_route tippe_serve_routes[] = {
-    {"/api/sweep", 1, SERVE_LANE_SHARED, api_sweep},
-    {"/api/eval", 1, SERVE_LANE_SHARED, api_eval},
-    {"/api/compare", 1, SERVE_LANE_SHARED, api_compare},
-    {"/api/check", 1, SERVE_LANE_SHARED, api_check},
-    {"/api/build", 1, SERVE_LANE_EXCLUSIVE, api_build},
-    {"/api/verdict", 1, SERVE_LANE_SHARED, api_verdict},
-    {"/api/advice", 1, SERVE_LANE_ADVICE, api_advice},
-    {"/api/animate", 1, SERVE_LANE_EXCLUSIVE, api_animate},
-    {NULL, 0, 0, NULL},
+    {"/api/sweep", 1, SERVE_LANE_SHARED, api_sweep, 0},
+    {"/api/eval", 1, SERVE_LANE_SHARED, api_eval, 0},
+    {"/api/compare", 1, SERVE_LANE_SHARED, api_compare, 0},
+    {"/api/check", 1, SERVE_LANE_SHARED, api_check, 0},
+    {"/api/build", 1, SERVE_LANE_EXCLUSIVE, api_build, 0},
+    {"/api/verdict", 1, SERVE_LANE_SHARED, api_verdict, 0},
+    {"/api/advice", 1, SERVE_LANE_ADVICE, api_advice, 0},
+    {"/api/animate", 1, SERVE_LANE_EXCLUSIVE, api_animate, 0},
+    {"/api/gcode", 1, SERVE_LANE_EXCLUSIVE, tippe_serve_api_gcode, 1},
+    {NULL, 0, 0, NULL, 0},
 };
 
 const serve_route *tippe_serve_find_route(const char *path)

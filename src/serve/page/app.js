@@ -48,6 +48,7 @@ const state = {
   sweepDesign: null,  // the design (a copy) state.sweep is of
   shownTitle: '',     // whose results are on screen
   pinWanted: false,   // "Pin" pressed while a sweep ran: pin that design with its sweep
+  gcodeNames: {},     // "upload:ID" -> the uploaded file's name and slicer
 };
 
 // ------------------------------------------------------------------ API
@@ -179,6 +180,79 @@ function numberField(form, path, label, unit, lo, hi, step, value, optional) {
   form.appendChild(row);
 }
 
+// A printed part's sliced G-code: uploaded (POST /api/gcode, read in memory by the server,
+// kept by an id), it becomes the part as "print": {"gcode": "upload:ID"}; the print model's
+// design is pinned beside it, as tippe slice shows the two.
+function gcodeField(form, i, p) {
+  const row = document.createElement('div');
+  row.className = 'field gcode';
+  row.dataset.path = `parts[${i}].print.gcode`;
+  const id = `f-parts_${i}__print_gcode`;
+  const lab = Object.assign(document.createElement('label'), { htmlFor: id, textContent: 'sliced G-code' });
+  const file = Object.assign(document.createElement('input'), { type: 'file', id, accept: '.gcode,.gco,.g,text/x-gcode' });
+  file.className = 'gcode-file';
+  const status = Object.assign(document.createElement('span'), { className: 'gcode-status' });
+  const g = p.print.gcode;
+  status.textContent = typeof g === 'string' ? (state.gcodeNames[g] || g) : 'none: the print model';
+  const msg = document.createElement('div'); msg.className = 'msg'; msg.hidden = true;
+  file.addEventListener('change', async () => {
+    const f = file.files[0];
+    if (!f) return;
+    status.textContent = `reading ${f.name}…`;
+    const r = await upload('/api/gcode?name=' + encodeURIComponent(f.name), f).catch((e) => ({ ok: false, error: e.message }));
+    file.value = '';
+    if (!r.ok) { status.textContent = 'refused: ' + (r.json ? r.json.error : r.error || 'HTTP ' + r.status); return; }
+    state.gcodeNames[r.json.gcode] = `${r.json.name} (${r.json.generator || 'unknown slicer'}, ${r.json.layers} layers)`;
+    // the print model's design, pinned with its zones, beside the G-code's
+    if (!state.pinned && state.sweep && !state.inFlight && timer === null)
+      state.pinned = { design: state.sweepDesign, sweep: state.sweep, title: `${state.shownTitle}: the print model` };
+    const d2 = JSON.parse(JSON.stringify(state.design));
+    d2.parts[i].print.gcode = r.json.gcode;
+    editDesign(d2);
+    if (state.pinned) $('pinned').hidden = false;
+  });
+  const remove = Object.assign(document.createElement('button'), { type: 'button', className: 'reset', textContent: '✕',
+    title: 'the print model instead of the G-code', hidden: typeof g !== 'string' });
+  remove.setAttribute('aria-label', remove.title);
+  remove.addEventListener('click', () => {
+    const d2 = JSON.parse(JSON.stringify(state.design));
+    delete d2.parts[i].print.gcode;
+    editDesign(d2);
+  });
+  row.append(lab, file, status, remove, msg);
+  form.appendChild(row);
+}
+
+// A raw body (an uploaded file) to the API: its answer as api() gives it.
+async function upload(path, blob) {
+  const headers = { 'Content-Type': 'text/x-gcode' };
+  if (token) headers['X-Tippe-Token'] = token;
+  const r = await fetch(path, { method: 'POST', headers, body: blob });
+  const type = r.headers.get('Content-Type') || '';
+  return { ok: r.ok, status: r.status, json: type.startsWith('application/json') ? await r.json() : null };
+}
+
+// Each printed part as printed: the G-code's body beside the print model's (tippe slice's
+// comparison), or the print model's alone, with the weighed mass when given.
+function drawPrinted(s) {
+  const box = $('printed');
+  box.textContent = '';
+  for (const p of s.printed_parts || []) {
+    const line = document.createElement('div');
+    const g = (x) => fmt(x * 1e3, 2) + ' g';
+    if (p.model === 'gcode')
+      line.textContent = `${p.part}: the G-code's body (${state.gcodeNames[p.gcode] || p.gcode + ', ' + (p.gcode_generator || 'unknown slicer')}) ` +
+        `${g(p.printed_mass_kg)}, body A/C ${fmt(p.body_A_over_C, 5)}; the print model's ${g(p.model_mass_kg)}, ` +
+        `A/C ${fmt(p.model_body_A_over_C, 5)} (the G-code ${fmt(100 * (p.printed_mass_kg / p.model_mass_kg - 1), 1)} %)` +
+        (p.calibrated ? `; weighed ${g(p.measured_mass_kg)}: its lines scaled by ${fmt(p.flow_factor, 3)}` : '');
+    else
+      line.textContent = `${p.part}: the print model's ${g(p.printed_mass_kg)} (${p.pattern}, infill ${fmt(100 * p.infill, 1)} %` +
+        (p.calibrated ? `, solved from the weighed ${g(p.measured_mass_kg)}` : '') + `), body A/C ${fmt(p.body_A_over_C, 5)}`;
+    line.className = 'printed-part';
+    box.appendChild(line);
+  }
+}
+
 // A field's reset: back to the value of the design as opened (shown only once it differs).
 function resetButton(path, label) {
   const b = document.createElement('button');
@@ -257,6 +331,7 @@ function buildForm() {
                     p.print[k] !== undefined ? p.print[k] : PRINT_DEFAULTS[k]);
       selectField(fs, `parts[${i}].print.pattern`, 'infill pattern', PATTERNS.map((x) => [x, x]), p.print.pattern || 'gyroid');
       numberField(fs, `parts[${i}].print.measured_mass_g`, 'weighed', 'g', 0, 200, 0.1, p.print.measured_mass_g, true);
+      gcodeField(fs, i, p);
     } else if (!p.void && !p.moving && typeof p.material === 'string' &&
                (state.materials.find((m) => m.name === p.material) || {}).printable) {
       // a solid part of a printable material: printed instead, with the slicer's defaults
@@ -496,6 +571,7 @@ function drawAll() {
     : `widest zones: I ${fmt(s.zone_widths_mm.I)} mm, II ${fmt(s.zone_widths_mm.II)} mm, III ${fmt(s.zone_widths_mm.III)} mm`;
   drawBar($('zonebar'), s, true);
   drawTable(s);
+  drawPrinted(s);
   drawPlot(s);
   if (state.pinned) drawPinned();
 }
