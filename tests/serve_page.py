@@ -409,6 +409,24 @@ with Server(tippe) as srv:
               "print model's zones pinned beside" % len(zones))
         d.save_screenshot(os.path.join(artefacts, "page-6-gcode.png"))
 
+        # a catalogue screw chosen from the list: the item named, the screw and its hole at
+        # the item's modelled radius and length, as tippe sweep --set gives them
+        open_design(d, wait, "drilled-ball-blind")
+        Select(d.find_element(By.ID, "f-parts_2__catalogue_item")).select_by_value("M8x12")
+        wait.until(lambda d: js(d, "return !state.inFlight && state.sweepDesign.parts[2]"
+                                   ".catalogue_item === 'M8x12'"))
+        item = [x for x in srv.request("GET", "/api/catalogue")[2]["items"]
+                if x["name"] == "M8x12"][0]
+        r = repr(item["radius_mm"])
+        want = cli("sweep", "designs/drilled-ball-blind.json", "--set",
+                   "parts.screw.catalogue_item=M8x12", "--set", "parts.screw.radius_mm=" + r,
+                   "--set", "parts.screw.height_mm=12", "--set", "parts.hole.radius_mm=" + r)
+        page = js(d, "return state.sweep")
+        check(page["zones"] == want["zones"] and
+              js(d, "return state.sweepDesign.parts[1].radius_mm") == item["radius_mm"],
+              "the catalogue's M8x12 chosen from a list: the screw and its hole at %s mm, the "
+              "zones of tippe sweep --set (%d)" % (r, len(want["zones"])))
+
         # the command's sheet names an absolute design path by its file's name
         out = os.path.join(artefacts, "build-abs")
         cli("build", os.path.join(REPO, "designs", "m12-setscrew.json"), "-o", out, "--no-export",

@@ -5,6 +5,8 @@
  * the watchdog has its response (docs/serve.md, "Security" and "Limits"). */
 #include "serve/internal.h"
 
+#include "tippe/build.h"
+
 #include <microhttpd.h>
 
 #include <arpa/inet.h>
@@ -419,6 +421,39 @@ static int answer_get(serve_server *s, const char *url, serve_response *r)
         }
         memcpy(r->body, d->text, d->len);
         r->len = d->len;
+        return 1;
+    }
+    if (!strcmp(url, "/api/catalogue")) {
+        /* the designs folder's catalogue, read now (a few KiB): the screws a page offers */
+        char file[4096 + 32];
+        snprintf(file, sizeof file, "%s/catalogue.json", s->designs_dir);
+        tippe_build_catalogue *c = NULL;
+        tippe_error err = {0};
+        if (tippe_build_catalogue_load(file, &c, &err)) {
+            tippe_serve_respond_error(r, 404, NULL, "no catalogue in the designs folder");
+            return 1;
+        }
+        cJSON *o = cJSON_CreateObject();
+        cJSON *arr = o ? cJSON_AddArrayToObject(o, "items") : NULL;
+        for (int k = 0; arr && k < c->n_sets; k++)
+            for (int i = 0; arr && i < c->sets[k].n_items; i++) {
+                const tippe_build_catalogue_item *it = &c->sets[k].items[i];
+                cJSON *e = cJSON_CreateObject();
+                if (!e || !cJSON_AddItemToArray(arr, e)) {
+                    cJSON_Delete(e);
+                    break;
+                }
+                cJSON_AddStringToObject(e, "set", c->sets[k].key);
+                cJSON_AddStringToObject(e, "title", c->sets[k].title);
+                cJSON_AddStringToObject(e, "name", it->name);
+                cJSON_AddStringToObject(e, "thread", it->thread);
+                cJSON_AddNumberToObject(e, "d_mm", it->d_mm);
+                cJSON_AddNumberToObject(e, "pitch_mm", it->pitch_mm);
+                cJSON_AddNumberToObject(e, "radius_mm", it->radius_mm);
+                cJSON_AddNumberToObject(e, "height_mm", it->height_mm);
+            }
+        tippe_build_catalogue_free(c);
+        tippe_serve_respond_json(r, 200, o);
         return 1;
     }
     if (!strcmp(url, "/api/materials")) {

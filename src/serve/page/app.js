@@ -49,6 +49,7 @@ const state = {
   shownTitle: '',     // whose results are on screen
   pinWanted: false,   // "Pin" pressed while a sweep ran: pin that design with its sweep
   gcodeNames: {},     // "upload:ID" -> the uploaded file's name and slicer
+  catalogue: [],      // the designs folder's screws (GET /api/catalogue)
 };
 
 // ------------------------------------------------------------------ API
@@ -223,6 +224,39 @@ function gcodeField(form, i, p) {
   form.appendChild(row);
 }
 
+// A moving screw bought from the catalogue: its item named (catalogue_item, which tippe
+// build names it by), its radius and length the item's model (the loader requires them),
+// and the hole it turns in (a void cylinder of the screw's radius) at that radius too.
+function catalogueField(form, i, p) {
+  const row = document.createElement('div');
+  row.className = 'field';
+  row.dataset.path = `parts[${i}].catalogue_item`;
+  const id = `f-parts_${i}__catalogue_item`;
+  const lab = Object.assign(document.createElement('label'), { htmlFor: id, textContent: 'catalogue screw' });
+  const sel = Object.assign(document.createElement('select'), { id });
+  sel.appendChild(Object.assign(document.createElement('option'), { value: '', textContent: '(none: as modelled)' }));
+  for (const it of state.catalogue)
+    sel.appendChild(Object.assign(document.createElement('option'), { value: it.name,
+      textContent: `${it.name} (${it.thread} x ${it.pitch_mm}, ${it.height_mm} mm; ${it.set})` }));
+  sel.value = p.catalogue_item || '';
+  sel.title = 'a set screw of the catalogue: tippe build names it, its thread and pitch';
+  sel.addEventListener('change', () => {
+    const d2 = JSON.parse(JSON.stringify(state.design));
+    const screw = d2.parts[i];
+    const it = state.catalogue.find((x) => x.name === sel.value);
+    if (!it) { delete screw.catalogue_item; editDesign(d2); return; }
+    for (const q of d2.parts)
+      if (q.void && q.shape === 'cylinder' && Math.abs(q.radius_mm - screw.radius_mm) < 1e-6) q.radius_mm = it.radius_mm;
+    screw.catalogue_item = it.name;
+    screw.radius_mm = it.radius_mm;
+    screw.height_mm = it.height_mm;
+    editDesign(d2);
+  });
+  const msg = document.createElement('div'); msg.className = 'msg'; msg.hidden = true;
+  row.append(lab, sel, msg);
+  form.appendChild(row);
+}
+
 // A raw body (an uploaded file) to the API: its answer as api() gives it.
 async function upload(path, blob) {
   const headers = { 'Content-Type': 'text/x-gcode' };
@@ -318,6 +352,7 @@ function buildForm() {
       numberField(fs, `parts[${i}].z_mm`, p.moving ? 'z (from Z2)' : 'z', 'mm', -big / 2, big / 2, 0.1, p.z_mm || 0);
     if (typeof p.material === 'string' && !p.void)
       selectField(fs, `parts[${i}].material`, 'material', mats, p.material);
+    if (p.moving && !p.void && p.shape === 'cylinder' && state.catalogue.length) catalogueField(fs, i, p);
     if (typeof p.density_g_cm3 === 'number')
       numberField(fs, `parts[${i}].density_g_cm3`, 'density', 'g/cm³', 0.1, 22.6, 0.01, p.density_g_cm3);
     // a hole a moving part (the screw) sits in: how it is printed (design-format.md, "Hole fit")
@@ -1096,8 +1131,9 @@ async function start() {
   drawLegend();
   for (const a of document.querySelectorAll('abbr[data-term]')) a.title = TERMS[a.dataset.term];
   $('narrowest').title = TERMS.narrowest;
-  const [list, mats] = await Promise.all([api('/api/designs'), api('/api/materials')]);
+  const [list, mats, cat] = await Promise.all([api('/api/designs'), api('/api/materials'), api('/api/catalogue')]);
   state.materials = mats.ok ? mats.json.materials : [];
+  state.catalogue = cat.ok ? cat.json.items : [];
   const pick = $('design-pick');
   for (const d of list.json.designs) {
     const o = document.createElement('option'); o.value = d.name; o.textContent = `${d.name} — ${d.title}`; pick.appendChild(o);
