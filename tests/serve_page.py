@@ -427,6 +427,24 @@ with Server(tippe) as srv:
               "the catalogue's M8x12 chosen from a list: the screw and its hole at %s mm, the "
               "zones of tippe sweep --set (%d)" % (r, len(want["zones"])))
 
+        # the section drawing on the page: tippe export's, the weight where the page says
+        open_design(d, wait, "m12-setscrew")
+        wait.until(lambda d: js(d, "const i = document.getElementById('section'); "
+                                   "return !i.hidden && i.complete && i.naturalWidth > 0"))
+        st, hdrs, svg = srv.post("/api/section", {"design": "m12-setscrew", "z2_mm": 10})
+        out = os.path.join(artefacts, "export-section")
+        cli("export", "designs/m12-setscrew.json", "-o", out, "--z2", "10", json_out=False)
+        ref = open(os.path.join(out, "m12-setscrew-section.svg"), "rb").read()
+        texts = lambda b: [t for t in re.findall(rb"<text[^>]*>([^<]*)", b)
+                           if not t.startswith(b"Section through the axis")]
+        check(st == 200 and hdrs["content-type"].startswith("image/svg+xml") and
+              texts(svg) == texts(ref) and len(texts(ref)) > 10,
+              "the section on the page (%dx%d px) is tippe export --z2 10's drawing: its %d "
+              "labels the same (the title's zone note is the command's alone)" %
+              (js(d, "return document.getElementById('section').naturalWidth"),
+               js(d, "return document.getElementById('section').naturalHeight"),
+               len(texts(ref))))
+
         # the command's sheet names an absolute design path by its file's name
         out = os.path.join(artefacts, "build-abs")
         cli("build", os.path.join(REPO, "designs", "m12-setscrew.json"), "-o", out, "--no-export",

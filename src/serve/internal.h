@@ -198,6 +198,9 @@ void tippe_serve_api_gcode(serve_server *s, const cJSON *req, serve_response *ou
 int tippe_serve_gcode_find(const char *id, tippe_gcode_body *out, char *name, size_t size);
 void tippe_serve_gcode_forget(void);
 
+/* ---- serve_section.c: the section drawing (tippe export's SVG) ---- */
+void tippe_serve_api_section(serve_server *s, const cJSON *req, serve_response *out);
+
 /* ---- serve_zip.c: files of a folder into one zip in memory (libzip) ---- */
 /* ... and, when extra_name is not NULL, one more member from memory (the design as sent,
  * which the build folder does not hold). */

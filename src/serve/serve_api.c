@@ -740,6 +740,7 @@ const serve_route tippe_serve_routes[] = {
     {"/api/advice", 1, SERVE_LANE_ADVICE, api_advice, 0},
     {"/api/animate", 1, SERVE_LANE_EXCLUSIVE, api_animate, 0},
     {"/api/gcode", 1, SERVE_LANE_EXCLUSIVE, tippe_serve_api_gcode, 1},
+    {"/api/section", 1, SERVE_LANE_EXCLUSIVE, tippe_serve_api_section, 0},
     {NULL, 0, 0, NULL, 0},
 };
 

@@ -446,6 +446,7 @@ async function refresh() {
   state.adviceAbort = null;
   drawAll();
   if (state.z2 !== null) evalAt(state.z2);
+  drawSection(design);
   if (state.pinWanted && timer === null) pin();
   sheetVerdict(++state.vseq, design, verdict);
 }
@@ -788,12 +789,33 @@ function drawPlot(s) {
 
 // ------------------------------------------------------------------ a point
 
+// The section drawing of a valid design (tippe export's, /api/section), with the weight
+// at the clicked Z2 or mid-travel; an older request is cancelled by a newer one.
+let sectionAbort = null;
+async function drawSection(design) {
+  if (sectionAbort) sectionAbort.abort();
+  const ctl = sectionAbort = new AbortController();
+  const req = { design };
+  if (state.z2 !== null) req.z2_mm = state.z2;
+  let r;
+  try { r = await api('/api/section', req, ctl.signal); } catch (e) { return; }
+  if (ctl.signal.aborted) return;
+  const img = $('section');
+  if (!r.ok || !r.blob) { img.hidden = true; $('section-note').textContent = 'the section: ' + (r.json ? r.json.error : 'HTTP ' + r.status); return; }
+  if (img.src) URL.revokeObjectURL(img.src);
+  img.src = URL.createObjectURL(r.blob);
+  img.hidden = false;
+  img.dataset.z2 = req.z2_mm === undefined ? 'mid' : String(req.z2_mm);
+  $('section-note').textContent = `the weight at ${req.z2_mm === undefined ? 'mid-travel' : 'Z2 = ' + req.z2_mm + ' mm'} (click the bar to move it); tippe export draws the same`;
+}
+
 function pointAt(z2) {
   if (state.z2 !== z2 || Number($('z2').value) !== z2) clearLaunch();
   state.z2 = z2;
   $('z2').value = z2;
   drawBar($('zonebar'), state.sweep, true);
   evalAt(z2);
+  if (state.sweepDesign) drawSection(state.sweepDesign);
 }
 
 async function evalAt(z2) {
