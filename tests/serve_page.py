@@ -445,6 +445,33 @@ with Server(tippe) as srv:
                js(d, "return document.getElementById('section').naturalHeight"),
                len(texts(ref))))
 
+        # a phone's width (400 px): the bar and Figure 7 drawn at their pixels (text at least
+        # 11 px; a mm of Z2 at least 24 px of the bar, a finger's tap), and the verdict in one
+        # line kept in view while the form scrolls
+        d.set_window_size(400, 844)
+        open_design(d, wait, "m12-setscrew")
+        time.sleep(0.5)
+        d.execute_script("window.scrollTo(0, 700)")
+        time.sleep(0.3)
+        mini = js(d, "const r = document.getElementById('mini-verdict').getBoundingClientRect();"
+                     " return [r.top, r.bottom, innerHeight, document.getElementById("
+                     "'mini-verdict').textContent, scrollY]")
+        check(mini[4] > 0 and mini[0] >= 0 and mini[1] <= mini[2] and
+              mini[3].startswith(text(d, "verdict")),
+              "scrolled %d px down the form, the one-line verdict is in view: '%s'" %
+              (mini[4], mini[3][:60]))
+        sizes = js(d, "const h = (sel) => Math.min(...[...document.querySelectorAll(sel)]"
+                      ".map(t => t.getBoundingClientRect().height).filter(x => x > 0));"
+                      " const sv = document.querySelector('#zonebar svg').getBoundingClientRect();"
+                      " const [a, b] = state.sweep.sweep_mm;"
+                      " return [h('#zonebar text'), h('#plot text'), (sv.width - 60) / (b - a),"
+                      " document.documentElement.scrollWidth, document.documentElement.clientWidth]")
+        check(sizes[0] >= 11 and sizes[1] >= 11 and sizes[2] >= 24 - 1e-9 and sizes[3] <= sizes[4],
+              "at 400 px: the bar's text %.0f px, Figure 7's %.0f px, a mm of Z2 %.1f px of the "
+              "bar (it scrolls in its box), the page %d px wide in %d" % tuple(sizes))
+        d.save_screenshot(os.path.join(artefacts, "page-7-phone.png"))
+        d.set_window_size(1280, 1700)
+
         # the command's sheet names an absolute design path by its file's name
         out = os.path.join(artefacts, "build-abs")
         cli("build", os.path.join(REPO, "designs", "m12-setscrew.json"), "-o", out, "--no-export",

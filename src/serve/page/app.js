@@ -520,6 +520,7 @@ function drawVerdict() {
 // once the sheet's launch checks are in, a pole whose hole's rim a launch stands on.
 function drawHolds() {
   const h = $('holds'), s = state.sweep, a = state.advice, where = [];
+  drawMini(a && !a.error && a.model_holds_at_poles === false);
   if (s) {
     const spans = [];
     for (const z of s.zones) for (const [f, t] of z.model_invalid_mm || []) spans.push([f, t]);
@@ -536,6 +537,19 @@ function drawHolds() {
   h.hidden = where.length === 0;
   h.textContent = where.length ? 'the model does not hold: ' + where.join('; ') : '';
   h.dataset.state = where.length ? 'no' : 'yes';
+}
+
+// The verdict in one line at the top of a phone's screen, in view while the form scrolls.
+function drawMini(poles) {
+  const m = $('mini-verdict'), b = state.verdict;
+  m.textContent = '';
+  if (!b) { m.textContent = 'verdict: …'; return; }
+  const v = Object.assign(document.createElement('span'), { className: 'verdict-word ' + (b.settable ? 'yes' : b.three_in_one ? 'paper' : 'no'),
+                                                            textContent: b.verdict });
+  m.append(v);
+  const invalid = state.sweep && state.sweep.zones.some((z) => (z.model_invalid_mm || []).length);
+  if (poles || invalid) m.append(Object.assign(document.createElement('span'), { className: 'mini-holds', textContent: 'model does not hold everywhere' }));
+  if (state.sweep && state.sweep.three_in_one) m.append(` · narrowest ${fmt(state.sweep.narrowest_zone_mm)} mm`);
 }
 
 // What the whole sheet says beside its verdict: each launch check as its table words it,
@@ -599,6 +613,12 @@ function applySets(sets) {
   return 1;
 }
 
+let resizeTimer = null;
+window.addEventListener('resize', () => {
+  clearTimeout(resizeTimer);
+  resizeTimer = setTimeout(() => { if (state.sweep) drawAll(); }, 200);
+});
+
 function drawAll() {
   const s = state.sweep;
   drawVerdict();
@@ -611,6 +631,10 @@ function drawAll() {
   drawPlot(s);
   if (state.pinned) drawPinned();
 }
+
+// A phone's width (the page's one-column layout below 520 px, style.css).
+const phone = () => window.matchMedia('(max-width: 520px)').matches;
+const MM_PX = 24; // a mm of Z2 on a phone's bar: a finger's tap (about 6 mm) sets it to 0.25 mm
 
 // What the bar lays over its zones, shared with its legend so that a key is what the bar
 // draws: the tolerance bands, the travel beyond the physical one, and the hatching where a
@@ -650,10 +674,14 @@ function drawLegend() {
 // travel beyond the physical one and where the model does not apply hatched.
 function drawBar(box, s, clickable) {
   box.textContent = '';
-  const W = 900, H = 92, L = 40, R = 20, top = 18, h = 34;
+  const H = 92, L = 40, R = 20, top = 18, h = 34;
   const [a, b] = s.sweep_mm;
+  // on a phone the bar is drawn at its pixels (its text 14 px, not scaled down) and at
+  // least MM_PX to a mm of Z2, so that a finger sets Z2 to the mm; it scrolls sideways
+  const W = phone() ? Math.max(box.clientWidth || 360, L + R + MM_PX * (b - a)) : 900;
   const x = (z) => L + (W - L - R) * (z - a) / (b - a);
   const svg = el('svg', { viewBox: `0 0 ${W} ${H}`, role: 'img', 'aria-label': 'zones along Z2' }, box);
+  if (phone()) { svg.style.width = W + 'px'; svg.style.maxWidth = 'none'; }
   const defs = el('defs', {}, svg);
   hatchPattern(defs, 'hatch' + box.id);
   for (const z of s.zones) {
@@ -744,7 +772,9 @@ function drawPlot(s) {
   const box = $('plot');
   box.textContent = '';
   const c = s.curve;
-  const W = 900, H = 300, L = 60, R = 20, T = 12, B = 34;
+  // on a phone: drawn at its pixels, so that its text is 14 px
+  const W = phone() ? Math.max(box.clientWidth || 360, 320) : 900, H = phone() ? 260 : 300;
+  const L = 60, R = 20, T = 12, B = 34;
   const [a, b] = s.sweep_mm;
   const k1 = c.A_over_C.map((k) => k - 1);
   const e = c.eps_over_R_signed.map(Math.abs);
@@ -765,9 +795,11 @@ function drawPlot(s) {
   line(e.map((v) => -v), '#3f8f4f', '6 4', '-eps/R');
   line(e.map((v) => -v * v), '#777', '2 3', '-(eps/R)^2');
   const keys = [['A/C − 1', '#1f5fa8', ''], ['+eps/R', '#a23a8f', '6 4'], ['−eps/R', '#3f8f4f', '6 4'], ['−(eps/R)²', '#777', '2 3']];
+  const kw = (W - L - R) / 4 < 110 ? (W - L - R) / 2 : 120; // two rows of keys on a phone
   keys.forEach(([t, col, dash], i) => {
-    el('line', { x1: L + 10 + i * 120, x2: L + 40 + i * 120, y1: T + 10, y2: T + 10, stroke: col, 'stroke-width': 2, 'stroke-dasharray': dash }, svg);
-    el('text', { x: L + 46 + i * 120, y: T + 14 }, svg, t);
+    const kx = L + 10 + (i % (kw < 110 ? 2 : 4)) * kw, ky = T + 10 + (kw < 110 ? Math.floor(i / 2) * 18 : 0);
+    el('line', { x1: kx, x2: kx + 30, y1: ky, y2: ky, stroke: col, 'stroke-width': 2, 'stroke-dasharray': dash }, svg);
+    el('text', { x: kx + 36, y: ky + 4 }, svg, t);
   });
   const step = niceStep((b - a) / 8);
   for (let z = Math.ceil(a / step) * step; z <= b + 1e-9; z += step)
