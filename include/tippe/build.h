@@ -81,7 +81,9 @@ typedef struct {
 int tippe_build_catalogue_load(const char *path, tippe_build_catalogue **out, tippe_error *err);
 void tippe_build_catalogue_free(tippe_build_catalogue *c);
 /* The first item (in file order) of radius_mm and height_mm (within 1e-6
- * mm), and its set in *set (if not NULL); NULL when none matches. */
+ * mm), else the first whose thread the radius can be (from the item's modelled
+ * pitch radius to its nominal d/2) and whose length is within js15 (ISO 4759-1
+ * grade A) of height_mm; its set in *set (if not NULL); NULL when none matches. */
 const tippe_build_catalogue_item *tippe_build_catalogue_match(const tippe_build_catalogue *c,
                                                               double radius_mm, double height_mm,
                                                               const tippe_build_catalogue_set **set);
