@@ -241,9 +241,17 @@ for verb, fn in verbs:
 api = read("src/serve/serve_api.c")
 functions = set(re.findall(r"^static (?:void|int) (api_[a-z_]+)\(", api, re.M))
 routes = re.search(r"tippe_serve_routes\[\] = \{(.*?)\n\};", api, re.S)
-routed = set(re.findall(r'\{"/api/[a-z_]+", \d, (?:\d|SERVE_LANE_[A-Z]+), (api_[a-z_]+)\}',
-                        routes.group(1))) \
+routed = set(re.findall(r'\{"/api/[a-z_]+", \d, (?:\d|SERVE_LANE_[A-Z]+), '
+                        r'((?:tippe_serve_)?api_[a-z_]+)(?:, \d)?\}', routes.group(1))) \
     if routes else set()
+# an endpoint of its own file (serve_gcode.c's tippe_serve_api_gcode) is defined there
+for fn in sorted(f for f in routed if f.startswith("tippe_serve_")):
+    checks += 1
+    serve_dir = os.path.join(src_root, "src", "serve")
+    if not any(re.search(r"^void %s\(" % fn, read(os.path.join("src", "serve", f)), re.M)
+               for f in os.listdir(serve_dir) if f.endswith(".c")):
+        fail("endpoints: %s is routed but defined in no file of src/serve/" % fn)
+    routed.discard(fn)
 checks += 1
 if not functions or not routed:
     fail("endpoints: src/serve/serve_api.c: no endpoint functions or no tippe_serve_routes")

@@ -127,11 +127,16 @@ with Server(tippe) as srv:
     with tempfile.TemporaryDirectory() as d:
         subprocess.run([tippe, "build", "designs/m12-setscrew.json", "-o", d], cwd=REPO,
                        capture_output=True, check=True)
-        want = sorted(os.listdir(d))
+        # and the design itself, as STEM.json (issue 37: the zip holds what it was made of)
+        want = sorted(os.listdir(d) + ["m12-setscrew.json"])
         built = json.load(open(os.path.join(d, "m12-setscrew-build.json")))
     check(st == 200 and hdrs["content-type"] == "application/zip" and names_zip == want and
           "m12-setscrew-build.zip" in hdrs.get("content-disposition", ""),
-          "build m12-setscrew: the zip holds what tippe build writes (%d files)" % len(want))
+          "build m12-setscrew: the zip holds what tippe build writes (%d files) and the "
+          "design" % len(want))
+    check(st == 200 and zipfile.ZipFile(io.BytesIO(data)).read("m12-setscrew.json") ==
+          open(os.path.join(REPO, "designs", "m12-setscrew.json"), "rb").read(),
+          "build m12-setscrew: the design in the zip is the shipped file, byte for byte")
     if st == 200:
         sheet = json.loads(zipfile.ZipFile(io.BytesIO(data)).read("m12-setscrew-build.json"))
         check(same(sheet, built, skip=("file",)) == [],
@@ -180,6 +185,9 @@ with Server(tippe) as srv:
     # issue 36: a part's G-code named by path was opened on the server's disk
     gcode_path = json.loads(json.dumps(m12))
     gcode_path["parts"][0]["print"] = {"gcode": "/etc/passwd"}
+    # issue 37: an upload's id that the server does not keep
+    gcode_gone = json.loads(json.dumps(m12))
+    gcode_gone["parts"][0]["print"] = {"gcode": "upload:0123456789abcdef"}
     bad_inputs = [
         ("malformed JSON", "/api/sweep", '{"design": "m12-setscrew",', 400, None),
         ("not an object", "/api/sweep", '[1, 2]', 400, None),
@@ -196,6 +204,8 @@ with Server(tippe) as srv:
         ("a materials file named", "/api/sweep",
          {"design": dict(m12, materials="/etc/passwd")}, 400, "design.materials"),
         ("a G-code file named", "/api/sweep", {"design": gcode_path}, 400,
+         "design.parts[0].print.gcode"),
+        ("an upload not kept", "/api/sweep", {"design": gcode_gone}, 400,
          "design.parts[0].print.gcode"),
         ("a 10 MB body", "/api/sweep", " " * (10 << 20), 413, None),
         ("10^6-deep arrays", "/api/sweep", '{"a":' + "[" * 10**6 + "]" * 10**6 + "}", 413, None),
@@ -227,6 +237,22 @@ with Server(tippe) as srv:
         check(ok and st2 == 200, "%s: %d, field %s (%s); still serving" %
               (what, st, o.get("field") if isinstance(o, dict) else None,
                (o.get("error", "") if isinstance(o, dict) else str(o))[:70]))
+
+    # ---- G-code uploads (issue 37): text/x-gcode only, read in memory, refused with its
+    # field when it is not G-code; a JSON body is not an upload
+    for what, body, ctype, want in [
+            ("a JSON body", b'{"design": 1}', "application/json", 415),
+            ("a NUL byte (binary G-code)", b"G1 X1\0", "text/x-gcode", 400),
+            ("no extrusion", b"G28\nG1 X10 Y10\n", "text/x-gcode", 400),
+            ("an empty body", b"", "text/x-gcode", 400)]:
+        st, _, o = srv.request("POST", "/api/gcode?name=x.gcode", body,
+                               headers={"Content-Type": ctype})
+        check(st == want and isinstance(o, dict) and "error" in o and
+              (want == 415 or o.get("field") == "gcode"),
+              "an upload of %s: %d, field %s (%s)" % (what, st, o.get("field") if
+                                                        isinstance(o, dict) else None,
+                                                        (o.get("error", "") if isinstance(o, dict)
+                                                         else str(o))[:70]))
 
     # ---- the doors
     doors = [

@@ -107,7 +107,7 @@ with Server(tippe) as srv:
             "subtree: true});")
         box = driver.find_element(By.ID, "f-parts_0__print_infill")
         box.send_keys(Keys.CONTROL, "a")
-        box.send_keys("0.4")
+        box.send_keys("40%")
         want = build_verdict("parts.body.print.infill=0.4")
         wait.until(lambda d: page_verdict(d) == want)
         check(want == "3-in-1 on paper only",
@@ -224,15 +224,16 @@ with Server(tippe) as srv:
         check(len(zips) == 1, "the build zip was downloaded: %s" % zips)
         if zips:
             names = zipfile.ZipFile(os.path.join(downloads, zips[0])).namelist()
-            want = ["m12-setscrew-printed-build.json", "m12-setscrew-printed-build.md",
-                    "m12-setscrew-printed-sheet.pdf", "m12-setscrew-printed-sheet.png",
-                    "m12-setscrew-printed-sheet.svg", "m12-setscrew-printed.3mf",
-                    "m12-setscrew-printed.scad"]
+            # an edited shipped design's files are named "-edited" (issue 37), and the
+            # design itself travels with them
+            stem = "m12-setscrew-printed-edited"
+            want = [stem + x for x in ["-build.json", "-build.md", "-sheet.pdf", "-sheet.png",
+                                       "-sheet.svg", ".3mf", ".scad", ".json"]]
             check(all(n in names for n in want) and any(n.endswith(".stl") for n in names),
                   "the zip holds the sheet (PDF, PNG, SVG, JSON, Markdown), STL, 3MF and "
                   "OpenSCAD: %s" % names)
             sheet = json.loads(zipfile.ZipFile(os.path.join(downloads, zips[0]))
-                               .read("m12-setscrew-printed-build.json"))
+                               .read(stem + "-build.json"))
             check(sheet["three_in_one"] is True and sheet["print"][0]["infill"] == 0.4,
                   "the sheet is the edited design's: 3-in-1, infill 0.4")
         driver.save_screenshot(os.path.join(artefacts, "4-build.png"))
@@ -245,7 +246,7 @@ with Server(tippe) as srv:
         driver.find_element(By.ID, "pin").click()
         box = driver.find_element(By.ID, "f-parts_0__print_infill")
         box.send_keys(Keys.CONTROL, "a")
-        box.send_keys("0.6")
+        box.send_keys("60")
         wait.until(lambda d: d.execute_script(
             "return state.sweep && state.pinned && state.sweep.narrowest_zone_mm !== "
             "state.pinned.sweep.narrowest_zone_mm"))

@@ -84,4 +84,14 @@ check "M12: the hand part as depths from the rim (the depth of its Z2 ends)" \
     json_ok "$tmp/m12.json" '(s := o["settings"][1]) and (r := o["measure"]["reference_z_mm"]) and (e := o["measure"]["weight_end_above_z2_mm"]) and abs(s["hand_depth_from_mm"] - (r - s["hand_z2_from_mm"] - e)) < 1e-9 and abs(s["hand_depth_to_mm"] - (r - s["hand_z2_to_mm"] - e)) < 1e-9'
 check "M12: the Markdown's flips row gives the hand's depths" \
     grep -q "^| flips .*a hand (up to 25 rev/s) reaches it at depth" "$tmp/m12.md"
+# --- issue 37: a zone cut by the design's own travel_mm, not by the physics -----------
+# drilled-ball-blind is settable over its parts' travel (-7.5 .. 16.887 mm); stated only to
+# 13 mm its hangs range is cut: the advice's first change is the travel out to what the
+# parts allow (nothing to buy), and that change is settable
+"$tippe" build designs/drilled-ball-blind.json --set "travel_mm=[-7.5,13]" -o "$tmp/short" \
+    --no-export --json >"$tmp/short.json" 2>/dev/null
+check "travel cut at 13 mm: on paper only, the first change the travel to the parts' limit" \
+    json_ok "$tmp/short.json" 'o["verdict"] == "3-in-1 on paper only" and o["to_make_it_settable"][0]["set"][0].startswith("travel_mm=[-7.5,16.887") and o["to_make_it_settable"][0]["settable"] and "nothing to buy" in o["to_make_it_settable"][0]["advice"]'
+check "M12: its hangs cut by the physics (the screw out of the ball), not its travel: no travel change" \
+    json_ok "$tmp/m12.json" 'not any(a["set"][0].startswith("travel_mm") for a in o["to_make_it_settable"])'
 finish

@@ -106,4 +106,15 @@ cp "$tmp/p50.json" "$tmp/opt/catalogue.json"
 expect_fail "optimise: a catalogue with pitch 50 mm is refused" 2 \
     "$tmp/opt/optimise/../catalogue.json: $m.pitch_mm: 50 mm is not the pitch" -- \
     optimise "$tmp/opt/optimise/drilled-ball-catalogue.json" -o "$tmp/best.json"
+# issue 37: a set screw written as design-format.md writes one (its radius the hole's, the
+# thread's nominal d/2) is the catalogue's item of that thread and length: the M3 (1.5 mm,
+# 3 mm) is M3x3, modelled at its pitch radius 1.3376 mm; a length outside js15 of every
+# item's (2.5 mm: the shortest, M3x3, is within +/-0.2 mm) is none
+"$tippe" build designs/m3-setscrew.json -o "$tmp/m3" --no-export --json >"$tmp/m3.json" 2>/dev/null
+check "the M3 (radius 1.5 = d/2, 3 mm) is matched to M3x3, its thread not assumed" \
+    json_ok "$tmp/m3.json" 'o["thread"]["catalogue_item"] == "M3x3" and not o["thread"]["assumed"] and o["thread"]["pitch_mm"] == 0.5'
+"$tippe" build designs/m3-setscrew.json --set parts.screw.height_mm=2.5 -o "$tmp/m3b" --no-export \
+    --json >"$tmp/m3b.json" 2>/dev/null
+check "an M3 2.5 mm long (no item within js15) is matched to none" \
+    json_ok "$tmp/m3b.json" 'o["thread"]["catalogue_item"] in (None, "") and o["thread"]["assumed"]'
 finish

@@ -39,6 +39,42 @@ json_edit designs/m12-setscrew.json "$tmp/inline-solid.json" \
 expect_fail "an inline density without a print block is not printed" 2 "nothing to print" -- \
     export "$tmp/inline-solid.json" -o "$tmp/inline-solid"
 
+# --- issue 37: OpenSCAD's customizer annotations (its manual, "Customizer"): before the
+# first module, tabs (/* [Display] */, the sphere, a tab per part, Hidden), each number
+# outside Hidden with a [min:step:max] range that holds its value, show with its list
+for args in "designs/m12-setscrew.json" "designs/shell-rod-nylon-printed.json --split"; do
+    # shellcheck disable=SC2086
+    "$tippe" export $args -o "$tmp/cust" --format scad >/dev/null 2>&1
+    scad=$(ls "$tmp"/cust/*.scad)
+    check "customizer annotations: $args" "$py" - "$scad" <<'EOF'
+import re, sys
+text = open(sys.argv[1]).read().split("\nmodule ")[0]
+tab, seen, bad = None, [], []
+for line in text.splitlines():
+    m = re.match(r"/\* \[(.+)\] \*/$", line)
+    if m:
+        tab = m.group(1)
+        seen.append(tab)
+        continue
+    m = re.match(r"^([A-Za-z_$][\w$]*) = ([^;]+);(?: // (.*))?$", line)
+    if not m or tab == "Hidden":
+        continue
+    name, value, note = m.groups()
+    if name == "show":
+        ok = note in ("[all, printed]", "[all, printed, halves]")
+    else:
+        r = re.match(r"\[(-?[\d.e+-]+):([\d.e+-]+):(-?[\d.e+-]+)\]$", note or "")
+        ok = tab is not None and r is not None and \
+            float(r.group(1)) <= float(value) <= float(r.group(3))
+    if not ok:
+        bad.append(line)
+assert seen[:2] == ["Display", "The sphere and the weight"] and seen[-1] == "Hidden" and \
+    any(t.startswith("Part 1") for t in seen), seen
+assert not bad, bad
+EOF
+    rm -rf "$tmp/cust"
+done
+
 command -v openscad >/dev/null || skip "openscad not on PATH: the OpenSCAD render checks are skipped (Debian package openscad)"
 "$py" -c "import stl" 2>/dev/null || skip "numpy-stl (Debian python3-stl) is not installed"
 

@@ -356,6 +356,36 @@ static void path(sb *b, int style)
     }
 }
 
+/* tippe serve keeps an upload read at 1 g/cm^3 and scales it to a part's material
+ * (tippe_gcode_body_set_density): the same as reading the text at that density. */
+static void test_density(void)
+{
+    sb b = {0};
+    tippe_gcode_options o = volumetric_options();
+    o.override_density = 1;
+    tippe_gcode_body one, read;
+    tippe_error err = {0};
+    put(&b, "M83\n;TYPE:External perimeter\n");
+    tube(&b, 100, 100);
+    put(&b, ";TYPE:Skirt/Brim\n");
+    ring(&b, 100, 100, TUBE_R + 5, TUBE_N, TUBE_H, TUBE_H, TUBE_W);
+    int rc = parse(&b, &o, &one, &err);
+    o.density_g_cm3 = 1.24;
+    rc |= parse(&b, &o, &read, &err);
+    CHECK(rc == TIPPE_OK, "tube at two densities: %s", err.msg);
+    tippe_gcode_body_set_density(&one, 1.24);
+    /* the same 18000-odd terms, the density applied to each or to their sum: rounding of
+     * order n eps = 4e-12 (as the tube's mass above), 1e-11 of the largest moment */
+    CHECK_CLOSE(one.m, read.m, 1e-11, "mass scaled from 1 g/cm^3");
+    for (int k = 0; k < 6; k++)
+        CHECK(fabs(one.inertia[k] - read.inertia[k]) <= 1e-11 * fabs(read.inertia[2]),
+              "inertia[%d] scaled: %g, read %g", k, one.inertia[k], read.inertia[k]);
+    CHECK_CLOSE(one.excluded_mass_kg, read.excluded_mass_kg, 1e-11, "the skirt's mass scaled");
+    CHECK(one.body_volume_mm3 == read.body_volume_mm3 && one.density_g_cm3 == 1.24,
+          "volumes kept, the density is the new one");
+    free(b.s);
+}
+
 static void test_bookkeeping(void)
 {
     sb b = {0};
@@ -971,6 +1001,7 @@ int main(void)
     test_rod();
     test_tube();
     test_cura_headers();
+    test_density();
     test_bookkeeping();
     test_features();
     test_disc();

@@ -87,7 +87,9 @@ int tippe_build_catalogue_load(const char *path, tippe_build_catalogue **out, ti
 const char *tippe_build_catalogue_file(const tippe_design *d, char *buf, size_t size);
 void tippe_build_catalogue_free(tippe_build_catalogue *c);
 /* The first item (in file order) of radius_mm and height_mm (within 1e-6
- * mm), and its set in *set (if not NULL); NULL when none matches. */
+ * mm), else the first whose thread the radius can be (from the item's modelled
+ * pitch radius to its nominal d/2) and whose length is within js15 (ISO 4759-1
+ * grade A) of height_mm; its set in *set (if not NULL); NULL when none matches. */
 const tippe_build_catalogue_item *tippe_build_catalogue_match(const tippe_build_catalogue *c,
                                                               double radius_mm, double height_mm,
                                                               const tippe_build_catalogue_set **set);
@@ -355,6 +357,10 @@ void tippe_build_header_text(const tippe_build_sheet *s, char *buf, size_t size)
 /* "; contact INVALID: starts on the hole's rim at +z" for a launch check that
  * starts or ends on a pole's opening, else "". */
 const char *tippe_build_cap_text(const tippe_build_setting *x);
+
+/* The launch check of setting k as the sheet's table gives it: "tip at 8.6 rev/s (as
+ * expected); starts on the hole's rim at +z (modelled)", or "not run". */
+void tippe_build_launch_text(const tippe_build_sheet *s, int k, char *buf, size_t size);
 
 /* Advice k's overrides as a command line's options: "--set A --set B". */
 void tippe_build_advice_sets(const tippe_build_sheet *s, int k, char *buf, size_t size);

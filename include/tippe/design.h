@@ -56,6 +56,26 @@ int tippe_design_load_text(const char *name, const char *text, size_t len,
                            const char *materials_dir, const char *const *overrides,
                            int n_overrides, tippe_design **out, tippe_error *err);
 
+/* A G-code's body read from memory (tippe serve's upload, tippe_gcode_parse_buffer with
+ * override_density), for the part of that name whose print.gcode names it: the part is
+ * then printed as that G-code deposits it, as from a file (scaled to the part's density,
+ * matched to the part, a weighed mass scaling its lines). */
+typedef struct {
+    char part[64];
+    tippe_gcode_body body;
+    /* its beads near the axis (tippe_gcode_parse_near), for the holes' cuts as a file's
+     * G-code is cut; the loader keeps its own copy (the caller still frees these) */
+    tippe_gcode_beads beads;
+} tippe_design_gcode;
+
+/* tippe_design_load_text with G-code bodies from memory (n_gcodes of them; kept for the
+ * design's reloads); a part whose print.gcode has no body here is refused as a design
+ * from memory names no file. */
+int tippe_design_load_text_gcode(const char *name, const char *text, size_t len,
+                                 const char *materials_dir, const tippe_design_gcode *gcodes,
+                                 int n_gcodes, const char *const *overrides, int n_overrides,
+                                 tippe_design **out, tippe_error *err);
+
 /* d loaded again from its file or text with its overrides and then extra ones,
  * checked in full as at load (tippe_design_derive skips the layout). */
 int tippe_design_reload(const tippe_design *d, const char *const *extra, int n_extra,

@@ -504,6 +504,12 @@ typedef struct {
 int tippe_gcode_read_beads(const char *path, const tippe_gcode_options *opt, double radius_mm,
                            tippe_gcode_body *out, tippe_gcode_beads *beads, tippe_error *err);
 void tippe_gcode_beads_free(tippe_gcode_beads *beads);
+/* tippe_gcode_parse_buffer, the body's beads within keep_radius_mm of its axis kept
+ * in *near (keep_radius_mm 0: none, near may be NULL): a G-code in memory (tippe
+ * serve's uploads) cut for its part's holes as a file's is. */
+int tippe_gcode_parse_near(const char *text, size_t len, const char *name,
+                           const tippe_gcode_options *opt, double keep_radius_mm,
+                           tippe_gcode_body *out, tippe_gcode_beads *near, tippe_error *err);
 
 /* Cuts from the body (read at one density for every tool, with the beads near
  * its axis out to every cut's radius + 3 mm) what n cuts take away: a bead

@@ -22,6 +22,9 @@
 /* Defaults and limits (docs/serve.md, "Limits"). */
 #define TIPPE_SERVE_DEFAULT_LISTEN "127.0.0.1:8765"
 #define TIPPE_SERVE_MAX_BODY_BYTES (1 << 20)  /* a request's body: 1 MiB */
+/* an uploaded G-code (POST /api/gcode): PrusaSlicer's of a 50 mm ball at 0.2 mm layers is
+ * a few MiB, at 0.1 mm about 30 MiB (tippe/print.h) */
+#define TIPPE_SERVE_MAX_GCODE_BYTES (64 << 20)
 #define TIPPE_SERVE_MAX_DEPTH 32              /* JSON nesting of a request */
 #define TIPPE_SERVE_DEFAULT_BUDGET_S 30.0     /* wall clock per request */
 #define TIPPE_SERVE_MAX_FILM_S 8.0            /* model time of a film */

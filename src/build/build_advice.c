@@ -20,7 +20,8 @@
 static const double slicer_infill_steps[] = {0,    0.05, 0.10, 0.15, 0.20, 0.25, 0.30,
                                              0.40, 0.50, 0.60, 0.70, 0.80, 0.90, 1.00};
 
-enum { FAM_INFILL, FAM_MATERIAL, FAM_WEIGHT, N_FAM };
+/* the travel first: a change that costs nothing is said before those one buys */
+enum { FAM_TRAVEL, FAM_INFILL, FAM_MATERIAL, FAM_WEIGHT, N_FAM };
 enum { MAX_SETS = 8, MAX_CHANGES = 160 };
 
 /* One change a maker can make: the overrides that make it, what it is in
@@ -213,7 +214,31 @@ static void length_changes(advice_ctx *a, const char *name, const tippe_design_s
     }
 }
 
-/* Every single change the design allows: the infill of each printed part,
+/* The weight's travel out to what its parts allow (the sheet's physical travel), where the
+ * design's own travel_mm stops short of it (issue 37: a zone cut by travel_mm, not by the
+ * physics, was sent to buy a screw): nothing to buy, a screw turned further. */
+static void travel_change(advice_ctx *a)
+{
+    const tippe_build_sheet *s = a->s;
+    /* an end more than 1 um short moves to the parts' limit, 0.01 um inside it (the
+     * limit is found to within 1e-6 mm by bisection: its last digit may lie beyond) */
+    const double f0 = s->design_travel_from_mm, t0 = s->design_travel_to_mm;
+    const double f1 = s->travel_from_mm < f0 - 1e-3 ? s->travel_from_mm + 1e-5 : f0;
+    const double t1 = s->travel_to_mm > t0 + 1e-3 ? s->travel_to_mm - 1e-5 : t0;
+    if (f1 == f0 && t1 == t0)
+        return;
+    change *c = add_change(a, FAM_TRAVEL, 0, s->min_setting_mm);
+    if (!c)
+        return;
+    add_set(c, "travel_mm=[%.9g,%.9g]", f1, t1);
+    snprintf(c->what, sizeof c->what,
+             "let the weight travel %.2f .. %.2f mm, as far as its parts allow (now %.2f .. "
+             "%.2f mm, the design's travel_mm): nothing to buy",
+             f1, t1, f0, t0);
+}
+
+/* Every single change the design allows: the weight's travel as far as its parts allow,
+ * the infill of each printed part,
  * and for the moving weight its material, and a catalogue screw (a screw in
  * a hole, with a catalogue) or its length in whole mm. */
 static void list_changes(advice_ctx *a, const tippe_build_catalogue *cat)
@@ -223,6 +248,7 @@ static void list_changes(advice_ctx *a, const tippe_build_catalogue *cat)
     if (a->s->measure == TIPPE_BUILD_MEASURE_HOLE && a->s->hole_part >= 0 &&
         !tippe_design_part(a->d, a->s->hole_part, &hp))
         hole = hp.name;
+    travel_change(a);
     for (int i = 0; i < tippe_design_n_parts(a->d); i++) {
         tippe_design_part_info p;
         tippe_design_print_info pr;
@@ -352,7 +378,7 @@ void tippe_build_advise(const tippe_design *d, const tippe_build_options *o, tip
         if (a.c[i].loads && nt[f] < 4)
             top[f][nt[f]++] = i;
     }
-    change *pairs = calloc(3 * 16, sizeof(change));
+    change *pairs = calloc(N_FAM * (N_FAM - 1) / 2 * 16, sizeof(change)); /* 4 x 4 per two families */
     int np = 0;
     for (int f = 0; pairs && f < N_FAM; f++)
         for (int g = f + 1; g < N_FAM; g++)

@@ -225,19 +225,45 @@ void tippe_build_catalogue_free(tippe_build_catalogue *c)
     free(c);
 }
 
+/* Half the IT15 tolerance of a length (ISO 286-1, Table 1): ISO 4026's set screws are
+ * product grade A, whose lengths are js15 (ISO 4759-1, Table 1). */
+static double js15_mm(double length_mm)
+{
+    static const struct {
+        double up_to_mm, it15_mm;
+    } it15[] = {{3, 0.40}, {6, 0.48}, {10, 0.58}, {18, 0.70}, {30, 0.84}, {50, 1.00},
+                {80, 1.20}, {120, 1.40}, {180, 1.60}, {250, 1.85}, {315, 2.10}, {400, 2.30},
+                {500, 2.50}, {630, 2.80}, {800, 3.20}, {1000, 3.60}};
+    for (size_t k = 0; k < sizeof it15 / sizeof *it15; k++)
+        if (length_mm <= it15[k].up_to_mm)
+            return it15[k].it15_mm / 2;
+    return 3.6 / 2;
+}
+
 const tippe_build_catalogue_item *tippe_build_catalogue_match(const tippe_build_catalogue *c,
                                                               double radius_mm, double height_mm,
                                                               const tippe_build_catalogue_set **set)
 {
-    for (int k = 0; c && k < c->n_sets; k++)
-        for (int i = 0; i < c->sets[k].n_items; i++) {
-            const tippe_build_catalogue_item *it = &c->sets[k].items[i];
-            if (fabs(it->radius_mm - radius_mm) <= 1e-6 && fabs(it->height_mm - height_mm) <= 1e-6) {
-                if (set)
-                    *set = &c->sets[k];
-                return it;
+    /* the item modelled as the part is, else (issue 37) the thread the part's radius can
+     * be: from the item's pitch radius (as the catalogue models it) to its nominal d/2 (as
+     * design-format.md writes a set screw, the radius of its hole), and a length within
+     * the item's js15 */
+    for (int pass = 0; pass < 2; pass++)
+        for (int k = 0; c && k < c->n_sets; k++)
+            for (int i = 0; i < c->sets[k].n_items; i++) {
+                const tippe_build_catalogue_item *it = &c->sets[k].items[i];
+                const int ok =
+                    pass == 0 ? fabs(it->radius_mm - radius_mm) <= 1e-6 &&
+                                    fabs(it->height_mm - height_mm) <= 1e-6
+                              : radius_mm >= it->radius_mm - 1e-6 &&
+                                    radius_mm <= it->d_mm / 2 + 1e-6 &&
+                                    fabs(it->height_mm - height_mm) <= js15_mm(it->height_mm);
+                if (ok) {
+                    if (set)
+                        *set = &c->sets[k];
+                    return it;
+                }
             }
-        }
     return NULL;
 }
 

@@ -418,12 +418,7 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
             snprintf(range, sizeof range, "none robust (zone %.2f .. %.2f mm)", x->from_mm,
                      x->to_mm);
         tippe_build_spin_text(s, k, spin, sizeof spin);
-        if (x->launch_status == TIPPE_OK)
-            snprintf(check, sizeof check, "%s at %.1f rev/s%s%s%s", tippe_verdict_name(x->verdict),
-                     x->spin_launch_rev_s, x->verdict_ok ? " (as expected)" : " (NOT as expected)",
-                     x->beyond_hand ? "; beyond a hand spin" : "", tippe_build_cap_text(x));
-        else
-            snprintf(check, sizeof check, "not run");
+        tippe_build_launch_text(s, k, check, sizeof check);
         double lo = fmin(x->depth_from_mm, x->depth_to_mm);
         double hi = fmax(x->depth_from_mm, x->depth_to_mm);
         fprintf(f, "| %s | %s | %s | %.2f mm | %s .. %s | %s | %s | %s | %s |\n", behaviours[k],
@@ -573,6 +568,19 @@ const char *tippe_build_advice_none(void)
            "in pairs.";
 }
 
+/* The sheet's launch-check cell of setting k (the Markdown table's, the page's), so that
+ * both say the same words. */
+void tippe_build_launch_text(const tippe_build_sheet *s, int k, char *buf, size_t size)
+{
+    const tippe_build_setting *x = &s->set[k];
+    if (x->launch_status == TIPPE_OK)
+        snprintf(buf, size, "%s at %.1f rev/s%s%s%s", tippe_verdict_name(x->verdict),
+                 x->spin_launch_rev_s, x->verdict_ok ? " (as expected)" : " (NOT as expected)",
+                 x->beyond_hand ? "; beyond a hand spin" : "", tippe_build_cap_text(x));
+    else
+        snprintf(buf, size, "not run");
+}
+
 const char *tippe_build_cap_text(const tippe_build_setting *x)
 {
     if (x->launch_status != TIPPE_OK || (!x->launch_cap_start && !x->launch_cap_end))
@@ -598,7 +606,10 @@ const char *tippe_build_cap_text(const tippe_build_setting *x)
 void tippe_build_header_text(const tippe_build_sheet *s, char *buf, size_t size)
 {
     size_t n = 0;
-    int w = snprintf(buf, size, "%s", s->design_file);
+    /* an absolute path names the maker's disk, not the sheet's folder (issue 37): its
+     * file's name alone; a relative one is kept, as the command was given it */
+    int w = snprintf(buf, size, "%s",
+                     s->design_file[0] == '/' ? tippe_path_base(s->design_file) : s->design_file);
     for (int i = 0; w >= 0 && (n += (size_t)w) < size && i < s->n_overrides; i++)
         w = snprintf(buf + n, size - n, "%s--set %s", i ? " " : " changed by ", s->override[i]);
     if (n >= size)

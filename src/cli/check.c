@@ -276,13 +276,15 @@ static void check_text(const hands_args *a, const tippe_sweep_check *r)
     }
     if (isfinite(rec->cap_first_s) && a->o.sphere_contact_only)
         printf("pole       INVALID contact: theta lay within a hole's opening at a pole for %.4g "
-               "s of the %.4g s run (first at t = %.4g s), where --sphere-contact keeps the "
-               "contact on the sphere\n",
-               rec->cap_time_s, rec->t_s, rec->cap_first_s);
+               "s in all (first at t = %.4g s), where --sphere-contact keeps the contact on the "
+               "sphere\n",
+               rec->cap_time_s, rec->cap_first_s);
     else if (isfinite(rec->cap_first_s)) {
-        printf("rim        on a hole's rim for %.4g s of the %.4g s run (first at t = %.4g s; "
-               "%ld switches between rim and sphere)",
-               rec->cap_time_s, rec->t_s, rec->cap_first_s, rec->rim_switches);
+        /* not "of the t_s run": t_s is when the verdict was decided (0 for one proved at
+         * launch), not how long the launch was followed */
+        printf("rim        on a hole's rim for %.4g s in all (first at t = %.4g s; %ld switches "
+               "between rim and sphere)",
+               rec->cap_time_s, rec->cap_first_s, rec->rim_switches);
         if (isfinite(rec->spin_leaving_rim_rad_s))
             printf("; it left the rim it was launched on with spin %.4g rad/s of %.4g "
                    "(%.0f %% drained)",

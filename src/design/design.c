@@ -482,8 +482,9 @@ int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tipp
  * (or NULL), whose materials table and G-code are used where they are the same
  * files. The text is kept in the design, so that no design reads its file twice. */
 static int load(const char *path, const char *text, size_t text_len, const char *materials_dir,
-                const tippe_design *from, const char *const *overrides, int n_overrides,
-                int check, tippe_design **out, tippe_error *err)
+                const tippe_design *from, const tippe_design_gcode *gcodes, int n_gcodes,
+                const char *const *overrides, int n_overrides, int check, tippe_design **out,
+                tippe_error *err)
 {
     /* The geometry module may call GSL: report, never abort. */
     tippe_gsl_errors_as_codes();
@@ -511,6 +512,21 @@ static int load(const char *path, const char *text, size_t text_len, const char 
         memcpy(d->text, text, text_len);
         d->text[text_len] = '\0';
         d->text_len = text_len;
+    }
+    if (!rc && text && n_gcodes > 0) {
+        if (!(d->gcodes = calloc((size_t)n_gcodes, sizeof *d->gcodes)))
+            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+        /* the bodies and their beads copied: the design and its reloads own theirs */
+        for (int k = 0; !rc && k < n_gcodes; k++) {
+            d->gcodes[k] = gcodes[k];
+            d->gcodes[k].beads.bead = NULL;
+            d->n_gcodes = k + 1;
+            const size_t nb = gcodes[k].beads.n * sizeof *gcodes[k].beads.bead;
+            if (nb && !(d->gcodes[k].beads.bead = malloc(nb)))
+                rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+            else if (nb)
+                memcpy(d->gcodes[k].beads.bead, gcodes[k].beads.bead, nb);
+        }
     }
     if (!rc)
         rc = tippe_json_parse_text(c, d->text, d->text_len, MAX_FILE_MIB, "design", &root);
@@ -554,7 +570,7 @@ int tippe_design_finish(tippe_json_reader *c, cJSON *root, tippe_design *d,
 int tippe_design_load(const char *path, const char *const *overrides, int n_overrides,
                       tippe_design **out, tippe_error *err)
 {
-    return load(path, NULL, 0, NULL, NULL, overrides, n_overrides, 1, out, err);
+    return load(path, NULL, 0, NULL, NULL, NULL, 0, overrides, n_overrides, 1, out, err);
 }
 
 int tippe_design_load_read(const char *path, const char *text, size_t len,
@@ -565,7 +581,7 @@ int tippe_design_load_read(const char *path, const char *text, size_t len,
     /* a text over the cap: the file's own read refuses it, in its words */
     if (!text || len > ((size_t)MAX_FILE_MIB << 20))
         return tippe_design_load(path, overrides, n_overrides, out, err);
-    return load(path, text, len, NULL, NULL, overrides, n_overrides, 1, out, err);
+    return load(path, text, len, NULL, NULL, NULL, 0, overrides, n_overrides, 1, out, err);
 }
 
 int tippe_design_load_text(const char *name, const char *text, size_t len,
@@ -575,7 +591,20 @@ int tippe_design_load_text(const char *name, const char *text, size_t len,
     *out = NULL;
     if (!text || !materials_dir)
         return tippe_error_set(err, TIPPE_EINPUT, "%s: no design text given", name);
-    return load(name, text, len, materials_dir, NULL, overrides, n_overrides, 1, out, err);
+    return load(name, text, len, materials_dir, NULL, NULL, 0, overrides, n_overrides, 1, out,
+                err);
+}
+
+int tippe_design_load_text_gcode(const char *name, const char *text, size_t len,
+                                 const char *materials_dir, const tippe_design_gcode *gcodes,
+                                 int n_gcodes, const char *const *overrides, int n_overrides,
+                                 tippe_design **out, tippe_error *err)
+{
+    *out = NULL;
+    if (!text || !materials_dir)
+        return tippe_error_set(err, TIPPE_EINPUT, "%s: no design text given", name);
+    return load(name, text, len, materials_dir, NULL, gcodes, n_gcodes, overrides, n_overrides,
+                1, out, err);
 }
 
 /* d's file or text again, with d's overrides and then extra ones. */
@@ -592,7 +621,7 @@ static int reload(const tippe_design *d, const char *const *extra, int n_extra, 
         all[i] = d->overrides[i];
     for (int i = 0; i < n_extra; i++)
         all[d->n_overrides + i] = extra[i];
-    int rc = load(d->path, d->text, d->text_len, d->materials_dir, d, all,
+    int rc = load(d->path, d->text, d->text_len, d->materials_dir, d, d->gcodes, d->n_gcodes, all,
                   d->n_overrides + n_extra, check, out, err);
     free(all);
     return rc;
@@ -786,6 +815,9 @@ void tippe_design_free(tippe_design *d)
     free(d->rs);
     free(d->path);
     free(d->text);
+    for (int k = 0; d->gcodes && k < d->n_gcodes; k++)
+        tippe_gcode_beads_free(&d->gcodes[k].beads);
+    free(d->gcodes);
     free(d->materials_dir);
     free(d->mat_file);
     cJSON_Delete(d->mat_table);

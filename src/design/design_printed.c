@@ -402,18 +402,25 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     char pth[64], file[2048];
     snprintf(pth, sizeof pth, "parts[%d].print.gcode", i);
     /* A design from memory (tippe serve's requests) names no file on disk, as
-     * for its materials table (issue 36: the path read any file of the server). */
-    if (d->materials_dir)
+     * for its materials table (issue 36: the path read any file of the server):
+     * its G-code is a body read from memory for this part (an upload), or none. */
+    const tippe_design_gcode *mem = NULL;
+    for (int k = 0; d->materials_dir && k < d->n_gcodes && !mem; k++)
+        if (!strcmp(d->gcodes[k].part, p->name))
+            mem = &d->gcodes[k];
+    if (d->materials_dir && !mem)
         return tippe_json_fail(c, pth,
                                "a design sent as text names no file: its G-code cannot be "
-                               "read from the server's disk (slice and weigh with the "
-                               "command, tippe slice or tippe eval, instead)");
-    if (p->gcode[0] == '/') {
-        snprintf(file, sizeof file, "%s", p->gcode);
-    } else {
-        char dir[1024];
-        tippe_path_dir(d->path, dir, sizeof dir);
-        snprintf(file, sizeof file, "%s/%s", dir, p->gcode);
+                               "read from the server's disk (upload it on the page, or slice "
+                               "and weigh with the command, tippe slice or tippe eval)");
+    if (!mem) {
+        if (p->gcode[0] == '/') {
+            snprintf(file, sizeof file, "%s", p->gcode);
+        } else {
+            char dir[1024];
+            tippe_path_dir(d->path, dir, sizeof dir);
+            snprintf(file, sizeof file, "%s/%s", dir, p->gcode);
+        }
     }
     tippe_gcode_options opt = tippe_gcode_defaults();
     opt.density_g_cm3 = p->density_g_cm3;
@@ -428,7 +435,22 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     int which[TIPPE_GCODE_MAX_CUTS];
     int n_holes = part_holes(d, i, holes, which);
     const tippe_print_sliced *sl = &p->sliced;
-    int rc = gcode_read_cached(file, &opt, holes, n_holes, 1e3 * sl->bed_z_m, &body, &gerr);
+    int rc = TIPPE_OK;
+    if (mem) {
+        /* an upload (tippe serve): its body as read in memory, at this part's density,
+         * cut for the holes from the beads kept with it, as a file's (gcode_read_cached) */
+        body = mem->body;
+        tippe_gcode_body_set_density(&body, p->density_g_cm3);
+        double need = 0;
+        for (int k = 0; k < n_holes; k++)
+            need = fmax(need, holes[k].radius_mm + 3);
+        if (n_holes && mem->beads.radius_mm >= need)
+            apply_cuts(&body, &mem->beads, holes, n_holes, 1e3 * sl->bed_z_m);
+        else
+            n_holes = 0; /* beyond the beads kept: not cut (hole_note says none) */
+    } else {
+        rc = gcode_read_cached(file, &opt, holes, n_holes, 1e3 * sl->bed_z_m, &body, &gerr);
+    }
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", gerr.msg)
                                   : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,

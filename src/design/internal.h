@@ -122,6 +122,9 @@ struct tippe_design {
      * design from memory, NULL for a file. */
     char *text, *materials_dir;
     size_t text_len;
+    /* G-code bodies from memory (tippe_design_load_text_gcode), kept for reloads */
+    tippe_design_gcode *gcodes;
+    int n_gcodes;
     char *catalogue; /* "catalogue": the hardware catalogue file, resolved; NULL: not given */
     char *mat_file;  /* the materials table read, resolved; NULL: no part names a material */
     int mat_fallback; /* 1: no table beside the file, the shipped one was read (a note) */

@@ -48,14 +48,34 @@ static void put_comment_text(FILE *f, const char *text)
             fputc(*c, f);
 }
 
-static void put_var(FILE *f, const char *id, const char *field, double v, const char *comment)
+/* A number the OpenSCAD customizer shows as a slider (its manual, "Customizer": the
+ * comment line above is its description, "// [min:step:max]" after the value its range;
+ * the range is widened to hold the value). */
+static void put_var(FILE *f, const char *id, const char *field, double v, const char *comment,
+                    double lo, double hi)
 {
-    fprintf(f, "%s_%s = %.10g;%s%s\n", id, field, v, comment ? " // " : "", comment ? comment : "");
+    fprintf(f, "// %s%s%s\n", field, comment ? ": " : "", comment ? comment : "");
+    fprintf(f, "%s_%s = %.10g; // [%.10g:0.1:%.10g]\n", id, field, v, fmin(lo, v), fmax(hi, v));
 }
 
-/* The part's numbers, as variables named <part>_<field>. */
+/* A part's tab in the customizer: "Part 2: hole", the name only when it cannot close the
+ * comment or the tab's brackets. */
+static void part_tab(FILE *f, int i, const char *name)
+{
+    int safe = strlen(name) < 60;
+    for (const unsigned char *c = (const unsigned char *)name; safe && *c; c++)
+        safe = isalnum(*c) || *c == ' ' || *c == '-' || *c == '_' || *c == '.' || *c == '\'';
+    if (safe)
+        fprintf(f, "/* [Part %d: %s] */\n", i + 1, name);
+    else
+        fprintf(f, "/* [Part %d] */\n", i + 1);
+}
+
+/* The part's numbers, as variables named <part>_<field>: its sizes and place in its own
+ * tab of the customizer (hidden 0), or what follows from them (hidden 1: the clip, the
+ * hole's growth), which the customizer's Hidden tab keeps out of its sliders. */
 static void part_variables(FILE *f, const tippe_design *d, int i, const tippe_profile_set *s,
-                           const tippe_profile_options *opt)
+                           const tippe_profile_options *opt, int hidden)
 {
     tippe_design_solid sd;
     tippe_design_part_info info;
@@ -63,30 +83,38 @@ static void part_variables(FILE *f, const tippe_design *d, int i, const tippe_pr
     tippe_design_part(d, i, &info);
     char id[ID_LEN];
     ident(info.name, id, sizeof id);
-    fputs("// part '", f);
-    put_comment_text(f, info.name);
-    fprintf(f, "': %s, %s, ", info.shape, info.role);
-    put_comment_text(f, info.cut_from ? info.cut_from : info.material);
-    fputc('\n', f);
-    if (!strcmp(sd.shape, "ball")) {
-        put_var(f, id, "radius_mm", sd.radius_mm, NULL);
-    } else if (!strcmp(sd.shape, "shell")) {
-        put_var(f, id, "radius_mm", sd.radius_mm, NULL);
-        put_var(f, id, "thickness_mm", sd.thickness_mm, NULL);
-    } else if (!strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube")) {
-        put_var(f, id, "radius_mm", sd.radius_mm, NULL);
-        put_var(f, id, "inner_radius_mm", sd.inner_radius_mm, NULL);
-        put_var(f, id, "height_mm", sd.height_mm, NULL);
+    const double R = tippe_design_radius_mm(d);
+    if (hidden) {
+        if (sd.clip_radius_mm > 0)
+            fprintf(f, "%s_clip_radius_mm = %.10g; // intersected with this ball\n", id,
+                    sd.clip_radius_mm);
+        if (sd.clip_inner_mm > 0)
+            fprintf(f, "%s_clip_inner_mm = %.10g; // less this ball (the shell's wall)\n", id,
+                    sd.clip_inner_mm);
     } else {
-        put_var(f, id, "centre_radius_mm", sd.centre_radius_mm, NULL);
-        put_var(f, id, "radial_semi_mm", sd.radial_semi_mm, NULL);
-        put_var(f, id, "axial_semi_mm", sd.axial_semi_mm, NULL);
+        part_tab(f, i, info.name);
+        fputs("// part '", f);
+        put_comment_text(f, info.name);
+        fprintf(f, "': %s, %s, ", info.shape, info.role);
+        put_comment_text(f, info.cut_from ? info.cut_from : info.material);
+        fputc('\n', f);
+        if (!strcmp(sd.shape, "ball")) {
+            put_var(f, id, "radius_mm", sd.radius_mm, NULL, 0, 2 * R);
+        } else if (!strcmp(sd.shape, "shell")) {
+            put_var(f, id, "radius_mm", sd.radius_mm, NULL, 0, 2 * R);
+            put_var(f, id, "thickness_mm", sd.thickness_mm, NULL, 0, R);
+        } else if (!strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube")) {
+            put_var(f, id, "radius_mm", sd.radius_mm, NULL, 0, R);
+            put_var(f, id, "inner_radius_mm", sd.inner_radius_mm, NULL, 0, R);
+            put_var(f, id, "height_mm", sd.height_mm, NULL, 0, 2 * R);
+        } else {
+            put_var(f, id, "centre_radius_mm", sd.centre_radius_mm, NULL, 0, R);
+            put_var(f, id, "radial_semi_mm", sd.radial_semi_mm, NULL, 0, R);
+            put_var(f, id, "axial_semi_mm", sd.axial_semi_mm, NULL, 0, R);
+        }
+        put_var(f, id, "z_mm", sd.z_mm, sd.moving ? "offset from z2_mm" : NULL, -R, R);
+        return;
     }
-    put_var(f, id, "z_mm", sd.z_mm, sd.moving ? "offset from z2_mm" : NULL);
-    if (sd.clip_radius_mm > 0)
-        put_var(f, id, "clip_radius_mm", sd.clip_radius_mm, "intersected with this ball");
-    if (sd.clip_inner_mm > 0)
-        put_var(f, id, "clip_inner_mm", sd.clip_inner_mm, "less this ball (the shell's wall)");
     if (sd.is_void && s->clearance_applied[i] && opt->fit_diameter_mm > 0 && i == opt->fit_part)
         fprintf(f, "%s_grow_mm = %.10g; // printed %.10g mm across for its thread (tap drill)\n",
                 id, opt->fit_diameter_mm / 2 - sd.radius_mm, opt->fit_diameter_mm);
@@ -202,21 +230,35 @@ int tippe_scad_write(const tippe_design *d, const tippe_profile_set *s,
         fprintf(f, "// Exported with --split: each printed body is cut at split_z_mm into\n"
                    "// two halves; \"all\" colours them apart, \"halves\" lays them out as\n"
                    "// the STL files hold them (each standing on its flat cut face).\n");
-    fprintf(f, "\nshow = \"all\"; // %s\n",
-            opt->split ? "\"all\", \"printed\" or \"halves\"" : "\"all\" or \"printed\"");
-    fprintf(f, "fn = %d; // facets around a circle, from --chord-mm %g\n", fn, opt->chord_mm);
-    fprintf(f, "$fn = fn;\n");
-    fprintf(f, "sphere_radius_mm = %.10g;\n", tippe_design_radius_mm(d));
-    fprintf(f, "z2_mm = %.10g; // moving weight's midpoint above the centre (travel %g .. %g)\n",
-            z2_mm, t0, t1);
-    fprintf(f, "clearance_mm = %.10g; // radial clearance of holes that take hardware\n",
-            opt->clearance_mm);
+    /* OpenSCAD's customizer (Window > Customizer) shows the numbers before the first module
+     * as sliders and lists, by the tabs of the block comments; the Hidden tab holds what
+     * follows from them */
+    const double R = tippe_design_radius_mm(d);
+    fprintf(f, "// OpenSCAD's customizer shows them as sliders, a tab per part.\n");
+    fprintf(f, "\n/* [Display] */\n// what to render: all (hardware grey, the weight orange), "
+               "the printed bodies%s\n",
+            opt->split ? ", or the halves as the STL files hold them" : "");
+    fprintf(f, "show = \"all\"; // %s\n",
+            opt->split ? "[all, printed, halves]" : "[all, printed]");
+    fprintf(f, "// facets around a circle, from --chord-mm %g\n", opt->chord_mm);
+    fprintf(f, "fn = %d; // [8:8:%d]\n", fn, fn > 512 ? fn : 512);
+    fprintf(f, "\n/* [The sphere and the weight] */\n// the sphere's radius\n");
+    fprintf(f, "sphere_radius_mm = %.10g; // [%.10g:0.1:%.10g]\n", R, R / 2, 2 * R);
+    fprintf(f, "// moving weight's midpoint above the centre (travel %g .. %g)\n", t0, t1);
+    fprintf(f, "z2_mm = %.10g; // [%.10g:0.1:%.10g]\n", z2_mm, fmin(t0, z2_mm), fmax(t1, z2_mm));
+    fprintf(f, "// radial clearance of holes that take hardware\n");
+    fprintf(f, "clearance_mm = %.10g; // [0:0.05:%.10g]\n", opt->clearance_mm,
+            fmax(1, opt->clearance_mm));
     if (opt->split)
-        fprintf(f, "split_z_mm = %.10g; // --split: height of the cut plane above the centre\n",
-                opt->split_z_mm);
+        fprintf(f, "// --split: height of the cut plane above the centre\n"
+                   "split_z_mm = %.10g; // [%.10g:0.1:%.10g]\n",
+                opt->split_z_mm, fmin(-R, opt->split_z_mm), fmax(R, opt->split_z_mm));
     fprintf(f, "\n");
     for (int i = 0; i < tippe_design_n_parts(d); i++)
-        part_variables(f, d, i, s, opt);
+        part_variables(f, d, i, s, opt, 0);
+    fprintf(f, "\n/* [Hidden] */\n$fn = fn;\n");
+    for (int i = 0; i < tippe_design_n_parts(d); i++)
+        part_variables(f, d, i, s, opt, 1);
     fprintf(f, "\n");
     for (int i = 0; i < tippe_design_n_parts(d); i++)
         part_module(f, d, i);

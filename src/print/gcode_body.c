@@ -579,3 +579,4 @@ int tippe_gcode_match(const tippe_gcode_body *b, const tippe_gcode_expect *e,
     *out = p;
     return TIPPE_OK;
 }
+

@@ -136,10 +136,5 @@ int tippe_gcode_acc_finish(tippe_gcode_acc *a, tippe_gcode_body *out, tippe_erro
 /* The distance (mm) from (x, y) to the segment p0 -> p1 seen from above. */
 double tippe_gcode_distance_xy(double x, double y, const double p0[3], const double p1[3]);
 
-/* The same text read, the body's beads within keep_radius_mm of its axis kept
- * in *near (keep_radius_mm 0: none, near may be NULL). */
-int tippe_gcode_parse_near(const char *text, size_t len, const char *name,
-                           const tippe_gcode_options *opt, double keep_radius_mm,
-                           tippe_gcode_body *out, tippe_gcode_beads *near, tippe_error *err);
 
 #endif

@@ -55,6 +55,9 @@ typedef struct {
     int compute;        /* 1: runs on a worker (POST, JSON body); 0: answered at once (GET) */
     int lane;           /* SERVE_LANE_*: where it queues */
     void (*answer)(serve_server *s, const cJSON *req, serve_response *out);
+    /* 1: the body is a G-code's text (Content-Type text/x-gcode, up to
+     * TIPPE_SERVE_MAX_GCODE_BYTES), handed over as {"text", "name": ?name=} */
+    int gcode;
 } serve_route;
 
 /* A queue and the threads that take from it. The shared lane (sweeps, evals,
@@ -188,9 +191,23 @@ extern const serve_route tippe_serve_routes[];
 /* Drops the advice's kept answers (at a stop). */
 void tippe_serve_advice_forget(void);
 
+/* ---- serve_gcode.c: G-code uploads, read in memory and kept by id ---- */
+void tippe_serve_api_gcode(serve_server *s, const cJSON *req, serve_response *out);
+/* The body kept for an upload's id (the hex after "upload:"), and its file's name: 1,
+ * or 0 when it is not kept (any more). */
+int tippe_serve_gcode_find(const char *id, tippe_gcode_body *out, tippe_gcode_beads *beads,
+                           char *name, size_t size);
+void tippe_serve_gcode_forget(void);
+
+/* ---- serve_section.c: the section drawing (tippe export's SVG) ---- */
+void tippe_serve_api_section(serve_server *s, const cJSON *req, serve_response *out);
+
 /* ---- serve_zip.c: files of a folder into one zip in memory (libzip) ---- */
-int tippe_serve_zip_folder(const char *dir, const char *const *names, int n, char **out,
-                     size_t *len, tippe_error *err);
+/* ... and, when extra_name is not NULL, one more member from memory (the design as sent,
+ * which the build folder does not hold). */
+int tippe_serve_zip_folder(const char *dir, const char *const *names, int n,
+                           const char *extra_name, const char *extra, size_t extra_len,
+                           char **out, size_t *len, tippe_error *err);
 
 /* ---- serve_page.c (generated): the page's files ---- */
 typedef struct {

@@ -236,6 +236,7 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
     const int still_working = tippe_serve_work_join(s);
     tippe_serve_tmp_remove_all(s);
     tippe_serve_advice_forget();
+    tippe_serve_gcode_forget();
     if (s->o.log && sig > 0) {
         fprintf(s->o.log, "tippe serve: stopped by %s (%ld answered, %ld refused, %ld over "
                           "budget, %ld left by their client, %ld slow connections closed)\n",

@@ -426,15 +426,37 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
         snprintf(stem, sizeof stem, "%s", given->valuestring);
     if (tippe_serve_request_stem(req, "name", stem, sizeof stem, out))
         return;
-    tippe_design *d = tippe_serve_request_design(s, req, "design", stem, out);
+    /* the design travels in the zip as STEM.json, and the sheet names that file */
+    char file[96];
+    snprintf(file, sizeof file, "%s.json", stem);
+    tippe_design *d = tippe_serve_request_design(s, req, "design", file, out);
     if (!d)
         return;
+    char *design_text = NULL;
+    size_t design_len = 0;
+    const serve_design *shipped =
+        cJSON_IsString(given) ? tippe_serve_find_design(s, given->valuestring) : NULL;
+    if (shipped) {
+        design_text = malloc(shipped->len + 1);
+        if (design_text) {
+            memcpy(design_text, shipped->text, shipped->len);
+            design_len = shipped->len;
+        }
+    } else if ((design_text = cJSON_Print(given))) {
+        design_len = strlen(design_text);
+    }
+    if (!design_text) {
+        tippe_serve_respond_error(out, 503, NULL, "out of memory");
+        tippe_design_free(d);
+        return;
+    }
     char cat[4096 + 32], dir[4096];
     o.catalogue = tippe_build_catalogue_file(d, cat, sizeof cat);
     tippe_build_sheet *sheet = malloc(sizeof *sheet);
     char(*paths)[4096] = malloc(TIPPE_EXPORT_BUILD_FILES * sizeof *paths);
     if (!sheet || !paths || tippe_serve_tmp_make(s, dir, sizeof dir)) {
         tippe_serve_respond_error(out, 503, NULL, "cannot make a temporary folder for the build");
+        free(design_text);
         free(sheet);
         free(paths);
         tippe_design_free(d);
@@ -464,7 +486,9 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
     char *zip = NULL;
     size_t len = 0;
     if (!rc)
-        rc = tippe_serve_zip_folder(dir, (const char *const *)names, n, &zip, &len, &err);
+        rc = tippe_serve_zip_folder(dir, (const char *const *)names, n, file, design_text,
+                                    design_len, &zip, &len, &err);
+    free(design_text);
     tippe_serve_tmp_remove(s, dir);
     for (int i = 0; i < n; i++)
         free(names[i]);
@@ -611,6 +635,42 @@ void tippe_serve_advice_forget(void)
     pthread_mutex_unlock(&advice_lock);
 }
 
+/* What the whole sheet says beside its verdict, with tippe build --json's names and
+ * values: whether the model holds at the poles the launch checks stand on, the poles'
+ * openings and fixes (with their --set lines), the warnings and each setting's
+ * launch check as the sheet's table words it ("launch_checks": behaviour, text). 0, or
+ * -1 when out of memory. */
+static int sheet_extras(const tippe_build_sheet *sheet, cJSON *o)
+{
+    static const char *const keep[] = {"model_holds_at_poles", "polar_caps", "pole_fixes",
+                                       "warnings", NULL};
+    cJSON *whole = tippe_build_json(sheet);
+    if (!whole)
+        return -1;
+    for (int k = 0; keep[k]; k++) {
+        cJSON *x = cJSON_DetachItemFromObjectCaseSensitive(whole, keep[k]);
+        if (x && !cJSON_AddItemToObject(o, keep[k], x)) {
+            cJSON_Delete(x);
+            cJSON_Delete(whole);
+            return -1;
+        }
+    }
+    cJSON_Delete(whole);
+    cJSON *checks = cJSON_AddArrayToObject(o, "launch_checks");
+    for (int f = 0; checks && f < 3; f++) {
+        if (!sheet->set[f].reachable)
+            continue;
+        char text[400];
+        tippe_build_launch_text(sheet, f, text, sizeof text);
+        cJSON *e = cJSON_CreateObject();
+        if (!e || !cJSON_AddItemToArray(checks, e) ||
+            !cJSON_AddStringToObject(e, "behaviour", tippe_build_behaviour(f)) ||
+            !cJSON_AddStringToObject(e, "text", text))
+            return -1;
+    }
+    return checks ? 0 : -1;
+}
+
 /* POST /api/advice {design}: what the whole build sheet adds to the verdict: the
  * verdict's text with the launch checks (where a hole's opening at a pole undoes
  * it), the changes one can buy when it is not settable ("advice"), and the
@@ -653,6 +713,8 @@ static void api_advice(serve_server *s, const cJSON *req, serve_response *out)
     for (int k = 0; advice && !sheet->settable && k < sheet->n_advice; k++)
         if (!cJSON_AddItemToArray(advice, cJSON_CreateString(sheet->advice[k].text)))
             advice = NULL;
+    if (advice && sheet_extras(sheet, o_json))
+        advice = NULL;
     free(sheet);
     if (rc) {
         tippe_serve_respond_error(out, rc == TIPPE_EINPUT ? 400 : 500, "design", "%s", err.msg);
@@ -668,15 +730,17 @@ static void api_advice(serve_server *s, const cJSON *req, serve_response *out)
 }
 
 const serve_route tippe_serve_routes[] = {
-    {"/api/sweep", 1, SERVE_LANE_SHARED, api_sweep},
-    {"/api/eval", 1, SERVE_LANE_SHARED, api_eval},
-    {"/api/compare", 1, SERVE_LANE_SHARED, api_compare},
-    {"/api/check", 1, SERVE_LANE_SHARED, api_check},
-    {"/api/build", 1, SERVE_LANE_EXCLUSIVE, api_build},
-    {"/api/verdict", 1, SERVE_LANE_SHARED, api_verdict},
-    {"/api/advice", 1, SERVE_LANE_ADVICE, api_advice},
-    {"/api/animate", 1, SERVE_LANE_EXCLUSIVE, api_animate},
-    {NULL, 0, 0, NULL},
+    {"/api/sweep", 1, SERVE_LANE_SHARED, api_sweep, 0},
+    {"/api/eval", 1, SERVE_LANE_SHARED, api_eval, 0},
+    {"/api/compare", 1, SERVE_LANE_SHARED, api_compare, 0},
+    {"/api/check", 1, SERVE_LANE_SHARED, api_check, 0},
+    {"/api/build", 1, SERVE_LANE_EXCLUSIVE, api_build, 0},
+    {"/api/verdict", 1, SERVE_LANE_SHARED, api_verdict, 0},
+    {"/api/advice", 1, SERVE_LANE_ADVICE, api_advice, 0},
+    {"/api/animate", 1, SERVE_LANE_EXCLUSIVE, api_animate, 0},
+    {"/api/gcode", 1, SERVE_LANE_EXCLUSIVE, tippe_serve_api_gcode, 1},
+    {"/api/section", 1, SERVE_LANE_EXCLUSIVE, tippe_serve_api_section, 0},
+    {NULL, 0, 0, NULL, 0},
 };
 
 const serve_route *tippe_serve_find_route(const char *path)

@@ -5,6 +5,8 @@
  * the watchdog has its response (docs/serve.md, "Security" and "Limits"). */
 #include "serve/internal.h"
 
+#include "tippe/build.h"
+
 #include <microhttpd.h>
 
 #include <arpa/inet.h>
@@ -97,10 +99,46 @@ typedef struct {
     size_t len, cap;
     int too_large;
     double declared; /* Content-Length, 0 if none */
+    size_t limit;    /* the route's largest body: a JSON's, or an uploaded G-code's */
     int answered;    /* a response was queued at the first call (a refusal) */
     serve_job *job;  /* a request that computes, once handed over */
     int set_cookie;  /* the page was opened with the right ?token= */
 } conn_ctx;
+
+/* An uploaded G-code's request: {"text": the body, "name": ?name= (its file's name, for
+ * messages)}; NULL with out set for a body that is not text (a NUL byte: binary G-code). */
+static cJSON *gcode_request(struct MHD_Connection *con, const conn_ctx *c, serve_response *out)
+{
+    if (!c->body || !c->len) {
+        tippe_serve_respond_error(out, 400, "gcode", "gcode: the body is empty (send the G-code "
+                                                     "file's text)");
+        return NULL;
+    }
+    if (memchr(c->body, '\0', c->len)) {
+        tippe_serve_respond_error(out, 400, "gcode", "gcode: the body holds a NUL byte: not a "
+                                                     "G-code text (binary .bgcode is not read)");
+        return NULL;
+    }
+    const char *name = MHD_lookup_connection_value(con, MHD_GET_ARGUMENT_KIND, "name");
+    char *text = malloc(c->len + 1);
+    cJSON *o = text ? cJSON_CreateObject() : NULL;
+    if (text) {
+        memcpy(text, c->body, c->len);
+        text[c->len] = '\0';
+    }
+    cJSON *t = o ? cJSON_CreateStringReference(text) : NULL;
+    if (t)
+        t->type &= ~cJSON_IsReference; /* cJSON_Delete frees it (malloc, as cJSON's own) */
+    if (!t || !cJSON_AddItemToObject(o, "text", t) ||
+        (name && !cJSON_AddStringToObject(o, "name", name))) {
+        if (!t)
+            free(text);
+        cJSON_Delete(o);
+        tippe_serve_respond_error(out, 503, NULL, "out of memory");
+        return NULL;
+    }
+    return o;
+}
 
 static void add_common_headers(struct MHD_Response *resp, const char *type)
 {
@@ -385,6 +423,39 @@ static int answer_get(serve_server *s, const char *url, serve_response *r)
         r->len = d->len;
         return 1;
     }
+    if (!strcmp(url, "/api/catalogue")) {
+        /* the designs folder's catalogue, read now (a few KiB): the screws a page offers */
+        char file[4096 + 32];
+        snprintf(file, sizeof file, "%s/catalogue.json", s->designs_dir);
+        tippe_build_catalogue *c = NULL;
+        tippe_error err = {0};
+        if (tippe_build_catalogue_load(file, &c, &err)) {
+            tippe_serve_respond_error(r, 404, NULL, "no catalogue in the designs folder");
+            return 1;
+        }
+        cJSON *o = cJSON_CreateObject();
+        cJSON *arr = o ? cJSON_AddArrayToObject(o, "items") : NULL;
+        for (int k = 0; arr && k < c->n_sets; k++)
+            for (int i = 0; arr && i < c->sets[k].n_items; i++) {
+                const tippe_build_catalogue_item *it = &c->sets[k].items[i];
+                cJSON *e = cJSON_CreateObject();
+                if (!e || !cJSON_AddItemToArray(arr, e)) {
+                    cJSON_Delete(e);
+                    break;
+                }
+                cJSON_AddStringToObject(e, "set", c->sets[k].key);
+                cJSON_AddStringToObject(e, "title", c->sets[k].title);
+                cJSON_AddStringToObject(e, "name", it->name);
+                cJSON_AddStringToObject(e, "thread", it->thread);
+                cJSON_AddNumberToObject(e, "d_mm", it->d_mm);
+                cJSON_AddNumberToObject(e, "pitch_mm", it->pitch_mm);
+                cJSON_AddNumberToObject(e, "radius_mm", it->radius_mm);
+                cJSON_AddNumberToObject(e, "height_mm", it->height_mm);
+            }
+        tippe_build_catalogue_free(c);
+        tippe_serve_respond_json(r, 200, o);
+        return 1;
+    }
     if (!strcmp(url, "/api/materials")) {
         r->status = 200;
         r->type = "application/json";
@@ -437,14 +508,18 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
                               url);
         }
         if (rt) {
-            /* JSON only: a form elsewhere cannot post here without a preflight */
+            /* JSON only (a G-code upload: text/x-gcode, no form's type either): a form
+             * elsewhere cannot post here without a preflight */
             const char *type =
                 MHD_lookup_connection_value(con, MHD_HEADER_KIND, "Content-Type");
-            if (!type || strncasecmp(type, "application/json", 16)) {
+            const char *want = rt->gcode ? "text/x-gcode" : "application/json";
+            if (!type || strncasecmp(type, want, strlen(want))) {
                 c->answered = 1;
                 return send_error(s, con, 415, method, url,
-                                  "the body must be JSON (Content-Type: application/json)");
+                                  "the body must be %s (Content-Type: %s)",
+                                  rt->gcode ? "a G-code's text" : "JSON", want);
             }
+            c->limit = rt->gcode ? TIPPE_SERVE_MAX_GCODE_BYTES : TIPPE_SERVE_MAX_BODY_BYTES;
             const char *cl =
                 MHD_lookup_connection_value(con, MHD_HEADER_KIND, "Content-Length");
             /* A body over the limit is read and dropped, so that the client gets
@@ -454,10 +529,10 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
             if (length > 64.0 * (1 << 20)) {
                 c->answered = 1;
                 return send_error(s, con, 413, method, url,
-                                  "the body is %.20s bytes, more than the limit of %d (1 MiB)",
-                                  cl, TIPPE_SERVE_MAX_BODY_BYTES);
+                                  "the body is %.20s bytes, more than the limit of %zu (%zu MiB)",
+                                  cl, c->limit, c->limit >> 20);
             }
-            c->too_large = length > TIPPE_SERVE_MAX_BODY_BYTES;
+            c->too_large = length > (double)c->limit;
             c->declared = length;
         }
         if (get) {
@@ -480,7 +555,7 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
     if (*upload_data_size) {
         size_t n = *upload_data_size;
         *upload_data_size = 0;
-        if (c->too_large || c->len + n > TIPPE_SERVE_MAX_BODY_BYTES) {
+        if (c->too_large || c->len + n > c->limit) {
             /* a body without a length (chunked) has no end to wait for: the
              * connection is closed at the cap (libmicrohttpd cannot answer before
              * the body is read) */
@@ -521,16 +596,17 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *con, const char 
     c->answered = 1;
     if (c->too_large) /* only with a Content-Length: a chunked one was cut */
         return send_error(s, con, 413, method, url,
-                          "the body is %.0f bytes, more than the limit of %d (1 MiB)",
-                          c->declared, TIPPE_SERVE_MAX_BODY_BYTES);
+                          "the body is %.0f bytes, more than the limit of %zu (%zu MiB)",
+                          c->declared, c->limit, c->limit >> 20);
     serve_response r = {0};
-    cJSON *req = tippe_serve_request_parse(c->body, c->len, &r);
+    const serve_route *route = tippe_serve_find_route(url);
+    cJSON *req = route->gcode ? gcode_request(con, c, &r)
+                              : tippe_serve_request_parse(c->body, c->len, &r);
     free(c->body);
     c->body = NULL;
     if (!req)
         return send_response(s, con, &r, method, url, 0);
     /* only this thread (libmicrohttpd's) adds to the queues: room now is room */
-    const serve_route *route = tippe_serve_find_route(url);
     const int lane = route->lane;
     pthread_mutex_lock(&s->lock);
     const int full = s->lanes[lane].queued >= s->lanes[lane].max || s->stopping;

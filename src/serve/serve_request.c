@@ -264,11 +264,53 @@ tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, cons
                             key, kind(x));
         return NULL;
     }
+    /* a part's "print": {"gcode": "upload:ID"}: an uploaded G-code, kept by the server
+     * (serve_gcode.c), read in memory; any other G-code names a file and is refused */
+    tippe_design_gcode *gcodes = NULL;
+    int n_gcodes = 0;
+    const cJSON *parts = cJSON_IsObject(x) ? cJSON_GetObjectItemCaseSensitive(x, "parts") : NULL;
+    int i = 0;
+    for (const cJSON *p = cJSON_IsArray(parts) ? parts->child : NULL; p; p = p->next, i++) {
+        const cJSON *pr = cJSON_IsObject(p) ? cJSON_GetObjectItemCaseSensitive(p, "print") : NULL;
+        const cJSON *g = cJSON_IsObject(pr) ? cJSON_GetObjectItemCaseSensitive(pr, "gcode") : NULL;
+        const cJSON *pn = cJSON_GetObjectItemCaseSensitive(p, "name");
+        if (!cJSON_IsString(g) || strncmp(g->valuestring, "upload:", 7) || !cJSON_IsString(pn))
+            continue;
+        tippe_design_gcode *more = realloc(gcodes, (size_t)(n_gcodes + 1) * sizeof *gcodes);
+        if (!more) {
+            for (int k = 0; k < n_gcodes; k++)
+                tippe_gcode_beads_free(&gcodes[k].beads);
+            free(gcodes);
+            free(text);
+            tippe_serve_respond_error(out, 503, NULL, "out of memory");
+            return NULL;
+        }
+        gcodes = more;
+        char gname[128];
+        if (!tippe_serve_gcode_find(g->valuestring + 7, &gcodes[n_gcodes].body,
+                                    &gcodes[n_gcodes].beads, gname, sizeof gname)) {
+            for (int k = 0; k < n_gcodes; k++)
+                tippe_gcode_beads_free(&gcodes[k].beads);
+            free(gcodes);
+            free(text);
+            char field[96];
+            snprintf(field, sizeof field, "%s.parts[%d].print.gcode", key, i);
+            tippe_serve_respond_error(out, 400, field, "%s: parts[%d].print.gcode: the uploaded "
+                                      "G-code '%.40s' is not kept any more (the server keeps the "
+                                      "last 8): upload it again", key, i, g->valuestring);
+            return NULL;
+        }
+        snprintf(gcodes[n_gcodes].part, sizeof gcodes[n_gcodes].part, "%s", pn->valuestring);
+        n_gcodes++;
+    }
     tippe_error err = {0};
     tippe_design *d = NULL;
-    int rc = tippe_design_load_text(name, shipped ? shipped->text : text,
-                                    shipped ? shipped->len : len, s->designs_dir, NULL, 0, &d,
-                                    &err);
+    int rc = tippe_design_load_text_gcode(name, shipped ? shipped->text : text,
+                                          shipped ? shipped->len : len, s->designs_dir, gcodes,
+                                          n_gcodes, NULL, 0, &d, &err);
+    for (int k = 0; k < n_gcodes; k++)
+        tippe_gcode_beads_free(&gcodes[k].beads);
+    free(gcodes);
     free(text);
     if (rc) {
         /* the server's folders are nobody's business: its designs folder is "designs/" */

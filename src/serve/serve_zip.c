@@ -8,8 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-int tippe_serve_zip_folder(const char *dir, const char *const *names, int n, char **out,
-                           size_t *len, tippe_error *err)
+int tippe_serve_zip_folder(const char *dir, const char *const *names, int n,
+                           const char *extra_name, const char *extra, size_t extra_len,
+                           char **out, size_t *len, tippe_error *err)
 {
     *out = NULL;
     *len = 0;
@@ -31,6 +32,15 @@ int tippe_serve_zip_folder(const char *dir, const char *const *names, int n, cha
         if (!fs || zip_file_add(za, names[i], fs, ZIP_FL_ENC_UTF_8) < 0) {
             zip_source_free(fs);
             rc = tippe_error_set(err, TIPPE_ECOMPUTE, "cannot add %s to the zip: %s", names[i],
+                                 zip_strerror(za));
+        }
+    }
+    if (!rc && extra_name) {
+        /* the buffer is the caller's until zip_close below (freep 0) */
+        zip_source_t *ms = zip_source_buffer(za, extra, extra_len, 0);
+        if (!ms || zip_file_add(za, extra_name, ms, ZIP_FL_ENC_UTF_8) < 0) {
+            zip_source_free(ms);
+            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "cannot add %s to the zip: %s", extra_name,
                                  zip_strerror(za));
         }
     }
