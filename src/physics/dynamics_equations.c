@@ -309,6 +309,8 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
     double wk[3];
     cross3(w, k, wk);
     o->ring = 0;
+    o->creep_slow = 1.0; /* the full law unless creep_reduce slows it */
+    o->creep_power = 0.0;
     double wq[3];
     if (c->rim) {
         rim_geometry(c, o, wk);
