@@ -210,6 +210,31 @@ static int normal_force(const dyn_ctx *c, contact *o, const double wk[3], const 
     return 0;
 }
 
+/* The rolling constraint's right-hand side (run_try_stick's system, docs/dynamics.md,
+ * "Sticking"): d/dt V_Q = 0 reads K Fc = b, with
+ *   b = g e3 - a0 x q - omega x dq/dt,
+ * a0 the gyroscopic part of omega' (returned) and dq/dt = eps omega x k on the sphere,
+ * the rim's own rate on a rim (o->wqd). */
+static void rolling_rhs(const dyn_ctx *c, const contact *o, const double wk[3], double a0[3],
+                        double b[3])
+{
+    double a0q[3], wq_dot[3];
+    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
+    for (int i = 0; i < 3; i++)
+        a0[i] = minus_CmA_A_n * wk[i];
+    cross3(a0, o->q, a0q);
+    if (c->rim) {
+        memcpy(wq_dot, o->wqd, sizeof wq_dot);
+    } else {
+        cross3(o->w, wk, wq_dot);
+        for (int i = 0; i < 3; i++)
+            wq_dot[i] *= c->eps;
+    }
+    for (int i = 0; i < 3; i++)
+        b[i] = -a0q[i] - wq_dot[i];
+    b[2] += c->g;
+}
+
 /* The patch law with its creep reduced (docs/dynamics.md, "The creep reduced"; issue 38).
  * Where the patch drills slowly the creep drag mu_c c1 / (a |omega_n|) relaxes the slip
  * at a rate k far above the motion's (2e4 /s on the M12 at 1 rad/s), and an explicit
@@ -249,27 +274,14 @@ static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const
     compliance(c, o->k, o->q, K);
     const double s = k_cap / k_rate;
     /* The rolling constraint with the couples per unit Rn tc:
-     *   K Fc + Rn (I^-1 tc) x q = g e3 - a0 x q - omega x dq/dt   (run_try_stick's system) */
+     *   K Fc + Rn (I^-1 tc) x q = b   (rolling_rhs) */
     const double tc[3] = {u->Mroll[0], u->Mroll[1], u->M};
-    double a0[3], a0q[3], wq_dot[3], b[3], wc[3], cq[3], Fs[3], tau[3], wt[3];
-    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
-    for (int i = 0; i < 3; i++)
-        a0[i] = minus_CmA_A_n * wk[i];
-    cross3(a0, o->q, a0q);
-    if (c->rim)
-        memcpy(wq_dot, o->wqd, sizeof wq_dot);
-    else {
-        cross3(o->w, wk, wq_dot);
-        for (int i = 0; i < 3; i++)
-            wq_dot[i] *= c->eps;
-    }
+    double a0[3], b[3], wc[3], cq[3], Fs[3], tau[3], wt[3];
+    rolling_rhs(c, o, wk, a0, b);
     tippe_dynamics_inv_inertia(c, o->k, tc, wc);
     cross3(wc, o->q, cq);
-    for (int i = 0; i < 3; i++) {
-        b[i] = -a0q[i] - wq_dot[i];
+    for (int i = 0; i < 3; i++)
         K[i][2] += cq[i];
-    }
-    b[2] += c->g;
     if (tippe_dynamics_solve3(K, b, Fs) || !(Fs[2] > 0.0))
         return; /* no rolling solution here: the full law */
     cross3(o->q, Fs, tau);
@@ -338,19 +350,8 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
          * i.e. K Fc = g e3 - a0 x q - eps omega x (omega x k), a0 the gyroscopic
          * part of omega'. Its z row is eq 3.17; K is positive definite, so Fc is
          * always determined (no Painleve case while rolling). */
-        double a0[3], a0q[3], wwk[3], b[3], Fc[3], tau[3], wt[3];
-        const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
-        for (int i = 0; i < 3; i++)
-            a0[i] = minus_CmA_A_n * wk[i];
-        cross3(a0, o->q, a0q);
-        cross3(w, wk, wwk);
-        if (c->rim)
-            for (int i = 0; i < 3; i++)
-                b[i] = -a0q[i] - o->wqd[i]; /* omega x dq/dt: the contact runs on the rim */
-        else
-            for (int i = 0; i < 3; i++)
-                b[i] = -a0q[i] - c->eps * wwk[i];
-        b[2] += c->g;
+        double a0[3], b[3], Fc[3], tau[3], wt[3];
+        rolling_rhs(c, o, wk, a0, b);
         compliance(c, k, o->q, o->K);
         if (tippe_dynamics_solve3(o->K, b, Fc))
             return 1;

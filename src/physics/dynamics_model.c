@@ -195,3 +195,92 @@ int tippe_dynamics_precession(const tippe_dynamics_model *model, double theta, d
 }
 
 /* ---- the equations of motion ------------------------------------------- */
+
+/* A run's inputs, each refused with what is wrong and its range (TIPPE_EINPUT): the
+ * top, g and the friction law's parameters, the launch state, the accuracy, the
+ * openings and the margin. */
+int tippe_dynamics_check_inputs(const tippe_dynamics_model *model,
+                                const tippe_dynamics_initial *ic,
+                                const tippe_dynamics_options *opt, tippe_error *err)
+{
+    const tippe_top *t = &model->top;
+    if (!(t->m > 0 && isfinite(t->m)) || !(t->R > 0 && isfinite(t->R)) ||
+        !(t->A > 0 && isfinite(t->A)) || !(t->C > 0 && isfinite(t->C)))
+        return tippe_error_set(err, TIPPE_EINPUT, "top: m, R, A and C must be positive and finite");
+    if (!(t->eps >= 0 && t->eps < t->R))
+        return tippe_error_set(err, TIPPE_EINPUT, "top: eps = %g m must satisfy 0 <= eps < R = %g m",
+                               t->eps, t->R);
+    if (!(model->g > 0 && isfinite(model->g)))
+        return tippe_error_set(err, TIPPE_EINPUT, "g = %g m/s^2 must be positive", model->g);
+    if (!(model->mu >= 0 && isfinite(model->mu)))
+        return tippe_error_set(err, TIPPE_EINPUT, "mu = %g s/m must be >= 0", model->mu);
+    if (model->law != TIPPE_FRICTION_VISCOUS && model->law != TIPPE_FRICTION_COULOMB &&
+        model->law != TIPPE_FRICTION_COULOMB_CREEP && model->law != TIPPE_FRICTION_PATCH)
+        return tippe_error_set(err, TIPPE_EINPUT, "unknown friction law %d", (int)model->law);
+    if (model->law == TIPPE_FRICTION_PATCH) {
+        /* a patch larger than the sphere is no patch: a < R/2 keeps Hertz's small-contact
+         * assumption within reach, and refuses a nonsensical input at once */
+        if (!(model->patch_radius_m >= 0 && model->patch_radius_m <= 0.5 * t->R))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "patch radius %g m must be in [0, R/2 = %g m]",
+                                   model->patch_radius_m, 0.5 * t->R);
+        if (!(model->rolling_arm_m >= 0 && model->rolling_arm_m <= 0.1 * t->R))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "rolling resistance arm %g m must be in [0, R/10 = %g m]",
+                                   model->rolling_arm_m, 0.1 * t->R);
+        if (!(model->patch_E_star_pa >= 0 && isfinite(model->patch_E_star_pa)))
+            return tippe_error_set(err, TIPPE_EINPUT, "contact modulus E* = %g Pa must be >= 0",
+                                   model->patch_E_star_pa);
+        if (!(tippe_dynamics_patch_radius(model) <= 0.5 * t->R))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "Hertz patch radius %g m (E* %g Pa, load m g) exceeds R/2 = "
+                                   "%g m: the table or ball is too soft for the model",
+                                   tippe_dynamics_patch_radius(model), model->patch_E_star_pa,
+                                   0.5 * t->R);
+    }
+    if (model->law != TIPPE_FRICTION_VISCOUS) {
+        if (!(model->mu_c >= 0 && model->mu_c <= 1e6))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "Coulomb friction coefficient mu_c = %g must be in [0, 1e6]",
+                                   model->mu_c);
+        if (!(model->slip_scale_m_s >= 0 && model->slip_scale_m_s <= 1e3))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "Coulomb slip scale v_s = %g m/s must be in [0, 1e3] "
+                                   "(0: the default %g m/s)",
+                                   model->slip_scale_m_s, TIPPE_COULOMB_SLIP_SCALE_M_S);
+        if (!(model->creep_cap >= 0 && model->creep_cap <= 1e6))
+            return tippe_error_set(err, TIPPE_EINPUT,
+                                   "the creep reduction's cap %g must be in [0, 1e6] (0: the "
+                                   "full law)", model->creep_cap);
+    }
+    if (!(ic->theta >= 0 && ic->theta <= M_PI))
+        return tippe_error_set(err, TIPPE_EINPUT, "initial theta = %g rad must be in [0, pi]",
+                               ic->theta);
+    if (!isfinite(ic->theta_dot) || !isfinite(ic->phi_dot) || !isfinite(ic->spin) ||
+        !isfinite(ic->U) || !isfinite(ic->V))
+        return tippe_error_set(err, TIPPE_EINPUT, "initial state must be finite");
+    if (!(opt->t_end > 0 && isfinite(opt->t_end)))
+        return tippe_error_set(err, TIPPE_EINPUT, "t_end = %g s must be positive", opt->t_end);
+    if (!tippe_dynamics_stepper_type(opt->accuracy.stepper))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "unknown stepper '%s' (rk2, rk4, rkf45, rkck, rk8pd, rk1imp, "
+                               "rk2imp, rk4imp, bsimp, msadams, msbdf)",
+                               opt->accuracy.stepper);
+    if (!(opt->accuracy.rtol >= 1e-14 && opt->accuracy.rtol <= 1e-2))
+        return tippe_error_set(err, TIPPE_EINPUT, "rtol = %g must be in [1e-14, 1e-2]",
+                               opt->accuracy.rtol);
+    if (opt->max_steps < 0)
+        return tippe_error_set(err, TIPPE_EINPUT, "max_steps = %ld must be >= 0 (0: no budget)",
+                               opt->max_steps);
+    const double *cap = opt->cap_half_angle_rad, *rim = t->rim_half_angle_rad;
+    if (!(cap[0] >= 0 && cap[0] < 0.5 * M_PI && cap[1] >= 0 && cap[1] < 0.5 * M_PI) ||
+        !(rim[0] >= 0 && rim[0] < 0.5 * M_PI && rim[1] >= 0 && rim[1] < 0.5 * M_PI))
+        return tippe_error_set(err, TIPPE_EINPUT,
+                               "the openings' half-angles (%g, %g rad; top %g, %g rad) must "
+                               "be in [0, pi/2)",
+                               cap[0], cap[1], rim[0], rim[1]);
+    if (!(opt->margin_factor >= 1.0 && opt->margin_factor <= 1e6))
+        return tippe_error_set(err, TIPPE_EINPUT, "margin_factor = %g must be in [1, 1e6]",
+                               opt->margin_factor);
+    return TIPPE_OK;
+}

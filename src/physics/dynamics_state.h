@@ -65,6 +65,11 @@ typedef struct {
     double sqrt_g_over_R; /* the rocking rate's scale, rad/s */
 } dyn_ctx;
 
+/* The checks of a run's inputs (dynamics_model.c), before anything is set up. */
+int tippe_dynamics_check_inputs(const tippe_dynamics_model *model,
+                                const tippe_dynamics_initial *ic,
+                                const tippe_dynamics_options *opt, tippe_error *err);
+
 /* Tilts from a pole below RIM_FACE_SIN (sine) stand on the opening's flat face, not
  * on one point of its rim. A top whose spin is gone rocks on its flat end, its tilt
  * passing through 0: the rigid rim's contact would jump to the opposite point of the
