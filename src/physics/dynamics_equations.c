@@ -35,39 +35,46 @@ void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const doubl
 
 /* K P: the change of the contact point's velocity V_Q = v + omega x q that a
  * force (or impulse) P at the contact makes, P/m + (I^-1 (q x P)) x q. K is
- * symmetric positive definite (the contact's Delassus matrix). */
+ * symmetric positive definite (the contact's Delassus matrix). In closed form, with
+ * I^-1 x = (x - beta (x.k) k) / A, beta = 1 - A/C (eq 3.13) and p = k x q:
+ *   (q x P) x q = |q|^2 P - (q.P) q,  (q x P).k = p.P,  (k x q) = p, so
+ *   K = (1/m + |q|^2/A) 1 - (q q^T + beta p p^T) / A,
+ * a third of the work of applying I^-1 to three unit forces (the patch law's creep
+ * reduction builds it at every evaluation). */
 static void compliance(const dyn_ctx *c, const double k[3], const double q[3], double K[3][3])
 {
-    for (int j = 0; j < 3; j++) {
-        double e[3] = {0.0, 0.0, 0.0}, qe[3], w[3], wq[3];
-        e[j] = 1.0;
-        cross3(q, e, qe);
-        tippe_dynamics_inv_inertia(c, k, qe, w);
-        cross3(w, q, wq);
-        for (int i = 0; i < 3; i++)
-            K[i][j] = wq[i] + (i == j ? 1.0 / c->m : 0.0);
-    }
+    double p[3];
+    cross3(k, q, p);
+    const double inv_A = c->inv_A, beta = c->one_minus_A_over_C;
+    const double diag = 1.0 / c->m + dot3(q, q) * inv_A;
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) {
+            const double kij = (i == j ? diag : 0.0) - (q[i] * q[j] + beta * p[i] * p[j]) * inv_A;
+            K[i][j] = K[j][i] = kij;
+        }
 }
 
-/* x = K^-1 b by Cramer's rule (3 x 3, K positive definite: det > 0). */
+/* x = K^-1 b by the adjugate (3 x 3; K positive definite, or the rolling system with
+ * the patch's couples, nearly so: det > 0). */
 int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3])
 {
-    const double c0 = K[1][1] * K[2][2] - K[1][2] * K[2][1];
-    const double c1 = K[1][2] * K[2][0] - K[1][0] * K[2][2];
-    const double c2 = K[1][0] * K[2][1] - K[1][1] * K[2][0];
-    const double det = K[0][0] * c0 + K[0][1] * c1 + K[0][2] * c2;
+    const double c00 = K[1][1] * K[2][2] - K[1][2] * K[2][1];
+    const double c01 = K[1][2] * K[2][0] - K[1][0] * K[2][2];
+    const double c02 = K[1][0] * K[2][1] - K[1][1] * K[2][0];
+    const double det = K[0][0] * c00 + K[0][1] * c01 + K[0][2] * c02;
     if (!(det > 0.0))
         return 1;
-    double M[3][3];
-    for (int j = 0; j < 3; j++) {
-        memcpy(M, K, sizeof M);
-        for (int i = 0; i < 3; i++)
-            M[i][j] = b[i];
-        x[j] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
-                M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-                M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
-               det;
-    }
+    const double c10 = K[0][2] * K[2][1] - K[0][1] * K[2][2];
+    const double c11 = K[0][0] * K[2][2] - K[0][2] * K[2][0];
+    const double c12 = K[0][1] * K[2][0] - K[0][0] * K[2][1];
+    const double c20 = K[0][1] * K[1][2] - K[0][2] * K[1][1];
+    const double c21 = K[0][2] * K[1][0] - K[0][0] * K[1][2];
+    const double c22 = K[0][0] * K[1][1] - K[0][1] * K[1][0];
+    const double inv_det = 1.0 / det;
+    /* x_j = sum_i C_ij b_i / det, C the cofactors (adj K = C^T) */
+    x[0] = (c00 * b[0] + c10 * b[1] + c20 * b[2]) * inv_det;
+    x[1] = (c01 * b[0] + c11 * b[1] + c21 * b[2]) * inv_det;
+    x[2] = (c02 * b[0] + c12 * b[1] + c22 * b[2]) * inv_det;
     return 0;
 }
 
@@ -126,8 +133,9 @@ static void rim_geometry(const dyn_ctx *c, contact *o, const double wk[3])
         cross3(o->w, qd, o->wqd);
         return;
     }
-    /* off the face S >= its edge's sine (> 0): the tilt's direction u_h / S is defined */
-    const double S = hypot(u[0], u[1]);
+    /* off the face S >= its edge's sine (> 0): the tilt's direction u_h / S is defined
+     * (and sqrt of the squares is exact enough: no underflow above 1e-154) */
+    const double S = sqrt(u[0] * u[0] + u[1] * u[1]);
     const double hx = u[0] / S, hy = u[1] / S;
     const double Sd = hx * ud[0] + hy * ud[1];
     const double hdx = (ud[0] - hx * Sd) / S, hdy = (ud[1] - hy * Sd) / S;
@@ -258,8 +266,12 @@ static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const
 {
     o->creep_slow = 1.0;
     o->creep_power = 0.0;
-    const double slip = hypot(o->VQ[0], o->VQ[1]);
-    const double drag = slip > 0.0 ? hypot(u->f[0], u->f[1]) / slip : c->mu_c / c->vs;
+    /* squares, not hypot (a tenth of an evaluation's cost): a slip under 1e-154 m/s
+     * squares to 0 and takes the bound's value at rest; a force that underflows gives
+     * drag 0, the full law, which is never wrong */
+    const double slip2 = o->VQ[0] * o->VQ[0] + o->VQ[1] * o->VQ[1];
+    const double f2 = u->f[0] * u->f[0] + u->f[1] * u->f[1];
+    const double drag = slip2 > 0.0 ? sqrt(f2 / slip2) : c->mu_c / c->vs;
     /* K's tangential trace without K: K_jj = 1/m + (q x e_j).I^-1 (q x e_j), with
      * I^-1 x = (x - (1 - A/C)(x.k) k) / A, q x e_x = (0, q_z, -q_y), q x e_y = (-q_z, 0, q_x) */
     const double *q = o->q, *k = o->k;
