@@ -78,62 +78,84 @@ SWEEP = {"design": "m12-setscrew-printed"}
 # radius sensitivity (6 s of one core here)
 LONG = {"design": "m12-setscrew-printed", "z2_mm": 10, "friction": "patch", "spin_rev_s": 20}
 
+# The scheduling facts below are asserted by order and by the server's own CPU time,
+# not by wall-clock bounds: under a loaded machine (the suite runs two tests at a time)
+# every request slows alike, but a sweep queued behind a build still answers after it,
+# and a job that goes on computing still spends the server's CPU.
+
 # ---- three builds and a film at once: they run on their own lane, one at a time,
-# and never hold the workers that answer the sweeps (issue 36: a 0.13 s eval waited 30 s)
-with Server(tippe) as srv:
-    normal = sorted(timed(srv, "/api/sweep", SWEEP)[1] for _ in range(5))[2]
+# and never hold the workers that answer the sweeps (issue 36: a 0.13 s eval waited 30 s).
+# The budget is raised so that a loaded machine cannot turn the queued jobs into 503s:
+# the lanes are under test here, the budget below.
+with Server(tippe, "--budget", "600") as srv:
     jobs = [("/api/build", {"design": d}) for d in
             ("m12-setscrew-printed", "shell-rod-nylon-printed", "shell-band-printed")]
     jobs.append(("/api/animate", {"design": "m12-setscrew", "z2_mm": 10, "spin_rev_s": 20}))
-    done = []
+    done = []  # (status, time answered)
     threads = [threading.Thread(target=lambda p=p, b=b: done.append(
-        srv.post(p, b, raw=True, timeout=120)[0])) for p, b in jobs]
+        (srv.post(p, b, raw=True, timeout=300)[0], time.time()))) for p, b in jobs]
     for t in threads:
         t.start()
     time.sleep(0.5)
-    during = [timed(srv, "/api/sweep", SWEEP) for _ in range(5)]
+    during = [srv.post("/api/sweep", SWEEP)[0] for _ in range(5)]
+    t_sweeps = time.time()
     for t in threads:
         t.join()
-    slow = max(x[1] for x in during)
-    check(all(x[0] == 200 for x in during) and slow <= 3 * normal + 0.2,
-          "during three builds and a film every sweep answers within %.3f s (5 one after "
-          "another; alone %.3f s; at most 3 times and 0.2 s, on 2 shared cores)" % (slow, normal))
-    check(sorted(done) == [200] * 4, "the builds and the film are made (%s)" % sorted(done))
+    # the jobs take their lane one at a time (seconds of CPU each): five sweeps held
+    # behind them would answer after the last of them
+    last_job = max(x[1] for x in done)
+    check(during == [200] * 5 and t_sweeps < last_job,
+          "during three builds and a film five sweeps answer before the jobs end "
+          "(%.2f s before the last)" % (last_job - t_sweeps))
+    check(sorted(x[0] for x in done) == [200] * 4,
+          "the builds and the film are made (%s)" % sorted(x[0] for x in done))
 
-# ---- the advice (the whole sheet, 1.4 s here) has a lane of its own: it never holds the
-# one worker that answers the sweeps
+# ---- the advice (the whole sheet, 1.4 s of CPU here) has a lane of its own: it never
+# holds the one worker that answers the sweeps, so a sweep asked while it computes
+# answers first
 with Server(tippe, "--workers", "1") as srv:
     design = json.load(open(os.path.join(REPO, "designs", "shell-rod-nylon-printed.json")))
     design["notes"] = "a new text: nothing kept"
-    th = threading.Thread(target=lambda: srv.post("/api/advice", {"design": design}))
+    order = []
+    th = threading.Thread(target=lambda: (srv.post("/api/advice", {"design": design}),
+                                          order.append("advice")))
     th.start()
     time.sleep(0.2)
-    st2, t_sweep, _ = timed(srv, "/api/sweep", SWEEP)
+    st2, _, _ = srv.post("/api/sweep", SWEEP)
+    order.append("sweep")
     th.join()
-    check(st2 == 200 and t_sweep < 0.5,
-          "an advice being computed: the one worker answers a sweep in %.2f s" % t_sweep)
+    check(st2 == 200 and order == ["sweep", "advice"],
+          "an advice being computed: the one worker answers a sweep first (%s)" % order)
 
-# ---- a request past its budget frees its worker at once, not when its work would end
+# ---- a request past its budget frees its worker at once, not when its work would end:
+# the server's CPU from the 503 to the next sweep's answer is the sweep's, not the
+# rest of a 6 s check (a check that went on would add seconds)
 with Server(tippe, "--workers", "1", "--budget", "1") as srv:
     st, t_long, _ = timed(srv, "/api/check", LONG)
-    st2, t_sweep, _ = timed(srv, "/api/sweep", SWEEP)
-    check(st == 503 and st2 == 200 and t_sweep < 1.0,
+    c0 = cpu_s(srv.proc.pid)
+    st2, _, _ = srv.post("/api/sweep", SWEEP)
+    spent = cpu_s(srv.proc.pid) - c0
+    check(st == 503 and st2 == 200 and spent < 1.0,
           "a 6 s check over a 1 s budget: 503 at %.2f s, and the one worker answers a sweep "
-          "%.2f s later (cancelled, not finished)" % (t_long, t_sweep))
+          "for %.2f s of the server's CPU (cancelled, not finished; at most 1 s)" % (t_long, spent))
 
 # ---- so does a request whose client has gone (a page that moved on to a newer edit)
 with Server(tippe, "--workers", "1") as srv:
     import socket
     body = json.dumps(LONG).encode()
     c = socket.create_connection((srv.host, srv.port))
+    c0 = cpu_s(srv.proc.pid)
     c.sendall(("POST /api/check HTTP/1.1\r\nHost: %s:%d\r\nContent-Type: application/json\r\n"
                "Content-Length: %d\r\n\r\n" % (srv.host, srv.port, len(body))).encode() + body)
     time.sleep(0.5)
     c.close()
-    st2, t_sweep, _ = timed(srv, "/api/sweep", SWEEP)
-    check(st2 == 200 and t_sweep < 1.0,
-          "a 6 s check whose client left after 0.5 s: the one worker answers a sweep %.2f s "
-          "later (cancelled)" % t_sweep)
+    st2, _, _ = srv.post("/api/sweep", SWEEP)
+    spent = cpu_s(srv.proc.pid) - c0
+    # the check is noticed gone within a second of the worker's CPU (issue 36), so the
+    # whole exchange costs under 2 s of CPU where the finished check costs 6
+    check(st2 == 200 and spent < 2.0,
+          "a 6 s check whose client left after 0.5 s, then a sweep: %.2f s of the server's "
+          "CPU in all (cancelled; the whole check is ~6 s)" % spent)
 
 print("%d passed, %d failed" % (passed, failed))
 sys.exit(1 if failed else 0)
