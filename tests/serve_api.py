@@ -160,8 +160,11 @@ with Server(tippe) as srv:
     for name in names:
         st, _, v = srv.post("/api/verdict", {"design": name})
         st2, _, a = srv.post("/api/advice", {"design": name})
-        if st != 200 or st2 != 200 or any(v[k] != a[k] for k in v if k != "text"):
-            bad.append(name)
+        if st != 200 or st2 != 200:
+            bad.append("%s (status %d, %d)" % (name, st, st2))
+        elif any(v[k] != a[k] for k in v if k != "text"):
+            bad.append("%s (%s)" % (name, ", ".join("%s: %r against %r" % (k, v[k], a.get(k))
+                                                    for k in v if k != "text" and v[k] != a.get(k))))
     check(not bad, "every shipped design: /api/verdict as /api/advice's whole sheet%s" %
           ("" if not bad else " except " + ", ".join(bad)))
     st, _, e = srv.post("/api/verdict", {"design": "m12-setscrew", "z2_mm": 3})
