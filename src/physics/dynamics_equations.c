@@ -135,10 +135,10 @@ static void rim_geometry(const dyn_ctx *c, contact *o, const double wk[3])
     }
     /* off the face S >= its edge's sine (> 0): the tilt's direction u_h / S is defined
      * (and sqrt of the squares is exact enough: no underflow above 1e-154) */
-    const double S = sqrt(u[0] * u[0] + u[1] * u[1]);
-    const double hx = u[0] / S, hy = u[1] / S;
+    const double S = sqrt(u[0] * u[0] + u[1] * u[1]), inv_S = 1.0 / S;
+    const double hx = u[0] * inv_S, hy = u[1] * inv_S;
     const double Sd = hx * ud[0] + hy * ud[1];
-    const double hdx = (ud[0] - hx * Sd) / S, hdy = (ud[1] - hy * Sd) / S;
+    const double hdx = (ud[0] - hx * Sd) * inv_S, hdy = (ud[1] - hy * Sd) * inv_S;
     const double W[3] = {u[2] * hx, u[2] * hy, -S};
     const double Wd[3] = {ud[2] * hx + u[2] * hdx, ud[2] * hy + u[2] * hdy, -Sd};
     double qd[3];
@@ -158,7 +158,7 @@ static void rim_geometry(const dyn_ctx *c, contact *o, const double wk[3])
  * is kept as it is. */
 static double rim_viscous_mu(const dyn_ctx *c, double slip2)
 {
-    return c->mu / sqrt(1.0 + c->mu * c->mu * slip2 / (c->rim_mu_c * c->rim_mu_c));
+    return c->mu / sqrt(1.0 + c->rim_mu_ratio2 * slip2);
 }
 
 /* The couple about e3 per unit Rn of the face within RIM_FACE_SIN of upright, as a

@@ -33,6 +33,7 @@ void tippe_dynamics_set_rims(dyn_ctx *c, const tippe_dynamics_model *model,
                                             (c->rim_rho[p] + c->rim_r[p]));
     }
     c->rim_mu_c = model->mu_c > 0.0 ? model->mu_c : TIPPE_LAUNCH_DEFAULT_MU_C;
+    c->rim_mu_ratio2 = (model->mu / c->rim_mu_c) * (model->mu / c->rim_mu_c);
     c->min_stage_rim = INFINITY;
 }
 

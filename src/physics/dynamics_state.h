@@ -59,6 +59,7 @@ typedef struct {
     double rim_face_sin[2]; /* the face's edge: RIM_FACE_SIN, or half the rim's sine if less */
     double rim_mu_c;      /* viscous law on a rim: the Coulomb coefficient its force
                              saturates at (dynamics_equations.c, rim_friction) */
+    double rim_mu_ratio2; /* (mu / rim_mu_c)^2, s^2/m^2: the saturation's scale, once */
     double min_stage_rim; /* least rim_stay over the stages of a step */
     double creep_cap;     /* patch law: the creep's relaxation held to at most creep_cap
                              times the motion's rate (creep_reduce); 0: the full law */
