@@ -74,8 +74,12 @@ static void test_default_cylinder(void)
         double disc = M_PI * pow(R - d_f, 2) * h;
         walls += ring;
         /* solid: the first and last layer (bottom, top surfaces) and the
-         * three above / below them (4 layers each way) */
-        if (i < 4 || i >= 96)
+         * three above / below them (4 layers each way); the first solid layer
+         * over the sparse infill (96) is a bridge over infill
+         * (PrintObject::bridge_over_infill), 0.4 mm round threads 0.45 mm apart */
+        if (i == 96)
+            solid += disc / h * M_PI * 0.4 * MM * 0.4 * MM / 4 / (0.45 * MM);
+        else if (i < 4 || i > 96)
             solid += disc;
         else {
             sparse += bulk * f * disc;
@@ -97,6 +101,20 @@ static void test_default_cylinder(void)
     tippe_moments m40 = tippe_print_sliced_at(&o, &s, 0.4, &sp40, NULL);
     CHECK_CLOSE(sp40, sparse / 0.15 * 0.4, 1e-12, "sparse at 40 %%");
     CHECK(m40.m > at.m, "more infill, more mass");
+    double disc96 = M_PI * pow(R - (0.5 * (0.45 * MM - s_reg) + 1.75 * s_reg), 2) * h;
+    double bridge96 = disc96 / h * M_PI * 0.4 * MM * 0.4 * MM / 4 / (0.45 * MM);
+    /* thick_bridges off: the bridge is the solid infill's own line, no extra
+     * (LayerRegion::bridging_flow) */
+    tippe_print_settings thin = s;
+    thin.thick_bridges = 0;
+    tippe_print_sliced o2;
+    CHECK(tippe_print_slice_moments(&cyl, NULL, 0, &thin, 0, &o2, &err) == 0, "%s", err.msg);
+    CHECK_CLOSE(o2.solid_m3, solid - bridge96 + disc96, 1e-12, "thin bridges: solid infill");
+    /* at 100 % there is no bridge over infill (fill_density 100 skips it), and
+     * the cylinder has no bridge over air: thick and thin bridges deposit the same */
+    CHECK_CLOSE(tippe_print_sliced_at(&o, &s, 1.0, NULL, NULL).m,
+                tippe_print_sliced_at(&o2, &thin, 1.0, NULL, NULL).m, 1e-12,
+                "100 %%: no bridge over infill");
 }
 
 /* A tube (a cylinder with a hole through it): its layers are rings with walls

@@ -155,6 +155,8 @@ typedef struct {
     double infill_overlap;         /* of the perimeter spacing */
     double anchor_mm, anchor_max_mm; /* infill_anchor, infill_anchor_max */
     double nozzle_mm;              /* nozzle_diameter: bridges and overhangs are round threads */
+    int thick_bridges;             /* thick_bridges: 1 bridges are round threads of the nozzle's
+                                      diameter; 0 the role's own flat lines */
     /* where a weighed mass (measured_mass_g) puts what the model lacks: 0 all in
      * the sparse infill (the infill that gives the mass), 1 all on every line (a
      * flow factor); the tolerance bands span the two readings */
@@ -214,6 +216,8 @@ typedef struct {
     /* what tippe_print_sliced_at needs for another infill (unit density, no flow):
      * walls and solid infill, the sparse region, its boundary band s/2 wide */
     tippe_moments fixed, sparse_region, sparse_band;
+    /* what the bridges over sparse infill add to the solid infill (none at 100 %) */
+    tippe_moments over_infill;
     double s_fill_m;         /* the infill lines' spacing (layers after the first) */
 } tippe_print_sliced;
 

@@ -153,6 +153,7 @@ typedef struct {
     rings outline, walls, infill, surface;
     rings slice_surface; /* the slice's own top and bottom (perimeters' area included) */
     rings bridge;       /* bottom surfaces over air, grown onto their support: bridged */
+    rings solid, sparse; /* its solid infill (surfaces included) and the rest of its infill */
 } layer_t;
 
 /* A line of width w laid in layers t thick is a band w - t (1 - pi/4) wide
@@ -228,49 +229,40 @@ static void walls_and_infill(const tippe_print_settings *s, layer_t *L)
 }
 
 /* Layer i's top and bottom fill surfaces (PrintObject::detect_surfaces_type):
- * what of its infill region the layer above (below) does not cover, opened by
- * w_e / 10; the first layer is all bottom. Grown by EXTERNAL_INFILL_MARGIN
+ * what of its slice the layer above (below) does not cover, opened by w_e / 10
+ * (the first layer is all bottom), and only then clipped to the infill region
+ * (LayerRegion::slices_to_fill_surfaces_clipped): a step of the outline wider
+ * than d_f leaves a fill surface however thin. Grown by EXTERNAL_INFILL_MARGIN
  * within the infill region (2.5's process_external_surfaces). */
 static void surfaces(const tippe_print_settings *s, layer_t *layers, int n_layers, int i)
 {
     layer_t *L = &layers[i];
-    rings top, bottom, both, open;
     static const rings none = {0};
-    rings_subtract(&L->infill, i + 1 < n_layers ? &layers[i + 1].outline : &none, &top);
-    if (i == 0)
-        bottom = L->infill;
-    else
-        rings_subtract(&L->infill, &layers[i - 1].outline, &bottom);
-    rings_union(&top, &bottom, &both);
-    if (s->top_bottom_layers == 0)
-        both.n = 0; /* no solid layers: surfaces are filled as the rest (PrintObject.cpp) */
     double d = 0.5 * SURFACE_OPENING_FACTOR * L->w_ext;
-    /* the same surfaces of the whole slice, the perimeters' area included: the
+    /* the slice's own top and bottom, the perimeters' area included: the
      * vertical shells take these too (discover_vertical_shells' cache of
-     * layerm.slices' stTop and stBottom, beside the fill surfaces'), and a step
-     * wider than d_f - 1.05 s reaches further in than the fill surfaces do */
-    {
-        rings st, sb, sboth;
-        rings_subtract(&L->outline, i + 1 < n_layers ? &layers[i + 1].outline : &none, &st);
-        if (i == 0)
-            sb = L->outline;
-        else
-            rings_subtract(&L->outline, &layers[i - 1].outline, &sb);
-        rings_union(&st, &sb, &sboth);
-        if (s->top_bottom_layers == 0)
-            sboth.n = 0;
-        rings_opening(&sboth, d, d, &L->slice_surface);
-    }
-    rings_opening(&both, d, d, &open);
+     * layerm.slices' stTop and stBottom, beside the fill surfaces') */
+    rings st, sb, top, bottom, both;
+    rings_subtract(&L->outline, i + 1 < n_layers ? &layers[i + 1].outline : &none, &st);
+    if (i == 0)
+        sb = L->outline;
+    else
+        rings_subtract(&L->outline, &layers[i - 1].outline, &sb);
+    if (s->top_bottom_layers == 0)
+        st.n = sb.n = 0; /* no solid layers: surfaces are filled as the rest (PrintObject.cpp) */
+    rings_opening(&st, d, d, &top);
+    rings_opening(&sb, d, d, &bottom);
+    rings_union(&top, &bottom, &L->slice_surface);
+    rings_intersect(&L->slice_surface, &L->infill, &both);
     rings grown;
-    rings_offset(&open, open.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &grown);
+    rings_offset(&both, both.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &grown);
     rings_intersect(&grown, &L->infill, &L->surface);
     /* a bottom surface above the first layer hangs over air: bridged, over the
      * area it was grown to (it anchors there; LayerRegion::process_external_surfaces) */
     L->bridge.n = 0;
-    if (i > 0 && s->top_bottom_layers > 0) {
+    if (i > 0) {
         rings ob, gb;
-        rings_opening(&bottom, d, d, &ob);
+        rings_intersect(&bottom, &L->infill, &ob);
         rings_offset(&ob, ob.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &gb);
         rings_intersect(&gb, &L->infill, &L->bridge);
     }
@@ -329,6 +321,45 @@ static void solid_infill(const tippe_print_settings *s, const layer_t *layers, i
     rings_opening(&shell, 0.5 * sp, 0.8 * sp, &opened);
     rings_intersect(&opened, &L->infill, &shell);
     rings_union(&shell, &L->surface, solid);
+}
+
+/* A bridge's thread (LayerRegion::bridging_flow): with thick_bridges a round
+ * thread of the nozzle's diameter (bridge_flow_ratio 1), as high as it is wide;
+ * without, the role's own flat line. Its height decides how many layers below a
+ * bridge over infill must be sparse, its width how narrow a bridge vanishes. */
+static double bridge_height(const tippe_print_settings *s, const layer_t *L)
+{
+    return s->thick_bridges ? s->nozzle_mm * 1e-3 : L->t;
+}
+
+/* Layer i's solid infill laid as a bridge over the sparse infill below
+ * (PrintObject::bridge_over_infill, PrintObject.cpp): its internal solid infill
+ * (the vertical shells, not its own surfaces) over the sparse infill of every
+ * layer whose top lies within the bridge's height below its top (EPSILON =
+ * 1e-4 mm, libslic3r.h), opened by 3 x the bridge's width (narrower parts are
+ * laid as solid infill); skipped on the first layer. At 100 % infill there is
+ * none (fill_density 100 skips it): tippe_print_sliced_at leaves it out there. */
+static void bridge_over_infill(const tippe_print_settings *s, const layer_t *layers, int i,
+                               rings *out)
+{
+    const layer_t *L = &layers[i];
+    out->n = 0;
+    if (i == 0)
+        return;
+    rings cand, t;
+    rings_subtract(&L->solid, &L->surface, &cand);
+    const double top = L->z_mid + 0.5 * L->t, h_b = bridge_height(s, L);
+    const double bottom_z = top - h_b - 1e-7;
+    for (int j = i - 1; j >= 0 && cand.n; j--) {
+        if (layers[j].z_mid + 0.5 * layers[j].t < bottom_z)
+            break;
+        rings_intersect(&cand, &layers[j].sparse, &t);
+        cand = t;
+    }
+    /* the bridge's width: the nozzle's thread, or the solid infill's line */
+    double w_b = s->thick_bridges ? s->nozzle_mm * 1e-3 : s->infill_width_mm * 1e-3;
+    rings_opening(&cand, 3 * w_b, 3 * w_b, &t);
+    rings_intersect(&t, &L->solid, out);
 }
 
 /* Overhang perimeters (PerimeterGenerator.cpp, "detect overhanging/bridging
@@ -477,26 +508,37 @@ static int slice_piece(const slicer_part *Pp, const tippe_print_settings *s,
     }
     for (int i = 0; i < n; i++)
         surfaces(s, L, n, i);
+    for (int i = 0; i < n; i++) {
+        solid_infill(s, L, n, i, &L[i].solid);
+        rings_subtract(&L[i].infill, &L[i].solid, &L[i].sparse);
+    }
     tippe_moments fixed = {0, 0, 0, 0}, sparse = {0, 0, 0, 0}, band = {0, 0, 0, 0};
+    tippe_moments over_infill = {0, 0, 0, 0};
     for (int i = 0; i < n; i++) {
         layer_t *l = &L[i];
         double z = flip ? -l->z_mid : l->z_mid;
-        rings solid, sp;
-        solid_infill(s, L, n, i, &solid);
-        rings_subtract(&l->infill, &solid, &sp);
-        tippe_moments w = rings_slab(&l->walls, l->t, z), so = rings_slab(&solid, l->t, z);
-        /* bridged areas deposit pi d^2 / 4 per (d + 0.05 mm) of width instead of t */
+        const rings *solid = &l->solid, *sp = &l->sparse;
+        tippe_moments w = rings_slab(&l->walls, l->t, z), so = rings_slab(solid, l->t, z);
+        /* bridged areas deposit the bridge's thread per its spacing instead of t:
+         * pi d^2 / 4 per (d + 0.05 mm) (Flow::mm3_per_mm, bridge_extrusion_spacing);
+         * without thick_bridges the solid infill's own line, no change */
         const double dn = s->nozzle_mm * 1e-3;
-        const double bridge_ratio = M_PI * dn * dn / 4 / ((dn + BRIDGE_EXTRA_SPACING_M) * l->t);
-        rings br;
-        rings_intersect(&l->bridge, &solid, &br);
+        const double bridge_ratio =
+            s->thick_bridges ? M_PI * dn * dn / 4 / ((dn + BRIDGE_EXTRA_SPACING_M) * l->t) : 1.0;
+        rings br, inner;
+        rings_intersect(&l->bridge, solid, &br);
         so = tippe_moments_add(so, tippe_moments_scale(rings_slab(&br, l->t, z), bridge_ratio - 1));
+        bridge_over_infill(s, L, i, &inner);
+        tippe_moments ob = tippe_moments_scale(rings_slab(&inner, l->t, z), bridge_ratio - 1);
+        over_infill = tippe_moments_add(over_infill, ob);
         w = tippe_moments_add(w, overhang_extra(s, l, i > 0 ? &L[i - 1] : NULL, z));
+        fixed = tippe_moments_add(fixed, tippe_moments_add(w, so));
+        if (s->infill < 1) /* the bridges over infill, kept apart for another infill */
+            so = tippe_moments_add(so, ob);
         out->wall_m3 += w.m * s->flow;
         out->solid_m3 += so.m * s->flow;
-        fixed = tippe_moments_add(fixed, tippe_moments_add(w, so));
-        tippe_moments spm = rings_slab(&sp, l->t, z);
-        tippe_moments bm = boundary_band(&sp, 0.5 * l->s_fill, l->t, z);
+        tippe_moments spm = rings_slab(sp, l->t, z);
+        tippe_moments bm = boundary_band(sp, 0.5 * l->s_fill, l->t, z);
         sparse = tippe_moments_add(sparse, spm);
         band = tippe_moments_add(band, bm);
         if (rows && i < cap) {
@@ -510,6 +552,7 @@ static int slice_piece(const slicer_part *Pp, const tippe_print_settings *s,
         }
     }
     out->fixed = fixed;
+    out->over_infill = over_infill;
     out->sparse_region = sparse;
     out->sparse_band = band;
     out->s_fill_m = n > 1 ? L[1].s_fill : n ? L[0].s_fill : 0.0;
@@ -548,6 +591,7 @@ int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, 
     if (rc)
         return rc;
     out->fixed = tippe_moments_add(a.fixed, b.fixed);
+    out->over_infill = tippe_moments_add(a.over_infill, b.over_infill);
     out->sparse_region = tippe_moments_add(a.sparse_region, b.sparse_region);
     out->sparse_band = tippe_moments_add(a.sparse_band, b.sparse_band);
     out->wall_m3 = a.wall_m3 + b.wall_m3;
@@ -570,11 +614,16 @@ tippe_moments tippe_print_sliced_at(const tippe_print_sliced *sl, const tippe_pr
     double a = infill > 0 ? anchor_factor(s, sl->s_fill_m, bulk) : 0.0;
     tippe_moments sp = tippe_moments_scale(sl->sparse_region, bulk);
     tippe_moments an = tippe_moments_scale(sl->sparse_band, a);
+
     if (sparse_m3)
         *sparse_m3 = sp.m * s->flow;
     if (anchor_m3)
         *anchor_m3 = an.m * s->flow;
-    return tippe_moments_scale(tippe_moments_add(sl->fixed, tippe_moments_add(sp, an)), s->flow);
+    tippe_moments all = tippe_moments_add(sl->fixed, tippe_moments_add(sp, an));
+    /* no bridges over infill at 100 % (PrintObject::bridge_over_infill) */
+    if (infill < 1)
+        all = tippe_moments_add(all, sl->over_infill);
+    return tippe_moments_scale(all, s->flow);
 }
 
 /* ------------------------------------------------------------ patterns */
