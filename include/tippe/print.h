@@ -197,6 +197,17 @@ typedef struct {
  * NULL key. The first layer's height and width are the print profile's alone
  * in 2.5 (PrintConfig): the build sheet names them. */
 const tippe_print_assumed *tippe_print_assumed_settings(void);
+/* One of them with the value a design's print block gives (thick_bridges,
+ * solid_infill_below_area, perimeter_generator are modelled; the rest keep the
+ * model's value): what tippe's 3MF writes for the part. */
+typedef struct {
+    const char *key;
+    char value[32];
+    const char *decides;
+} tippe_print_pin;
+/* The pinned settings for s into out[0 .. cap); returns how many (all of
+ * tippe_print_assumed_settings, or cap). */
+int tippe_print_pinned_settings(const tippe_print_settings *s, tippe_print_pin *out, int cap);
 
 const char *tippe_print_pattern_name(int pattern);
 /* The pattern of a PrusaSlicer fill_pattern name, -1 if none. */

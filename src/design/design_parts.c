@@ -111,7 +111,7 @@ const char *const tippe_design_print_keys[] = {
     "measured_mass_g", "notes", "model", "pattern", "external_width_mm", "infill_width_mm",
     "first_layer_height_mm", "first_layer_width_mm", "top_min_mm", "bottom_min_mm",
     "infill_overlap", "flow", "gcode", "calibration", "split", "split_z_mm",
-    "filament_diameter_mm", "model_error", NULL};
+    "filament_diameter_mm", "model_error", "thick_bridges", NULL};
 /* The print settings that are text (--set writes them as strings). */
 const char *const tippe_design_print_string_keys[] = {"notes", "model", "pattern", "gcode", NULL};
 static const char *const material_keys[] = {"density_g_cm3", "source", "printable", "notes",
@@ -193,6 +193,7 @@ static int parse_print_rules(const tippe_json_reader *c, const cJSON *item, cons
         (rc = print_number(c, item, path, "flow", 0.5, 1.5, 0, "(extrusion multiplier)",
                            &s->flow)) ||
         (rc = tippe_json_bool(c, item, path, "split", &s->split, NULL)) ||
+        (rc = tippe_json_bool(c, item, path, "thick_bridges", &s->thick_bridges, NULL)) ||
         (rc = print_number(c, item, path, "split_z_mm", -1000, 1000, 0, "mm", &s->split_z_mm)) ||
         (rc = print_number(c, item, path, "model_error", -3, 3, 0,
                            "(the print model's error against the slicer, in units of the "

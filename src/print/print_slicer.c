@@ -10,6 +10,7 @@
 #include "print/section.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -364,9 +365,10 @@ static void bridge_over_infill(const tippe_print_settings *s, const layer_t *lay
 
 /* Overhang perimeters (PerimeterGenerator.cpp, "detect overhanging/bridging
  * perimeters"): a perimeter loop whose centre line lies outside the layer
- * below's slices grown by half the nozzle is laid as a bridge, a round thread of
+ * below's slices grown by half the nozzle is laid with the overhang flow,
+ * LayerRegion::bridging_flow(frPerimeter): with thick_bridges a round thread of
  * the nozzle's diameter (pi d^2 / 4 per unit length) instead of its flat line
- * (s t). The loops' centre lines: the external one w_e / 2 inside the outline,
+ * (s t); without, the (inner) perimeters' flat line (s_p t). The loops' centre lines: the external one w_e / 2 inside the outline,
  * the next (s_e + s_p) / 2 further, then s_p apart. Returns the extra moments. */
 static tippe_moments overhang_extra(const tippe_print_settings *s, const layer_t *L,
                                     const layer_t *below, double z)
@@ -376,7 +378,8 @@ static tippe_moments overhang_extra(const tippe_print_settings *s, const layer_t
         return m;
     rings support;
     rings_offset(&below->outline, 0.5 * s->nozzle_mm * 1e-3, &support);
-    const double d = s->nozzle_mm * 1e-3, round = M_PI * d * d / 4;
+    const double d = s->nozzle_mm * 1e-3;
+    const double thread = s->thick_bridges ? M_PI * d * d / 4 : L->s_per * L->t;
     for (int r = 0; r < L->outline.n; r++)
         for (int side = 0; side < 2; side++) {
             double edge = side ? L->outline.lo[r] : L->outline.hi[r];
@@ -395,7 +398,7 @@ static tippe_moments overhang_extra(const tippe_print_settings *s, const layer_t
                     held = rc >= support.lo[j] && rc <= support.hi[j];
                 if (held || !(rc > 0))
                     continue;
-                double v = 2 * M_PI * rc * (round - sp * L->t);
+                double v = 2 * M_PI * rc * (thread - sp * L->t);
                 m = tippe_moments_add(m, (tippe_moments){v, v * z, v * (z * z + L->t * L->t / 12),
                                                          v * rc * rc});
             }
@@ -701,3 +704,18 @@ static const tippe_print_assumed assumed[] = {
 };
 
 const tippe_print_assumed *tippe_print_assumed_settings(void) { return assumed; }
+
+/* The pinned settings with the design's values where the print block models
+ * them, so that tippe's 3MF makes the slicer deposit what the model assumed. */
+int tippe_print_pinned_settings(const tippe_print_settings *s, tippe_print_pin *out, int cap)
+{
+    int n = 0;
+    for (const tippe_print_assumed *a = assumed; a->key && n < cap; a++, n++) {
+        out[n].key = a->key;
+        out[n].decides = a->decides;
+        snprintf(out[n].value, sizeof out[n].value, "%s", a->value);
+        if (!strcmp(a->key, "thick_bridges"))
+            snprintf(out[n].value, sizeof out[n].value, "%d", s->thick_bridges ? 1 : 0);
+    }
+    return n;
+}
