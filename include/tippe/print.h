@@ -130,6 +130,10 @@ typedef enum {
     TIPPE_PRINT_N_PATTERNS
 } tippe_print_pattern;
 
+/* PrusaSlicer's perimeter_generator: its walls deposit the same volume either
+ * way (docs/slicer-rules.md), so the model is one for both; the 3MF carries it. */
+typedef enum { TIPPE_PERIMETERS_ARACHNE, TIPPE_PERIMETERS_CLASSIC } tippe_print_perimeter_generator;
+
 /* Which rules make the printed part: the slicer's, layer by layer (the default,
  * print_slicer.c), or the earlier continuous rule of walls and vertical skins
  * (print.c), kept for comparison. */
@@ -157,6 +161,10 @@ typedef struct {
     double nozzle_mm;              /* nozzle_diameter: bridges and overhangs are round threads */
     int thick_bridges;             /* thick_bridges: 1 bridges are round threads of the nozzle's
                                       diameter; 0 the role's own flat lines */
+    /* solid_infill_below_area: a sparse island of a layer no larger than this is
+     * solid (0: none) */
+    double solid_infill_below_area_mm2;
+    int perimeter_generator;       /* tippe_print_perimeter_generator */
     /* where a weighed mass (measured_mass_g) puts what the model lacks: 0 all in
      * the sparse infill (the infill that gives the mass), 1 all on every line (a
      * flow factor); the tolerance bands span the two readings */

@@ -291,6 +291,25 @@ static void shell_range(const tippe_print_settings *s, const layer_t *layers, in
     *lo = j + 1;
 }
 
+/* solid_infill_below_area (LayerRegion::prepare_fill_surfaces, LayerRegion.cpp):
+ * before the surfaces grow and the shells are found, each island of a layer's
+ * internal region (its infill region less its opened top and bottom) whose area
+ * is at most the setting becomes solid, when there is any infill at all (the
+ * model takes the design's infill: tippe_print_sliced_at keeps them at 0 %). On
+ * a body of revolution every island is a ring, or a disc at the axis. */
+static void small_islands(const tippe_print_settings *s, const layer_t *L, rings *out)
+{
+    out->n = 0;
+    const double a_max = s->solid_infill_below_area_mm2 * 1e-6;
+    if (!(a_max > 0) || !(s->infill > 0))
+        return;
+    rings internal;
+    rings_subtract(&L->infill, &L->slice_surface, &internal);
+    for (int k = 0; k < internal.n; k++)
+        if (M_PI * (internal.hi[k] * internal.hi[k] - internal.lo[k] * internal.lo[k]) <= a_max)
+            rings_push(out, internal.lo[k], internal.hi[k]);
+}
+
 /* Layer i's solid infill: its own surfaces, and the vertical shell: where its
  * infill region is not inside every neighbour's infill region, or a neighbour's
  * surface (grown by 1.05 s) lies over it; the shell opened (bands narrower than
@@ -315,11 +334,17 @@ static void solid_infill(const tippe_print_settings *s, const layer_t *layers, i
         rings_union(&cover, &both, &t);
         cover = t;
     }
-    rings shell, opened;
+    rings shell, opened, small;
     rings_subtract(&L->infill, &common, &shell);
     rings_union(&shell, &cover, &t);
     rings_intersect(&t, &L->infill, &shell);
-    rings_opening(&shell, 0.5 * sp, 0.8 * sp, &opened);
+    small_islands(s, L, &small);
+    if (!shell.n) { /* no shell: the layer keeps its small islands as they are */
+        rings_union(&small, &L->surface, solid);
+        return;
+    }
+    rings_union(&shell, &small, &t); /* they join the shell before its opening */
+    rings_opening(&t, 0.5 * sp, 0.8 * sp, &opened);
     rings_intersect(&opened, &L->infill, &shell);
     rings_union(&shell, &L->surface, solid);
 }
@@ -716,6 +741,11 @@ int tippe_print_pinned_settings(const tippe_print_settings *s, tippe_print_pin *
         snprintf(out[n].value, sizeof out[n].value, "%s", a->value);
         if (!strcmp(a->key, "thick_bridges"))
             snprintf(out[n].value, sizeof out[n].value, "%d", s->thick_bridges ? 1 : 0);
+        else if (!strcmp(a->key, "solid_infill_below_area"))
+            snprintf(out[n].value, sizeof out[n].value, "%.9g", s->solid_infill_below_area_mm2);
+        else if (!strcmp(a->key, "perimeter_generator"))
+            snprintf(out[n].value, sizeof out[n].value, "%s",
+                     s->perimeter_generator == TIPPE_PERIMETERS_CLASSIC ? "classic" : "arachne");
     }
     return n;
 }
