@@ -74,8 +74,12 @@ static void test_default_cylinder(void)
         double disc = M_PI * pow(R - d_f, 2) * h;
         walls += ring;
         /* solid: the first and last layer (bottom, top surfaces) and the
-         * three above / below them (4 layers each way) */
-        if (i < 4 || i >= 96)
+         * three above / below them (4 layers each way); the first solid layer
+         * over the sparse infill (96) is a bridge over infill
+         * (PrintObject::bridge_over_infill), 0.4 mm round threads 0.45 mm apart */
+        if (i == 96)
+            solid += disc / h * M_PI * 0.4 * MM * 0.4 * MM / 4 / (0.45 * MM);
+        else if (i < 4 || i > 96)
             solid += disc;
         else {
             sparse += bulk * f * disc;
@@ -97,6 +101,20 @@ static void test_default_cylinder(void)
     tippe_moments m40 = tippe_print_sliced_at(&o, &s, 0.4, &sp40, NULL);
     CHECK_CLOSE(sp40, sparse / 0.15 * 0.4, 1e-12, "sparse at 40 %%");
     CHECK(m40.m > at.m, "more infill, more mass");
+    double disc96 = M_PI * pow(R - (0.5 * (0.45 * MM - s_reg) + 1.75 * s_reg), 2) * h;
+    double bridge96 = disc96 / h * M_PI * 0.4 * MM * 0.4 * MM / 4 / (0.45 * MM);
+    /* thick_bridges off: the bridge is the solid infill's own line, no extra
+     * (LayerRegion::bridging_flow) */
+    tippe_print_settings thin = s;
+    thin.thick_bridges = 0;
+    tippe_print_sliced o2;
+    CHECK(tippe_print_slice_moments(&cyl, NULL, 0, &thin, 0, &o2, &err) == 0, "%s", err.msg);
+    CHECK_CLOSE(o2.solid_m3, solid - bridge96 + disc96, 1e-12, "thin bridges: solid infill");
+    /* at 100 % there is no bridge over infill (fill_density 100 skips it), and
+     * the cylinder has no bridge over air: thick and thin bridges deposit the same */
+    CHECK_CLOSE(tippe_print_sliced_at(&o, &s, 1.0, NULL, NULL).m,
+                tippe_print_sliced_at(&o2, &thin, 1.0, NULL, NULL).m, 1e-12,
+                "100 %%: no bridge over infill");
 }
 
 /* A tube (a cylinder with a hole through it): its layers are rings with walls
@@ -154,6 +172,36 @@ static void test_gyroid_bulk(void)
           "pattern names are PrusaSlicer's, case-sensitive");
 }
 
+/* solid_infill_below_area (LayerRegion::prepare_fill_surfaces): a cylinder of
+ * radius 4 mm, whose infill disc (radius 4 - d_f = 3.27 mm, 33.5 mm^2) is one
+ * island on every layer: at 70 mm^2 every layer is solid (no sparse infill, no
+ * anchors, no bridge over infill), each the disc's area times its height (sums
+ * of 50 closed forms: 1e-12); at 30 mm^2 nothing changes from 0. */
+static void test_solid_below_area(void)
+{
+    const double R = 4 * MM, H = 10 * MM, h = 0.2 * MM;
+    tippe_solid cyl = {.kind = TIPPE_SOLID_TUBE, .radius = R, .height = H};
+    tippe_print_settings s = tippe_print_defaults();
+    tippe_print_sliced o0, o30, o70;
+    tippe_error err;
+    CHECK(tippe_print_slice_moments(&cyl, NULL, 0, &s, 0, &o0, &err) == 0, "%s", err.msg);
+    s.solid_infill_below_area_mm2 = 30;
+    CHECK(tippe_print_slice_moments(&cyl, NULL, 0, &s, 0, &o30, &err) == 0, "%s", err.msg);
+    s.solid_infill_below_area_mm2 = 70;
+    CHECK(tippe_print_slice_moments(&cyl, NULL, 0, &s, 0, &o70, &err) == 0, "%s", err.msg);
+    double solid = 0;
+    for (int i = 0; i < 50; i++) {
+        double w = (i == 0 ? 0.42 : 0.45) * MM, sp = spacing(w, h);
+        double d_f = 0.5 * (w - sp) + 1.75 * sp;
+        solid += M_PI * pow(R - d_f, 2) * h;
+    }
+    CHECK(o70.sparse_m3 == 0 && o70.anchor_m3 == 0, "70 mm^2: no sparse infill (%g, %g m^3)",
+          o70.sparse_m3, o70.anchor_m3);
+    CHECK_CLOSE(o70.solid_m3, solid, 1e-12, "70 mm^2: every layer's disc solid");
+    CHECK(o0.sparse_m3 > 0, "0 mm^2: sparse infill in the middle");
+    CHECK_CLOSE(o30.deposit.m, o0.deposit.m, 1e-15, "30 mm^2: as 0 (the island is 33.5 mm^2)");
+}
+
 /* A pattern whose deposit depends on the part's shape is refused, saying so. */
 static void test_unmodelled_pattern(void)
 {
@@ -204,6 +252,7 @@ int main(void)
     test_tube_walls();
     test_gyroid_bulk();
     test_unmodelled_pattern();
+    test_solid_below_area();
     test_design_weighing();
     return check_summary("test_print_slicer");
 }

@@ -11,11 +11,16 @@ those of tippe_print_assumed_settings included) with
   - maker:    the shipped profile with the choices issue 40 met in makers' profiles: thick_bridges
               off, solid_infill_below_area 70, extra_perimeters and thin_walls on, the classic
               perimeter generator, rectilinear top and bottom;
+and, with the shipped profile, the design's print block changed in the three settings it models
+that a maker may want otherwise (the 3MF carries them, so the slicer follows the design):
+  - thin bridges: "thick_bridges": false;
+  - area 70:      "solid_infill_below_area_mm2": 70 (2.5's built-in default);
+  - classic:      "perimeter_generator": "classic";
 and prints a Markdown table of the body's mass and A/C, G-code against model. The model does not
 see the profile: where the 3MF pins a setting, every profile slices what it modelled.
 
 Usage: tools/profiles_vs_model.py [BUILD_DIR] [OUT_DIR]  (defaults: build, out/profiles)
-About 54 slicings: 8 minutes on two cores.
+About 108 slicings: 15 minutes on two cores.
 """
 import glob
 import json
@@ -40,10 +45,14 @@ with open(shipped) as f, open(maker, "w") as g:
     for line in f:
         key = line.split("=")[0].strip()
         g.write("%s = %s\n" % (key, changes[key]) if key in changes else line)
-profiles = [("shipped", shipped), ("defaults", defaults), ("maker", maker)]
+# (name, profile, print block setting or None)
+profiles = [("shipped", shipped, None), ("defaults", defaults, None), ("maker", maker, None),
+            ("thin bridges", shipped, "thick_bridges=false"),
+            ("area 70", shipped, "solid_infill_below_area_mm2=70"),
+            ("classic", shipped, "perimeter_generator=classic")]
 
-print("| design | infill | profile | mass G-code g | model g | mass off | A/C body G-code | model "
-      "| A/C off |")
+print("| design | infill | profile / print block | mass G-code g | model g | mass off "
+      "| A/C body G-code | model | A/C off |")
 print("|---|---|---|---|---|---|---|---|---|")
 for design in sorted(glob.glob(os.path.join(here, "designs", "*-printed.json"))):
     d = json.load(open(design))
@@ -53,11 +62,13 @@ for design in sorted(glob.glob(os.path.join(here, "designs", "*-printed.json")))
     body = printed[0]["name"]
     name = os.path.basename(design)[:-5]
     for infill in (0.15, 0.25, 0.4):
-        for pname, prof in profiles:
-            dest = os.path.join(out, "%s-%g-%s" % (name, infill, pname))
-            r = subprocess.run([tippe, "slice", design, "-o", dest, "--json", "--profile", prof,
-                                "--set", "parts.%s.print.infill=%g" % (body, infill)],
-                               capture_output=True, text=True)
+        for pname, prof, block in profiles:
+            dest = os.path.join(out, "%s-%g-%s" % (name, infill, pname.replace(" ", "-")))
+            cmd = [tippe, "slice", design, "-o", dest, "--json", "--profile", prof,
+                   "--set", "parts.%s.print.infill=%g" % (body, infill)]
+            if block:
+                cmd += ["--set", "parts.%s.print.%s" % (body, block)]
+            r = subprocess.run(cmd, capture_output=True, text=True)
             if r.returncode:
                 print("| %s | %g %% | %s | slice failed: %s |" %
                       (name, 100 * infill, pname, r.stderr.strip()[-200:]))

@@ -303,8 +303,10 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         if (s->print[k].has_block) {
             /* what the model assumed of the slicer: pinned in the 3MF, or the profile's */
             cJSON *sa = cJSON_AddObjectToObject(j, "slicer_settings_in_3mf");
-            for (const tippe_print_assumed *a = tippe_print_assumed_settings(); sa && a->key; a++)
-                cJSON_AddStringToObject(sa, a->key, a->value);
+            tippe_print_pin pins[32];
+            int n_pins = tippe_print_pinned_settings(&s->print[k].settings, pins, 32);
+            for (int a = 0; sa && a < n_pins; a++)
+                cJSON_AddStringToObject(sa, pins[a].key, pins[a].value);
             cJSON *pr = cJSON_AddObjectToObject(j, "slicer_settings_of_profile");
             if (pr) {
                 cJSON_AddNumberToObject(pr, "first_layer_height", p->first_layer_height_mm);
@@ -511,9 +513,10 @@ void tippe_build_markdown(FILE *f, const tippe_build_sheet *s)
         fprintf(f, "\nThe mass model of '%s' assumes these slicer settings. The 3MF sets them "
                    "for the part:",
                 md(s->print[k].part, m1, sizeof m1));
-        for (const tippe_print_assumed *as = tippe_print_assumed_settings(); as->key; as++)
-            fprintf(f, "%s `%s = %s`", as == tippe_print_assumed_settings() ? "" : ",", as->key,
-                    as->value);
+        tippe_print_pin pins[32];
+        int n_pins = tippe_print_pinned_settings(p, pins, 32);
+        for (int q = 0; q < n_pins; q++)
+            fprintf(f, "%s `%s = %s`", q ? "," : "", pins[q].key, pins[q].value);
         fprintf(f, ". Set these in your print profile (PrusaSlicer takes them from it alone): "
                    "`first_layer_height = %g`, `first_layer_extrusion_width = %g`.\n",
                 p->first_layer_height_mm, p->first_layer_width_mm);

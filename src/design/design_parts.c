@@ -38,6 +38,7 @@ void tippe_design_field_range(const char *field, double *lo, double *hi)
         {"infill", PRINT_INFILL_MIN, PRINT_INFILL_MAX},
         {"measured_mass_g", PRINT_MEASURED_MASS_MIN_G, PRINT_MEASURED_MASS_MAX_G},
         {"calibration", PRINT_CALIBRATION_MIN, PRINT_CALIBRATION_MAX},
+        {"solid_infill_below_area_mm2", 0, PRINT_SOLID_BELOW_AREA_MAX_MM2},
     };
     const char *dot = strrchr(field, '.'), *key = dot ? dot + 1 : field;
     *lo = -INFINITY;
@@ -111,9 +112,11 @@ const char *const tippe_design_print_keys[] = {
     "measured_mass_g", "notes", "model", "pattern", "external_width_mm", "infill_width_mm",
     "first_layer_height_mm", "first_layer_width_mm", "top_min_mm", "bottom_min_mm",
     "infill_overlap", "flow", "gcode", "calibration", "split", "split_z_mm",
-    "filament_diameter_mm", "model_error", NULL};
+    "filament_diameter_mm", "model_error", "thick_bridges", "solid_infill_below_area_mm2",
+    "perimeter_generator", NULL};
 /* The print settings that are text (--set writes them as strings). */
-const char *const tippe_design_print_string_keys[] = {"notes", "model", "pattern", "gcode", NULL};
+const char *const tippe_design_print_string_keys[] = {"notes", "model", "pattern", "gcode",
+                                                      "perimeter_generator", NULL};
 static const char *const material_keys[] = {"density_g_cm3", "source", "printable", "notes",
                                              "E_GPa", "nu", "elastic_source", "set_screws",
                                              NULL};
@@ -175,6 +178,20 @@ static int parse_print_rules(const tippe_json_reader *c, const cJSON *item, cons
         return tippe_json_fail(c, full, "'%s' is not a PrusaSlicer infill pattern (%s)", text,
                                list);
     }
+    if ((rc = tippe_json_string(c, item, path, "perimeter_generator", 0, text, sizeof text,
+                                &here)))
+        return rc;
+    if (here) {
+        tippe_json_path(full, sizeof full, path, "perimeter_generator");
+        if (!strcmp(text, "arachne"))
+            s->perimeter_generator = TIPPE_PERIMETERS_ARACHNE;
+        else if (!strcmp(text, "classic"))
+            s->perimeter_generator = TIPPE_PERIMETERS_CLASSIC;
+        else
+            return tippe_json_fail(c, full, "'%s' is not a PrusaSlicer perimeter generator "
+                                            "(arachne or classic)",
+                                   text);
+    }
     if ((rc = tippe_json_string(c, item, path, "gcode", 0, p->gcode, sizeof p->gcode, &here)))
         return rc;
     if ((rc = print_number(c, item, path, "external_width_mm", 0.05, 3, 0, "mm",
@@ -193,6 +210,11 @@ static int parse_print_rules(const tippe_json_reader *c, const cJSON *item, cons
         (rc = print_number(c, item, path, "flow", 0.5, 1.5, 0, "(extrusion multiplier)",
                            &s->flow)) ||
         (rc = tippe_json_bool(c, item, path, "split", &s->split, NULL)) ||
+        (rc = tippe_json_bool(c, item, path, "thick_bridges", &s->thick_bridges, NULL)) ||
+        (rc = print_number(c, item, path, "solid_infill_below_area_mm2", 0,
+                           PRINT_SOLID_BELOW_AREA_MAX_MM2, 0,
+                           "mm^2 (a sparse island no larger is made solid; 0: none)",
+                           &s->solid_infill_below_area_mm2)) ||
         (rc = print_number(c, item, path, "split_z_mm", -1000, 1000, 0, "mm", &s->split_z_mm)) ||
         (rc = print_number(c, item, path, "model_error", -3, 3, 0,
                            "(the print model's error against the slicer, in units of the "

@@ -81,7 +81,10 @@ static int same_settings(const tippe_print_settings *a, const tippe_print_settin
            a->first_layer_width_mm == b->first_layer_width_mm && a->top_min_mm == b->top_min_mm &&
            a->bottom_min_mm == b->bottom_min_mm && a->infill_overlap == b->infill_overlap &&
            a->anchor_mm == b->anchor_mm && a->anchor_max_mm == b->anchor_max_mm &&
-           a->nozzle_mm == b->nozzle_mm && a->flow == b->flow && a->split == b->split &&
+           a->nozzle_mm == b->nozzle_mm && a->thick_bridges == b->thick_bridges &&
+           a->solid_infill_below_area_mm2 == b->solid_infill_below_area_mm2 &&
+           a->perimeter_generator == b->perimeter_generator &&
+           a->flow == b->flow && a->split == b->split &&
            a->split_z_mm == b->split_z_mm;
 }
 

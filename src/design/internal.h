@@ -59,6 +59,9 @@
 #define PRINT_MEASURED_MASS_MAX_G 1e6
 #define PRINT_CALIBRATION_MIN -1.0
 #define PRINT_CALIBRATION_MAX 2.0
+/* solid_infill_below_area: up to a square metre (PrusaSlicer sets no bound; a
+ * top's layers are some 2000 mm^2 at most) */
+#define PRINT_SOLID_BELOW_AREA_MAX_MM2 1e6
 /* Intervals per r: a part gives at most 2, each void removes at most 2 more. */
 #define MAX_IV (4 + 4 * MAX_PARTS)
 

@@ -195,6 +195,7 @@ static void slicer_settings(const tippe_design *d, const tippe_profile_options *
     x->infill_overlap = ps.infill_overlap;
     x->anchor_mm = ps.anchor_mm;
     x->anchor_max_mm = ps.anchor_max_mm;
+    x->n_pins = tippe_print_pinned_settings(&ps, x->pins, (int)(sizeof x->pins / sizeof x->pins[0]));
     char fit[120] = "";
     if (po->fit_diameter_mm > 0)
         snprintf(fit, sizeof fit, ", except the screw's, printed %.2f mm across for its thread",

@@ -385,10 +385,9 @@ static char *slicer_config(const tippe_mesh *meshes, const char *const *names, c
                     x->top_min_mm, x->bottom_min_mm, 100 * x->infill_overlap, x->anchor_mm,
                     x->anchor_max_mm);
         /* the settings the model assumes that a profile could change (issue 40) */
-        for (const tippe_print_assumed *a = x->pattern ? tippe_print_assumed_settings() : NULL;
-             a && a->key; a++)
-            fprintf(f, "  <metadata type=\"object\" key=\"%s\" value=\"%s\"/>\n", a->key,
-                    a->value);
+        for (int j = 0; x->pattern && j < x->n_pins; j++)
+            fprintf(f, "  <metadata type=\"object\" key=\"%s\" value=\"%s\"/>\n", x->pins[j].key,
+                    x->pins[j].value);
         fprintf(f, "  <volume firstid=\"0\" lastid=\"%ld\">\n", (long)meshes[k].n_triangles - 1);
         fputs("   <metadata type=\"volume\" key=\"name\" value=\"", f);
         xml_attr(f, names[k]);

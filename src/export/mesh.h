@@ -57,6 +57,9 @@ typedef struct {
     const char *pattern;    /* PrusaSlicer's fill_pattern; rectilinear at 100 % */
     double external_width_mm, infill_width_mm, top_min_mm, bottom_min_mm, infill_overlap;
     double anchor_mm, anchor_max_mm;
+    /* the settings the model assumes, with the design's values (tippe_print_pinned_settings) */
+    tippe_print_pin pins[32];
+    int n_pins;
 } tippe_mesh_3mf_extra;
 
 /* tippe_mesh_write_3mf with the extras (x may be NULL). */

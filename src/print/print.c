@@ -637,6 +637,7 @@ tippe_print_settings tippe_print_defaults(void)
                               .anchor_mm = 2.5,
                               .anchor_max_mm = 12,
                               .nozzle_mm = 0.4,
+                              .thick_bridges = 1,
                               .flow = 1.0};
     return s;
 }

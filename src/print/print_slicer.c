@@ -10,6 +10,7 @@
 #include "print/section.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -153,6 +154,7 @@ typedef struct {
     rings outline, walls, infill, surface;
     rings slice_surface; /* the slice's own top and bottom (perimeters' area included) */
     rings bridge;       /* bottom surfaces over air, grown onto their support: bridged */
+    rings solid, sparse; /* its solid infill (surfaces included) and the rest of its infill */
 } layer_t;
 
 /* A line of width w laid in layers t thick is a band w - t (1 - pi/4) wide
@@ -228,49 +230,40 @@ static void walls_and_infill(const tippe_print_settings *s, layer_t *L)
 }
 
 /* Layer i's top and bottom fill surfaces (PrintObject::detect_surfaces_type):
- * what of its infill region the layer above (below) does not cover, opened by
- * w_e / 10; the first layer is all bottom. Grown by EXTERNAL_INFILL_MARGIN
+ * what of its slice the layer above (below) does not cover, opened by w_e / 10
+ * (the first layer is all bottom), and only then clipped to the infill region
+ * (LayerRegion::slices_to_fill_surfaces_clipped): a step of the outline wider
+ * than d_f leaves a fill surface however thin. Grown by EXTERNAL_INFILL_MARGIN
  * within the infill region (2.5's process_external_surfaces). */
 static void surfaces(const tippe_print_settings *s, layer_t *layers, int n_layers, int i)
 {
     layer_t *L = &layers[i];
-    rings top, bottom, both, open;
     static const rings none = {0};
-    rings_subtract(&L->infill, i + 1 < n_layers ? &layers[i + 1].outline : &none, &top);
-    if (i == 0)
-        bottom = L->infill;
-    else
-        rings_subtract(&L->infill, &layers[i - 1].outline, &bottom);
-    rings_union(&top, &bottom, &both);
-    if (s->top_bottom_layers == 0)
-        both.n = 0; /* no solid layers: surfaces are filled as the rest (PrintObject.cpp) */
     double d = 0.5 * SURFACE_OPENING_FACTOR * L->w_ext;
-    /* the same surfaces of the whole slice, the perimeters' area included: the
+    /* the slice's own top and bottom, the perimeters' area included: the
      * vertical shells take these too (discover_vertical_shells' cache of
-     * layerm.slices' stTop and stBottom, beside the fill surfaces'), and a step
-     * wider than d_f - 1.05 s reaches further in than the fill surfaces do */
-    {
-        rings st, sb, sboth;
-        rings_subtract(&L->outline, i + 1 < n_layers ? &layers[i + 1].outline : &none, &st);
-        if (i == 0)
-            sb = L->outline;
-        else
-            rings_subtract(&L->outline, &layers[i - 1].outline, &sb);
-        rings_union(&st, &sb, &sboth);
-        if (s->top_bottom_layers == 0)
-            sboth.n = 0;
-        rings_opening(&sboth, d, d, &L->slice_surface);
-    }
-    rings_opening(&both, d, d, &open);
+     * layerm.slices' stTop and stBottom, beside the fill surfaces') */
+    rings st, sb, top, bottom, both;
+    rings_subtract(&L->outline, i + 1 < n_layers ? &layers[i + 1].outline : &none, &st);
+    if (i == 0)
+        sb = L->outline;
+    else
+        rings_subtract(&L->outline, &layers[i - 1].outline, &sb);
+    if (s->top_bottom_layers == 0)
+        st.n = sb.n = 0; /* no solid layers: surfaces are filled as the rest (PrintObject.cpp) */
+    rings_opening(&st, d, d, &top);
+    rings_opening(&sb, d, d, &bottom);
+    rings_union(&top, &bottom, &L->slice_surface);
+    rings_intersect(&L->slice_surface, &L->infill, &both);
     rings grown;
-    rings_offset(&open, open.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &grown);
+    rings_offset(&both, both.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &grown);
     rings_intersect(&grown, &L->infill, &L->surface);
     /* a bottom surface above the first layer hangs over air: bridged, over the
      * area it was grown to (it anchors there; LayerRegion::process_external_surfaces) */
     L->bridge.n = 0;
-    if (i > 0 && s->top_bottom_layers > 0) {
+    if (i > 0) {
         rings ob, gb;
-        rings_opening(&bottom, d, d, &ob);
+        rings_intersect(&bottom, &L->infill, &ob);
         rings_offset(&ob, ob.n ? EXTERNAL_INFILL_MARGIN_M : 0.0, &gb);
         rings_intersect(&gb, &L->infill, &L->bridge);
     }
@@ -298,6 +291,25 @@ static void shell_range(const tippe_print_settings *s, const layer_t *layers, in
     *lo = j + 1;
 }
 
+/* solid_infill_below_area (LayerRegion::prepare_fill_surfaces, LayerRegion.cpp):
+ * before the surfaces grow and the shells are found, each island of a layer's
+ * internal region (its infill region less its opened top and bottom) whose area
+ * is at most the setting becomes solid, when there is any infill at all (the
+ * model takes the design's infill: tippe_print_sliced_at keeps them at 0 %). On
+ * a body of revolution every island is a ring, or a disc at the axis. */
+static void small_islands(const tippe_print_settings *s, const layer_t *L, rings *out)
+{
+    out->n = 0;
+    const double a_max = s->solid_infill_below_area_mm2 * 1e-6;
+    if (!(a_max > 0) || !(s->infill > 0))
+        return;
+    rings internal;
+    rings_subtract(&L->infill, &L->slice_surface, &internal);
+    for (int k = 0; k < internal.n; k++)
+        if (M_PI * (internal.hi[k] * internal.hi[k] - internal.lo[k] * internal.lo[k]) <= a_max)
+            rings_push(out, internal.lo[k], internal.hi[k]);
+}
+
 /* Layer i's solid infill: its own surfaces, and the vertical shell: where its
  * infill region is not inside every neighbour's infill region, or a neighbour's
  * surface (grown by 1.05 s) lies over it; the shell opened (bands narrower than
@@ -322,20 +334,66 @@ static void solid_infill(const tippe_print_settings *s, const layer_t *layers, i
         rings_union(&cover, &both, &t);
         cover = t;
     }
-    rings shell, opened;
+    rings shell, opened, small;
     rings_subtract(&L->infill, &common, &shell);
     rings_union(&shell, &cover, &t);
     rings_intersect(&t, &L->infill, &shell);
-    rings_opening(&shell, 0.5 * sp, 0.8 * sp, &opened);
+    small_islands(s, L, &small);
+    if (!shell.n) { /* no shell: the layer keeps its small islands as they are */
+        rings_union(&small, &L->surface, solid);
+        return;
+    }
+    rings_union(&shell, &small, &t); /* they join the shell before its opening */
+    rings_opening(&t, 0.5 * sp, 0.8 * sp, &opened);
     rings_intersect(&opened, &L->infill, &shell);
     rings_union(&shell, &L->surface, solid);
 }
 
+/* A bridge's thread (LayerRegion::bridging_flow): with thick_bridges a round
+ * thread of the nozzle's diameter (bridge_flow_ratio 1), as high as it is wide;
+ * without, the role's own flat line. Its height decides how many layers below a
+ * bridge over infill must be sparse, its width how narrow a bridge vanishes. */
+static double bridge_height(const tippe_print_settings *s, const layer_t *L)
+{
+    return s->thick_bridges ? s->nozzle_mm * 1e-3 : L->t;
+}
+
+/* Layer i's solid infill laid as a bridge over the sparse infill below
+ * (PrintObject::bridge_over_infill, PrintObject.cpp): its internal solid infill
+ * (the vertical shells, not its own surfaces) over the sparse infill of every
+ * layer whose top lies within the bridge's height below its top (EPSILON =
+ * 1e-4 mm, libslic3r.h), opened by 3 x the bridge's width (narrower parts are
+ * laid as solid infill); skipped on the first layer. At 100 % infill there is
+ * none (fill_density 100 skips it): tippe_print_sliced_at leaves it out there. */
+static void bridge_over_infill(const tippe_print_settings *s, const layer_t *layers, int i,
+                               rings *out)
+{
+    const layer_t *L = &layers[i];
+    out->n = 0;
+    if (i == 0)
+        return;
+    rings cand, t;
+    rings_subtract(&L->solid, &L->surface, &cand);
+    const double top = L->z_mid + 0.5 * L->t, h_b = bridge_height(s, L);
+    const double bottom_z = top - h_b - 1e-7;
+    for (int j = i - 1; j >= 0 && cand.n; j--) {
+        if (layers[j].z_mid + 0.5 * layers[j].t < bottom_z)
+            break;
+        rings_intersect(&cand, &layers[j].sparse, &t);
+        cand = t;
+    }
+    /* the bridge's width: the nozzle's thread, or the solid infill's line */
+    double w_b = s->thick_bridges ? s->nozzle_mm * 1e-3 : s->infill_width_mm * 1e-3;
+    rings_opening(&cand, 3 * w_b, 3 * w_b, &t);
+    rings_intersect(&t, &L->solid, out);
+}
+
 /* Overhang perimeters (PerimeterGenerator.cpp, "detect overhanging/bridging
  * perimeters"): a perimeter loop whose centre line lies outside the layer
- * below's slices grown by half the nozzle is laid as a bridge, a round thread of
+ * below's slices grown by half the nozzle is laid with the overhang flow,
+ * LayerRegion::bridging_flow(frPerimeter): with thick_bridges a round thread of
  * the nozzle's diameter (pi d^2 / 4 per unit length) instead of its flat line
- * (s t). The loops' centre lines: the external one w_e / 2 inside the outline,
+ * (s t); without, the (inner) perimeters' flat line (s_p t). The loops' centre lines: the external one w_e / 2 inside the outline,
  * the next (s_e + s_p) / 2 further, then s_p apart. Returns the extra moments. */
 static tippe_moments overhang_extra(const tippe_print_settings *s, const layer_t *L,
                                     const layer_t *below, double z)
@@ -345,7 +403,8 @@ static tippe_moments overhang_extra(const tippe_print_settings *s, const layer_t
         return m;
     rings support;
     rings_offset(&below->outline, 0.5 * s->nozzle_mm * 1e-3, &support);
-    const double d = s->nozzle_mm * 1e-3, round = M_PI * d * d / 4;
+    const double d = s->nozzle_mm * 1e-3;
+    const double thread = s->thick_bridges ? M_PI * d * d / 4 : L->s_per * L->t;
     for (int r = 0; r < L->outline.n; r++)
         for (int side = 0; side < 2; side++) {
             double edge = side ? L->outline.lo[r] : L->outline.hi[r];
@@ -364,7 +423,7 @@ static tippe_moments overhang_extra(const tippe_print_settings *s, const layer_t
                     held = rc >= support.lo[j] && rc <= support.hi[j];
                 if (held || !(rc > 0))
                     continue;
-                double v = 2 * M_PI * rc * (round - sp * L->t);
+                double v = 2 * M_PI * rc * (thread - sp * L->t);
                 m = tippe_moments_add(m, (tippe_moments){v, v * z, v * (z * z + L->t * L->t / 12),
                                                          v * rc * rc});
             }
@@ -477,26 +536,37 @@ static int slice_piece(const slicer_part *Pp, const tippe_print_settings *s,
     }
     for (int i = 0; i < n; i++)
         surfaces(s, L, n, i);
+    for (int i = 0; i < n; i++) {
+        solid_infill(s, L, n, i, &L[i].solid);
+        rings_subtract(&L[i].infill, &L[i].solid, &L[i].sparse);
+    }
     tippe_moments fixed = {0, 0, 0, 0}, sparse = {0, 0, 0, 0}, band = {0, 0, 0, 0};
+    tippe_moments over_infill = {0, 0, 0, 0};
     for (int i = 0; i < n; i++) {
         layer_t *l = &L[i];
         double z = flip ? -l->z_mid : l->z_mid;
-        rings solid, sp;
-        solid_infill(s, L, n, i, &solid);
-        rings_subtract(&l->infill, &solid, &sp);
-        tippe_moments w = rings_slab(&l->walls, l->t, z), so = rings_slab(&solid, l->t, z);
-        /* bridged areas deposit pi d^2 / 4 per (d + 0.05 mm) of width instead of t */
+        const rings *solid = &l->solid, *sp = &l->sparse;
+        tippe_moments w = rings_slab(&l->walls, l->t, z), so = rings_slab(solid, l->t, z);
+        /* bridged areas deposit the bridge's thread per its spacing instead of t:
+         * pi d^2 / 4 per (d + 0.05 mm) (Flow::mm3_per_mm, bridge_extrusion_spacing);
+         * without thick_bridges the solid infill's own line, no change */
         const double dn = s->nozzle_mm * 1e-3;
-        const double bridge_ratio = M_PI * dn * dn / 4 / ((dn + BRIDGE_EXTRA_SPACING_M) * l->t);
-        rings br;
-        rings_intersect(&l->bridge, &solid, &br);
+        const double bridge_ratio =
+            s->thick_bridges ? M_PI * dn * dn / 4 / ((dn + BRIDGE_EXTRA_SPACING_M) * l->t) : 1.0;
+        rings br, inner;
+        rings_intersect(&l->bridge, solid, &br);
         so = tippe_moments_add(so, tippe_moments_scale(rings_slab(&br, l->t, z), bridge_ratio - 1));
+        bridge_over_infill(s, L, i, &inner);
+        tippe_moments ob = tippe_moments_scale(rings_slab(&inner, l->t, z), bridge_ratio - 1);
+        over_infill = tippe_moments_add(over_infill, ob);
         w = tippe_moments_add(w, overhang_extra(s, l, i > 0 ? &L[i - 1] : NULL, z));
+        fixed = tippe_moments_add(fixed, tippe_moments_add(w, so));
+        if (s->infill < 1) /* the bridges over infill, kept apart for another infill */
+            so = tippe_moments_add(so, ob);
         out->wall_m3 += w.m * s->flow;
         out->solid_m3 += so.m * s->flow;
-        fixed = tippe_moments_add(fixed, tippe_moments_add(w, so));
-        tippe_moments spm = rings_slab(&sp, l->t, z);
-        tippe_moments bm = boundary_band(&sp, 0.5 * l->s_fill, l->t, z);
+        tippe_moments spm = rings_slab(sp, l->t, z);
+        tippe_moments bm = boundary_band(sp, 0.5 * l->s_fill, l->t, z);
         sparse = tippe_moments_add(sparse, spm);
         band = tippe_moments_add(band, bm);
         if (rows && i < cap) {
@@ -510,6 +580,7 @@ static int slice_piece(const slicer_part *Pp, const tippe_print_settings *s,
         }
     }
     out->fixed = fixed;
+    out->over_infill = over_infill;
     out->sparse_region = sparse;
     out->sparse_band = band;
     out->s_fill_m = n > 1 ? L[1].s_fill : n ? L[0].s_fill : 0.0;
@@ -548,6 +619,7 @@ int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, 
     if (rc)
         return rc;
     out->fixed = tippe_moments_add(a.fixed, b.fixed);
+    out->over_infill = tippe_moments_add(a.over_infill, b.over_infill);
     out->sparse_region = tippe_moments_add(a.sparse_region, b.sparse_region);
     out->sparse_band = tippe_moments_add(a.sparse_band, b.sparse_band);
     out->wall_m3 = a.wall_m3 + b.wall_m3;
@@ -570,11 +642,16 @@ tippe_moments tippe_print_sliced_at(const tippe_print_sliced *sl, const tippe_pr
     double a = infill > 0 ? anchor_factor(s, sl->s_fill_m, bulk) : 0.0;
     tippe_moments sp = tippe_moments_scale(sl->sparse_region, bulk);
     tippe_moments an = tippe_moments_scale(sl->sparse_band, a);
+
     if (sparse_m3)
         *sparse_m3 = sp.m * s->flow;
     if (anchor_m3)
         *anchor_m3 = an.m * s->flow;
-    return tippe_moments_scale(tippe_moments_add(sl->fixed, tippe_moments_add(sp, an)), s->flow);
+    tippe_moments all = tippe_moments_add(sl->fixed, tippe_moments_add(sp, an));
+    /* no bridges over infill at 100 % (PrintObject::bridge_over_infill) */
+    if (infill < 1)
+        all = tippe_moments_add(all, sl->over_infill);
+    return tippe_moments_scale(all, s->flow);
 }
 
 /* ------------------------------------------------------------ patterns */
@@ -652,3 +729,23 @@ static const tippe_print_assumed assumed[] = {
 };
 
 const tippe_print_assumed *tippe_print_assumed_settings(void) { return assumed; }
+
+/* The pinned settings with the design's values where the print block models
+ * them, so that tippe's 3MF makes the slicer deposit what the model assumed. */
+int tippe_print_pinned_settings(const tippe_print_settings *s, tippe_print_pin *out, int cap)
+{
+    int n = 0;
+    for (const tippe_print_assumed *a = assumed; a->key && n < cap; a++, n++) {
+        out[n].key = a->key;
+        out[n].decides = a->decides;
+        snprintf(out[n].value, sizeof out[n].value, "%s", a->value);
+        if (!strcmp(a->key, "thick_bridges"))
+            snprintf(out[n].value, sizeof out[n].value, "%d", s->thick_bridges ? 1 : 0);
+        else if (!strcmp(a->key, "solid_infill_below_area"))
+            snprintf(out[n].value, sizeof out[n].value, "%.9g", s->solid_infill_below_area_mm2);
+        else if (!strcmp(a->key, "perimeter_generator"))
+            snprintf(out[n].value, sizeof out[n].value, "%s",
+                     s->perimeter_generator == TIPPE_PERIMETERS_CLASSIC ? "classic" : "arachne");
+    }
+    return n;
+}

@@ -85,10 +85,11 @@ void tippe_profile_print_printed_parts(FILE *out, const tippe_design *d)
             fprintf(out,
                     "%s%s: axis vertical, PrusaSlicer 2.5's rules in %d layers: %d perimeters of "
                     "%.2f mm lines, %d top/bottom layers of %.2f mm (at least %.2f / %.2f mm), "
-                    "%s, ",
+                    "%s, %s",
                     lead, p.name, pi.n_layers, s->perimeters, s->line_width_mm,
                     s->top_bottom_layers, s->layer_height_mm, s->top_min_mm, s->bottom_min_mm,
-                    tippe_print_pattern_name(s->pattern));
+                    tippe_print_pattern_name(s->pattern),
+                    s->thick_bridges ? "" : "thin bridges (thick_bridges off), ");
         if (pi.calibrated)
             fprintf(out, "infill %.2f %% from the weighed %.3f g (slicer: %.0f %%)",
                     pi.infill * 100, pi.measured_mass_kg * 1e3, s->infill * 100);
@@ -162,6 +163,7 @@ int tippe_profile_printed_parts_json(struct cJSON *o, const tippe_design *d)
             cJSON_AddNumberToObject(e, "model_rel_error", pi.rel_error) &&
             cJSON_AddStringToObject(e, "model", pi.model) &&
             cJSON_AddStringToObject(e, "pattern", tippe_print_pattern_name(s->pattern)) &&
+            cJSON_AddBoolToObject(e, "thick_bridges", s->thick_bridges) &&
             cJSON_AddNumberToObject(e, "filament_volume_mm3", pi.filament_volume_mm3) &&
             cJSON_AddNumberToObject(e, "wall_mass_kg", pi.wall_mass_kg) &&
             cJSON_AddNumberToObject(e, "solid_infill_mass_kg", pi.solid_infill_mass_kg) &&
