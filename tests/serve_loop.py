@@ -1,0 +1,159 @@
+#!/usr/bin/env python3
+"""The maker's loop on tippe serve's page, step by step (issue 37): a shipped design, a field
+edited, the part made printed, its sliced G-code uploaded, its weighed mass entered. At each
+step the page's verdict (what it shows, and /api/verdict's answer it drew) is compared with
+`tippe build --no-export --json` on the same design text, written to a file (the G-code
+beside it, named by the part as a file). Headless Chromium; screenshots in ARTEFACTS.
+
+Usage: serve_loop.py TIPPE ARTEFACTS. Prints 'N passed, M failed'."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+from serve_lib import Server, REPO, GCODE_WIDTH_TOL_MM, same_verdict
+
+from selenium import webdriver
+from selenium.webdriver.chrome.options import Options
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import WebDriverWait
+
+tippe, artefacts = sys.argv[1], sys.argv[2]
+work = os.path.join(artefacts, "loop")
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+slicer = shutil.which(os.environ.get("PRUSA_SLICER", "prusa-slicer"))
+passed, failed = 0, 0
+
+
+def check(ok, what):
+    global passed, failed
+    if ok:
+        passed += 1
+        print("ok   " + what)
+    else:
+        failed += 1
+        print("FAIL " + what)
+
+
+def js(d, script):
+    return d.execute_script(script)
+
+
+def type_into(d, id_, value):
+    box = d.find_element(By.ID, id_)
+    box.send_keys(Keys.CONTROL, "a")
+    box.send_keys(Keys.DELETE)
+    box.send_keys(value)
+
+
+def settled(d):
+    """The page's verdict is of the design on its form (no edit waiting, none in flight)."""
+    return js(d, "return timer === null && !state.inFlight && state.verdict !== null && "
+                 "JSON.stringify(state.sweepDesign) === JSON.stringify(state.design)")
+
+
+def compare(d, step, gcode=None, tol_mm=0.0):
+    """Writes the page's design to STEP.json (its upload named as the G-code file gcode, by
+    a path relative to it), runs tippe build on it and checks that the page says its verdict."""
+    WebDriverWait(d, 120).until(settled)
+    design = js(d, "return state.sweepDesign")
+    page = js(d, "return state.verdict")
+    shown = d.find_element(By.ID, "verdict").text
+    if gcode:
+        for p in design["parts"]:
+            if isinstance(p.get("print"), dict) and \
+                    str(p["print"].get("gcode", "")).startswith("upload:"):
+                p["print"]["gcode"] = os.path.relpath(gcode, work)
+    path = os.path.join(work, step + ".json")
+    json.dump(design, open(path, "w"), indent=1)
+    t = time.time()
+    r = subprocess.run([tippe, "build", path, "-o", os.path.join(work, step), "--no-export",
+                        "--json"], capture_output=True, text=True, cwd=work)
+    if r.returncode:
+        check(False, "%s: tippe build %s.json: %s" % (step, step, r.stderr.strip()[:300]))
+        return None
+    sheet = json.loads(r.stdout)
+    why = same_verdict(page, sheet, tol_mm)
+    check(not why and shown == sheet["verdict"],
+          "%s: the page shows '%s', tippe build %s.json says '%s' (robust widths %s mm; %.0f s)%s"
+          % (step, shown, step, sheet["verdict"],
+             ", ".join("%.4f" % s.get("robust_width_mm", 0) for s in sheet["settings"]),
+             time.time() - t, ": " + why if why else ""))
+    # then what the whole sheet adds (/api/advice, asked once the verdict is shown): the
+    # changes one can buy or set, the poles, their fixes' --set lines, as the sheet has them
+    WebDriverWait(d, 600).until(lambda d: js(d, "return state.advice !== null"))
+    a = js(d, "return state.advice")
+    want = [x["advice"] for x in sheet["to_make_it_settable"]] if not sheet["settable"] else []
+    shown = [e.text for e in d.find_elements(By.CSS_SELECTOR, "#verdict-text li")]
+    check(not a.get("error") and a["advice"] == want and shown == want[:3] and
+          a["model_holds_at_poles"] == sheet["model_holds_at_poles"] and
+          [f["set"] for f in a["pole_fixes"]] == [f["set"] for f in sheet["pole_fixes"]],
+          "%s: the page's advice is the sheet's: %d change(s) (%d shown), the model %s at the "
+          "poles, %d pole fix(es)%s" % (step, len(want), len(shown),
+                                       "holds" if sheet["model_holds_at_poles"] else "does not hold",
+                                       len(sheet["pole_fixes"]),
+                                       "" if a.get("advice") == want else
+                                       ": page %s, sheet %s" % (a.get("advice") or a, want)))
+    d.save_screenshot(os.path.join(artefacts, "loop-%s.png" % step))
+    return sheet
+
+
+opts = Options()
+for arg in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+            "--window-size=1280,1700", "--hide-scrollbars"]:
+    opts.add_argument(arg)
+opts.binary_location = "/usr/bin/chromium"
+
+# a build of a design with a G-code (the advice the page asks) takes tippe build's time:
+# the budget is raised so that a loaded machine does not turn it into a 503
+with Server(tippe, "--budget", "600") as srv:
+    d = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
+    try:
+        # 1. the shipped design, as the page opens it
+        d.get(srv.url + "?design=m12-setscrew")
+        WebDriverWait(d, 60).until(lambda d: js(d, "return state.name === 'm12-setscrew'"))
+        compare(d, "1-shipped")
+        # 2. a field edited: the screw 13 mm long (15 in the design)
+        type_into(d, "f-parts_2__height_mm", "13")
+        WebDriverWait(d, 60).until(lambda d: js(d, "return state.design.parts[2].height_mm === 13"))
+        compare(d, "2-edited")
+        # 3. the body made printed (the slicer's default print block)
+        d.find_element(By.CSS_SELECTOR, "button.make-printed").click()
+        WebDriverWait(d, 60).until(lambda d: js(d, "return !!state.design.parts[0].print"))
+        compare(d, "3-printed")
+        if not slicer:
+            print("SKIPPED the G-code and weighed steps: prusa-slicer is not installed "
+                  "(TIPPE_WITH_SLICER=1 tools/deps.sh)")
+        else:
+            # 4. its G-code, sliced by PrusaSlicer (tippe slice) and uploaded on the page
+            r = subprocess.run([tippe, "slice", os.path.join(work, "3-printed.json"), "-o",
+                                os.path.join(work, "sliced")], capture_output=True, text=True)
+            gcode = os.path.join(work, "sliced", "3-printed.gcode")
+            check(r.returncode == 0 and os.path.exists(gcode),
+                  "tippe slice 3-printed.json: %s" % (r.stderr.strip()[-200:] or "sliced"))
+            d.find_element(By.ID, "f-parts_0__print_gcode").send_keys(gcode)
+            WebDriverWait(d, 120).until(lambda d: js(
+                d, "return String(state.design.parts[0].print.gcode).startsWith('upload:')"))
+            sheet = compare(d, "4-gcode", gcode, GCODE_WIDTH_TOL_MM)
+            # 5. the part weighed: 3 % heavier than the G-code's plastic (a flow the slicer
+            # did not know), to a tenth of a gram as a kitchen scale reads
+            if sheet:
+                body = js(d, "return state.sweep.printed_parts[0].printed_mass_kg")
+                grams = "%.1f" % (body * 1e3 * 1.03)
+                type_into(d, "f-parts_0__print_measured_mass_g", grams)
+                WebDriverWait(d, 60).until(lambda d: js(
+                    d, "return state.design.parts[0].print.measured_mass_g === %s" % grams))
+                compare(d, "5-weighed", gcode, GCODE_WIDTH_TOL_MM)
+        logs = [e for e in d.get_log("browser") if e["level"] in ("SEVERE", "WARNING")]
+        check(not logs, "no console errors%s" %
+              ("" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])))
+    finally:
+        d.quit()
+
+print("%d passed, %d failed" % (passed, failed))
+sys.exit(1 if failed else 0)
