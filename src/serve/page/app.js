@@ -49,6 +49,7 @@ const state = {
   shownTitle: '',     // whose results are on screen
   pinWanted: false,   // "Pin" pressed while a sweep ran: pin that design with its sweep
   gcodeNames: {},     // "upload:ID" -> the uploaded file's name and slicer
+  gcodeFiles: {},     // "upload:ID" -> the uploaded file's name (Save JSON names it)
   catalogue: [],      // the designs folder's screws (GET /api/catalogue)
 };
 
@@ -287,6 +288,7 @@ function schedule() {
   // a launch, a film or a build shown was of the design before this edit
   clearLaunch();
   $('build-status').textContent = '';
+  $('save-status').textContent = '';
   timer = setTimeout(() => { timer = null; refresh(); }, 150);
 }
 
@@ -918,14 +920,6 @@ function loadText(text, name, source) {
   openDesign(d, name, source);
 }
 
-function save() {
-  const blob = new Blob([JSON.stringify(state.design, null, 2) + '\n'], { type: 'application/json' });
-  const a = document.createElement('a');
-  a.href = URL.createObjectURL(blob);
-  a.download = stem() + '.json';
-  document.body.appendChild(a); a.click(); a.remove();
-}
-
 async function start() {
   $('form').addEventListener('submit', (ev) => ev.preventDefault());
   drawLegend();
@@ -966,7 +960,7 @@ async function start() {
   // a link to an edited design opened over this page (only its fragment differs)
   window.addEventListener('hashchange', () => {
     const k = keptFromHash();
-    if (k && mayDiscard()) openDesign(k.design, k.from, k.source, k.original);
+    if (k && mayDiscard()) { keptGcodes(k); openDesign(k.design, k.from, k.source, k.original); }
   });
   const want = new URLSearchParams(location.search).get('design');
   // an edited design: the link's (#edit=...), else the last one this browser kept
@@ -977,6 +971,7 @@ async function start() {
   } catch (e) { kept = null; }
   if (kept && kept.design && typeof kept.design === 'object') {
     if (list.json.designs.find((d) => d.name === kept.from)) pick.value = kept.from;
+    keptGcodes(kept);
     openDesign(kept.design, kept.from, kept.source, kept.original);
     return;
   }

@@ -41,12 +41,29 @@ function markEdited() {
 // server) and in local storage (the last edit survives a closed tab).
 function keepEdit() {
   const kept = { from: state.name, source: state.source, original: state.original, design: state.design };
+  // the names of the uploads it names: Save JSON names the files by them after a reopen
+  for (const p of state.design.parts || []) {
+    const g = p && p.print && typeof p.print === 'object' ? p.print.gcode : null;
+    if (typeof g === 'string' && state.gcodeFiles[g]) {
+      kept.gcodes = kept.gcodes || {};
+      kept.gcodes[g] = { file: state.gcodeFiles[g], shown: state.gcodeNames[g] };
+    }
+  }
   const frag = isEdited() ? '#edit=' + encodeURIComponent(JSON.stringify(kept)) : '';
   history.replaceState(null, '', location.pathname + location.search + frag);
   try {
     if (isEdited()) localStorage.setItem('tippe-edit', JSON.stringify(kept));
     else localStorage.removeItem('tippe-edit');
   } catch (e) { /* storage off: the URL keeps it */ }
+}
+
+// The uploads' names a kept edit carries, taken back (strings only).
+function keptGcodes(kept) {
+  for (const [g, v] of Object.entries(kept.gcodes || {}))
+    if (g.startsWith('upload:') && v && typeof v.file === 'string') {
+      state.gcodeFiles[g] = v.file;
+      if (typeof v.shown === 'string') state.gcodeNames[g] = v.shown;
+    }
 }
 
 function undo() {
@@ -112,6 +129,7 @@ function gcodeField(form, i, p) {
     file.value = '';
     if (!r.ok) { status.textContent = 'refused: ' + (r.json ? r.json.error : r.error || 'HTTP ' + r.status); return; }
     state.gcodeNames[r.json.gcode] = `${r.json.name} (${r.json.generator || 'unknown slicer'}, ${r.json.layers} layers)`;
+    state.gcodeFiles[r.json.gcode] = r.json.name;
     // the print model's design, pinned with its zones, beside the G-code's
     if (!state.pinned && state.sweep && !state.inFlight && timer === null)
       state.pinned = { design: state.sweepDesign, sweep: state.sweep, title: `${state.shownTitle}: the print model` };
@@ -255,4 +273,27 @@ async function drawSection(design) {
   img.hidden = false;
   img.dataset.z2 = req.z2_mm === undefined ? 'mid' : String(req.z2_mm);
   $('section-note').textContent = `the weight at ${req.z2_mm === undefined ? 'mid-travel' : 'Z2 = ' + req.z2_mm + ' mm'} (click the bar to move it); tippe export draws the same`;
+}
+
+// The design as edited, downloaded. A part's uploaded G-code ("upload:ID", which only
+// this server knows) is named by the uploaded file's name, a file beside the saved design
+// (a part's G-code is relative to its design file), so that tippe build reads it there;
+// opened on the page again, the part asks for that file (the server opens no path).
+function save() {
+  const d = JSON.parse(JSON.stringify(state.design)), named = [];
+  for (const p of d.parts || []) {
+    const g = p && p.print && typeof p.print === 'object' ? p.print.gcode : null;
+    if (typeof g === 'string' && g.startsWith('upload:') && state.gcodeFiles[g]) {
+      p.print.gcode = state.gcodeFiles[g];
+      named.push(p.print.gcode);
+    }
+  }
+  const blob = new Blob([JSON.stringify(d, null, 2) + '\n'], { type: 'application/json' });
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = stem() + '.json';
+  document.body.appendChild(a); a.click(); a.remove();
+  $('save-status').textContent = named.length
+    ? `${a.download} names its G-code ${named.join(', ')} as a file beside it: keep them in one folder for tippe build`
+    : '';
 }
