@@ -67,6 +67,10 @@ check(gref == "m12-upload-body.gcode" and "upload:" not in json.dumps(zipped),
       "the zip's design names its G-code by a path relative to it: %s" % gref)
 check("m12-upload-body.gcode" in names and zf.read("m12-upload-body.gcode") == gcode,
       "the zip's G-code is the uploaded file byte for byte")
+built = json.loads(zf.read("m12-upload-build.json"))
+check(any("is printed as its G-code deposits it" in n for n in built["notes"]),
+      "the sheet says the changes it tried keep the G-code's slicing (no infill step: %d "
+      "changes tried)" % built["changes_tried"])
 md = [n for n in names if n.endswith("-build.md")]
 check(md and "upload:" not in zf.read(md[0]).decode(),
       "the zip's sheet names no upload id")
