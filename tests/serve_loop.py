@@ -89,7 +89,7 @@ def compare(d, step, gcode=None, tol_mm=0.0):
     WebDriverWait(d, 600).until(lambda d: js(d, "return state.advice !== null"))
     a = js(d, "return state.advice")
     want = [x["advice"] for x in sheet["to_make_it_settable"]] if not sheet["settable"] else []
-    shown = [e.text for e in d.find_elements(By.CSS_SELECTOR, "#verdict-text li")]
+    shown = [e.text for e in d.find_elements(By.CSS_SELECTOR, "#verdict-text li .advice-text")]
     check(not a.get("error") and a["advice"] == want and shown == want[:3] and
           a["model_holds_at_poles"] == sheet["model_holds_at_poles"] and
           [f["set"] for f in a["pole_fixes"]] == [f["set"] for f in sheet["pole_fixes"]],
@@ -99,6 +99,13 @@ def compare(d, step, gcode=None, tol_mm=0.0):
                                        len(sheet["pole_fixes"]),
                                        "" if a.get("advice") == want else
                                        ": page %s, sheet %s" % (a.get("advice") or a, want)))
+    notes = [e.text for e in d.find_elements(By.CSS_SELECTOR, "#sheet-notes li")]
+    check(a.get("notes") == sheet["notes"] and notes == sheet["notes"] and
+          (not gcode or sheet["settable"] or
+           any("is printed as its G-code deposits it" in n for n in notes)),
+          "%s: the page shows the sheet's %d note(s)%s" %
+          (step, len(sheet["notes"]), ", the G-code's: its slicing is kept by the changes tried"
+           if gcode and not sheet["settable"] else ""))
     d.save_screenshot(os.path.join(artefacts, "loop-%s.png" % step))
     return sheet
 
@@ -167,17 +174,30 @@ with Server(tippe, "--budget", "600") as srv:
         # 3. the body made printed (the slicer's default print block)
         d.find_element(By.CSS_SELECTOR, "button.make-printed").click()
         WebDriverWait(d, 60).until(lambda d: js(d, "return !!state.design.parts[0].print"))
-        compare(d, "3-printed")
+        sheet = compare(d, "3-printed")
+        # 3b. the sheet's first change tried on the form (its --set lines)
+        first = sheet["to_make_it_settable"][0]
+        d.find_element(By.CSS_SELECTOR, "#verdict-text button.apply-advice").click()
+        WebDriverWait(d, 60).until(lambda d: js(d, "return state.design.parts[0].print.infill "
+                                                   "!== 0.15"))
+        sheet = compare(d, "3b-advised")
+        check(sheet and sheet["settable"] == first["settable"] and
+              abs(min(s["robust_width_mm"] for s in sheet["settings"] if s["reachable"]) -
+                  first["narrowest_robust_mm"]) < 1e-9,
+              "the advice '%s' tried on the form (--set %s): the page's verdict is the one the "
+              "sheet promised (%s, narrowest robust %.3f mm)" %
+              (first["advice"][:40], " --set ".join(first["set"]), sheet and sheet["verdict"],
+               first["narrowest_robust_mm"]))
         if not slicer:
             print("SKIPPED the G-code and weighed steps: prusa-slicer is not installed "
                   "(TIPPE_WITH_SLICER=1 tools/deps.sh)")
         else:
             # 4. its G-code, sliced by PrusaSlicer (tippe slice) and uploaded on the page
-            r = subprocess.run([tippe, "slice", os.path.join(work, "3-printed.json"), "-o",
+            r = subprocess.run([tippe, "slice", os.path.join(work, "3b-advised.json"), "-o",
                                 os.path.join(work, "sliced")], capture_output=True, text=True)
-            gcode = os.path.join(work, "sliced", "3-printed.gcode")
+            gcode = os.path.join(work, "sliced", "3b-advised.gcode")
             check(r.returncode == 0 and os.path.exists(gcode),
-                  "tippe slice 3-printed.json: %s" % (r.stderr.strip()[-200:] or "sliced"))
+                  "tippe slice 3b-advised.json: %s" % (r.stderr.strip()[-200:] or "sliced"))
             d.find_element(By.ID, "f-parts_0__print_gcode").send_keys(gcode)
             WebDriverWait(d, 120).until(lambda d: js(
                 d, "return String(state.design.parts[0].print.gcode).startsWith('upload:')"))

@@ -739,13 +739,14 @@ void tippe_serve_advice_forget(void)
 
 /* What the whole sheet says beside its verdict, with tippe build --json's names and
  * values: whether the model holds at the poles the launch checks stand on, the poles'
- * openings and fixes (with their --set lines), the warnings and each setting's
+ * openings and fixes (with their --set lines), the warnings, the notes, the changes that
+ * make it settable (with their --set lines) and each setting's
  * launch check as the sheet's table words it ("launch_checks": behaviour, text). 0, or
  * -1 when out of memory. */
 static int sheet_extras(const tippe_build_sheet *sheet, cJSON *o)
 {
     static const char *const keep[] = {"model_holds_at_poles", "polar_caps", "pole_fixes",
-                                       "warnings", NULL};
+                                       "warnings", "notes", "to_make_it_settable", NULL};
     cJSON *whole = tippe_build_json(sheet);
     if (!whole)
         return -1;

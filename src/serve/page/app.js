@@ -387,9 +387,7 @@ function drawVerdict() {
     t.appendChild(document.createTextNode(' (the changes one can buy: ' + a.error + ')'));
   } else if (whole && a.advice.length) {
     t.appendChild(document.createTextNode(' Changes one can buy or set:'));
-    const ul = document.createElement('ul');
-    for (const x of a.advice.slice(0, 3)) ul.appendChild(Object.assign(document.createElement('li'), { textContent: x }));
-    t.appendChild(ul);
+    t.appendChild(adviceList(a));
   }
   if (whole) drawSheetMore(a);
 }
@@ -463,6 +461,12 @@ function drawSheetMore(a) {
       return [`${f.fix} (${f.verdict}) `, code, ' ', btn];
     }));
     ul.id = 'pole-fixes';
+    box.appendChild(ul);
+  }
+  if (a.notes && a.notes.length) {
+    box.appendChild(Object.assign(document.createElement('p'), { className: 'sheet-head', textContent: 'The sheet\'s notes:' }));
+    const ul = list(a.notes.map((n) => [n]));
+    ul.id = 'sheet-notes';
     box.appendChild(ul);
   }
 }

@@ -249,7 +249,8 @@ function applySets(sets) {
       } else o = o[keys[k]];
       if (!o || typeof o !== 'object') return 0;
     }
-    o[keys[keys.length - 1]] = value;
+    // null drops the field, as --set FIELD=null does (a weighing the change makes stale)
+    if (value === null) delete o[keys[keys.length - 1]]; else o[keys[keys.length - 1]] = value;
   }
   editDesign(d);
   return 1;
@@ -296,4 +297,23 @@ function save() {
   $('save-status').textContent = named.length
     ? `${a.download} names its G-code ${named.join(', ')} as a file beside it: keep them in one folder for tippe build`
     : '';
+}
+
+// The sheet's changes one can buy or set (up to three), each with a button that tries its
+// --set lines on the form, as a pole's fix is tried.
+function adviceList(a) {
+  const ul = document.createElement('ul');
+  const sets = a.to_make_it_settable || [];
+  a.advice.slice(0, 3).forEach((x, k) => {
+    const li = document.createElement('li');
+    li.appendChild(Object.assign(document.createElement('span'), { className: 'advice-text', textContent: x }));
+    if (sets[k] && sets[k].advice === x) {
+      const btn = Object.assign(document.createElement('button'), { type: 'button', className: 'apply-advice', textContent: 'Try it on the form' });
+      btn.title = sets[k].set.map((v) => '--set ' + v).join(' ');
+      btn.addEventListener('click', () => applySets(sets[k].set));
+      li.append(' ', btn);
+    }
+    ul.appendChild(li);
+  });
+  return ul;
 }
