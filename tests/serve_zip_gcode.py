@@ -71,6 +71,10 @@ built = json.loads(zf.read("m12-upload-build.json"))
 check(any("is printed as its G-code deposits it" in n for n in built["notes"]),
       "the sheet says the changes it tried keep the G-code's slicing (no infill step: %d "
       "changes tried)" % built["changes_tried"])
+cannot = [f["fix"] for f in built["pole_fixes"] if f["verdict"] == "failed"]
+check(cannot and all("slice the fixed design and give its G-code" in f for f in cannot),
+      "the poles' fixes it cannot try (the G-code is of the part without them) say to slice "
+      "the fixed design: %d of %d" % (len(cannot), len(built["pole_fixes"])))
 md = [n for n in names if n.endswith("-build.md")]
 check(md and "upload:" not in zf.read(md[0]).decode(),
       "the zip's sheet names no upload id")
