@@ -410,6 +410,7 @@ typedef struct {
     size_t len;
 } zip_gcode;
 
+/* Frees the n texts read and the array. */
 static void zip_gcodes_free(zip_gcode *g, int n)
 {
     for (int i = 0; i < n; i++)
