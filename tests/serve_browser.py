@@ -121,7 +121,8 @@ with Server(tippe) as srv:
                          "parts.body.print.infill=0.4", "-o", os.path.join(artefacts, "build-cli"),
                          "--no-export")
         wait.until(lambda d: d.execute_script("return state.advice !== null"))
-        items = [li.text for li in driver.find_elements(By.CSS_SELECTOR, "#verdict-text li")]
+        items = [li.text for li in driver.find_elements(By.CSS_SELECTOR,
+                                                          "#verdict-text li .advice-text")]
         want_adv = [a["advice"] for a in sheet.get("to_make_it_settable", [])][:3]
         check(items == want_adv and len(items) > 0,
               "infill 0.4: the changes one can buy arrive after the verdict, as tippe build's "

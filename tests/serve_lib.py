@@ -82,3 +82,33 @@ class Server:
 
     def post(self, path, body, **kw):
         return self.request("POST", path, body, **kw)
+
+
+# The zone ends are found to TIPPE_SWEEP_XTOL_MM (1e-7 mm, sweep.h); the server reads an
+# uploaded G-code at 1 g/cm^3 and scales it to the material, the command reads the file at
+# the material's density: the moments differ by rounding, which may move each end of a
+# zone anywhere within its root's tolerance, so a robust width may differ by twice it.
+GCODE_WIDTH_TOL_MM = 2e-7 + 1e-12
+
+
+def same_verdict(page, sheet, tol_mm=0.0):
+    """The page's /api/verdict against tippe build --json: the verdict, its two flags, the
+    setting rule and each behaviour's reachability, robust width (within tol_mm: 0, the
+    same library function on the same design, unless a G-code was uploaded) and
+    settability. Returns '' when they agree, else what differs."""
+    for k in ("verdict", "three_in_one", "settable", "min_setting_mm"):
+        if page[k] != sheet[k]:
+            return "%s: page %r, tippe build %r" % (k, page[k], sheet[k])
+    if len(page["settings"]) != len(sheet["settings"]):
+        return "settings: %d on the page, %d in the sheet" % (len(page["settings"]),
+                                                             len(sheet["settings"]))
+    for p, s in zip(page["settings"], sheet["settings"]):
+        if p["behaviour"] != s["behaviour"] or p["reachable"] != s["reachable"]:
+            return "%s: reachable %r on the page, %r in the sheet" % (s["behaviour"],
+                                                                     p["reachable"], s["reachable"])
+        if s["reachable"] and (abs(p["robust_width_mm"] - s["robust_width_mm"]) > tol_mm or
+                               p["settable"] != s["settable"]):
+            return "%s: robust %.9f mm (settable %r) on the page, %.9f mm (%r) in the sheet" % (
+                s["behaviour"], p["robust_width_mm"], p["settable"], s["robust_width_mm"],
+                s["settable"])
+    return ""

@@ -82,8 +82,9 @@ int tippe_build_catalogue_load(const char *path, tippe_build_catalogue **out, ti
 /* Where a design's hardware catalogue is, one rule for tippe build, tippe serve
  * and tippe optimise: the design's own "catalogue" when it names one, else
  * catalogue.json in its folder (tippe_design_beside), when that file can be
- * read; NULL: no catalogue. buf holds the second in any case (where a catalogue
- * would be looked for, for a message). */
+ * read, else the shipped catalogue for a design that reads the shipped materials
+ * table (tippe_design_shipped_catalogue); NULL: no catalogue. buf holds the second
+ * when the third is not used (where a catalogue would be looked for, for a message). */
 const char *tippe_build_catalogue_file(const tippe_design *d, char *buf, size_t size);
 void tippe_build_catalogue_free(tippe_build_catalogue *c);
 /* The first item (in file order) of radius_mm and height_mm (within 1e-6

@@ -190,6 +190,11 @@ const char *tippe_design_catalogue(const tippe_design *d);
  * relative to the design file's folder (tippe_path_beside), or in the designs
  * folder of a design from memory. TIPPE_EINPUT (buf cut) when it does not fit. */
 int tippe_design_beside(const tippe_design *d, const char *name, char *buf, size_t size);
+/* A design that reads the shipped materials table (no "materials" field, no
+ * materials.json beside it: tippe_design_note) and has no "catalogue" field and no
+ * catalogue.json beside it reads the shipped catalogue too, the one beside that table,
+ * as tippe serve's designs do: its path into buf and 1, else 0 (also when unreadable). */
+int tippe_design_shipped_catalogue(const tippe_design *d, char *buf, size_t size);
 
 /* How part i is printed (docs/design-format.md, "Printed parts"). A part
  * without a print block is solid: printed = 0 and the rest is zero. */
@@ -294,7 +299,8 @@ int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size);
 /* Note i (0, 1, ...) about how a design that loaded was read, not a likely
  * mistake: a design without a "materials" field and without materials.json
  * beside it reads the shipped table (installed, or the checkout's designs/), and
- * the note names it. Writes it into buf and returns 1, or returns 0 past the last. */
+ * the note names it; a second names the shipped catalogue it then reads
+ * (tippe_design_shipped_catalogue). Writes it into buf and returns 1, or returns 0 past the last. */
 int tippe_design_note(const tippe_design *d, int i, char *buf, size_t size);
 
 /* The solid of part i, for exporters that rebuild its shape (mm). Fields that

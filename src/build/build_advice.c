@@ -238,7 +238,7 @@ static void travel_change(advice_ctx *a)
 }
 
 /* Every single change the design allows: the weight's travel as far as its parts allow,
- * the infill of each printed part,
+ * the infill of each printed part (not one a G-code gives),
  * and for the moving weight its material, and a catalogue screw (a screw in
  * a hole, with a catalogue) or its length in whole mm. */
 static void list_changes(advice_ctx *a, const tippe_build_catalogue *cat)
@@ -256,8 +256,21 @@ static void list_changes(advice_ctx *a, const tippe_build_catalogue *cat)
         if (tippe_design_part(a->d, i, &p) || tippe_design_part_print(a->d, i, &pr) ||
             tippe_design_part_solid(a->d, i, &sd))
             continue;
-        if (pr.printed)
+        /* a part printed as its G-code deposits it: the infill is the slicer's, in the
+         * G-code (a sweep at another infill is the same body): slicing again is the
+         * change, which the print model's sheet (without the G-code) tries */
+        if (pr.printed && !pr.from_gcode) {
             infill_changes(a, p.name, &pr);
+        } else if (pr.printed) {
+            char t[400];
+            snprintf(t, sizeof t,
+                     "'%s' is printed as its G-code deposits it: the changes tried keep its "
+                     "slicing, infill included. To try the slicer's infill steps, build the "
+                     "design without print.gcode (the print model), then slice again at the "
+                     "infill it advises.",
+                     p.name);
+            tippe_build_note(a->s, t);
+        }
         else if (sd.moving && !sd.is_void) {
             int cyl = !strcmp(sd.shape, "cylinder") || !strcmp(sd.shape, "tube");
             material_changes(a, p.name, &p, hole && a->s->has_thread && cyl);

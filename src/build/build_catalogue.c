@@ -171,14 +171,24 @@ static int read_set(const tippe_json_reader *r, const cJSON *obj, tippe_build_ca
 }
 
 /* A design names its catalogue, or keeps one beside it as the shipped designs
- * do (designs/catalogue.json); an absent default is no catalogue, not an error
+ * do (designs/catalogue.json); one that reads the shipped materials table for want
+ * of its own reads the shipped catalogue beside it (a design saved from tippe serve's
+ * page then gets the page's advice); an absent default is no catalogue, not an error
  * (a design without catalogue screws needs none). */
 const char *tippe_build_catalogue_file(const tippe_design *d, char *buf, size_t size)
 {
     const int fits = tippe_design_beside(d, "catalogue.json", buf, size) == TIPPE_OK;
     if (tippe_design_catalogue(d))
         return tippe_design_catalogue(d);
-    return fits && access(buf, R_OK) == 0 ? buf : NULL;
+    if (fits && access(buf, R_OK) == 0)
+        return buf;
+    /* buf keeps the path beside the design unless the shipped one is used (build.h) */
+    char shipped[4096 + 32];
+    if (tippe_design_shipped_catalogue(d, shipped, sizeof shipped) && strlen(shipped) < size) {
+        snprintf(buf, size, "%s", shipped);
+        return buf;
+    }
+    return NULL;
 }
 
 int tippe_build_catalogue_load(const char *path, tippe_build_catalogue **out, tippe_error *err)

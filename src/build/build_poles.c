@@ -52,6 +52,21 @@ static int weight_extent(const tippe_design *d, double *below, double *above)
     return any;
 }
 
+/* The first part printed as its G-code deposits it (print.gcode): 1 with its name. */
+static int gcode_part(const tippe_design *d, char *name, size_t size)
+{
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_part_info p;
+        tippe_design_print_info pr;
+        if (!tippe_design_part(d, i, &p) && !tippe_design_part_print(d, i, &pr) && pr.printed &&
+            pr.from_gcode) {
+            snprintf(name, size, "%s", p.name);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* One fix: the hole's void kept between lo and hi, the design's travel cut to
  * where the weight stays inside it (1e-6 mm in from touching), tried as the
  * sheet judges. */
@@ -86,9 +101,18 @@ static void try_fix(const tippe_design *d, tippe_build_sheet *s, const char *hol
             break;
     }
     x->narrowest_mm = x->verdict >= 0 ? z.narrowest_mm : NAN;
+    char gpart[64];
     int n;
     if (!(t1 > t0))
         n = snprintf(x->text, sizeof x->text, "%s: no room is left for the weight.", what);
+    else if (x->verdict < 0 && gcode_part(d, gpart, sizeof gpart))
+        /* the G-code's deposit is matched to the part as printed (design_printed.c): a plug
+         * changes the part, not the G-code, so the changed design cannot load with it */
+        n = snprintf(x->text, sizeof x->text,
+                     "%s: the changed design does not load or sweep: '%s' is printed as its "
+                     "G-code deposits it, sliced without the fix; slice the fixed design and "
+                     "give its G-code.",
+                     what, gpart);
     else if (x->verdict < 0)
         n = snprintf(x->text, sizeof x->text, "%s: the changed design does not load or sweep.",
                      what);

@@ -566,9 +566,9 @@ const char *tippe_build_advice_heading(const tippe_build_sheet *s)
 
 const char *tippe_build_advice_none(void)
 {
-    return "No change tried makes it settable: the slicer's infill steps, the table's bought "
-           "materials, the catalogue's screws or whole-mm lengths (half to double), alone or "
-           "in pairs.";
+    return "No change tried makes it settable: the slicer's infill steps (of a part not "
+           "given by its G-code), the table's bought materials, the catalogue's screws or "
+           "whole-mm lengths (half to double), alone or in pairs.";
 }
 
 /* The sheet's launch-check cell of setting k (the Markdown table's, the page's), so that

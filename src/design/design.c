@@ -732,13 +732,34 @@ int tippe_design_warning(const tippe_design *d, int i, char *buf, size_t size)
 
 int tippe_design_note(const tippe_design *d, int i, char *buf, size_t size)
 {
-    if (i != 0 || !d->mat_fallback)
+    if (!d->mat_fallback)
         return 0;
-    snprintf(buf, size,
-             "materials: no materials.json beside the design: its materials are those of the "
-             "shipped table %s",
-             d->mat_file);
+    char cat[1024 + 32];
+    if (i == 0)
+        snprintf(buf, size,
+                 "materials: no materials.json beside the design: its materials are those of "
+                 "the shipped table %s",
+                 d->mat_file);
+    else if (i == 1 && tippe_design_shipped_catalogue(d, cat, sizeof cat))
+        snprintf(buf, size,
+                 "catalogue: no catalogue.json beside the design: the screws tippe build "
+                 "tries are those of the shipped catalogue %s",
+                 cat);
+    else
+        return 0;
     return 1;
+}
+
+int tippe_design_shipped_catalogue(const tippe_design *d, char *buf, size_t size)
+{
+    char beside[1024 + 32], dir[1024];
+    if (!d->mat_fallback || !d->mat_file || d->catalogue ||
+        tippe_design_beside(d, "catalogue.json", beside, sizeof beside) != TIPPE_OK ||
+        access(beside, F_OK) == 0)
+        return 0;
+    tippe_path_dir(d->mat_file, dir, sizeof dir);
+    const int n = snprintf(buf, size, "%s/catalogue.json", dir);
+    return n > 0 && (size_t)n < size && access(buf, R_OK) == 0;
 }
 
 void tippe_design_protrusion_text(const tippe_design_protrusion *p, char *buf, size_t size)

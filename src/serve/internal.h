@@ -197,17 +197,25 @@ void tippe_serve_api_gcode(serve_server *s, const cJSON *req, serve_response *ou
  * or 0 when it is not kept (any more). */
 int tippe_serve_gcode_find(const char *id, tippe_gcode_body *out, tippe_gcode_beads *beads,
                            char *name, size_t size);
+/* A copy (malloc'd, NUL-terminated) of the text of the upload id, for a build's zip: 1,
+ * 0 when it is not kept (any more), -1 out of memory. */
+int tippe_serve_gcode_text(const char *id, char **text, size_t *len);
 void tippe_serve_gcode_forget(void);
 
 /* ---- serve_section.c: the section drawing (tippe export's SVG) ---- */
 void tippe_serve_api_section(serve_server *s, const cJSON *req, serve_response *out);
 
 /* ---- serve_zip.c: files of a folder into one zip in memory (libzip) ---- */
-/* ... and, when extra_name is not NULL, one more member from memory (the design as sent,
+/* ... and n_extra more members from memory (the design as sent and the G-codes it names,
  * which the build folder does not hold). */
+typedef struct {
+    const char *name;
+    const char *data;
+    size_t len;
+} serve_zip_member;
 int tippe_serve_zip_folder(const char *dir, const char *const *names, int n,
-                           const char *extra_name, const char *extra, size_t extra_len,
-                           char **out, size_t *len, tippe_error *err);
+                           const serve_zip_member *extra, int n_extra, char **out, size_t *len,
+                           tippe_error *err);
 
 /* ---- serve_page.c (generated): the page's files ---- */
 typedef struct {

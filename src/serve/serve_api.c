@@ -399,6 +399,84 @@ static int by_string(const void *a, const void *b)
     return strcmp(*(const char *const *)a, *(const char *const *)b);
 }
 
+/* The G-codes a build's zip carries: a part's upload ("print": {"gcode": "upload:ID"})
+ * renamed in dup, the design that goes into the zip, to STEM-PART.gcode, a file beside
+ * it (a part's G-code is named relative to its design file, design_printed.c), whose
+ * text comes from the upload kept in memory (never a path of the request's). So the
+ * unzipped folder builds with the command as on the page (tippe build STEM.json). */
+typedef struct {
+    char name[160];
+    char *text;
+    size_t len;
+} zip_gcode;
+
+/* Frees the n texts read and the array. */
+static void zip_gcodes_free(zip_gcode *g, int n)
+{
+    for (int i = 0; i < n; i++)
+        free(g[i].text);
+    free(g);
+}
+
+/* The uploads of dup's parts renamed and their texts read: their count (*out_g
+ * malloc'd), or -1 with out set. */
+static int zip_gcodes(cJSON *dup, const char *stem, zip_gcode **out_g, serve_response *out)
+{
+    *out_g = NULL;
+    const cJSON *parts = cJSON_GetObjectItemCaseSensitive(dup, "parts");
+    const int n_parts = cJSON_IsArray(parts) ? cJSON_GetArraySize(parts) : 0;
+    zip_gcode *g = n_parts ? calloc((size_t)n_parts, sizeof *g) : NULL;
+    int n = 0, i = 0;
+    for (cJSON *p = n_parts ? parts->child : NULL; p; p = p->next, i++) {
+        cJSON *pr = cJSON_IsObject(p) ? cJSON_GetObjectItemCaseSensitive(p, "print") : NULL;
+        cJSON *gc = cJSON_IsObject(pr) ? cJSON_GetObjectItemCaseSensitive(pr, "gcode") : NULL;
+        const cJSON *pn = cJSON_GetObjectItemCaseSensitive(p, "name");
+        if (!cJSON_IsString(gc) || strncmp(gc->valuestring, "upload:", 7) || !cJSON_IsString(pn))
+            continue;
+        if (!g) {
+            tippe_serve_respond_error(out, 503, NULL, "out of memory");
+            return -1;
+        }
+        /* the part's name as a file name's letters (a '-' for any other), at most 64 */
+        char part[65];
+        size_t k = 0;
+        for (const char *c = pn->valuestring; *c && k < sizeof part - 1; c++, k++)
+            part[k] = ((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') ||
+                       (*c >= '0' && *c <= '9') || *c == '_' || *c == '-')
+                          ? *c
+                          : '-';
+        part[k] = 0;
+        snprintf(g[n].name, sizeof g[n].name, "%s-%s.gcode", stem, part);
+        for (int j = 0; j < n; j++)
+            if (!strcmp(g[j].name, g[n].name)) /* two names alike once cleaned */
+                snprintf(g[n].name, sizeof g[n].name, "%s-%s-%d.gcode", stem, part, i);
+        const int got = tippe_serve_gcode_text(gc->valuestring + 7, &g[n].text, &g[n].len);
+        if (got <= 0) {
+            zip_gcodes_free(g, n);
+            char field[64];
+            snprintf(field, sizeof field, "design.parts[%d].print.gcode", i);
+            if (got < 0)
+                tippe_serve_respond_error(out, 503, NULL, "out of memory");
+            else
+                tippe_serve_respond_error(out, 400, field,
+                                          "design: parts[%d].print.gcode: the uploaded G-code "
+                                          "'%.40s' is not kept any more: upload it again",
+                                          i, gc->valuestring);
+            return -1;
+        }
+        n++;
+        cJSON *renamed = cJSON_CreateString(g[n - 1].name);
+        if (!renamed || !cJSON_ReplaceItemInObjectCaseSensitive(pr, "gcode", renamed)) {
+            cJSON_Delete(renamed);
+            zip_gcodes_free(g, n);
+            tippe_serve_respond_error(out, 503, NULL, "out of memory");
+            return -1;
+        }
+    }
+    *out_g = g;
+    return n;
+}
+
 /* POST /api/build {design, name?, hole?, clearance_mm?}: what tippe build -o DIR writes
  * (the sheet as JSON, Markdown, PDF, SVG, PNG, the gauges, tippe export's STL,
  * 3MF, OpenSCAD and drawing) as one zip. The files go to a temporary folder
@@ -434,6 +512,8 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
         return;
     char *design_text = NULL;
     size_t design_len = 0;
+    zip_gcode *gcodes = NULL;
+    int n_gcodes = 0;
     const serve_design *shipped =
         cJSON_IsString(given) ? tippe_serve_find_design(s, given->valuestring) : NULL;
     if (shipped) {
@@ -442,14 +522,33 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
             memcpy(design_text, shipped->text, shipped->len);
             design_len = shipped->len;
         }
-    } else if ((design_text = cJSON_Print(given))) {
-        design_len = strlen(design_text);
+    } else {
+        /* sent as an object: printed by cJSON, its uploads named as the zip's files */
+        cJSON *dup = cJSON_Duplicate(given, 1);
+        n_gcodes = dup ? zip_gcodes(dup, stem, &gcodes, out) : -1;
+        if (n_gcodes < 0) {
+            cJSON_Delete(dup);
+            tippe_design_free(d);
+            if (!dup)
+                tippe_serve_respond_error(out, 503, NULL, "out of memory");
+            return;
+        }
+        if ((design_text = cJSON_Print(dup)))
+            design_len = strlen(design_text);
+        cJSON_Delete(dup);
     }
-    if (!design_text) {
+    serve_zip_member *members = calloc((size_t)n_gcodes + 1, sizeof *members);
+    if (!design_text || !members) {
         tippe_serve_respond_error(out, 503, NULL, "out of memory");
+        free(design_text);
+        free(members);
+        zip_gcodes_free(gcodes, n_gcodes);
         tippe_design_free(d);
         return;
     }
+    members[0] = (serve_zip_member){file, design_text, design_len};
+    for (int k = 0; k < n_gcodes; k++)
+        members[k + 1] = (serve_zip_member){gcodes[k].name, gcodes[k].text, gcodes[k].len};
     char cat[4096 + 32], dir[4096];
     o.catalogue = tippe_build_catalogue_file(d, cat, sizeof cat);
     tippe_build_sheet *sheet = malloc(sizeof *sheet);
@@ -457,6 +556,8 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
     if (!sheet || !paths || tippe_serve_tmp_make(s, dir, sizeof dir)) {
         tippe_serve_respond_error(out, 503, NULL, "cannot make a temporary folder for the build");
         free(design_text);
+        free(members);
+        zip_gcodes_free(gcodes, n_gcodes);
         free(sheet);
         free(paths);
         tippe_design_free(d);
@@ -486,9 +587,11 @@ static void api_build(serve_server *s, const cJSON *req, serve_response *out)
     char *zip = NULL;
     size_t len = 0;
     if (!rc)
-        rc = tippe_serve_zip_folder(dir, (const char *const *)names, n, file, design_text,
-                                    design_len, &zip, &len, &err);
+        rc = tippe_serve_zip_folder(dir, (const char *const *)names, n, members, n_gcodes + 1,
+                                    &zip, &len, &err);
     free(design_text);
+    free(members);
+    zip_gcodes_free(gcodes, n_gcodes);
     tippe_serve_tmp_remove(s, dir);
     for (int i = 0; i < n; i++)
         free(names[i]);
@@ -637,13 +740,14 @@ void tippe_serve_advice_forget(void)
 
 /* What the whole sheet says beside its verdict, with tippe build --json's names and
  * values: whether the model holds at the poles the launch checks stand on, the poles'
- * openings and fixes (with their --set lines), the warnings and each setting's
+ * openings and fixes (with their --set lines), the warnings, the notes, the changes that
+ * make it settable (with their --set lines) and each setting's
  * launch check as the sheet's table words it ("launch_checks": behaviour, text). 0, or
  * -1 when out of memory. */
 static int sheet_extras(const tippe_build_sheet *sheet, cJSON *o)
 {
     static const char *const keep[] = {"model_holds_at_poles", "polar_caps", "pole_fixes",
-                                       "warnings", NULL};
+                                       "warnings", "notes", "to_make_it_settable", NULL};
     cJSON *whole = tippe_build_json(sheet);
     if (!whole)
         return -1;

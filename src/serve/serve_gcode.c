@@ -2,7 +2,9 @@
  * of POST /api/gcode, is read in memory by the library (tippe_gcode_parse_buffer:
  * never a path) once, at one density, and kept by an id; a design then names it as a
  * part's "print": {"gcode": "upload:ID"}, and the loader takes the kept body for that
- * part (tippe_design_load_text_gcode) as it would read a file. */
+ * part (tippe_design_load_text_gcode) as it would read a file. The text is kept too:
+ * a build's zip carries it beside the design, which names it as a file the command
+ * reads (tippe build STEM.json in the unzipped folder). */
 #include "serve/internal.h"
 
 #include "tippe/design.h"
@@ -14,20 +16,28 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Uploads kept: a maker compares a slicing or two; each body is a few KiB. */
+/* Uploads kept: a maker compares a slicing or two; each body is a few KiB, its text
+ * what the slicer wrote (8.5 MB for the M12 at 0.2 mm layers). The texts kept add up
+ * to at most GCODE_TEXT_BYTES (two uploads at the largest size the server takes):
+ * beyond, the oldest uploads are forgotten whole, so that an upload kept is always
+ * one a build can put in its zip. */
 enum { GCODE_KEPT = 8 };
+#define GCODE_TEXT_BYTES ((size_t)2 * TIPPE_SERVE_MAX_GCODE_BYTES)
 static struct {
     char id[24];
     char name[128];
     tippe_gcode_body body;
     tippe_gcode_beads beads; /* near the axis, for the holes' cuts (UPLOAD_BEADS_MM) */
+    char *text;              /* the file's text, for a build's zip */
+    size_t len;
+    unsigned long seq;       /* when it was uploaded (the oldest is forgotten first) */
     int used;
 } kept[GCODE_KEPT];
 /* The beads kept of an upload, mm from its axis: a part's holes are cut out to their
  * radius + 3 mm (tippe_gcode_cut_body); 30 mm holds any hole of a ball up to 60 mm
  * across (the largest the G-code reader's cap expects, print.h). */
 #define UPLOAD_BEADS_MM 30.0
-static int kept_next;
+static unsigned long kept_seq;
 static pthread_mutex_t kept_lock = PTHREAD_MUTEX_INITIALIZER;
 
 /* The upload's id: FNV-1a over its bytes (the same file uploaded twice is kept once). */
@@ -57,6 +67,34 @@ int tippe_serve_gcode_find(const char *id, tippe_gcode_body *out, tippe_gcode_be
             }
             snprintf(name, size, "%s", kept[i].name);
             found = 1;
+        }
+    pthread_mutex_unlock(&kept_lock);
+    return found;
+}
+
+/* Forgets slot i (under kept_lock). */
+static void kept_drop(int i)
+{
+    tippe_gcode_beads_free(&kept[i].beads);
+    free(kept[i].text);
+    memset(&kept[i], 0, sizeof kept[i]);
+}
+
+int tippe_serve_gcode_text(const char *id, char **text, size_t *len)
+{
+    int found = 0;
+    *text = NULL;
+    *len = 0;
+    pthread_mutex_lock(&kept_lock);
+    for (int i = 0; i < GCODE_KEPT && !found; i++)
+        if (kept[i].used && !strcmp(kept[i].id, id)) {
+            found = 1;
+            if (kept[i].text && (*text = malloc(kept[i].len + 1))) {
+                memcpy(*text, kept[i].text, kept[i].len + 1);
+                *len = kept[i].len;
+            } else {
+                found = -1;
+            }
         }
     pthread_mutex_unlock(&kept_lock);
     return found;
@@ -93,18 +131,50 @@ void tippe_serve_api_gcode(serve_server *s, const cJSON *req, serve_response *ou
     }
     char id[24];
     gcode_id(t->valuestring, len, id, sizeof id);
+    char *copy = malloc(len + 1);
+    if (!copy) {
+        tippe_gcode_beads_free(&beads);
+        tippe_serve_respond_error(out, 503, NULL, "out of memory");
+        return;
+    }
+    memcpy(copy, t->valuestring, len + 1);
     pthread_mutex_lock(&kept_lock);
+    /* its own slot again, else a free one, else the oldest */
     int slot = -1;
     for (int i = 0; i < GCODE_KEPT && slot < 0; i++)
         if (kept[i].used && !strcmp(kept[i].id, id))
             slot = i;
-    if (slot < 0)
-        slot = kept_next++ % GCODE_KEPT;
+    for (int i = 0; i < GCODE_KEPT && slot < 0; i++)
+        if (!kept[i].used)
+            slot = i;
+    if (slot < 0) { /* all in use: the oldest */
+        slot = 0;
+        for (int i = 1; i < GCODE_KEPT; i++)
+            if (kept[i].seq < kept[slot].seq)
+                slot = i;
+    }
+    kept_drop(slot);
+    /* the texts kept within GCODE_TEXT_BYTES: the oldest others forgotten */
+    for (;;) {
+        size_t total = len;
+        int oldest = -1;
+        for (int i = 0; i < GCODE_KEPT; i++)
+            if (kept[i].used) {
+                total += kept[i].len;
+                if (oldest < 0 || kept[i].seq < kept[oldest].seq)
+                    oldest = i;
+            }
+        if (total <= GCODE_TEXT_BYTES || oldest < 0)
+            break;
+        kept_drop(oldest);
+    }
     snprintf(kept[slot].id, sizeof kept[slot].id, "%s", id);
     snprintf(kept[slot].name, sizeof kept[slot].name, "%s", name);
     kept[slot].body = body;
-    tippe_gcode_beads_free(&kept[slot].beads);
     kept[slot].beads = beads;
+    kept[slot].text = copy;
+    kept[slot].len = len;
+    kept[slot].seq = ++kept_seq;
     kept[slot].used = 1;
     pthread_mutex_unlock(&kept_lock);
     cJSON *o = cJSON_CreateObject();
@@ -130,7 +200,6 @@ void tippe_serve_gcode_forget(void)
 {
     pthread_mutex_lock(&kept_lock);
     for (int i = 0; i < GCODE_KEPT; i++)
-        tippe_gcode_beads_free(&kept[i].beads);
-    memset(kept, 0, sizeof kept);
+        kept_drop(i);
     pthread_mutex_unlock(&kept_lock);
 }

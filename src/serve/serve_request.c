@@ -297,7 +297,7 @@ tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, cons
             snprintf(field, sizeof field, "%s.parts[%d].print.gcode", key, i);
             tippe_serve_respond_error(out, 400, field, "%s: parts[%d].print.gcode: the uploaded "
                                       "G-code '%.40s' is not kept any more (the server keeps the "
-                                      "last 8): upload it again", key, i, g->valuestring);
+                                      "last 8, 128 MiB): upload it again", key, i, g->valuestring);
             return NULL;
         }
         snprintf(gcodes[n_gcodes].part, sizeof gcodes[n_gcodes].part, "%s", pn->valuestring);

@@ -9,8 +9,8 @@
 #include <string.h>
 
 int tippe_serve_zip_folder(const char *dir, const char *const *names, int n,
-                           const char *extra_name, const char *extra, size_t extra_len,
-                           char **out, size_t *len, tippe_error *err)
+                           const serve_zip_member *extra, int n_extra, char **out, size_t *len,
+                           tippe_error *err)
 {
     *out = NULL;
     *len = 0;
@@ -35,13 +35,13 @@ int tippe_serve_zip_folder(const char *dir, const char *const *names, int n,
                                  zip_strerror(za));
         }
     }
-    if (!rc && extra_name) {
+    for (int i = 0; !rc && i < n_extra; i++) {
         /* the buffer is the caller's until zip_close below (freep 0) */
-        zip_source_t *ms = zip_source_buffer(za, extra, extra_len, 0);
-        if (!ms || zip_file_add(za, extra_name, ms, ZIP_FL_ENC_UTF_8) < 0) {
+        zip_source_t *ms = zip_source_buffer(za, extra[i].data, extra[i].len, 0);
+        if (!ms || zip_file_add(za, extra[i].name, ms, ZIP_FL_ENC_UTF_8) < 0) {
             zip_source_free(ms);
-            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "cannot add %s to the zip: %s", extra_name,
-                                 zip_strerror(za));
+            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "cannot add %s to the zip: %s",
+                                 extra[i].name, zip_strerror(za));
         }
     }
     if (rc) {

@@ -49,6 +49,7 @@ const state = {
   shownTitle: '',     // whose results are on screen
   pinWanted: false,   // "Pin" pressed while a sweep ran: pin that design with its sweep
   gcodeNames: {},     // "upload:ID" -> the uploaded file's name and slicer
+  gcodeFiles: {},     // "upload:ID" -> the uploaded file's name (Save JSON names it)
   catalogue: [],      // the designs folder's screws (GET /api/catalogue)
 };
 
@@ -287,6 +288,7 @@ function schedule() {
   // a launch, a film or a build shown was of the design before this edit
   clearLaunch();
   $('build-status').textContent = '';
+  $('save-status').textContent = '';
   timer = setTimeout(() => { timer = null; refresh(); }, 150);
 }
 
@@ -385,9 +387,7 @@ function drawVerdict() {
     t.appendChild(document.createTextNode(' (the changes one can buy: ' + a.error + ')'));
   } else if (whole && a.advice.length) {
     t.appendChild(document.createTextNode(' Changes one can buy or set:'));
-    const ul = document.createElement('ul');
-    for (const x of a.advice.slice(0, 3)) ul.appendChild(Object.assign(document.createElement('li'), { textContent: x }));
-    t.appendChild(ul);
+    t.appendChild(adviceList(a));
   }
   if (whole) drawSheetMore(a);
 }
@@ -461,6 +461,12 @@ function drawSheetMore(a) {
       return [`${f.fix} (${f.verdict}) `, code, ' ', btn];
     }));
     ul.id = 'pole-fixes';
+    box.appendChild(ul);
+  }
+  if (a.notes && a.notes.length) {
+    box.appendChild(Object.assign(document.createElement('p'), { className: 'sheet-head', textContent: 'The sheet\'s notes:' }));
+    const ul = list(a.notes.map((n) => [n]));
+    ul.id = 'sheet-notes';
     box.appendChild(ul);
   }
 }
@@ -918,14 +924,6 @@ function loadText(text, name, source) {
   openDesign(d, name, source);
 }
 
-function save() {
-  const blob = new Blob([JSON.stringify(state.design, null, 2) + '\n'], { type: 'application/json' });
-  const a = document.createElement('a');
-  a.href = URL.createObjectURL(blob);
-  a.download = stem() + '.json';
-  document.body.appendChild(a); a.click(); a.remove();
-}
-
 async function start() {
   $('form').addEventListener('submit', (ev) => ev.preventDefault());
   drawLegend();
@@ -966,7 +964,7 @@ async function start() {
   // a link to an edited design opened over this page (only its fragment differs)
   window.addEventListener('hashchange', () => {
     const k = keptFromHash();
-    if (k && mayDiscard()) openDesign(k.design, k.from, k.source, k.original);
+    if (k && mayDiscard()) { keptGcodes(k); openDesign(k.design, k.from, k.source, k.original); }
   });
   const want = new URLSearchParams(location.search).get('design');
   // an edited design: the link's (#edit=...), else the last one this browser kept
@@ -977,6 +975,7 @@ async function start() {
   } catch (e) { kept = null; }
   if (kept && kept.design && typeof kept.design === 'object') {
     if (list.json.designs.find((d) => d.name === kept.from)) pick.value = kept.from;
+    keptGcodes(kept);
     openDesign(kept.design, kept.from, kept.source, kept.original);
     return;
   }

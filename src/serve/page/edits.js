@@ -41,12 +41,29 @@ function markEdited() {
 // server) and in local storage (the last edit survives a closed tab).
 function keepEdit() {
   const kept = { from: state.name, source: state.source, original: state.original, design: state.design };
+  // the names of the uploads it names: Save JSON names the files by them after a reopen
+  for (const p of state.design.parts || []) {
+    const g = p && p.print && typeof p.print === 'object' ? p.print.gcode : null;
+    if (typeof g === 'string' && state.gcodeFiles[g]) {
+      kept.gcodes = kept.gcodes || {};
+      kept.gcodes[g] = { file: state.gcodeFiles[g], shown: state.gcodeNames[g] };
+    }
+  }
   const frag = isEdited() ? '#edit=' + encodeURIComponent(JSON.stringify(kept)) : '';
   history.replaceState(null, '', location.pathname + location.search + frag);
   try {
     if (isEdited()) localStorage.setItem('tippe-edit', JSON.stringify(kept));
     else localStorage.removeItem('tippe-edit');
   } catch (e) { /* storage off: the URL keeps it */ }
+}
+
+// The uploads' names a kept edit carries, taken back (strings only).
+function keptGcodes(kept) {
+  for (const [g, v] of Object.entries(kept.gcodes || {}))
+    if (g.startsWith('upload:') && v && typeof v.file === 'string') {
+      state.gcodeFiles[g] = v.file;
+      if (typeof v.shown === 'string') state.gcodeNames[g] = v.shown;
+    }
 }
 
 function undo() {
@@ -112,6 +129,7 @@ function gcodeField(form, i, p) {
     file.value = '';
     if (!r.ok) { status.textContent = 'refused: ' + (r.json ? r.json.error : r.error || 'HTTP ' + r.status); return; }
     state.gcodeNames[r.json.gcode] = `${r.json.name} (${r.json.generator || 'unknown slicer'}, ${r.json.layers} layers)`;
+    state.gcodeFiles[r.json.gcode] = r.json.name;
     // the print model's design, pinned with its zones, beside the G-code's
     if (!state.pinned && state.sweep && !state.inFlight && timer === null)
       state.pinned = { design: state.sweepDesign, sweep: state.sweep, title: `${state.shownTitle}: the print model` };
@@ -231,7 +249,8 @@ function applySets(sets) {
       } else o = o[keys[k]];
       if (!o || typeof o !== 'object') return 0;
     }
-    o[keys[keys.length - 1]] = value;
+    // null drops the field, as --set FIELD=null does (a weighing the change makes stale)
+    if (value === null) delete o[keys[keys.length - 1]]; else o[keys[keys.length - 1]] = value;
   }
   editDesign(d);
   return 1;
@@ -255,4 +274,46 @@ async function drawSection(design) {
   img.hidden = false;
   img.dataset.z2 = req.z2_mm === undefined ? 'mid' : String(req.z2_mm);
   $('section-note').textContent = `the weight at ${req.z2_mm === undefined ? 'mid-travel' : 'Z2 = ' + req.z2_mm + ' mm'} (click the bar to move it); tippe export draws the same`;
+}
+
+// The design as edited, downloaded. A part's uploaded G-code ("upload:ID", which only
+// this server knows) is named by the uploaded file's name, a file beside the saved design
+// (a part's G-code is relative to its design file), so that tippe build reads it there;
+// opened on the page again, the part asks for that file (the server opens no path).
+function save() {
+  const d = JSON.parse(JSON.stringify(state.design)), named = [];
+  for (const p of d.parts || []) {
+    const g = p && p.print && typeof p.print === 'object' ? p.print.gcode : null;
+    if (typeof g === 'string' && g.startsWith('upload:') && state.gcodeFiles[g]) {
+      p.print.gcode = state.gcodeFiles[g];
+      named.push(p.print.gcode);
+    }
+  }
+  const blob = new Blob([JSON.stringify(d, null, 2) + '\n'], { type: 'application/json' });
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = stem() + '.json';
+  document.body.appendChild(a); a.click(); a.remove();
+  $('save-status').textContent = named.length
+    ? `${a.download} names its G-code ${named.join(', ')} as a file beside it: keep them in one folder for tippe build`
+    : '';
+}
+
+// The sheet's changes one can buy or set (up to three), each with a button that tries its
+// --set lines on the form, as a pole's fix is tried.
+function adviceList(a) {
+  const ul = document.createElement('ul');
+  const sets = a.to_make_it_settable || [];
+  a.advice.slice(0, 3).forEach((x, k) => {
+    const li = document.createElement('li');
+    li.appendChild(Object.assign(document.createElement('span'), { className: 'advice-text', textContent: x }));
+    if (sets[k] && sets[k].advice === x) {
+      const btn = Object.assign(document.createElement('button'), { type: 'button', className: 'apply-advice', textContent: 'Try it on the form' });
+      btn.title = sets[k].set.map((v) => '--set ' + v).join(' ');
+      btn.addEventListener('click', () => applySets(sets[k].set));
+      li.append(' ', btn);
+    }
+    ul.appendChild(li);
+  });
+  return ul;
 }
