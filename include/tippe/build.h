@@ -248,6 +248,9 @@ typedef struct {
      * the hole as printed (same infill): add it to the scale's reading before
      * giving measured_mass_g. NAN when not applicable (no print block, no hole). */
     double weigh_offset_g;
+    /* the part as made (tippe_build_as_made): the --set the zones were computed with
+     * ("parts.hole.printed_radius_mm=5.125"), or "" when the design is as made */
+    char as_made_set[300];
     double rod_diameter_mm;              /* the rod the weight is threaded on, or 0 */
     int reference_up;                    /* 1: the reference faces +z (depth = ref - top end) */
     double weight_end_offset_mm;         /* the measured end of the weight above Z2 */

@@ -222,6 +222,8 @@ typedef struct {
     double gcode_cut_mass_kg;      /* its plastic inside the design's holes, taken as cut
                                       away after printing (tapped, drilled, bored) */
     const char *gcode_note;        /* its holes against the design's ("" when they agree) */
+    double gcode_support_mass_kg;  /* its support and support interface lines, left out of
+                                      the part (removed after printing) */
     double flow_factor;            /* a weighing's scale on the G-code's lines (1: none) */
     double model_mass_kg;          /* the layer model's mass at the same infill */
     double model_body_A_over_C;

@@ -785,6 +785,17 @@ static void compute_notes(compute_ctx *c)
         tippe_build_note(out, "Depth is measured from the rim of the hole to the screw's end; a "
                               "negative depth means the screw stands out of the ball. Turns are "
                               "counted from the screw's end flush with the rim.");
+    if (out->as_made_set[0]) {
+        char t[512];
+        snprintf(t, sizeof t,
+                 "The zones are the part as made: the hole printed %.2f mm across and tapped "
+                 "after, which cuts the inner %.3f mm of its walls (tippe sweep --set %s gives "
+                 "the same).",
+                 out->hole_diameter_mm,
+                 tippe_build_hole_model_radius(c->d, out->hole_part) - out->hole_diameter_mm / 2,
+                 out->as_made_set);
+        tippe_build_note(out, t);
+    }
     else if (out->measure == TIPPE_BUILD_MEASURE_ROD)
         tippe_build_note(out, "Depth is measured along the rod from its top end down to the "
                               "bead's top face, before the shell is closed. Turns are counted "
@@ -860,8 +871,12 @@ int tippe_build_as_made(const tippe_design *d, const tippe_build_sheet *s, tippe
 static int as_made(compute_ctx *c, tippe_design **made, tippe_error *err)
 {
     int rc = tippe_build_as_made(c->d, c->out, made, err);
-    if (!rc && *made)
+    if (!rc && *made) {
         c->d = *made;
+        int n = tippe_design_n_overrides(*made);
+        snprintf(c->out->as_made_set, sizeof c->out->as_made_set, "%s",
+                 n ? tippe_design_override(*made, n - 1) : "");
+    }
     return rc;
 }
 

@@ -220,6 +220,10 @@ int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_inf
     out->generator = p->has_gcode ? p->gcode_body.generator : "";
     out->gcode_cut_mass_kg = p->has_gcode ? p->gcode_body.cut_mass_kg * p->gcode_flow : 0;
     out->gcode_note = p->has_gcode ? p->gcode_note : "";
+    out->gcode_support_mass_kg =
+        p->has_gcode ? p->gcode_body.feature[TIPPE_GCODE_SUPPORT].mass_kg +
+                           p->gcode_body.feature[TIPPE_GCODE_SUPPORT_INTERFACE].mass_kg
+                     : 0;
     out->flow_factor = p->has_gcode ? p->gcode_flow : 1.0;
     out->model_mass_kg = p->has_gcode ? p->model_mass_kg : p->printed_mass_kg;
     out->model_body_A_over_C = p->has_gcode ? body_a_over_c(p->model_deposit)

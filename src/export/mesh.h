@@ -57,7 +57,13 @@ typedef struct {
     const char *pattern;    /* PrusaSlicer's fill_pattern; rectilinear at 100 % */
     double external_width_mm, infill_width_mm, top_min_mm, bottom_min_mm, infill_overlap;
     double anchor_mm, anchor_max_mm;
+    /* per object (NULL: none): 1 turns PrusaSlicer's automatic supports on for it,
+     * from the build plate only; 0 turns them off (tippe_export_body_needs_support) */
+    const int *support;
 } tippe_mesh_3mf_extra;
+
+/* Whether body b, standing as printed, wants supports (export_support.c). */
+int tippe_export_body_needs_support(const tippe_profile_body *b);
 
 /* tippe_mesh_write_3mf with the extras (x may be NULL). */
 int tippe_mesh_write_3mf_extra(const tippe_mesh *meshes, const char *const *names,

@@ -126,6 +126,9 @@ void tippe_profile_print_printed_parts(FILE *out, const tippe_design *d)
                     pi.filament_volume_mm3 * 1e-3);
         if (pi.from_gcode && pi.gcode_note[0])
             fprintf(out, "         the G-code: %s\n", pi.gcode_note);
+        if (pi.from_gcode && pi.gcode_support_mass_kg > 0)
+            fprintf(out, "         supports, removed: %.3f g (not part of the body)\n",
+                    pi.gcode_support_mass_kg * 1e3);
         any = 1;
     }
     if (!any)
@@ -185,6 +188,8 @@ int tippe_profile_printed_parts_json(struct cJSON *o, const tippe_design *d)
                        cJSON_AddNumberToObject(e, "model_mass_kg", pi.model_mass_kg) &&
                        cJSON_AddNumberToObject(e, "model_body_A_over_C", pi.model_body_A_over_C) &&
                        cJSON_AddNumberToObject(e, "gcode_cut_mass_kg", pi.gcode_cut_mass_kg) &&
+                       cJSON_AddNumberToObject(e, "gcode_support_mass_kg",
+                                               pi.gcode_support_mass_kg) &&
                        cJSON_AddStringToObject(e, "gcode_note", pi.gcode_note)
                  : cJSON_AddNullToObject(e, "gcode") != NULL);
         if (!ok)
