@@ -156,6 +156,57 @@ static tippe_moments model_error_moved(tippe_moments d, double x)
  * it at the outer (tippe_print_core_moments without walls or skins: the exact
  * solid), the other holes as printed. holes[] are the part's voids as printed,
  * in the order of d's parts. */
+/* A ring's exact moments take three quadratures per hole, and the tolerance
+ * bands reload a design ~190 times changing mostly what the ring does not
+ * depend on (a density, the infill): the last few are kept, keyed by the part,
+ * its voids as printed and the ring's radii (m), as the slicings are. */
+#define RING_CACHE 8
+typedef struct {
+    int used, n_voids, at;
+    tippe_solid part, voids[MAX_PARTS];
+    double r_m;
+    tippe_moments m;
+} ring_entry;
+static ring_entry ring_cache[RING_CACHE];
+static int ring_next;
+static pthread_mutex_t ring_lock = PTHREAD_MUTEX_INITIALIZER;
+
+/* The exact moments of shape less voids[] with void `at` at radius r_m. */
+static int ring_moments(const tippe_solid *shape, const tippe_solid *holes, int n_holes, int at,
+                        double r_m, tippe_moments *out, tippe_error *err)
+{
+    pthread_mutex_lock(&ring_lock);
+    for (int k = 0; k < RING_CACHE; k++) {
+        const ring_entry *e = &ring_cache[k];
+        int hit = e->used && e->n_voids == n_holes && e->at == at && e->r_m == r_m &&
+                  same_solid(&e->part, shape);
+        for (int j = 0; hit && j < n_holes; j++)
+            hit = same_solid(&e->voids[j], &holes[j]); /* the ring's hole too: z, height */
+        if (hit) {
+            *out = e->m;
+            pthread_mutex_unlock(&ring_lock);
+            return TIPPE_OK;
+        }
+    }
+    pthread_mutex_unlock(&ring_lock);
+    tippe_solid v[MAX_PARTS];
+    memcpy(v, holes, (size_t)n_holes * sizeof *v);
+    v[at].radius = r_m;
+    tippe_print_core core;
+    int rc = tippe_print_core_moments(shape, v, n_holes, 0, 0, &core, err);
+    if (rc)
+        return rc;
+    *out = core.core;
+    pthread_mutex_lock(&ring_lock);
+    ring_entry *e = &ring_cache[ring_next];
+    ring_next = (ring_next + 1) % RING_CACHE;
+    *e = (ring_entry){.used = 1, .n_voids = n_holes, .at = at, .part = *shape, .r_m = r_m,
+                      .m = core.core};
+    memcpy(e->voids, holes, (size_t)n_holes * sizeof *holes);
+    pthread_mutex_unlock(&ring_lock);
+    return TIPPE_OK;
+}
+
 static int cut_rings(const tippe_design *d, int i, const tippe_solid *shape,
                      const tippe_solid *holes, int n_holes, tippe_moments *wall,
                      tippe_moments *sparse, tippe_error *err)
@@ -166,7 +217,6 @@ static int cut_rings(const tippe_design *d, int i, const tippe_solid *shape,
     const double s_p = p->print.line_width_mm - t * (1.0 - M_PI / 4.0);
     const double edge_mm = 0.5 * (w_e - s_e);
     const double band_mm = p->print.perimeters > 0 ? s_e + (p->print.perimeters - 1) * s_p : 0;
-    tippe_solid v[MAX_PARTS];
     for (int k = 0, j = 0; k < d->n_parts && j < n_holes; k++) {
         const part *h = &d->parts[k];
         if (h->parent != i)
@@ -181,13 +231,9 @@ static int cut_rings(const tippe_design *d, int i, const tippe_solid *shape,
         for (int q = 0; q < 3; q++) {
             if (q == 2 && !(r[2] > r[1]))
                 break;
-            tippe_print_core core;
-            memcpy(v, holes, (size_t)n_holes * sizeof *v);
-            v[at].radius = 1e-3 * r[q];
-            int rc = tippe_print_core_moments(shape, v, n_holes, 0, 0, &core, err);
+            int rc = ring_moments(shape, holes, n_holes, at, 1e-3 * r[q], &m[q], err);
             if (rc)
                 return rc;
-            m[q] = core.core;
         }
         if (r[1] > r[0])
             *wall = tippe_moments_add(*wall, tippe_moments_sub(m[0], m[1]));
