@@ -37,8 +37,10 @@ for n in names:
 EOF
     # the settings are where tippe sweep's robust widths are: only where the model
     # applies (no setting with a screw standing out of the ball, where the top
-    # rests on the screw), so every width is sweep's to rounding
-    "$tippe" sweep "$f" --json >"$tmp/$stem.sweep"
+    # rests on the screw), so every width is sweep's to rounding; sweep's of the part as
+    # made when the sheet prints the hole at its tap drill (measure.as_made_set)
+    made=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["measure"].get("as_made_set", ""))' "$tmp/$stem.json")
+    "$tippe" sweep "$f" --json ${made:+--set "$made"} >"$tmp/$stem.sweep"
     python3 - "$tmp/$stem.json" "$tmp/$stem.sweep" <<'EOF' && ok || bad "$stem: robust widths or ranges differ from tippe sweep's"
 import json, sys
 b = json.load(open(sys.argv[1])); sw = json.load(open(sys.argv[2]))

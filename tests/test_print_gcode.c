@@ -544,6 +544,31 @@ static void test_features(void)
     CHECK(body.n_objects == 1 && !strcmp(body.object[0], "tube.stl"), "one mesh '%s' (%d)",
           body.object[0], body.n_objects);
 
+    /* Cura's support labels (issue 37): ;TYPE:SUPPORT and ;TYPE:SUPPORT-INTERFACE lines
+     * between the walls are not the part: its body is the walls' alone, to rounding (the
+     * same sums over the same beads; 1e-12 of the mass), and each kind is counted apart */
+    tippe_gcode_body with, without;
+    for (int k = 0; k < 2; k++) {
+        clear(&b);
+        put(&b, ";FLAVOR:Marlin\n;Generated with Cura_SteamEngine 5.4.0\nM83\n;LAYER:0\n"
+                ";MESH:part.stl\n;TYPE:WALL-OUTER\nG1 X0 Y0 Z0.2\nG1 X10 Y0 E2\n");
+        if (k == 0)
+            put(&b, ";TYPE:SUPPORT\nG1 X10 Y5 E1.5\n;TYPE:SUPPORT-INTERFACE\nG1 X12 Y5 E0.25\n"
+                    ";TYPE:WALL-OUTER\nG0 X10 Y0\n");
+        put(&b, "G1 X10 Y10 E2\n;LAYER:1\n;TYPE:WALL-INNER\nG1 Z0.4\nG1 X0 Y10 E2\n");
+        rc = parse(&b, &o, k == 0 ? &with : &without, &err);
+        CHECK(rc == TIPPE_OK, "cura supports (%d): %s", k, err.msg);
+    }
+    CHECK(with.feature[TIPPE_GCODE_SUPPORT].volume_mm3 == 1.5 &&
+              with.feature[TIPPE_GCODE_SUPPORT_INTERFACE].volume_mm3 == 0.25,
+          "Cura's support %g and interface %g", with.feature[TIPPE_GCODE_SUPPORT].volume_mm3,
+          with.feature[TIPPE_GCODE_SUPPORT_INTERFACE].volume_mm3);
+    CHECK(with.body_volume_mm3 == 6 && without.body_volume_mm3 == 6,
+          "the body is the walls alone (%g, %g)", with.body_volume_mm3, without.body_volume_mm3);
+    CHECK_CLOSE(with.m, without.m, 1e-12, "the body's mass with supports as without");
+    for (int i = 0; i < 3; i++)
+        CHECK_CLOSE(with.inertia[i], without.inertia[i], 1e-12, "inertia[%d] with supports", i);
+
     /* Orca / BambuStudio labels */
     clear(&b);
     put(&b, "M83\n; FEATURE: Outer wall\n; LAYER_HEIGHT: 0.2\nG1 Z0.2\nG1 X0 Y0\nG1 X10 Y0 E1\n"

@@ -109,6 +109,49 @@ want = {"0.15": 17.93, "0.4": 31.40}[sys.argv[3]]
 assert abs(c["body_mass_g"] - want) < 0.03 * want, (c["body_mass_g"], want)
 EOF
 done
+# supports (issue 37): the M12 printed whole wants them under its lower hemisphere, and the 3MF
+# turns them on for it, from the build plate only. The reader leaves their lines out of the
+# part: the body's mass equals the same 3MF's sliced with supports off within 0.3 % (the lines
+# over the support's interface, 0.2 mm below them, are laid as over air: the body's lines are
+# the slicer's either way; measured 0.000 g of 17.93 g), and tippe eval says what they weighed
+out="$tmp/m12-0.15"
+if [ -f "$out/m12-setscrew-printed.gcode" ]; then
+    nosup="$tmp/nosup"
+    mkdir -p "$nosup"
+    "$py" - "$out/m12-setscrew-printed.3mf" "$nosup/m12.3mf" <<'EOF' && ok || bad "the 3MF turns supports on for the whole ball"
+import sys, zipfile
+src, dst = sys.argv[1:3]
+zin = zipfile.ZipFile(src)
+cfg = zin.read("Metadata/Slic3r_PE_model.config").decode()
+for k in ('key="support_material" value="1"', 'key="support_material_auto" value="1"',
+          'key="support_material_buildplate_only" value="1"'):
+    assert k in cfg, (k, cfg)
+with zipfile.ZipFile(dst, "w", zipfile.ZIP_DEFLATED) as zout:
+    for i in zin.infolist():
+        data = zin.read(i.filename)
+        if i.filename == "Metadata/Slic3r_PE_model.config":
+            data = cfg.replace('key="support_material" value="1"',
+                               'key="support_material" value="0"').encode()
+        zout.writestr(i, data)
+EOF
+    if prusa-slicer --export-gcode --load designs/slicer/prusa-pla-0.4mm.ini -o "$nosup/m12.gcode"             "$nosup/m12.3mf" >"$nosup/log" 2>&1; then
+        for v in with:"$out/m12-setscrew-printed.gcode" without:"$nosup/m12.gcode"; do
+            "$tippe" eval designs/m12-setscrew-printed.json --z2 5 --json \
+                --set "parts.body.print.gcode=${v#*:}" >"$tmp/sup-${v%%:*}.json" 2>>"$nosup/log"
+        done
+        "$py" - "$tmp/sup-with.json" "$tmp/sup-without.json" <<'EOF' && ok || bad "supports left out of the body: $(tail -3 "$nosup/log")"
+import json, sys
+a, b = ([q for q in json.load(open(f))["printed_parts"] if q["model"] == "gcode"][0]
+        for f in sys.argv[1:3])
+assert abs(a["printed_mass_kg"] / b["printed_mass_kg"] - 1) < 0.003, (a, b)
+assert abs(a["body_A_over_C"] - b["body_A_over_C"]) < 0.001, (a, b)
+# about 3 cm^3 of support under a 50 mm ball (docs/printing.md, "Supports"): 1 .. 6 g at 1.08
+assert 1e-3 < a["gcode_support_mass_kg"] < 6e-3 and b["gcode_support_mass_kg"] == 0, (a, b)
+EOF
+    else
+        bad "prusa-slicer without supports: $(tail -3 "$nosup/log")"
+    fi
+fi
 # tippe slice: the printed M12 sliced with the shipped profile, its G-code read back as the
 # part. The print model beside it (docs/printing.md, "The print model against the slicer"):
 # the body's mass within 2 % at 15, 40 and 100 % (the issue's goal; measured +1.8, +1.2 and
@@ -160,15 +203,38 @@ assert "is 10.2" in p["gcode_note"] and "the design's 11.00 mm" in p["gcode_note
 # the ring between 10.25 and 11 mm over the hole's 49 mm: pi (5.5^2 - 5.125^2) 49 mm^3 of
 # solid walls, 0.68 g at 1.08 g/cm^3; the beads' rounded edges leave a little less
 assert 0.5e-3 < p["gcode_cut_mass_kg"] < 0.7e-3, p["gcode_cut_mass_kg"]
-# with the cut the G-code's body is lighter than the model's by the model's own +1.9 % at 50 %
-# (the hole at 11 mm) plus the walls laid from 10.25 mm, 0.375 mm of which the tap cuts, where
-# the model has solid walls from 11 mm: 2 pi 5.5 x 0.375 x 49 mm^3 x 50 % less plastic, 0.34 g
-# (0.9 %); measured +2.9 % when this test was written
-assert 0.019 < p["model_mass_kg"] / p["printed_mass_kg"] - 1 < 0.035, p
+EOF
+    # the part as made: the model with the hole printed where the G-code has it and tapped after
+    # (printed_radius_mm, as tippe build and tippe slice model it) against the same G-code
+    "$tippe" eval designs/m12-setscrew-printed.json --z2 5 --json --set parts.body.print.infill=0.5 \
+        --set parts.hole.printed_radius_mm=5.125 \
+        --set "parts.body.print.gcode=$out/m12-setscrew-printed.gcode" >"$out-made.json" 2>>"$out.err" &&
+    "$py" - "$out-made.json" <<'EOF' && ok || bad "the part as made against its G-code: $(tail -3 "$out.err")"
+import json, sys
+p = [q for q in json.load(open(sys.argv[1]))["printed_parts"] if q["model"] == "gcode"][0]
+assert "printed_radius_mm: 10.25 mm" in p["gcode_note"], p["gcode_note"]
+# mass within 2.5 %: the print model's own error against the slicer at 50 % infill with the hole
+# printed where the model has it (+1.9 %, docs/printing.md) and the cut's (0.624 g against the
+# G-code's 0.649 g, 0.07 %); measured +1.9 % (before the part as made: +2.9 %). Body A/C within
+# 0.005, the issue's bound (measured -0.0014; before: +0.0040)
+assert abs(p["model_mass_kg"] / p["printed_mass_kg"] - 1) < 0.025, p
+assert abs(p["model_body_A_over_C"] - p["body_A_over_C"]) < 0.005, p
 EOF
 else
     bad "slice.sh with the hole at the tap drill: $(tail -3 "$out.err")"
 fi
+# tippe slice prints the hole as tippe build does (the tap drill) and models the part as made:
+# at 50 % the model (tippe build's verdict) and the G-code give the same verdict (issue 40)
+"$tippe" slice designs/m12-setscrew-printed.json -o "$tmp/slice-made" --json \
+    --set parts.body.print.infill=0.5 >"$tmp/slice-made.json" 2>"$tmp/slice-made.err" &&
+"$py" - "$tmp/slice-made.json" <<'EOF' && ok || bad "tippe slice at 50 %: the part as made: $(tail -3 "$tmp/slice-made.err")"
+import json, sys
+o = json.load(open(sys.argv[1]))
+p = o["sliced_parts"]["printed_parts"][0]
+assert "is 10.2" in p["gcode_note"] and "printed_radius_mm: 10.25 mm" in p["gcode_note"], p
+v = o["verdict"]
+assert v["sliced"]["verdict"] == v["model"]["verdict"] == "3-in-1 and settable", v
+EOF
 expect_fail "slice refuses a design with no printed part" 2 "no printed part" -- \
     slice designs/m12-setscrew.json -o "$tmp/none-printed"
 finish

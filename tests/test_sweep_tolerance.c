@@ -169,6 +169,8 @@ static void check_parsing(void)
         const tippe_tolerance *t = find_tol(d, "parts.body.print.measured_mass_g");
         CHECK(t && t->plus_minus == 0.1 && t->value == 40 && !find_tol(d, "parts.body.print.infill"),
               "weighed: the scale's reading, not the slicer's infill");
+        CHECK(!find_tol(d, "parts.body.print.model_error"),
+              "weighed: no model-error term (the scale has the mass)");
         tippe_design_free(d);
     }
     /* The same body with its density inline and a print block is printed too
@@ -181,8 +183,11 @@ static void check_parsing(void)
     CHECK(tippe_design_load(M12, inline_printed, 2, &d, &err) == TIPPE_OK, "%s", err.msg);
     if (d) {
         const tippe_tolerance *t;
-        CHECK(tippe_design_n_tolerances(d) == 5, "inline printed: %d tolerances",
+        CHECK(tippe_design_n_tolerances(d) == 6, "inline printed: %d tolerances",
               tippe_design_n_tolerances(d));
+        CHECK((t = find_tol(d, "parts.body.print.model_error")) && t->plus_minus == 1 &&
+                  t->value == 0 && !strcmp(t->rule, "print model vs slicer"),
+              "inline printed: the print model's error against the slicer, +/-1");
         CHECK((t = find_tol(d, "parts.body.print.infill")) && fabs(t->plus_minus - 0.1) < 1e-15 &&
                   !strcmp(t->rule, "slicer infill"),
               "inline printed: infill default");

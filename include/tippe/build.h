@@ -249,6 +249,9 @@ typedef struct {
      * the hole as printed (same infill): add it to the scale's reading before
      * giving measured_mass_g. NAN when not applicable (no print block, no hole). */
     double weigh_offset_g;
+    /* the part as made (tippe_build_as_made): the --set the zones were computed with
+     * ("parts.hole.printed_radius_mm=5.125"), or "" when the design is as made */
+    char as_made_set[300];
     double rod_diameter_mm;              /* the rod the weight is threaded on, or 0 */
     int reference_up;                    /* 1: the reference faces +z (depth = ref - top end) */
     double weight_end_offset_mm;         /* the measured end of the weight above Z2 */
@@ -341,6 +344,15 @@ void tippe_build_options_default(tippe_build_options *o);
  * setting (launch_status), not returned. */
 int tippe_build_compute(const tippe_design *d, const tippe_build_options *o,
                         tippe_build_sheet *out, tippe_error *err);
+/* The part as made for sheet s of d (both sheet builders use it): a hole printed
+ * at its tap drill, narrower than the mass model's, is tapped after printing,
+ * so its part's print model lays the walls from the printed hole and the tap
+ * cuts what lies inside the model's radius (printed_radius_mm,
+ * docs/printing.md). *made: d with the hole's printed_radius_mm set, or NULL
+ * when d is already the part as made (the hole printed at its radius, wider,
+ * or the design gives its own). */
+int tippe_build_as_made(const tippe_design *d, const tippe_build_sheet *s, tippe_design **made,
+                        tippe_error *err);
 /* The verdict alone, as tippe_build_compute gives it (three_in_one, settable,
  * each setting's reachable, robust range and settable, min_setting_mm and its
  * rule, the thread and the hole's fit), without the settings' launch checks,

@@ -215,6 +215,9 @@ typedef struct {
     const char *model;             /* "slicer", "skins" or "gcode" */
     double filament_volume_mm3;    /* printed mass / density: the slicer's estimate */
     double wall_mass_kg, solid_infill_mass_kg, sparse_mass_kg, anchor_mass_kg;
+    double cut_mass_kg;            /* the layer model's: what the cut after printing takes
+                                      from holes printed narrower (printed_radius_mm); the
+                                      masses above are before it, printed_mass_kg after */
     int n_layers;                  /* 0 for the continuous rule */
     double body_A_over_C;          /* the printed part alone, about its own centre of mass */
     /* print.gcode: the part from the slicer's G-code, the layer model beside it */
@@ -224,6 +227,8 @@ typedef struct {
     double gcode_cut_mass_kg;      /* its plastic inside the design's holes, taken as cut
                                       away after printing (tapped, drilled, bored) */
     const char *gcode_note;        /* its holes against the design's ("" when they agree) */
+    double gcode_support_mass_kg;  /* its support and support interface lines, left out of
+                                      the part (removed after printing) */
     double flow_factor;            /* a weighing's scale on the G-code's lines (1: none) */
     double model_mass_kg;          /* the layer model's mass at the same infill */
     double model_body_A_over_C;
@@ -316,6 +321,8 @@ typedef struct {
     double z_mm, clip_radius_mm;
     double clip_inner_mm; /* clip "shell": the part is cut to the wall between this
                              radius and clip_radius_mm; else 0 */
+    double printed_radius_mm; /* a hole printed at another radius, then cut to radius_mm
+                                 ("printed_radius_mm"); 0: printed at radius_mm */
 } tippe_design_solid;
 
 /* Fills *out for part i; TIPPE_EINPUT if i is out of range. */

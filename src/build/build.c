@@ -180,6 +180,15 @@ int tippe_build_design_fit(const tippe_design *d, double clearance_mm, int *part
     int hole = s->hole_part;
     free(s);
     int rc = check_fits(d, hole, err);
+    tippe_design_solid hs;
+    if (!rc && hole >= 0 && !tippe_design_part_solid(d, hole, &hs) && hs.printed_radius_mm > 0 &&
+        tippe_design_part_fit(d, hole) != TIPPE_DESIGN_FIT_INSERT) {
+        /* printed where the design says (printed_radius_mm), then cut to its radius */
+        *part = hole;
+        *diameter_mm = 2 * hs.printed_radius_mm;
+        snprintf(note, note_size, "the design's printed_radius_mm");
+        return TIPPE_OK;
+    }
     int fit = hole >= 0 ? tippe_design_part_fit(d, hole) : TIPPE_DESIGN_FIT_NONE;
     if (rc || (fit != TIPPE_DESIGN_FIT_TAP && fit != TIPPE_DESIGN_FIT_INSERT))
         return rc;
@@ -582,6 +591,13 @@ static int compute_hole_fit(compute_ctx *c, tippe_error *err)
                                &out->thread, tname, &dia, out->fit_note, sizeof out->fit_note,
                                &ins, err)))
             return rc;
+        /* the design's own printed radius, unless --hole says otherwise */
+        tippe_design_solid hs;
+        if (o->hole_fit == TIPPE_BUILD_HOLE_DESIGN && !ins &&
+            !tippe_design_part_solid(d, out->hole_part, &hs) && hs.printed_radius_mm > 0) {
+            dia = 2 * hs.printed_radius_mm;
+            snprintf(out->fit_note, sizeof out->fit_note, "the design's printed_radius_mm");
+        }
         double R = out->radius_mm, a = dia / 2, rim = sqrt(R * R - a * a);
         out->hole_tapped = fit == TIPPE_BUILD_HOLE_TAP;
         out->hole_insert = fit == TIPPE_BUILD_HOLE_INSERT;
@@ -769,6 +785,17 @@ static void compute_notes(compute_ctx *c)
         tippe_build_note(out, "Depth is measured from the rim of the hole to the screw's end; a "
                               "negative depth means the screw stands out of the ball. Turns are "
                               "counted from the screw's end flush with the rim.");
+    if (out->as_made_set[0]) {
+        char t[512];
+        snprintf(t, sizeof t,
+                 "The zones are the part as made: the hole printed %.2f mm across and tapped "
+                 "after, which cuts the inner %.3f mm of its walls (tippe sweep --set %s gives "
+                 "the same).",
+                 out->hole_diameter_mm,
+                 tippe_build_hole_model_radius(c->d, out->hole_part) - out->hole_diameter_mm / 2,
+                 out->as_made_set);
+        tippe_build_note(out, t);
+    }
     else if (out->measure == TIPPE_BUILD_MEASURE_ROD)
         tippe_build_note(out, "Depth is measured along the rod from its top end down to the "
                               "bead's top face, before the shell is closed. Turns are counted "
@@ -820,6 +847,39 @@ static void compute_notes(compute_ctx *c)
     }
 }
 
+int tippe_build_as_made(const tippe_design *d, const tippe_build_sheet *s, tippe_design **made,
+                        tippe_error *err)
+{
+    tippe_design_solid hs;
+    tippe_design_part_info hp;
+    tippe_design_print_info pp;
+    *made = NULL;
+    if (!s->hole_tapped || s->hole_part < 0 || tippe_design_part_solid(d, s->hole_part, &hs) ||
+        hs.printed_radius_mm > 0 || !(s->hole_diameter_mm / 2 < hs.radius_mm - 1e-9) ||
+        hs.parent < 0 || tippe_design_part_print(d, hs.parent, &pp) || !pp.printed ||
+        tippe_design_part(d, s->hole_part, &hp))
+        return TIPPE_OK;
+    char set[300];
+    snprintf(set, sizeof set, "parts.%s.printed_radius_mm=%.10g", hp.name,
+             s->hole_diameter_mm / 2);
+    const char *extra[1] = {set};
+    return tippe_design_reload(d, extra, 1, made, err);
+}
+
+/* Step 4b: the part as made (tippe_build_as_made): the zones and every later
+ * step are its. */
+static int as_made(compute_ctx *c, tippe_design **made, tippe_error *err)
+{
+    int rc = tippe_build_as_made(c->d, c->out, made, err);
+    if (!rc && *made) {
+        c->d = *made;
+        int n = tippe_design_n_overrides(*made);
+        snprintf(c->out->as_made_set, sizeof c->out->as_made_set, "%s",
+                 n ? tippe_design_override(*made, n - 1) : "");
+    }
+    return rc;
+}
+
 /* The sheet in named steps: zones, the reference depths start from, the
  * thread, the hole's fit, the settings, the bill and steps, the notes; with
  * verdict_only, the steps the verdict needs (no launch, bill or advice). */
@@ -849,14 +909,20 @@ static int compute(const tippe_design *d, const tippe_build_options *o, tippe_bu
     tippe_dynamics_friction_text(&out->launch_model, out->launch_friction,
                                  sizeof out->launch_friction);
     compute_ctx c = {.d = d, .o = o, .out = out, .rod_r = 0};
-    rc = compute_zones(&c, err);
-    if (rc)
-        return rc;
+    /* how the hole is printed first: the zones are the part's as made */
     compute_reference(&c);
-    if (verdict_only) {
-        if (!(rc = compute_thread(&c, err)) && !(rc = compute_hole_fit(&c, err)))
-            compute_settable(&c);
-    } else if (!(rc = compute_thread(&c, err)) && !(rc = compute_hole_fit(&c, err))) {
+    tippe_design *made = NULL;
+    rc = compute_thread(&c, err);
+    if (!rc)
+        rc = compute_hole_fit(&c, err);
+    if (!rc)
+        rc = as_made(&c, &made, err);
+    if (!rc)
+        rc = compute_zones(&c, err);
+    d = c.d;
+    if (!rc && verdict_only) {
+        compute_settable(&c);
+    } else if (!rc) {
         tippe_build_weigh_offset(d, out);
         compute_settings(&c);
         c.launched = 1;
@@ -867,6 +933,7 @@ static int compute(const tippe_design *d, const tippe_build_options *o, tippe_bu
     }
     if (c.have_ps)
         tippe_profile_set_free(&c.ps);
+    tippe_design_free(made);
     /* a cancelled launch or advice left the sheet short: it is no sheet */
     if (!rc && tippe_cancel_requested())
         rc = tippe_cancel_error(err);

@@ -231,13 +231,15 @@ void tippe_build_steps(tippe_build_sheet *s)
         tippe_build_step(s, "Print the body in two halves (%s-*-lower.stl and %s-*-upper.stl, each standing "
                 "on its flat cut face at the equator) with the print settings. A hollow half "
                 "needs support inside its dome (PrusaSlicer: about 8 cm^3 for a 50 mm shell, "
-                "docs/printing.md); keep it out of the joint's groove with a support blocker.",
+                "docs/printing.md; the 3MF turns it on, from the build plate only); keep it out "
+                "of the joint's groove with a support blocker.",
              stem, stem);
     else
         tippe_build_step(s, "Print the body with the print settings, its axis vertical (the mass model "
                 "assumes it). A ball printed whole stands on a few mm^2 and needs support "
-                "under its lower hemisphere (PrusaSlicer: about 3 cm^3 for a 50 mm ball), none "
-                "inside the hole; printed in halves (tippe export --split) a solid ball needs none.");
+                "under its lower hemisphere (PrusaSlicer: about 3 cm^3 for a 50 mm ball; the 3MF "
+                "turns them on for it, from the build plate only), none inside the hole; printed "
+                "in halves (tippe export --split) a solid ball needs none.");
     if (s->weigh_step[0])
         tippe_build_step(s, "%s", s->weigh_step);
     if (s->measure == TIPPE_BUILD_MEASURE_HOLE) {

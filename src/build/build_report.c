@@ -171,6 +171,9 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
                                                                     : "slide");
             cJSON_AddStringToObject(m, "hole_fit_from",
                                     s->hole_fit_from_design ? "design" : "default or option");
+            /* the zones are the part as made: the hole printed so, then tapped */
+            if (s->as_made_set[0])
+                cJSON_AddStringToObject(m, "as_made_set", s->as_made_set);
             if (s->hole_insert) {
                 cJSON *in = cJSON_AddObjectToObject(m, "insert");
                 if (in) {

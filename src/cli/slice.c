@@ -109,6 +109,9 @@ static void print_side_by_side(const tippe_export_slice_result *r, const tippe_d
            pi.model_body_A_over_C - pi.body_A_over_C);
     if (pi.gcode_note[0])
         printf("         the G-code: %s\n", pi.gcode_note);
+    if (pi.gcode_support_mass_kg > 0)
+        printf("         supports, removed: %.3f g (not part of the body)\n",
+               pi.gcode_support_mass_kg * 1e3);
     printf("\n== the part as sliced (its G-code)\n");
     tippe_sweep_print_table(stdout, &r->sliced_sweep, r->sliced);
     printf("\n== the part as the print model has it\n");

@@ -202,7 +202,7 @@ int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_inf
     const double rho = p->density_g_cm3 * 1e3;
     out->model = p->has_gcode ? "gcode" : p->print.model == TIPPE_PRINT_MODEL_SKINS ? "skins"
                                                                                     : "slicer";
-    out->filament_volume_mm3 = p->printed_mass_kg / rho * 1e9;
+    out->filament_volume_mm3 = (p->printed_mass_kg + rho * p->cut.m) / rho * 1e9; /* before the cut */
     if (p->print.model == TIPPE_PRINT_MODEL_SLICER || p->has_gcode) {
         const tippe_print_sliced *sl = &p->sliced;
         double sp = 0, an = 0;
@@ -211,6 +211,7 @@ int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_inf
         out->solid_infill_mass_kg = rho * sl->solid_m3;
         out->sparse_mass_kg = rho * sp;
         out->anchor_mass_kg = rho * an;
+        out->cut_mass_kg = rho * p->cut.m;
         out->n_layers = sl->n_layers;
         out->body_A_over_C = body_a_over_c(p->deposit);
     }
@@ -219,6 +220,10 @@ int tippe_design_part_print(const tippe_design *d, int i, tippe_design_print_inf
     out->generator = p->has_gcode ? p->gcode_body.generator : "";
     out->gcode_cut_mass_kg = p->has_gcode ? p->gcode_body.cut_mass_kg * p->gcode_flow : 0;
     out->gcode_note = p->has_gcode ? p->gcode_note : "";
+    out->gcode_support_mass_kg =
+        p->has_gcode ? p->gcode_body.feature[TIPPE_GCODE_SUPPORT].mass_kg +
+                           p->gcode_body.feature[TIPPE_GCODE_SUPPORT_INTERFACE].mass_kg
+                     : 0;
     out->flow_factor = p->has_gcode ? p->gcode_flow : 1.0;
     out->model_mass_kg = p->has_gcode ? p->model_mass_kg : p->printed_mass_kg;
     out->model_body_A_over_C = p->has_gcode ? body_a_over_c(p->model_deposit)

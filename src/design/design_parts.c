@@ -97,7 +97,8 @@ const char *const tippe_design_part_string_keys[] = {"name", "shape", "notes", "
                                                NULL};
 static const char *const ball_keys[] = {"radius_mm", NULL};
 static const char *const shell_keys[] = {"radius_mm", "thickness_mm", NULL};
-static const char *const cylinder_keys[] = {"radius_mm", "inner_radius_mm", "height_mm", NULL};
+static const char *const cylinder_keys[] = {"radius_mm", "inner_radius_mm", "height_mm",
+                                            "printed_radius_mm", NULL};
 static const char *const torus_keys[] = {"centre_radius_mm", "radial_semi_mm", "axial_semi_mm",
                                          NULL};
 static const char *const *const shape_keys[N_SHAPES] = {ball_keys, shell_keys, cylinder_keys,
@@ -105,7 +106,7 @@ static const char *const *const shape_keys[N_SHAPES] = {ball_keys, shell_keys, c
 const char *const tippe_design_all_part_keys[] = {
     "name", "shape", "notes", "z_mm", "material", "density_g_cm3", "void", "cut_from", "clip",
     "moving", "may_protrude", "print", "fit", "catalogue_item", "radius_mm", "inner_radius_mm",
-    "thickness_mm",
+    "thickness_mm", "printed_radius_mm",
     "height_mm", "centre_radius_mm", "radial_semi_mm", "axial_semi_mm", NULL};
 const char *const tippe_design_print_keys[] = {
     "perimeters", "line_width_mm", "top_bottom_layers", "layer_height_mm", "infill",
@@ -409,6 +410,28 @@ static int parse_part_material(const tippe_json_reader *c, const cJSON *obj, con
     return parse_part_catalogue_item(c, obj, pre, p);
 }
 
+/* A hole printed at another radius than the mass model's ("printed_radius_mm",
+ * docs/design-format.md): the tap drill or an insert's pilot, as tippe build's
+ * 3MF prints it; the print model lays its walls from there, and what lies
+ * inside radius_mm is cut after printing (design_printed.c). Only a plain
+ * cylinder cut from a printed part has one. */
+static int parse_printed_radius(const tippe_json_reader *c, const cJSON *obj, const char *pre,
+                                part *p)
+{
+    char path[64];
+    int has = 0;
+    int rc = tippe_design_read_length(c, obj, pre, "printed_radius_mm", 0, 0,
+                                      &p->printed_radius_mm, &has);
+    if (rc || !has)
+        return rc;
+    tippe_json_path(path, sizeof path, pre, "printed_radius_mm");
+    if (!p->is_void || p->shape != SHAPE_CYLINDER || p->inner_radius_mm > 0)
+        return tippe_json_fail(c, path,
+                               "only a hole (a void cylinder, no inner_radius_mm) is printed at "
+                               "a radius of its own");
+    return TIPPE_OK;
+}
+
 /* The dimensions of part p's shape. */
 static int parse_part_shape(const tippe_json_reader *c, const cJSON *obj, const char *pre,
                             part *p)
@@ -444,7 +467,7 @@ static int parse_part_shape(const tippe_json_reader *c, const cJSON *obj, const 
             return tippe_json_fail(c, path, "%g mm is not less than radius_mm %g mm",
                                    p->inner_radius_mm, p->radius_mm);
         }
-        break;
+        return parse_printed_radius(c, obj, pre, p);
     }
     case SHAPE_TORUS:
         if ((rc = tippe_design_read_length(c, obj, pre, "centre_radius_mm", 1, 0, &p->centre_radius_mm,

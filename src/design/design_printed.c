@@ -146,6 +146,119 @@ static tippe_moments model_error_moved(tippe_moments d, double x)
     return d;
 }
 
+/* The rings the cut after printing takes from part i's deposit, unit density
+ * and flow 1: for each hole printed narrower than its radius (printed_radius_mm),
+ * the plastic between the printed hole and radius_mm, over the hole's heights
+ * within the part. The slicer lays the hole's walls from its printed outline
+ * (print_slicer.c: the external perimeter's edge (w - s)/2 inside it, then
+ * s_ext + (n - 1) s_per of solid lines, Flow::rounded_rectangle_extrusion_spacing),
+ * so the ring within the walls is solid (wall) and the rest of it, if the cut
+ * reaches past them, is sparse infill (sparse, to be scaled by the infill's
+ * density; solid infill near the top and bottom there is taken as sparse). Each
+ * ring is the part with the hole at the ring's inner radius less the part with
+ * it at the outer (tippe_print_core_moments without walls or skins: the exact
+ * solid), the other holes as printed. holes[] are the part's voids as printed,
+ * in the order of d's parts. */
+/* A ring's exact moments take three quadratures per hole, and the tolerance
+ * bands reload a design ~190 times changing mostly what the ring does not
+ * depend on (a density, the infill): the last few are kept, keyed by the part,
+ * its voids as printed and the ring's radii (m), as the slicings are. */
+#define RING_CACHE 8
+typedef struct {
+    int used, n_voids, at;
+    tippe_solid part, voids[MAX_PARTS];
+    double r_m;
+    tippe_moments m;
+} ring_entry;
+static ring_entry ring_cache[RING_CACHE];
+static int ring_next;
+static pthread_mutex_t ring_lock = PTHREAD_MUTEX_INITIALIZER;
+
+/* The exact moments of shape less voids[] with void `at` at radius r_m. */
+static int ring_moments(const tippe_solid *shape, const tippe_solid *holes, int n_holes, int at,
+                        double r_m, tippe_moments *out, tippe_error *err)
+{
+    pthread_mutex_lock(&ring_lock);
+    for (int k = 0; k < RING_CACHE; k++) {
+        const ring_entry *e = &ring_cache[k];
+        int hit = e->used && e->n_voids == n_holes && e->at == at && e->r_m == r_m &&
+                  same_solid(&e->part, shape);
+        for (int j = 0; hit && j < n_holes; j++)
+            hit = same_solid(&e->voids[j], &holes[j]); /* the ring's hole too: z, height */
+        if (hit) {
+            *out = e->m;
+            pthread_mutex_unlock(&ring_lock);
+            return TIPPE_OK;
+        }
+    }
+    pthread_mutex_unlock(&ring_lock);
+    tippe_solid v[MAX_PARTS];
+    memcpy(v, holes, (size_t)n_holes * sizeof *v);
+    v[at].radius = r_m;
+    tippe_print_core core;
+    int rc = tippe_print_core_moments(shape, v, n_holes, 0, 0, &core, err);
+    if (rc)
+        return rc;
+    *out = core.core;
+    pthread_mutex_lock(&ring_lock);
+    ring_entry *e = &ring_cache[ring_next];
+    ring_next = (ring_next + 1) % RING_CACHE;
+    *e = (ring_entry){.used = 1, .n_voids = n_holes, .at = at, .part = *shape, .r_m = r_m,
+                      .m = core.core};
+    memcpy(e->voids, holes, (size_t)n_holes * sizeof *holes);
+    pthread_mutex_unlock(&ring_lock);
+    return TIPPE_OK;
+}
+
+static int cut_rings(const tippe_design *d, int i, const tippe_solid *shape,
+                     const tippe_solid *holes, int n_holes, tippe_moments *wall,
+                     tippe_moments *sparse, tippe_error *err)
+{
+    const part *p = &d->parts[i];
+    const double t = p->print.layer_height_mm, w_e = p->print.external_width_mm;
+    const double s_e = w_e - t * (1.0 - M_PI / 4.0);
+    const double s_p = p->print.line_width_mm - t * (1.0 - M_PI / 4.0);
+    const double edge_mm = 0.5 * (w_e - s_e);
+    const double band_mm = p->print.perimeters > 0 ? s_e + (p->print.perimeters - 1) * s_p : 0;
+    for (int k = 0, j = 0; k < d->n_parts && j < n_holes; k++) {
+        const part *h = &d->parts[k];
+        if (h->parent != i)
+            continue;
+        int at = j++;
+        if (!(h->printed_radius_mm > 0) || !(h->printed_radius_mm < h->radius_mm))
+            continue;
+        double r[3] = {h->printed_radius_mm + edge_mm,
+                       fmin(h->radius_mm, h->printed_radius_mm + edge_mm + band_mm),
+                       h->radius_mm};
+        tippe_moments m[3];
+        for (int q = 0; q < 3; q++) {
+            if (q == 2 && !(r[2] > r[1]))
+                break;
+            int rc = ring_moments(shape, holes, n_holes, at, 1e-3 * r[q], &m[q], err);
+            if (rc)
+                return rc;
+        }
+        if (r[1] > r[0])
+            *wall = tippe_moments_add(*wall, tippe_moments_sub(m[0], m[1]));
+        if (r[2] > r[1])
+            *sparse = tippe_moments_add(*sparse, tippe_moments_sub(m[1], m[2]));
+    }
+    return TIPPE_OK;
+}
+
+/* Part p's deposit at infill as made: as the slicer lays it (its holes at
+ * their printed radii), less what the cut after printing takes (p->cut_*,
+ * at the deposit's flow: the ring within the walls solid, beyond them sparse). */
+static tippe_moments as_made(const part *p, const tippe_moments *cut_wall,
+                             const tippe_moments *cut_sparse, double infill)
+{
+    tippe_moments dep = tippe_print_sliced_at(&p->sliced, &p->print, infill, NULL, NULL);
+    double bulk = (infill >= 1 ? 1.0 : tippe_print_pattern_bulk(p->print.pattern)) * infill;
+    tippe_moments cut = tippe_moments_add(tippe_moments_scale(*cut_wall, p->print.flow),
+                                          tippe_moments_scale(*cut_sparse, bulk * p->print.flow));
+    return tippe_moments_sub(dep, cut);
+}
+
 /* The printed part under the slicer's rules (print_slicer.c), layer by layer.
  * A weighed mass says how much, not where: the nominal reading puts the
  * difference in the sparse infill (the infill that gives that mass, found by
@@ -160,6 +273,9 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
     snprintf(pth, sizeof pth, "parts[%d].print", i);
     tippe_error perr;
     int rc = sliced_cached(shape, holes, n_holes, &p->print, &p->sliced, &perr);
+    tippe_moments cw = {0, 0, 0, 0}, cs = {0, 0, 0, 0};
+    if (!rc)
+        rc = cut_rings(d, i, shape, holes, n_holes, &cw, &cs, &perr);
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", perr.msg)
                                   : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,
@@ -171,11 +287,10 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
          * slicer's infill is put on every line (a flow factor), the rest in the
          * sparse infill */
         const double want = p->measured_mass_g * 1e-3, c_share = p->print.calibration;
-        double m_s = rho * tippe_print_sliced_at(&p->sliced, &p->print, p->print.infill, NULL,
-                                                 NULL).m;
+        double m_s = rho * as_made(p, &cw, &cs, p->print.infill).m;
         p->print.flow *= 1 + c_share * (want - m_s) / m_s;
-        double m0 = rho * tippe_print_sliced_at(&p->sliced, &p->print, 0, NULL, NULL).m;
-        double m1 = rho * tippe_print_sliced_at(&p->sliced, &p->print, 1, NULL, NULL).m;
+        double m0 = rho * as_made(p, &cw, &cs, 0).m;
+        double m1 = rho * as_made(p, &cw, &cs, 1).m;
         snprintf(pth, sizeof pth, "parts[%d].print.measured_mass_g", i);
         if (want < m0)
             return tippe_json_fail(c, pth,
@@ -190,14 +305,16 @@ static int sliced_moments(const tippe_json_reader *c, tippe_design *d, int i,
         double lo = 0, hi = 1;
         for (int k = 0; k < 80 && hi - lo > 1e-15; k++) {
             double mid = 0.5 * (lo + hi);
-            if (rho * tippe_print_sliced_at(&p->sliced, &p->print, mid, NULL, NULL).m < want)
+            if (rho * as_made(p, &cw, &cs, mid).m < want)
                 lo = mid;
             else
                 hi = mid;
         }
         p->infill = 0.5 * (lo + hi);
     }
-    tippe_moments dep = tippe_print_sliced_at(&p->sliced, &p->print, p->infill, NULL, NULL);
+    tippe_moments dep = as_made(p, &cw, &cs, p->infill);
+    p->cut = tippe_moments_sub(tippe_print_sliced_at(&p->sliced, &p->print, p->infill, NULL, NULL),
+                               dep);
     if (p->print.model_error != 0)
         dep = model_error_moved(dep, p->print.model_error);
     p->solid_mass_kg = rho * solid.m;
@@ -376,7 +493,16 @@ static void hole_note(part *p, const tippe_design *d, const int *which, int n,
         double rg = body->cut_hole_radius_mm[k];
         if (!isfinite(rg) || fabs(rg - h->radius_mm) <= GCODE_HOLE_TOL_MM)
             continue;
-        int m = snprintf(p->gcode_note + used, sizeof p->gcode_note - used,
+        int m;
+        if (h->printed_radius_mm > 0 && rg < h->radius_mm)
+            m = snprintf(p->gcode_note + used, sizeof p->gcode_note - used,
+                         "%sits hole '%s' is %.2f mm across (printed_radius_mm: %.2f mm), the "
+                         "design's %.2f mm: the plastic inside the design's hole (%.3f g in "
+                         "all) is taken as cut away after printing (tapped, drilled or bored)",
+                         used ? "; " : "", h->name, 2 * rg, 2 * h->printed_radius_mm,
+                         2 * h->radius_mm, body->cut_mass_kg * 1e3);
+        else
+            m = snprintf(p->gcode_note + used, sizeof p->gcode_note - used,
                          rg < h->radius_mm
                              ? "%sits hole '%s' is %.2f mm across, the design's %.2f mm: the "
                                "plastic inside the design's hole (%.3f g in all) is taken as "
@@ -509,12 +635,17 @@ int tippe_design_printed_moments(const tippe_json_reader *c, tippe_design *d, in
     tippe_solid shape = print_solid(p), holes[MAX_PARTS];
     tippe_moments solid = tippe_design_part_moments(p);
     int n_holes = 0;
+    const int sliced = p->print.model == TIPPE_PRINT_MODEL_SLICER || p->gcode[0];
     for (int k = 0; k < d->n_parts; k++)
         if (d->parts[k].parent == i) {
-            holes[n_holes++] = print_solid(&d->parts[k]);
+            /* the slicer's layers have the hole as printed (printed_radius_mm) */
+            part h = d->parts[k];
+            if (h.printed_radius_mm > 0 && sliced)
+                h.radius_mm = h.printed_radius_mm;
+            holes[n_holes++] = print_solid(&h);
             solid = tippe_moments_sub(solid, tippe_design_part_moments(&d->parts[k]));
         }
-    if (p->print.model == TIPPE_PRINT_MODEL_SLICER || p->gcode[0]) {
+    if (sliced) {
         int rc = sliced_moments(c, d, i, &shape, holes, n_holes, solid, out);
         if (rc || !p->gcode[0])
             return rc;

@@ -98,6 +98,8 @@ typedef struct {
     double solid_mass_kg, skin_mass_kg, print_rel_error;
     double mass_kg;         /* signed contribution */
     int fit;                /* a hole's "fit": TIPPE_DESIGN_FIT_* (NONE when not given) */
+    double printed_radius_mm; /* a hole's "printed_radius_mm": printed there, cut to
+                                 radius_mm after (0: printed at radius_mm) */
     char catalogue_item[64];/* "catalogue_item": the hardware catalogue's item it is, or "" */
     char gcode[1024];       /* print.gcode as given (relative to the design file), or "" */
     double filament_diameter_mm; /* print.filament_diameter_mm: the G-code's filament, 0 the
@@ -114,6 +116,9 @@ typedef struct {
     tippe_moments model_moments;
     double model_mass_kg;
     tippe_moments deposit, model_deposit; /* unit density: the printed part alone */
+    /* what the print model's deposit loses after printing: the plastic inside its
+       holes' radii where they are printed narrower (printed_radius_mm); unit density */
+    tippe_moments cut;
 } part;
 
 struct tippe_design {

@@ -77,6 +77,15 @@ static void add_print_default(const tippe_design *d, int i, const char *name, to
         put(l, field, pi.infill, pi.infill * TIPPE_TOL_INFILL_PERCENT / 100,
             TIPPE_TOL_INFILL_PERCENT, "", "slicer infill");
     }
+    /* the print model's own error against the slicer (TIPPE_PRINT_MODEL_ERROR_*,
+     * docs/printing.md): +/-1 of the largest measured, so that a zone hinging on a
+     * few thousandths of A/C shows as the knife edge it is. Not for a G-code (the
+     * slicer's own part) nor a weighed part (the scale has the mass; the reading
+     * of where is the calibration's term) nor the continuous rule (not measured) */
+    if (!pi.calibrated && !pi.from_gcode && !strcmp(pi.model, "slicer")) {
+        snprintf(field, sizeof field, "parts.%s.print.model_error", name);
+        put(l, field, pi.settings.model_error, 1.0, 0, "", "print model vs slicer");
+    }
 }
 
 /* Whether part i is printed filament: a printable material, or a print block

@@ -255,6 +255,11 @@ int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
             dx[b] = b ? dx[b - 1] + s->body[b - 1].r_max_mm + s->body[b].r_max_mm + 5 : 0;
         }
         tippe_mesh_3mf_extra x;
+        int *support = calloc((size_t)nb, sizeof *support);
+        if (!support)
+            rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+        for (int b = 0; !rc && b < nb; b++)
+            support[b] = tippe_export_body_needs_support(&s->body[b]);
         char desc[600];
         const char *keys[3] = {"Title", "Application", "Description"};
         const char *vals[3] = {tippe_design_name(d), "tippe " TIPPE_VERSION, desc};
@@ -263,8 +268,10 @@ int tippe_export_run(const tippe_design *d, const tippe_export_request *q,
             x.n_meta = 3;
             x.meta_keys = keys;
             x.meta_values = vals;
+            x.support = x.has_print ? support : NULL;
             rc = tippe_mesh_write_3mf_extra(meshes, names, dx, nb, &x, paths[k++], err);
         }
+        free(support);
         free(names);
         free(dx);
     }

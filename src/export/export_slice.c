@@ -68,13 +68,22 @@ static int run_slicer(const tippe_export_slice_request *q, const char *gcode, co
     return TIPPE_OK;
 }
 
-/* The 3MF of d's one printed body, written and committed (the slicer reads it). */
+/* The 3MF of d's one printed body, written and committed (the slicer reads it).
+ * Its screw's hole is printed as the build sheet prints it (sheet: its tap
+ * drill or insert's pilot, as export_build.c's 3MF has it), so that the G-code
+ * is the part tippe build makes and its verdict models (the part as made). */
 static int write_model(const tippe_design *d, const tippe_export_slice_request *q,
-                       tippe_export_slice_result *out, tippe_error *err)
+                       const tippe_build_sheet *sheet, tippe_export_slice_result *out,
+                       tippe_error *err)
 {
     tippe_export_request x = {.profile = tippe_profile_defaults(), .formats = TIPPE_EXPORT_3MF,
                               .dir = q->dir};
     x.profile.clearance_mm = q->clearance_mm;
+    if (sheet->hole_tapped || sheet->hole_insert) {
+        x.profile.fit_part = sheet->hole_part;
+        x.profile.fit_diameter_mm = sheet->hole_diameter_mm;
+        x.fit_note = sheet->fit_note;
+    }
     double t0, t1;
     tippe_design_travel_mm(d, &t0, &t1);
     x.z2_mm = 0.5 * (t0 + t1);
@@ -109,25 +118,36 @@ int tippe_export_slice(const tippe_design *d, const tippe_export_slice_request *
     out->part = tippe_export_slice_part(d, out->part_name, sizeof out->part_name, err);
     if (out->part < 0)
         return TIPPE_EINPUT;
-    int rc = write_model(d, q, out, err);
-    if (rc)
+    out->model_sheet = calloc(1, sizeof *out->model_sheet);
+    out->sliced_sheet = calloc(1, sizeof *out->sliced_sheet);
+    int rc = !out->model_sheet || !out->sliced_sheet
+                 ? tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory")
+                 : tippe_build_compute_verdict(d, &q->verdict, out->model_sheet, err);
+    if (!rc)
+        rc = write_model(d, q, out->model_sheet, out, err);
+    if (rc) {
+        tippe_export_slice_result_free(out);
         return rc;
+    }
     size_t plen = strlen(out->model_3mf);
     snprintf(out->gcode, sizeof out->gcode, "%.*s.gcode", (int)(plen > 4 ? plen - 4 : plen),
              out->model_3mf);
     snprintf(out->log, sizeof out->log, "%s/slicer.log", q->dir);
-    if ((rc = run_slicer(q, out->gcode, out->model_3mf, out->log, err)))
+    if ((rc = run_slicer(q, out->gcode, out->model_3mf, out->log, err))) {
+        tippe_export_slice_result_free(out);
         return rc;
+    }
     /* the sliced part: the design as first read, the G-code as its printed body */
     char abs_gcode[PATH_MAX + 4200], set[PATH_MAX + 4400];
     if (!realpath(out->gcode, abs_gcode))
         snprintf(abs_gcode, sizeof abs_gcode, "%s", out->gcode);
     snprintf(set, sizeof set, "parts.%s.print.gcode=%s", out->part_name, abs_gcode);
     const char *extra[1] = {set};
-    out->model_sheet = calloc(1, sizeof *out->model_sheet);
-    out->sliced_sheet = calloc(1, sizeof *out->sliced_sheet);
-    if (!out->model_sheet || !out->sliced_sheet)
-        rc = tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    /* both as made: the model's hole printed as the 3MF's, tapped after (build.h) */
+    tippe_design *made = NULL;
+    rc = tippe_build_as_made(d, out->model_sheet, &made, err);
+    if (made)
+        d = made;
     if (!rc)
         rc = tippe_design_reload(d, extra, 1, &out->sliced, err);
     if (!rc)
@@ -135,9 +155,8 @@ int tippe_export_slice(const tippe_design *d, const tippe_export_slice_request *
     if (!rc)
         rc = tippe_sweep_design(out->sliced, 0, 0, NULL, &out->sliced_sweep, err);
     if (!rc)
-        rc = tippe_build_compute_verdict(d, &q->verdict, out->model_sheet, err);
-    if (!rc)
         rc = tippe_build_compute_verdict(out->sliced, &q->verdict, out->sliced_sheet, err);
+    tippe_design_free(made);
     if (rc)
         tippe_export_slice_result_free(out);
     return rc;

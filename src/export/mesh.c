@@ -384,6 +384,16 @@ static char *slicer_config(const tippe_mesh *meshes, const char *const *names, c
                     x->pattern, x->external_width_mm, x->infill_width_mm, x->infill_width_mm,
                     x->top_min_mm, x->bottom_min_mm, 100 * x->infill_overlap, x->anchor_mm,
                     x->anchor_max_mm);
+        /* supports where the body wants them, from the build plate only (issue 37;
+         * PrusaSlicer 2.5's per-object PrintObjectConfig keys, PrintConfig.hpp), none
+         * elsewhere: the G-code's reader leaves them out of the part (gcode_text.c) */
+        if (x->support)
+            fprintf(f,
+                    "  <metadata type=\"object\" key=\"support_material\" value=\"%d\"/>\n"
+                    "  <metadata type=\"object\" key=\"support_material_auto\" value=\"1\"/>\n"
+                    "  <metadata type=\"object\" key=\"support_material_buildplate_only\" "
+                    "value=\"1\"/>\n",
+                    x->support[k] ? 1 : 0);
         /* the settings the model assumes that a profile could change (issue 40) */
         for (int j = 0; x->pattern && j < x->n_pins; j++)
             fprintf(f, "  <metadata type=\"object\" key=\"%s\" value=\"%s\"/>\n", x->pins[j].key,

@@ -60,7 +60,13 @@ typedef struct {
     /* the settings the model assumes, with the design's values (tippe_print_pinned_settings) */
     tippe_print_pin pins[32];
     int n_pins;
+    /* per object (NULL: none): 1 turns PrusaSlicer's automatic supports on for it,
+     * from the build plate only; 0 turns them off (tippe_export_body_needs_support) */
+    const int *support;
 } tippe_mesh_3mf_extra;
+
+/* Whether body b, standing as printed, wants supports (export_support.c). */
+int tippe_export_body_needs_support(const tippe_profile_body *b);
 
 /* tippe_mesh_write_3mf with the extras (x may be NULL). */
 int tippe_mesh_write_3mf_extra(const tippe_mesh *meshes, const char *const *names,

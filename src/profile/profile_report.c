@@ -95,6 +95,11 @@ void tippe_profile_print_printed_parts(FILE *out, const tippe_design *d)
                     pi.infill * 100, pi.measured_mass_kg * 1e3, s->infill * 100);
         else
             fprintf(out, "infill %.0f %%", pi.infill * 100);
+        /* the cut after printing (a hole printed at its tap drill, then tapped) */
+        char cut[96] = "";
+        if (pi.cut_mass_kg > 0)
+            snprintf(cut, sizeof cut, ", less %.3f g cut from its holes after printing",
+                     pi.cut_mass_kg * 1e3);
         if (!strcmp(pi.model, "skins"))
             fprintf(out,
                     "\n         %.3f g as printed (%.3f g solid, %.3f g walls and skins alone); "
@@ -104,11 +109,12 @@ void tippe_profile_print_printed_parts(FILE *out, const tippe_design *d)
         else if (!pi.from_gcode)
             fprintf(out,
                     "\n         %.3f g as printed (%.3f g solid): walls %.3f g, solid infill "
-                    "%.3f g, sparse infill %.3f g, its anchors %.3f g; filament %.2f cm^3; "
-                    "body A/C %.4f\n",
+                    "%.3f g, sparse infill %.3f g, its anchors %.3f g%s; filament "
+                    "%.2f cm^3; body A/C %.4f\n",
                     pi.printed_mass_kg * 1e3, pi.solid_mass_kg * 1e3, pi.wall_mass_kg * 1e3,
                     pi.solid_infill_mass_kg * 1e3, pi.sparse_mass_kg * 1e3,
-                    pi.anchor_mass_kg * 1e3, pi.filament_volume_mm3 * 1e-3, pi.body_A_over_C);
+                    pi.anchor_mass_kg * 1e3, cut, pi.filament_volume_mm3 * 1e-3,
+                    pi.body_A_over_C);
         else
             fprintf(out,
                     "\n         from its G-code %s (%s): %.3f g, body A/C %.4f%s; the layer model "
@@ -121,6 +127,9 @@ void tippe_profile_print_printed_parts(FILE *out, const tippe_design *d)
                     pi.filament_volume_mm3 * 1e-3);
         if (pi.from_gcode && pi.gcode_note[0])
             fprintf(out, "         the G-code: %s\n", pi.gcode_note);
+        if (pi.from_gcode && pi.gcode_support_mass_kg > 0)
+            fprintf(out, "         supports, removed: %.3f g (not part of the body)\n",
+                    pi.gcode_support_mass_kg * 1e3);
         any = 1;
     }
     if (!any)
@@ -169,6 +178,7 @@ int tippe_profile_printed_parts_json(struct cJSON *o, const tippe_design *d)
             cJSON_AddNumberToObject(e, "solid_infill_mass_kg", pi.solid_infill_mass_kg) &&
             cJSON_AddNumberToObject(e, "sparse_mass_kg", pi.sparse_mass_kg) &&
             cJSON_AddNumberToObject(e, "anchor_mass_kg", pi.anchor_mass_kg) &&
+            cJSON_AddNumberToObject(e, "cut_mass_kg", pi.cut_mass_kg) &&
             cJSON_AddNumberToObject(e, "layers", pi.n_layers) &&
             (isfinite(pi.body_A_over_C) ? cJSON_AddNumberToObject(e, "body_A_over_C",
                                                                    pi.body_A_over_C)
@@ -180,6 +190,8 @@ int tippe_profile_printed_parts_json(struct cJSON *o, const tippe_design *d)
                        cJSON_AddNumberToObject(e, "model_mass_kg", pi.model_mass_kg) &&
                        cJSON_AddNumberToObject(e, "model_body_A_over_C", pi.model_body_A_over_C) &&
                        cJSON_AddNumberToObject(e, "gcode_cut_mass_kg", pi.gcode_cut_mass_kg) &&
+                       cJSON_AddNumberToObject(e, "gcode_support_mass_kg",
+                                               pi.gcode_support_mass_kg) &&
                        cJSON_AddStringToObject(e, "gcode_note", pi.gcode_note)
                  : cJSON_AddNullToObject(e, "gcode") != NULL);
         if (!ok)
