@@ -46,6 +46,39 @@ for fit in none slide; do
         json_ok "$tmp/m12-$fit.json" 'o["hole_fit"] is None and abs(o["bodies"][0]["exact_volume_mm3"] - 4 / 3 * math.pi * (625 - 5.7 ** 2) ** 1.5) < 1e-6'
 done
 
+# --- eval's and sweep's bodies "as tippe export writes them" -------------------
+# A hole at its printed_radius_mm (the part as made: docs/printing.md) is printed
+# there by tippe export; eval's and sweep's envelope is the same closed form, so
+# the two volumes agree to rounding (1e-9 relative: one formula, one design).
+# They gave the slide fit's 60413 mm^3 against export's 61368 mm^3.
+asmade=(--set parts.hole.printed_radius_mm=5.125)
+"$tippe" export $m12 -o "$tmp/m12-asmade" --format stl "${asmade[@]}" --json >"$tmp/x-asmade.json"
+for verb in "eval --z2 5" sweep; do
+    "$tippe" $verb $m12 "${asmade[@]}" --json >"$tmp/v-asmade.json" 2>"$tmp/err" ||
+        { bad "$verb, printed_radius_mm: failed: $(cat "$tmp/err")"; continue; }
+    python3 - "$tmp/v-asmade.json" "$tmp/x-asmade.json" <<'EOF' && ok || bad "$verb: printed_bodies differs from export's body with printed_radius_mm"
+import json, sys
+v, x = (json.load(open(f)) for f in sys.argv[1:3])
+b, e = v["printed_bodies"][0], x["bodies"][0]["exact_volume_mm3"]
+assert abs(b["volume_mm3"] - e) / e < 1e-9, (b["volume_mm3"], e)
+assert b["printed_hole"] == {"hole": "hole", "diameter_mm": 10.25} and b["fit_not_counted"] is None, b
+EOF
+done
+"$tippe" eval $m12 --z2 5 "${asmade[@]}" >"$tmp/eval-asmade.txt"
+check "eval's text: the hole printed 10.25 mm across, not 0.2 mm wider" \
+    grep -q "as tippe export writes them, hole 'hole' printed 10.25 mm across (its printed_radius_mm);" "$tmp/eval-asmade.txt"
+"$tippe" export $m12 -o "$tmp/m12-asmade-t" --format stl "${asmade[@]}" >"$tmp/export-asmade.txt"
+check "export's text: a hole at its printed radius is in the print model (the part as made)" \
+    grep -q "^fit        hole 'hole' printed 10.25 mm across: .*the print model lays it there too" "$tmp/export-asmade.txt"
+# a "tap" or "insert" fit without a printed radius: the thread tables are the
+# build layer's, so eval names the hole whose fit its volume leaves out
+"$tippe" eval $m3 --z2 5 --set parts.hole.fit=insert >"$tmp/eval-insert.txt"
+check "eval's text: an insert's hole named as not counted" \
+    grep -q "but tippe export prints hole 'hole' as its \"fit\": \"insert\" says, which this volume does not count" "$tmp/eval-insert.txt"
+"$tippe" eval $m3 --z2 5 --set parts.hole.fit=insert --json >"$tmp/eval-insert.json"
+check "eval's JSON: fit_not_counted names the insert's hole" \
+    json_ok "$tmp/eval-insert.json" 'o["printed_bodies"][0]["fit_not_counted"] == "hole" and o["printed_bodies"][0]["printed_hole"] is None'
+
 # --- build: the design's fit, and --hole over it ------------------------------
 "$tippe" build $m3 -o "$tmp/b3" --set parts.hole.fit=insert --json >"$tmp/b3.json" 2>"$tmp/err" ||
     bad "m3 insert: build failed: $(cat "$tmp/err")"

@@ -143,13 +143,16 @@ void tippe_profile_set_free(tippe_profile_set *s);
 
 /* Reports for eval and sweep: how each printed part is printed (settings,
  * infill as given or calibrated, masses) and the bodies as tippe export writes
- * them (default clearance) with their exact volumes; or a line saying every
+ * them (default clearance, a hole at its printed_radius_mm) with their exact
+ * volumes; or a line saying every
  * part is solid. The JSON adds "printed_parts": [{part, perimeters,
  * line_width_mm, top_bottom_layers, layer_height_mm, wall_mm, skin_mm, infill,
  * slicer_infill, calibrated, measured_mass_kg, printed_mass_kg, solid_mass_kg,
  * skin_mass_kg, model_rel_error}] (empty when all parts are solid) and
- * "printed_bodies": [{name, material, volume_mm3, clearance_mm}] to o; -1 when
- * out of memory. */
+ * "printed_bodies": [{name, material, volume_mm3, clearance_mm, printed_hole:
+ * {hole, diameter_mm} or null (a hole at its printed_radius_mm, as tippe export
+ * prints it), fit_not_counted: a hole whose "tap"/"insert" fit tippe export
+ * applies and this volume does not, or null}] to o; -1 when out of memory. */
 void tippe_profile_print_printed_parts(FILE *out, const tippe_design *d);
 struct cJSON;
 int tippe_profile_printed_parts_json(struct cJSON *o, const tippe_design *d);

@@ -78,10 +78,16 @@ static void print_text(const tippe_design *d, const tippe_export_request *q,
         if (r->profiles.clearance_applied[i] && q->profile.fit_diameter_mm > 0 &&
             i == q->profile.fit_part) {
             tippe_design_part_info p;
+            tippe_design_solid hs;
             tippe_design_part(d, i, &p);
-            printf("fit        hole '%s' printed %.4g mm across: %s (the design's fit); "
-                   "printed only, not in the mass model\n",
-                   p.name, q->profile.fit_diameter_mm, q->fit_note);
+            /* a hole at its printed_radius_mm is the part as made: the print
+             * model lays it there too (docs/printing.md, "The part as made") */
+            int as_made = !tippe_design_part_solid(d, i, &hs) && hs.printed_radius_mm > 0 &&
+                          fabs(2 * hs.printed_radius_mm - q->profile.fit_diameter_mm) < 1e-9;
+            printf("fit        hole '%s' printed %.4g mm across: %s (the design's fit); %s\n",
+                   p.name, q->profile.fit_diameter_mm, q->fit_note,
+                   as_made ? "the print model lays it there too and cuts it to the hole's radius"
+                           : "printed only, not in the mass model");
             grown = 1;
         } else if (r->profiles.clearance_applied[i]) {
             tippe_design_part_info p;

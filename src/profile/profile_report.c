@@ -10,11 +10,42 @@
 #include <stdio.h>
 #include <string.h>
 
-/* The printed bodies as tippe export writes them (default clearance), with
- * their exact volumes: what a slicer's volume estimate should approach. */
-static void print_bodies(FILE *out, const tippe_design *d)
+/* The options tippe export prints a design's bodies with, as far as the design
+ * says them: the default clearance, and a hole printed at its
+ * printed_radius_mm (the part as made) where tippe export prints it there
+ * (tippe_build_design_fit: a heat-set insert's hole keeps its pilot). A "tap"
+ * or "insert" fit without a printed radius needs the thread tables of the
+ * build layer above: returned in *fit_only (the hole's index, else -1), so
+ * that the report names it rather than give its volume as if it slid. */
+static tippe_profile_options report_options(const tippe_design *d, int *fit_only)
 {
     tippe_profile_options o = tippe_profile_defaults();
+    *fit_only = -1;
+    for (int i = 0; i < tippe_design_n_parts(d); i++) {
+        tippe_design_solid hs;
+        int fit = tippe_design_part_fit(d, i);
+        if (tippe_design_part_solid(d, i, &hs) || !hs.is_void)
+            continue;
+        if (hs.printed_radius_mm > 0 && fit != TIPPE_DESIGN_FIT_INSERT && o.fit_diameter_mm == 0) {
+            o.fit_part = i;
+            o.fit_diameter_mm = 2 * hs.printed_radius_mm;
+        } else if ((fit == TIPPE_DESIGN_FIT_TAP || fit == TIPPE_DESIGN_FIT_INSERT) &&
+                   *fit_only < 0) {
+            *fit_only = i;
+        }
+    }
+    if (o.fit_diameter_mm > 0 && *fit_only == o.fit_part)
+        *fit_only = -1;
+    return o;
+}
+
+/* The printed bodies as tippe export writes them (default clearance, a hole
+ * at its printed radius), with their exact volumes: what a slicer's volume
+ * estimate should approach. */
+static void print_bodies(FILE *out, const tippe_design *d)
+{
+    int fit_only;
+    tippe_profile_options o = report_options(d, &fit_only);
     tippe_profile_set s;
     tippe_error err = {0};
     if (tippe_profile_build(d, &o, &s, &err)) {
@@ -27,18 +58,34 @@ static void print_bodies(FILE *out, const tippe_design *d)
         fprintf(out, "%s%s (%s): envelope %.1f mm^3 = %.3f cm^3 (the outline, not the filament)\n",
                 b ? "         " : "bodies   ", e->name, e->material, v, v * 1e-3);
     }
-    int grown = 0;
+    int grown = 0, fitted = o.fit_diameter_mm > 0 && o.fit_part < s.n_parts &&
+                            s.clearance_applied[o.fit_part];
     for (int i = 0; i < s.n_parts; i++)
-        grown |= s.clearance_applied[i];
-    fprintf(out, "         (as tippe export writes them%s; the filament, to compare with the "
+        grown |= s.clearance_applied[i] && !(fitted && i == o.fit_part);
+    char fit[320] = "";
+    tippe_design_part_info p;
+    if (fitted && !tippe_design_part(d, o.fit_part, &p))
+        snprintf(fit, sizeof fit, ", hole '%s' printed %.4g mm across (its printed_radius_mm)",
+                 p.name, o.fit_diameter_mm);
+    if (fit_only >= 0 && !tippe_design_part(d, fit_only, &p)) {
+        size_t n = strlen(fit);
+        snprintf(fit + n, sizeof fit - n,
+                 "; but tippe export prints hole '%s' as its \"fit\": \"%s\" says, which this "
+                 "volume does not count",
+                 p.name,
+                 tippe_design_part_fit(d, fit_only) == TIPPE_DESIGN_FIT_TAP ? "tap" : "insert");
+    }
+    fprintf(out, "         (as tippe export writes them%s%s; the filament, to compare with the "
                  "slicer's estimate, is under printed)\n",
-            grown ? ", holes for hardware 0.2 mm wider in radius than in the mass model" : "");
+            grown ? ", holes for hardware 0.2 mm wider in radius than in the mass model" : "",
+            fit);
     tippe_profile_set_free(&s);
 }
 
 static int bodies_json(struct cJSON *o, const tippe_design *d)
 {
-    tippe_profile_options opt = tippe_profile_defaults();
+    int fit_only;
+    tippe_profile_options opt = report_options(d, &fit_only);
     tippe_profile_set s;
     tippe_error err = {0};
     cJSON *arr = cJSON_AddArrayToObject(o, "printed_bodies");
@@ -59,6 +106,18 @@ static int bodies_json(struct cJSON *o, const tippe_design *d)
              cJSON_AddStringToObject(j, "material", e->material) &&
              cJSON_AddNumberToObject(j, "volume_mm3", e->exact_volume_mm3) &&
              cJSON_AddNumberToObject(j, "clearance_mm", opt.clearance_mm);
+        tippe_design_part_info p;
+        if (ok && opt.fit_diameter_mm > 0 && !tippe_design_part(d, opt.fit_part, &p)) {
+            cJSON *h = cJSON_AddObjectToObject(j, "printed_hole");
+            ok = h && cJSON_AddStringToObject(h, "hole", p.name) &&
+                 cJSON_AddNumberToObject(h, "diameter_mm", opt.fit_diameter_mm);
+        } else if (ok) {
+            ok = cJSON_AddNullToObject(j, "printed_hole") != NULL;
+        }
+        if (ok && fit_only >= 0 && !tippe_design_part(d, fit_only, &p))
+            ok = cJSON_AddStringToObject(j, "fit_not_counted", p.name) != NULL;
+        else if (ok)
+            ok = cJSON_AddNullToObject(j, "fit_not_counted") != NULL;
     }
     tippe_profile_set_free(&s);
     return ok ? 0 : -1;
