@@ -69,4 +69,23 @@ expect_fail "--set tolerances with a bad field" 2 'tolerances["radius"]' -- \
 # the banded plot
 "$tippe" sweep "$m12" --plot "$tmp/zones.png" >/dev/null
 check "banded zone plot written" test -s "$tmp/zones.png"
+# design-format.md's table of default tolerances names every rule sweep applies
+# by default (a solid design, a printed one, a weighed one) and is one Markdown
+# table (a blank line inside ends it: the rows after it were shown as text)
+for set in "" "--set parts.body.print.measured_mass_g=25"; do
+    "$tippe" sweep designs/m12-setscrew-printed.json $set --json >"$tmp/rules.json"
+    check "design-format.md's default tolerances table has every rule sweep applies ($set)" \
+        python3 - "$tmp/rules.json" "$tmp/m12.json" docs/design-format.md <<'PY'
+import json, re, sys
+rules = {t["rule"] for f in sys.argv[1:3] for t in json.load(open(f))["tolerances"]}
+doc = open(sys.argv[3]).read()
+start = doc.index("Defaults (a field the block leaves out):")
+table = doc[start:].split("\n\n")[1]          # the first block after the line
+rows = {m.group(1).strip() for m in re.finditer(r"^\| ([^|]+)\|", table, re.M)}
+missing = rules - rows
+assert not missing, ("not in the table", missing, rows)
+assert "patch radius" in rows, rows             # the table's last row: one table
+PY
+done
+
 finish
