@@ -203,4 +203,14 @@ done
 "$tippe" sweep designs/shell-band.json >"$tmp/out" 2>"$tmp/err"
 check "a shipped design: no warning" test ! -s "$tmp/err"
 
+# slice's --help as the part as made has it: its 3MF prints the screw's hole at
+# the tap drill whatever --clearance-mm says (test_slicer.sh slices it), and its
+# per-object settings include the supports and the pinned ones, not the first
+# layer (docs/printing.md); --help said "0 slices the mass model's part" alone
+"$tippe" slice --help >"$tmp/slice-help.txt"
+check "slice --help: the screw's hole printed at its tap drill whatever --clearance-mm says" \
+    grep -q "the screw's hole is printed at its tap drill (or insert's pilot hole)" "$tmp/slice-help.txt"
+check "slice --help: the 3MF's settings include the supports, not the first layer" \
+    sh -c 'grep -q "supports and the settings the print model assumes" "$1" && grep -q "first layer.s height and width are its own" "$1"' _ "$tmp/slice-help.txt"
+
 finish

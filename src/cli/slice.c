@@ -39,13 +39,18 @@ static int slice_parse(slice_args *a, int argc, char **argv)
         {.name = "profile", .kind = TIPPE_CLI_STRING, .value = &a->profile, .arg = "FILE.ini",
          .def = "the shipped designs/slicer/prusa-pla-0.4mm.ini",
          .help = "a PrusaSlicer config (File > Export > Export Config); the 3MF's\n"
-                 "per-object settings (layers, perimeters, infill, pattern) win over it"},
+                 "per-object settings win over it: layers, perimeters, infill, pattern,\n"
+                 "supports and the settings the print model assumes (docs/printing.md,\n"
+                 "\"Under other profiles\"); the first layer's height and width are its own"},
         {.name = "slicer", .kind = TIPPE_CLI_STRING, .value = &a->slicer, .arg = "PROGRAM",
          .def = "prusa-slicer", .help = "the slicer's command line (PrusaSlicer 2.5 or later)"},
         {.name = "clearance-mm", .kind = TIPPE_CLI_DOUBLE, .value = &a->clearance_mm,
          .arg = "MM", .unit = "mm", .min = 0, .max = 2, .def = "0",
          .help = "radial clearance of holes that take hardware in the sliced part: 0 slices\n"
-                 "the mass model's part, so that the two zone tables compare like with like"},
+                 "the mass model's part, so that the two zone tables compare like with like;\n"
+                 "the screw's hole is printed at its tap drill (or insert's pilot hole) as\n"
+                 "tippe build prints it, whatever this says, and the print model's table is\n"
+                 "of that part too (docs/printing.md, \"The part as made\")"},
         {.name = "json", .kind = TIPPE_CLI_FLAG, .value = &a->json,
          .help = "print both sweeps and the bodies as one JSON object"},
         {.name = "set", .kind = TIPPE_CLI_SET, .value = &a->sets, .arg = "FIELD=VALUE",
@@ -54,7 +59,8 @@ static int slice_parse(slice_args *a, int argc, char **argv)
     };
     tippe_cli_spec spec = {
         .verb = VERB,
-        .synopsis = "DESIGN.json -o DIR [--profile FILE.ini] [--slicer PROGRAM] [--json]",
+        .synopsis = "DESIGN.json -o DIR [--profile FILE.ini] [--slicer PROGRAM]\n"
+                    "       [--clearance-mm MM] [--json] [--set FIELD=VALUE ...]",
         .about = "Slices the design's printed body with PrusaSlicer and reads the G-code back:\n"
                  "the body's mass, centre of mass, A and C summed from its extrusion moves,\n"
                  "and the zone table of the top with that body beside the print model's.",
