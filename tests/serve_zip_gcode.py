@@ -68,9 +68,15 @@ check(gref == "m12-upload-body.gcode" and "upload:" not in json.dumps(zipped),
 check("m12-upload-body.gcode" in names and zf.read("m12-upload-body.gcode") == gcode,
       "the zip's G-code is the uploaded file byte for byte")
 built = json.loads(zf.read("m12-upload-build.json"))
-check(any("is printed as its G-code deposits it" in n for n in built["notes"]),
-      "the sheet says the changes it tried keep the G-code's slicing (no infill step: %d "
-      "changes tried)" % built["changes_tried"])
+# A sheet that is settable as it stands tries no change (the as-made part, issue 40,
+# made this G-code's M12 settable); one that tries changes says they keep the slicing.
+if built["changes_tried"] > 0:
+    check(any("is printed as its G-code deposits it" in n for n in built["notes"]),
+          "the sheet says the changes it tried keep the G-code's slicing (no infill step: %d "
+          "changes tried)" % built["changes_tried"])
+else:
+    check(built["verdict"] == "3-in-1 and settable" and not built.get("to_make_it_settable"),
+          "the sheet tried no change, and needs none: %s" % built["verdict"])
 cannot = [f["fix"] for f in built["pole_fixes"] if f["verdict"] == "failed"]
 check(cannot and all("slice the fixed design and give its G-code" in f for f in cannot),
       "the poles' fixes it cannot try (the G-code is of the part without them) say to slice "
@@ -78,6 +84,19 @@ check(cannot and all("slice the fixed design and give its G-code" in f for f in 
 md = [n for n in names if n.endswith("-build.md")]
 check(md and "upload:" not in zf.read(md[0]).decode(),
       "the zip's sheet names no upload id")
+
+# a sheet that must try changes on a G-code part (a travel too short for its zones)
+# tries no infill step and says why
+if "m12-upload.json" in names:
+    zf.extractall(os.path.join(work, "short"))
+    r = subprocess.run([tippe, "build", "m12-upload.json", "-o", "cli", "--no-export", "--json",
+                        "--set", "travel_mm=[0,3]"], cwd=os.path.join(work, "short"),
+                       capture_output=True, text=True)
+    short = json.loads(r.stdout) if r.returncode == 0 else {}
+    check(short.get("changes_tried", 0) > 0 and
+          any("is printed as its G-code deposits it" in n for n in short.get("notes", [])),
+          "with 3 mm of travel the sheet tries %d changes and says they keep the G-code's "
+          "slicing" % short.get("changes_tried", 0))
 
 # unzipped anywhere: the command builds the design as the page judged it
 unz = os.path.join(work, "unzipped")
