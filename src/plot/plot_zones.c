@@ -302,7 +302,12 @@ static void draw_marks(const tippe_sweep_path *path, const tippe_sweep_result *r
         path->eval(x, path->params, &k, &es);
         double y = k - 1.0;
         tippe_plot_points(1, &x, &y, 4, 1.3, 0x000000u);
-        tippe_plot_text(x, y + 0.035 * h, 0.0, 0.5, 0.7, 0x000000u,
+        /* centred over its mark, unless half the word would leave the panel (a mark
+         * near an end of the travel): then it starts or ends at the mark */
+        const double half_px = 30.0; /* half of "balanced" at 0.7 of the text height */
+        const double just = (x - r->from_mm) * f->px_per_mm < half_px ? 0.0
+                            : (r->to_mm - x) * f->px_per_mm < half_px ? 1.0 : 0.5;
+        tippe_plot_text(x, y + 0.035 * h, 0.0, just, 0.7, 0x000000u,
                         ev->touch ? "touch" : "balanced");
     }
     double ends[2] = {r->travel_from_mm, r->travel_to_mm};
