@@ -18,20 +18,9 @@ import threading
 import time
 import zipfile
 
-from serve_lib import Server, REPO
+from serve_lib import Server, REPO, check, finish
 
 tippe = sys.argv[1]
-passed, failed = 0, 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-        print("ok   " + what)
-    else:
-        failed += 1
-        print("FAIL " + what)
 
 
 def cli(*args, json_out=True):
@@ -344,5 +333,4 @@ with Server(tippe) as srv:
     t.join()
     check(code == 0 and not left, "SIGTERM during a build: exit 0, no temporary left (%s)" % left)
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

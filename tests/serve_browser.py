@@ -14,7 +14,7 @@ import sys
 import time
 import zipfile
 
-from serve_lib import Server, REPO
+from serve_lib import Server, REPO, check, finish
 
 tippe, artefacts = sys.argv[1], sys.argv[2]
 os.makedirs(artefacts, exist_ok=True)
@@ -31,17 +31,6 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import WebDriverWait
 
-passed, failed = 0, 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-        print("ok   " + what)
-    else:
-        failed += 1
-        print("FAIL " + what)
 
 
 def cli_json(*args):
@@ -299,5 +288,4 @@ with Server(tippe) as srv:
     finally:
         driver.quit()
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

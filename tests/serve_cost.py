@@ -13,20 +13,9 @@ import sys
 import threading
 import time
 
-from serve_lib import Server, REPO
+from serve_lib import Server, REPO, check, finish
 
 tippe = sys.argv[1]
-passed, failed = 0, 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-        print("ok   " + what)
-    else:
-        failed += 1
-        print("FAIL " + what)
 
 
 def cpu_s(pid):
@@ -157,5 +146,4 @@ with Server(tippe, "--workers", "1") as srv:
           "a 6 s check whose client left after 0.5 s, then a sweep: %.2f s of the server's "
           "CPU in all (cancelled; the whole check is ~6 s)" % spent)
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

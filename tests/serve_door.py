@@ -14,20 +14,9 @@ import socket
 import sys
 import time
 
-from serve_lib import Server, REPO
+from serve_lib import Server, REPO, check, finish
 
 tippe = sys.argv[1]
-passed, failed = 0, 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-        print("ok   " + what)
-    else:
-        failed += 1
-        print("FAIL " + what)
 
 
 def raw_request(srv, data, timeout=10):
@@ -212,5 +201,4 @@ try:
 except RuntimeError as e:
     print("skip port 80 (cannot listen there: %s)" % str(e).strip()[-80:])
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

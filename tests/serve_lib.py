@@ -8,6 +8,7 @@ import os
 import re
 import signal
 import subprocess
+import sys
 import tempfile
 import time
 
@@ -112,3 +113,23 @@ def same_verdict(page, sheet, tol_mm=0.0):
                 s["behaviour"], p["robust_width_mm"], p["settable"], s["robust_width_mm"],
                 s["settable"])
     return ""
+
+
+# The tally every serve test prints: one line per check, "ok" or "FAIL", and a last
+# line "N passed, M failed" (the test's exit status: 1 if any failed).
+_tally = {"passed": 0, "failed": 0}
+
+
+def check(ok, what):
+    if ok:
+        _tally["passed"] += 1
+        print("ok   " + what)
+    else:
+        _tally["failed"] += 1
+        print("FAIL " + what)
+
+
+def finish():
+    print("%d passed, %d failed" % (_tally["passed"], _tally["failed"]))
+    sys.exit(1 if _tally["failed"] else 0)
+

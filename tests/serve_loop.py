@@ -13,7 +13,7 @@ import subprocess
 import sys
 import time
 
-from serve_lib import Server, REPO, GCODE_WIDTH_TOL_MM, same_verdict
+from serve_lib import Server, REPO, GCODE_WIDTH_TOL_MM, same_verdict, check, finish
 
 from selenium import webdriver
 from selenium.webdriver.chrome.options import Options
@@ -27,17 +27,6 @@ work = os.path.join(artefacts, "loop")
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 slicer = shutil.which(os.environ.get("PRUSA_SLICER", "prusa-slicer"))
-passed, failed = 0, 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-        print("ok   " + what)
-    else:
-        failed += 1
-        print("FAIL " + what)
 
 
 def js(d, script):
@@ -219,5 +208,4 @@ with Server(tippe, "--budget", "600") as srv:
     finally:
         d.quit()
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

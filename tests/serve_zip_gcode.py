@@ -13,22 +13,11 @@ import subprocess
 import sys
 import zipfile
 
-from serve_lib import Server, REPO, GCODE_WIDTH_TOL_MM, same_verdict
+from serve_lib import Server, REPO, GCODE_WIDTH_TOL_MM, same_verdict, check, finish
 
 tippe, work = sys.argv[1], sys.argv[2]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-passed, failed = 0, 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-        print("ok   " + what)
-    else:
-        failed += 1
-        print("FAIL " + what)
 
 
 # PrusaSlicer's G-code of the printed M12 at 40 % infill (the design's body)
@@ -111,5 +100,4 @@ if r.returncode == 0:
           "its verdict is the page's: %s (robust widths %s mm)" %
           (sheet["verdict"], ", ".join("%.4f" % s.get("robust_width_mm", 0)
                                       for s in sheet["settings"])))
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()
