@@ -115,6 +115,8 @@ typedef struct {
     tippe_gcode_part gcode_part;
     double gcode_flow;
     char gcode_note[512];   /* the G-code's hole against the design's (gcode_cut_holes), or "" */
+    double gcode_bed_shift_mm; /* the G-code placed by its own holes: its bed against the
+                                  model's (0: where the model's part stands) */
     tippe_moments model_moments;
     double model_mass_kg;
     tippe_moments deposit, model_deposit; /* unit density: the printed part alone */
