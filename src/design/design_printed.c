@@ -541,6 +541,10 @@ static int gcode_body_cut(const tippe_design_gcode *mem, const char *file,
  * the measured radius is the edge of the external perimeter's rectangle, whose
  * centre line lies s/2 from the outline, so the edge sticks (w - s)/2 =
  * t (1 - pi/4) / 2 into the hole (print_slicer.c, Flow's rounded rectangle).
+ * A hole measured from beads read at a wrong filament diameter (too wide or
+ * narrow, so their edge is off) would move them wrongly: the G-code's own height,
+ * a whole number of layers at or above the part's (about half a layer above on
+ * average), is the second witness, and the edges nearer to it are kept.
  * 1 with *bed_m and *top_m set when they move; 0 when the model's stand. */
 static int gcode_edges(const tippe_design *d, int i, const int *which, int n,
                        const tippe_gcode_body *body, double *bed_m, double *top_m)
@@ -570,6 +574,9 @@ static int gcode_edges(const tippe_design *d, int i, const int *which, int n,
     double bed, top;
     if (!moved || !tippe_print_edges(&shape, voids, n_voids, &bed, &top) ||
         (fabs(bed - *bed_m) < 1e-9 && fabs(top - *top_m) < 1e-9))
+        return 0;
+    const double want_m = body->bbox_max[2] - body->bbox_min[2] - 0.5e-3 * p->print.layer_height_mm;
+    if (!(fabs(top - bed - want_m) < fabs(*top_m - *bed_m - want_m)))
         return 0;
     *bed_m = bed;
     *top_m = top;
