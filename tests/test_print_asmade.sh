@@ -105,5 +105,7 @@ assert pa["cut_mass_kg"] == pe["cut_mass_kg"] > 0, (pa["cut_mass_kg"], pe["cut_m
 against_sweep(bs, sp)
 assert bs["print"][0]["cut_mass_kg"] == 0, bs["print"][0]
 assert "printed_radius_mm=5.5" in bs["measure"].get("as_made_set", ""), bs["measure"]
+assert any("the hole not tapped" in n for n in bs["notes"]), bs["notes"]
+assert any("tapped after" in n and "(tippe sweep gives the same)" in n for n in a["notes"]), a["notes"]
 EOF
 finish

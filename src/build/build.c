@@ -806,6 +806,15 @@ static void compute_notes(compute_ctx *c)
                  2 * hs.printed_radius_mm, hs.radius_mm - hs.printed_radius_mm,
                  out->as_made_set[0] ? " --set " : "", out->as_made_set);
         tippe_build_note(out, t);
+    } else if (out->as_made_set[0]) {
+        /* --hole prints it otherwise than the design's tapped hole: not cut */
+        char t[512];
+        snprintf(t, sizeof t,
+                 "The zones are the part as this sheet prints it: the hole not tapped, its "
+                 "plastic modelled from the design's radius (tippe sweep --set %s gives the "
+                 "same; without --hole the hole is tapped from its drill).",
+                 out->as_made_set);
+        tippe_build_note(out, t);
     }
     if (out->hole_insert)
         insert_reach_warning(c);
