@@ -20,21 +20,22 @@ shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 
 
-# PrusaSlicer's G-code of the printed M12 at 40 % infill (the design's body)
+# PrusaSlicer's G-code of the printed M12 at 25 % infill (the design's body): not 3-in-1 (its
+# G-code placed where the part as made stands: docs/printing.md), so the sheet tries changes
 design = json.load(open(os.path.join(REPO, "designs", "m12-setscrew-printed.json")))
-design["parts"][0]["print"] = {"infill": 0.4}
-src = os.path.join(work, "m12-40.json")
+design["parts"][0]["print"] = {"infill": 0.25}
+src = os.path.join(work, "m12-25.json")
 json.dump(dict(design, materials=os.path.join(REPO, "designs", "materials.json")),
           open(src, "w"), indent=1)
 subprocess.run([tippe, "slice", src, "-o", os.path.join(work, "sliced")], cwd=REPO,
                capture_output=True, check=True)
-gcode = open(os.path.join(work, "sliced", "m12-40.gcode"), "rb").read()
+gcode = open(os.path.join(work, "sliced", "m12-25.gcode"), "rb").read()
 
 # a build of a design with a G-code takes tippe build's time (20 s on one core here: its
 # launch checks and each change it tries): the budget is raised so that a loaded machine
 # does not turn it into a 503
 with Server(tippe, "--budget", "600") as srv:
-    st, _, up = srv.post("/api/gcode?name=m12-40.gcode", gcode,
+    st, _, up = srv.post("/api/gcode?name=m12-25.gcode", gcode,
                          headers={"Content-Type": "text/x-gcode"})
     check(st == 200 and up["gcode"].startswith("upload:"),
           "the G-code uploaded (%d bytes): %s" % (len(gcode), up.get("gcode", up)))

@@ -171,8 +171,11 @@ check "m12-setscrew: proposals are catalogue screws or set-screw materials" \
 
 # --- weighing: the offset between the print's hole and the model's, by eval ----
 "$tippe" build designs/m12-setscrew-printed.json -o "$tmp/w" --hole slide --no-export --json >"$tmp/w.json"
-"$tippe" eval designs/m12-setscrew-printed.json --z2 5 --json >"$tmp/e0.json"
-"$tippe" eval designs/m12-setscrew-printed.json --z2 5 --set parts.hole.radius_mm=5.7 --json >"$tmp/e1.json"
+# the sheet of --hole slide models the hole as written (printed at its radius, not tapped)
+"$tippe" eval designs/m12-setscrew-printed.json --z2 5 --set parts.hole.printed_radius_mm=5.5 \
+    --json >"$tmp/e0.json"
+"$tippe" eval designs/m12-setscrew-printed.json --z2 5 --set parts.hole.radius_mm=5.7 \
+    --set parts.hole.printed_radius_mm=5.7 --json >"$tmp/e1.json"
 python3 - "$tmp/w.json" "$tmp/e0.json" "$tmp/e1.json" <<'EOF' && ok || bad "weigh offset differs from eval's printed masses"
 import json, sys
 w, e0, e1 = (json.load(open(f)) for f in sys.argv[1:])

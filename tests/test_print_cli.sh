@@ -43,8 +43,10 @@ done
 
 # The text says what is printed and how.
 "$tippe" eval "$M12" --z2 5 >"$tmp/e.txt"
+# 245 layers: the hole printed at the M12's 10.25 mm tap drill (the part as made) opens at
+# z = +/-sqrt(25^2 - 5.125^2) = +/-24.469 mm, 48.94 mm high (244.7 layers of 0.2 mm)
 check "eval names the printed part and its settings" grep -qF \
-    "printed  body: axis vertical, PrusaSlicer 2.5's rules in 244 layers: 2 perimeters of 0.45 mm lines, 4 top/bottom layers of 0.20 mm (at least 0.70 / 0.50 mm), gyroid, infill 15 %" \
+    "printed  body: axis vertical, PrusaSlicer 2.5's rules in 245 layers: 2 perimeters of 0.45 mm lines, 4 top/bottom layers of 0.20 mm (at least 0.70 / 0.50 mm), gyroid, infill 15 %" \
     "$tmp/e.txt"
 "$tippe" sweep "$M12" >"$tmp/s.txt"
 check "sweep names the printed part" grep -qF "printed  body: axis vertical" "$tmp/s.txt"

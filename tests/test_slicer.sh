@@ -114,6 +114,31 @@ done
 # part: the body's mass equals the same 3MF's sliced with supports off within 0.3 % (the lines
 # over the support's interface, 0.2 mm below them, are laid as over air: the body's lines are
 # the slicer's either way; measured 0.000 g of 17.93 g), and tippe eval says what they weighed
+# A G-code whose hole is printed otherwise than the model's (slice.sh's export at --clearance-mm
+# 0: the hole at 11 mm) read into the part as made (the hole at the 10.25 mm tap drill, whose
+# rim lies sqrt(25^2 - 5.125^2) - sqrt(25^2 - 5.5^2) = 0.0815 mm nearer the poles) stands where
+# its own hole opens: the same top, to the G-code's measured hole (its polygon's sag, a few
+# hundredths of a mm in radius, ~0.01 mm at the rim), as the design given the G-code's hole
+out="$tmp/m12-0.15"
+if [ -f "$out/m12-setscrew-printed.gcode" ]; then
+    for v in made written; do
+        set=()
+        [ $v = written ] && set=(--set parts.hole.printed_radius_mm=5.5)
+        "$tippe" eval designs/m12-setscrew-printed.json --z2 5 --json "${set[@]}" \
+            --set "parts.body.print.gcode=$out/m12-setscrew-printed.gcode" >"$tmp/bed-$v.json"
+    done
+    "$py" - "$tmp/bed-made.json" "$tmp/bed-written.json" <<'EOF' && ok || bad "a G-code with another hole placed by its own hole"
+import json, re, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+assert a["mass_kg"] == b["mass_kg"], (a["mass_kg"], b["mass_kg"])
+# placed by the model's bed it stood 0.08 mm off (eps 0.050 mm off); by its hole within 0.01 mm
+assert abs(a["eps_m"] - b["eps_m"]) < 1e-5, (a["eps_m"], b["eps_m"])
+note = [q for q in a["printed_parts"] if q["model"] == "gcode"][0]["gcode_note"]
+shift = float(re.search(r"its bed is where its own holes open, ([0-9.]+) mm above", note).group(1))
+assert abs(shift - 0.0815) < 0.01, note
+assert not [q for q in b["printed_parts"] if q["model"] == "gcode"][0]["gcode_note"]
+EOF
+fi
 out="$tmp/m12-0.15"
 if [ -f "$out/m12-setscrew-printed.gcode" ]; then
     nosup="$tmp/nosup"

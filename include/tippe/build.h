@@ -23,12 +23,9 @@
 #include "tippe/launch.h"
 #include "tippe/base.h"
 
-/* ISO 261 coarse-pitch metric threads (ISO 724 basic profile). */
-typedef struct {
-    const char *name;   /* "M10" */
-    double d_mm;        /* nominal (major) diameter */
-    double pitch_mm;    /* coarse pitch, ISO 261 */
-} tippe_build_thread;
+/* ISO 261 coarse-pitch metric threads (ISO 724 basic profile): the design
+ * module's table (tippe/design.h), which the part as made reads too. */
+typedef tippe_design_thread tippe_build_thread;
 
 /* The ISO 261 coarse thread of nominal diameter d_mm (within 1e-6 mm), or NULL. */
 const tippe_build_thread *tippe_build_thread_by_diameter(double d_mm);
@@ -276,6 +273,9 @@ typedef struct {
         tippe_print_settings settings;
         double infill;                   /* used by the model (calibrated or the slicer's) */
         int calibrated;
+        /* the model's part as made (its zones'): its mass, and what the tap cut
+           from its hole after printing (0: none); 0 both for a part modelled solid */
+        double printed_mass_kg, cut_mass_kg;
     } print[4];
     int needs_split;                     /* the printed body closes around hardware */
     int rod_sockets;                     /* the rod is held by sockets at both poles

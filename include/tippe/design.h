@@ -180,6 +180,22 @@ enum {
 };
 /* Part i's fit (NONE for i out of range). */
 int tippe_design_part_fit(const tippe_design *d, int i);
+
+/* ISO 261 coarse-pitch metric threads (ISO 724 basic profile): the table the
+ * part as made (a tapped hole's tap drill) and the build sheet (tippe/build.h's
+ * tippe_build_thread, the same type) read. */
+typedef struct {
+    const char *name;   /* "M10" */
+    double d_mm;        /* nominal (major) diameter */
+    double pitch_mm;    /* coarse pitch, ISO 261 */
+} tippe_design_thread;
+/* The ISO 261 coarse thread of nominal diameter d_mm (within 1e-6 mm), or NULL. */
+const tippe_design_thread *tippe_design_thread_by_diameter(double d_mm);
+/* The one whose pitch diameter d2 = d - 0.649519 P (ISO 724) is nearest d2_mm. */
+const tippe_design_thread *tippe_design_thread_by_pitch_diameter(double d2_mm);
+/* Tap drill for a full-form internal thread: d - P (ISO 2306's rule for
+ * metric threads, about 77 % thread engagement). */
+double tippe_design_tap_drill_mm(const tippe_design_thread *t);
 /* A part's "catalogue_item": the name of the hardware catalogue's item it is
  * (tippe/build.h), or "" when it names none. */
 const char *tippe_design_part_catalogue_item(const tippe_design *d, int i);
@@ -322,7 +338,11 @@ typedef struct {
     double clip_inner_mm; /* clip "shell": the part is cut to the wall between this
                              radius and clip_radius_mm; else 0 */
     double printed_radius_mm; /* a hole printed at another radius, then cut to radius_mm
-                                 ("printed_radius_mm"); 0: printed at radius_mm */
+                                 ("printed_radius_mm", or the tap drill's: below); 0:
+                                 printed at radius_mm */
+    int printed_radius_from_fit; /* printed_radius_mm is not the file's but the part as
+                                    made: the weight's hole of a printed part, "tap" or no
+                                    fit, printed at its thread's tap drill (design_fit.c) */
 } tippe_design_solid;
 
 /* Fills *out for part i; TIPPE_EINPUT if i is out of range. */

@@ -296,6 +296,12 @@ int tippe_print_core_moments(const tippe_solid *part, const tippe_solid *voids, 
 int tippe_print_slice_moments(const tippe_solid *part, const tippe_solid *voids, int n_voids,
                               const tippe_print_settings *s, int flip, tippe_print_sliced *out,
                               tippe_error *err);
+/* Where part minus voids[0..n_voids), printed whole with its axis vertical,
+ * meets the bed and where its last layer's top is (design frame, m; as
+ * tippe_print_slice_moments's bed_z_m and top_z_m): to place a G-code whose
+ * holes are printed otherwise than the model's. 0 when nothing is printed. */
+int tippe_print_edges(const tippe_solid *part, const tippe_solid *voids, int n_voids,
+                      double *bed_z_m, double *top_z_m);
 /* One layer of tippe_print_slice_layers: where it is and what it deposits. */
 typedef struct {
     double z_mid_m, thickness_m; /* design frame */

@@ -27,6 +27,12 @@
 #define TIPPE_SERVE_MAX_GCODE_BYTES (64 << 20)
 #define TIPPE_SERVE_MAX_DEPTH 32              /* JSON nesting of a request */
 #define TIPPE_SERVE_DEFAULT_BUDGET_S 30.0     /* wall clock per request */
+/* The advice's and the exclusive lane's requests (the build sheet and its advice,
+ * builds, films, uploads, sections) run one at a time at nice 10 and cost a whole
+ * tippe build: 21 and 29 s of wall clock for a design with a G-code on a machine
+ * at load 3 to 4 (docs/serve.md), near the shared lane's 30 s. They get this many
+ * times --budget (--slow-budget), still a limit on each. */
+#define TIPPE_SERVE_SLOW_BUDGET_FACTOR 4.0
 #define TIPPE_SERVE_MAX_FILM_S 8.0            /* model time of a film */
 #define TIPPE_SERVE_MAX_FILM_PX 480           /* a film's width and height */
 #define TIPPE_SERVE_MAX_FILM_FPS 25
@@ -49,6 +55,8 @@ typedef struct {
     int threads;             /* workers; 0: one per core */
     int queue;               /* requests waiting for a worker; 0: 16 per worker */
     double budget_s;         /* wall clock per request; 0: the default */
+    double slow_budget_s;    /* the same on the advice's and exclusive lanes; 0:
+                                TIPPE_SERVE_SLOW_BUDGET_FACTOR x budget_s */
     const char *token;       /* the access token; NULL: random when not on loopback */
     FILE *log;               /* the URL to open, then one line per refused or failed
                                 request; NULL: nothing */

@@ -182,7 +182,7 @@ int tippe_build_design_fit(const tippe_design *d, double clearance_mm, int *part
     int rc = check_fits(d, hole, err);
     tippe_design_solid hs;
     if (!rc && hole >= 0 && !tippe_design_part_solid(d, hole, &hs) && hs.printed_radius_mm > 0 &&
-        tippe_design_part_fit(d, hole) != TIPPE_DESIGN_FIT_INSERT) {
+        !hs.printed_radius_from_fit && tippe_design_part_fit(d, hole) != TIPPE_DESIGN_FIT_INSERT) {
         /* printed where the design says (printed_radius_mm), then cut to its radius */
         *part = hole;
         *diameter_mm = 2 * hs.printed_radius_mm;
@@ -594,7 +594,8 @@ static int compute_hole_fit(compute_ctx *c, tippe_error *err)
         /* the design's own printed radius, unless --hole says otherwise */
         tippe_design_solid hs;
         if (o->hole_fit == TIPPE_BUILD_HOLE_DESIGN && !ins &&
-            !tippe_design_part_solid(d, out->hole_part, &hs) && hs.printed_radius_mm > 0) {
+            !tippe_design_part_solid(d, out->hole_part, &hs) && hs.printed_radius_mm > 0 &&
+            !hs.printed_radius_from_fit) {
             dia = 2 * hs.printed_radius_mm;
             snprintf(out->fit_note, sizeof out->fit_note, "the design's printed_radius_mm");
         }
@@ -785,17 +786,6 @@ static void compute_notes(compute_ctx *c)
         tippe_build_note(out, "Depth is measured from the rim of the hole to the screw's end; a "
                               "negative depth means the screw stands out of the ball. Turns are "
                               "counted from the screw's end flush with the rim.");
-    if (out->as_made_set[0]) {
-        char t[512];
-        snprintf(t, sizeof t,
-                 "The zones are the part as made: the hole printed %.2f mm across and tapped "
-                 "after, which cuts the inner %.3f mm of its walls (tippe sweep --set %s gives "
-                 "the same).",
-                 out->hole_diameter_mm,
-                 tippe_build_hole_model_radius(c->d, out->hole_part) - out->hole_diameter_mm / 2,
-                 out->as_made_set);
-        tippe_build_note(out, t);
-    }
     else if (out->measure == TIPPE_BUILD_MEASURE_ROD)
         tippe_build_note(out, "Depth is measured along the rod from its top end down to the "
                               "bead's top face, before the shell is closed. Turns are counted "
@@ -803,6 +793,29 @@ static void compute_notes(compute_ctx *c)
     else
         tippe_build_note(out, "No hole or rod on the axis holds the weight: set it by Z2 "
                               "directly (its midpoint's height above the sphere's centre).");
+    tippe_design_solid hs;
+    if (out->hole_tapped && out->hole_part >= 0 &&
+        !tippe_design_part_solid(c->d, out->hole_part, &hs) && hs.printed_radius_mm > 0 &&
+        hs.printed_radius_mm < hs.radius_mm) {
+        /* the model is the part as made (design_fit.c, or tippe_build_as_made) */
+        char t[512];
+        snprintf(t, sizeof t,
+                 "The zones are the part as made: the hole printed %.2f mm across and tapped "
+                 "after, which cuts the inner %.3f mm of its walls (tippe sweep%s%s gives the "
+                 "same).",
+                 2 * hs.printed_radius_mm, hs.radius_mm - hs.printed_radius_mm,
+                 out->as_made_set[0] ? " --set " : "", out->as_made_set);
+        tippe_build_note(out, t);
+    } else if (out->as_made_set[0]) {
+        /* --hole prints it otherwise than the design's tapped hole: not cut */
+        char t[512];
+        snprintf(t, sizeof t,
+                 "The zones are the part as this sheet prints it: the hole not tapped, its "
+                 "plastic modelled from the design's radius (tippe sweep --set %s gives the "
+                 "same; without --hole the hole is tapped from its drill).",
+                 out->as_made_set);
+        tippe_build_note(out, t);
+    }
     if (out->hole_insert)
         insert_reach_warning(c);
     if (out->hole_insert) {
@@ -854,14 +867,26 @@ int tippe_build_as_made(const tippe_design *d, const tippe_build_sheet *s, tippe
     tippe_design_part_info hp;
     tippe_design_print_info pp;
     *made = NULL;
-    if (!s->hole_tapped || s->hole_part < 0 || tippe_design_part_solid(d, s->hole_part, &hs) ||
-        hs.printed_radius_mm > 0 || !(s->hole_diameter_mm / 2 < hs.radius_mm - 1e-9) ||
-        hs.parent < 0 || tippe_design_part_print(d, hs.parent, &pp) || !pp.printed ||
+    if (s->hole_part < 0 || tippe_design_part_solid(d, s->hole_part, &hs) ||
+        (hs.printed_radius_mm > 0 && !hs.printed_radius_from_fit) || hs.parent < 0 ||
+        tippe_design_part_print(d, hs.parent, &pp) || !pp.printed ||
         tippe_design_part(d, s->hole_part, &hp))
+        return TIPPE_OK;
+    /* the design already models a hole tapped from the sheet's drill
+     * (design_fit.c: the same rule and table); else --hole or a catalogue
+     * screw's own pitch print it otherwise: tapped from the sheet's hole, or
+     * (insert, slide) left at the design's radius, as the sheet's notes say */
+    double want = s->hole_tapped && s->hole_diameter_mm / 2 < hs.radius_mm - 1e-9
+                      ? s->hole_diameter_mm / 2
+                      : 0;
+    double have = hs.printed_radius_mm > 0 && hs.printed_radius_mm < hs.radius_mm
+                      ? hs.printed_radius_mm
+                      : 0;
+    if (fabs(want - have) < 1e-9)
         return TIPPE_OK;
     char set[300];
     snprintf(set, sizeof set, "parts.%s.printed_radius_mm=%.10g", hp.name,
-             s->hole_diameter_mm / 2);
+             want > 0 ? want : hs.radius_mm);
     const char *extra[1] = {set};
     return tippe_design_reload(d, extra, 1, made, err);
 }

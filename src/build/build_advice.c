@@ -447,14 +447,17 @@ void tippe_build_weigh_offset(const tippe_design *d, tippe_build_sheet *s)
         return;
     /* the print's hole, at the same infill (a calibrated design's, the one solved,
      * with the weighing taken out so that it is not solved again) */
-    char set[3][300];
+    char set[4][300];
     snprintf(set[0], sizeof set[0], "parts.%s.radius_mm=%.10g", hp.name, s->hole_diameter_mm / 2);
-    snprintf(set[1], sizeof set[1], "parts.%s.print.infill=%.17g", pp.name, before.infill);
-    snprintf(set[2], sizeof set[2], "parts.%s.print.measured_mass_g=null", pp.name);
-    const char *extra[3] = {set[0], set[1], set[2]};
+    /* printed there and not cut: the bare print (no tap drill of its own, design_fit.c) */
+    snprintf(set[1], sizeof set[1], "parts.%s.printed_radius_mm=%.10g", hp.name,
+             s->hole_diameter_mm / 2);
+    snprintf(set[2], sizeof set[2], "parts.%s.print.infill=%.17g", pp.name, before.infill);
+    snprintf(set[3], sizeof set[3], "parts.%s.print.measured_mass_g=null", pp.name);
+    const char *extra[4] = {set[0], set[1], set[2], set[3]};
     tippe_design *v = NULL;
     tippe_error e = {0};
-    if (tippe_design_derive(d, extra, before.calibrated ? 3 : 2, &v, &e) == TIPPE_OK &&
+    if (tippe_design_derive(d, extra, before.calibrated ? 4 : 3, &v, &e) == TIPPE_OK &&
         tippe_design_part_print(v, hs.parent, &after) == TIPPE_OK && after.printed)
         s->weigh_offset_g = (before.printed_mass_kg - after.printed_mass_kg) * 1e3;
     tippe_design_free(v);

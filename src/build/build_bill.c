@@ -205,6 +205,8 @@ void tippe_build_print_settings(const tippe_design *d, const tippe_profile_set *
         s->print[k].settings = pr.printed ? pr.settings : tippe_print_defaults();
         s->print[k].infill = pr.printed ? pr.infill : 1.0;
         s->print[k].calibrated = pr.calibrated;
+        s->print[k].printed_mass_kg = pr.printed ? pr.printed_mass_kg : 0;
+        s->print[k].cut_mass_kg = pr.printed ? pr.cut_mass_kg : 0;
     }
 }
 

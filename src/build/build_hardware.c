@@ -1,45 +1,25 @@
-/* The hardware a maker buys: ISO metric threads (ISO 261, ISO 724), their tap
- * drills, and heat-set inserts. Calls nothing else of the build module. */
+/* The hardware a maker buys: ISO metric threads (ISO 261, ISO 724: the design
+ * module's table), their tap drills, and heat-set inserts. Calls nothing else of
+ * the build module. */
 #include "build/internal.h"
 
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
 
-/* ISO 261, coarse series (first choice sizes M1.6 .. M24). */
-static const tippe_build_thread iso261[] = {
-    {"M1.6", 1.6, 0.35}, {"M2", 2, 0.4},     {"M2.5", 2.5, 0.45}, {"M3", 3, 0.5},
-    {"M4", 4, 0.7},      {"M5", 5, 0.8},     {"M6", 6, 1.0},      {"M8", 8, 1.25},
-    {"M10", 10, 1.5},    {"M12", 12, 1.75},  {"M14", 14, 2.0},    {"M16", 16, 2.0},
-    {"M20", 20, 2.5},    {"M24", 24, 3.0},
-};
-enum { N_ISO = sizeof iso261 / sizeof iso261[0] };
-
-/* ISO 724: the pitch diameter of the basic profile, d2 = d - (3 sqrt(3) / 8) P. */
-static double pitch_diameter_mm(const tippe_build_thread *t)
-{
-    return t->d_mm - 0.649519052838329 * t->pitch_mm;
-}
-
+/* ISO 261's threads are the design module's table (design_fit.c: the part as
+ * made prints a tapped hole at their tap drill): one table for both. */
 const tippe_build_thread *tippe_build_thread_by_diameter(double d_mm)
 {
-    for (int k = 0; k < N_ISO; k++)
-        if (fabs(iso261[k].d_mm - d_mm) < 1e-6)
-            return &iso261[k];
-    return NULL;
+    return tippe_design_thread_by_diameter(d_mm);
 }
 
 const tippe_build_thread *tippe_build_thread_by_pitch_diameter(double d2_mm)
 {
-    int best = 0;
-    for (int k = 1; k < N_ISO; k++)
-        if (fabs(pitch_diameter_mm(&iso261[k]) - d2_mm) <
-            fabs(pitch_diameter_mm(&iso261[best]) - d2_mm))
-            best = k;
-    return &iso261[best];
+    return tippe_design_thread_by_pitch_diameter(d2_mm);
 }
 
-double tippe_build_tap_drill_mm(const tippe_build_thread *t) { return t->d_mm - t->pitch_mm; }
+double tippe_build_tap_drill_mm(const tippe_build_thread *t) { return tippe_design_tap_drill_mm(t); }
 
 /* TIPPE_BUILD_INSERT_SOURCE's chart, non-flanged inserts, pilot hole -0/+0.1 mm;
  * lengths TIPPE_BUILD_INSERT_LENGTH_SOURCE's. */

@@ -300,6 +300,13 @@ cJSON *tippe_build_json(const tippe_build_sheet *s)
         cJSON_AddNumberToObject(j, "layer_height_mm", p->layer_height_mm);
         cJSON_AddNumberToObject(j, "infill", s->print[k].infill);
         cJSON_AddBoolToObject(j, "calibrated", s->print[k].calibrated);
+        if (s->print[k].has_block) { /* the zones' part: eval's printed_mass_kg */
+            cJSON_AddNumberToObject(j, "printed_mass_kg", s->print[k].printed_mass_kg);
+            cJSON_AddNumberToObject(j, "cut_mass_kg", s->print[k].cut_mass_kg);
+        } else {
+            cJSON_AddNullToObject(j, "printed_mass_kg");
+            cJSON_AddNullToObject(j, "cut_mass_kg");
+        }
         cJSON_AddStringToObject(j, "orientation",
                                 s->needs_split ? "axis vertical, halves on their cut faces"
                                                : "axis vertical");

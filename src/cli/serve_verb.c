@@ -14,7 +14,7 @@ int tippe_cli_serve(int argc, char **argv)
 {
     tippe_serve_options o = {.listen = TIPPE_SERVE_DEFAULT_LISTEN, .designs_dir = NULL};
     long threads = 0, queue = 0;
-    double budget = TIPPE_SERVE_DEFAULT_BUDGET_S;
+    double budget = TIPPE_SERVE_DEFAULT_BUDGET_S, slow_budget = 0;
     tippe_cli_opt opts[] = {
         {.name = "listen", .kind = TIPPE_CLI_STRING, .value = &o.listen, .arg = "HOST:PORT",
          .def = TIPPE_SERVE_DEFAULT_LISTEN,
@@ -32,6 +32,11 @@ int tippe_cli_serve(int argc, char **argv)
         {.name = "budget", .kind = TIPPE_CLI_DOUBLE, .value = &budget, .arg = "S", .unit = "s",
          .min = 0.1, .max = 3600, .def = TIPPE_CLI_STR(TIPPE_SERVE_DEFAULT_BUDGET_S),
          .help = "wall-clock budget of one request, waiting included (past it: 503)"},
+        {.name = "slow-budget", .kind = TIPPE_CLI_DOUBLE, .value = &slow_budget, .arg = "S",
+         .unit = "s", .min = 0.1, .max = 14400,
+         .def = TIPPE_CLI_STR(TIPPE_SERVE_SLOW_BUDGET_FACTOR) " x --budget",
+         .help = "the same for the advice, builds, films and uploads (one at a time,\n"
+                 "at a lower priority, each a whole tippe build's work)"},
         {.name = "token", .kind = TIPPE_CLI_STRING, .value = &o.token, .arg = "TEXT",
          .def = "random beyond loopback, none on it",
          .help = "the access token (16 to 64 characters) instead of a random one"},
@@ -40,7 +45,7 @@ int tippe_cli_serve(int argc, char **argv)
     tippe_cli_spec spec = {
         .verb = VERB,
         .synopsis = "[--listen HOST:PORT] [--designs DIR] [--workers N] [--queue N]\n"
-                    "                   [--budget S] [--token TEXT]",
+                    "                   [--budget S] [--slow-budget S] [--token TEXT]",
         .about = "Serves the calculator as a local web page: open a shipped design or your\n"
                  "own, change its numbers and see the zones, the 3-in-1 verdict and the zone\n"
                  "plot follow; check a launch, film it, download the build sheet and the\n"
@@ -62,6 +67,7 @@ int tippe_cli_serve(int argc, char **argv)
     o.threads = (int)threads;
     o.queue = (int)queue;
     o.budget_s = budget;
+    o.slow_budget_s = slow_budget;
     static char shipped[4096];
     if (!o.designs_dir) {
         if (!tippe_file_shipped_dir(shipped, sizeof shipped)) {

@@ -464,7 +464,7 @@ int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tipp
         (rc = resolve_materials(c, path, mat_rel, has_mat_file, d)) ||
         (rc = resolve_parts(c, d)) || (check && (rc = check_sizes(c, d))) ||
         (check && (rc = tippe_design_check_layout(c, d))) ||
-        (rc = sum_moments(c, d)))
+        (tippe_design_derive_printed_radii(d), (rc = sum_moments(c, d))))
         return rc;
     if (!check) /* a derived design (a field moved by a tolerance) needs no tolerances */
         return TIPPE_OK;

@@ -685,7 +685,8 @@ int tippe_design_part_solid(const tippe_design *d, int i, tippe_design_solid *ou
                                 .z_mm = p->z_mm,
                                 .clip_radius_mm = p->clip_radius_mm,
                                 .clip_inner_mm = p->clip_inner_mm,
-                                .printed_radius_mm = p->printed_radius_mm};
+                                .printed_radius_mm = p->printed_radius_mm,
+                                .printed_radius_from_fit = p->printed_radius_from_fit};
     switch (p->shape) {
     case SHAPE_BALL:
         out->radius_mm = p->radius_mm;

@@ -517,6 +517,72 @@ static void hole_note(part *p, const tippe_design *d, const int *which, int n,
     }
 }
 
+/* The G-code's body, at density rho_g_cm3, cut for holes[0..n) with the design's
+ * bed at bed_z_mm: an upload's (mem, tippe serve: its body as read in memory,
+ * cut from the beads kept with it), else the file's through the cache. */
+static int gcode_body_cut(const tippe_design_gcode *mem, const char *file,
+                          const tippe_gcode_options *opt, double rho_g_cm3,
+                          const hole_cut *holes, int n, double bed_z_mm, tippe_gcode_body *out,
+                          tippe_error *err)
+{
+    if (!mem)
+        return gcode_read_cached(file, opt, holes, n, bed_z_mm, out, err);
+    *out = mem->body;
+    tippe_gcode_body_set_density(out, rho_g_cm3);
+    if (n)
+        apply_cuts(out, &mem->beads, holes, n, bed_z_mm);
+    return TIPPE_OK;
+}
+
+/* Where part i printed as the G-code's holes show would meet the bed and end
+ * (design frame, m): the part's voids as the model prints them, but the holes
+ * cut from the G-code (which[0..n)) whose measured radius differs from the
+ * model's printed one by more than GCODE_HOLE_TOL_MM, at the G-code's outline:
+ * the measured radius is the edge of the external perimeter's rectangle, whose
+ * centre line lies s/2 from the outline, so the edge sticks (w - s)/2 =
+ * t (1 - pi/4) / 2 into the hole (print_slicer.c, Flow's rounded rectangle).
+ * A hole measured from beads read at a wrong filament diameter (too wide or
+ * narrow, so their edge is off) would move them wrongly: the G-code's own height,
+ * a whole number of layers at or above the part's (about half a layer above on
+ * average), is the second witness, and the edges nearer to it are kept.
+ * 1 with *bed_m and *top_m set when they move; 0 when the model's stand. */
+static int gcode_edges(const tippe_design *d, int i, const int *which, int n,
+                       const tippe_gcode_body *body, double *bed_m, double *top_m)
+{
+    const part *p = &d->parts[i];
+    if (p->print.split || !n)
+        return 0;
+    const double edge_mm = 0.5 * p->print.layer_height_mm * (1.0 - M_PI / 4.0);
+    tippe_solid shape = print_solid(p), voids[MAX_PARTS];
+    int n_voids = 0, moved = 0;
+    for (int k = 0; k < d->n_parts; k++) {
+        if (d->parts[k].parent != i)
+            continue;
+        part h = d->parts[k];
+        if (h.printed_radius_mm > 0)
+            h.radius_mm = h.printed_radius_mm;
+        for (int j = 0; j < n; j++) {
+            double rg = body->cut_hole_radius_mm[j] + edge_mm;
+            if (which[j] == k && isfinite(rg) && rg > 0 &&
+                fabs(rg - h.radius_mm) > GCODE_HOLE_TOL_MM) {
+                h.radius_mm = rg;
+                moved = 1;
+            }
+        }
+        voids[n_voids++] = print_solid(&h);
+    }
+    double bed, top;
+    if (!moved || !tippe_print_edges(&shape, voids, n_voids, &bed, &top) ||
+        (fabs(bed - *bed_m) < 1e-9 && fabs(top - *top_m) < 1e-9))
+        return 0;
+    const double want_m = body->bbox_max[2] - body->bbox_min[2] - 0.5e-3 * p->print.layer_height_mm;
+    if (!(fabs(top - bed - want_m) < fabs(*top_m - *bed_m - want_m)))
+        return 0;
+    *bed_m = bed;
+    *top_m = top;
+    return 1;
+}
+
 /* The printed part from the slicer's G-code of it (print.gcode, relative to the
  * design file): its extrusion moves summed into mass moments (gcode.c), at the
  * design's density (the volumes are the slicer's, the material the design's).
@@ -564,28 +630,29 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     int which[TIPPE_GCODE_MAX_CUTS];
     int n_holes = part_holes(d, i, holes, which);
     const tippe_print_sliced *sl = &p->sliced;
-    int rc = TIPPE_OK;
+    double bed_m = sl->bed_z_m, top_m = sl->top_z_m;
     if (mem) {
-        /* an upload (tippe serve): its body as read in memory, at this part's density,
-         * cut for the holes from the beads kept with it, as a file's (gcode_read_cached) */
-        body = mem->body;
-        tippe_gcode_body_set_density(&body, p->density_g_cm3);
         double need = 0;
         for (int k = 0; k < n_holes; k++)
             need = fmax(need, holes[k].radius_mm + 3);
-        if (n_holes && mem->beads.radius_mm >= need)
-            apply_cuts(&body, &mem->beads, holes, n_holes, 1e3 * sl->bed_z_m);
-        else
+        if (!(n_holes && mem->beads.radius_mm >= need))
             n_holes = 0; /* beyond the beads kept: not cut (hole_note says none) */
-    } else {
-        rc = gcode_read_cached(file, &opt, holes, n_holes, 1e3 * sl->bed_z_m, &body, &gerr);
     }
+    int rc = gcode_body_cut(mem, file, &opt, p->density_g_cm3, holes, n_holes, 1e3 * bed_m,
+                            &body, &gerr);
+    /* a G-code whose holes are printed otherwise than the model's (tippe slice's
+     * 3MF of an older design, tippe export's sliding fit) meets the bed where its
+     * own holes open: placed by them, and cut again from there */
+    if (!rc && gcode_edges(d, i, which, n_holes, &body, &bed_m, &top_m))
+        rc = gcode_body_cut(mem, file, &opt, p->density_g_cm3, holes, n_holes, 1e3 * bed_m,
+                            &body, &gerr);
     if (rc)
         return rc == TIPPE_EINPUT ? tippe_json_fail(c, pth, "%s", gerr.msg)
                                   : tippe_error_set(c->err, rc, "%s: %s: %s", c->file, pth,
                                                     gerr.msg);
+    p->gcode_bed_shift_mm = 1e3 * (bed_m - sl->bed_z_m);
     tippe_gcode_expect ex = {0};
-    ex.height_mm = (sl->top_z_m - sl->bed_z_m) * 1e3;
+    ex.height_mm = (top_m - bed_m) * 1e3;
     ex.diameter_mm = 2 * p->radius_mm;
     tippe_gcode_part gp;
     if ((rc = tippe_gcode_match(&body, &ex, &gp, &gerr)))
@@ -599,6 +666,12 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
                                    : " mm filament; a wrong diameter scales every bead: "
                                      "give print.filament_diameter_mm");
     hole_note(p, d, which, n_holes, &body);
+    if (p->gcode_bed_shift_mm != 0) {
+        size_t used = strlen(p->gcode_note);
+        snprintf(p->gcode_note + used, sizeof p->gcode_note - used,
+                 "%sits bed is where its own holes open, %.3f mm %s the model's", used ? "; " : "",
+                 fabs(p->gcode_bed_shift_mm), p->gcode_bed_shift_mm > 0 ? "above" : "below");
+    }
     double scale = 1.0;
     if (p->calibrated) {
         scale = p->measured_mass_g * 1e-3 / gp.m;
@@ -613,7 +686,7 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
     /* to the design frame: z from the bed, the bed where the layer model has it;
      * unit density, as the other models give */
     const double rho = p->density_g_cm3 * 1e3;
-    double m = gp.m * scale, zc = sl->bed_z_m + gp.z_cm;
+    double m = gp.m * scale, zc = bed_m + gp.z_cm;
     double m_rr = gp.C * scale / rho, vol = m / rho;
     tippe_moments dep = {vol, vol * zc, (gp.A * scale + m * zc * zc) / rho - 0.5 * m_rr, m_rr};
     p->gcode_flow = scale;

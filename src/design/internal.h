@@ -100,6 +100,8 @@ typedef struct {
     int fit;                /* a hole's "fit": TIPPE_DESIGN_FIT_* (NONE when not given) */
     double printed_radius_mm; /* a hole's "printed_radius_mm": printed there, cut to
                                  radius_mm after (0: printed at radius_mm) */
+    int printed_radius_from_fit; /* printed_radius_mm is the tap drill's, not the file's
+                                    (tippe_design_derive_printed_radii) */
     char catalogue_item[64];/* "catalogue_item": the hardware catalogue's item it is, or "" */
     char gcode[1024];       /* print.gcode as given (relative to the design file), or "" */
     double filament_diameter_mm; /* print.filament_diameter_mm: the G-code's filament, 0 the
@@ -113,6 +115,8 @@ typedef struct {
     tippe_gcode_part gcode_part;
     double gcode_flow;
     char gcode_note[512];   /* the G-code's hole against the design's (gcode_cut_holes), or "" */
+    double gcode_bed_shift_mm; /* the G-code placed by its own holes: its bed against the
+                                  model's (0: where the model's part stands) */
     tippe_moments model_moments;
     double model_mass_kg;
     tippe_moments deposit, model_deposit; /* unit density: the printed part alone */
@@ -198,6 +202,10 @@ int tippe_design_build(tippe_json_reader *c, cJSON *root, const char *path, tipp
 
 /* design.c: a part's unit-density moments (closed forms; a void's positive). */
 tippe_moments tippe_design_part_moments(const part *p);
+/* The part as made (design_fit.c): the weight's hole of a printed part, tapped
+ * (no fit, or "tap") and without a printed_radius_mm of the file's, printed at
+ * its thread's tap drill. After the parts are resolved, before their moments. */
+void tippe_design_derive_printed_radii(tippe_design *d);
 /* design_printed.c: a printed part's unit-density moments as printed (its voids
  * added back: the caller subtracts them as usual); sets its infill and masses. */
 int tippe_design_printed_moments(const tippe_json_reader *c, tippe_design *d, int i,

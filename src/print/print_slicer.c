@@ -592,6 +592,16 @@ static int slice_piece(const slicer_part *Pp, const tippe_print_settings *s,
     return TIPPE_OK;
 }
 
+/* The edges slice_piece finds for the whole part, without its layers. */
+int tippe_print_edges(const tippe_solid *part, const tippe_solid *voids, int n_voids,
+                      double *bed_z_m, double *top_z_m)
+{
+    const slicer_part P = {part, voids, n_voids, 0, 0, 0};
+    double zlo, zhi;
+    return tippe_print_extent(part, &zlo, &zhi) && printed_edge(&P, zlo, zhi, +1, bed_z_m) &&
+           printed_edge(&P, zlo, zhi, -1, top_z_m);
+}
+
 int tippe_print_slice_layers(const tippe_solid *part, const tippe_solid *voids, int n_voids,
                              const tippe_print_settings *s, int flip, tippe_print_sliced *out,
                              tippe_print_layer *rows, int cap, tippe_error *err)

@@ -155,10 +155,26 @@ void tippe_profile_print_printed_parts(FILE *out, const tippe_design *d)
         else
             fprintf(out, "infill %.0f %%", pi.infill * 100);
         /* the cut after printing (a hole printed at its tap drill, then tapped) */
-        char cut[96] = "";
-        if (pi.cut_mass_kg > 0)
-            snprintf(cut, sizeof cut, ", less %.3f g cut from its holes after printing",
-                     pi.cut_mass_kg * 1e3);
+        char cut[400] = "";
+        if (pi.cut_mass_kg > 0) {
+            int n = snprintf(cut, sizeof cut, ", less %.3f g cut from its holes after printing",
+                             pi.cut_mass_kg * 1e3);
+            /* which hole, and whether the file or the tap drill says so (design_fit.c) */
+            for (int k = 0; k < tippe_design_n_parts(d) && n > 0 && (size_t)n < sizeof cut;
+                 k++) {
+                tippe_design_solid hs;
+                tippe_design_part_info hp;
+                if (tippe_design_part_solid(d, k, &hs) || hs.parent != i ||
+                    !(hs.printed_radius_mm > 0 && hs.printed_radius_mm < hs.radius_mm) ||
+                    tippe_design_part(d, k, &hp))
+                    continue;
+                n += snprintf(cut + n, sizeof cut - (size_t)n,
+                              " ('%s' printed %.2f mm across%s, cut to %.2f mm)", hp.name,
+                              2 * hs.printed_radius_mm,
+                              hs.printed_radius_from_fit ? ", its thread's tap drill" : "",
+                              2 * hs.radius_mm);
+            }
+        }
         if (!strcmp(pi.model, "skins"))
             fprintf(out,
                     "\n         %.3f g as printed (%.3f g solid, %.3f g walls and skins alone); "

@@ -194,9 +194,11 @@ void tippe_serve_advice_forget(void);
 /* ---- serve_gcode.c: G-code uploads, read in memory and kept by id ---- */
 void tippe_serve_api_gcode(serve_server *s, const cJSON *req, serve_response *out);
 /* The body kept for an upload's id (the hex after "upload:"), and its file's name: 1,
- * or 0 when it is not kept (any more). */
-int tippe_serve_gcode_find(const char *id, tippe_gcode_body *out, tippe_gcode_beads *beads,
-                           char *name, size_t size);
+ * or 0 when it is not kept (any more); read with E in mm of diameter_mm filament
+ * when > 0 (a design's print.filament_diameter_mm, as the command reads a file),
+ * else the file's own. A status < 0 (err set) when that reading fails. */
+int tippe_serve_gcode_find(const char *id, double diameter_mm, tippe_gcode_body *out,
+                           tippe_gcode_beads *beads, char *name, size_t size, tippe_error *err);
 /* A copy (malloc'd, NUL-terminated) of the text of the upload id, for a build's zip: 1,
  * 0 when it is not kept (any more), -1 out of memory. */
 int tippe_serve_gcode_text(const char *id, char **text, size_t *len);

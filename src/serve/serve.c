@@ -7,6 +7,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -153,6 +154,8 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
         s->o.listen = TIPPE_SERVE_DEFAULT_LISTEN;
     if (!(s->o.budget_s > 0))
         s->o.budget_s = TIPPE_SERVE_DEFAULT_BUDGET_S;
+    if (!(s->o.slow_budget_s > 0))
+        s->o.slow_budget_s = TIPPE_SERVE_SLOW_BUDGET_FACTOR * s->o.budget_s;
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     s->n_workers = s->o.threads > 0 ? s->o.threads : cores > 0 ? (int)cores : 1;
     s->lanes[SERVE_LANE_SHARED].max = s->o.queue > 0 ? s->o.queue : 16 * s->n_workers;
@@ -202,12 +205,13 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
         fprintf(s->o.log,
                 "tippe serve: the calculator is at\n\n    http://%s:%d/%s%s\n\n"
                 "%s; %d workers (and one for the advice, one for builds and films), %d waiting at most, %g s per "
-                "request; Ctrl-C stops it.\n",
+                "request (%g s for the advice, builds and films); Ctrl-C stops it.\n",
                 s->host, s->port, s->token[0] ? "?token=" : "", s->token,
                 s->token[0] ? "Listening beyond loopback: the URL carries the access token "
                               "every request needs (keep it private)"
                             : "Loopback only: nothing outside this machine can reach it",
-                s->n_workers, s->lanes[SERVE_LANE_SHARED].max, s->o.budget_s);
+                s->n_workers, s->lanes[SERVE_LANE_SHARED].max, s->o.budget_s,
+                s->o.slow_budget_s);
         fflush(s->o.log);
     }
     int sig = 0;
@@ -224,7 +228,7 @@ int tippe_serve_run(const tippe_serve_options *opt, tippe_error *err)
     tippe_serve_work_stop(s);
     if (s->daemon) {
         const double t0 = tippe_serve_now_s();
-        while (tippe_serve_work_busy(s) && tippe_serve_now_s() - t0 <= s->o.budget_s + 1) {
+        while (tippe_serve_work_busy(s) && tippe_serve_now_s() - t0 <= fmax(s->o.budget_s, s->o.slow_budget_s) + 1) {
             struct timespec t = {0, 50 * 1000 * 1000};
             nanosleep(&t, NULL);
             tippe_serve_watchdog(s);

@@ -28,6 +28,11 @@ static struct {
     char name[128];
     tippe_gcode_body body;
     tippe_gcode_beads beads; /* near the axis, for the holes' cuts (UPLOAD_BEADS_MM) */
+    /* read again with a design's print.filament_diameter_mm (as tippe eval reads a
+     * file with it): the last diameter asked, its body and beads */
+    double alt_diameter_mm;
+    tippe_gcode_body alt_body;
+    tippe_gcode_beads alt_beads;
     char *text;              /* the file's text, for a build's zip */
     size_t len;
     unsigned long seq;       /* when it was uploaded (the oldest is forgotten first) */
@@ -49,33 +54,92 @@ static void gcode_id(const char *text, size_t len, char *id, size_t size)
     snprintf(id, size, "%016llx", (unsigned long long)h);
 }
 
-int tippe_serve_gcode_find(const char *id, tippe_gcode_body *out, tippe_gcode_beads *beads,
-                           char *name, size_t size)
+/* Copies body and beads (the slot may be reused while the request runs). */
+static void copy_out(const tippe_gcode_body *body, const tippe_gcode_beads *b,
+                     tippe_gcode_body *out, tippe_gcode_beads *beads)
+{
+    *out = *body;
+    const size_t nb = b->n * sizeof *b->bead;
+    if (nb && (beads->bead = malloc(nb))) {
+        memcpy(beads->bead, b->bead, nb);
+        beads->n = b->n;
+        beads->radius_mm = b->radius_mm;
+    }
+}
+
+/* The options an upload is read with: one density for every tool, 1 g/cm^3 (a
+ * part scales it to its material's), and the design's filament diameter when it
+ * gives one (0: the file's own), as the command reads a file (design_printed.c). */
+static tippe_gcode_options upload_options(double diameter_mm)
+{
+    tippe_gcode_options opt = tippe_gcode_defaults();
+    opt.density_g_cm3 = 1.0;
+    opt.override_density = 1;
+    if (diameter_mm > 0) {
+        opt.filament_diameter_mm = diameter_mm;
+        opt.override_diameter = 1;
+    }
+    return opt;
+}
+
+int tippe_serve_gcode_find(const char *id, double diameter_mm, tippe_gcode_body *out,
+                           tippe_gcode_beads *beads, char *name, size_t size, tippe_error *err)
 {
     int found = 0;
     *beads = (tippe_gcode_beads){0};
+    char *text = NULL;
+    size_t len = 0;
     pthread_mutex_lock(&kept_lock);
-    for (int i = 0; i < GCODE_KEPT && !found; i++)
+    for (int i = 0; i < GCODE_KEPT && !found; i++) {
+        if (!kept[i].used || strcmp(kept[i].id, id))
+            continue;
+        found = 1;
+        snprintf(name, size, "%s", kept[i].name);
+        if (!(diameter_mm > 0) || diameter_mm == kept[i].body.filament_diameter_mm)
+            copy_out(&kept[i].body, &kept[i].beads, out, beads);
+        else if (diameter_mm == kept[i].alt_diameter_mm)
+            copy_out(&kept[i].alt_body, &kept[i].alt_beads, out, beads);
+        else if (!(text = malloc(kept[i].len + 1)))
+            found = -1;
+        else {
+            memcpy(text, kept[i].text, kept[i].len + 1);
+            len = kept[i].len;
+        }
+    }
+    pthread_mutex_unlock(&kept_lock);
+    if (found < 0)
+        return -tippe_error_set(err, TIPPE_ECOMPUTE, "out of memory");
+    if (!text)
+        return found;
+    /* another diameter than the file's: read once more (outside the lock), kept */
+    tippe_gcode_options opt = upload_options(diameter_mm);
+    tippe_gcode_body body;
+    tippe_gcode_beads near;
+    int rc = tippe_gcode_parse_near(text, len, name, &opt, UPLOAD_BEADS_MM, &body, &near, err);
+    free(text);
+    if (rc)
+        return -rc;
+    copy_out(&body, &near, out, beads);
+    pthread_mutex_lock(&kept_lock);
+    for (int i = 0; i < GCODE_KEPT; i++)
         if (kept[i].used && !strcmp(kept[i].id, id)) {
-            *out = kept[i].body;
-            /* a copy: the slot may be reused while the request runs */
-            const size_t nb = kept[i].beads.n * sizeof *kept[i].beads.bead;
-            if (nb && (beads->bead = malloc(nb))) {
-                memcpy(beads->bead, kept[i].beads.bead, nb);
-                beads->n = kept[i].beads.n;
-                beads->radius_mm = kept[i].beads.radius_mm;
-            }
-            snprintf(name, size, "%s", kept[i].name);
-            found = 1;
+            tippe_gcode_beads_free(&kept[i].alt_beads);
+            kept[i].alt_diameter_mm = diameter_mm;
+            kept[i].alt_body = body;
+            kept[i].alt_beads = near;
+            near = (tippe_gcode_beads){0};
+            break;
         }
     pthread_mutex_unlock(&kept_lock);
-    return found;
+    tippe_gcode_beads_free(&near);
+    return 1;
 }
 
 /* Forgets slot i (under kept_lock). */
 static void kept_drop(int i)
 {
     tippe_gcode_beads_free(&kept[i].beads);
+    tippe_gcode_beads_free(&kept[i].alt_beads);
     free(kept[i].text);
     memset(&kept[i], 0, sizeof kept[i]);
 }
@@ -116,10 +180,9 @@ void tippe_serve_api_gcode(serve_server *s, const cJSON *req, serve_response *ou
         return;
     }
     const size_t len = strlen(t->valuestring);
-    /* one density for every tool, 1 g/cm^3: a part scales it to its material's */
-    tippe_gcode_options opt = tippe_gcode_defaults();
-    opt.density_g_cm3 = 1.0;
-    opt.override_density = 1;
+    /* at the file's own diameter: a design's print.filament_diameter_mm reads it
+     * again when a part names it (tippe_serve_gcode_find) */
+    tippe_gcode_options opt = upload_options(0);
     tippe_gcode_body body;
     tippe_gcode_beads beads;
     tippe_error err = {0};

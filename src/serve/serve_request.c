@@ -287,17 +287,30 @@ tippe_design *tippe_serve_request_design(serve_server *s, const cJSON *req, cons
         }
         gcodes = more;
         char gname[128];
-        if (!tippe_serve_gcode_find(g->valuestring + 7, &gcodes[n_gcodes].body,
-                                    &gcodes[n_gcodes].beads, gname, sizeof gname)) {
+        /* the part's filament diameter reads it, as the command reads a file (Cura's E) */
+        const cJSON *fd = cJSON_GetObjectItemCaseSensitive(pr, "filament_diameter_mm");
+        tippe_error gerr = {0};
+        int found = tippe_serve_gcode_find(g->valuestring + 7,
+                                           cJSON_IsNumber(fd) ? fd->valuedouble : 0,
+                                           &gcodes[n_gcodes].body, &gcodes[n_gcodes].beads,
+                                           gname, sizeof gname, &gerr);
+        if (found <= 0) {
             for (int k = 0; k < n_gcodes; k++)
                 tippe_gcode_beads_free(&gcodes[k].beads);
             free(gcodes);
             free(text);
             char field[96];
             snprintf(field, sizeof field, "%s.parts[%d].print.gcode", key, i);
-            tippe_serve_respond_error(out, 400, field, "%s: parts[%d].print.gcode: the uploaded "
-                                      "G-code '%.40s' is not kept any more (the server keeps the "
-                                      "last 8, 128 MiB): upload it again", key, i, g->valuestring);
+            if (found < 0)
+                tippe_serve_respond_error(out, gerr.code == TIPPE_EINPUT ? 400 : 503, field,
+                                          "%s: parts[%d].print.gcode: the uploaded G-code "
+                                          "'%.40s' read with print.filament_diameter_mm: %s",
+                                          key, i, gname, gerr.msg);
+            else
+                tippe_serve_respond_error(out, 400, field, "%s: parts[%d].print.gcode: the "
+                                          "uploaded G-code '%.40s' is not kept any more (the "
+                                          "server keeps the last 8, 128 MiB): upload it again",
+                                          key, i, g->valuestring);
             return NULL;
         }
         snprintf(gcodes[n_gcodes].part, sizeof gcodes[n_gcodes].part, "%s", pn->valuestring);

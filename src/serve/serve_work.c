@@ -138,7 +138,10 @@ void tippe_serve_watchdog(serve_server *s)
     pthread_mutex_lock(&s->lock);
     for (serve_job **p = &s->in_flight; *p;) {
         serve_job *j = *p;
-        const int over = now - j->t_queued_s > s->o.budget_s, gone = !over && client_gone(j->fd);
+        /* the slow lanes' own budget (TIPPE_SERVE_SLOW_BUDGET_FACTOR) */
+        const double budget =
+            j->lane == SERVE_LANE_SHARED ? s->o.budget_s : s->o.slow_budget_s;
+        const int over = now - j->t_queued_s > budget, gone = !over && client_gone(j->fd);
         if (!over && !gone) {
             p = &j->next_in_flight;
             continue;
@@ -147,7 +150,7 @@ void tippe_serve_watchdog(serve_server *s)
             tippe_serve_respond_error(&j->timeout, 503, NULL,
                                       "over budget: %s took more than %g s of wall clock (%s); "
                                       "the server keeps serving",
-                                      j->route->path, s->o.budget_s,
+                                      j->route->path, budget,
                                       j->state == JOB_QUEUED ? "waiting for a worker"
                                                              : "computing");
         else /* nobody reads it: the connection is closed once resumed */
