@@ -237,7 +237,7 @@ EOF
     "$py" - "$out-made.json" <<'EOF' && ok || bad "the part as made against its G-code: $(tail -3 "$out.err")"
 import json, sys
 p = [q for q in json.load(open(sys.argv[1]))["printed_parts"] if q["model"] == "gcode"][0]
-assert "printed_radius_mm: 10.25 mm" in p["gcode_note"], p["gcode_note"]
+assert "printed 10.25 mm across" in p["gcode_note"], p["gcode_note"]
 # mass within 2.5 %: the print model's own error against the slicer at 50 % infill with the hole
 # printed where the model has it (+1.9 %, docs/printing.md) and the cut's (0.624 g against the
 # G-code's 0.649 g, 0.07 %); measured +1.9 % (before the part as made: +2.9 %). Body A/C within
@@ -256,7 +256,7 @@ fi
 import json, sys
 o = json.load(open(sys.argv[1]))
 p = o["sliced_parts"]["printed_parts"][0]
-assert "is 10.2" in p["gcode_note"] and "printed_radius_mm: 10.25 mm" in p["gcode_note"], p
+assert "is 10.2" in p["gcode_note"] and "printed 10.25 mm across" in p["gcode_note"], p
 v = o["verdict"]
 assert v["sliced"]["verdict"] == v["model"]["verdict"] == "3-in-1 and settable", v
 EOF

@@ -852,10 +852,11 @@ static void compute_notes(compute_ctx *c)
         char t[320];
         snprintf(t, sizeof t,
                  "Weighing to calibrate the infill: the hole is printed %.2f mm across, the mass "
-                 "model's is %.2f mm, so add %+.3f g (the print model's difference, same infill) "
-                 "to the scale's reading of the bare print before giving it as measured_mass_g.",
+                 "model's is %.2f mm, so %s %.3f g (the print model's difference, same infill) "
+                 "%s the scale's reading of the bare print before giving it as measured_mass_g.",
                  out->hole_diameter_mm, 2 * tippe_build_hole_model_radius(c->d, out->hole_part),
-                 out->weigh_offset_g);
+                 out->weigh_offset_g < 0 ? "take" : "add", fabs(out->weigh_offset_g),
+                 out->weigh_offset_g < 0 ? "from" : "to");
         tippe_build_note(out, t);
     }
 }

@@ -501,8 +501,8 @@ void tippe_build_weigh_step(const tippe_design *d, tippe_build_sheet *s)
             continue;
         char offset[160] = "";
         if (isfinite(s->weigh_offset_g))
-            snprintf(offset, sizeof offset, " plus %+.3f g (the printed hole against the model's)",
-                     s->weigh_offset_g);
+            snprintf(offset, sizeof offset, " %s %.3f g (the printed hole against the model's)",
+                     s->weigh_offset_g < 0 ? "less" : "plus", fabs(s->weigh_offset_g));
         /* the run again repeats the sheet's own changes (but an old weighing) */
         char again[1200] = "", mass[260];
         snprintf(mass, sizeof mass, "parts.%s.print.measured_mass_g=", p.name);

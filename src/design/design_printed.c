@@ -496,7 +496,7 @@ static void hole_note(part *p, const tippe_design *d, const int *which, int n,
         int m;
         if (h->printed_radius_mm > 0 && rg < h->radius_mm)
             m = snprintf(p->gcode_note + used, sizeof p->gcode_note - used,
-                         "%sits hole '%s' is %.2f mm across (printed_radius_mm: %.2f mm), the "
+                         "%sits hole '%s' is %.2f mm across (printed %.2f mm across: printed_radius_mm), the "
                          "design's %.2f mm: the plastic inside the design's hole (%.3f g in "
                          "all) is taken as cut away after printing (tapped, drilled or bored)",
                          used ? "; " : "", h->name, 2 * rg, 2 * h->printed_radius_mm,
