@@ -139,6 +139,22 @@ assert abs(shift - 0.0815) < 0.01, note
 assert not [q for q in b["printed_parts"] if q["model"] == "gcode"][0]["gcode_note"]
 EOF
 fi
+# a design's filament diameter wins over the G-code's header, and says so: PrusaSlicer's
+# header gives 1.75 mm; read at 2.85 mm every bead holds (2.85/1.75)^2 = 2.652 times the
+# plastic, +165.2 % (the note's one decimal); at the header's own diameter no note
+if [ -f "$out/m12-setscrew-printed.gcode" ]; then
+    for dmm in 2.85 1.75; do
+        "$tippe" eval designs/m12-setscrew-printed.json --z2 5 --json \
+            --set "parts.body.print.gcode=$out/m12-setscrew-printed.gcode" \
+            --set parts.body.print.filament_diameter_mm=$dmm >"$tmp/diam-$dmm.json"
+    done
+    "$py" - "$tmp/diam-2.85.json" "$tmp/diam-1.75.json" <<'EOF' && ok || bad "a filament diameter against the G-code's header is said"
+import json, sys
+a, b = ([q for q in json.load(open(f))["printed_parts"] if q["model"] == "gcode"][0] for f in sys.argv[1:3])
+assert "where its header says 1.75 mm: +165.2 %" in a["gcode_note"], a["gcode_note"]
+assert "header says" not in b["gcode_note"], b["gcode_note"]
+EOF
+fi
 out="$tmp/m12-0.15"
 if [ -f "$out/m12-setscrew-printed.gcode" ]; then
     nosup="$tmp/nosup"

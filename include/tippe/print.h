@@ -451,6 +451,7 @@ typedef struct {
     char source[256];          /* the file's name as given, for messages */
     char generator[64];        /* e.g. "PrusaSlicer 2.6.1", "Cura_SteamEngine 5.4.0"; "" unknown */
     double filament_diameter_mm;  /* as used for tool 0 (NAN when E is volumetric throughout) */
+    double header_diameter_mm;    /* tool 0's as the file's own header says (NAN: none) */
     double density_g_cm3;         /* as used for tool 0 */
     int volumetric_e;             /* E was volumetric at the first deposit */
     int labelled;                 /* the file labels its features */

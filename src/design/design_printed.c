@@ -666,6 +666,19 @@ static int gcode_moments(const tippe_json_reader *c, tippe_design *d, int i, tip
                                    : " mm filament; a wrong diameter scales every bead: "
                                      "give print.filament_diameter_mm");
     hole_note(p, d, which, n_holes, &body);
+    /* the design's diameter wins over the header's (CuraEngine writes E in mm of 2.85 mm
+     * filament whatever its header says, issue 40), but a mass that scales as the
+     * diameter's square must not change silently: say both */
+    if (p->filament_diameter_mm > 0 && !body.volumetric_e && body.header_diameter_mm > 0 &&
+        fabs(p->filament_diameter_mm / body.header_diameter_mm - 1) > 1e-3) {
+        size_t used = strlen(p->gcode_note);
+        const double r = p->filament_diameter_mm / body.header_diameter_mm;
+        snprintf(p->gcode_note + used, sizeof p->gcode_note - used,
+                 "%sits E is read in mm of the design's %.3g mm filament "
+                 "(print.filament_diameter_mm), where its header says %.3g mm: %+.1f %% of "
+                 "plastic against the header's", used ? "; " : "", p->filament_diameter_mm,
+                 body.header_diameter_mm, 100 * (r * r - 1));
+    }
     if (p->gcode_bed_shift_mm != 0) {
         size_t used = strlen(p->gcode_note);
         snprintf(p->gcode_note + used, sizeof p->gcode_note - used,

@@ -602,6 +602,7 @@ int tippe_gcode_parse_near(const char *text, size_t len, const char *name,
         g->rho_kg_mm3[t] = 1e-6 * rho; /* g/cm^3 = 1e-6 kg/mm^3 */
         if (t == 0) {
             out->filament_diameter_mm = d > 0 ? d : NAN;
+            out->header_diameter_mm = g->cfg.n_diam > 0 ? g->cfg.diam[0] : NAN;
             out->density_g_cm3 = rho;
         }
     }
