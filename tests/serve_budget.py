@@ -10,20 +10,9 @@ Usage: serve_budget.py TIPPE. Prints 'N passed, M failed'."""
 import sys
 import time
 
-from serve_lib import Server
+from serve_lib import Server, check, finish
 
 tippe = sys.argv[1]
-passed, failed = 0, 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-        print("ok   " + what)
-    else:
-        failed += 1
-        print("FAIL " + what)
 
 
 ADVICE = {"design": "m12-setscrew-printed"}
@@ -58,5 +47,4 @@ with Server(tippe, "--budget", "2") as srv:
     log = open(srv.log).read()
     check("2 s per request (8 s for the advice, builds and films)" in log,
           "--slow-budget defaults to 4 x --budget: %s" % log.strip().splitlines()[-1][:200])
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

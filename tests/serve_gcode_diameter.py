@@ -13,22 +13,11 @@ import shutil
 import subprocess
 import sys
 
-from serve_lib import Server, REPO
+from serve_lib import Server, REPO, check, finish
 
 tippe, work = sys.argv[1], sys.argv[2]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-passed, failed = 0, 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-        print("ok   " + what)
-    else:
-        failed += 1
-        print("FAIL " + what)
 
 
 design_file = os.path.join(REPO, "designs", "m12-setscrew-printed.json")
@@ -79,5 +68,4 @@ with Server(tippe) as srv:
         check(abs(page[D] / page[0] - 1.02) < 1e-9,
               "the design's diameter scales the upload's beads: %.6f g -> %.6f g" %
               (page[0] * 1e3, page[D] * 1e3))
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()
