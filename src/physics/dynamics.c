@@ -761,10 +761,19 @@ static int run_may_stop(const run_state *rs, const tippe_dynamics_result *res)
  * h the height of the centre of mass over the outline's lowest point (hull_height;
  * R - eps cos theta on the sphere, paper section 3). So theta can never again
  * reach an angle where m g h exceeds E.
- * - no_tip: once E plus its margin (margin_factor times the energy balance's error
- *   so far) is below m g h(PATCH_POLE_RAD), h rising on [0, PATCH_POLE_RAD], the top
- *   stays within theta_hi < PATCH_POLE_RAD of upright for ever, however J drifts. A
- *   top that flipped and fell back ends here too.
+ * - no_tip: a top within PATCH_POLE_RAD of upright whose E plus its margin is below
+ *   m g h(PATCH_POLE_RAD) can never reach that angle (theta is continuous), so it
+ *   stays within theta_hi < PATCH_POLE_RAD of upright for ever, however J drifts (h
+ *   rises on [0, PATCH_POLE_RAD] for eps >= 0: theta_hi is where it meets E). A top
+ *   that flipped and fell back ends here too. The top must be on this side now: where
+ *   eps is small and the other pole is cut, the flat end's well lies below
+ *   m g h(PATCH_POLE_RAD) too (eps < R (1 - cos alpha) / (1 + cos 0.25), 0.3 mm for
+ *   the M12), and a top resting there is no no_tip. With eps = 0 the sphere is level
+ *   (h = R) and only a rim's well holds the top; without one the test never passes.
+ * - the margin: margin_factor times the energy balance's error so far (an estimate,
+ *   hence the factor), plus the energy the creep's reduction moved counted once: it
+ *   is the integral of |the power the blend changed| along the run, the triangle
+ *   inequality's bound of what it can have moved, not an estimate to be inflated.
  * - tip, where the other pole is cut flat: h falls from its crest at
  *   pi - beta*, tan beta* = R sin(alpha) / (R cos(alpha) + eps), to pi (standing
  *   on the flat end is a well); a top beyond the crest with E plus margin below it
@@ -772,20 +781,20 @@ static int run_may_stop(const run_state *rs, const tippe_dynamics_result *res)
 static int run_try_energy_cone(run_state *rs, tippe_dynamics_result *res)
 {
     const dyn_ctx *c = &rs->c;
-    if (!(c->eps > 0) || rs->opt->run_to_t_end)
+    if (!(c->eps >= 0) || rs->opt->run_to_t_end)
         return 0;
-    /* the reduced creep (creep_reduce) may have moved E by up to what it changed of the
-     * contact's power; that counts as error too */
-    const double margin = rs->opt->margin_factor * (rs->energy_abs_err + res->creep_energy_J) +
+    const double margin = rs->opt->margin_factor * rs->energy_abs_err + res->creep_energy_J +
                           1e-12 * res->E0;
     const double E = rs->smp.E + margin, mg = c->m * c->g;
     double lo = NAN, hi = NAN;
     tippe_verdict verdict;
-    if (E < mg * tippe_dynamics_hull_height(c, PATCH_POLE_RAD)) {
+    if (rs->smp.theta < PATCH_POLE_RAD && E < mg * tippe_dynamics_hull_height(c, PATCH_POLE_RAD)) {
         verdict = TIPPE_VERDICT_NO_TIP;
         lo = 0.0;
         if (!(c->rim_alpha[0] > 0.0) || E >= mg * tippe_dynamics_hull_height(c, c->rim_alpha[0])) {
             /* on the sphere: m g (R - eps cos theta_hi) = E */
+            if (!(c->eps > 0)) /* level sphere, no rim: E >= m g R, only rounding gets here */
+                return 0;
             const double cos_hi = (c->R - E / mg) / c->eps;
             hi = cos_hi >= 1.0 ? 0.0 : acos(cos_hi);
         } else { /* within the rim, where h rises: bisection */
