@@ -1,6 +1,7 @@
 /* The equations of motion in the lab frame (the right-hand side, its Jacobian,
  * the contact and its normal force, eq 3.19) and the paper's variables and
  * monitors (energy, Jellett's J, Euler angles) computed from a state. */
+#include "physics/contact_patch_law.h"
 #include "physics/dynamics_state.h"
 #include "tippe/base.h"
 
@@ -94,8 +95,8 @@ typedef struct {
 static void patch_wrench(const dyn_ctx *c, const contact *o, double a, per_Rn *u)
 {
     tippe_contact_patch_wrench pw;
-    tippe_contact_patch_friction(TIPPE_CONTACT_PATCH_HERTZ, c->mu_c, a, c->vs, o->VQ, o->w[2],
-                                 &pw);
+    /* tippe_contact_patch_friction's Hertz law, inlined with its coefficients as constants */
+    patch_friction(PATCH_LAW_HERTZ, c->mu_c, a, c->vs, o->VQ, o->w[2], &pw);
     u->f[0] = pw.F[0];
     u->f[1] = pw.F[1];
     u->M = pw.M;
