@@ -175,14 +175,43 @@ static double ring_couple(const dyn_ctx *c, double r, double omega_n)
     return -rim_viscous_mu(c, slip * slip) * r * slip;
 }
 
-/* Rn and the two parts of omega' = Rn a1 + a0 for the wrench u per unit Rn: the
- * torque about the CoM (eq 3.13 in the lab frame, with the couples), then
- * m z'' = Rn - m g (eqs 3.16-3.17) solved for Rn, the lab form of eq 3.19.
- * Returns nonzero where eq 3.19's denominator is not positive. */
-static int normal_force(const dyn_ctx *c, contact *o, const double wk[3], const per_Rn *u,
-                        double a1[3], double a0[3])
+/* The part of omega' = Rn a1 + a0 and of the normal force that the contact's wrench does
+ * not change: the gyroscopic a0 = -((C - A)/A) n omega x k (eq 3.13 in the lab frame) and
+ * the numerator of eq 3.19, m (g - (a0 x q)_z - (omega x dq/dt)_z), whose last term is
+ * eps (omega x (omega x k))_z on the sphere. Apart from normal_force so that the patch law's
+ * second pass at the load's radius (PATCH_LOAD_CORRECTIONS) does not compute it again. */
+typedef struct {
+    double a0[3];
+    double Rn_num; /* N: Rn times eq 3.19's denominator */
+} gyro_part;
+
+static inline void gyroscopic(const dyn_ctx *c, const contact *o, const double wk[3], gyro_part *g)
 {
-    const double *k = o->k, *w = o->w;
+    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
+    for (int i = 0; i < 3; i++)
+        g->a0[i] = minus_CmA_A_n * wk[i];
+    if (c->rim) {
+        /* m z'' = Rn - m g with z = -q_z: z'' = -((omega' x q)_z + (omega x dq/dt)_z) */
+        double a0q[3];
+        cross3(g->a0, o->q, a0q);
+        g->Rn_num = c->m * (c->g - a0q[2] - o->wqd[2]);
+        return;
+    }
+    double a0k[3], wwk[3];
+    cross3(g->a0, o->k, a0k);
+    cross3(o->w, wk, wwk);
+    /* z'' = -eps ((omega' x k)_z + (omega x (omega x k))_z) */
+    g->Rn_num = c->m * (c->g - c->eps * (a0k[2] + wwk[2]));
+}
+
+/* Rn and a1 of omega' = Rn a1 + a0 for the wrench u per unit Rn: the torque about the
+ * CoM (eq 3.13 in the lab frame, with the couples), then m z'' = Rn - m g (eqs
+ * 3.16-3.17) solved for Rn, the lab form of eq 3.19, with the wrench-free part g.
+ * Returns nonzero where eq 3.19's denominator is not positive. */
+static inline int normal_force(const dyn_ctx *c, contact *o, const gyro_part *g, const per_Rn *u,
+                        double a1[3])
+{
+    const double *k = o->k;
     double tau[3];
     cross3(o->q, u->f, tau); /* torque per unit Rn about the CoM (eq 3.13) */
     tau[0] += u->Mroll[0];
@@ -191,46 +220,28 @@ static int normal_force(const dyn_ctx *c, contact *o, const double wk[3], const 
     const double tk = dot3(tau, k);
     /* A omega' = tau - (C - A)(n' k + n omega x k) with C n' = tau.k */
     const double one_minus_AC = c->one_minus_A_over_C, inv_A = c->inv_A;
-    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 3; i++)
         a1[i] = (tau[i] - one_minus_AC * tk * k[i]) * inv_A;
-        a0[i] = minus_CmA_A_n * wk[i];
-    }
-    if (c->rim) {
-        /* m z'' = Rn - m g with z = -q_z: z'' = -((omega' x q)_z + (omega x dq/dt)_z) */
-        double a1q[3], a0q[3];
-        cross3(a1, o->q, a1q);
-        cross3(a0, o->q, a0q);
-        o->den = 1.0 + c->m * a1q[2];
-        if (!(o->den > 0.0))
-            return 1;
-        o->Rn = c->m * (c->g - a0q[2] - o->wqd[2]) / o->den;
-        return 0;
-    }
-    double a1k[3], a0k[3], wwk[3];
-    cross3(a1, k, a1k);
-    cross3(a0, k, a0k);
-    cross3(w, wk, wwk);
-    /* z'' = -eps ((omega' x k)_z + (omega x (omega x k))_z) */
-    o->den = 1.0 + c->m * c->eps * a1k[2];
+    /* (a1 x q)_z on a rim, eps (a1 x k)_z on the sphere */
+    if (c->rim)
+        o->den = 1.0 + c->m * (a1[0] * o->q[1] - a1[1] * o->q[0]);
+    else
+        o->den = 1.0 + c->m * c->eps * (a1[0] * k[1] - a1[1] * k[0]);
     if (!(o->den > 0.0))
         return 1;
-    o->Rn = c->m * (c->g - c->eps * (a0k[2] + wwk[2])) / o->den;
+    o->Rn = g->Rn_num / o->den;
     return 0;
 }
 
 /* The rolling constraint's right-hand side (run_try_stick's system, docs/dynamics.md,
  * "Sticking"): d/dt V_Q = 0 reads K Fc = b, with
  *   b = g e3 - a0 x q - omega x dq/dt,
- * a0 the gyroscopic part of omega' (returned) and dq/dt = eps omega x k on the sphere,
+ * a0 the gyroscopic part of omega' (gyroscopic) and dq/dt = eps omega x k on the sphere,
  * the rim's own rate on a rim (o->wqd). */
-static void rolling_rhs(const dyn_ctx *c, const contact *o, const double wk[3], double a0[3],
-                        double b[3])
+static void rolling_rhs(const dyn_ctx *c, const contact *o, const double wk[3],
+                        const double a0[3], double b[3])
 {
     double a0q[3], wq_dot[3];
-    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
-    for (int i = 0; i < 3; i++)
-        a0[i] = minus_CmA_A_n * wk[i];
     cross3(a0, o->q, a0q);
     if (c->rim) {
         memcpy(wq_dot, o->wqd, sizeof wq_dot);
@@ -263,7 +274,8 @@ static void rolling_rhs(const dyn_ctx *c, const contact *o, const double wk[3], 
  * the Delassus matrix's tangential block (>= its largest eigenvalue, and >= that of its
  * Schur complement under the normal constraint) times the law's drag |F| / |V_Q| (the
  * secant, which for this law is the largest slope of F in V_Q: docs/contact-patch.md). */
-static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const per_Rn *u)
+static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const double a0[3],
+                         const per_Rn *u)
 {
     o->creep_slow = 1.0;
     o->creep_power = 0.0;
@@ -289,7 +301,7 @@ static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const
     /* The rolling constraint with the couples per unit Rn tc:
      *   K Fc + Rn (I^-1 tc) x q = b   (rolling_rhs) */
     const double tc[3] = {u->Mroll[0], u->Mroll[1], u->M};
-    double a0[3], b[3], wc[3], cq[3], Fs[3], tau[3], wt[3];
+    double b[3], wc[3], cq[3], Fs[3], tau[3], wt[3];
     rolling_rhs(c, o, wk, a0, b);
     tippe_dynamics_inv_inertia(c, o->k, tc, wc);
     cross3(wc, o->q, cq);
@@ -316,6 +328,51 @@ static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const
     o->power = Rn * u->diss - dP;
     o->creep_slow = s;
     o->creep_power = fabs(dP);
+}
+
+/* The patch law's part of tippe_dynamics_contact_eval (o's kinematics set): the wrench per
+ * unit Rn at radius a is linear in Rn, so Rn follows from eq 3.19 as for the other laws; a
+ * radius that follows the load (Hertz) is corrected from the static one with the Rn it
+ * gives (PATCH_LOAD_CORRECTIONS); then the creep's reduction where it applies. The
+ * gyroscopic part is the same in every pass and is computed once. */
+static int patch_eval(const dyn_ctx *c, contact *o, const double wk[3])
+{
+    const double *w = o->w;
+    const double ring_M = o->ring ? ring_couple(c, c->rim_r[c->rim - 1], w[2]) : 0.0;
+    per_Rn u = {{0.0, 0.0, 1.0}, ring_M, 0.0, {0.0, 0.0}};
+    gyro_part g;
+    double a1[3];
+    double a = c->patch_a;
+    gyroscopic(c, o, wk, &g);
+    for (int pass = 0;; pass++) {
+        patch_wrench(c, o, a, &u);
+        if (o->ring) {
+            /* the ring's couple, not a patch's: the ring is the patch (its power
+             * -(F.V_Q + M omega_n) per unit Rn rebooked with the ring's M) */
+            u.diss += (u.M - ring_M) * w[2];
+            u.M = ring_M;
+        }
+        if (normal_force(c, o, &g, &u, a1))
+            return 1;
+        if (!c->patch_follow || pass == PATCH_LOAD_CORRECTIONS)
+            break;
+        /* Hertz: a grows as the cube root of the load (Johnson 1985, eq 4.22); no
+         * load, no patch */
+        a = c->patch_a * cbrt(fmax(o->Rn, 0.0) * c->inv_mg);
+    }
+    o->patch_a = a;
+    o->mu_eff = NAN; /* not a viscous multiple of V_Q */
+    for (int i = 0; i < 3; i++)
+        o->wdot[i] = o->Rn * a1[i] + g.a0[i];
+    o->F[0] = o->Rn * u.f[0];
+    o->F[1] = o->Rn * u.f[1];
+    o->M = o->Rn * u.M;
+    o->power = o->Rn * u.diss; /* -(F.V_Q + M omega_n + M_roll.w_roll) >= 0 */
+    o->creep_slow = 1.0;
+    o->creep_power = 0.0;
+    if (c->creep_cap > 0.0)
+        creep_reduce(c, o, wk, g.a0, &u);
+    return 0;
 }
 
 /* Everything the right-hand side needs from a state: the contact velocity, the
@@ -363,7 +420,10 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
          * i.e. K Fc = g e3 - a0 x q - eps omega x (omega x k), a0 the gyroscopic
          * part of omega'. Its z row is eq 3.17; K is positive definite, so Fc is
          * always determined (no Painleve case while rolling). */
-        double a0[3], b[3], Fc[3], tau[3], wt[3];
+        double b[3], Fc[3], tau[3], wt[3];
+        gyro_part g;
+        gyroscopic(c, o, wk, &g);
+        const double *a0 = g.a0;
         rolling_rhs(c, o, wk, a0, b);
         compliance(c, k, o->q, o->K);
         if (tippe_dynamics_solve3(o->K, b, Fc))
@@ -384,6 +444,8 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
         o->power = 0.0;
         return 0;
     }
+    if (c->patch)
+        return patch_eval(c, o, wk);
     const double slip2 = o->VQ[0] * o->VQ[0] + o->VQ[1] * o->VQ[1];
     /* Both laws are F = -mu_eff Rn V_Q with mu_eff fixed by the state alone (V_Q does
      * not depend on Rn): viscous mu (eq 3.12), or regularised Coulomb
@@ -391,47 +453,17 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
     o->mu_eff = c->coulomb ? c->mu_c / sqrt(slip2 + c->vs2)
                 : c->rim   ? rim_viscous_mu(c, slip2)
                            : c->mu;
-    /* F = Rn (e3 - mu_eff V_Q): force and torque are linear in Rn. Under the patch law
-     * they are too at a given radius; a radius that follows Rn (Hertz) is corrected
-     * from the static one with the Rn it gives (PATCH_LOAD_CORRECTIONS). */
-    per_Rn u = {{-o->mu_eff * o->VQ[0], -o->mu_eff * o->VQ[1], 1.0}, 0.0, 0.0, {0.0, 0.0}};
-    double a1[3], a0[3];
-    double a = c->patch_a;
+    /* F = Rn (e3 - mu_eff V_Q): force and torque are linear in Rn. */
     const double ring_M = o->ring ? ring_couple(c, c->rim_r[c->rim - 1], w[2]) : 0.0;
-    u.M = ring_M;
-    for (int pass = 0;; pass++) {
-        if (c->patch)
-            patch_wrench(c, o, a, &u);
-        if (c->patch && o->ring) {
-            /* the ring's couple, not a patch's: the ring is the patch (its power
-             * -(F.V_Q + M omega_n) per unit Rn rebooked with the ring's M) */
-            u.diss += (u.M - ring_M) * w[2];
-            u.M = ring_M;
-        }
-        if (normal_force(c, o, wk, &u, a1, a0))
-            return 1;
-        if (!c->patch_follow || pass == PATCH_LOAD_CORRECTIONS)
-            break;
-        /* Hertz: a grows as the cube root of the load (Johnson 1985, eq 4.22); no
-         * load, no patch */
-        a = c->patch_a * cbrt(fmax(o->Rn, 0.0) * c->inv_mg);
-    }
-    o->patch_a = a;
-    if (c->patch)
-        o->mu_eff = NAN; /* not a viscous multiple of V_Q */
+    per_Rn u = {{-o->mu_eff * o->VQ[0], -o->mu_eff * o->VQ[1], 1.0}, ring_M, 0.0, {0.0, 0.0}};
+    gyro_part g;
+    double a1[3];
+    gyroscopic(c, o, wk, &g);
+    if (normal_force(c, o, &g, &u, a1))
+        return 1;
+    o->patch_a = c->patch_a;
     for (int i = 0; i < 3; i++)
-        o->wdot[i] = o->Rn * a1[i] + a0[i];
-    if (c->patch) {
-        o->F[0] = o->Rn * u.f[0];
-        o->F[1] = o->Rn * u.f[1];
-        o->M = o->Rn * u.M;
-        o->power = o->Rn * u.diss; /* -(F.V_Q + M omega_n + M_roll.w_roll) >= 0 */
-        o->creep_slow = 1.0;
-        o->creep_power = 0.0;
-        if (c->creep_cap > 0.0)
-            creep_reduce(c, o, wk, &u);
-        return 0;
-    }
+        o->wdot[i] = o->Rn * a1[i] + g.a0[i];
     o->M = 0.0;
     o->F[0] = -o->mu_eff * o->Rn * o->VQ[0];
     o->F[1] = -o->mu_eff * o->Rn * o->VQ[1];
