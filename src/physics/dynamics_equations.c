@@ -26,12 +26,20 @@
 
 
 /* The angular acceleration that a torque tau about the centre of mass adds:
- * A omega' = tau - (1 - A/C)(tau.k) k (the lab form of eq 3.13, L = A omega + (C - A) n k). */
-void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3])
+ * A omega' = tau - (1 - A/C)(tau.k) k (the lab form of eq 3.13, L = A omega + (C - A) n k).
+ * Inline here, where the creep's reduction applies it twice an evaluation. */
+static inline void inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3],
+                               double out[3])
 {
     const double tk = dot3(tau, k);
     for (int i = 0; i < 3; i++)
         out[i] = (tau[i] - c->one_minus_A_over_C * tk * k[i]) * c->inv_A;
+}
+
+/* inv_inertia for the other files (dynamics.c's impulses). */
+void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3])
+{
+    inv_inertia(c, k, tau, out);
 }
 
 /* K P: the change of the contact point's velocity V_Q = v + omega x q that a
@@ -56,8 +64,8 @@ static void compliance(const dyn_ctx *c, const double k[3], const double q[3], d
 }
 
 /* x = K^-1 b by the adjugate (3 x 3; K positive definite, or the rolling system with
- * the patch's couples, nearly so: det > 0). */
-int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3])
+ * the patch's couples, nearly so: det > 0). Inline here for the creep's reduction. */
+static inline int solve3(const double K[3][3], const double b[3], double x[3])
 {
     const double c00 = K[1][1] * K[2][2] - K[1][2] * K[2][1];
     const double c01 = K[1][2] * K[2][0] - K[1][0] * K[2][2];
@@ -77,6 +85,12 @@ int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3])
     x[1] = (c01 * b[0] + c11 * b[1] + c21 * b[2]) * inv_det;
     x[2] = (c02 * b[0] + c12 * b[1] + c22 * b[2]) * inv_det;
     return 0;
+}
+
+/* solve3 for the other files (dynamics.c's impulses). */
+int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3])
+{
+    return solve3(K, b, x);
 }
 
 /* The contact's wrench per unit Rn: the force f (f[2] = 1, the normal), the
@@ -255,6 +269,31 @@ static void rolling_rhs(const dyn_ctx *c, const contact *o, const double wk[3],
     b[2] += c->g;
 }
 
+/* What creep_reduce needs of the kinematics alone: the rate cap, the tangential trace of
+ * the Delassus matrix K, K itself and b, the rolling constraint's right-hand side. None
+ * of it depends on the patch's wrench, so patch_eval computes it before the radius
+ * passes, whose divisions, square roots and cube root are one long chain of latencies:
+ * the processor overlaps this work with them (issue 38, docs/performance.md, "third
+ * round"). */
+typedef struct {
+    double k_cap, trace;
+    double K[3][3], b[3];
+} creep_pre;
+
+static inline void creep_prepare(const dyn_ctx *c, const contact *o, const double wk[3],
+                                 const double a0[3], creep_pre *p)
+{
+    /* K's tangential trace without K: K_jj = 1/m + (q x e_j).I^-1 (q x e_j), with
+     * I^-1 x = (x - (1 - A/C)(x.k) k) / A, q x e_x = (0, q_z, -q_y), q x e_y = (-q_z, 0, q_x) */
+    const double *q = o->q, *k = o->k;
+    const double px = q[2] * k[1] - q[1] * k[2], py = q[0] * k[2] - q[2] * k[0];
+    p->trace = 2.0 / c->m + (q[0] * q[0] + q[1] * q[1] + 2.0 * q[2] * q[2] -
+                             c->one_minus_A_over_C * (px * px + py * py)) * c->inv_A;
+    p->k_cap = c->creep_cap * (sqrt(dot3(o->w, o->w)) + c->sqrt_g_over_R);
+    compliance(c, o->k, o->q, p->K);
+    rolling_rhs(c, o, wk, a0, p->b);
+}
+
 /* The patch law with its creep reduced (docs/dynamics.md, "The creep reduced"; issue 38).
  * Where the patch drills slowly the creep drag mu_c c1 / (a |omega_n|) relaxes the slip
  * at a rate k far above the motion's (2e4 /s on the M12 at 1 rad/s), and an explicit
@@ -273,9 +312,10 @@ static void rolling_rhs(const dyn_ctx *c, const contact *o, const double wk[3],
  * drilling patch) s = 1: the full law, unchanged. k is bounded above by the trace of
  * the Delassus matrix's tangential block (>= its largest eigenvalue, and >= that of its
  * Schur complement under the normal constraint) times the law's drag |F| / |V_Q| (the
- * secant, which for this law is the largest slope of F in V_Q: docs/contact-patch.md). */
-static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const double a0[3],
-                         const per_Rn *u)
+ * secant, which for this law is the largest slope of F in V_Q: docs/contact-patch.md).
+ * p: creep_prepare's part, at the same state. */
+static void creep_reduce(const dyn_ctx *c, contact *o, const double a0[3], const per_Rn *u,
+                         const creep_pre *p)
 {
     o->creep_slow = 1.0;
     o->creep_power = 0.0;
@@ -285,34 +325,26 @@ static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const
     const double slip2 = o->VQ[0] * o->VQ[0] + o->VQ[1] * o->VQ[1];
     const double f2 = u->f[0] * u->f[0] + u->f[1] * u->f[1];
     const double drag = slip2 > 0.0 ? sqrt(f2 / slip2) : c->mu_c / c->vs;
-    /* K's tangential trace without K: K_jj = 1/m + (q x e_j).I^-1 (q x e_j), with
-     * I^-1 x = (x - (1 - A/C)(x.k) k) / A, q x e_x = (0, q_z, -q_y), q x e_y = (-q_z, 0, q_x) */
-    const double *q = o->q, *k = o->k;
-    const double px = q[2] * k[1] - q[1] * k[2], py = q[0] * k[2] - q[2] * k[0];
-    const double trace = 2.0 / c->m + (q[0] * q[0] + q[1] * q[1] + 2.0 * q[2] * q[2] -
-                                       c->one_minus_A_over_C * (px * px + py * py)) * c->inv_A;
-    const double k_rate = o->Rn * drag * trace;
-    const double k_cap = c->creep_cap * (sqrt(dot3(o->w, o->w)) + c->sqrt_g_over_R);
+    const double k_rate = o->Rn * drag * p->trace;
+    const double k_cap = p->k_cap;
     if (!(k_rate > k_cap))
         return;
-    double K[3][3];
-    compliance(c, o->k, o->q, K);
     const double s = k_cap / k_rate;
     /* The rolling constraint with the couples per unit Rn tc:
      *   K Fc + Rn (I^-1 tc) x q = b   (rolling_rhs) */
     const double tc[3] = {u->Mroll[0], u->Mroll[1], u->M};
-    double b[3], wc[3], cq[3], Fs[3], tau[3], wt[3];
-    rolling_rhs(c, o, wk, a0, b);
-    tippe_dynamics_inv_inertia(c, o->k, tc, wc);
+    double K[3][3], wc[3], cq[3], Fs[3], tau[3], wt[3];
+    memcpy(K, p->K, sizeof K);
+    inv_inertia(c, o->k, tc, wc);
     cross3(wc, o->q, cq);
     for (int i = 0; i < 3; i++)
         K[i][2] += cq[i];
-    if (tippe_dynamics_solve3(K, b, Fs) || !(Fs[2] > 0.0))
+    if (solve3(K, p->b, Fs) || !(Fs[2] > 0.0))
         return; /* no rolling solution here: the full law */
     cross3(o->q, Fs, tau);
     for (int i = 0; i < 3; i++)
         tau[i] += Fs[2] * tc[i];
-    tippe_dynamics_inv_inertia(c, o->k, tau, wt);
+    inv_inertia(c, o->k, tau, wt);
     const double Rn = (1.0 - s) * Fs[2] + s * o->Rn;
     double dF[2];
     for (int i = 0; i < 2; i++) {
@@ -344,6 +376,9 @@ static int patch_eval(const dyn_ctx *c, contact *o, const double wk[3])
     double a1[3];
     double a = c->patch_a;
     gyroscopic(c, o, wk, &g);
+    creep_pre pre;
+    if (c->creep_cap > 0.0)
+        creep_prepare(c, o, wk, g.a0, &pre);
     for (int pass = 0;; pass++) {
         patch_wrench(c, o, a, &u);
         if (o->ring) {
@@ -358,7 +393,7 @@ static int patch_eval(const dyn_ctx *c, contact *o, const double wk[3])
             break;
         /* Hertz: a grows as the cube root of the load (Johnson 1985, eq 4.22); no
          * load, no patch */
-        a = c->patch_a * cbrt(fmax(o->Rn, 0.0) * c->inv_mg);
+        a = c->patch_a * cbrt(o->Rn > 0.0 ? o->Rn * c->inv_mg : 0.0);
     }
     o->patch_a = a;
     o->mu_eff = NAN; /* not a viscous multiple of V_Q */
@@ -371,7 +406,7 @@ static int patch_eval(const dyn_ctx *c, contact *o, const double wk[3])
     o->creep_slow = 1.0;
     o->creep_power = 0.0;
     if (c->creep_cap > 0.0)
-        creep_reduce(c, o, wk, g.a0, &u);
+        creep_reduce(c, o, g.a0, &u, &pre);
     return 0;
 }
 
@@ -426,7 +461,7 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
         const double *a0 = g.a0;
         rolling_rhs(c, o, wk, a0, b);
         compliance(c, k, o->q, o->K);
-        if (tippe_dynamics_solve3(o->K, b, Fc))
+        if (solve3(o->K, b, Fc))
             return 1;
         cross3(o->q, Fc, tau);
         tippe_dynamics_inv_inertia(c, k, tau, wt);
