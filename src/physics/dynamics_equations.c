@@ -1,6 +1,7 @@
 /* The equations of motion in the lab frame (the right-hand side, its Jacobian,
  * the contact and its normal force, eq 3.19) and the paper's variables and
  * monitors (energy, Jellett's J, Euler angles) computed from a state. */
+#include "physics/contact_patch_law.h"
 #include "physics/dynamics_state.h"
 #include "tippe/base.h"
 
@@ -25,12 +26,20 @@
 
 
 /* The angular acceleration that a torque tau about the centre of mass adds:
- * A omega' = tau - (1 - A/C)(tau.k) k (the lab form of eq 3.13, L = A omega + (C - A) n k). */
-void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3])
+ * A omega' = tau - (1 - A/C)(tau.k) k (the lab form of eq 3.13, L = A omega + (C - A) n k).
+ * Inline here, where the creep's reduction applies it twice an evaluation. */
+static inline void inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3],
+                               double out[3])
 {
     const double tk = dot3(tau, k);
     for (int i = 0; i < 3; i++)
         out[i] = (tau[i] - c->one_minus_A_over_C * tk * k[i]) * c->inv_A;
+}
+
+/* inv_inertia for the other files (dynamics.c's impulses). */
+void tippe_dynamics_inv_inertia(const dyn_ctx *c, const double k[3], const double tau[3], double out[3])
+{
+    inv_inertia(c, k, tau, out);
 }
 
 /* K P: the change of the contact point's velocity V_Q = v + omega x q that a
@@ -55,8 +64,8 @@ static void compliance(const dyn_ctx *c, const double k[3], const double q[3], d
 }
 
 /* x = K^-1 b by the adjugate (3 x 3; K positive definite, or the rolling system with
- * the patch's couples, nearly so: det > 0). */
-int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3])
+ * the patch's couples, nearly so: det > 0). Inline here for the creep's reduction. */
+static inline int solve3(const double K[3][3], const double b[3], double x[3])
 {
     const double c00 = K[1][1] * K[2][2] - K[1][2] * K[2][1];
     const double c01 = K[1][2] * K[2][0] - K[1][0] * K[2][2];
@@ -78,6 +87,12 @@ int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3])
     return 0;
 }
 
+/* solve3 for the other files (dynamics.c's impulses). */
+int tippe_dynamics_solve3(const double K[3][3], const double b[3], double x[3])
+{
+    return solve3(K, b, x);
+}
+
 /* The contact's wrench per unit Rn: the force f (f[2] = 1, the normal), the
  * drilling couple M about e3 and the rolling couple Mroll, and the power they
  * dissipate. Viscous and Coulomb fill f alone. */
@@ -94,8 +109,8 @@ typedef struct {
 static void patch_wrench(const dyn_ctx *c, const contact *o, double a, per_Rn *u)
 {
     tippe_contact_patch_wrench pw;
-    tippe_contact_patch_friction(TIPPE_CONTACT_PATCH_HERTZ, c->mu_c, a, c->vs, o->VQ, o->w[2],
-                                 &pw);
+    /* tippe_contact_patch_friction's Hertz law, inlined with its coefficients as constants */
+    patch_friction(PATCH_LAW_HERTZ, c->mu_c, a, c->vs, o->VQ, o->w[2], &pw);
     u->f[0] = pw.F[0];
     u->f[1] = pw.F[1];
     u->M = pw.M;
@@ -174,14 +189,43 @@ static double ring_couple(const dyn_ctx *c, double r, double omega_n)
     return -rim_viscous_mu(c, slip * slip) * r * slip;
 }
 
-/* Rn and the two parts of omega' = Rn a1 + a0 for the wrench u per unit Rn: the
- * torque about the CoM (eq 3.13 in the lab frame, with the couples), then
- * m z'' = Rn - m g (eqs 3.16-3.17) solved for Rn, the lab form of eq 3.19.
- * Returns nonzero where eq 3.19's denominator is not positive. */
-static int normal_force(const dyn_ctx *c, contact *o, const double wk[3], const per_Rn *u,
-                        double a1[3], double a0[3])
+/* The part of omega' = Rn a1 + a0 and of the normal force that the contact's wrench does
+ * not change: the gyroscopic a0 = -((C - A)/A) n omega x k (eq 3.13 in the lab frame) and
+ * the numerator of eq 3.19, m (g - (a0 x q)_z - (omega x dq/dt)_z), whose last term is
+ * eps (omega x (omega x k))_z on the sphere. Apart from normal_force so that the patch law's
+ * second pass at the load's radius (PATCH_LOAD_CORRECTIONS) does not compute it again. */
+typedef struct {
+    double a0[3];
+    double Rn_num; /* N: Rn times eq 3.19's denominator */
+} gyro_part;
+
+static inline void gyroscopic(const dyn_ctx *c, const contact *o, const double wk[3], gyro_part *g)
 {
-    const double *k = o->k, *w = o->w;
+    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
+    for (int i = 0; i < 3; i++)
+        g->a0[i] = minus_CmA_A_n * wk[i];
+    if (c->rim) {
+        /* m z'' = Rn - m g with z = -q_z: z'' = -((omega' x q)_z + (omega x dq/dt)_z) */
+        double a0q[3];
+        cross3(g->a0, o->q, a0q);
+        g->Rn_num = c->m * (c->g - a0q[2] - o->wqd[2]);
+        return;
+    }
+    double a0k[3], wwk[3];
+    cross3(g->a0, o->k, a0k);
+    cross3(o->w, wk, wwk);
+    /* z'' = -eps ((omega' x k)_z + (omega x (omega x k))_z) */
+    g->Rn_num = c->m * (c->g - c->eps * (a0k[2] + wwk[2]));
+}
+
+/* Rn and a1 of omega' = Rn a1 + a0 for the wrench u per unit Rn: the torque about the
+ * CoM (eq 3.13 in the lab frame, with the couples), then m z'' = Rn - m g (eqs
+ * 3.16-3.17) solved for Rn, the lab form of eq 3.19, with the wrench-free part g.
+ * Returns nonzero where eq 3.19's denominator is not positive. */
+static inline int normal_force(const dyn_ctx *c, contact *o, const gyro_part *g, const per_Rn *u,
+                        double a1[3])
+{
+    const double *k = o->k;
     double tau[3];
     cross3(o->q, u->f, tau); /* torque per unit Rn about the CoM (eq 3.13) */
     tau[0] += u->Mroll[0];
@@ -190,46 +234,28 @@ static int normal_force(const dyn_ctx *c, contact *o, const double wk[3], const 
     const double tk = dot3(tau, k);
     /* A omega' = tau - (C - A)(n' k + n omega x k) with C n' = tau.k */
     const double one_minus_AC = c->one_minus_A_over_C, inv_A = c->inv_A;
-    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 3; i++)
         a1[i] = (tau[i] - one_minus_AC * tk * k[i]) * inv_A;
-        a0[i] = minus_CmA_A_n * wk[i];
-    }
-    if (c->rim) {
-        /* m z'' = Rn - m g with z = -q_z: z'' = -((omega' x q)_z + (omega x dq/dt)_z) */
-        double a1q[3], a0q[3];
-        cross3(a1, o->q, a1q);
-        cross3(a0, o->q, a0q);
-        o->den = 1.0 + c->m * a1q[2];
-        if (!(o->den > 0.0))
-            return 1;
-        o->Rn = c->m * (c->g - a0q[2] - o->wqd[2]) / o->den;
-        return 0;
-    }
-    double a1k[3], a0k[3], wwk[3];
-    cross3(a1, k, a1k);
-    cross3(a0, k, a0k);
-    cross3(w, wk, wwk);
-    /* z'' = -eps ((omega' x k)_z + (omega x (omega x k))_z) */
-    o->den = 1.0 + c->m * c->eps * a1k[2];
+    /* (a1 x q)_z on a rim, eps (a1 x k)_z on the sphere */
+    if (c->rim)
+        o->den = 1.0 + c->m * (a1[0] * o->q[1] - a1[1] * o->q[0]);
+    else
+        o->den = 1.0 + c->m * c->eps * (a1[0] * k[1] - a1[1] * k[0]);
     if (!(o->den > 0.0))
         return 1;
-    o->Rn = c->m * (c->g - c->eps * (a0k[2] + wwk[2])) / o->den;
+    o->Rn = g->Rn_num / o->den;
     return 0;
 }
 
 /* The rolling constraint's right-hand side (run_try_stick's system, docs/dynamics.md,
  * "Sticking"): d/dt V_Q = 0 reads K Fc = b, with
  *   b = g e3 - a0 x q - omega x dq/dt,
- * a0 the gyroscopic part of omega' (returned) and dq/dt = eps omega x k on the sphere,
+ * a0 the gyroscopic part of omega' (gyroscopic) and dq/dt = eps omega x k on the sphere,
  * the rim's own rate on a rim (o->wqd). */
-static void rolling_rhs(const dyn_ctx *c, const contact *o, const double wk[3], double a0[3],
-                        double b[3])
+static void rolling_rhs(const dyn_ctx *c, const contact *o, const double wk[3],
+                        const double a0[3], double b[3])
 {
     double a0q[3], wq_dot[3];
-    const double minus_CmA_A_n = -c->C_minus_A_over_A * o->n;
-    for (int i = 0; i < 3; i++)
-        a0[i] = minus_CmA_A_n * wk[i];
     cross3(a0, o->q, a0q);
     if (c->rim) {
         memcpy(wq_dot, o->wqd, sizeof wq_dot);
@@ -241,6 +267,31 @@ static void rolling_rhs(const dyn_ctx *c, const contact *o, const double wk[3], 
     for (int i = 0; i < 3; i++)
         b[i] = -a0q[i] - wq_dot[i];
     b[2] += c->g;
+}
+
+/* What creep_reduce needs of the kinematics alone: the rate cap, the tangential trace of
+ * the Delassus matrix K, K itself and b, the rolling constraint's right-hand side. None
+ * of it depends on the patch's wrench, so patch_eval computes it before the radius
+ * passes, whose divisions, square roots and cube root are one long chain of latencies:
+ * the processor overlaps this work with them (issue 38, docs/performance.md, "third
+ * round"). */
+typedef struct {
+    double k_cap, trace;
+    double K[3][3], b[3];
+} creep_pre;
+
+static inline void creep_prepare(const dyn_ctx *c, const contact *o, const double wk[3],
+                                 const double a0[3], creep_pre *p)
+{
+    /* K's tangential trace without K: K_jj = 1/m + (q x e_j).I^-1 (q x e_j), with
+     * I^-1 x = (x - (1 - A/C)(x.k) k) / A, q x e_x = (0, q_z, -q_y), q x e_y = (-q_z, 0, q_x) */
+    const double *q = o->q, *k = o->k;
+    const double px = q[2] * k[1] - q[1] * k[2], py = q[0] * k[2] - q[2] * k[0];
+    p->trace = 2.0 / c->m + (q[0] * q[0] + q[1] * q[1] + 2.0 * q[2] * q[2] -
+                             c->one_minus_A_over_C * (px * px + py * py)) * c->inv_A;
+    p->k_cap = c->creep_cap * (sqrt(dot3(o->w, o->w)) + c->sqrt_g_over_R);
+    compliance(c, o->k, o->q, p->K);
+    rolling_rhs(c, o, wk, a0, p->b);
 }
 
 /* The patch law with its creep reduced (docs/dynamics.md, "The creep reduced"; issue 38).
@@ -261,8 +312,10 @@ static void rolling_rhs(const dyn_ctx *c, const contact *o, const double wk[3], 
  * drilling patch) s = 1: the full law, unchanged. k is bounded above by the trace of
  * the Delassus matrix's tangential block (>= its largest eigenvalue, and >= that of its
  * Schur complement under the normal constraint) times the law's drag |F| / |V_Q| (the
- * secant, which for this law is the largest slope of F in V_Q: docs/contact-patch.md). */
-static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const per_Rn *u)
+ * secant, which for this law is the largest slope of F in V_Q: docs/contact-patch.md).
+ * p: creep_prepare's part, at the same state. */
+static void creep_reduce(const dyn_ctx *c, contact *o, const double a0[3], const per_Rn *u,
+                         const creep_pre *p)
 {
     o->creep_slow = 1.0;
     o->creep_power = 0.0;
@@ -272,34 +325,26 @@ static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const
     const double slip2 = o->VQ[0] * o->VQ[0] + o->VQ[1] * o->VQ[1];
     const double f2 = u->f[0] * u->f[0] + u->f[1] * u->f[1];
     const double drag = slip2 > 0.0 ? sqrt(f2 / slip2) : c->mu_c / c->vs;
-    /* K's tangential trace without K: K_jj = 1/m + (q x e_j).I^-1 (q x e_j), with
-     * I^-1 x = (x - (1 - A/C)(x.k) k) / A, q x e_x = (0, q_z, -q_y), q x e_y = (-q_z, 0, q_x) */
-    const double *q = o->q, *k = o->k;
-    const double px = q[2] * k[1] - q[1] * k[2], py = q[0] * k[2] - q[2] * k[0];
-    const double trace = 2.0 / c->m + (q[0] * q[0] + q[1] * q[1] + 2.0 * q[2] * q[2] -
-                                       c->one_minus_A_over_C * (px * px + py * py)) * c->inv_A;
-    const double k_rate = o->Rn * drag * trace;
-    const double k_cap = c->creep_cap * (sqrt(dot3(o->w, o->w)) + c->sqrt_g_over_R);
+    const double k_rate = o->Rn * drag * p->trace;
+    const double k_cap = p->k_cap;
     if (!(k_rate > k_cap))
         return;
-    double K[3][3];
-    compliance(c, o->k, o->q, K);
     const double s = k_cap / k_rate;
     /* The rolling constraint with the couples per unit Rn tc:
      *   K Fc + Rn (I^-1 tc) x q = b   (rolling_rhs) */
     const double tc[3] = {u->Mroll[0], u->Mroll[1], u->M};
-    double a0[3], b[3], wc[3], cq[3], Fs[3], tau[3], wt[3];
-    rolling_rhs(c, o, wk, a0, b);
-    tippe_dynamics_inv_inertia(c, o->k, tc, wc);
+    double K[3][3], wc[3], cq[3], Fs[3], tau[3], wt[3];
+    memcpy(K, p->K, sizeof K);
+    inv_inertia(c, o->k, tc, wc);
     cross3(wc, o->q, cq);
     for (int i = 0; i < 3; i++)
         K[i][2] += cq[i];
-    if (tippe_dynamics_solve3(K, b, Fs) || !(Fs[2] > 0.0))
+    if (solve3(K, p->b, Fs) || !(Fs[2] > 0.0))
         return; /* no rolling solution here: the full law */
     cross3(o->q, Fs, tau);
     for (int i = 0; i < 3; i++)
         tau[i] += Fs[2] * tc[i];
-    tippe_dynamics_inv_inertia(c, o->k, tau, wt);
+    inv_inertia(c, o->k, tau, wt);
     const double Rn = (1.0 - s) * Fs[2] + s * o->Rn;
     double dF[2];
     for (int i = 0; i < 2; i++) {
@@ -315,6 +360,54 @@ static void creep_reduce(const dyn_ctx *c, contact *o, const double wk[3], const
     o->power = Rn * u->diss - dP;
     o->creep_slow = s;
     o->creep_power = fabs(dP);
+}
+
+/* The patch law's part of tippe_dynamics_contact_eval (o's kinematics set): the wrench per
+ * unit Rn at radius a is linear in Rn, so Rn follows from eq 3.19 as for the other laws; a
+ * radius that follows the load (Hertz) is corrected from the static one with the Rn it
+ * gives (PATCH_LOAD_CORRECTIONS); then the creep's reduction where it applies. The
+ * gyroscopic part is the same in every pass and is computed once. */
+static int patch_eval(const dyn_ctx *c, contact *o, const double wk[3])
+{
+    const double *w = o->w;
+    const double ring_M = o->ring ? ring_couple(c, c->rim_r[c->rim - 1], w[2]) : 0.0;
+    per_Rn u = {{0.0, 0.0, 1.0}, ring_M, 0.0, {0.0, 0.0}};
+    gyro_part g;
+    double a1[3];
+    double a = c->patch_a;
+    gyroscopic(c, o, wk, &g);
+    creep_pre pre;
+    if (c->creep_cap > 0.0)
+        creep_prepare(c, o, wk, g.a0, &pre);
+    for (int pass = 0;; pass++) {
+        patch_wrench(c, o, a, &u);
+        if (o->ring) {
+            /* the ring's couple, not a patch's: the ring is the patch (its power
+             * -(F.V_Q + M omega_n) per unit Rn rebooked with the ring's M) */
+            u.diss += (u.M - ring_M) * w[2];
+            u.M = ring_M;
+        }
+        if (normal_force(c, o, &g, &u, a1))
+            return 1;
+        if (!c->patch_follow || pass == PATCH_LOAD_CORRECTIONS)
+            break;
+        /* Hertz: a grows as the cube root of the load (Johnson 1985, eq 4.22); no
+         * load, no patch */
+        a = c->patch_a * cbrt(o->Rn > 0.0 ? o->Rn * c->inv_mg : 0.0);
+    }
+    o->patch_a = a;
+    o->mu_eff = NAN; /* not a viscous multiple of V_Q */
+    for (int i = 0; i < 3; i++)
+        o->wdot[i] = o->Rn * a1[i] + g.a0[i];
+    o->F[0] = o->Rn * u.f[0];
+    o->F[1] = o->Rn * u.f[1];
+    o->M = o->Rn * u.M;
+    o->power = o->Rn * u.diss; /* -(F.V_Q + M omega_n + M_roll.w_roll) >= 0 */
+    o->creep_slow = 1.0;
+    o->creep_power = 0.0;
+    if (c->creep_cap > 0.0)
+        creep_reduce(c, o, g.a0, &u, &pre);
+    return 0;
 }
 
 /* Everything the right-hand side needs from a state: the contact velocity, the
@@ -362,10 +455,13 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
          * i.e. K Fc = g e3 - a0 x q - eps omega x (omega x k), a0 the gyroscopic
          * part of omega'. Its z row is eq 3.17; K is positive definite, so Fc is
          * always determined (no Painleve case while rolling). */
-        double a0[3], b[3], Fc[3], tau[3], wt[3];
+        double b[3], Fc[3], tau[3], wt[3];
+        gyro_part g;
+        gyroscopic(c, o, wk, &g);
+        const double *a0 = g.a0;
         rolling_rhs(c, o, wk, a0, b);
         compliance(c, k, o->q, o->K);
-        if (tippe_dynamics_solve3(o->K, b, Fc))
+        if (solve3(o->K, b, Fc))
             return 1;
         cross3(o->q, Fc, tau);
         tippe_dynamics_inv_inertia(c, k, tau, wt);
@@ -383,6 +479,8 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
         o->power = 0.0;
         return 0;
     }
+    if (c->patch)
+        return patch_eval(c, o, wk);
     const double slip2 = o->VQ[0] * o->VQ[0] + o->VQ[1] * o->VQ[1];
     /* Both laws are F = -mu_eff Rn V_Q with mu_eff fixed by the state alone (V_Q does
      * not depend on Rn): viscous mu (eq 3.12), or regularised Coulomb
@@ -390,47 +488,17 @@ int tippe_dynamics_contact_eval(const dyn_ctx *c, const double *y, contact *o)
     o->mu_eff = c->coulomb ? c->mu_c / sqrt(slip2 + c->vs2)
                 : c->rim   ? rim_viscous_mu(c, slip2)
                            : c->mu;
-    /* F = Rn (e3 - mu_eff V_Q): force and torque are linear in Rn. Under the patch law
-     * they are too at a given radius; a radius that follows Rn (Hertz) is corrected
-     * from the static one with the Rn it gives (PATCH_LOAD_CORRECTIONS). */
-    per_Rn u = {{-o->mu_eff * o->VQ[0], -o->mu_eff * o->VQ[1], 1.0}, 0.0, 0.0, {0.0, 0.0}};
-    double a1[3], a0[3];
-    double a = c->patch_a;
+    /* F = Rn (e3 - mu_eff V_Q): force and torque are linear in Rn. */
     const double ring_M = o->ring ? ring_couple(c, c->rim_r[c->rim - 1], w[2]) : 0.0;
-    u.M = ring_M;
-    for (int pass = 0;; pass++) {
-        if (c->patch)
-            patch_wrench(c, o, a, &u);
-        if (c->patch && o->ring) {
-            /* the ring's couple, not a patch's: the ring is the patch (its power
-             * -(F.V_Q + M omega_n) per unit Rn rebooked with the ring's M) */
-            u.diss += (u.M - ring_M) * w[2];
-            u.M = ring_M;
-        }
-        if (normal_force(c, o, wk, &u, a1, a0))
-            return 1;
-        if (!c->patch_follow || pass == PATCH_LOAD_CORRECTIONS)
-            break;
-        /* Hertz: a grows as the cube root of the load (Johnson 1985, eq 4.22); no
-         * load, no patch */
-        a = c->patch_a * cbrt(fmax(o->Rn, 0.0) * c->inv_mg);
-    }
-    o->patch_a = a;
-    if (c->patch)
-        o->mu_eff = NAN; /* not a viscous multiple of V_Q */
+    per_Rn u = {{-o->mu_eff * o->VQ[0], -o->mu_eff * o->VQ[1], 1.0}, ring_M, 0.0, {0.0, 0.0}};
+    gyro_part g;
+    double a1[3];
+    gyroscopic(c, o, wk, &g);
+    if (normal_force(c, o, &g, &u, a1))
+        return 1;
+    o->patch_a = c->patch_a;
     for (int i = 0; i < 3; i++)
-        o->wdot[i] = o->Rn * a1[i] + a0[i];
-    if (c->patch) {
-        o->F[0] = o->Rn * u.f[0];
-        o->F[1] = o->Rn * u.f[1];
-        o->M = o->Rn * u.M;
-        o->power = o->Rn * u.diss; /* -(F.V_Q + M omega_n + M_roll.w_roll) >= 0 */
-        o->creep_slow = 1.0;
-        o->creep_power = 0.0;
-        if (c->creep_cap > 0.0)
-            creep_reduce(c, o, wk, &u);
-        return 0;
-    }
+        o->wdot[i] = o->Rn * a1[i] + g.a0[i];
     o->M = 0.0;
     o->F[0] = -o->mu_eff * o->Rn * o->VQ[0];
     o->F[1] = -o->mu_eff * o->Rn * o->VQ[1];
