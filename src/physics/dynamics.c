@@ -542,47 +542,6 @@ static int run_try_rolling(run_state *rs, tippe_dynamics_result *res)
     return 0;
 }
 
-/* The axis k of a contact and its rate dk/dt = omega x k (k is fixed in the body). */
-static void axis_rate(const contact *o, double k[3], double dk[3])
-{
-    memcpy(k, o->k, sizeof o->k);
-    dk[0] = o->w[1] * o->k[2] - o->w[2] * o->k[1];
-    dk[1] = o->w[2] * o->k[0] - o->w[0] * o->k[2];
-    dk[2] = o->w[0] * o->k[1] - o->w[1] * o->k[0];
-}
-
-/* Whether the accepted step, whose end stays in its regime, may have left it and come
- * back: a trial stage of rk8pd dipped past the edge, but stages are not the solution
- * (a stage of a 5 ms step sees states the step never passes through), and probing
- * the step with four rk8pd sub-steps cost 52 evaluations each time: 37 of every 47
- * probes of the M12 at Z2 = 5 mm found nothing. So the axis is followed on the cubic
- * Hermite interpolant of the step (k and omega x k at both ends; error O(h^4), as
- * for the flip's crossing) at 16 points, and the step is probed only where the
- * interpolant dips past the edge too. A dip shallower than the interpolant's error
- * is missed, as one that no stage saw was before: it moves the contact by about
- * R times its depth in angle, over one step. */
-static int step_may_dip(const run_state *rs)
-{
-    const dyn_ctx *c = &rs->c;
-    double k1[3], dk1[3];
-    axis_rate(&rs->ct, k1, dk1);
-    const double H = rs->t - rs->t_prev;
-    for (int j = 1; j < 16; j++) {
-        const double u = j / 16.0, u2 = u * u, u3 = u2 * u;
-        const double h00 = 2 * u3 - 3 * u2 + 1, h10 = (u3 - 2 * u2 + u) * H,
-                     h01 = -2 * u3 + 3 * u2, h11 = (u3 - u2) * H;
-        double k[3];
-        for (int i = 0; i < 3; i++)
-            k[i] = h00 * rs->k_prev[i] + h10 * rs->dk_prev[i] + h01 * k1[i] + h11 * dk1[i];
-        const double inv = 1.0 / sqrt(k[0] * k[0] + k[1] * k[1] + k[2] * k[2]);
-        for (int i = 0; i < 3; i++)
-            k[i] *= inv;
-        if (rim_stay(c, k) < -RIM_EVENT_TOL)
-            return 1;
-    }
-    return 0;
-}
-
 /* The contact moves between the sphere and a rim inside the accepted step (t_prev,
  * y_prev) -> t: the crossing of rim_stay is located as lift-off is (bisection of an
  * rk8pd step to 1e-13 of the step), the state put there and the regime switched, and
@@ -599,7 +558,8 @@ static int run_rim_event(run_state *rs, tippe_dynamics_result *res, double t_ful
     const int cut = rs->t < t_full;
     if (!(end < -RIM_EVENT_TOL) && (cut || !(c->min_stage_rim < -RIM_EVENT_TOL)))
         return 0;
-    if (!(end < -RIM_EVENT_TOL) && !step_may_dip(rs))
+    if (!(end < -RIM_EVENT_TOL) &&
+        !tippe_dynamics_step_may_dip(c, rs->k_prev, rs->dk_prev, &rs->ct, rs->t - rs->t_prev))
         return 0;
     double hc = 0.0, ycross[DIM_TRAJECTORY];
     const double H = rs->t - rs->t_prev;
@@ -690,7 +650,7 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
         t_target = fmin(opt->t_end, (double)rs->i_sample * opt->sample_dt);
     rs->t_prev = rs->t;
     memcpy(rs->y_prev, rs->y, c->dim * sizeof *rs->y);
-    axis_rate(&rs->ct, rs->k_prev, rs->dk_prev);
+    tippe_dynamics_axis_rate(&rs->ct, rs->k_prev, rs->dk_prev);
     c->min_stage_Rn = INFINITY;
     c->min_stage_stick = INFINITY;
     c->min_stage_rim = INFINITY;
