@@ -145,7 +145,7 @@ void tippe_dynamics_axis_rate(const contact *o, double k[3], double dk[3])
  * the step with four rk8pd sub-steps cost 52 evaluations each time: 37 of every 47
  * probes of the M12 at Z2 = 5 mm found nothing. So the axis is followed on the cubic
  * Hermite interpolant of the step (k and omega x k at both ends; error O(h^4), as
- * for the flip's crossing) at 16 points, and the step is probed only where the
+ * for the flip's crossing) at 15 interior points, and the step is probed only where the
  * interpolant dips past the edge too. A dip shallower than the interpolant's error
  * is missed, as one that no stage saw was before: it moves the contact by about
  * R times its depth in angle, over one step. */
