@@ -66,13 +66,6 @@ typedef struct {
 #define DQ(q0, q1, q2, q3)                                                                    \
     {(q1) - 4.0 * (q0), 2.0 * (q2) - 3.0 * (q1), 3.0 * (q3) - 2.0 * (q2), 4.0 - (q3)}
 
-static const patch_law laws[2] = {
-    {"uniform", M0_U, C1_U, C2_U, {PU0, PU1, PU2, PU3, PU4, 1.0}, {QU0, QU1, QU2, QU3, 1.0},
-     DP(PU0, PU1, PU2, PU3, PU4), DQ(QU0, QU1, QU2, QU3)},
-    {"hertz", M0_H, C1_H, C2_H, {PH0, PH1, PH2, PH3, PH4, 1.0}, {QH0, QH1, QH2, QH3, 1.0},
-     DP(PH0, PH1, PH2, PH3, PH4), DQ(QH0, QH1, QH2, QH3)},
-};
-
 static const patch_law tippe_patch_laws[2] = {
     {"uniform", M0_U, C1_U, C2_U, {PU0, PU1, PU2, PU3, PU4, 1.0}, {QU0, QU1, QU2, QU3, 1.0},
      DP(PU0, PU1, PU2, PU3, PU4), DQ(QU0, QU1, QU2, QU3)},
@@ -80,15 +73,15 @@ static const patch_law tippe_patch_laws[2] = {
      DP(PH0, PH1, PH2, PH3, PH4), DQ(QH0, QH1, QH2, QH3)},
 };
 
+/* The Hertz law's entry, for callers that know their pressure at compile time. */
+#define PATCH_LAW_HERTZ (&tippe_patch_laws[1])
+
 /* S/T, dS/dV and dS/dW at V = x T, W = y T with x + y = 1 (S is homogeneous of degree 1
  * in (V, W), so its derivatives are of degree 0: evaluated at (x, y) they are those at
  * (V, W); x, y in [0, 1] keep every power in range). With s(x) = S(x, 1 - x)/T and
  * s' = ds/dx = S_V - S_W, Euler's x S_V + y S_W = s gives S_V = s + y s', S_W = s - x s'.
  * The polynomials go by Horner's rule in homogeneous form, so that x = 1 (a point
  * contact) gives s = S_V = 1 exactly. */
-/* The Hertz law's entry, for callers that know their pressure at compile time. */
-#define PATCH_LAW_HERTZ (&tippe_patch_laws[1])
-
 static inline void patch_potential(const patch_law *L, double x, double y, double *s, double *sV,
                              double *sW)
 {

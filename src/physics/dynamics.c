@@ -123,6 +123,7 @@ typedef struct {
     double t, t_prev, theta_prev, theta_launch, h;
     double theta_dot_prev;          /* theta's rate at t_prev, rad/s (the crossings) */
     double k_prev[3], dk_prev[3];   /* the axis and its rate omega x k at t_prev */
+    double w_prev;                  /* |omega| at t_prev, rad/s */
     double theta_prev_step;         /* theta at the previous accepted step (rolling) */
     double phi, psi;                /* continued Euler angles (trajectory level) */
     long i_sample;                  /* index of the next sample time */
@@ -559,7 +560,8 @@ static int run_rim_event(run_state *rs, tippe_dynamics_result *res, double t_ful
     if (!(end < -RIM_EVENT_TOL) && (cut || !(c->min_stage_rim < -RIM_EVENT_TOL)))
         return 0;
     if (!(end < -RIM_EVENT_TOL) &&
-        !tippe_dynamics_step_may_dip(c, rs->k_prev, rs->dk_prev, &rs->ct, rs->t - rs->t_prev))
+        !tippe_dynamics_step_may_dip(c, rs->k_prev, rs->dk_prev, rs->w_prev, &rs->ct,
+                                     rs->t - rs->t_prev))
         return 0;
     double hc = 0.0, ycross[DIM_TRAJECTORY];
     const double H = rs->t - rs->t_prev;
@@ -651,6 +653,7 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
     rs->t_prev = rs->t;
     memcpy(rs->y_prev, rs->y, c->dim * sizeof *rs->y);
     tippe_dynamics_axis_rate(&rs->ct, rs->k_prev, rs->dk_prev);
+    rs->w_prev = sqrt(rs->ct.w[0] * rs->ct.w[0] + rs->ct.w[1] * rs->ct.w[1] + rs->ct.w[2] * rs->ct.w[2]);
     c->min_stage_Rn = INFINITY;
     c->min_stage_stick = INFINITY;
     c->min_stage_rim = INFINITY;
@@ -775,10 +778,13 @@ static int run_may_stop(const run_state *rs, const tippe_dynamics_result *res)
  *   m g h(PATCH_POLE_RAD) too (eps < R (1 - cos alpha) / (1 + cos 0.25), 0.3 mm for
  *   the M12), and a top resting there is no no_tip. With eps = 0 the sphere is level
  *   (h = R) and only a rim's well holds the top; without one the test never passes.
- * - the margin: margin_factor times the energy balance's error so far (an estimate,
- *   hence the factor), plus the energy the creep's reduction moved counted once: it
- *   is the integral of |the power the blend changed| along the run, the triangle
- *   inequality's bound of what it can have moved, not an estimate to be inflated.
+ * - the margin: margin_factor times the energy balance's error so far (an estimate of
+ *   the integrator's, hence the factor), plus the creep reduction's energy counted
+ *   once: the integral of |the power the blend changed| so far, by the triangle
+ *   inequality no less than what the blend has moved of E, so the full law's energy is
+ *   at most E plus it and only falls from there. Not covered: the reduced run's own
+ *   future, where the blend's power can be positive for a moment (creep_reduce);
+ *   tests/test_physics_energy_cone.c runs such decisions on to t_end.
  * - tip, where the other pole is cut flat: h falls from its crest at
  *   pi - beta*, tan beta* = R sin(alpha) / (R cos(alpha) + eps), to pi (standing
  *   on the flat end is a well); a top beyond the crest with E plus margin below it

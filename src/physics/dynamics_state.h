@@ -186,7 +186,7 @@ int tippe_dynamics_locate_lift_off(dyn_ctx *c, const gsl_odeiv2_system *sys, dou
                                    double *y, double *h_cross);
 void tippe_dynamics_axis_rate(const contact *o, double k[3], double dk[3]);
 int tippe_dynamics_step_may_dip(const dyn_ctx *c, const double k0[3], const double dk0[3],
-                                const contact *end, double H);
+                                double w0, const contact *end, double H);
 int tippe_dynamics_locate_rim(dyn_ctx *c, const gsl_odeiv2_system *sys, double t0,
                               const double *y0, double H, int end_negative, double *y,
                               double *h_cross);
