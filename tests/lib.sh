@@ -105,3 +105,20 @@ finish() {
     echo "$test_name: $passed passed, $failed failed"
     [ "$failed" -eq 0 ]
 }
+
+# run_in_chromium SCRIPT.py TIPPE: the page tests' launcher (test_serve_browser.sh,
+# test_serve_page.sh, test_serve_loop.sh). Skips, naming what is missing, without
+# Debian's chromium, chromium-driver or python3-selenium; else runs tests/SCRIPT.py with
+# the absolute tippe and the build folder's serve-artefacts/ for its screenshots.
+run_in_chromium() {
+    local script=$1 tippe_abs
+    tippe_abs=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")
+    for tool in /usr/bin/chromium /usr/bin/chromedriver; do
+        [ -x "$tool" ] || { echo "SKIPPED: $tool is not installed (apt-get install chromium chromium-driver)"; exit 0; }
+    done
+    # Debian's python3-selenium is for Debian's python3 (not another one first on PATH)
+    local py=/usr/bin/python3
+    [ -x "$py" ] || py=python3
+    "$py" -c "import selenium" 2>/dev/null || { echo "SKIPPED: python3-selenium is not installed"; exit 0; }
+    exec "$py" "$(dirname "$0")/$script" "$tippe_abs" "$(dirname "$tippe_abs")/serve-artefacts"
+}

@@ -14,7 +14,7 @@ import sys
 import time
 import zipfile
 
-from serve_lib import Server, REPO, check, finish
+from serve_lib import Server, REPO, check, console_errors, said, finish
 
 tippe, artefacts = sys.argv[1], sys.argv[2]
 os.makedirs(artefacts, exist_ok=True)
@@ -228,9 +228,8 @@ with Server(tippe) as srv:
                   "the sheet is the edited design's: 3-in-1, infill 0.4")
         driver.save_screenshot(os.path.join(artefacts, "4-build.png"))
 
-        logs = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "WARNING")]
-        check(not logs, "no console errors or warnings%s" %
-              ("" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])))
+        logs = console_errors(driver)
+        check(not logs, "no console errors or warnings%s" % said(logs))
 
         # pin, edit, compare
         driver.find_element(By.ID, "pin").click()
@@ -280,11 +279,8 @@ with Server(tippe) as srv:
 
         # Chromium logs the refused requests themselves (a 400 is not a script error): the
         # sweep's and the verdict's, asked together
-        logs = [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "WARNING")
-                and not (("/api/sweep" in e["message"] or "/api/verdict" in e["message"]) and
-                         "400" in e["message"])]
-        check(not logs, "after the bad value, no console error but the 400 itself%s" %
-              ("" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])))
+        logs = console_errors(driver, ("/api/sweep", "/api/verdict"))
+        check(not logs, "after the bad value, no console error but the 400 itself%s" % said(logs))
     finally:
         driver.quit()
 

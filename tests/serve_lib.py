@@ -129,6 +129,20 @@ def check(ok, what):
         print("FAIL " + what)
 
 
+def console_errors(driver, allow_400=()):
+    """The page's console errors and warnings since the last call (Chromium's log is
+    drained by reading it), but for the lines of requests refused with a 400 whose URL
+    holds one of allow_400: Chromium logs a refused request itself, and there a 400 is
+    the server's answer, not a script error."""
+    return [e for e in driver.get_log("browser") if e["level"] in ("SEVERE", "WARNING")
+            and not (any(u in e["message"] for u in allow_400) and "400" in e["message"])]
+
+
+def said(logs):
+    """The first three console lines, to follow a check's words ('' when none)."""
+    return "" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])
+
+
 def finish():
     print("%d passed, %d failed" % (_tally["passed"], _tally["failed"]))
     sys.exit(1 if _tally["failed"] else 0)

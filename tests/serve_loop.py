@@ -13,7 +13,8 @@ import subprocess
 import sys
 import time
 
-from serve_lib import Server, REPO, GCODE_WIDTH_TOL_MM, same_verdict, check, finish
+from serve_lib import (Server, REPO, GCODE_WIDTH_TOL_MM, same_verdict, check, console_errors,
+                       said, finish)
 
 from selenium import webdriver
 from selenium.webdriver.chrome.options import Options
@@ -201,10 +202,9 @@ with Server(tippe, "--budget", "600") as srv:
                     d, "return state.design.parts[0].print.measured_mass_g === %s" % grams))
                 compare(d, "5-weighed", gcode, GCODE_WIDTH_TOL_MM)
                 saved_and_reopened(d, gcode)
-        logs = [e for e in d.get_log("browser") if e["level"] in ("SEVERE", "WARNING")
-                and not ("/api/" in e["message"] and "400" in e["message"])]
+        logs = console_errors(d, ("/api/",))
         check(not logs, "no console errors but the 400s of the saved design before its G-code%s" %
-              ("" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])))
+              said(logs))
     finally:
         d.quit()
 

@@ -14,7 +14,7 @@ import sys
 import time
 import zipfile
 
-from serve_lib import Server, REPO, check, finish
+from serve_lib import Server, REPO, check, console_errors, said, finish
 
 tippe, artefacts = sys.argv[1], sys.argv[2]
 os.makedirs(artefacts, exist_ok=True)
@@ -216,9 +216,8 @@ with Server(tippe) as srv:
               "build --set parts.body.print.infill=0.2 '%s'" % (text(d, "verdict"), want))
         d.save_screenshot(os.path.join(artefacts, "page-3-words.png"))
 
-        logs = [e for e in d.get_log("browser") if e["level"] in ("SEVERE", "WARNING")]
-        check(not logs, "no console errors in the first part%s" %
-              ("" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])))
+        logs = console_errors(d)
+        check(not logs, "no console errors in the first part%s" % said(logs))
 
         # ---- keep every edit ------------------------------------------------------------
         # undo, a field's reset, the URL that reopens the edit
@@ -475,10 +474,9 @@ with Server(tippe) as srv:
               "tippe build DESIGN given by its absolute path: the sheet says 'Design file "
               "m12-setscrew.json'")
 
-        logs = [e for e in d.get_log("browser") if e["level"] in ("SEVERE", "WARNING")
-                and not ("/api/" in e["message"] and "400" in e["message"])]
+        logs = console_errors(d, ("/api/",))
         check(not logs, "no console errors but the 400s of the design that does not load%s" %
-              ("" if not logs else ": " + "; ".join(e["message"][:120] for e in logs[:3])))
+              said(logs))
     finally:
         driver.quit()
 

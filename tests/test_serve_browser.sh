@@ -6,12 +6,5 @@
 # chromium-driver and python3-selenium (tools/deps.sh installs them in CI).
 # Usage: test_serve_browser.sh TIPPE
 set -euo pipefail
-tippe=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-for tool in /usr/bin/chromium /usr/bin/chromedriver; do
-    [ -x "$tool" ] || { echo "SKIPPED: $tool is not installed (apt-get install chromium chromium-driver)"; exit 0; }
-done
-# Debian's python3-selenium is for Debian's python3 (not another one first on PATH)
-py=/usr/bin/python3
-[ -x "$py" ] || py=python3
-"$py" -c "import selenium" 2>/dev/null || { echo "SKIPPED: python3-selenium is not installed"; exit 0; }
-exec "$py" "$(dirname "$0")/serve_browser.py" "$tippe" "$(dirname "$tippe")/serve-artefacts"
+source "$(dirname "$0")/lib.sh"
+run_in_chromium serve_browser.py "$1"

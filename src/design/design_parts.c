@@ -142,6 +142,26 @@ static int print_number(const tippe_json_reader *c, const cJSON *obj, const char
     return TIPPE_OK;
 }
 
+/* A text field that names one of n choices: *value the chosen one's, untouched when the
+ * field is absent; an unknown name is an error naming the field, what it should be
+ * (`what`) and the choices (`hint`). */
+static int parse_choice(const tippe_json_reader *c, const cJSON *item, const char *path,
+                        const char *key, const char *const names[], const int values[], int n,
+                        const char *what, const char *hint, int *value)
+{
+    char text[64] = "", full[96];
+    int rc, here = 0;
+    if ((rc = tippe_json_string(c, item, path, key, 0, text, sizeof text, &here)) || !here)
+        return rc;
+    for (int k = 0; k < n; k++)
+        if (!strcmp(text, names[k])) {
+            *value = values[k];
+            return 0;
+        }
+    tippe_json_path(full, sizeof full, path, key);
+    return tippe_json_fail(c, full, "'%s' is not a %s (%s)", text, what, hint);
+}
+
 /* The print block's settings of the slicer's rules (docs/design-format.md):
  * which model, the infill pattern, the widths the slicer's flow takes, the
  * first layer, the minimum skin thicknesses, the overlap, the flow, and a
@@ -155,19 +175,16 @@ static int parse_print_rules(const tippe_json_reader *c, const cJSON *item, cons
     char text[64] = "", full[96];
     int rc, here = 0;
     s->external_width_mm = s->infill_width_mm = s->line_width_mm;
-    if ((rc = tippe_json_string(c, item, path, "model", 0, text, sizeof text, &here)))
+    static const char *const models[] = {"slicer", "skins"};
+    static const int model_values[] = {TIPPE_PRINT_MODEL_SLICER, TIPPE_PRINT_MODEL_SKINS};
+    int choice = -1;
+    if ((rc = parse_choice(c, item, path, "model", models, model_values, 2, "print model",
+                           "slicer: PrusaSlicer's rules layer by layer; skins: the continuous "
+                           "rule",
+                           &choice)))
         return rc;
-    if (here) {
-        tippe_json_path(full, sizeof full, path, "model");
-        if (!strcmp(text, "slicer"))
-            s->model = TIPPE_PRINT_MODEL_SLICER;
-        else if (!strcmp(text, "skins"))
-            s->model = TIPPE_PRINT_MODEL_SKINS;
-        else
-            return tippe_json_fail(c, full, "'%s' is not a print model (slicer: PrusaSlicer's "
-                                            "rules layer by layer; skins: the continuous rule)",
-                                   text);
-    }
+    if (choice >= 0)
+        s->model = choice;
     if ((rc = tippe_json_string(c, item, path, "pattern", 0, text, sizeof text, &here)))
         return rc;
     if (here && (s->pattern = tippe_print_pattern_parse(text)) < 0) {
@@ -179,20 +196,14 @@ static int parse_print_rules(const tippe_json_reader *c, const cJSON *item, cons
         return tippe_json_fail(c, full, "'%s' is not a PrusaSlicer infill pattern (%s)", text,
                                list);
     }
-    if ((rc = tippe_json_string(c, item, path, "perimeter_generator", 0, text, sizeof text,
-                                &here)))
+    static const char *const generators[] = {"arachne", "classic"};
+    static const int generator_values[] = {TIPPE_PERIMETERS_ARACHNE, TIPPE_PERIMETERS_CLASSIC};
+    choice = -1;
+    if ((rc = parse_choice(c, item, path, "perimeter_generator", generators, generator_values, 2,
+                           "PrusaSlicer perimeter generator", "arachne or classic", &choice)))
         return rc;
-    if (here) {
-        tippe_json_path(full, sizeof full, path, "perimeter_generator");
-        if (!strcmp(text, "arachne"))
-            s->perimeter_generator = TIPPE_PERIMETERS_ARACHNE;
-        else if (!strcmp(text, "classic"))
-            s->perimeter_generator = TIPPE_PERIMETERS_CLASSIC;
-        else
-            return tippe_json_fail(c, full, "'%s' is not a PrusaSlicer perimeter generator "
-                                            "(arachne or classic)",
-                                   text);
-    }
+    if (choice >= 0)
+        s->perimeter_generator = choice;
     if ((rc = tippe_json_string(c, item, path, "gcode", 0, p->gcode, sizeof p->gcode, &here)))
         return rc;
     if ((rc = print_number(c, item, path, "external_width_mm", 0.05, 3, 0, "mm",

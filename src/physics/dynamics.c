@@ -652,8 +652,10 @@ static int run_step(run_state *rs, tippe_dynamics_result *res, tippe_error *err)
         t_target = fmin(opt->t_end, (double)rs->i_sample * opt->sample_dt);
     rs->t_prev = rs->t;
     memcpy(rs->y_prev, rs->y, c->dim * sizeof *rs->y);
-    tippe_dynamics_axis_rate(&rs->ct, rs->k_prev, rs->dk_prev);
-    rs->w_prev = sqrt(rs->ct.w[0] * rs->ct.w[0] + rs->ct.w[1] * rs->ct.w[1] + rs->ct.w[2] * rs->ct.w[2]);
+    if (c->has_rims) { /* the rim probes' Hermite test (run_rim_event) */
+        tippe_dynamics_axis_rate(&rs->ct, rs->k_prev, rs->dk_prev);
+        rs->w_prev = sqrt(dot3(rs->ct.w, rs->ct.w));
+    }
     c->min_stage_Rn = INFINITY;
     c->min_stage_stick = INFINITY;
     c->min_stage_rim = INFINITY;
